@@ -1,0 +1,37 @@
+# Two entry points (see README): `make reproduce` and `make test`.
+# Each builds the virtual environment on first use; later runs reuse it.
+PYTHON ?= python3
+VENV   := .venv
+BIN    := $(VENV)/bin
+STAMP  := $(VENV)/.stickslip-installed
+OUT    ?= results
+
+.PHONY: reproduce reproduce-quick test test-all bench docs clean
+
+$(STAMP): pyproject.toml
+	@$(PYTHON) -c 'import sys; assert sys.version_info >= (3, 11), "Python >= 3.11 is required"'
+	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --upgrade pip
+	$(BIN)/python -m pip install --quiet -e '.[test]'
+	touch $(STAMP)
+
+reproduce: $(STAMP)
+	$(BIN)/stickslip reproduce --out $(OUT) $(ARGS)
+
+reproduce-quick: $(STAMP)
+	$(BIN)/stickslip reproduce --out $(OUT) --quick $(ARGS)
+
+test: $(STAMP)
+	$(BIN)/python -m pytest -q -n 2 -m "not slow" $(ARGS)
+
+test-all: $(STAMP)
+	$(BIN)/python -m pytest -q -n 2 $(ARGS)
+
+bench: $(STAMP)
+	for b in benchmarks/*.py; do echo "== $$b"; $(BIN)/python $$b || exit 1; done
+
+docs: $(STAMP)
+	$(BIN)/python -m stickslip.errata > docs/errata.md
+
+clean:
+	rm -rf $(VENV) results .pytest_cache

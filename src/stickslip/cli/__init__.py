@@ -1,0 +1,65 @@
+"""The `stickslip` command line: thin wrappers that parse, call the library and print.
+
+Errors never show a traceback: bad input prints one line on stderr and exits with
+code 2, a well-posed problem without solution exits with code 1.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+
+import click
+import typer
+
+from ..errors import NoSolutionError, ParameterError
+from . import oscillator, reproduce
+
+# typer may vendor its own copy of click: catch both families of exceptions
+_EXIT = (typer.Exit, click.exceptions.Exit)
+_ABORT = (typer.Abort, click.exceptions.Abort)
+_USAGE = (typer.BadParameter.__mro__[1], click.UsageError)  # UsageError
+
+app = typer.Typer(no_args_is_help=True, add_completion=False, pretty_exceptions_enable=False,
+                  help="Friction-induced vibration and stick-slip waves (models of the paper, and beyond).")
+app.add_typer(oscillator.app, name="oscillator")
+app.command("reproduce")(reproduce.reproduce)
+
+
+def _one_line(message: str) -> str:
+    return " ".join(str(message).split())
+
+
+def run(argv: list[str] | None = None) -> int:
+    """Run the CLI and return its exit code."""
+    def fail(prefix: str, exc, code: int) -> int:
+        print(f"{prefix}: {_one_line(exc)}", file=sys.stderr)
+        return code
+
+    try:
+        result = app(args=argv, prog_name="stickslip", standalone_mode=False)
+        return result if isinstance(result, int) else 0
+    except _EXIT as exc:
+        return exc.exit_code
+    except _ABORT:
+        print("aborted", file=sys.stderr)
+        return 1
+    except _USAGE as exc:  # parsing errors: missing or malformed options
+        return fail("error", exc.format_message(), 2)
+    except ParameterError as exc:
+        return fail("error", exc, 2)
+    except NoSolutionError as exc:
+        return fail("no solution", exc, 1)
+    except ValueError as exc:
+        return fail("error", exc, 2)
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return 130
+    except Exception as exc:  # a bug: say so in one line, keep the traceback for debugging
+        if os.environ.get("STICKSLIP_DEBUG"):
+            raise
+        return fail("internal error", f"{type(exc).__name__}: {exc} (set STICKSLIP_DEBUG=1 for a traceback)", 3)
+
+
+def main() -> None:
+    sys.exit(run())

@@ -1,0 +1,155 @@
+"""`stickslip oscillator ...`: the one-degree-of-freedom friction oscillator (paper section 2)."""
+
+from __future__ import annotations
+
+from enum import Enum
+from pathlib import Path
+from typing import Annotated, Optional
+
+import typer
+
+from ..friction import make_law
+from ..oscillator import (Oscillator, continue_cycle, continue_from_hopf, equilibrium_stability, hopf_points,
+                          limit_cycle, simulate)
+from ._common import emit, output_path
+
+app = typer.Typer(no_args_is_help=True, help="The 1-DOF friction oscillator m x'' + c x' + k x = F (paper section 2).")
+
+
+class Law(str, Enum):
+    coulomb = "coulomb"
+    linear_weakening = "linear-weakening"
+    stribeck = "stribeck"
+
+
+Mass = Annotated[float, typer.Option("--mass", help="Mass m [kg], > 0.")]
+Stiffness = Annotated[float, typer.Option("--stiffness", help="Spring stiffness k [N/m], > 0.")]
+Normal = Annotated[float, typer.Option("--normal-force", help="Normal force N [N], > 0.")]
+Belt = Annotated[float, typer.Option("--belt-speed", help="Belt speed V [m/s], > 0.")]
+Fs = Annotated[float, typer.Option("--fs", help="Static friction coefficient f_s >= f_d.")]
+Fd = Annotated[float, typer.Option("--fd", help="Kinetic friction coefficient f_d >= 0.")]
+LawOpt = Annotated[Law, typer.Option("--law", help="Friction law.")]
+Tau = Annotated[Optional[float], typer.Option("--tau", help="linear-weakening: rate tau [s/m]; stribeck: Stribeck speed [m/s].")]
+Damping = Annotated[float, typer.Option("--damping", help="Viscous damping c [N s/m], >= 0.")]
+Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
+Out = Annotated[Optional[Path], typer.Option("--out", help="Write the data to this netCDF file (.nc).")]
+Plot = Annotated[Optional[Path], typer.Option("--plot", help="Write a figure to this PNG file.")]
+
+
+def _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping) -> Oscillator:
+    return Oscillator(mass, stiffness, normal_force, belt_speed, make_law(law.value, fs=fs, fd=fd, tau=tau), damping)
+
+
+def _write(ds, out, plot, draw) -> None:
+    if out is not None:
+        ds.to_netcdf(out)
+    if plot is not None:
+        from .. import plotting
+
+        fig, axes = plotting.figure(2, size=(5.5, 4.2))
+        draw(axes, ds)
+        plotting.save(fig, plot)
+
+
+@app.command()
+def cycle(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Belt, fs: Fs, fd: Fd,
+          law: LawOpt = Law.coulomb, tau: Tau = None, damping: Damping = 0.0,
+          x0: Annotated[Optional[float], typer.Option(help="Start x [m] (default: end of the stick segment).")] = None,
+          v0: Annotated[Optional[float], typer.Option(help="Start velocity [m/s].")] = None,
+          json: Json = False, out: Out = None, plot: Plot = None):
+    """Limit cycle: period, stick and slip times, amplitude, Floquet multipliers."""
+    out, plot = output_path("--out", out, ".nc"), output_path("--plot", plot, ".png")
+    result = limit_cycle(_osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping), x0, v0)
+    emit(result.to_dict(), json, "limit cycle")
+
+    def draw(axes, ds):
+        from .. import plotting
+
+        plotting.oscillator_phase(axes[0], ds, "limit cycle")
+        axes[1].plot(ds["t"], ds["x"], lw=1)
+        axes[1].set_xlabel("t [s]"), axes[1].set_ylabel("x [m]")
+
+    _write(result.to_xarray() if (out or plot) else None, out, plot, draw)
+
+
+@app.command("simulate")
+def simulate_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Belt, fs: Fs, fd: Fd,
+                 t_end: Annotated[float, typer.Option("--t-end", help="Final time [s], > 0.")],
+                 law: LawOpt = Law.coulomb, tau: Tau = None, damping: Damping = 0.0,
+                 x0: Annotated[Optional[float], typer.Option(help="Initial x [m] (default: equilibrium).")] = None,
+                 v0: Annotated[float, typer.Option(help="Initial velocity [m/s].")] = 0.0,
+                 samples: Annotated[int, typer.Option(help="Uniform samples in the output file.")] = 2001,
+                 json: Json = False, out: Out = None, plot: Plot = None):
+    """Event-driven simulation with exact stick/slip switching."""
+    out, plot = output_path("--out", out, ".nc"), output_path("--plot", plot, ".png")
+    traj = simulate(_osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping), t_end, x0, v0)
+    counts = {name: int((traj.modes == m).sum()) for name, m in (("stick_segments", 0), ("slip_segments", 1),
+                                                                  ("reverse_slip_segments", -1))}
+    emit({"status": traj.status, "message": traj.message, "t_end": traj.t_end, "x_end": float(traj.x[-1]),
+          "v_end": float(traj.v[-1]), "switches": len(traj.events), **counts}, json, "simulation")
+
+    def draw(axes, ds):
+        from .. import plotting
+
+        plotting.oscillator_phase(axes[0], ds, "phase portrait")
+        plotting.modal_line(axes[1], ds["t"].values, ds["x"].values, ds["mode"].values)
+        axes[1].set_xlabel("t [s]"), axes[1].set_ylabel("x [m]")
+
+    _write(traj.to_xarray(samples) if (out or plot) else None, out, plot, draw)
+
+
+@app.command()
+def stability(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Belt, fs: Fs, fd: Fd,
+              law: LawOpt = Law.coulomb, tau: Tau = None, damping: Damping = 0.0,
+              parameter: Annotated[str, typer.Option(help="Parameter scanned for Hopf points.")] = "belt_speed",
+              lo: Annotated[Optional[float], typer.Option(help="Scan from (default: value / 100).")] = None,
+              hi: Annotated[Optional[float], typer.Option(help="Scan to (default: value * 100).")] = None,
+              json: Json = False):
+    """Stability of steady sliding and its Hopf (flutter) points."""
+    osc = _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping)
+    value = osc.parameter(parameter)
+    lo = value / 100 if lo is None else lo
+    hi = value * 100 if hi is None else hi
+    data = equilibrium_stability(osc).to_dict()
+    data["hopf_points"] = [h.to_dict() for h in hopf_points(osc, parameter, lo, hi)]
+    emit(data, json, "steady sliding")
+
+
+@app.command("continue")
+def continue_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Belt, fs: Fs, fd: Fd,
+                 stop: Annotated[float, typer.Option(help="Continue the parameter towards this value.")],
+                 law: LawOpt = Law.coulomb, tau: Tau = None, damping: Damping = 0.0,
+                 parameter: Annotated[str, typer.Option(help="Continuation parameter.")] = "belt_speed",
+                 from_hopf: Annotated[bool, typer.Option(help="Start from the nearest Hopf point instead.")] = False,
+                 step: Annotated[float, typer.Option(help="Initial arclength step (scaled).")] = 0.02,
+                 max_step: Annotated[float, typer.Option(help="Largest arclength step (scaled).")] = 0.05,
+                 json: Json = False, out: Out = None, plot: Plot = None):
+    """Continuation of the limit cycle in a parameter (amplitude, period, grazing, Hopf)."""
+    out, plot = output_path("--out", out, ".nc"), output_path("--plot", plot, ".png")
+    osc = _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping)
+    if from_hopf:
+        start = osc.parameter(parameter)
+        points = hopf_points(osc, parameter, min(start, stop), max(start, stop))
+        if not points:
+            from ..errors import NoSolutionError
+
+            raise NoSolutionError(f"no Hopf point for {parameter} between {start:g} and {stop:g}")
+        branch = continue_from_hopf(osc, points[0], stop, step=step, max_step=max_step)
+    else:
+        branch = continue_cycle(osc, stop, parameter=parameter, step=step, max_step=max_step)
+    data = branch.to_dict()
+    if not json:
+        data = {"parameter": data["parameter"], "points": len(data["points"]), "end_reason": data["end_reason"],
+                "events": data["events"]}
+    emit(data, json, "continuation")
+
+    def draw(axes, ds):
+        p = ds["parameter_value"].values
+        stable = ds["stable"].values.astype(bool)
+        for ax, name in zip(axes, ("amplitude", "period")):
+            ax.plot(p, ds[name], color="0.7", lw=0.8)
+            ax.plot(p[stable], ds[name].values[stable], "o", ms=3, label="stable")
+            ax.plot(p[~stable], ds[name].values[~stable], "x", ms=3, label="unstable")
+            ax.set_xlabel(parameter), ax.set_ylabel(f"{name} [{ds[name].attrs['units']}]"), ax.legend()
+
+    _write(branch.to_xarray() if (out or plot) else None, out, plot, draw)

@@ -1,0 +1,38 @@
+"""`stickslip reproduce`: all paper figures and the reproduction report."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated, Optional
+
+import typer
+from rich.console import Console
+
+from ._common import emit
+
+
+def reproduce(out: Annotated[Path, typer.Option(help="Output directory.")] = Path("results"),
+              quick: Annotated[bool, typer.Option("--quick", help="Coarser, faster runs (same checks).")] = False,
+              only: Annotated[Optional[str], typer.Option(help="Comma-separated figure keys, e.g. fig2,fig3.")] = None,
+              force: Annotated[bool, typer.Option("--force", help="Recompute even if a checkpoint exists.")] = False,
+              json: Annotated[bool, typer.Option("--json", help="Print one JSON summary on stdout.")] = False) -> int:
+    """Compute, plot and check every figure of the paper; write report.md and report.html."""
+    from ..report import reproduce as run
+
+    console = Console(stderr=True)
+    status = console.status("starting")
+    status.start()
+    try:
+        summary = run(out, quick=quick, only=only, force=force,
+                      progress=lambda spec: status.update(f"{spec.key}: {spec.title}"))
+    finally:
+        status.stop()
+    if json:
+        emit(summary.to_dict(), True, "")
+    else:
+        for o in summary.outcomes:
+            mark = "[green]pass[/green]" if o.passed else "[red]FAIL[/red]"
+            console.print(f"{o.spec.key:>24}  {mark}  {sum(c.passed for c in o.checks)}/{len(o.checks)} checks"
+                          f"  {o.seconds:6.1f} s{' (cached)' if o.cached else ''}")
+        console.print(f"report: {out / 'report.md'} and {out / 'report.html'}")
+    return 0 if summary.passed else 1

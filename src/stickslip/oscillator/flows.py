@@ -1,0 +1,245 @@
+"""Flows of one slip mode: closed form for affine laws, DOP853 otherwise.
+
+Both classes answer the same three questions for a slip segment that starts at
+``(x0, v0)`` at local time 0:
+
+* ``first_crossing(x0, v0, t_max, levels)``: the first time ``v(t)`` crosses one of
+  the ``levels`` (``(value, direction)`` pairs, direction +1 upward, -1 downward);
+* ``evaluate(t)``: the state on the segment just computed;
+* ``jacobian``: the derivative of the end state with respect to the start state.
+
+A start exactly on a level (a departure from the switching line or the section) is
+never counted as a crossing.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy.integrate import DOP853
+from scipy.optimize import brentq
+
+from .model import Mode, Oscillator
+
+_EPS = np.finfo(float).eps
+
+
+def _sign(value: float, tol: float) -> int:
+    return 0 if abs(value) <= tol else (1 if value > 0 else -1)
+
+
+def _root(fun, a: float, b: float) -> float:
+    return brentq(fun, a, b, xtol=1e-300, rtol=4 * _EPS, maxiter=200)
+
+
+def _scan(g, times, levels, tol):
+    """First crossing of ``g(t, level) = 0`` over consecutive monotone pieces.
+
+    ``times`` is an iterable of increasing times; ``g`` is monotone between
+    neighbours. Returns ``(t, level_index)`` or ``(last_time, None)``.
+    """
+    times = iter(times)
+    ta = next(times)
+    ga = [g(ta, level) for level, _ in levels]
+    for tb in times:
+        gb = [g(tb, level) for level, _ in levels]
+        best = (math.inf, None)
+        for index, (level, direction) in enumerate(levels):
+            sa, sb = _sign(ga[index], tol), _sign(gb[index], tol)
+            if sa != 0 and sb != sa and (direction == 0 or direction == -sa):
+                t = tb if sb == 0 else _root(lambda t: g(t, level), ta, tb)
+                best = min(best, (t, index), key=lambda p: p[0])
+        if best[1] is not None:
+            return best
+        ta, ga = tb, gb
+    return ta, None
+
+
+class AffineSlip:
+    """Closed-form flow of a slip mode when ``mu = mu0 - mu1 |v_r|``.
+
+    In mode ``s = sign(v_r)`` the equation is linear with constant coefficients,
+    ``m x'' + (c - mu1 N) x' + k x = s N mu0 - mu1 N V``: an oscillator centred at
+    ``x_c`` with damping that is negative for a falling law.
+    """
+
+    def __init__(self, osc: Oscillator, mode: Mode):
+        mu0, mu1 = osc.friction.affine
+        s, m, k, n, v = int(mode), osc.mass, osc.stiffness, osc.normal_force, osc.belt_speed
+        self.osc, self.mode = osc, mode
+        self.x_c = (s * n * mu0 - mu1 * n * v) / k
+        self.sigma = -(osc.damping - mu1 * n) / (2.0 * m)
+        self.w02 = k / m
+        self.om2 = self.w02 - self.sigma**2
+        self._x0 = self._v0 = 0.0
+
+    # C(t), S(t): e^{sigma t} C and e^{sigma t} S span the solutions.
+    def _cs(self, t):
+        t = np.asarray(t, dtype=float)
+        z = self.om2 * t * t
+        if self.om2 > 0:
+            w = math.sqrt(self.om2)
+            c, s = np.cos(w * t), np.sin(w * t) / w
+        elif self.om2 < 0:
+            w = math.sqrt(-self.om2)
+            c, s = np.cosh(w * t), np.sinh(w * t) / w
+        else:
+            c, s = np.ones_like(t), t.copy()
+        small = np.abs(z) < 1e-4
+        if np.any(small):  # series near critical damping, where sin(wt)/w loses digits
+            c = np.where(small, 1 - z / 2 + z * z / 24 - z**3 / 720, c)
+            s = np.where(small, t * (1 - z / 6 + z * z / 120 - z**3 / 5040), s)
+        return c, s
+
+    def _cs_scalar(self, t: float):
+        z = self.om2 * t * t
+        if abs(z) < 1e-4:
+            return 1 - z / 2 + z * z / 24 - z**3 / 720, t * (1 - z / 6 + z * z / 120 - z**3 / 5040)
+        if self.om2 > 0:
+            w = math.sqrt(self.om2)
+            return math.cos(w * t), math.sin(w * t) / w
+        w = math.sqrt(-self.om2)
+        return math.cosh(w * t), math.sinh(w * t) / w
+
+    def _speed(self, t: float, x0: float, v0: float) -> float:
+        c, s = self._cs_scalar(t)
+        return math.exp(self.sigma * t) * (v0 * c + (self.sigma * v0 - self.w02 * (x0 - self.x_c)) * s)
+
+    def _state(self, t, x0, v0):
+        xi0 = x0 - self.x_c
+        c, s = self._cs(t)
+        e = np.exp(self.sigma * np.asarray(t, dtype=float))
+        xi = e * (xi0 * c + (v0 - self.sigma * xi0) * s)
+        v = e * (v0 * c + (self.sigma * v0 - self.w02 * xi0) * s)
+        return xi + self.x_c, v
+
+    def _pieces(self, x0, v0, t_max):
+        """0, the zeros of the acceleration in (0, t_max) (lazily), then t_max."""
+        yield 0.0
+        a0 = 2 * self.sigma * v0 - self.w02 * (x0 - self.x_c)
+        b = self.sigma * a0 - self.w02 * v0
+        if self.om2 > 0:
+            w = math.sqrt(self.om2)
+            phi = math.atan2(b / w, a0)
+            k = math.ceil((-phi - math.pi / 2) / math.pi)
+            while (t := (phi + math.pi / 2 + k * math.pi) / w) < t_max:
+                if t > 0:
+                    yield t
+                k += 1
+        else:
+            if self.om2 < 0:
+                w = math.sqrt(-self.om2)
+                t = math.atanh(-a0 * w / b) / w if b != 0 and 0 < -a0 * w / b < 1 else -1.0
+            else:
+                t = -a0 / b if b != 0 else -1.0
+            if 0 < t < t_max:
+                yield t
+        yield t_max
+
+    def first_crossing(self, x0, v0, t_max, levels):
+        """First crossing time and level index, or ``(t_max, None)``."""
+        self._x0, self._v0 = x0, v0
+        scale = max(abs(v0), math.sqrt(self.w02) * abs(x0 - self.x_c), *(abs(l) for l, _ in levels))
+        tol = 16 * _EPS * scale
+        g = lambda t, level: self._speed(t, x0, v0) - level
+        t, index = _scan(g, self._pieces(x0, v0, t_max), levels, tol)
+        self._t_last = t_max if index is None else t
+        return (t_max, None) if index is None else (t, index)
+
+    def evaluator(self):
+        """Callable ``t -> (x, v)`` on the last segment (local time)."""
+        x0, v0 = self._x0, self._v0
+        return lambda t: self._state(t, x0, v0)
+
+    def speed_extremes(self):
+        """Velocities at the segment's ends and its interior velocity extremes."""
+        times = np.fromiter(self._pieces(self._x0, self._v0, self._t_last), float)
+        return self._state(times, self._x0, self._v0)[1]
+
+    def jacobian(self, t):
+        """``d(x, v)(t) / d(x0, v0)``: the matrix exponential, in closed form."""
+        c, s = self._cs_scalar(t)
+        e = math.exp(self.sigma * t)
+        return e * np.array([[c - self.sigma * s, s], [-self.w02 * s, c + self.sigma * s]])
+
+
+class NumericSlip:
+    """Flow of a slip mode for a general law: DOP853 (order 8) with dense output.
+
+    Crossings are located with Brent's method on the dense output of the step where
+    the sign changes. With ``variational=True`` the 2x2 variational equations are
+    integrated along, for Floquet multipliers.
+    """
+
+    def __init__(self, osc: Oscillator, mode: Mode, rtol=1e-12, atol=1e-14, variational=False):
+        self.osc, self.mode, self.rtol, self.atol = osc, mode, rtol, atol
+        self.variational = variational
+        self._pieces: list = []
+
+    def _rhs(self, t, y):
+        o, s = self.osc, int(self.mode)
+        x, v = y[0], y[1]
+        v_r = s * max(abs(o.belt_speed - v), 1e-300)  # on the mode's side of v_r = 0
+        mu = o.friction.kinetic(v_r)
+        acc = (s * o.normal_force * mu - o.damping * v - o.stiffness * x) / o.mass
+        if not self.variational:
+            return np.array([v, acc])
+        # F = s N mu(v_r) with v_r = V - v, so dF/dv = -s N mu'(v_r)
+        dacc_dv = (-s * o.normal_force * o.friction.slope(v_r) - o.damping) / o.mass
+        jac = np.array([[0.0, 1.0], [-o.stiffness / o.mass, dacc_dv]])
+        phi = y[2:].reshape(2, 2)
+        return np.concatenate(([v, acc], (jac @ phi).ravel()))
+
+    def first_crossing(self, x0, v0, t_max, levels):
+        y0 = [x0, v0] + ([1.0, 0.0, 0.0, 1.0] if self.variational else [])
+        scale = max(abs(v0), self.osc.omega * abs(x0), *(abs(l) for l, _ in levels), 1e-300)
+        atol = np.full(len(y0), self.atol * max(scale, self.osc.belt_speed))
+        solver = DOP853(self._rhs, 0.0, y0, t_max, rtol=self.rtol, atol=atol)
+        self._pieces, self._extremes = [], [v0]
+        tol = 16 * _EPS * scale
+        while solver.status == "running":
+            t_old, y_old, a_old = solver.t, solver.y.copy(), solver.f[1]
+            message = solver.step()
+            if solver.status == "failed":
+                raise RuntimeError(f"DOP853 failed: {message}")
+            dense = solver.dense_output()
+            self._pieces.append((t_old, solver.t, dense))
+            times = [t_old, solver.t]
+            if a_old * solver.f[1] < 0:  # a velocity extremum inside the step: split there
+                acc = lambda t: float(self.osc.acceleration(*dense(t)[:2], self.mode))
+                times.insert(1, _root(acc, t_old, solver.t))
+            g = lambda t, level: (y_old[1] if t == t_old else float(dense(t)[1])) - level
+            t_hit, index = _scan(g, times, levels, tol)
+            if index is not None:
+                self._extremes += [float(dense(t)[1]) for t in times[1:] if t < t_hit] + [float(dense(t_hit)[1])]
+                self._end = dense(t_hit)
+                return t_hit, index
+            self._extremes += [float(dense(t)[1]) for t in times[1:]]
+        self._end = solver.y
+        return t_max, None
+
+    def evaluator(self):
+        """Callable ``t -> (x, v)`` on the last segment (local time)."""
+        pieces = list(self._pieces)
+        starts = np.array([p[0] for p in pieces])
+
+        def evaluate(t):
+            t = np.atleast_1d(np.asarray(t, dtype=float))
+            idx = np.clip(np.searchsorted(starts, t, side="right") - 1, 0, len(pieces) - 1)
+            out = np.empty((2, t.size))
+            for i in np.unique(idx):
+                sel = idx == i
+                out[:, sel] = pieces[i][2](t[sel])[:2]
+            return out[0], out[1]
+
+        return evaluate
+
+    def speed_extremes(self):
+        return np.asarray(self._extremes)
+
+    def jacobian(self, t=None):
+        """Derivative of the end state of the last segment w.r.t. its start state."""
+        if not self.variational:
+            raise RuntimeError("jacobian needs variational=True")
+        return np.asarray(self._end[2:]).reshape(2, 2)

@@ -1,0 +1,153 @@
+"""The one-degree-of-freedom friction oscillator (paper section 2, eq. [1]).
+
+    m x'' + c x' + k x = F,   v_r = V - x',
+
+a mass on a spring pressed with normal force ``N`` on a belt moving at speed ``V``.
+Three modes: ``STICK`` (``x' = V``, ``|k x + c V| <= f_s N``), ``SLIP_POS``
+(``v_r > 0``, ``F = +N mu(v_r)``) and ``SLIP_NEG`` (reverse slip, ``v_r < 0``,
+``F = -N mu(v_r)``).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+from enum import IntEnum
+
+import numpy as np
+
+from .. import _validate as check
+from ..errors import ParameterError
+from ..friction import FrictionLaw
+
+
+class Mode(IntEnum):
+    """Contact state of the mass. ``int(mode)`` is the slip direction ``sign(v_r)``."""
+
+    SLIP_NEG = -1
+    STICK = 0
+    SLIP_POS = 1
+
+
+@dataclass(frozen=True)
+class Oscillator:
+    """Parameters of the friction oscillator, in SI units.
+
+    Parameters
+    ----------
+    mass, stiffness, normal_force, belt_speed : float
+        ``m`` [kg], ``k`` [N/m], ``N`` [N], ``V`` [m/s]; all > 0.
+    friction : FrictionLaw
+        The friction law (`stickslip.friction`).
+    damping : float
+        Viscous damping ``c`` [N s/m] >= 0.
+    """
+
+    mass: float
+    stiffness: float
+    normal_force: float
+    belt_speed: float
+    friction: FrictionLaw
+    damping: float = 0.0
+
+    def __post_init__(self):
+        for name in ("mass", "stiffness", "normal_force", "belt_speed"):
+            object.__setattr__(self, name, check.positive(name, getattr(self, name)))
+        object.__setattr__(self, "damping", check.nonnegative("damping", self.damping))
+        if not isinstance(self.friction, FrictionLaw):
+            raise ParameterError("friction", self.friction, "a stickslip.friction.FrictionLaw")
+
+    def replace(self, **changes) -> "Oscillator":
+        """A copy with some parameters changed (validated again)."""
+        fields = dict(mass=self.mass, stiffness=self.stiffness, normal_force=self.normal_force,
+                      belt_speed=self.belt_speed, friction=self.friction, damping=self.damping)
+        fields.update(changes)
+        return Oscillator(**fields)
+
+    PARAMETERS = ("mass", "stiffness", "normal_force", "belt_speed", "damping")
+
+    def parameter(self, name: str) -> float:
+        """Value of a named parameter of the oscillator or of its friction law."""
+        if name in self.PARAMETERS:
+            return getattr(self, name)
+        if name in getattr(self.friction, "__dataclass_fields__", {}) and name not in ("mu", "label"):
+            return getattr(self.friction, name)
+        raise ParameterError("parameter", name, "one of " + ", ".join(self.parameter_names()))
+
+    def parameter_names(self) -> list[str]:
+        law = [n for n in getattr(self.friction, "__dataclass_fields__", {}) if n not in ("mu", "label", "step")]
+        return [*self.PARAMETERS, *law]
+
+    def with_parameter(self, name: str, value: float) -> "Oscillator":
+        """A copy with one parameter (of the oscillator or the law) changed."""
+        self.parameter(name)  # validates the name
+        if name in self.PARAMETERS:
+            return self.replace(**{name: value})
+        return self.replace(friction=dataclasses.replace(self.friction, **{name: value}))
+
+    @property
+    def omega(self) -> float:
+        """Natural angular frequency ``w = sqrt(k/m)``."""
+        return math.sqrt(self.stiffness / self.mass)
+
+    @property
+    def stick_limits(self) -> tuple[float, float]:
+        """``(x_lo, x_hi)``: sticking holds while ``|k x + c V| <= f_s N``.
+
+        Without damping this is the paper's stick segment ``[-x_a, x_a]``,
+        ``x_a = f_s N / k``.
+        """
+        fsn, cv = self.friction.static * self.normal_force, self.damping * self.belt_speed
+        return ((-fsn - cv) / self.stiffness, (fsn - cv) / self.stiffness)
+
+    def stick_force(self, x):
+        """Friction force needed to keep the mass stuck at ``x``: ``k x + c V``."""
+        return self.stiffness * x + self.damping * self.belt_speed
+
+    def acceleration(self, x, v, mode: Mode):
+        """``x''`` in a slip mode (``SLIP_POS`` or ``SLIP_NEG``)."""
+        s = int(mode)
+        v_r = self.belt_speed - v
+        friction = s * self.normal_force * self.friction.kinetic(s * np.abs(v_r))
+        return (friction - self.damping * v - self.stiffness * x) / self.mass
+
+    def vector_field(self, x, v, mode: Mode) -> np.ndarray:
+        """Right-hand side ``(x', v')`` of the mode; ``(V, 0)`` while sticking."""
+        if mode == Mode.STICK:
+            return np.array([self.belt_speed, 0.0])
+        return np.array([v, self.acceleration(x, v, mode)])
+
+    def mode_at_switch(self, x: float) -> Mode:
+        """Mode chosen on the switching line ``v = V`` (Filippov's convention)."""
+        lo, hi = self.stick_limits
+        if lo <= x <= hi:
+            return Mode.STICK
+        return Mode.SLIP_POS if x > hi else Mode.SLIP_NEG
+
+    def initial_mode(self, x: float, v: float) -> Mode:
+        """Mode of a state off or on the switching line."""
+        if v < self.belt_speed:
+            return Mode.SLIP_POS
+        if v > self.belt_speed:
+            return Mode.SLIP_NEG
+        return self.mode_at_switch(x)
+
+    # --- equilibrium and its stability -------------------------------------------
+    @property
+    def equilibrium(self) -> float:
+        """Position of the steady-sliding equilibrium ``k x_e = N mu(V)``."""
+        return self.normal_force * float(self.friction.kinetic(self.belt_speed)) / self.stiffness
+
+    @property
+    def effective_damping(self) -> float:
+        """Damping of the linearisation about the equilibrium, ``c + N mu'(V)``.
+
+        Negative for a falling law: the paper's ``m x'' - f_d tau N x' + k x = ...``.
+        """
+        return self.damping + self.normal_force * float(self.friction.slope(self.belt_speed))
+
+    def equilibrium_eigenvalues(self) -> np.ndarray:
+        """Eigenvalues of the linearisation about the equilibrium."""
+        jac = np.array([[0.0, 1.0], [-self.stiffness / self.mass, -self.effective_damping / self.mass]])
+        return np.linalg.eigvals(jac)

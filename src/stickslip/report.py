@@ -1,0 +1,167 @@
+"""`stickslip reproduce`: compute, plot and check every registered figure; write the report.
+
+Each figure's dataset is checkpointed to ``<out>/data/<key>.nc`` (written atomically)
+with a fingerprint of the package source and the ``quick`` flag; a rerun (for instance
+after the run was killed) loads finished figures instead of recomputing them.
+"""
+
+from __future__ import annotations
+
+import datetime as _dt
+import hashlib
+import os
+import platform
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import xarray as xr
+
+from . import __version__
+from .errata import ERRATA, to_markdown
+from .errors import ParameterError
+from .figures import Check, FigureSpec, registry
+
+
+@dataclass
+class FigureOutcome:
+    spec: FigureSpec
+    checks: list[Check]
+    seconds: float
+    cached: bool
+    image: str
+
+    @property
+    def passed(self) -> bool:
+        return all(c.passed for c in self.checks)
+
+
+@dataclass
+class Summary:
+    out: Path
+    quick: bool
+    outcomes: list[FigureOutcome] = field(default_factory=list)
+
+    @property
+    def passed(self) -> bool:
+        return all(o.passed for o in self.outcomes)
+
+    def to_dict(self) -> dict:
+        return {"out": str(self.out), "quick": self.quick, "passed": self.passed,
+                "figures": [{"key": o.spec.key, "passed": o.passed, "checks": len(o.checks),
+                             "failed": [c.name for c in o.checks if not c.passed], "seconds": o.seconds,
+                             "cached": o.cached} for o in self.outcomes],
+                "report": str(self.out / "report.md")}
+
+
+def source_fingerprint() -> str:
+    """SHA-256 of the package's Python sources: a checkpoint is reused only by the same code."""
+    root = Path(__file__).parent
+    digest = hashlib.sha256()
+    for path in sorted(root.rglob("*.py")):
+        digest.update(str(path.relative_to(root)).encode())
+        digest.update(path.read_bytes())
+    return digest.hexdigest()[:16]
+
+
+def select(only: str | None) -> list[FigureSpec]:
+    specs = registry()
+    if not only:
+        return list(specs.values())
+    keys = [k.strip() for k in only.split(",") if k.strip()]
+    unknown = [k for k in keys if k not in specs]
+    if unknown:
+        raise ParameterError("--only", ",".join(unknown), "comma-separated figure keys among " + ", ".join(specs))
+    return [specs[k] for k in keys]
+
+
+def _load_or_compute(spec: FigureSpec, data_dir: Path, quick: bool, fingerprint: str, force: bool):
+    path = data_dir / f"{spec.key}.nc"
+    if path.exists() and not force:
+        try:
+            ds = xr.load_dataset(path)
+            if ds.attrs.get("fingerprint") == fingerprint and bool(ds.attrs.get("quick")) == quick:
+                return ds, True
+        except (OSError, ValueError):
+            pass  # unreadable checkpoint (killed mid-write by another tool): recompute
+    ds = spec.compute(quick)
+    ds.attrs.update({"fingerprint": fingerprint, "quick": int(quick), "figure": spec.key})
+    tmp = path.with_suffix(".nc.partial")
+    ds.to_netcdf(tmp)
+    os.replace(tmp, path)
+    return ds, False
+
+
+def reproduce(out: Path, *, quick: bool = False, only: str | None = None, force: bool = False,
+              progress=None) -> Summary:
+    """Compute, plot and check the selected figures, then write ``report.md`` and ``report.html``."""
+    specs = select(only)
+    out = Path(out)
+    data_dir = out / "data"
+    data_dir.mkdir(parents=True, exist_ok=True)
+    fingerprint = source_fingerprint()
+    summary = Summary(out, quick)
+    for spec in specs:
+        if progress:
+            progress(spec)
+        start = time.perf_counter()
+        ds, cached = _load_or_compute(spec, data_dir, quick, fingerprint, force)
+        image = f"{spec.key}.png"
+        spec.plot(ds, out / image)
+        checks = spec.check(ds)
+        summary.outcomes.append(FigureOutcome(spec, checks, time.perf_counter() - start, cached, image))
+        write_report(summary)  # keep the report current while the run proceeds
+    return summary
+
+
+def _markdown(summary: Summary) -> str:
+    now = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    n_checks = sum(len(o.checks) for o in summary.outcomes)
+    n_pass = sum(c.passed for o in summary.outcomes for c in o.checks)
+    lines = ["# stickslip — reproduction report", "",
+             f"Paper: *Friction-induced vibration and stick-slip waves: short survey and new results*. "
+             f"stickslip {__version__}, Python {platform.python_version()}, {now}, "
+             f"{'quick' if summary.quick else 'full'} mode.", "",
+             f"**{n_pass} of {n_checks} checks passed** over {len(summary.outcomes)} figures.", "",
+             "| Figure | Model | Checks | Verdict | Time [s] |", "|---|---|---|---|---|"]
+    for o in summary.outcomes:
+        verdict = "pass" if o.passed else "**FAIL**"
+        lines.append(f"| [{o.spec.title}](#{o.spec.key}) | {o.spec.model} | "
+                     f"{sum(c.passed for c in o.checks)}/{len(o.checks)} | {verdict} | "
+                     f"{o.seconds:.1f}{' (cached)' if o.cached else ''} |")
+    for o in summary.outcomes:
+        s = o.spec
+        lines += ["", f'<a id="{s.key}"></a>', "", f"## {s.title}", "", f"*Model:* {s.model}", "",
+                  f"**The paper's claim.** {s.claim}", "", f"**What was computed.** {s.method}", "",
+                  f"![{s.title}]({o.image})", "", "| Check | Measured | Expected | Verdict | Detail |",
+                  "|---|---|---|---|---|"]
+        for c in o.checks:
+            lines.append(f"| {c.name} | {c.measured} | {c.expected} | {'pass' if c.passed else '**FAIL**'} | "
+                         f"{c.detail} |")
+        if s.errata:
+            lines += ["", "Errata involved: " + ", ".join(f"[{e}](#errata)" for e in s.errata) + "."]
+    lines += ["", '<a id="errata"></a>', ""]
+    lines += ["#" + line if line.startswith("#") else line for line in to_markdown().splitlines()]
+    return "\n".join(lines) + "\n"
+
+
+_HTML = """<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>stickslip reproduction report</title>
+<style>body{{font-family:sans-serif;max-width:70em;margin:2em auto;line-height:1.4}}
+table{{border-collapse:collapse;margin:1em 0}}td,th{{border:1px solid #ccc;padding:.3em .6em;font-size:90%}}
+img{{max-width:100%}}code{{background:#f4f4f4}}</style></head><body>
+{body}
+</body></html>
+"""
+
+
+def write_report(summary: Summary) -> None:
+    import markdown
+
+    md = _markdown(summary)
+    (summary.out / "report.md").write_text(md)
+    body = markdown.markdown(md, extensions=["tables"])
+    (summary.out / "report.html").write_text(_HTML.format(body=body))
+
+
+__all__ = ["reproduce", "Summary", "ERRATA"]

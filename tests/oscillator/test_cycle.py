@@ -1,0 +1,103 @@
+import math
+
+import numpy as np
+import pytest
+
+from stickslip.errors import NoSolutionError, ParameterError
+from stickslip.friction import Coulomb, LinearWeakening, Stribeck
+from stickslip.oscillator import Engine, Oscillator, limit_cycle, return_map
+from stickslip.oscillator.baseline import solve_ivp_switches
+
+
+def _coulomb_closed_form(m, k, N, V, fs, fd):
+    w = math.sqrt(k / m)
+    dta = 2 * (fs - fd) * N / (k * V)
+    dtg = (2 * math.pi - 2 * math.atan(dta * w / 2)) / w
+    r = math.hypot((fs - fd) * N / k, V / w)
+    return dta, dtg, fd * N / k - r, fd * N / k + r
+
+
+@pytest.mark.parametrize("m, k, N, V, fs, fd", [(1, 1, 1, 0.2, 0.6, 0.4), (2.0, 50.0, 10.0, 0.05, 0.5, 0.3),
+                                                (0.5, 3.0, 2.0, 1.5, 0.9, 0.1), (1, 1, 1, 0.2, 0.4, 0.4)])
+def test_coulomb_cycle_matches_closed_form(m, k, N, V, fs, fd):
+    cycle = limit_cycle(Oscillator(m, k, N, V, Coulomb(fs, fd)))
+    dta, dtg, x_min, x_max = _coulomb_closed_form(m, k, N, V, fs, fd)
+    assert cycle.stick_time == pytest.approx(dta, rel=1e-12, abs=1e-14)
+    assert cycle.slip_time == pytest.approx(dtg, rel=1e-12)
+    assert cycle.period == pytest.approx(dta + dtg, rel=1e-12)
+    assert cycle.x_min == pytest.approx(x_min, rel=1e-12) and cycle.x_max == pytest.approx(x_max, rel=1e-12)
+    assert cycle.v_max == pytest.approx(V) and cycle.v_min == pytest.approx(-math.sqrt(k / m) * (x_max - x_min) / 2, rel=1e-9)
+    if fs == fd:  # the cycle is the ellipse tangent to the stick line: no transversal switch
+        assert np.all(np.isnan(cycle.floquet_multipliers)) and cycle.stick_time < 1e-12
+
+
+def test_printed_slip_time_is_wrong():
+    """Erratum E1: 2π arctan(Δt_a w/2)/w disagrees with the simulated cycle; the corrected one agrees."""
+    for V in (0.05, 0.2, 1.0):
+        osc = Oscillator(1.0, 1.0, 1.0, V, Coulomb(0.6, 0.4))
+        cycle = limit_cycle(osc)
+        dta = 2 * 0.2 / V
+        printed = 2 * math.pi * math.atan(dta / 2)
+        corrected = 2 * math.pi - 2 * math.atan(dta / 2)
+        assert cycle.slip_time == pytest.approx(corrected, rel=1e-12)
+        assert abs(printed / cycle.slip_time - 1) > 0.04
+    # as f_s -> f_d the printed formula tends to 0, the true slip time to 2π/w
+    cycle = limit_cycle(Oscillator(1.0, 1.0, 1.0, 0.2, Coulomb(0.4 + 1e-4, 0.4)))
+    assert cycle.slip_time == pytest.approx(2 * math.pi - 1e-3, rel=1e-6)
+    assert 2 * math.pi * math.atan(5e-4) / cycle.slip_time < 1e-2  # printed: almost no slip at all
+
+
+def test_period_agrees_with_independent_solve_ivp():
+    osc = Oscillator(1.0, 4.0, 2.0, 0.3, Stribeck(0.6, 0.4, 0.2), damping=0.1)
+    cycle = limit_cycle(osc)
+    switches = solve_ivp_switches(osc, osc.stick_limits[1], osc.belt_speed, 12 * cycle.period, rtol=1e-12)
+    entries = [t for t, *_, mode in switches if mode == 0]
+    assert np.diff(entries)[-3:] == pytest.approx([cycle.period] * 3, rel=1e-9)
+
+
+@pytest.mark.parametrize("law", [Coulomb(0.6, 0.4), LinearWeakening(0.4, 0.4, 0.5), Stribeck(0.6, 0.4, 0.1)],
+                         ids=lambda l: type(l).__name__)
+def test_stick_slip_multipliers_are_one_and_zero(law):
+    cycle = limit_cycle(Oscillator(1.0, 1.0, 1.0, 0.2, law, damping=0.02))
+    mults = np.sort(np.abs(cycle.floquet_multipliers))
+    assert mults[0] < 1e-11 and abs(mults[1] - 1) < 1e-10
+    assert cycle.touches_stick and cycle.stable
+
+
+def test_nontrivial_multiplier_is_the_slope_of_the_return_map():
+    """An unstable pure-slip cycle (Stribeck, between Hopf and grazing): the saltation-free
+    monodromy multiplier equals P'(x*) measured by finite differences of the return map."""
+    osc = Oscillator(1.0, 1.0, 1.0, 0.6, Stribeck(0.6, 0.4, 0.1), damping=0.05)
+    cycle = limit_cycle(osc, x0=osc.equilibrium - 0.45, v0=0.0)
+    assert not cycle.touches_stick and not cycle.stable
+    engine = Engine(osc)
+    h = 1e-6
+    slope = (return_map(engine, cycle.section_x + h).x_next - return_map(engine, cycle.section_x - h).x_next) / (2 * h)
+    assert cycle.nontrivial_multiplier.real == pytest.approx(slope, rel=1e-5)
+    assert abs(cycle.nontrivial_multiplier.real * 1.0 - np.prod(cycle.floquet_multipliers).real) < 1e-9
+    # Liouville: the product of multipliers is exp(-∫ trace) = exp(-∫ (c + N mu'(v_r)) / m dt)
+    t, x, v, _ = cycle.trajectory.sample(20001)
+    trace = -(osc.damping + osc.normal_force * osc.friction.slope(osc.belt_speed - v)) / osc.mass
+    assert np.prod(cycle.floquet_multipliers).real == pytest.approx(math.exp(np.trapezoid(trace, t)), rel=1e-6)
+
+
+def test_no_cycle_is_reported_as_no_solution():
+    osc = Oscillator(1.0, 1.0, 1.0, 0.2, Coulomb(0.6, 0.4), damping=0.5)
+    with pytest.raises(NoSolutionError, match="equilibrium|section"):
+        limit_cycle(osc)
+
+
+def test_cycle_summary_and_dataset():
+    cycle = limit_cycle(Oscillator(1.0, 1.0, 1.0, 0.2, Coulomb(0.6, 0.4)))
+    d = cycle.to_dict()
+    assert {"period", "stick_time", "slip_time", "x_min", "x_max", "floquet_multipliers"} <= set(d)
+    ds = cycle.to_xarray(201)
+    assert ds.attrs["period"] == pytest.approx(d["period"]) and ds["x"].attrs["units"] == "m"
+
+
+def test_cycle_validation():
+    osc = Oscillator(1.0, 1.0, 1.0, 0.2, Coulomb(0.6, 0.4))
+    with pytest.raises(ParameterError, match="x0"):
+        limit_cycle(osc, x0=float("nan"))
+    with pytest.raises(ParameterError, match="tol"):
+        limit_cycle(osc, tol=0.0)

@@ -1,0 +1,146 @@
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+from stickslip.errors import ParameterError
+from stickslip.friction import Coulomb, LinearWeakening, Stribeck, UserLaw
+from stickslip.oscillator import Mode, Oscillator, simulate
+from stickslip.oscillator.baseline import solve_ivp_switches
+
+FIG2 = Oscillator(1.0, 1.0, 1.0, 0.2, Coulomb(0.6, 0.4))
+PERIOD = 2.0 + (2 * math.pi - 2 * math.atan(1.0))  # Δt_a + Δt_g for FIG2
+
+
+def test_ten_thousand_cycles_without_drift():
+    traj = simulate(FIG2, PERIOD * 10_000 + 1.0, x0=0.6, v0=0.2)
+    stick = traj.durations(Mode.STICK)[1:]
+    slip = traj.durations(Mode.SLIP_POS)[:-1]
+    assert traj.status == 0 and stick.size >= 9_999
+    ulp = np.spacing(traj.t_end)  # durations are differences of times of order 7e4 s
+    assert np.max(np.abs(stick - 2.0)) <= 4 * ulp
+    assert np.max(np.abs(slip - (PERIOD - 2.0))) <= 4 * ulp
+    starts = traj.t[:-1][traj.modes == 0][1:]
+    assert abs((starts[-1] - starts[0]) / (starts.size - 1) - PERIOD) < 1e-13  # no accumulated time error
+
+
+def test_energy_is_conserved_on_coulomb_slip_segments():
+    traj = simulate(FIG2, 30.0, x0=-1.5, v0=0.0)
+    for seg in traj.segments:
+        if seg.mode == Mode.STICK:
+            continue
+        t = np.linspace(seg.t0, seg.t1, 50)
+        x, v = seg.sample(t)
+        centre = int(seg.mode) * 0.4
+        energy = 0.5 * v**2 + 0.5 * (x - centre) ** 2
+        assert np.ptp(energy) < 1e-13
+
+
+def test_switching_states_obey_coulomb_law():
+    traj = simulate(FIG2, 60.0, x0=-1.5, v0=0.0)
+    x_lo, x_hi = FIG2.stick_limits
+    modes = [e[4] for e in traj.events]
+    assert Mode.SLIP_NEG in modes and Mode.STICK in modes  # reverse slip, then capture
+    for seg in traj.segments:
+        if seg.mode == Mode.STICK and seg.duration > 0:
+            assert x_lo - 1e-12 <= seg.x0 <= x_hi + 1e-12 and seg.x1 == pytest.approx(x_hi)
+        if seg.mode == Mode.SLIP_NEG:
+            t = np.linspace(seg.t0, seg.t1, 30)[1:-1]
+            assert np.all(seg.sample(t)[1] > 0.2)
+
+
+def test_switch_times_agree_with_plain_solve_ivp():
+    traj = simulate(FIG2, 40.0, x0=-1.5, v0=0.0)
+    ref = solve_ivp_switches(FIG2, -1.5, 0.0, 40.0, rtol=1e-12)
+    ours = [(e[0], int(e[4])) for e in traj.events]
+    assert [m for _, m in ours] == [m for *_, m in ref]
+    assert max(abs(a[0] - b[0]) for a, b in zip(ours, ref)) < 1e-8
+
+
+def _fit_reverse_arc(osc):
+    """Centre and damping of the first reverse-slip arc, fitted from the simulated orbit."""
+    traj = simulate(osc, 8.0, x0=-1.0, v0=0.0)
+    seg = next(s for s in traj.segments if s.mode == Mode.SLIP_NEG)
+    t = np.linspace(seg.t0, seg.t1, 400)
+    x, v = seg.sample(t)
+    acc = np.gradient(v, t)[5:-5]
+    # least squares for x'' = -d x' - (x - x_c)  (m = k = 1)
+    a = np.column_stack([v[5:-5], x[5:-5], np.ones(acc.size)])
+    coef = np.linalg.lstsq(a, acc, rcond=None)[0]
+    return coef[2] / -coef[1], -coef[0]
+
+
+def test_reverse_slip_spiral_centre_and_growth():
+    """Erratum E2: eq. [9] as printed contradicts the text; the odd law matches it."""
+    fd, tau, V = 0.4, 0.5, 0.2
+    odd = Oscillator(1.0, 1.0, 1.0, V, LinearWeakening(0.4, fd, tau))
+    centre, damping = _fit_reverse_arc(odd)
+    assert centre == pytest.approx(-fd * (1 + tau * V), rel=1e-3)
+    assert damping == pytest.approx(-fd * tau, rel=1e-3)  # negative: the divergent spirals of the text
+    # [8] and [9] literally: mu(v_r) = f_d (1 - tau v_r) for both signs of v_r
+    printed = odd.replace(friction=UserLaw(lambda v: fd * (1 - tau * v), 0.4))
+    centre_p, damping_p = _fit_reverse_arc(printed)
+    assert centre_p == pytest.approx(-fd * (1 - tau * V), rel=1e-3)
+    assert damping_p == pytest.approx(+fd * tau, rel=1e-3)  # positive: converging, unlike the text
+
+
+def test_tangential_departure_does_not_chatter():
+    """Erratum E3 / f_s = f_d: the slip arc leaves the stick segment with zero acceleration."""
+    for law in (Coulomb(0.4, 0.4), LinearWeakening(0.4, 0.4, 0.5), Stribeck(0.6, 0.4, 0.1)):
+        osc = Oscillator(1.0, 1.0, 1.0, 0.2, law)
+        traj = simulate(osc, 200.0, x0=0.0, v0=0.0)
+        assert traj.status == 0
+        slip = traj.durations(Mode.SLIP_POS)[1:-1]
+        assert slip.size > 10 and slip.min() > 1.0  # every slip arc is a full arc: no Zeno, no chatter
+
+
+def test_numeric_flow_converges_to_closed_form():
+    """The DOP853 path (law as a callable) agrees with the closed form, better with tighter rtol."""
+    user = FIG2.replace(friction=UserLaw(lambda v: 0.4, 0.6))
+    exact = simulate(FIG2, 30.0, x0=-0.5, v0=0.0)
+    errors = []
+    for rtol in (1e-6, 1e-9, 1e-12):
+        approx = simulate(user, 30.0, x0=-0.5, v0=0.0, rtol=rtol)
+        assert list(approx.modes) == list(exact.modes)
+        errors.append(np.max(np.abs(approx.t - exact.t)))
+    assert errors[2] < 1e-9 and errors[0] > errors[1] > errors[2]
+
+
+def test_linear_law_validity_is_enforced():
+    osc = Oscillator(1.0, 1.0, 1.0, 0.2, LinearWeakening(0.4, 0.4, 0.5))
+    traj = simulate(osc, 50.0, x0=-4.0, v0=0.0)
+    assert traj.status == -1 and "validity" in traj.message
+
+
+def test_simulate_against_damped_solve_ivp_with_stribeck():
+    osc = Oscillator(1.0, 1.0, 1.0, 0.2, Stribeck(0.6, 0.4, 0.1), damping=0.05)
+    traj = simulate(osc, 30.0, x0=0.0, v0=0.0)
+    ref = solve_ivp_switches(osc, 0.0, 0.0, 30.0, rtol=1e-12)
+    assert [int(e[4]) for e in traj.events] == [m for *_, m in ref]
+    assert max(abs(e[0] - r[0]) for e, r in zip(traj.events, ref)) < 1e-7
+
+
+@pytest.mark.parametrize("kwargs, name", [
+    (dict(mass=0.0), "mass"), (dict(stiffness=-1.0), "stiffness"), (dict(normal_force=float("nan")), "normal_force"),
+    (dict(belt_speed=0.0), "belt_speed"), (dict(damping=-0.1), "damping"), (dict(friction="coulomb"), "friction"),
+])
+def test_oscillator_validation(kwargs, name):
+    with pytest.raises(ParameterError) as err:
+        FIG2.replace(**kwargs)
+    assert err.value.name == name
+
+
+@pytest.mark.parametrize("kwargs, name", [(dict(t_end=-1.0), "t_end"), (dict(t_end=1.0, x0=float("inf")), "x0"),
+                                          (dict(t_end=1.0, rtol=0.1), "rtol"), (dict(t_end=1.0, method="rk4"), "method")])
+def test_simulate_validation(kwargs, name):
+    with pytest.raises(ParameterError) as err:
+        simulate(FIG2, **kwargs)
+    assert err.value.name == name
+
+
+def test_trajectory_dataset_has_units():
+    ds = simulate(FIG2, 20.0, x0=-0.5).to_xarray(101)
+    assert ds["x"].attrs["units"] == "m" and ds["t"].attrs["units"] == "s" and ds["v"].attrs["units"] == "m/s"
+    assert set(np.unique(ds["mode"].values)) <= {-1, 0, 1}
+    assert ds.attrs["friction_law"] == "Coulomb"

@@ -1,0 +1,48 @@
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from stickslip.cli import run
+from stickslip.errata import ERRATA, to_markdown
+from stickslip.figures import registry
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def test_errata_doc_is_generated_from_the_list():
+    assert (ROOT / "docs" / "errata.md").read_text() == to_markdown()
+
+
+def test_every_erratum_names_existing_tests():
+    for erratum in ERRATA:
+        assert erratum.tests, erratum.id
+        for node in erratum.tests:
+            path, _, name = node.partition("::")
+            assert name and f"def {name}(" in (ROOT / path).read_text(), node
+
+
+def test_reproduce_one_figure_and_resume(tmp_path, capsys):
+    code = run(["reproduce", "--out", str(tmp_path), "--quick", "--only", "fig2", "--json"])
+    summary = json.loads(capsys.readouterr().out)
+    assert code == 0 and summary["passed"] and summary["figures"][0]["cached"] is False
+    for name in ("report.md", "report.html", "fig2.png", "data/fig2.nc"):
+        assert (tmp_path / name).exists(), name
+    report = (tmp_path / "report.md").read_text()
+    assert "The paper's claim" in report and "E1" in report and "| pass |" in report
+    # a second run (as after a kill) reuses the checkpoint
+    code = run(["reproduce", "--out", str(tmp_path), "--quick", "--only", "fig2", "--json"])
+    assert json.loads(capsys.readouterr().out)["figures"][0]["cached"] is True
+
+
+def test_unknown_figure_is_a_usage_error(tmp_path, capsys):
+    code = run(["reproduce", "--out", str(tmp_path), "--only", "fig99"])
+    err = capsys.readouterr().err
+    assert code == 2 and "fig99" in err and "fig2" in err
+
+
+def test_registry_lists_the_paper_figures():
+    keys = set(registry())
+    assert {"fig2", "fig3", "oscillator-bifurcation"} <= keys
