@@ -53,6 +53,44 @@ ERRATA: list[Erratum] = [
         "segment tangentially (zero initial acceleration); the tests check that no chattering occurs.",
         ("tests/oscillator/test_simulate.py::test_tangential_departure_does_not_chatter",),
     ),
+    Erratum(
+        "B1", "Section 3, eq. [11]: sign of the steady contact pressure",
+        "p_e = δ · 1/(1 − ξ²) · 1/(1 + μ) · (ξ² + 1/(1 − 2μ))",
+        "p_e = δ (ξ² + 1/(1 − 2ν)) / ((1 + ν)(ξ² − 1)) > 0 for δ > 0",
+        "As printed p_e < 0 for every ξ > 1 (the shaft would pull on the ring), against p ≥ 0 in [10]. A sympy "
+        "Lamé solution of [10] (static, axisymmetric, u(ξ) = v(ξ) = 0, u(1) = δ, q = f p) gives −σ_rr(1) equal "
+        "to the corrected formula; the printed value is exactly −p_e.",
+        ("tests/brake/test_brake_steady.py::test_contact_pressure_is_positive_and_printed_eq11_has_the_wrong_sign",
+         "tests/brake/test_brake_steady.py::test_steady_state_is_the_lame_solution"),
+    ),
+    Erratum(
+        "B2", "Section 3, eq. [11]: μ printed for Poisson's ratio ν",
+        "v_e = δ f X(r) (1 + 1/(ξ²(1 − 2μ))), and μ in p_e",
+        "ν in both places: v_e = δ f X(r) (1 + 1/(ξ²(1 − 2ν)))",
+        "In [10] μ is Lamé's shear modulus (a stress), so 1 + μ and 1 − 2μ are dimensionally inconsistent. With ν, "
+        "v_e matches the sympy Lamé solution exactly and equals δ f g/h of [16].",
+        ("tests/brake/test_brake_steady.py::test_reduced_steady_state_eq16_agrees_with_lame",),
+    ),
+    Erratum(
+        "B3", "Section 3, eq. [12]: second derivatives swapped",
+        "Ü − bV'' − DV' + gU = P,  V̈ − aU'' + DU' + hV = Q",
+        "Ü − bU'' − DV' + gU = P,  V̈ − aV'' + DU' + hV = Q (as in [15])",
+        "A sympy Galerkin projection of plane-strain elastodynamics on u = X U, v = X V: the radial equation has "
+        "−b U'' (shear modulus), the tangential one −a V'' (P-modulus); the coupling −DV'/+DU' is antisymmetric, "
+        "as a symmetric stiffness operator requires, with D of [13] (all of [13] confirmed to 1e-10).",
+        ("tests/brake/test_brake_coefficients.py::test_printed_eq12_has_its_second_derivatives_swapped",
+         "tests/brake/test_brake_coefficients.py::test_galerkin_equations_have_the_structure_of_eq15",
+         "tests/brake/test_brake_coefficients.py::test_code_and_printed_eq13_match_the_galerkin_projection"),
+    ),
+    Erratum(
+        "B4", "Section 3, eqs. [12], [16]: P, Q and P_e never defined; typography",
+        "P, Q in [12] without definition; P = P_e in [16] without value; P(u − δ) = 0 in [12]; 'P ≥,' in [15]",
+        "P = p/M, Q = q/M with the modal mass M = γ∫X² r dr = γB/(ξ² − 1); P_e = gδ, Q_e = f g δ; P(U − δ) = 0; P ≥ 0",
+        "The Galerkin projection gives M Ü + … = p (X(1) = 1); dividing by M gives the coefficients of [13] exactly, "
+        "and M P_e equals the Lamé p_e of B1.",
+        ("tests/brake/test_brake_coefficients.py::test_modal_mass_is_gamma_B_over_xi2_minus_1",
+         "tests/brake/test_brake_steady.py::test_reduced_steady_state_eq16_agrees_with_lame"),
+    ),
 ]
 
 

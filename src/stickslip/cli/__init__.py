@@ -13,7 +13,7 @@ import click
 import typer
 
 from ..errors import NoSolutionError, ParameterError
-from . import oscillator, reproduce
+from . import brake, oscillator, reproduce
 
 # typer may vendor its own copy of click: catch both families of exceptions
 _EXIT = (typer.Exit, click.exceptions.Exit)
@@ -23,6 +23,7 @@ _USAGE = (typer.BadParameter.__mro__[1], click.UsageError)  # UsageError
 app = typer.Typer(no_args_is_help=True, add_completion=False, pretty_exceptions_enable=False,
                   help="Friction-induced vibration and stick-slip waves (models of the paper, and beyond).")
 app.add_typer(oscillator.app, name="oscillator")
+app.add_typer(brake.app, name="brake")
 app.command("reproduce")(reproduce.reproduce)
 
 

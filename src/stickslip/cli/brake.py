@@ -1,0 +1,116 @@
+"""`stickslip brake ...`: the brake-like system, reduced model (paper section 3)."""
+
+from __future__ import annotations
+
+from typing import Annotated, Optional
+
+import typer
+
+from ..errors import ParameterError
+from ._common import emit
+
+app = typer.Typer(no_args_is_help=True, help="Elastic annulus on a rotating shaft: reduced model (paper section 3).")
+
+Opt = Optional[float]
+Xi = Annotated[Opt, typer.Option("--xi", help="Radius ratio R*/R > 1.")]
+Nu = Annotated[float, typer.Option("--nu", help="Poisson's ratio in [0, 0.5).")]
+Gamma = Annotated[Opt, typer.Option("--gamma", help="Inertia number rho R^2 Omega^2 / E > 0.")]
+Delta = Annotated[Opt, typer.Option("--delta", help="Mismatch d/R >= 0.")]
+Friction = Annotated[float, typer.Option("--friction", help="Coulomb coefficient f >= 0.")]
+Inner = Annotated[Opt, typer.Option("--inner-radius", help="R [m] (default 0.1 with physical input).")]
+Outer = Annotated[Opt, typer.Option("--outer-radius", help="R* [m] (default 0.15 with physical input).")]
+Young = Annotated[Opt, typer.Option("--young", help="E [Pa] (default 2.1e11).")]
+Density = Annotated[Opt, typer.Option("--density", help="rho [kg/m^3] (default 7850).")]
+Omega = Annotated[Opt, typer.Option("--omega", help="Shaft speed Omega [rad/s] > 0.")]
+Mismatch = Annotated[Opt, typer.Option("--mismatch", help="Mismatch d [m] >= 0.")]
+Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
+
+_DEFAULTS = {"inner_radius": 0.1, "outer_radius": 0.15, "young": 2.1e11, "density": 7850.0}
+
+
+def _pick(name: str, given, physical_name: str, physical_given: bool):
+    if given is not None and physical_given:
+        raise ParameterError(f"--{name}", given, f"given alone, not together with --{physical_name}")
+    return given
+
+
+def resolve(*, xi=None, nu=0.3, gamma=None, delta=None, friction=0.0, inner_radius=None, outer_radius=None,
+            young=None, density=None, omega=None, mismatch=None, need=("xi", "gamma", "delta")) -> dict:
+    """Dimensionless ``xi, gamma, delta`` from either the dimensionless or the SI options."""
+    phys = {k: v for k, v in dict(inner_radius=inner_radius, outer_radius=outer_radius, young=young,
+                                  density=density, omega=omega, mismatch=mismatch).items() if v is not None}
+    m = {**_DEFAULTS, **phys}
+    out = {"nu": nu, "friction": friction}
+    geometry = "inner_radius" in phys or "outer_radius" in phys
+    if "xi" in need:
+        out["xi"] = _pick("xi", xi, "outer-radius", geometry)
+        if out["xi"] is None:
+            if m["inner_radius"] <= 0:
+                raise ParameterError("--inner-radius", m["inner_radius"], "> 0")
+            out["xi"] = m["outer_radius"] / m["inner_radius"]
+    if "gamma" in need:
+        out["gamma"] = _pick("gamma", gamma, "omega", "omega" in phys)
+        if out["gamma"] is None:
+            if "omega" not in phys:
+                raise ParameterError("--gamma", None, "given, or --omega [rad/s] with the material")
+            from ..brake import PhysicalParams
+
+            out["gamma"] = PhysicalParams(m["omega"], 0.0, 0.0, m["inner_radius"], m["outer_radius"], m["young"],
+                                          m["density"], nu).gamma
+    if "delta" in need:
+        out["delta"] = _pick("delta", delta, "mismatch", "mismatch" in phys)
+        if out["delta"] is None:
+            if "mismatch" not in phys:
+                raise ParameterError("--delta", None, "given, or --mismatch [m]")
+            out["delta"] = m["mismatch"] / m["inner_radius"]
+    return out
+
+
+def parse_modes(text: str) -> list[int]:
+    """``"1-20"``, ``"8"`` or ``"2,4,8"`` -> list of mode numbers."""
+    try:
+        modes = []
+        for part in text.split(","):
+            lo, _, hi = part.strip().partition("-")
+            modes += list(range(int(lo), int(hi) + 1)) if hi else [int(lo)]
+    except ValueError:
+        raise ParameterError("--modes", text, "a list like 1-20, 8 or 2,4,8") from None
+    if not modes or min(modes) < 1:
+        raise ParameterError("--modes", text, "mode numbers >= 1")
+    return modes
+
+
+@app.command()
+def coefficients(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, inner_radius: Inner = None,
+                 outer_radius: Outer = None, young: Young = None, density: Density = None, omega: Omega = None,
+                 json: Json = False):
+    """Coefficients a, b, g, h, D, A, B, C1, C2 of the reduced model (eq. [13])."""
+    from ..brake import coefficients as compute
+
+    p = resolve(xi=xi, nu=nu, gamma=gamma, inner_radius=inner_radius, outer_radius=outer_radius, young=young,
+                density=density, omega=omega, need=("xi", "gamma"))
+    emit(compute(p["xi"], p["nu"], p["gamma"]).to_dict(), json, "reduced-model coefficients [13]")
+
+
+@app.command()
+def steady(xi: Xi = None, nu: Nu = 0.3, delta: Delta = None, friction: Friction = 0.0,
+           inner_radius: Inner = None, outer_radius: Outer = None, mismatch: Mismatch = None, json: Json = False):
+    """Steady sliding: p_e, q_e (units of E), U_e, V_e (units of R), eqs. [11] and [16]."""
+    from ..brake import steady_sliding
+
+    p = resolve(xi=xi, nu=nu, delta=delta, friction=friction, inner_radius=inner_radius, outer_radius=outer_radius,
+                mismatch=mismatch, need=("xi", "delta"))
+    emit(steady_sliding(p["xi"], p["nu"], p["delta"], p["friction"]).to_dict(), json, "steady sliding")
+
+
+@app.command()
+def stability(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, friction: Friction = 0.0,
+              modes: Annotated[str, typer.Option(help="Mode numbers, e.g. 1-20 or 2,4,8.")] = "1-20",
+              inner_radius: Inner = None, outer_radius: Outer = None, young: Young = None, density: Density = None,
+              omega: Omega = None, mismatch: Mismatch = None, json: Json = False):
+    """Growth rate Re s and frequency Im s of each Fourier mode n of steady sliding."""
+    from ..brake import BrakeParams, growth_rates
+
+    p = resolve(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
+                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
+    emit(growth_rates(BrakeParams(**p), parse_modes(modes)).to_dict(), json, "linear stability of steady sliding")

@@ -1,0 +1,63 @@
+"""`stickslip brake ...`: the command-line contract of issue 3."""
+
+import json
+
+import pytest
+
+from stickslip.brake import BrakeParams, PhysicalParams, coefficients, growth_rates, steady_sliding
+from stickslip.cli import run
+
+
+def _json(args, capsys):
+    code = run(args)
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    return json.loads(out)
+
+
+def test_coefficients_contract(capsys):
+    data = _json(["brake", "coefficients", "--xi", "1.5", "--nu", "0.3", "--gamma", "1e-6", "--json"], capsys)
+    assert set(data) == {"a", "b", "g", "h", "D", "A", "B", "C1", "C2"}
+    assert data["a"] == pytest.approx(coefficients(1.5, 0.3, 1e-6).a)
+
+
+def test_steady_contract_and_positive_pressure(capsys):
+    data = _json(["brake", "steady", "--xi", "1.5", "--nu", "0.3", "--delta", "0.004", "--friction", "0.2", "--json"],
+                 capsys)
+    assert {"p_e", "q_e", "U_e", "V_e"} <= set(data) and data["p_e"] > 0
+    assert data["q_e"] == pytest.approx(0.2 * data["p_e"]) and data["U_e"] == 0.004
+
+
+def test_stability_contract(capsys):
+    data = _json(["brake", "stability", "--xi", "1.5", "--nu", "0.3", "--gamma", "1e-6", "--delta", "0.004",
+                  "--friction", "0.2", "--modes", "1-20", "--json"], capsys)
+    assert [m["n"] for m in data["modes"]] == list(range(1, 21))
+    assert all(set(m) == {"n", "growth_rate", "frequency"} for m in data["modes"])
+    expected = growth_rates(BrakeParams(1.5, 0.3, 1e-6, 0.004, 0.2), range(1, 21)).growth_rate
+    assert [m["growth_rate"] for m in data["modes"]] == pytest.approx(list(expected))
+
+
+def test_physical_options_match_the_dimensionless_ones(capsys):
+    data = _json(["brake", "stability", "--omega", "50", "--mismatch", "1e-4", "--friction", "0.7", "--modes", "8",
+                  "--json"], capsys)
+    p = PhysicalParams(50.0, 1e-4, 0.7).dimensionless()
+    assert data["modes"][0]["growth_rate"] == pytest.approx(float(growth_rates(p, [8]).growth_rate[0]))
+    data = _json(["brake", "steady", "--inner-radius", "0.1", "--outer-radius", "0.2", "--mismatch", "4e-4",
+                  "--friction", "0.2", "--json"], capsys)
+    assert data["p_e"] == pytest.approx(steady_sliding(2.0, 0.3, 0.004, 0.2).p_e)
+
+
+@pytest.mark.parametrize("args, name", [
+    (["coefficients", "--xi", "0.9", "--gamma", "1"], "xi"),
+    (["coefficients", "--xi", "1.5", "--nu", "0.5", "--gamma", "1"], "nu"),
+    (["coefficients", "--xi", "1.5", "--gamma", "-1"], "gamma"),
+    (["coefficients", "--xi", "1.5"], "--gamma"),
+    (["steady", "--xi", "1.5", "--delta", "-0.1"], "delta"),
+    (["steady", "--xi", "1.5", "--delta", "0.01", "--friction", "nan"], "friction"),
+    (["stability", "--xi", "1.5", "--gamma", "1", "--delta", "0.01", "--modes", "x-3"], "--modes"),
+    (["coefficients", "--xi", "1.5", "--outer-radius", "0.2", "--gamma", "1"], "--xi"),
+])
+def test_bad_input_is_one_line_and_exit_2(args, name, capsys):
+    code = run(["brake", *args, "--json"])
+    out, err = capsys.readouterr()
+    assert code == 2 and out == "" and err.count("\n") == 1 and name in err
