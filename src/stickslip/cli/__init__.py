@@ -9,16 +9,14 @@ from __future__ import annotations
 import os
 import sys
 
-import click
 import typer
 
 from ..errors import NoSolutionError, ParameterError
 from . import brake, oscillator, reproduce
 
-# typer may vendor its own copy of click: catch both families of exceptions
-_EXIT = (typer.Exit, click.exceptions.Exit)
-_ABORT = (typer.Abort, click.exceptions.Abort)
-_USAGE = (typer.BadParameter.__mro__[1], click.UsageError)  # UsageError
+# typer vendors its own copy of click (older releases re-export click's classes):
+# its usage errors are the parent class of typer.BadParameter in both cases
+_EXIT, _ABORT, _USAGE = typer.Exit, typer.Abort, typer.BadParameter.__mro__[1]
 
 app = typer.Typer(no_args_is_help=True, add_completion=False, pretty_exceptions_enable=False,
                   help="Friction-induced vibration and stick-slip waves (models of the paper, and beyond).")
@@ -46,6 +44,8 @@ def run(argv: list[str] | None = None) -> int:
         print("aborted", file=sys.stderr)
         return 1
     except _USAGE as exc:  # parsing errors: missing or malformed options
+        if type(exc).__name__ == "NoArgsIsHelpError":  # the help was printed: nothing went wrong
+            return 0
         return fail("error", exc.format_message(), 2)
     except ParameterError as exc:
         return fail("error", exc, 2)
