@@ -20,6 +20,7 @@ import numpy as np
 from scipy.integrate import DOP853
 from scipy.optimize import brentq
 
+from . import _kernel
 from .model import Mode, Oscillator
 
 _EPS = np.finfo(float).eps
@@ -92,20 +93,6 @@ class AffineSlip:
             s = np.where(small, t * (1 - z / 6 + z * z / 120 - z**3 / 5040), s)
         return c, s
 
-    def _cs_scalar(self, t: float):
-        z = self.om2 * t * t
-        if abs(z) < 1e-4:
-            return 1 - z / 2 + z * z / 24 - z**3 / 720, t * (1 - z / 6 + z * z / 120 - z**3 / 5040)
-        if self.om2 > 0:
-            w = math.sqrt(self.om2)
-            return math.cos(w * t), math.sin(w * t) / w
-        w = math.sqrt(-self.om2)
-        return math.cosh(w * t), math.sinh(w * t) / w
-
-    def _speed(self, t: float, x0: float, v0: float) -> float:
-        c, s = self._cs_scalar(t)
-        return math.exp(self.sigma * t) * (v0 * c + (self.sigma * v0 - self.w02 * (x0 - self.x_c)) * s)
-
     def _state(self, t, x0, v0):
         xi0 = x0 - self.x_c
         c, s = self._cs(t)
@@ -116,35 +103,19 @@ class AffineSlip:
 
     def _pieces(self, x0, v0, t_max):
         """0, the zeros of the acceleration in (0, t_max) (lazily), then t_max."""
-        yield 0.0
-        a0 = 2 * self.sigma * v0 - self.w02 * (x0 - self.x_c)
-        b = self.sigma * a0 - self.w02 * v0
-        if self.om2 > 0:
-            w = math.sqrt(self.om2)
-            phi = math.atan2(b / w, a0)
-            k = math.ceil((-phi - math.pi / 2) / math.pi)
-            while (t := (phi + math.pi / 2 + k * math.pi) / w) < t_max:
-                if t > 0:
-                    yield t
-                k += 1
-        else:
-            if self.om2 < 0:
-                w = math.sqrt(-self.om2)
-                t = math.atanh(-a0 * w / b) / w if b != 0 and 0 < -a0 * w / b < 1 else -1.0
-            else:
-                t = -a0 / b if b != 0 else -1.0
-            if 0 < t < t_max:
-                yield t
-        yield t_max
+        t, xi0 = 0.0, x0 - self.x_c
+        yield t
+        while t < t_max:
+            t = _kernel._next_piece(self.sigma, self.w02, self.om2, xi0, v0, t, t_max)
+            yield t
 
     def first_crossing(self, x0, v0, t_max, levels):
         """First crossing time and level index, or ``(t_max, None)``."""
         self._x0, self._v0 = x0, v0
-        scale = max(abs(v0), math.sqrt(self.w02) * abs(x0 - self.x_c), *(abs(l) for l, _ in levels))
-        tol = 16 * _EPS * scale
-        g = lambda t, level: self._speed(t, x0, v0) - level
-        t, index = _scan(g, self._pieces(x0, v0, t_max), levels, tol)
-        self._t_last = t_max if index is None else t
+        xi0 = x0 - self.x_c
+        scale = max(abs(v0), math.sqrt(self.w02) * abs(xi0), *(abs(l) for l, _ in levels))
+        g = lambda t, level: _kernel._va(self.sigma, self.w02, self.om2, xi0, v0, t)[0] - level
+        t, index = _scan(g, self._pieces(x0, v0, t_max), levels, 16 * _EPS * scale)
         return (t_max, None) if index is None else (t, index)
 
     def evaluator(self):
@@ -152,14 +123,9 @@ class AffineSlip:
         x0, v0 = self._x0, self._v0
         return lambda t: self._state(t, x0, v0)
 
-    def speed_extremes(self):
-        """Velocities at the segment's ends and its interior velocity extremes."""
-        times = np.fromiter(self._pieces(self._x0, self._v0, self._t_last), float)
-        return self._state(times, self._x0, self._v0)[1]
-
     def jacobian(self, t):
         """``d(x, v)(t) / d(x0, v0)``: the matrix exponential, in closed form."""
-        c, s = self._cs_scalar(t)
+        c, s = _kernel._cs(self.om2, t)
         e = math.exp(self.sigma * t)
         return e * np.array([[c - self.sigma * s, s], [-self.w02 * s, c + self.sigma * s]])
 
