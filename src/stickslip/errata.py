@@ -91,6 +91,62 @@ ERRATA: list[Erratum] = [
         ("tests/brake/test_brake_coefficients.py::test_modal_mass_is_gamma_B_over_xi2_minus_1",
          "tests/brake/test_brake_steady.py::test_reduced_steady_state_eq16_agrees_with_lame"),
     ),
+    Erratum(
+        'H1', "Section 4.1, eq. [29]: argument of φ2'",
+        "σ_xx = −2 Re( (2β1² − β2² + 1)/2 φ1'(z1) + (1 + β2²)/2 φ2'(z1) )",
+        "… + (1 + β2²)/2 φ2'(z2) )",
+        "sympy: the displacements [27]–[28] built from φ1(z1) = P e^{ikz1}, φ2(z2) = Q e^{ikz2} satisfy the steady plane-strain wave equations in the moving frame, and Hooke's law gives [29]–[31] exactly with φ2'(z2); with φ2'(z1) as printed σ_xx differs off the interface (on y = 0, where z1 = z2, the two coincide, so [36] is unaffected).",
+        ('tests/halfspace/test_symbolic.py::test_radok_stresses_29_31', 'tests/halfspace/test_symbolic.py::test_eq29_as_printed_has_phi2_of_z1', 'tests/halfspace/test_symbolic.py::test_radok_displacements_solve_the_steady_wave_equations', ),
+    ),
+    Erratum(
+        'H2', 'Section 4.2, after [49]: definition of α (already in SPEC; tests for it)',
+        '"F2 ≡ f1(−γ1 sin(απ) + μγ2 cos(απ)) = 0 because tan(απ) = 0"; α is never defined',
+        'tan(πα) = μγ2/γ1, 0 < α < 1/2: g of [42] equals −e^{2iπα}, and α is the exponent of the Riemann–Hilbert problem [41]',
+        '|g| = 1 and g = −e^{2iπα} to 1e-14; the periodic canonical function X = s^{−(1/2 − α)} jumps by g on SL and 1 on ST; the density f/X⁺ of [46] is real only for this α, which keeps the continuation [39] consistent (checked on the quadrature of [46]).',
+        ('tests/halfspace/test_waves.py::test_alpha_is_the_exponent_of_g', 'tests/halfspace/test_fields.py::test_canonical_function_jumps_and_period', 'tests/halfspace/test_fields.py::test_symmetry_39_holds_for_the_quadrature', ),
+    ),
+    Erratum(
+        'H3', 'Section 4.2, eq. [48]: sign of the T* term on the stick zone',
+        'Φ(z ∈ ST) = −f1/2 − i{ −(f1/2) μγ2/γ1 + f1 |X|/(2 cos πα) + (T*/γ1)(1 − |X|) }',
+        'Φ(z ∈ ST) = −f1/2 − i{ −(f1/2) μγ2/γ1 + f1 |X|/(2 cos πα) − (T*/γ1)(1 − |X|) }',
+        "Φ⁻ is bounded at the stick→slip point a (X(a) = 0), hence continuous there. [47] at |X| = 0 gives Im Φ = T*/γ1 + (f1/2) μγ2/γ1; the printed [48] gives −T*/γ1 + (f1/2) μγ2/γ1: a jump of 2T*/γ1 in σ_xy at a bounded end, impossible for a Cauchy integral. With the sign corrected, [47]–[48] are exactly Φ⁻ = A' + iβ0 X⁻ with A' = (f2 − f1)/(1 − g) and β0 = R/cos πα − T*/γ1 (R = −f1/2), the form the periodic solution also has.",
+        ('tests/halfspace/test_fields.py::test_corrected_48_is_continuous_at_the_stick_to_slip_point', ),
+    ),
+    Erratum(
+        'H4', 'Section 5, eq. [55] versus [53]: factor 2',
+        '[53]: (v − v*) Gm / (c̄(1 − β1β2)) + T(b − 1) = 0; [55]: 2 Gm/(1 − β1β2) · v/c̄ + (b − 1)T = 2 Gm v*/((1 − β1β2) c̄), Gm = γ1 cos απ + μγ2 sin απ',
+        'The two cannot both be right: [55] doubles the v-terms of [53] but not its T-term. [49] → [50] → [53] is consistent (no factor 2), and so is the exact periodic decay condition at b = 2 (see H6); [56]–[58] and the claims "H > 0, D < 0 for all b > 1, −1 < c̄ < 0" and "v* = 0 ⇒ only the trivial solution" hold for [55] as printed (then H = γ1 b (K − 1) > 0) and fail for [53] (then H = γ1((K − 1)b − K/2) vanishes on b = K/(2(K − 1)) ∈ (1.38, ∞), where the homogeneous system has a non-trivial solution). The library implements both (`system="printed"` default, `"text"`).',
+        "sympy: [55] − 2·[53] + (b − 1)T = 0; det([54], [55]) = (b − 1)H/(γ1 c̄) with H of [57], det([54], [53]) ≠ that; singular-value test on the D = 0 curve for [53]; the exact periodic field built with [53]'s (v, T) at b = 2 leaves no stress at depth, with [55]'s it does (relative residual > 1e-2).",
+        ('tests/halfspace/test_inverse.py::test_eq55_is_twice_eq53', 'tests/halfspace/test_inverse.py::test_determinant_56_57_belongs_to_54_55', 'tests/halfspace/test_inverse.py::test_text_system_determinant_vanishes_inside_the_domain', 'tests/halfspace/test_inverse.py::test_H_is_gamma1_b_K_minus_1_and_positive', 'tests/halfspace/test_fields.py::test_exact_decay_condition_agrees_with_53_at_b_2_not_with_55', ),
+    ),
+    Erratum(
+        'H5', 'Section 5, closed form of T after [58]',
+        'T = −4bγ1(γ1 + γ1 cos 2απ + μγ2 sin 2απ)/((b − 1)(−1 + β1β2)) × v*/(c̄(4bγ1 cos απ + π(−1 + 2α)(μγ2 sin(πα) + γ1(−1 + 2b + cos(πα)))))',
+        'the last factor of the denominator has μγ2 sin(2πα) + γ1(−1 + 2b + cos(2πα)), as in A(b, c̄); with tan πα = μγ2/γ1 this is T = 2γ1 v*/(sin(πλ)(K − 1)(1 − β1β2)(−c̄)(b − 1)), λ = 1/2 − α, K = πλ/sin πλ',
+        'sympy solution of [54]–[55]: v = v*/(1 + A) with A as printed (A simplifies to −1/K, so v = v*K/(K − 1) does not depend on b); T equals the corrected formula exactly and differs from the printed one (by up to 30 % over the (b, c̄) grid for ν = 0.3, μ = 0.5; 1.8 % at b = 2, c̄ = −0.7); numerically the corrected formula matches the linear solve to 1e-9 on a (b, c̄) grid.',
+        ('tests/halfspace/test_inverse.py::test_closed_form_58_solves_54_55', 'tests/halfspace/test_inverse.py::test_printed_T_formula_is_misprinted', 'tests/halfspace/test_inverse.py::test_v_does_not_depend_on_b_and_loading_is_admissible', ),
+    ),
+    Erratum(
+        'H6', 'Section 4.2, eqs. [49]–[50] (and [53]): not the exact condition for the periodic wave',
+        'G(V − V*) Gm/(c(1 − β1β2)) + T*(δ − 1) = 0',
+        'for the periodic stick/slip wave (period b, a = 1) the perturbation vanishes at depth iff G(V − V*) Gm/(c(1 − β1β2)) · sin(πλ/b) + T* sin(πλ(b − 1)/b) = 0, λ = 1/2 − α; [50] is this at b = 2 (and in the limit λ → 0); elsewhere the ratio of the two T*-coefficients ranges over (1/K, K), K = πλ/sin πλ ∈ (1, π/2). A modelling approximation rather than a misprint (the paper works with a single-slip-zone X, normalised X(∞) = 1).',
+        "closed form Φ = A' + iβ0 X of the periodic Cauchy integral [46] (C0 = 0), checked against its quadrature to 1e-11; its value at depth equals its mean over a period on every horizontal line and equals X∞ Re(A'/X∞); the wave whose v solves the corrected condition decays to 1e-13. With the paper's (v, T) the Figure 14 wave keeps σ_xy/G = 2.9e-4 at depth (8 % of τ*_xy, 31 % of T); the v that makes it decay is 4.83e-3 instead of 3.51e-3.",
+        ('tests/halfspace/test_fields.py::test_closed_form_equals_quadrature_of_cauchy_integral', 'tests/halfspace/test_fields.py::test_far_field_and_mean_over_a_period', 'tests/halfspace/test_fields.py::test_decaying_wave_decays_and_keeps_u_x_periodic', 'tests/halfspace/test_fields.py::test_exact_decay_condition_agrees_with_53_at_b_2_not_with_55', ),
+    ),
+    Erratum(
+        'H7', 'Section 5, text before Figure 14: sign of the "slip velocity" singularity',
+        '"the slip velocity has a negative singularity at x = b. Therefore, the normal stress shows a positive singularity"',
+        'the relative slip velocity V − U̇ = c(1 − β1β2)β0 sin(πλ)|X| is positive on the whole slip zone and tends to +∞ at b, together with σ_yy → +∞; what tends to −∞ is the material velocity U̇ = V* − c u_x,x (and u_x,x itself), of opposite sign to σ_yy by [34]–[35]',
+        'closed form on SL; the positive σ_yy singularity and forward slip both require β0 < 0, checked for five waves, with U̇ < −1 (in c2) and V − U̇ > 1 at b − x = 1e-9.',
+        ('tests/halfspace/test_fields.py::test_positive_singularity_and_forward_slip', ),
+    ),
+    Erratum(
+        'H8', 'Section 4.2, eqs. [51]–[52]: the second relation (unsettled)',
+        '−(V/c)δ + {(V − V*)/c − (1 − β1β2) cos(πα) T*/(2Gγ1)} π(1/2 − α)(δ − 1)/cos(πα) = 0',
+        'not settled. [51] equals "the mean over a period of ε*_xx + u_x,x vanishes" (zero mean material velocity) evaluated with [47] and ∫_SL |X| = K(δ − 1), except that this reading gives T*/(Gγ1), not T*/(2Gγ1). In the exact periodic solution the mean of u_x,x vanishes identically (H6), so that mean is ε*_xx = −V*/c ≠ 0 and the reading cannot hold together with decay unless V* = 0; the exact solution has no second relation (a one-parameter family of waves per loading). The library keeps [52] as printed: it is the paper\'s model and fixes b in Figure 14.',
+        'derivation in `docs/theory/halfspace.md` §6; mean u_x,x = 0 checked on the exact field.',
+        ('tests/halfspace/test_fields.py::test_decaying_wave_decays_and_keeps_u_x_periodic', 'tests/halfspace/test_inverse.py::test_eq54_is_eq52_rearranged', ),
+    ),
 ]
 
 

@@ -12,7 +12,7 @@ import sys
 import typer
 
 from ..errors import NoSolutionError, ParameterError
-from . import brake, oscillator, reproduce
+from . import brake, halfspace, oscillator, reproduce
 
 # typer vendors its own copy of click (older releases re-export click's classes):
 # its usage errors are the parent class of typer.BadParameter in both cases
@@ -22,6 +22,7 @@ app = typer.Typer(no_args_is_help=True, add_completion=False, pretty_exceptions_
                   help="Friction-induced vibration and stick-slip waves (models of the paper, and beyond).")
 app.add_typer(oscillator.app, name="oscillator")
 app.add_typer(brake.app, name="brake")
+app.add_typer(halfspace.app, name="halfspace")
 app.command("reproduce")(reproduce.reproduce)
 
 

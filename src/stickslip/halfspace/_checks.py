@@ -1,0 +1,43 @@
+"""Validators for arrays of parameters (the scalar ones live in `stickslip._validate`)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..errors import ParameterError
+
+
+def real_array(name: str, value) -> np.ndarray:
+    """``value`` as a float array; every entry must be a finite real number."""
+    try:
+        arr = np.asarray(value)
+    except Exception as exc:  # pragma: no cover - exotic inputs
+        raise ParameterError(name, value, "a finite real number or array of them") from exc
+    if arr.dtype == bool or not (np.issubdtype(arr.dtype, np.integer) or np.issubdtype(arr.dtype, np.floating)):
+        raise ParameterError(name, value, "a finite real number or array of them")
+    arr = arr.astype(float)
+    bad = ~np.isfinite(arr)
+    if bad.any():
+        raise ParameterError(name, float(arr[bad].flat[0]), "a finite real number")
+    return arr
+
+
+def array_in(name: str, value, lo: float, hi: float, *, lo_open: bool, hi_open: bool, allowed: str) -> np.ndarray:
+    """A float array whose every entry lies between ``lo`` and ``hi``."""
+    arr = real_array(name, value)
+    bad = (arr <= lo if lo_open else arr < lo) | (arr >= hi if hi_open else arr > hi)
+    if bad.any():
+        raise ParameterError(name, float(arr[bad].flat[0]), allowed)
+    return arr
+
+
+def cbar_array(value, name: str = "c") -> np.ndarray:
+    """Scaled wave speed ``c/c2``: subsonic and travelling to the left, ``-1 < c < 0``."""
+    return array_in(name, value, -1.0, 0.0, lo_open=True, hi_open=True,
+                    allowed="in (-1, 0) (subsonic wave, c < 0 in the paper's convention)")
+
+
+def b_array(value, name: str = "b") -> np.ndarray:
+    """Period ``b`` in units of the stick length ``a = 1``: ``b > 1``."""
+    return array_in(name, value, 1.0, np.inf, lo_open=True, hi_open=True,
+                    allowed="> 1 (period in units of the stick length a = 1)")
