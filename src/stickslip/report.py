@@ -9,7 +9,9 @@ from __future__ import annotations
 
 import datetime as _dt
 import hashlib
+import inspect
 import os
+import shutil
 import platform
 import time
 from dataclasses import dataclass, field
@@ -84,11 +86,18 @@ def _load_or_compute(spec: FigureSpec, data_dir: Path, quick: bool, fingerprint:
                 return ds, True
         except (OSError, ValueError):
             pass  # unreadable checkpoint (killed mid-write by another tool): recompute
-    ds = spec.compute(quick)
+    # figures built on sweeps take a cache folder, so a killed sweep resumes point by point
+    cache = data_dir / f"{spec.key}.partial"
+    if "cache" in inspect.signature(spec.compute).parameters:
+        cache.mkdir(exist_ok=True)
+        ds = spec.compute(quick, cache=cache)
+    else:
+        ds = spec.compute(quick)
     ds.attrs.update({"fingerprint": fingerprint, "quick": int(quick), "figure": spec.key})
     tmp = path.with_suffix(".nc.partial")
     ds.to_netcdf(tmp)
     os.replace(tmp, path)
+    shutil.rmtree(cache, ignore_errors=True)
     return ds, False
 
 

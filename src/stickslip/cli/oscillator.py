@@ -153,3 +153,57 @@ def continue_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_sp
             ax.set_xlabel(parameter), ax.set_ylabel(f"{name} [{ds[name].attrs['units']}]"), ax.legend()
 
     _write(branch.to_xarray() if (out or plot) else None, out, plot, draw)
+
+
+def _axis(option: str, text: str) -> tuple[str, list[float]]:
+    """``name=lo:hi:n`` -> (name, values)."""
+    import numpy as np
+
+    from ..errors import ParameterError
+
+    try:
+        name, _, spec = text.partition("=")
+        lo, hi, n = spec.split(":")
+        values = np.linspace(float(lo), float(hi), int(n))
+    except ValueError:
+        raise ParameterError(option, text, "name=lo:hi:n, e.g. belt_speed=0.05:1.5:40") from None
+    if int(n) < 2 or not name:
+        raise ParameterError(option, text, "name=lo:hi:n with n >= 2")
+    return name.strip(), list(values)
+
+
+@app.command("map")
+def map_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Belt, fs: Fs, fd: Fd,
+            out: Annotated[Path, typer.Option(help="Zarr store (a directory ending in .zarr); resumed if it exists.")],
+            x: Annotated[str, typer.Option("--x", help="First axis, name=lo:hi:n.")] = "belt_speed=0.05:1.5:30",
+            y: Annotated[str, typer.Option("--y", help="Second axis, name=lo:hi:n.")] = "damping=0.01:0.3:20",
+            law: LawOpt = Law.coulomb, tau: Tau = None, damping: Damping = 0.0,
+            workers: Annotated[Optional[int], typer.Option(help="Worker processes (default: all cores).")] = None,
+            json: Json = False, plot: Plot = None):
+    """Regime map over two parameters (steady sliding, stick-slip, bistable, pure slip): resumable, parallel."""
+    from rich.progress import Progress
+
+    from ..errors import ParameterError
+    from ..oscillator.regimes import REGIMES, regime_map
+
+    if out.suffix != ".zarr":
+        raise ParameterError("--out", str(out), "a directory name ending in .zarr")
+    plot = output_path("--plot", plot, ".png")
+    osc = _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping)
+    axes = dict((_axis("--x", x), _axis("--y", y)))
+    with Progress(transient=True) as bar:
+        task = bar.add_task("regime map", total=None)
+        ds = regime_map(osc, axes, out, workers=workers,
+                        progress=lambda done, total: bar.update(task, completed=done, total=total))
+    counts = {REGIMES[k]: int((ds["regime"] == k).sum()) for k in REGIMES}
+    emit({"store": str(out), "axes": {k: [min(v), max(v), len(v)] for k, v in axes.items()}, "counts": counts},
+         json, "regime map")
+    if plot:
+        from .. import plotting
+
+        fig, (ax,) = plotting.figure()
+        names = list(axes)
+        mesh = ax.pcolormesh(ds[names[0]], ds[names[1]], ds["regime"].values.T, shading="nearest", vmin=0, vmax=4)
+        fig.colorbar(mesh, ax=ax, label="; ".join(f"{k} {v}" for k, v in REGIMES.items()))
+        ax.set_xlabel(names[0]), ax.set_ylabel(names[1])
+        plotting.save(fig, plot)

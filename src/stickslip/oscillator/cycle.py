@@ -156,12 +156,19 @@ def characterise(engine: Engine, rm: ReturnMap) -> LimitCycle:
 
 
 def solve_section(engine: Engine, x: float, *, tol: float = 1e-12, max_iter: int = 100) -> ReturnMap:
-    """Fixed point of the return map by Newton's method (map iteration as fallback)."""
+    """Fixed point of the return map: Newton's method, accepted only while it reduces the
+    residual; otherwise one step of map iteration (which follows the attractor)."""
     osc = engine.osc
     scale = max(abs(osc.equilibrium), osc.friction.static * osc.normal_force / osc.stiffness,
                 osc.belt_speed / osc.omega)
+
+    def near_equilibrium(x):
+        return abs(x - osc.equilibrium) < 1e-9 * scale
+
+    stable = bool(np.all(osc.equilibrium_eigenvalues().real < 0))
+
+    rm = return_map(engine, x)
     for _ in range(max_iter):
-        rm = return_map(engine, x)
         residual = rm.x_next - x
         if abs(residual) <= tol * scale:
             return rm
@@ -169,10 +176,22 @@ def solve_section(engine: Engine, x: float, *, tol: float = 1e-12, max_iter: int
         step = -residual / slope if math.isfinite(slope) and abs(slope) > 1e-8 else residual
         if abs(step) > 0.5 * scale:  # keep Newton from leaping across the phase plane
             step = math.copysign(0.5 * scale, step)
-        x = x + step
-        if abs(x - osc.equilibrium) < 1e-9 * scale:
+        trial = None
+        if not near_equilibrium(x + step):
+            try:
+                trial = return_map(engine, x + step)
+            except NoSolutionError:
+                trial = None
+        if trial is not None and abs(trial.x_next - trial.x) < abs(residual):
+            x, rm = x + step, trial
+        else:  # Newton jumped between regimes (e.g. stick-slip and pure slip): iterate the map
+            x = rm.x_next
+            if near_equilibrium(x) or (abs(x - osc.equilibrium) < 1e-3 * scale and stable):
+                break  # map iteration cannot converge to an unstable cycle: it decays onto steady sliding
+            rm = return_map(engine, x)
+        if near_equilibrium(x):
             break
-    if abs(x - osc.equilibrium) < 1e-6 * scale:
+    if abs(x - osc.equilibrium) < 1e-3 * scale:
         raise NoSolutionError("the orbit converges to the steady-sliding equilibrium: no limit cycle there")
     raise NoSolutionError(f"shooting did not converge in {max_iter} iterations (last x = {x:.6g})")
 

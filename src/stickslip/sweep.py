@@ -1,0 +1,125 @@
+"""Resumable parameter sweeps: a grid of independent runs, computed with Dask, stored in Zarr.
+
+`run_sweep(func, axes, store, outputs=...)` evaluates ``func(**point)`` at every point of
+the grid spanned by ``axes`` and writes each finished batch into a Zarr store together
+with a ``done`` mask. If the run is killed, calling it again with the same store only
+computes the points that are not done yet. The batches go through ``dask.compute``, so
+the scheduler can be local threads or processes, or a cluster (``scheduler=client.get``
+with a `dask.distributed.Client`) when a sweep outgrows one machine.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import itertools
+import math
+import multiprocessing
+from concurrent.futures import ProcessPoolExecutor
+from pathlib import Path
+from typing import Callable, Mapping, Sequence
+
+import dask
+import numpy as np
+import xarray as xr
+import zarr
+
+from . import _validate as check
+from .errors import ParameterError
+
+__all__ = ["run_sweep"]
+
+
+def _call(func, point: dict, names: Sequence[str]) -> list[float]:
+    result = func(**point)
+    missing = [n for n in names if n not in result]
+    if missing:
+        raise ParameterError("func", getattr(func, "__name__", func), f"a function returning the outputs {missing}")
+    return [float(result[n]) for n in names]
+
+
+def _create(store: Path, axes: dict, outputs: dict, attrs: dict) -> None:
+    shape = tuple(len(v) for v in axes.values())
+    data = {name: (tuple(axes), np.full(shape, np.nan), {"units": units}) for name, units in outputs.items()}
+    data["done"] = (tuple(axes), np.zeros(shape, bool), {"long_name": "point computed"})
+    coords = {k: (k, np.asarray(v, float)) for k, v in axes.items()}
+    xr.Dataset(data, coords=coords, attrs=attrs).to_zarr(store, mode="w", consolidated=False)
+
+
+def _matches(store: Path, axes: dict, outputs: dict) -> bool:
+    ds = xr.open_zarr(store, consolidated=False)
+    same_axes = list(ds["done"].dims) == list(axes) and all(
+        ds[k].size == len(v) and np.allclose(ds[k].values, np.asarray(v, float)) for k, v in axes.items())
+    return same_axes and all(name in ds for name in outputs)
+
+
+def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Sequence[float]], store, *,
+              outputs: Mapping[str, str], batch: int = 32, scheduler: str | Callable = "processes",
+              progress: Callable[[int, int], None] | None = None, attrs: Mapping | None = None,
+              workers: int | None = None) -> xr.Dataset:
+    """Evaluate ``func`` on a grid, resumably.
+
+    Parameters
+    ----------
+    func : callable
+        ``func(**point) -> {output: float}``; a top-level function for the process scheduler.
+    axes : mapping
+        Axis name -> values, e.g. ``{"belt_speed": [...], "damping": [...]}``.
+    store : path
+        Zarr directory. Created if absent; if present with the same axes and outputs the
+        sweep resumes, otherwise a `ParameterError` is raised (remove it to start over).
+    outputs : mapping
+        Output name -> units.
+    batch : int
+        Points per checkpoint.
+    scheduler : str or callable
+        Passed to `dask.compute` (``"processes"``, ``"threads"``, ``"synchronous"``, or
+        ``client.get``).
+    progress : callable, optional
+        ``progress(done, total)`` after every batch.
+    workers : int, optional
+        Processes for the ``"processes"`` scheduler (default: the CPU count). Scripts
+        that use it need the ``if __name__ == "__main__":`` guard (spawned workers).
+
+    Returns
+    -------
+    xarray.Dataset
+        Every output on the grid, plus the ``done`` mask.
+    """
+    axes = {str(k): list(v) for k, v in axes.items()}
+    if not axes or any(len(v) == 0 for v in axes.values()):
+        raise ParameterError("axes", axes, "a mapping of names to non-empty value lists")
+    outputs = dict(outputs)
+    if not outputs or "done" in outputs:
+        raise ParameterError("outputs", outputs, "a non-empty mapping of output names (not 'done') to units")
+    batch = check.positive_int("batch", batch)
+    store = Path(store)
+    if store.exists():
+        if not _matches(store, axes, outputs):
+            raise ParameterError("store", str(store), "a new path, or a sweep store with the same axes and outputs")
+    else:
+        _create(store, axes, outputs, dict(attrs or {}))
+    group = zarr.open_group(str(store), mode="r+")
+    names = list(outputs)
+    shape = tuple(len(v) for v in axes.values())
+    todo = [idx for idx in itertools.product(*(range(n) for n in shape)) if not group["done"][idx]]
+    total, finished = math.prod(shape), math.prod(shape) - len(todo)
+    if progress:
+        progress(finished, total)
+    with contextlib.ExitStack() as stack:
+        extra = {}
+        if scheduler == "processes" and todo:  # one pool for the whole sweep, not one per batch
+            context = multiprocessing.get_context("spawn")
+            extra["pool"] = stack.enter_context(ProcessPoolExecutor(workers, mp_context=context))
+        for start in range(0, len(todo), batch):
+            chunk = todo[start:start + batch]
+            points = [{k: axes[k][i] for k, i in zip(axes, idx)} for idx in chunk]
+            values = dask.compute(*[dask.delayed(_call)(func, p, names) for p in points], scheduler=scheduler,
+                                  **extra)
+            where = tuple(np.array(c) for c in zip(*chunk))
+            for j, name in enumerate(names):
+                group[name].vindex[where] = np.array([v[j] for v in values])
+            group["done"].vindex[where] = True  # last: a batch counts only once all outputs are in
+            finished += len(chunk)
+            if progress:
+                progress(finished, total)
+    return xr.open_zarr(store, consolidated=False).load()

@@ -1,0 +1,54 @@
+import json
+
+import numpy as np
+import pytest
+
+from stickslip.cli import run
+from stickslip.errors import ParameterError
+from stickslip.friction import Stribeck
+from stickslip.oscillator import Oscillator
+from stickslip.oscillator.regimes import classify
+from stickslip.sweep import run_sweep
+
+CALLS = []
+
+
+def _square(x, y):
+    CALLS.append((x, y))
+    if (x, y) == (3, 20) and CALLS.count((3, 20)) == 1:
+        raise KeyboardInterrupt  # a run killed in its last batch
+    return {"sum": x + y, "product": x * y}
+
+
+def test_sweep_resumes_after_a_kill(tmp_path):
+    store = tmp_path / "s.zarr"
+    CALLS.clear()
+    with pytest.raises(KeyboardInterrupt):
+        run_sweep(_square, {"x": [1, 2, 3], "y": [10, 20]}, store, outputs={"sum": "1", "product": "1"},
+                  batch=2, scheduler="synchronous")
+    done_before = len(CALLS)
+    ds = run_sweep(_square, {"x": [1, 2, 3], "y": [10, 20]}, store, outputs={"sum": "1", "product": "1"},
+                   batch=2, scheduler="synchronous")
+    assert ds["done"].all() and np.array_equal(ds["sum"].values, [[11, 21], [12, 22], [13, 23]])
+    assert len(CALLS) - done_before == 2  # only the unfinished batch is recomputed
+    with pytest.raises(ParameterError, match="store"):
+        run_sweep(_square, {"x": [1, 2]}, store, outputs={"sum": "1"}, scheduler="synchronous")
+
+
+def test_regime_classification_matches_theory():
+    base = Oscillator(1.0, 1.0, 1.0, 0.2, Stribeck(0.6, 0.4, 0.1), damping=0.05)
+    assert classify(base)["regime"] == 1  # below the Hopf speed: steady sliding unstable
+    assert classify(base.replace(belt_speed=0.6))["regime"] == 2  # between Hopf and grazing: bistable
+    assert classify(base.replace(belt_speed=1.3))["regime"] == 0  # beyond grazing: steady sliding only
+
+
+def test_map_command(tmp_path, capsys):
+    args = ["oscillator", "map", "--mass", "1", "--stiffness", "1", "--normal-force", "1", "--belt-speed", "0.2",
+            "--fs", "0.6", "--fd", "0.4", "--law", "stribeck", "--tau", "0.1", "--damping", "0.05",
+            "--x", "belt_speed=0.2:1.3:3", "--y", "damping=0.04:0.06:2", "--workers", "1",
+            "--out", str(tmp_path / "m.zarr"), "--plot", str(tmp_path / "m.png"), "--json"]
+    assert run(args) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert sum(data["counts"].values()) == 6 and data["counts"]["stick-slip"] >= 1
+    assert (tmp_path / "m.png").exists()
+    assert run(args[:-6] + ["--x", "belt_speed=0.2:1.3", "--out", str(tmp_path / "n.zarr")]) == 2
