@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Annotated, Optional
 
 import typer
 
 from ..errors import ParameterError
-from ._common import emit
+from ._common import emit, output_path
 
 app = typer.Typer(no_args_is_help=True, help="Elastic annulus on a rotating shaft: reduced model (paper section 3).")
 
@@ -114,3 +115,33 @@ def stability(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = N
     p = resolve(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                 outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
     emit(growth_rates(BrakeParams(**p), parse_modes(modes)).to_dict(), json, "linear stability of steady sliding")
+
+
+@app.command("integrate")
+def integrate_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, friction: Friction = 0.0,
+                  inner_radius: Inner = None, outer_radius: Outer = None, young: Young = None,
+                  density: Density = None, omega: Omega = None, mismatch: Mismatch = None,
+                  nodes: Annotated[int, typer.Option(help="Nodes around the ring.")] = 512,
+                  transits: Annotated[float, typer.Option(help="Duration in wave transits 2 pi / sqrt(a).")] = 100.0,
+                  beta2: Annotated[float, typer.Option(help="Scheme parameter of [22] (1/2: central differences).")] = 0.5,
+                  mode: Annotated[Optional[int], typer.Option(help="Seed this Fourier mode (default: white noise).")] = None,
+                  amplitude: Annotated[float, typer.Option(help="Perturbation amplitude relative to delta.")] = 1e-3,
+                  checkpoint: Annotated[Optional[Path], typer.Option(help="Checkpoint file (.nc): resumed if present.")] = None,
+                  out: Annotated[Optional[Path], typer.Option(help="Write the run to this netCDF file (.nc).")] = None,
+                  json: Json = False):
+    """Time integration of [12] on the ring from perturbed steady sliding; classifies the limit regime."""
+    from rich.progress import Progress
+
+    from ..brake import BrakeParams, classify, integrate, perturbed_steady
+
+    checkpoint, out = output_path("--checkpoint", checkpoint, ".nc"), output_path("--out", out, ".nc")
+    p = BrakeParams(**resolve(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
+                              outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch))
+    initial = perturbed_steady(p, nodes, amplitude=amplitude, mode=mode)
+    with Progress(transient=True) as bar:
+        task = bar.add_task("integrating", total=1.0)
+        run = integrate(p, nodes, transits=transits, beta2=beta2, initial=initial, checkpoint=checkpoint,
+                        progress=lambda t, t_end: bar.update(task, completed=t / t_end))
+    if out:
+        run.to_xarray().to_netcdf(out)
+    emit(classify(run).to_dict(), json, "limit regime")

@@ -1,0 +1,127 @@
+"""Time per step of the ring integrator (reduced model [12], 512 nodes) against the bare
+vectorised update of the same arrays.
+
+Baseline: the same explicit finite-difference update written with numpy whole-array
+operations and no contact or friction logic (what "vectorised numpy" costs per step).
+Measured in one run, on the same state (a saturated stick-slip-separation regime):
+
+* compiled step with contact + Coulomb (`ring_scheme.advance`), the production kernel;
+* numpy step with contact + Coulomb (same algorithm, checked equal to the kernel);
+* compiled bare update (`ring_scheme.bare`);
+* `integrate` end to end (kernel + sampling of energy, zone fractions, Fourier modes).
+
+Usage: ``python benchmarks/brake_ring.py [--nodes 512] [--steps 20000]``
+"""
+
+from __future__ import annotations
+
+import argparse
+import time
+
+import numpy as np
+
+from stickslip.brake import BrakeParams
+from stickslip.brake.ring import integrate, perturbed_steady
+from stickslip.brake.ring_scheme import advance, bare
+
+
+def numpy_bare(s, k, nsteps):
+    """The finite-difference update alone (no contact, no friction), numpy whole-array ops."""
+    a, b, g, h, D, d = s.coef
+    U, V, vU, vV, aU, aV = (k[x] for x in ("U", "V", "vU", "vV", "aU", "aV"))
+    dt, b2 = s.dt, s.beta2
+    for _ in range(nsteps):
+        Up, Um, Vp, Vm = np.roll(U, -1), np.roll(U, 1), np.roll(V, -1), np.roll(V, 1)
+        AU = b * (Up - 2 * U + Um) / d**2 + D * (Vp - Vm) / (2 * d) - g * U
+        AV = a * (Vp - 2 * V + Vm) / d**2 - D * (Up - Um) / (2 * d) - h * V
+        vU = vU + dt * ((1 - b2) * aU + b2 * AU)
+        vV = vV + dt * ((1 - b2) * aV + b2 * AV)
+        U = U + dt * vU + 0.5 * dt * dt * AU
+        V = V + dt * vV + 0.5 * dt * dt * AV
+        aU, aV = AU, AV
+    return U, V
+
+
+def numpy_full(s, k, nsteps, delta, f):
+    """The same update with the node-by-node contact and Coulomb projection, vectorised."""
+    a, b, g, h, D, d = s.coef
+    U, V, vU, vV, aU, aV = (k[x].copy() for x in ("U", "V", "vU", "vV", "aU", "aV"))
+    dt, b2 = s.dt, s.beta2
+    cdt2 = (b2 + 0.5) * dt * dt
+    for _ in range(nsteps):
+        Up, Um, Vp, Vm = np.roll(U, -1), np.roll(U, 1), np.roll(V, -1), np.roll(V, 1)
+        AU = b * (Up - 2 * U + Um) / d**2 + D * (Vp - Vm) / (2 * d) - g * U
+        AV = a * (Vp - 2 * V + Vm) / d**2 - D * (Up - Um) / (2 * d) - h * V
+        vsU = vU + dt * ((1 - b2) * aU + b2 * AU)
+        vsV = vV + dt * ((1 - b2) * aV + b2 * AV)
+        Us = U + dt * vsU + 0.5 * dt * dt * AU
+        Vs = V + dt * vsV + 0.5 * dt * dt * AV
+        P = np.maximum((delta - Us) / cdt2, 0.0)
+        Q = np.clip((V + dt - Vs) / cdt2, -f * P, f * P)
+        aU, aV = AU + P, AV + Q
+        vU, vV = vsU + b2 * dt * P, vsV + b2 * dt * Q
+        U = np.where(P > 0, delta, Us)
+        V = Vs + cdt2 * Q
+    return U, V
+
+
+def _timed(fn, repeat=3):
+    best = np.inf
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn()
+        best = min(best, time.perf_counter() - t0)
+    return best
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--nodes", type=int, default=512)
+    parser.add_argument("--steps", type=int, default=20000)
+    args = parser.parse_args()
+    N, M = args.nodes, args.steps
+    p = BrakeParams.from_physical(80.0, 4e-4, 2.0)  # case 3 of section 3.1
+    run = integrate(p, N, transits=60, initial=perturbed_steady(p, N))  # a saturated nonlinear state
+    s, state0 = run.scheme, run.kernel
+    fr = run.fractions[-1]
+    fresh = lambda: {key: v.copy() for key, v in state0.items()}  # noqa: E731
+    buf = (np.zeros(N), np.zeros(N), np.zeros(N, np.int8), np.zeros((2, N)))
+
+    def compiled_full(k=None, n=M):
+        k = k or fresh()
+        advance(k["U"], k["V"], k["vU"], k["vV"], k["aU"], k["aV"], *buf, n, s.dt, s.coef, p.delta, p.friction,
+                s.beta2, True)
+        return k
+
+    def compiled_bare():
+        k = fresh()
+        bare(k["U"], k["V"], k["vU"], k["vV"], k["aU"], k["aV"], M, s.dt, s.coef, s.beta2)
+
+    compiled_full(n=1), compiled_bare()  # compile
+    k_ref = compiled_full(n=50)
+    U_np, V_np = numpy_full(s, fresh(), 50, p.delta, p.friction)
+    err = max(np.abs(U_np - k_ref["U"]).max() / p.delta, np.abs(V_np - k_ref["V"]).max() / np.abs(k_ref["V"]).max())
+    t_bare_np = _timed(lambda: numpy_bare(s, fresh(), M // 10)) / (M // 10)
+    t_full_np = _timed(lambda: numpy_full(s, fresh(), M // 10, p.delta, p.friction)) / (M // 10)
+    t_full = _timed(compiled_full) / M
+    t_bare = _timed(compiled_bare) / M
+    T = M / s.steps_per_transit
+    t0 = time.perf_counter()
+    integrate(p, N, transits=T, initial=perturbed_steady(p, N))
+    t_int = (time.perf_counter() - t0) / (run.settings["chunk"] * int(np.ceil(T * s.steps_per_transit
+                                                                              / run.settings["chunk"])))
+    print(f"ring integrator, {N} nodes, state: stick {fr[0]:.2f}, slip {fr[1]:.2f}, reverse slip {fr[2]:.2f}, "
+          f"separation {fr[3]:.2f}; numpy and compiled steps agree to {err:.1e} (relative) after 50 steps")
+    print(f"  bare vectorised update (numpy, no contact)  {1e6 * t_bare_np:8.2f} us/step   (baseline)")
+    print(f"  numpy step with contact + Coulomb           {1e6 * t_full_np:8.2f} us/step   "
+          f"ratio {t_full_np / t_bare_np:5.2f}")
+    print(f"  compiled bare update (numba)                {1e6 * t_bare:8.2f} us/step   "
+          f"ratio {t_bare / t_bare_np:5.2f}")
+    print(f"  compiled step with contact + Coulomb        {1e6 * t_full:8.2f} us/step   ratio {t_full / t_bare_np:5.2f}"
+          f"   (vs compiled bare: {t_full / t_bare:4.2f})")
+    print(f"  integrate() end to end, with sampling       {1e6 * t_int:8.2f} us/step   ratio {t_int / t_bare_np:5.2f}")
+    print(f"RATIO time per step with contact+friction / bare vectorised update = {t_full / t_bare_np:.3f}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,19 @@
+import json
+
+from stickslip.cli import run
+
+
+def test_integrate_command_classifies_and_checkpoints(tmp_path, capsys):
+    ck, out = tmp_path / "ck.nc", tmp_path / "run.nc"
+    args = ["brake", "integrate", "--omega", "50", "--mismatch", "1e-4", "--friction", "0.7", "--nodes", "64",
+            "--transits", "20", "--checkpoint", str(ck), "--out", str(out), "--json"]
+    assert run(args) == 0
+    first = json.loads(capsys.readouterr().out)
+    assert first["regime"].startswith("stick") and ck.exists() and out.exists()
+    assert run(args) == 0  # resumed from the finished checkpoint: same answer
+    assert json.loads(capsys.readouterr().out)["fractions"] == first["fractions"]
+
+
+def test_integrate_rejects_bad_input(capsys):
+    assert run(["brake", "integrate", "--xi", "1.5", "--gamma", "1e-6", "--delta", "0.001", "--nodes", "2"]) == 2
+    assert "nodes" in capsys.readouterr().err
