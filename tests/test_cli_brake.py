@@ -61,3 +61,32 @@ def test_bad_input_is_one_line_and_exit_2(args, name, capsys):
     code = run(["brake", *args, "--json"])
     out, err = capsys.readouterr()
     assert code == 2 and out == "" and err.count("\n") == 1 and name in err
+
+
+def test_wave_contract(capsys):
+    data = _json(["brake", "wave", "--xi", "1.5", "--nu", "0.3", "--gamma", "9.345e-7", "--delta", "0.001",
+                  "--friction", "0.7", "--modes", "8", "--json"], capsys)
+    assert {"c", "regime", "zones"} <= set(data) and data["c"] < 0
+    assert all(set(z) >= {"kind", "start", "end"} for z in data["zones"])
+    assert data["zones"][0]["start"] == 0 and abs(data["zones"][-1]["end"] - 2 * 3.141592653589793 / 8) < 1e-9
+
+
+def test_wave_not_found_exits_1_and_says_what_was_tried(capsys):
+    code = run(["brake", "wave", "--omega", "1", "--mismatch", "4e-4", "--friction", "0.2", "--modes", "4",
+                "--regime", "stick-separation", "--json"])
+    out, err = capsys.readouterr()
+    assert code == 1 and out == "" and err.count("\n") == 1 and "scanned" in err
+
+
+def test_wave_continuation_reports_zone_events(tmp_path, capsys):
+    data = _json(["brake", "continue", "--omega", "50", "--mismatch", "1e-5", "--friction", "0.7", "--modes", "4",
+                  "--parameter", "delta", "--stop", "2.5e-6", "--points", "20", "--out", str(tmp_path / "b.nc"),
+                  "--json"], capsys)
+    kinds = [(e["kind"], tuple(e["zones"])) for e in data["events"]]
+    assert ("death", ("slip",)) in kinds and len(data["c"]) == len(data["values"]) and (tmp_path / "b.nc").exists()
+
+
+def test_bad_regime_is_a_usage_error(capsys):
+    code = run(["brake", "wave", "--xi", "1.5", "--gamma", "1e-6", "--delta", "0.001", "--friction", "0.7",
+                "--regime", "chaos"])
+    assert code == 2 and "--regime" in capsys.readouterr().err

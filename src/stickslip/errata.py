@@ -147,6 +147,41 @@ ERRATA: list[Erratum] = [
         'derivation in `docs/theory/halfspace.md` §6; mean u_x,x = 0 checked on the exact field.',
         ('tests/halfspace/test_fields.py::test_decaying_wave_decays_and_keeps_u_x_periodic', 'tests/halfspace/test_inverse.py::test_eq54_is_eq52_rearranged', ),
     ),
+    Erratum(
+        'W1', 'Eq. [15]: the friction law is written with `V̇`, which is not a variable of [15]',
+        '`|Q| ≤ fP, Q(1 − V̇) − fP|1 − V̇| = 0` in [15], whose unknowns are `U(Φ), V(Φ)`.',
+        "for the wave `V(θ − ct)`, `V̇ = −cV'`, so the slip velocity is `1 − V̇ = 1 + cV'`: stick [17] is `V' = −1/c`, positive slip [18] is `1 + cV' > 0`, reverse slip [19] is `1 + cV' < 0`. The equations of motion in [15] are right (`U̇ = −cU'` gives `(c² − b)U''` and `(c² − a)V''`).",
+        'substitution; the closed forms built on it agree with `solve_ivp` of [15] and satisfy the energy balance to `1e−15`.',
+        ('tests/brake/test_waves.py::test_inequalities_hold_on_a_fine_grid_in_paper_units', 'tests/brake/test_waves.py::test_zone_closed_forms_agree_with_solve_ivp', ),
+    ),
+    Erratum(
+        'W2', '§3.2: the switching conditions at the end of separation are incomplete',
+        '"`P = 0` at the start of the separation zone and `U = δ` and `U\'` jumps back to 0 at the end".',
+        "in time order (which is the `φ` order only when `c < 0`) — at lift-off `U = δ`, `U' = 0`, `P = 0`; at landing `U = δ`, `U'` jumps to 0 with the normal impulse `Π = (c² − b)[U']_φ ≥ 0`, **and `V'` jumps too**: `(c² − a)[V']_φ = Q_Π`, `|Q_Π| ≤ fΠ` (Coulomb's law for impulses). The impact either stops the sliding (then stick, or slip at once if `|hV| > fP`) or leaves it in its direction with `Q_Π = ±fΠ`. Without the tangential jump the multiple-shooting system is not closed.",
+        'integrating [15] across the landing point; the impulses make the energy balance (shaft work = sliding + impact dissipation) close to `1e−15`, with a positive impact loss; a `solve_ivp` integration that applies this impact law closes after one period to `1e−11`.',
+        ('tests/brake/test_waves.py::test_energy_balance_over_a_period', 'tests/brake/test_waves.py::test_closed_forms_agree_with_solve_ivp_across_the_zones', ),
+    ),
+    Erratum(
+        'W3', 'Figure 6: caption copied from Figure 5',
+        'caption of Figure 6 "The phase diagram (V, V\') for the stick-slip regime for different angular velocity Ω" (identical to Figure 5); the text says Figure 6 shows "phase diagrams for stick-slip-separation wave in the plane of the normal velocity and normal displacement".',
+        "stick-slip-separation waves in the `(U, U')` plane (and `(V, V')` alongside) for several `Ω`.",
+        '(see the tests)',
+        ('tests/brake/test_waves_figures.py::test_checks_pass_on_computed_data', ),
+    ),
+    Erratum(
+        'W4', 'Figure 5: "different normal contact pressure" vs "different angular velocity Ω"',
+        'the text says Figure 5 shows stick-slip phase diagrams "for different normal contact pressure"; the caption says "for different angular velocity Ω".',
+        "in the reduced model the stick-slip waves do not depend on the mismatch (hence on the pressure `P_e = gδ`) except through the shift `V_e = fgδ/h` of `V`: changing the pressure only translates the `(V, V')` diagram. Distinct diagrams come from `Ω`, and they are homothetic (`cΩ` fixed, amplitudes ∝ `Ω`). The caption is the consistent reading.",
+        'with `V = V_e + W` the slip equation and the stick-exit condition are free of `δ` (`docs/theory/brake-waves.md` §7); numerically `c` is constant to `1e−12` along the stick-slip part of a `δ`-family.',
+        ('tests/brake/test_waves.py::test_stick_slip_waves_do_not_depend_on_the_mismatch', 'tests/brake/test_waves_continuation.py::test_stick_slip_part_has_a_constant_speed', 'tests/brake/test_waves_figures.py::test_figure_5_waves_are_self_similar_in_omega', ),
+    ),
+    Erratum(
+        'W5', '§3.1 "stick-separation" (Figure 8) has no counterpart in the reduced model [12]',
+        'a stick-separation wave with 2 modes (`f = 2`, `δ = 0.004`, `Ω = 80`) from the finite-element model; §3 lists the reduced model as able to "construct different families of stick-slip and stick-slip-separation waves".',
+        "in the reduced model the stick pressure is constant, `P = gδ + D/c`, so lift-off directly from stick (which needs `P → 0`) would need `P = 0` in the whole stick zone. There is no stick-separation travelling wave of [15]; a slip zone always precedes lift-off. At the paper's parameters the reduced model gives a stick-slip wave and near-sonic stick-slip-separation waves whose slip zone is 0.4–3.5 % of the period.",
+        '(see the tests)',
+        ('tests/brake/test_waves.py::test_stick_separation_waves_do_not_exist', ),
+    ),
 ]
 
 

@@ -67,6 +67,19 @@ def resolve(*, xi=None, nu=0.3, gamma=None, delta=None, friction=0.0, inner_radi
     return out
 
 
+def params(**options):
+    """`BrakeParams` from the options; built from the SI set (kept, e.g. for rates in 1/s and
+    continuation in Omega) when ``--omega`` and ``--mismatch`` are given without dimensionless ones."""
+    from ..brake import BrakeParams, PhysicalParams
+
+    si = {k: options[k] for k in ("inner_radius", "outer_radius", "young", "density") if options.get(k) is not None}
+    if options.get("omega") is not None and options.get("mismatch") is not None and all(
+            options.get(k) is None for k in ("xi", "gamma", "delta")):
+        return PhysicalParams(options["omega"], options["mismatch"], options.get("friction", 0.0),
+                              poisson=options.get("nu", 0.3), **si).dimensionless()
+    return BrakeParams(**resolve(**options))
+
+
 def parse_modes(text: str) -> list[int]:
     """``"1-20"``, ``"8"`` or ``"2,4,8"`` -> list of mode numbers."""
     try:
@@ -110,11 +123,11 @@ def stability(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = N
               inner_radius: Inner = None, outer_radius: Outer = None, young: Young = None, density: Density = None,
               omega: Omega = None, mismatch: Mismatch = None, json: Json = False):
     """Growth rate Re s and frequency Im s of each Fourier mode n of steady sliding."""
-    from ..brake import BrakeParams, growth_rates
+    from ..brake import growth_rates
 
-    p = resolve(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
-                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
-    emit(growth_rates(BrakeParams(**p), parse_modes(modes)).to_dict(), json, "linear stability of steady sliding")
+    p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
+               outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
+    emit(growth_rates(p, parse_modes(modes)).to_dict(), json, "linear stability of steady sliding")
 
 
 @app.command("integrate")
@@ -132,11 +145,11 @@ def integrate_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta
     """Time integration of [12] on the ring from perturbed steady sliding; classifies the limit regime."""
     from rich.progress import Progress
 
-    from ..brake import BrakeParams, classify, integrate, perturbed_steady
+    from ..brake import classify, integrate, perturbed_steady
 
     checkpoint, out = output_path("--checkpoint", checkpoint, ".nc"), output_path("--out", out, ".nc")
-    p = BrakeParams(**resolve(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
-                              outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch))
+    p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
+               outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
     initial = perturbed_steady(p, nodes, amplitude=amplitude, mode=mode)
     with Progress(transient=True) as bar:
         task = bar.add_task("integrating", total=1.0)
@@ -145,3 +158,58 @@ def integrate_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta
     if out:
         run.to_xarray().to_netcdf(out)
     emit(classify(run).to_dict(), json, "limit regime")
+
+
+REGIME_NAMES = ["stick-slip", "stick-slip-separation", "stick-separation", "stick-slip-reverse-slip",
+                "stick-slip-separation-reverse-slip"]
+
+
+def _regime(value: Optional[str]) -> Optional[str]:
+    if value is not None and value not in REGIME_NAMES:
+        raise ParameterError("--regime", value, "one of " + ", ".join(REGIME_NAMES))
+    return value
+
+
+@app.command()
+def wave(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, friction: Friction = 0.0,
+         modes: Annotated[int, typer.Option(help="Number of waves n around the ring (period 2 pi / n).")] = 4,
+         regime: Annotated[Optional[str], typer.Option(help="Wanted regime, e.g. stick-slip (default: any).")] = None,
+         inner_radius: Inner = None, outer_radius: Outer = None, young: Young = None, density: Density = None,
+         omega: Omega = None, mismatch: Mismatch = None, json: Json = False,
+         out: Annotated[Optional[Path], typer.Option(help="Write the wave profiles to this netCDF file (.nc).")] = None):
+    """Travelling wave of [14]-[20] by multiple shooting: speed c, regime and zones."""
+    from ..brake import travelling_wave
+
+    out = output_path("--out", out, ".nc")
+    p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
+               outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
+    result = travelling_wave(p, modes, regime=_regime(regime))
+    emit(result.to_dict(), json, "travelling wave")
+    if out:
+        result.to_xarray().to_netcdf(out)
+
+
+@app.command("continue")
+def continue_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, friction: Friction = 0.0,
+                 modes: Annotated[int, typer.Option(help="Number of waves n around the ring.")] = 4,
+                 parameter: Annotated[str, typer.Option(help="delta, gamma, omega (needs SI input) or friction.")] = "delta",
+                 stop: Annotated[float, typer.Option(help="Continue the parameter to this value.")] = 0.0,
+                 points: Annotated[int, typer.Option(help="Points along the branch.")] = 50,
+                 regime: Annotated[Optional[str], typer.Option(help="Regime of the starting wave.")] = None,
+                 inner_radius: Inner = None, outer_radius: Outer = None, young: Young = None, density: Density = None,
+                 omega: Omega = None, mismatch: Mismatch = None, json: Json = False,
+                 out: Annotated[Optional[Path], typer.Option(help="Write the branch to this netCDF file (.nc).")] = None):
+    """Continuation of a wave family in delta, gamma, Omega or f, with births and deaths of zones."""
+    from ..brake import continue_waves
+
+    out = output_path("--out", out, ".nc")
+    p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
+               outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
+    branch = continue_waves(p, modes, parameter=parameter, stop=stop, num=points, regime=_regime(regime))
+    data = branch.to_dict()
+    if not json:
+        data = {"parameter": data["parameter"], "n": data["n"], "points": len(data["values"]),
+                "c": [min(data["c"]), max(data["c"])], "events": data["events"], "stopped": data["stopped"]}
+    emit(data, json, "wave branch")
+    if out:
+        branch.to_xarray().to_netcdf(out)
