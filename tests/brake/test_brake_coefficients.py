@@ -8,7 +8,7 @@ import pytest
 import sympy as sp
 from scipy.integrate import quad
 
-from brake_derivations import galerkin, gamma, nu, xi
+from .brake_derivations import galerkin, gamma, nu, xi
 from stickslip.brake import coefficients, coupling, neutral_radius_ratio, shape_integrals
 from stickslip.errors import ParameterError
 

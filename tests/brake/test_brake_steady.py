@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from brake_derivations import delta, f, lame_steady, nu, r, xi
+from .brake_derivations import delta, f, lame_steady, nu, r, xi
 from stickslip.brake import BrakeParams, coefficients, steady_sliding
 from stickslip.errors import ParameterError
 
