@@ -6,7 +6,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.stickslip-installed
 OUT    ?= results
 
-.PHONY: reproduce reproduce-quick test test-all bench docs clean
+.PHONY: reproduce reproduce-quick test test-slow test-all bench docs clean
 
 $(STAMP): pyproject.toml
 	@$(PYTHON) -c 'import sys; assert sys.version_info >= (3, 11), "Python >= 3.11 is required"'
@@ -23,6 +23,9 @@ reproduce-quick: $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q -n 2 -m "not slow" $(ARGS)
+
+test-slow: $(STAMP)
+	$(BIN)/python -m pytest -q -n 2 -m slow $(ARGS)
 
 test-all: $(STAMP)
 	$(BIN)/python -m pytest -q -n 2 $(ARGS)
