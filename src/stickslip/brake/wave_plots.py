@@ -41,6 +41,7 @@ def _phase_plot(ds, path, pairs, title):
                 k = int(np.argmax(x))
                 ax.annotate(f"Ω = {float(c.omega):g}", (x[k], y[k]), fontsize=7)
         ax.set(xlabel=xl, ylabel=yl)
+        ax.ticklabel_format(style="sci", scilimits=(-3, 3))
         _legend(ax)
     fig.suptitle(title, fontsize=10)
     plotting.save(fig, path)
