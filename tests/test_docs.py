@@ -29,3 +29,21 @@ def test_tutorial_examples_run(tmp_path, monkeypatch):
         exec(block, namespace)
     assert namespace["hopf"].criticality == "subcritical"
     assert any(e["kind"] == "grazing" for e in namespace["stick_slip"].events)
+
+
+def test_brake_tutorial_runs(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    namespace = {}
+    for block in _blocks("docs/tutorial-brake.md"):
+        exec(block, namespace)
+    assert namespace["wave"].regime == "stick-slip-separation" and namespace["s"].p_e > 0
+    assert namespace["regime"].regime.startswith("stick")
+
+
+def test_halfspace_tutorial_runs(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    namespace = {}
+    for block in _blocks("docs/tutorial-halfspace.md"):
+        exec(block, namespace)
+    assert abs(namespace["wave"].c + 0.7) < 1e-6 and abs(namespace["wave"].b - 2.0) < 1e-6
+    assert namespace["f"].slip_residual < 1e-10
