@@ -90,3 +90,11 @@ def test_bad_regime_is_a_usage_error(capsys):
     code = run(["brake", "wave", "--xi", "1.5", "--gamma", "1e-6", "--delta", "0.001", "--friction", "0.7",
                 "--regime", "chaos"])
     assert code == 2 and "--regime" in capsys.readouterr().err
+
+
+def test_regime_map_command(tmp_path, capsys):
+    data = _json(["brake", "map", "--out", str(tmp_path / "w.zarr"), "--frictions", "0.2:0.7:2",
+                  "--mismatches", "1e-6:1e-4:2", "--workers", "1", "--json"], capsys)
+    assert data["points"] == 4 and sum(data["counts"].values()) == 4 and data["counts"].get("stick-slip", 0) >= 1
+    assert run(["brake", "map", "--out", str(tmp_path / "x.nc")]) == 2
+    assert run(["brake", "map", "--out", str(tmp_path / "y.zarr"), "--mismatches", "0:1e-4:3"]) == 2

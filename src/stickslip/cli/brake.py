@@ -213,3 +213,46 @@ def continue_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta 
     emit(data, json, "wave branch")
     if out:
         branch.to_xarray().to_netcdf(out)
+
+
+@app.command("map")
+def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (directory ending in .zarr); resumed if it exists.")],
+            kind: Annotated[str, typer.Option(help="waves (shooting) or ring (time integration).")] = "waves",
+            frictions: Annotated[str, typer.Option(help="f axis lo:hi:n.")] = "0.1:2:16",
+            mismatches: Annotated[str, typer.Option(help="d axis [m], log-spaced lo:hi:n.")] = "1e-7:1e-4:12",
+            omega: Annotated[float, typer.Option(help="Shaft speed [rad/s].")] = 50.0,
+            modes: Annotated[int, typer.Option(help="Mode number n of the waves (kind = waves).")] = 4,
+            workers: Annotated[Optional[int], typer.Option(help="Worker processes (default: all cores).")] = None,
+            json: Json = False):
+    """Regime map over friction and mismatch (resumable, parallel): travelling waves or ring limit regimes."""
+    import numpy as np
+    from rich.progress import Progress
+
+    from ..brake.regimes import REGIME_CODES, ring_regime_map, wave_regime_map
+
+    if out.suffix != ".zarr":
+        raise ParameterError("--out", str(out), "a directory name ending in .zarr")
+    if kind not in ("waves", "ring"):
+        raise ParameterError("--kind", kind, "waves or ring")
+
+    def axis(option, text, log):
+        try:
+            lo, hi, n = text.split(":")
+            lo, hi, n = float(lo), float(hi), int(n)
+        except ValueError:
+            raise ParameterError(option, text, "lo:hi:n") from None
+        if n < 2 or (log and min(lo, hi) <= 0):
+            raise ParameterError(option, text, "lo:hi:n with n >= 2" + (" and lo, hi > 0" if log else ""))
+        return np.logspace(np.log10(lo), np.log10(hi), n) if log else np.linspace(lo, hi, n)
+
+    f, d = axis("--frictions", frictions, False), axis("--mismatches", mismatches, True)
+    with Progress(transient=True) as bar:
+        task = bar.add_task(f"{kind} map", total=None)
+        tick = lambda done, total: bar.update(task, completed=done, total=total)  # noqa: E731
+        if kind == "waves":
+            ds = wave_regime_map(f, d, out, omega=omega, modes=modes, workers=workers, progress=tick)
+        else:
+            ds = ring_regime_map(f, d, out, omega=omega, workers=workers, progress=tick)
+    name = "wave_regime" if kind == "waves" else "ring_regime"
+    counts = {k: int((ds[name] == v).sum()) for k, v in REGIME_CODES.items() if int((ds[name] == v).sum())}
+    emit({"store": str(out), "kind": kind, "points": int(ds[name].size), "counts": counts}, json, "regime map")

@@ -20,7 +20,7 @@ import xarray as xr
 
 __all__ = ["Check", "FigureSpec", "register", "registry"]
 
-_MODULES = ["fig2", "fig3", "oscillator_bifurcation", "oscillator_regimes", "brake_stability", "brake_waves", "brake_ring", "halfspace"]
+_MODULES = ["fig2", "fig3", "oscillator_bifurcation", "oscillator_regimes", "brake_stability", "brake_waves", "brake_ring", "brake_regimes", "halfspace"]
 _REGISTRY: dict[str, "FigureSpec"] = {}
 
 
