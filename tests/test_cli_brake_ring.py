@@ -17,3 +17,12 @@ def test_integrate_command_classifies_and_checkpoints(tmp_path, capsys):
 def test_integrate_rejects_bad_input(capsys):
     assert run(["brake", "integrate", "--xi", "1.5", "--gamma", "1e-6", "--delta", "0.001", "--nodes", "2"]) == 2
     assert "nodes" in capsys.readouterr().err
+
+
+def test_fem_command(tmp_path, capsys):
+    args = ["brake", "fem", "--omega", "50", "--mismatch", "1e-4", "--friction", "0.7", "--n-theta", "64", "--n-r",
+            "4", "--transits", "10", "--out", str(tmp_path / "fem.nc"), "--json"]
+    assert run(args) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["regime"] and abs(data["p_mean_over_pe"] - 1) < 0.1 and (tmp_path / "fem.nc").exists()
+    assert run(["brake", "fem", "--omega", "50", "--mismatch", "1e-4", "--friction", "0.7", "--n-theta", "30"]) == 2

@@ -92,6 +92,21 @@ ERRATA: list[Erratum] = [
          "tests/brake/test_brake_steady.py::test_reduced_steady_state_eq16_agrees_with_lame"),
     ),
     Erratum(
+        "B5", "Section 3.1, eqs. [22]-[23]: the explicit beta-scheme and its multipliers",
+        "[22]: u̇_m = (1/(1+2β1)){u̇_{m−1} + Δt(1−β1)ü_{m−1} + (2β1/Δt)(u_{m+1} − u_m)}, "
+        "ü_{m+1} = (2/Δt²)(u_{m+1} − u_m − Δt u̇_m), with 0.5 ≤ β2 ≤ 1; [23]: λ_m = [Δt² C M⁻¹ Cᵀ]⁻¹ C(u*_{m+1} + X)",
+        "β1 is β2, and the second line of [22] defines ü_m (not ü_{m+1}): [22] is then the explicit Newmark scheme "
+        "with γ = β2. With β2 ≠ 1/2 the correction of [23] moves the displacement by (β2 + 1/2)Δt² M⁻¹Cᵀλ, so the "
+        "multiplier needs [(β2 + 1/2)Δt² C M⁻¹ Cᵀ]⁻¹ for the constraint to hold exactly at t_{m+1}.",
+        "Substituting ü_m = 2(u_{m+1} − u_m − Δt u̇_m)/Δt² into u̇_m = u̇_{m−1} + Δt((1−β2)ü_{m−1} + β2 ü_m) gives the "
+        "first line of [22] exactly. The ring and FE integrators built on this reading converge at order 2 (β2 = 1/2) "
+        "and 1 (β2 = 0.9) in Δt, are stable up to the CFL limit they predict, and with the (β2 + 1/2) factor the "
+        "contact nodes land exactly on u_r = δ at every step for β2 = 0.9 as for 1/2.",
+        ("tests/brake/test_ring_scheme.py::test_observed_order_in_time",
+         "tests/brake/test_ring_scheme.py::test_stability_limit_is_the_cfl_condition",
+         "tests/brake/fem/test_fem_contact_energy.py::test_contact_conditions_at_every_node_and_step"),
+    ),
+    Erratum(
         'H1', "Section 4.1, eq. [29]: argument of φ2'",
         "σ_xx = −2 Re( (2β1² − β2² + 1)/2 φ1'(z1) + (1 + β2²)/2 φ2'(z1) )",
         "… + (1 + β2²)/2 φ2'(z2) )",

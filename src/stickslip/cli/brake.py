@@ -256,3 +256,33 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (directory ending
     name = "wave_regime" if kind == "waves" else "ring_regime"
     counts = {k: int((ds[name] == v).sum()) for k, v in REGIME_CODES.items() if int((ds[name] == v).sum())}
     emit({"store": str(out), "kind": kind, "points": int(ds[name].size), "counts": counts}, json, "regime map")
+
+
+@app.command("fem")
+def fem_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, friction: Friction = 0.0,
+            inner_radius: Inner = None, outer_radius: Outer = None, young: Young = None, density: Density = None,
+            omega: Omega = None, mismatch: Mismatch = None,
+            n_theta: Annotated[int, typer.Option(help="Nodes around the ring (multiple of 8).")] = 256,
+            n_r: Annotated[int, typer.Option(help="Element layers across the ring.")] = 16,
+            transits: Annotated[float, typer.Option(help="Duration in P-wave transits 2 pi R / c_p.")] = 100.0,
+            beta2: Annotated[float, typer.Option(help="Scheme parameter of [22] (paper: 0.9).")] = 0.9,
+            mode: Annotated[Optional[int], typer.Option(help="Seed this Fourier mode (default: white noise).")] = None,
+            checkpoint: Annotated[Optional[Path], typer.Option(help="Checkpoint file (.nc): resumed if present.")] = None,
+            out: Annotated[Optional[Path], typer.Option(help="Write the run to this netCDF file (.nc).")] = None,
+            json: Json = False):
+    """Finite element model of section 3.1 (scikit-fem): run to the limit regime and classify it."""
+    from rich.progress import Progress
+
+    from ..brake.fem import FemScheme, classify_fem, integrate_fem, perturbed_steady
+
+    checkpoint, out = output_path("--checkpoint", checkpoint, ".nc"), output_path("--out", out, ".nc")
+    p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
+               outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
+    initial = perturbed_steady(FemScheme(p, n_theta, n_r, beta2), mode=mode)
+    with Progress(transient=True) as bar:
+        task = bar.add_task("finite elements", total=1.0)
+        run = integrate_fem(p, n_theta, n_r, transits=transits, beta2=beta2, initial=initial, checkpoint=checkpoint,
+                            progress=lambda t, t_end: bar.update(task, completed=t / t_end))
+    if out:
+        run.to_xarray().to_netcdf(out)
+    emit(classify_fem(run).to_dict(), json, "FE limit regime")

@@ -32,7 +32,8 @@ def reproduce(out: Annotated[Path, typer.Option(help="Output directory.")] = Pat
     else:
         for o in summary.outcomes:
             mark = "[green]pass[/green]" if o.passed else "[red]FAIL[/red]"
+            note = f"  ({len(o.not_reproduced)} paper claim(s) not reproduced)" if o.not_reproduced else ""
             console.print(f"{o.spec.key:>24}  {mark}  {sum(c.passed for c in o.checks)}/{len(o.checks)} checks"
-                          f"  {o.seconds:6.1f} s{' (cached)' if o.cached else ''}")
+                          f"  {o.seconds:6.1f} s{' (cached)' if o.cached else ''}{note}")
         console.print(f"report: {out / 'report.md'} and {out / 'report.html'}")
     return 0 if summary.passed else 1

@@ -20,19 +20,25 @@ import xarray as xr
 
 __all__ = ["Check", "FigureSpec", "register", "registry"]
 
-_MODULES = ["fig2", "fig3", "oscillator_bifurcation", "oscillator_regimes", "brake_stability", "brake_waves", "brake_ring", "brake_regimes", "halfspace"]
+_MODULES = ["fig2", "fig3", "oscillator_bifurcation", "oscillator_regimes", "brake_stability", "brake_waves", "brake_ring", "brake_regimes", "brake_fem", "halfspace"]
 _REGISTRY: dict[str, "FigureSpec"] = {}
 
 
 @dataclass(frozen=True)
 class Check:
-    """One verified statement: what was expected, what was measured, and the verdict."""
+    """One verified statement: what was expected, what was measured, and the verdict.
+
+    ``claim=True`` marks a claim of the paper that our computation may legitimately not
+    reproduce (a scientific finding, reported as "not reproduced"); other checks verify
+    the computation itself, and a failure there is a failure of the run.
+    """
 
     name: str
     passed: bool
     measured: str
     expected: str
     detail: str = ""
+    claim: bool = False
 
 
 @dataclass(frozen=True)
@@ -44,10 +50,11 @@ class FigureSpec:
     model: str
     claim: str
     method: str
-    compute: Callable[[bool], xr.Dataset]
+    compute: Callable[[bool], xr.Dataset] | None
     plot: Callable[[xr.Dataset, object], None]
     check: Callable[[xr.Dataset], list[Check]]
     errata: tuple[str, ...] = field(default_factory=tuple)
+    data_from: str | None = None  # reuse the dataset (and checkpoint) of another figure
 
 
 def register(spec: FigureSpec) -> FigureSpec:

@@ -1,0 +1,114 @@
+"""Time per step of the FE brake integrator (default mesh 256 x 16) against the bare sparse
+matrix-vector product of the same matrix.
+
+Baseline: ``K @ u`` with scipy's CSR kernel on the assembled stiffness (the one operation an
+explicit step cannot avoid). Measured in one run, on the same saturated state (case 2 of
+section 3.1: stick, slip and separation present):
+
+* scipy CSR ``K @ u`` (baseline) and the same product in a compiled CSR loop;
+* the compiled block-circulant stencil product (`fem.scheme.stencil_apply`, same matrix);
+* compiled predictor without contact (`fem.scheme.bare`);
+* the production step with contact and Coulomb friction (`fem.scheme.advance`);
+* `integrate_fem` end to end (setup, kernel, and sampling of energy, zone fractions, Fourier
+  modes and snapshots 32 times per transit), over 5x the steps.
+
+Usage: ``python benchmarks/brake_fem.py [--n-theta 256] [--n-r 16] [--steps 5000]``
+"""
+
+from __future__ import annotations
+
+import argparse
+import time
+
+import numpy as np
+from numba import njit
+
+from stickslip.brake import BrakeParams
+from stickslip.brake.fem import integrate_fem
+from stickslip.brake.fem.scheme import advance, bare, stencil_apply
+
+
+@njit(cache=True)
+def csr_matvec(indptr, indices, data, u, out):
+    for k in range(u.shape[0]):
+        s = 0.0
+        for p in range(indptr[k], indptr[k + 1]):
+            s += data[p] * u[indices[p]]
+        out[k] = s
+
+
+def _timed(fn, n, repeat=3):
+    best = np.inf
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn()
+        best = min(best, time.perf_counter() - t0)
+    return best / n
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--n-theta", type=int, default=256)
+    parser.add_argument("--n-r", type=int, default=16)
+    parser.add_argument("--steps", type=int, default=5000)
+    args = parser.parse_args()
+    N, nr, M = args.n_theta, args.n_r, args.steps
+    p = BrakeParams.from_physical(50.0, 1e-4, 0.7)  # case 2 of section 3.1
+    run = integrate_fem(p, N, nr, transits=40)  # a saturated nonlinear state
+    s, state0 = run.scheme, run.kernel
+    fr = run.fractions[-1]
+    K = s.system.K
+    u = state0["u"].copy()
+    out = np.empty_like(u)
+    fresh = lambda: {key: v.copy() for key, v in state0.items()}  # noqa: E731
+    buf = (np.zeros(N), np.zeros(N), np.zeros(N, np.int8), np.zeros_like(u))
+
+    def full(n=M):
+        k = fresh()
+        advance(k["u"], k["v"], k["a"], *buf, n, s.dt, s.operator, p.delta, p.friction, s.beta2, True)
+        return k
+
+    def pred(n=M):
+        k = fresh()
+        bare(k["u"], k["v"], k["a"], n, s.dt, s.operator, s.beta2)
+
+    def scipy_mv():
+        for _ in range(M):
+            K @ u
+
+    def csr_mv():
+        for _ in range(M):
+            csr_matvec(K.indptr, K.indices, K.data, u, out)  # compile
+
+    def stencil_mv():
+        for _ in range(M):
+            stencil_apply(s.operator, u, out)
+
+    full(1), pred(1)  # compile
+    csr_matvec(K.indptr, K.indices, K.data, u, out)  # compile
+    stencil_apply(s.operator, u, out)
+    err = np.abs(-s.mass * out - K @ u).max() / np.abs(K @ u).max()
+    t_scipy, t_csr, t_sten = _timed(scipy_mv, M), _timed(csr_mv, M), _timed(stencil_mv, M)
+    t_pred, t_full = _timed(pred, M), _timed(full, M)
+    T = 5 * M / s.steps_per_transit  # long enough that the setup (steady solve, CFL eigenvalues) is amortised
+    t0 = time.perf_counter()
+    r = integrate_fem(p, N, nr, transits=T)
+    t_int = (time.perf_counter() - t0) / (r.samples_done * r.settings["chunk"])
+    spt = s.steps_per_transit
+    print(f"FE brake integrator, mesh {s.system.mesh.describe()}: {s.system.n_free} dofs, nnz(K) = {K.nnz}, "
+          f"{spt:.0f} steps per P-wave transit (beta2 = {s.beta2}, courant = {s.courant})")
+    print(f"state: stick {fr[0]:.2f}, slip {fr[1]:.2f}, reverse slip {fr[2]:.2f}, separation {fr[3]:.2f}; "
+          f"stencil product = K u to {err:.1e} (relative)")
+    rows = [("bare sparse matvec K @ u (scipy CSR)", t_scipy, "baseline"),
+            ("same product, compiled CSR loop", t_csr, ""), ("same product, compiled stencil", t_sten, ""),
+            ("compiled step without contact (matvec + predictor)", t_pred, ""),
+            ("compiled step with contact + Coulomb (advance)", t_full, ""),
+            ("integrate_fem end to end, with sampling", t_int, "")]
+    for name, t, note in rows:
+        print(f"  {name:<52s} {1e6 * t:8.2f} us/step  {t * spt:7.4f} s/transit   ratio {t / t_scipy:5.2f} {note}")
+    print(f"RATIO time per step with contact+friction / bare sparse matvec = {t_full / t_scipy:.3f} "
+          f"(end to end: {t_int / t_scipy:.3f})")
+
+
+if __name__ == "__main__":
+    main()

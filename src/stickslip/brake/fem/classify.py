@@ -1,0 +1,133 @@
+"""Classification of the limit regime of an FE run, on its contact nodes (paper [17]-[20]).
+
+A `FemRun` has the interface `brake.ring_classify.classify` reads (``scheme.theta``,
+``dtheta``, ``dt``, ``transit_time``, ``coefficients.a``; snapshots ``U, V, state, snap_t`` of
+the nodes on ``r = R``; series ``fractions``, ``modes_V``), so the ring's classifier is
+applied unchanged: zone fractions and regime name, mode number (stick zones counted in
+the frame of the wave) and dominant Fourier mode, wave speed, stationarity. `FemRegime`
+adds what is specific to the FE: the speed in units of the P-wave speed along ``r = R``,
+the number of stick zones per snapshot (its median: robust when the pattern is not a
+rigid travelling wave, where the wave-frame count of the ring classifier merges zones), the
+dominant Fourier mode of the contact pressure and the pattern speed measured on it, the
+contact pressure relative to the steady ``p_e``, and the energy statistics of the window.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...errors import ParameterError
+from ..ring_classify import RegimeResult, _speed, classify, count_zones
+from ..ring_scheme import SEPARATION, STICK
+
+__all__ = ["FemRegime", "classify_fem", "contact_residuals"]
+
+
+@dataclass(frozen=True)
+class FemRegime:
+    """Limit regime of an FE run (fields of `RegimeResult` plus FE-specific numbers).
+
+    ``c_over_cp``: wave speed ``c`` over ``c_p / R`` (angular P-wave speed at ``r = R``);
+    ``n_zones``: median number of stick zones (>= ``min_run`` nodes) per snapshot, or of
+    contact zones if nothing sticks; ``n_fft_P``: dominant Fourier mode of the contact
+    pressure; ``c_P_over_cp``: speed of the pressure pattern (shift of at most
+    ``pi / n_fft_P`` between snapshots); ``p_max_over_pe``, ``p_mean_over_pe``:
+    largest and mean contact pressure in the window over the steady ``p_e``;
+    ``energy_mean``, ``energy_cv``: mean and coefficient of variation of the energy of the
+    deviation from steady sliding in the window; ``transits``: length of the run.
+    """
+
+    result: RegimeResult
+    c_over_cp: float
+    n_zones: int
+    n_fft_P: int
+    c_P_over_cp: float
+    p_max_over_pe: float
+    p_mean_over_pe: float
+    energy_mean: float
+    energy_cv: float
+    transits: float
+
+    def __getattr__(self, name):
+        return getattr(self.__dict__["result"], name)
+
+    def to_dict(self) -> dict:
+        out = self.result.to_dict()
+        out.update({k: int(getattr(self, k)) if k.startswith("n_") else float(getattr(self, k))
+                    for k in ("c_over_cp", "n_zones", "n_fft_P", "c_P_over_cp", "p_max_over_pe", "p_mean_over_pe",
+                              "energy_mean", "energy_cv", "transits")})
+        return out
+
+
+    def to_xarray(self):
+        """The fractions as a variable over ``kind``, every scalar in ``attrs``."""
+        import xarray as xr
+
+        d = self.to_dict()
+        frac = d.pop("fractions")
+        attrs = {k: (str(v) if isinstance(v, (dict, list)) else (int(v) if isinstance(v, bool) else v))
+                 for k, v in d.items()}
+        attrs["speed_units"] = "c: rad per paper time unit 1/Omega; c_over_cp: units of c_p/R"
+        return xr.Dataset({"fraction": ("kind", list(frac.values()), {"units": "1"})},
+                          coords={"kind": list(frac)}, attrs=attrs)
+
+
+def classify_fem(run, transits: float | None = None, min_fraction: float = 0.01, min_run: int = 2,
+                 tol: float = 0.1) -> FemRegime:
+    """Classify the last ``transits`` (default: the dense tail) of a `FemRun`.
+
+    Parameters are those of `brake.ring_classify.classify` (transits of the FE run:
+    ``2 pi R / c_p``).
+    """
+    from .run import FemRun
+
+    if not isinstance(run, FemRun):
+        raise ParameterError("run", run, "a FemRun (see integrate_fem)")
+    if not run.settings["contact"]:
+        raise ParameterError("run", "a run without contact", "a run with contact (contact=True)")
+    res = classify(run, transits, min_fraction, min_run, tol)
+    t0, _ = res.window
+    s = run.scheme
+    snap = run.snap_t >= t0
+    ser = run.t >= t0
+    pe = float(s.steady.pressure.mean())
+    P, state, ts = run.P[snap], run.state[snap], run.snap_t[snap]
+    n_fft_P = int(np.argmax(np.mean(np.abs(np.fft.rfft(P, axis=1)[:, 1:]) ** 2, axis=0)) + 1)
+    c_P = _speed(P, ts, n_fft_P)
+    mask = state == STICK if res.fractions["stick"] >= min_fraction else state != SEPARATION
+    zones = int(np.median([count_zones(m, min_run) for m in mask]))
+    energy = run.energy[ser]
+    return FemRegime(res, res.c / s.p_wave_speed, zones, n_fft_P, c_P / s.p_wave_speed,
+                     float(P.max() / pe), float(P.mean() / pe), float(energy.mean()),
+                     float(energy.std() / energy.mean()) if energy.mean() > 0 else 0.0, run.transits)
+
+
+def contact_residuals(run) -> dict:
+    """Residuals of the contact and Coulomb conditions over all snapshots of a run ([10], [17]-[20]).
+
+    ``P_min`` = min ``p / p_e`` (>= 0); ``gap_min`` = min gap ``/ delta`` at ``t_{m+1}`` (>= 0);
+    ``complementarity`` = max ``|p gap| / (p_e delta)`` (= 0); ``coulomb`` = max
+    ``(|q| - f p) / (f p_e)`` (<= 0); ``stick_speed`` = max ``|1 - w|`` at sticking nodes (the
+    node moves with the shaft); ``slip_law`` = max ``|q - f p sign(1 - w)| / (f p_e)`` at
+    slipping nodes, and ``slip_direction`` = min ``sign(q) (1 - w)`` there (>= 0: friction
+    opposes the slip). Sticking/slipping counts are returned too.
+    """
+    from .run import FemRun
+
+    if not isinstance(run, FemRun):
+        raise ParameterError("run", run, "a FemRun (see integrate_fem)")
+    s, f = run.scheme, run.params.friction
+    pe, delta = float(s.steady.pressure.mean()), run.params.delta
+    P, Q, gap, w, state = run.P, run.Q, run.gap, run.Vd, run.state
+    stick, slip = state == STICK, (state == 1) | (state == 2)
+    sign = np.where(state == 2, -1.0, 1.0)
+    fp = max(f * pe, 1e-300)
+    return {"P_min": float(P.min() / pe), "gap_min": float(gap.min() / delta),
+            "complementarity": float(np.abs(P * gap).max() / (pe * delta)),
+            "coulomb": float((np.abs(Q) - f * P).max() / fp),
+            "stick_speed": float(np.abs(1.0 - w[stick]).max()) if stick.any() else 0.0,
+            "slip_law": float(np.abs(Q - sign * f * P)[slip].max() / fp) if slip.any() else 0.0,
+            "slip_direction": float((sign * (1.0 - w))[slip].min()) if slip.any() else 0.0,
+            "stick_count": int(stick.sum()), "slip_count": int(slip.sum())}

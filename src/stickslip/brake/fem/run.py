@@ -1,0 +1,282 @@
+"""Time integration of the FE brake model from perturbed steady sliding (paper section 3.1).
+
+`integrate_fem` advances the explicit scheme of `fem.scheme` and records, like the ring
+integrator `brake.ring.integrate` (same schedule, same checkpoint guarantees):
+
+* every ``1/samples_per_transit`` of a P-wave transit: the energy of the deviation from
+  FE steady sliding, the fraction of contact nodes in each state (stick, slip, reverse
+  slip, separation) and Fourier modes of ``u_r, u_theta`` along ``r = R``;
+* snapshots of the contact nodes (``U = u_r``, ``V = u_theta``, step velocities, pressure
+  ``P = p`` and shear ``Q = q`` in units of ``E``, states) every ``snapshot_every`` transits
+  and at every sample of the last ``tail`` transits (for `classify_fem`).
+
+A run is budgeted in transits ``2 pi R / c_p`` (the step is set by the CFL limit, so a
+transit costs about ``1.4 n_theta`` steps for the default mesh shape and ``beta2 = 0.9``). With
+``checkpoint=path`` the run is written to netCDF every ``every`` time units, on any
+exception (Ctrl-C, the progress callback raising) and at the end; calling again with the
+same arguments resumes from the file, bitwise identical to an uninterrupted run.
+"""
+
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+import xarray as xr
+
+from ... import _validate as check
+from ...errors import ParameterError
+from ..params import BrakeParams
+from ..ring import _save, _schedule
+from .io import dataset_to_run, run_to_dataset, settings_key
+from .scheme import STATE_NAMES, FemScheme, advance, scheme_energy
+
+__all__ = ["FemInitial", "FemRun", "integrate_fem", "perturbed_steady"]
+
+
+@dataclass(frozen=True, eq=False)
+class FemInitial:
+    """Displacement ``u`` and velocity ``v`` of the free dofs at ``t = 0`` (polar frames)."""
+
+    u: np.ndarray
+    v: np.ndarray
+    label: str = "user"
+
+    def __post_init__(self):
+        u, v = (np.asarray(x, dtype=float) for x in (self.u, self.v))
+        for name, x in (("u", u), ("v", v)):
+            if x.ndim != 1 or x.shape != u.shape or not np.all(np.isfinite(x)):
+                raise ParameterError(name, f"array of shape {x.shape}", f"finite, 1-D, shape {u.shape}")
+        object.__setattr__(self, "u", u)
+        object.__setattr__(self, "v", v)
+
+    def digest(self) -> str:
+        return hashlib.sha1(self.u.tobytes() + self.v.tobytes()).hexdigest()
+
+
+def perturbed_steady(scheme: FemScheme, amplitude: float = 1e-3, mode: int | None = None, seed: int = 0,
+                     phase: float = 0.0, noise: float = 0.0) -> FemInitial:
+    """FE steady sliding plus a hoop perturbation ``delta X(r) pattern(theta)``, at rest.
+
+    ``pattern = amplitude cos(mode theta + phase) + noise w(theta)`` if ``mode`` is given,
+    else ``amplitude w(theta)``, ``w`` white noise (unit RMS, from ``seed``), and
+    ``X(r) = (xi^2/r - r)/(xi^2 - 1)`` the static profile (as `brake.ring.perturbed_steady`).
+    """
+    if not isinstance(scheme, FemScheme):
+        raise ParameterError("scheme", scheme, "a FemScheme")
+    amplitude, noise = check.nonnegative("amplitude", amplitude), check.nonnegative("noise", noise)
+    N = scheme.n_theta
+    white = np.random.default_rng(seed).standard_normal(N)
+    white /= np.sqrt(np.mean(white**2))
+    if mode is None:
+        pattern, label = amplitude * white, f"{amplitude:g} delta noise(seed={seed})"
+    else:
+        if isinstance(mode, bool) or int(mode) != mode or not 0 <= mode <= N // 2:
+            raise ParameterError("mode", mode, f"an integer in [0, {N // 2}]")
+        pattern = amplitude * np.cos(mode * scheme.theta + check.finite("phase", phase)) + noise * white
+        label = f"{amplitude:g} delta mode {mode}" + (f" + {noise:g} delta noise(seed={seed})" if noise else "")
+    xi, r = scheme.params.xi, scheme.system.mesh.radii[:-1, None]
+    X = (xi**2 / r - r) / (xi**2 - 1.0)
+    u = scheme.steady.u + scheme.system.from_fields(0.0 * X * pattern, scheme.params.delta * X * pattern)
+    return FemInitial(u, np.zeros_like(u), "FE steady sliding + " + label)
+
+
+@dataclass(frozen=True, eq=False)
+class FemRun:
+    """Result of `integrate_fem` (times in the paper's ``t = Omega t̄``).
+
+    Series: ``t``, ``energy`` (of the deviation from FE steady sliding: ``w^T M w/2 +
+    (u_m - u_e)^T K (u_{m+1} - u_e)/2``), ``kinetic``, ``fractions`` (columns `STATE_NAMES`),
+    ``modes_U``, ``modes_V`` (``rfft/n_theta`` of ``u_r``, ``u_theta`` at ``r = R``).
+    Snapshots at the contact nodes: ``snap_t``, ``U``, ``V``, ``Ud``, ``Vd`` (step
+    velocities, shaft surface speed = 1), ``P``, ``Q`` (pressure and shear, units of ``E``),
+    ``gap`` (``u_r - delta`` at ``t_{m+1}``, where the constraint of step ``m`` acts), ``state``. ``kernel``: the scheme state ``u, v, a`` (all free dofs) and ``ref`` (``u_e``).
+    """
+
+    scheme: FemScheme
+    settings: dict
+    series: dict
+    snapshots: dict
+    kernel: dict
+    samples_done: int
+
+    @property
+    def params(self) -> BrakeParams:
+        return self.scheme.params
+
+    @property
+    def complete(self) -> bool:
+        return self.samples_done >= self.settings["samples_total"]
+
+    @property
+    def t(self) -> np.ndarray:
+        return self.series["t"]
+
+    @property
+    def t_end(self) -> float:
+        return float(self.samples_done * self.settings["chunk"] * self.scheme.dt)
+
+    @property
+    def transits(self) -> float:
+        return self.t_end / self.scheme.transit_time
+
+    def __getattr__(self, name):
+        for store in ("series", "snapshots"):
+            data = self.__dict__.get(store, {})
+            if name in data:
+                return data[name]
+        raise AttributeError(name)
+
+    def to_dict(self) -> dict:
+        """Parameters, mesh, scheme, schedule and progress (no arrays)."""
+        s = self.scheme
+        return {"params": self.params.to_dict(), **s.key(), "dt": s.dt, "transit_time": s.transit_time,
+                "transits": self.transits, "samples_done": self.samples_done, "complete": self.complete,
+                **{k: v for k, v in self.settings.items() if k != "initial_hash"}}
+
+    def to_xarray(self) -> xr.Dataset:
+        """Snapshots ``(snapshot, node)``, series ``(sample[, kind | mode])``, units in attrs."""
+        return run_to_dataset(self)
+
+    @classmethod
+    def from_xarray(cls, ds: xr.Dataset) -> "FemRun":
+        return dataset_to_run(cls, ds)
+
+
+def _start(scheme: FemScheme, ini: FemInitial, contact: bool) -> dict:
+    """``u_0, v_{-1}, a_{-1}``: ``a_{-1}`` is the internal acceleration plus the steady reactions
+    at contact nodes touching the shaft, ``v_{-1} = v_0 - dt a_{-1}`` (exact at rest in steady sliding)."""
+    a = -(scheme.system.K @ ini.u) / scheme.mass
+    ref = scheme.steady.u.copy() if contact else np.zeros_like(ini.u)
+    if contact:
+        N, st = scheme.n_theta, scheme.steady
+        touching = ini.u[0:2 * N:2] <= scheme.params.delta
+        m = scheme.mass[0]
+        a[0:2 * N:2] += touching * st.reaction_n / m
+        a[1:2 * N:2] += touching * st.reaction_t / m
+    return {"u": ini.u.copy(), "v": ini.v - scheme.dt * a, "a": a, "ref": ref}
+
+
+def integrate_fem(params: BrakeParams, n_theta: int = 256, n_r: int = 16, t_end: float | None = None, *,
+                  transits: float | None = None, initial: FemInitial | None = None, beta2: float = 0.9,
+                  courant: float = 0.9, samples_per_transit: int = 32, snapshot_every: float = 1.0,
+                  tail: float = 2.0, modes: int = 32, contact: bool = True, checkpoint=None,
+                  every: float | None = None, progress: Callable[[float, float], None] | None = None) -> FemRun:
+    """Integrate the FE model of [10] from ``initial`` up to ``t_end`` (or ``transits``).
+
+    Parameters
+    ----------
+    params : BrakeParams
+        Dimensionless parameters (``delta > 0`` for contact).
+    n_theta, n_r : int
+        Mesh: nodes around (multiple of 8, >= 16) and element layers across.
+    t_end, transits : float
+        Duration in paper time, or in P-wave transits ``2 pi R / c_p``; give exactly one.
+    initial : FemInitial, optional
+        Default: `perturbed_steady` with white noise ``1e-3 delta``.
+    beta2, courant : float
+        Scheme (`FemScheme`); the paper uses ``beta2 = 0.9``, ``1/2`` is central differences.
+    samples_per_transit : int
+        Series samples per transit (>= 4); also the snapshot rate in the tail.
+    snapshot_every, tail : float
+        Snapshot interval and length of the densely sampled tail, in transits.
+    modes : int
+        Fourier modes ``0..modes`` kept in the series.
+    contact : bool
+        False: no contact and no friction (free vibrations, inner surface free).
+    checkpoint : path, optional
+        netCDF file: resumed from if it exists; written every ``every`` time units
+        (default ``t_end/10``), on interruption and at the end.
+    progress : callable, optional
+        ``progress(t, t_end)`` after every sample.
+    """
+    scheme = FemScheme(params, n_theta, n_r, beta2, courant)
+    if (t_end is None) == (transits is None):
+        raise ParameterError("t_end", t_end, "given (> 0), or else transits, but not both")
+    t_end = check.positive("t_end", t_end) if transits is None else \
+        check.positive("transits", transits) * scheme.transit_time
+    spt = check.positive_int("samples_per_transit", samples_per_transit)
+    if spt < 4:
+        raise ParameterError("samples_per_transit", spt, "an integer >= 4")
+    modes = min(check.positive_int("modes", modes), scheme.n_theta // 2)
+    initial = perturbed_steady(scheme) if initial is None else initial
+    if not isinstance(initial, FemInitial) or initial.u.size != scheme.system.n_free:
+        raise ParameterError("initial", initial, f"a FemInitial with {scheme.system.n_free} dofs")
+    if progress is not None and not callable(progress):
+        raise ParameterError("progress", progress, "a callable progress(t, t_end) or None")
+    settings = {**_schedule(scheme, t_end, spt, check.positive("snapshot_every", snapshot_every),
+                            check.nonnegative("tail", tail)),
+                "samples_per_transit": spt, "modes": modes, "contact": bool(contact), "initial": initial.label,
+                "initial_hash": initial.digest()}
+    every = t_end / 10.0 if every is None else check.positive("every", every)
+    run = _resume(checkpoint, scheme, settings) if checkpoint is not None else None
+    if run is None:
+        run = FemRun(scheme, settings, {}, {}, _start(scheme, initial, contact), 0)
+    return _loop(run, checkpoint, every, progress, t_end)
+
+
+def _resume(path, scheme, settings):
+    path = Path(path)
+    if not path.exists():
+        return None
+    old = FemRun.from_xarray(xr.load_dataset(path))
+    if old.params.to_dict() != scheme.params.to_dict() or \
+            settings_key(old) != settings_key(FemRun(scheme, settings, {}, {}, {}, 0)):
+        raise ParameterError("checkpoint", str(path), "a checkpoint of the same run (parameters, mesh, scheme, "
+                             "schedule and initial condition must match; delete it to start afresh)")
+    return FemRun(scheme, {**old.settings, "samples_total": settings["samples_total"],
+                           "tail_samples": settings["tail_samples"]},
+                  old.series, old.snapshots, old.kernel, old.samples_done)
+
+
+def _loop(run: FemRun, checkpoint, every, progress, t_end) -> FemRun:
+    s, st, k = run.scheme, run.settings, run.kernel
+    p, dt, N = s.params, s.dt, s.n_theta
+    lam_n, lam_t, state, work = np.zeros(N), np.zeros(N), np.zeros(N, np.int8), np.zeros_like(k["u"])
+    series = {key: list(v) for key, v in run.series.items()}
+    snaps = {key: list(v) for key, v in run.snapshots.items()}
+    done, total, chunk = run.samples_done, st["samples_total"], st["chunk"]
+    per_checkpoint = max(1, int(every / (chunk * dt)))
+
+    def result():
+        return FemRun(s, st, {key: np.asarray(v) for key, v in series.items()},
+                      {key: np.asarray(v) for key, v in snaps.items()}, {key: v.copy() for key, v in k.items()}, done)
+
+    try:
+        while done < total:
+            advance(k["u"], k["v"], k["a"], lam_n, lam_t, state, work, chunk, dt, s.operator, p.delta, p.friction,
+                    s.beta2, st["contact"])
+            done += 1
+            _record(s, st, done, k, lam_n, lam_t, state, work, series, snaps)
+            if progress is not None:
+                progress(done * chunk * dt, t_end)
+            if checkpoint is not None and done % per_checkpoint == 0 and done < total:
+                _save(result(), checkpoint)
+    except BaseException:
+        if checkpoint is not None and done > run.samples_done:
+            _save(result(), checkpoint)
+        raise
+    out = result()
+    if checkpoint is not None:
+        _save(out, checkpoint)
+    return out
+
+
+def _record(s, st, done, k, lam_n, lam_t, state, work, series, snaps):
+    m, N = done * st["chunk"] - 1, s.n_theta  # index of the last step: fields at t_m
+    kin, ela = scheme_energy(s, work, k["u"], k["ref"])
+    U, V = work[0:2 * N:2], work[1:2 * N:2]
+    rec = {"t": m * s.dt, "kinetic": kin, "energy": kin + ela,
+           "fractions": np.bincount(state, minlength=len(STATE_NAMES)) / N,
+           "modes_U": np.fft.rfft(U)[:st["modes"] + 1] / N, "modes_V": np.fft.rfft(V)[:st["modes"] + 1] / N}
+    for key, v in rec.items():
+        series.setdefault(key, []).append(v)
+    if done % st["snap_every"] == 0 or done > st["samples_total"] - st["tail_samples"] or done == st["samples_total"]:
+        scale = s.mass[0] / s.system.mesh.h_theta  # reaction per unit mass -> traction (units of E)
+        for key, v in {"snap_t": m * s.dt, "U": U.copy(), "V": V.copy(), "Ud": (k["u"][0:2 * N:2] - U) / s.dt,
+                       "Vd": (k["u"][1:2 * N:2] - V) / s.dt, "P": scale * lam_n, "Q": scale * lam_t,
+                       "gap": k["u"][0:2 * N:2] - s.params.delta, "state": state.copy()}.items():
+            snaps.setdefault(key, []).append(v)

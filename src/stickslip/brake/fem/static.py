@@ -1,0 +1,122 @@
+"""Steady sliding on the FE mesh: the static contact problem in full forward slip ([10], [11]).
+
+Every contact node slips forward (the shaft surface moves at speed 1, the ring is at
+rest), so its radial displacement is held, ``u_r = delta``, and its hoop dof carries the
+friction ``f lambda_n``, where ``lambda_n = (K u)_r`` is the radial reaction. With ``c``
+the contact radial dofs and ``F`` all other free dofs this is the linear (non-symmetric)
+system
+
+    (K_FF - f E K_cF) u_F = -(K_Fc - f E K_cc) delta 1,
+
+``E`` moving the row of contact node ``j``'s radial dof to its hoop dof. The solution is
+an exact fixed point of the explicit scheme (the reactions the scheme computes at rest are
+``lambda_n`` and ``f lambda_n``). It must agree with the Lamé solution `brake.steady`:
+``u = delta X(r)``, ``v = V_e X(r)`` and ``p = lambda_n / (2 pi / n_theta) = p_e``, up to the
+discretisation error ``O(h^2)``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+import xarray as xr
+
+from ...errors import ParameterError
+from ..params import BrakeParams
+from ..steady import steady_sliding
+from .mesh import FemSystem, annulus_mesh, assemble
+
+__all__ = ["FemSteady", "steady_state"]
+
+
+@dataclass(frozen=True, eq=False)
+class FemSteady:
+    """FE steady sliding: free-dof displacement ``u`` and contact reactions (per node).
+
+    ``reaction_n, reaction_t`` are nodal forces (units ``E R`` per unit length in z);
+    ``pressure = reaction_n / h_theta`` is in units of ``E``.
+    """
+
+    params: BrakeParams
+    system: FemSystem
+    u: np.ndarray
+    reaction_n: np.ndarray
+    reaction_t: np.ndarray
+
+    @property
+    def pressure(self) -> np.ndarray:
+        return self.reaction_n / self.system.mesh.h_theta
+
+    @property
+    def forces(self) -> np.ndarray:
+        """``K u`` on the free dofs: the reactions on the contact dofs, 0 elsewhere (to round-off)."""
+        return self.system.K @ self.u
+
+    def errors(self) -> dict:
+        """Max-norm errors against the Lamé solution, relative to its scale.
+
+        ``u``: max over nodes of ``|u_r - delta X(r)|/delta``; ``v``: the same for ``u_theta``
+        and ``V_e``; ``p``: ``max |p_j - p_e| / p_e`` over the contact nodes.
+        """
+        p, s = self.params, self.system
+        lame = steady_sliding(p.xi, p.nu, p.delta, p.friction)
+        r = s.mesh.radii[:-1, None]
+        err_u = np.abs(s.radial(self.u) - lame.u(r)).max() / lame.delta
+        err_v = np.abs(s.hoop(self.u) - lame.v(r)).max() / abs(lame.V_e) if lame.V_e else np.nan
+        err_p = np.abs(self.pressure - lame.p_e).max() / lame.p_e
+        return {"u": float(err_u), "v": float(err_v), "p": float(err_p), "p_e": lame.p_e,
+                "p_fem": float(self.pressure.mean()), "V_e": lame.V_e, "V_fem": float(self.u[1])}
+
+    def to_dict(self) -> dict:
+        return {"n_theta": self.system.mesh.n_theta, "n_r": self.system.mesh.n_r, **self.errors()}
+
+    def to_xarray(self) -> xr.Dataset:
+        s = self.system
+        ds = xr.Dataset({"u_r": (("r", "theta"), s.radial(self.u), {"units": "R"}),
+                         "u_theta": (("r", "theta"), s.hoop(self.u), {"units": "R"}),
+                         "pressure": ("theta", self.pressure, {"units": "E"})},
+                        coords={"r": ("r", s.mesh.radii[:-1], {"units": "R"}),
+                                "theta": ("theta", s.mesh.theta, {"units": "rad"})})
+        ds.attrs.update({k: float(v) if isinstance(v, float) else v for k, v in self.to_dict().items()})
+        ds.attrs["source"] = "FE static contact problem in forward slip; compare eq. [11] (corrected)"
+        return ds
+
+
+def steady_state(params: BrakeParams, system: FemSystem | None = None, *, n_theta: int = 256,
+                 n_r: int = 16) -> FemSteady:
+    """Solve the FE steady-sliding problem (see the module docstring).
+
+    Parameters
+    ----------
+    params : BrakeParams
+        ``delta`` and ``friction`` are used; ``xi``, ``nu`` must be those of ``system``.
+    system : FemSystem, optional
+        From `assemble`; default: `annulus_mesh` ``(n_theta, n_r, params.xi)`` assembled
+        with ``params.nu``.
+    n_theta, n_r : int
+        The mesh when ``system`` is not given.
+    """
+    if not isinstance(params, BrakeParams):
+        raise ParameterError("params", params, "a stickslip.brake.BrakeParams")
+    if system is None:
+        system = assemble(annulus_mesh(n_theta, n_r, params.xi), params.nu)
+    if not isinstance(system, FemSystem) or abs(system.nu - params.nu) > 1e-15 or \
+            abs(system.mesh.xi - params.xi) > 1e-12 * params.xi:
+        raise ParameterError("system", system, "a FemSystem assembled with params.xi and params.nu")
+    K, n, N = system.K, system.n_free, system.n_contact
+    c = 2 * np.arange(N)
+    F = np.setdiff1d(np.arange(n), c)
+    pos = np.full(n, -1)
+    pos[F] = np.arange(F.size)
+    E = sp.csr_matrix((np.ones(N), (pos[c + 1], np.arange(N))), shape=(F.size, N))  # radial row j -> hoop dof j
+    K_FF, K_Fc, K_cF, K_cc = K[F][:, F], K[F][:, c], K[c][:, F], K[c][:, c]
+    f, delta = params.friction, params.delta
+    A = (K_FF - f * (E @ K_cF)).tocsc()
+    b = -(K_Fc - f * (E @ K_cc)) @ np.full(N, delta)
+    u = np.empty(n)
+    u[c], u[F] = delta, spla.spsolve(A, b)
+    lam_n = K[c] @ u
+    return FemSteady(params, system, u, lam_n, f * lam_n)
