@@ -19,18 +19,15 @@ result as an uninterrupted run).
 from __future__ import annotations
 
 import hashlib
-import os
 from dataclasses import dataclass
-from pathlib import Path
-from typing import Callable
+from typing import Callable, ClassVar
 
 import numpy as np
-import xarray as xr
 
 from .. import _validate as check
 from ..errors import ParameterError
 from .params import BrakeParams
-from .ring_io import dataset_to_run, run_to_dataset, settings_key
+from .runs import RunFormat, RunRecord, loop, prepare, resume, snapshot_due
 from .ring_scheme import STATE_NAMES, RingScheme, advance, energies
 
 __all__ = ["InitialCondition", "RingRun", "integrate", "perturbed_steady", "transit_time"]
@@ -98,8 +95,20 @@ def perturbed_steady(params: BrakeParams, nodes: int = 512, amplitude: float = 1
                             "steady sliding + " + label)
 
 
+_FORMAT = RunFormat(
+    fields={"U": ("R", "radial displacement U at r = 1"), "V": ("R", "tangential displacement V at r = 1"),
+            "Ud": ("R Omega", "radial velocity (U_{m+1} - U_m)/dt"),
+            "Vd": ("R Omega", "tangential velocity (V_{m+1} - V_m)/dt (shaft surface speed = 1)"),
+            "P": ("E / M", "contact pressure per unit modal mass (p = M P)"),
+            "Q": ("E / M", "friction traction per unit modal mass (q = M Q)")},
+    kernel=("U", "V", "vU", "vV", "aU", "aV"), kernel_dim="node", kernel_note="scheme state for resuming",
+    energy_units="E R^2 / M", energy_note="energy of the scheme", node_label="node",
+    source="reduced model [12] (corrected), explicit scheme of docs/theory/brake-ring.md",
+    key_attrs=("nodes", "beta2", "courant"), scheme=RingScheme)
+
+
 @dataclass(frozen=True, eq=False)
-class RingRun:
+class RingRun(RunRecord):
     """Result of `integrate` (all times in the paper's ``t = Omega t̄``).
 
     Series (one row per sample): ``t``, ``energy`` (the scheme's energy of the deviation
@@ -111,43 +120,7 @@ class RingRun:
     ``P, Q`` (reactions per unit modal mass) and ``state`` (codes of `ring_scheme`).
     """
 
-    scheme: RingScheme
-    settings: dict
-    series: dict
-    snapshots: dict
-    kernel: dict
-    samples_done: int
-
-    @property
-    def params(self) -> BrakeParams:
-        return self.scheme.params
-
-    @property
-    def complete(self) -> bool:
-        return self.samples_done >= self.settings["samples_total"]
-
-    @property
-    def t(self) -> np.ndarray:
-        return self.series["t"]
-
-    @property
-    def t_end(self) -> float:
-        return float(self.samples_done * self.settings["chunk"] * self.scheme.dt)
-
-    def __getattr__(self, name):
-        for store in ("series", "snapshots"):
-            data = self.__dict__.get(store, {})
-            if name in data:
-                return data[name]
-        raise AttributeError(name)
-
-    def to_xarray(self) -> xr.Dataset:
-        """Snapshots ``(snapshot, node)`` and series ``(sample[, state | mode])``, units in attrs."""
-        return run_to_dataset(self)
-
-    @classmethod
-    def from_xarray(cls, ds: xr.Dataset) -> "RingRun":
-        return dataset_to_run(cls, ds)
+    FORMAT: ClassVar[RunFormat] = _FORMAT
 
 
 def _start(scheme: RingScheme, ini: InitialCondition, contact: bool) -> dict:
@@ -165,15 +138,6 @@ def _start(scheme: RingScheme, ini: InitialCondition, contact: bool) -> dict:
         aU, aV = aU + touching * c.g * p.delta, aV + touching * p.friction * c.g * p.delta
     return {"U": ini.U.copy(), "V": ini.V.copy(), "vU": ini.Ud - scheme.dt * aU, "vV": ini.Vd - scheme.dt * aV,
             "aU": aU, "aV": aV}
-
-
-def _schedule(scheme, t_end, samples_per_transit, snapshot_every, tail):
-    chunk = max(1, int(round(scheme.steps_per_transit / samples_per_transit)))
-    total = int(np.ceil(t_end / (chunk * scheme.dt) - 1e-9))
-    per_transit = scheme.steps_per_transit / chunk
-    return {"chunk": chunk, "samples_total": max(total, 1),
-            "snap_every": max(1, int(round(snapshot_every * per_transit))),
-            "tail_samples": int(round(tail * per_transit))}
 
 
 def integrate(params: BrakeParams, nodes: int = 512, t_end: float | None = None, *, transits: float | None = None,
@@ -210,82 +174,26 @@ def integrate(params: BrakeParams, nodes: int = 512, t_end: float | None = None,
         ``progress(t, t_end)`` after every sample.
     """
     scheme = RingScheme(params, nodes, beta2, courant)
-    if (t_end is None) == (transits is None):
-        raise ParameterError("t_end", t_end, "given (> 0), or else transits, but not both")
-    t_end = check.positive("t_end", t_end) if transits is None else \
-        check.positive("transits", transits) * scheme.transit_time
-    spt = check.positive_int("samples_per_transit", samples_per_transit)
-    if spt < 4:
-        raise ParameterError("samples_per_transit", spt, "an integer >= 4")
-    modes = min(check.positive_int("modes", modes), scheme.nodes // 2)
     initial = perturbed_steady(params, scheme.nodes) if initial is None else initial
     if not isinstance(initial, InitialCondition) or initial.nodes != scheme.nodes:
         raise ParameterError("initial", initial, f"an InitialCondition with {scheme.nodes} nodes")
-    settings = {**_schedule(scheme, t_end, spt, check.positive("snapshot_every", snapshot_every),
-                            check.nonnegative("tail", tail)),
-                "samples_per_transit": spt, "modes": modes, "contact": bool(contact), "initial": initial.label,
-                "initial_hash": initial.digest()}
-    every = t_end / 10.0 if every is None else check.positive("every", every)
-    run = _resume(checkpoint, scheme, settings) if checkpoint is not None else None
+    t_end, settings = prepare(scheme, t_end=t_end, transits=transits, samples_per_transit=samples_per_transit,
+                              snapshot_every=snapshot_every, tail=tail, modes=modes, contact=contact,
+                              initial=initial, progress=progress)
+    run = resume(RingRun, checkpoint, scheme, settings) if checkpoint is not None else None
     if run is None:
         run = RingRun(scheme, settings, {}, {}, _start(scheme, initial, contact), 0)
-    return _loop(run, checkpoint, every, progress, t_end)
-
-
-def _resume(path, scheme, settings):
-    path = Path(path)
-    if not path.exists():
-        return None
-    old = RingRun.from_xarray(xr.load_dataset(path))
-    if (old.scheme.params.to_dict() != scheme.params.to_dict() or settings_key(old) != settings_key(
-            RingRun(scheme, settings, {}, {}, {}, 0))):
-        raise ParameterError("checkpoint", str(path), "a checkpoint of the same run (parameters, scheme, schedule "
-                             "and initial condition must match; delete it to start afresh)")
-    return RingRun(scheme, {**old.settings, "samples_total": settings["samples_total"],
-                            "tail_samples": settings["tail_samples"]},
-                   old.series, old.snapshots, old.kernel, old.samples_done)
-
-
-def _save(run, path):
-    path = Path(path)
-    tmp = path.with_name(path.name + ".tmp")
-    run.to_xarray().to_netcdf(tmp)
-    os.replace(tmp, path)
-
-
-def _loop(run: RingRun, checkpoint, every, progress, t_end) -> RingRun:
-    s, st = run.scheme, run.settings
-    p, dt, N = s.params, s.dt, s.nodes
-    k = run.kernel
+    p, N = scheme.params, scheme.nodes
     P, Q, state, work = np.zeros(N), np.zeros(N), np.zeros(N, np.int8), np.zeros((2, N))
-    series = {key: list(v) for key, v in run.series.items()}
-    snaps = {key: list(v) for key, v in run.snapshots.items()}
-    done, total, chunk = run.samples_done, st["samples_total"], st["chunk"]
-    per_checkpoint = max(1, int(every / (chunk * dt)))
 
-    def result():
-        return RingRun(s, st, {key: np.asarray(v) for key, v in series.items()},
-                       {key: np.asarray(v) for key, v in snaps.items()},
-                       {key: v.copy() for key, v in k.items()}, done)
+    def step(k):
+        advance(k["U"], k["V"], k["vU"], k["vV"], k["aU"], k["aV"], P, Q, state, work, settings["chunk"], scheme.dt,
+                scheme.coef, p.delta, p.friction, scheme.beta2, settings["contact"])
 
-    try:
-        while done < total:
-            advance(k["U"], k["V"], k["vU"], k["vV"], k["aU"], k["aV"], P, Q, state, work, chunk, dt, s.coef,
-                    p.delta, p.friction, s.beta2, st["contact"])
-            done += 1
-            _record(s, st, done, k, P, Q, state, work, series, snaps)
-            if progress is not None:
-                progress(done * chunk * dt, t_end)
-            if checkpoint is not None and done % per_checkpoint == 0 and done < total:
-                _save(result(), checkpoint)
-    except BaseException:
-        if checkpoint is not None and done > run.samples_done:
-            _save(result(), checkpoint)
-        raise
-    out = result()
-    if checkpoint is not None:
-        _save(out, checkpoint)
-    return out
+    def record(done, k, series, snaps):
+        _record(scheme, run.settings, done, k, P, Q, state, work, series, snaps)
+
+    return loop(run, checkpoint, every, progress, t_end, step, record)
 
 
 def _record(s, st, done, k, P, Q, state, work, series, snaps):
@@ -299,7 +207,7 @@ def _record(s, st, done, k, P, Q, state, work, series, snaps):
            "modes_V": np.fft.rfft(work[1])[:st["modes"] + 1] / s.nodes}
     for key, v in rec.items():
         series.setdefault(key, []).append(v)
-    if done % st["snap_every"] == 0 or done > st["samples_total"] - st["tail_samples"] or done == st["samples_total"]:
+    if snapshot_due(done, st):
         for key, v in {"snap_t": m * s.dt, "U": work[0].copy(), "V": work[1].copy(), "Ud": w[0], "Vd": w[1],
                        "P": P.copy(), "Q": Q.copy(), "state": state.copy()}.items():
             snaps.setdefault(key, []).append(v)

@@ -21,17 +21,14 @@ from __future__ import annotations
 
 import hashlib
 from dataclasses import dataclass
-from pathlib import Path
-from typing import Callable
+from typing import Callable, ClassVar
 
 import numpy as np
-import xarray as xr
 
 from ... import _validate as check
 from ...errors import ParameterError
 from ..params import BrakeParams
-from ..ring import _save, _schedule
-from .io import dataset_to_run, run_to_dataset, settings_key
+from ..runs import RunFormat, RunRecord, loop, prepare, resume, snapshot_due
 from .scheme import STATE_NAMES, FemScheme, advance, scheme_energy
 
 __all__ = ["FemInitial", "FemRun", "integrate_fem", "perturbed_steady"]
@@ -84,8 +81,23 @@ def perturbed_steady(scheme: FemScheme, amplitude: float = 1e-3, mode: int | Non
     return FemInitial(u, np.zeros_like(u), "FE steady sliding + " + label)
 
 
+_FORMAT = RunFormat(
+    fields={"U": ("R", "radial displacement u_r at r = R"), "V": ("R", "hoop displacement u_theta at r = R"),
+            "Ud": ("R Omega", "radial velocity (u_{m+1} - u_m)/dt at r = R"),
+            "Vd": ("R Omega", "hoop velocity (u_{m+1} - u_m)/dt at r = R (shaft surface speed = 1)"),
+            "P": ("E", "contact pressure p = lambda_n / (R dtheta)"),
+            "Q": ("E", "friction shear q = lambda_t / (R dtheta), positive along the shaft motion"),
+            "gap": ("R", "gap u_r - delta at t_{m+1} (where the constraint of the step acts)")},
+    kernel=("u", "v", "a", "ref"), kernel_dim="dof", kernel_note="scheme state for resuming (polar dofs)",
+    energy_units="E R^2", energy_note="energy of the deviation from FE steady sliding (per unit length in z)",
+    node_label="contact node",
+    source="FE model of eq. [10], explicit beta2 scheme [22] with multipliers [23] (docs/theory/brake-fem.md)",
+    key_attrs=("n_theta", "n_r", "beta2", "courant"), scheme=FemScheme,
+    extra_attrs=lambda s: {"p_wave_speed": s.p_wave_speed, "mesh": s.system.mesh.describe()})
+
+
 @dataclass(frozen=True, eq=False)
-class FemRun:
+class FemRun(RunRecord):
     """Result of `integrate_fem` (times in the paper's ``t = Omega t̄``).
 
     Series: ``t``, ``energy`` (of the deviation from FE steady sliding: ``w^T M w/2 +
@@ -96,39 +108,11 @@ class FemRun:
     ``gap`` (``u_r - delta`` at ``t_{m+1}``, where the constraint of step ``m`` acts), ``state``. ``kernel``: the scheme state ``u, v, a`` (all free dofs) and ``ref`` (``u_e``).
     """
 
-    scheme: FemScheme
-    settings: dict
-    series: dict
-    snapshots: dict
-    kernel: dict
-    samples_done: int
-
-    @property
-    def params(self) -> BrakeParams:
-        return self.scheme.params
-
-    @property
-    def complete(self) -> bool:
-        return self.samples_done >= self.settings["samples_total"]
-
-    @property
-    def t(self) -> np.ndarray:
-        return self.series["t"]
-
-    @property
-    def t_end(self) -> float:
-        return float(self.samples_done * self.settings["chunk"] * self.scheme.dt)
+    FORMAT: ClassVar[RunFormat] = _FORMAT
 
     @property
     def transits(self) -> float:
         return self.t_end / self.scheme.transit_time
-
-    def __getattr__(self, name):
-        for store in ("series", "snapshots"):
-            data = self.__dict__.get(store, {})
-            if name in data:
-                return data[name]
-        raise AttributeError(name)
 
     def to_dict(self) -> dict:
         """Parameters, mesh, scheme, schedule and progress (no arrays)."""
@@ -136,14 +120,6 @@ class FemRun:
         return {"params": self.params.to_dict(), **s.key(), "dt": s.dt, "transit_time": s.transit_time,
                 "transits": self.transits, "samples_done": self.samples_done, "complete": self.complete,
                 **{k: v for k, v in self.settings.items() if k != "initial_hash"}}
-
-    def to_xarray(self) -> xr.Dataset:
-        """Snapshots ``(snapshot, node)``, series ``(sample[, kind | mode])``, units in attrs."""
-        return run_to_dataset(self)
-
-    @classmethod
-    def from_xarray(cls, ds: xr.Dataset) -> "FemRun":
-        return dataset_to_run(cls, ds)
 
 
 def _start(scheme: FemScheme, ini: FemInitial, contact: bool) -> dict:
@@ -194,75 +170,26 @@ def integrate_fem(params: BrakeParams, n_theta: int = 256, n_r: int = 16, t_end:
         ``progress(t, t_end)`` after every sample.
     """
     scheme = FemScheme(params, n_theta, n_r, beta2, courant)
-    if (t_end is None) == (transits is None):
-        raise ParameterError("t_end", t_end, "given (> 0), or else transits, but not both")
-    t_end = check.positive("t_end", t_end) if transits is None else \
-        check.positive("transits", transits) * scheme.transit_time
-    spt = check.positive_int("samples_per_transit", samples_per_transit)
-    if spt < 4:
-        raise ParameterError("samples_per_transit", spt, "an integer >= 4")
-    modes = min(check.positive_int("modes", modes), scheme.n_theta // 2)
     initial = perturbed_steady(scheme) if initial is None else initial
     if not isinstance(initial, FemInitial) or initial.u.size != scheme.system.n_free:
         raise ParameterError("initial", initial, f"a FemInitial with {scheme.system.n_free} dofs")
-    if progress is not None and not callable(progress):
-        raise ParameterError("progress", progress, "a callable progress(t, t_end) or None")
-    settings = {**_schedule(scheme, t_end, spt, check.positive("snapshot_every", snapshot_every),
-                            check.nonnegative("tail", tail)),
-                "samples_per_transit": spt, "modes": modes, "contact": bool(contact), "initial": initial.label,
-                "initial_hash": initial.digest()}
-    every = t_end / 10.0 if every is None else check.positive("every", every)
-    run = _resume(checkpoint, scheme, settings) if checkpoint is not None else None
+    t_end, settings = prepare(scheme, t_end=t_end, transits=transits, samples_per_transit=samples_per_transit,
+                              snapshot_every=snapshot_every, tail=tail, modes=modes, contact=contact,
+                              initial=initial, progress=progress)
+    run = resume(FemRun, checkpoint, scheme, settings) if checkpoint is not None else None
     if run is None:
         run = FemRun(scheme, settings, {}, {}, _start(scheme, initial, contact), 0)
-    return _loop(run, checkpoint, every, progress, t_end)
+    p, N = scheme.params, scheme.n_theta
+    lam_n, lam_t, state, work = np.zeros(N), np.zeros(N), np.zeros(N, np.int8), np.zeros_like(run.kernel["u"])
 
+    def step(k):
+        advance(k["u"], k["v"], k["a"], lam_n, lam_t, state, work, settings["chunk"], scheme.dt, scheme.operator,
+                p.delta, p.friction, scheme.beta2, settings["contact"])
 
-def _resume(path, scheme, settings):
-    path = Path(path)
-    if not path.exists():
-        return None
-    old = FemRun.from_xarray(xr.load_dataset(path))
-    if old.params.to_dict() != scheme.params.to_dict() or \
-            settings_key(old) != settings_key(FemRun(scheme, settings, {}, {}, {}, 0)):
-        raise ParameterError("checkpoint", str(path), "a checkpoint of the same run (parameters, mesh, scheme, "
-                             "schedule and initial condition must match; delete it to start afresh)")
-    return FemRun(scheme, {**old.settings, "samples_total": settings["samples_total"],
-                           "tail_samples": settings["tail_samples"]},
-                  old.series, old.snapshots, old.kernel, old.samples_done)
+    def record(done, k, series, snaps):
+        _record(scheme, run.settings, done, k, lam_n, lam_t, state, work, series, snaps)
 
-
-def _loop(run: FemRun, checkpoint, every, progress, t_end) -> FemRun:
-    s, st, k = run.scheme, run.settings, run.kernel
-    p, dt, N = s.params, s.dt, s.n_theta
-    lam_n, lam_t, state, work = np.zeros(N), np.zeros(N), np.zeros(N, np.int8), np.zeros_like(k["u"])
-    series = {key: list(v) for key, v in run.series.items()}
-    snaps = {key: list(v) for key, v in run.snapshots.items()}
-    done, total, chunk = run.samples_done, st["samples_total"], st["chunk"]
-    per_checkpoint = max(1, int(every / (chunk * dt)))
-
-    def result():
-        return FemRun(s, st, {key: np.asarray(v) for key, v in series.items()},
-                      {key: np.asarray(v) for key, v in snaps.items()}, {key: v.copy() for key, v in k.items()}, done)
-
-    try:
-        while done < total:
-            advance(k["u"], k["v"], k["a"], lam_n, lam_t, state, work, chunk, dt, s.operator, p.delta, p.friction,
-                    s.beta2, st["contact"])
-            done += 1
-            _record(s, st, done, k, lam_n, lam_t, state, work, series, snaps)
-            if progress is not None:
-                progress(done * chunk * dt, t_end)
-            if checkpoint is not None and done % per_checkpoint == 0 and done < total:
-                _save(result(), checkpoint)
-    except BaseException:
-        if checkpoint is not None and done > run.samples_done:
-            _save(result(), checkpoint)
-        raise
-    out = result()
-    if checkpoint is not None:
-        _save(out, checkpoint)
-    return out
+    return loop(run, checkpoint, every, progress, t_end, step, record)
 
 
 def _record(s, st, done, k, lam_n, lam_t, state, work, series, snaps):
@@ -274,7 +201,7 @@ def _record(s, st, done, k, lam_n, lam_t, state, work, series, snaps):
            "modes_U": np.fft.rfft(U)[:st["modes"] + 1] / N, "modes_V": np.fft.rfft(V)[:st["modes"] + 1] / N}
     for key, v in rec.items():
         series.setdefault(key, []).append(v)
-    if done % st["snap_every"] == 0 or done > st["samples_total"] - st["tail_samples"] or done == st["samples_total"]:
+    if snapshot_due(done, st):
         scale = s.mass[0] / s.system.mesh.h_theta  # reaction per unit mass -> traction (units of E)
         for key, v in {"snap_t": m * s.dt, "U": U.copy(), "V": V.copy(), "Ud": (k["u"][0:2 * N:2] - U) / s.dt,
                        "Vd": (k["u"][1:2 * N:2] - V) / s.dt, "P": scale * lam_n, "Q": scale * lam_t,
