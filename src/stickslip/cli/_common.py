@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import math
 from pathlib import Path
@@ -54,5 +55,11 @@ def output_path(name: str, path: Path | None, suffix: str) -> Path | None:
     return path
 
 
-def write_netcdf(ds, path: Path) -> None:
-    ds.to_netcdf(path)
+@contextlib.contextmanager
+def progress_bar(label: str):
+    """A transient rich progress bar; yields the library's ``progress(done, total)`` callback."""
+    from rich.progress import Progress
+
+    with Progress(transient=True) as bar:
+        task = bar.add_task(label, total=None)
+        yield lambda done, total: bar.update(task, completed=done, total=total)

@@ -8,7 +8,7 @@ from typing import Annotated, Optional
 import typer
 
 from ..errors import ParameterError
-from ._common import emit, output_path
+from ._common import emit, output_path, progress_bar
 
 app = typer.Typer(no_args_is_help=True, help="Elastic annulus on a rotating shaft: reduced model (paper section 3).")
 
@@ -143,21 +143,23 @@ def integrate_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta
                   out: Annotated[Optional[Path], typer.Option(help="Write the run to this netCDF file (.nc).")] = None,
                   json: Json = False):
     """Time integration of [12] on the ring from perturbed steady sliding; classifies the limit regime."""
-    from rich.progress import Progress
-
     from ..brake import classify, integrate, perturbed_steady
 
     checkpoint, out = output_path("--checkpoint", checkpoint, ".nc"), output_path("--out", out, ".nc")
     p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
     initial = perturbed_steady(p, nodes, amplitude=amplitude, mode=mode)
-    with Progress(transient=True) as bar:
-        task = bar.add_task("integrating", total=1.0)
+    with progress_bar("integrating") as tick:
         run = integrate(p, nodes, transits=transits, beta2=beta2, initial=initial, checkpoint=checkpoint,
-                        progress=lambda t, t_end: bar.update(task, completed=t / t_end))
+                        progress=tick)
+    _report_run(run, classify, out, json, "limit regime")
+
+
+def _report_run(run, classify, out, json, title) -> None:
+    """Write a finished ring or FE run if asked, and print its classified limit regime."""
     if out:
         run.to_xarray().to_netcdf(out)
-    emit(classify(run).to_dict(), json, "limit regime")
+    emit(classify(run).to_dict(), json, title)
 
 
 REGIME_NAMES = ["stick-slip", "stick-slip-separation", "stick-separation", "stick-slip-reverse-slip",
@@ -226,8 +228,6 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (directory ending
             json: Json = False):
     """Regime map over friction and mismatch (resumable, parallel): travelling waves or ring limit regimes."""
     import numpy as np
-    from rich.progress import Progress
-
     from ..brake.regimes import REGIME_CODES, ring_regime_map, wave_regime_map
 
     if out.suffix != ".zarr":
@@ -246,9 +246,7 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (directory ending
         return np.logspace(np.log10(lo), np.log10(hi), n) if log else np.linspace(lo, hi, n)
 
     f, d = axis("--frictions", frictions, False), axis("--mismatches", mismatches, True)
-    with Progress(transient=True) as bar:
-        task = bar.add_task(f"{kind} map", total=None)
-        tick = lambda done, total: bar.update(task, completed=done, total=total)  # noqa: E731
+    with progress_bar(f"{kind} map") as tick:
         if kind == "waves":
             ds = wave_regime_map(f, d, out, omega=omega, modes=modes, workers=workers, progress=tick)
         else:
@@ -271,18 +269,13 @@ def fem_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = Non
             out: Annotated[Optional[Path], typer.Option(help="Write the run to this netCDF file (.nc).")] = None,
             json: Json = False):
     """Finite element model of section 3.1 (scikit-fem): run to the limit regime and classify it."""
-    from rich.progress import Progress
-
     from ..brake.fem import FemScheme, classify_fem, integrate_fem, perturbed_steady
 
     checkpoint, out = output_path("--checkpoint", checkpoint, ".nc"), output_path("--out", out, ".nc")
     p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
     initial = perturbed_steady(FemScheme(p, n_theta, n_r, beta2), mode=mode)
-    with Progress(transient=True) as bar:
-        task = bar.add_task("finite elements", total=1.0)
+    with progress_bar("finite elements") as tick:
         run = integrate_fem(p, n_theta, n_r, transits=transits, beta2=beta2, initial=initial, checkpoint=checkpoint,
-                            progress=lambda t, t_end: bar.update(task, completed=t / t_end))
-    if out:
-        run.to_xarray().to_netcdf(out)
-    emit(classify_fem(run).to_dict(), json, "FE limit regime")
+                            progress=tick)
+    _report_run(run, classify_fem, out, json, "FE limit regime")

@@ -11,7 +11,7 @@ import typer
 from ..friction import make_law
 from ..oscillator import (Oscillator, continue_cycle, continue_from_hopf, equilibrium_stability, hopf_points,
                           limit_cycle, simulate)
-from ._common import emit, output_path
+from ._common import emit, output_path, progress_bar
 
 app = typer.Typer(no_args_is_help=True, help="The 1-DOF friction oscillator m x'' + c x' + k x = F (paper section 2).")
 
@@ -181,8 +181,6 @@ def map_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: 
             workers: Annotated[Optional[int], typer.Option(help="Worker processes (default: all cores).")] = None,
             json: Json = False, plot: Plot = None):
     """Regime map over two parameters (steady sliding, stick-slip, bistable, pure slip): resumable, parallel."""
-    from rich.progress import Progress
-
     from ..errors import ParameterError
     from ..oscillator.regimes import REGIMES, regime_map
 
@@ -191,10 +189,8 @@ def map_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: 
     plot = output_path("--plot", plot, ".png")
     osc = _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping)
     axes = dict((_axis("--x", x), _axis("--y", y)))
-    with Progress(transient=True) as bar:
-        task = bar.add_task("regime map", total=None)
-        ds = regime_map(osc, axes, out, workers=workers,
-                        progress=lambda done, total: bar.update(task, completed=done, total=total))
+    with progress_bar("regime map") as tick:
+        ds = regime_map(osc, axes, out, workers=workers, progress=tick)
     counts = {REGIMES[k]: int((ds["regime"] == k).sum()) for k in REGIMES}
     emit({"store": str(out), "axes": {k: [min(v), max(v), len(v)] for k, v in axes.items()}, "counts": counts},
          json, "regime map")
