@@ -21,8 +21,8 @@ import time
 import numpy as np
 
 from stickslip.brake import BrakeParams
-from stickslip.brake.ring import integrate, perturbed_steady
-from stickslip.brake.ring_scheme import advance, bare
+from stickslip.brake.ring.integrate import integrate, perturbed_steady
+from stickslip.brake.ring.scheme import advance, bare
 
 
 def numpy_bare(s, k, nsteps):

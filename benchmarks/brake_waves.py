@@ -14,11 +14,11 @@ import time
 import numpy as np
 
 from stickslip.brake import BrakeParams
-from stickslip.brake.wave_boundsco import residual
-from stickslip.brake.wave_checks import integrate_wave
-from stickslip.brake.wave_continuation import continue_waves
-from stickslip.brake.wave_zones import Scaling
-from stickslip.brake.waves import travelling_wave
+from stickslip.brake.waves.boundsco import residual
+from stickslip.brake.waves.checks import integrate_wave
+from stickslip.brake.waves.continuation import continue_waves
+from stickslip.brake.waves.zones import Scaling
+from stickslip.brake.waves.solve import travelling_wave
 
 # the three regimes of the paper's section 3.1 (default steel ring), and the Fig. 12 wave
 CASES = [("4-mode, f = 0.2, d = 0.4 mm, 1 rad/s", (1.0, 4e-4, 0.2), 4),

@@ -60,8 +60,8 @@ ERRATA: list[Erratum] = [
         "As printed p_e < 0 for every ξ > 1 (the shaft would pull on the ring), against p ≥ 0 in [10]. A sympy "
         "Lamé solution of [10] (static, axisymmetric, u(ξ) = v(ξ) = 0, u(1) = δ, q = f p) gives −σ_rr(1) equal "
         "to the corrected formula; the printed value is exactly −p_e.",
-        ("tests/brake/test_brake_steady.py::test_contact_pressure_is_positive_and_printed_eq11_has_the_wrong_sign",
-         "tests/brake/test_brake_steady.py::test_steady_state_is_the_lame_solution"),
+        ("tests/brake/reduced/test_steady.py::test_contact_pressure_is_positive_and_printed_eq11_has_the_wrong_sign",
+         "tests/brake/reduced/test_steady.py::test_steady_state_is_the_lame_solution"),
     ),
     Erratum(
         "B2", "Section 3, eq. [11]: μ printed for Poisson's ratio ν",
@@ -69,7 +69,7 @@ ERRATA: list[Erratum] = [
         "ν in both places: v_e = δ f X(r) (1 + 1/(ξ²(1 − 2ν)))",
         "In [10] μ is Lamé's shear modulus (a stress), so 1 + μ and 1 − 2μ are dimensionally inconsistent. With ν, "
         "v_e matches the sympy Lamé solution exactly and equals δ f g/h of [16].",
-        ("tests/brake/test_brake_steady.py::test_reduced_steady_state_eq16_agrees_with_lame",),
+        ("tests/brake/reduced/test_steady.py::test_reduced_steady_state_eq16_agrees_with_lame",),
     ),
     Erratum(
         "B3", "Section 3, eq. [12]: second derivatives swapped",
@@ -78,9 +78,9 @@ ERRATA: list[Erratum] = [
         "A sympy Galerkin projection of plane-strain elastodynamics on u = X U, v = X V: the radial equation has "
         "−b U'' (shear modulus), the tangential one −a V'' (P-modulus); the coupling −DV'/+DU' is antisymmetric, "
         "as a symmetric stiffness operator requires, with D of [13] (all of [13] confirmed to 1e-10).",
-        ("tests/brake/test_brake_coefficients.py::test_printed_eq12_has_its_second_derivatives_swapped",
-         "tests/brake/test_brake_coefficients.py::test_galerkin_equations_have_the_structure_of_eq15",
-         "tests/brake/test_brake_coefficients.py::test_code_and_printed_eq13_match_the_galerkin_projection"),
+        ("tests/brake/reduced/test_coefficients.py::test_printed_eq12_has_its_second_derivatives_swapped",
+         "tests/brake/reduced/test_coefficients.py::test_galerkin_equations_have_the_structure_of_eq15",
+         "tests/brake/reduced/test_coefficients.py::test_code_and_printed_eq13_match_the_galerkin_projection"),
     ),
     Erratum(
         "B4", "Section 3, eqs. [12], [16]: P, Q and P_e never defined; typography",
@@ -88,8 +88,8 @@ ERRATA: list[Erratum] = [
         "P = p/M, Q = q/M with the modal mass M = γ∫X² r dr = γB/(ξ² − 1); P_e = gδ, Q_e = f g δ; P(U − δ) = 0; P ≥ 0",
         "The Galerkin projection gives M Ü + … = p (X(1) = 1); dividing by M gives the coefficients of [13] exactly, "
         "and M P_e equals the Lamé p_e of B1.",
-        ("tests/brake/test_brake_coefficients.py::test_modal_mass_is_gamma_B_over_xi2_minus_1",
-         "tests/brake/test_brake_steady.py::test_reduced_steady_state_eq16_agrees_with_lame"),
+        ("tests/brake/reduced/test_coefficients.py::test_modal_mass_is_gamma_B_over_xi2_minus_1",
+         "tests/brake/reduced/test_steady.py::test_reduced_steady_state_eq16_agrees_with_lame"),
     ),
     Erratum(
         "B5", "Section 3.1, eqs. [22]-[23]: the explicit beta-scheme and its multipliers",
@@ -102,8 +102,8 @@ ERRATA: list[Erratum] = [
         "first line of [22] exactly. The ring and FE integrators built on this reading converge at order 2 (β2 = 1/2) "
         "and 1 (β2 = 0.9) in Δt, are stable up to the CFL limit they predict, and with the (β2 + 1/2) factor the "
         "contact nodes land exactly on u_r = δ at every step for β2 = 0.9 as for 1/2.",
-        ("tests/brake/test_ring_scheme.py::test_observed_order_in_time",
-         "tests/brake/test_ring_scheme.py::test_stability_limit_is_the_cfl_condition",
+        ("tests/brake/ring/test_scheme.py::test_observed_order_in_time",
+         "tests/brake/ring/test_scheme.py::test_stability_limit_is_the_cfl_condition",
          "tests/brake/fem/test_fem_contact_energy.py::test_contact_conditions_at_every_node_and_step"),
     ),
     Erratum(
@@ -167,14 +167,14 @@ ERRATA: list[Erratum] = [
         '`|Q| ≤ fP, Q(1 − V̇) − fP|1 − V̇| = 0` in [15], whose unknowns are `U(Φ), V(Φ)`.',
         "for the wave `V(θ − ct)`, `V̇ = −cV'`, so the slip velocity is `1 − V̇ = 1 + cV'`: stick [17] is `V' = −1/c`, positive slip [18] is `1 + cV' > 0`, reverse slip [19] is `1 + cV' < 0`. The equations of motion in [15] are right (`U̇ = −cU'` gives `(c² − b)U''` and `(c² − a)V''`).",
         'substitution; the closed forms built on it agree with `solve_ivp` of [15] and satisfy the energy balance to `1e−15`.',
-        ('tests/brake/test_waves.py::test_inequalities_hold_on_a_fine_grid_in_paper_units', 'tests/brake/test_waves.py::test_zone_closed_forms_agree_with_solve_ivp', ),
+        ('tests/brake/waves/test_solve.py::test_inequalities_hold_on_a_fine_grid_in_paper_units', 'tests/brake/waves/test_solve.py::test_zone_closed_forms_agree_with_solve_ivp', ),
     ),
     Erratum(
         'W2', '§3.2: the switching conditions at the end of separation are incomplete',
         '"`P = 0` at the start of the separation zone and `U = δ` and `U\'` jumps back to 0 at the end".',
         "in time order (which is the `φ` order only when `c < 0`) — at lift-off `U = δ`, `U' = 0`, `P = 0`; at landing `U = δ`, `U'` jumps to 0 with the normal impulse `Π = (c² − b)[U']_φ ≥ 0`, **and `V'` jumps too**: `(c² − a)[V']_φ = Q_Π`, `|Q_Π| ≤ fΠ` (Coulomb's law for impulses). The impact either stops the sliding (then stick, or slip at once if `|hV| > fP`) or leaves it in its direction with `Q_Π = ±fΠ`. Without the tangential jump the multiple-shooting system is not closed.",
         'integrating [15] across the landing point; the impulses make the energy balance (shaft work = sliding + impact dissipation) close to `1e−15`, with a positive impact loss; a `solve_ivp` integration that applies this impact law closes after one period to `1e−11`.',
-        ('tests/brake/test_waves.py::test_energy_balance_over_a_period', 'tests/brake/test_waves.py::test_closed_forms_agree_with_solve_ivp_across_the_zones', ),
+        ('tests/brake/waves/test_solve.py::test_energy_balance_over_a_period', 'tests/brake/waves/test_solve.py::test_closed_forms_agree_with_solve_ivp_across_the_zones', ),
     ),
     Erratum(
         'W3', 'Figure 6: caption copied from Figure 5',
@@ -188,14 +188,14 @@ ERRATA: list[Erratum] = [
         'the text says Figure 5 shows stick-slip phase diagrams "for different normal contact pressure"; the caption says "for different angular velocity Ω".',
         "in the reduced model the stick-slip waves do not depend on the mismatch (hence on the pressure `P_e = gδ`) except through the shift `V_e = fgδ/h` of `V`: changing the pressure only translates the `(V, V')` diagram. Distinct diagrams come from `Ω`, and they are homothetic (`cΩ` fixed, amplitudes ∝ `Ω`). The caption is the consistent reading.",
         'with `V = V_e + W` the slip equation and the stick-exit condition are free of `δ` (`docs/theory/brake-waves.md` §7); numerically `c` is constant to `1e−12` along the stick-slip part of a `δ`-family.',
-        ('tests/brake/test_waves.py::test_stick_slip_waves_do_not_depend_on_the_mismatch', 'tests/brake/test_waves_continuation.py::test_stick_slip_part_has_a_constant_speed', 'tests/brake/test_waves_figures.py::test_figure_5_waves_are_self_similar_in_omega', ),
+        ('tests/brake/waves/test_solve.py::test_stick_slip_waves_do_not_depend_on_the_mismatch', 'tests/brake/waves/test_continuation.py::test_stick_slip_part_has_a_constant_speed', 'tests/brake/test_waves_figures.py::test_figure_5_waves_are_self_similar_in_omega', ),
     ),
     Erratum(
         'W5', '§3.1 "stick-separation" (Figure 8) has no counterpart in the reduced model [12]',
         'a stick-separation wave with 2 modes (`f = 2`, `δ = 0.004`, `Ω = 80`) from the finite-element model; §3 lists the reduced model as able to "construct different families of stick-slip and stick-slip-separation waves".',
         "in the reduced model the stick pressure is constant, `P = gδ + D/c`, so lift-off directly from stick (which needs `P → 0`) would need `P = 0` in the whole stick zone. There is no stick-separation travelling wave of [15]; a slip zone always precedes lift-off. At the paper's parameters the reduced model gives a stick-slip wave and near-sonic stick-slip-separation waves whose slip zone is 0.4–3.5 % of the period.",
         '(see the tests)',
-        ('tests/brake/test_waves.py::test_stick_separation_waves_do_not_exist', ),
+        ('tests/brake/waves/test_solve.py::test_stick_separation_waves_do_not_exist', ),
     ),
 ]
 

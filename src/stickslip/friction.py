@@ -21,7 +21,7 @@ from typing import Callable, ClassVar
 
 import numpy as np
 
-from . import _validate as check
+from . import validation as check
 from .errors import ParameterError
 
 __all__ = ["FrictionLaw", "Coulomb", "LinearWeakening", "Stribeck", "UserLaw", "law_names", "make_law"]

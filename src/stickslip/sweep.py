@@ -23,7 +23,7 @@ import numpy as np
 import xarray as xr
 import zarr
 
-from . import _validate as check
+from . import validation as check
 from .errors import ParameterError
 
 __all__ = ["run_sweep"]

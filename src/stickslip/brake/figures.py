@@ -11,12 +11,12 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from .. import _validate as check
+from .. import validation as check
 from ..errors import ParameterError
 from ..figures import Check
-from .coefficients import coupling, elastic_moduli, neutral_radius_ratio, shape_integrals
-from .params import BrakeParams
-from .stability import _modes, growth_rate_limit, growth_rates
+from .reduced.coefficients import coupling, elastic_moduli, neutral_radius_ratio, shape_integrals
+from .reduced.params import BrakeParams
+from .reduced.flutter import mode_numbers, growth_rate_limit, growth_rates
 
 __all__ = ["CASES", "stability_figure_data", "plot_stability", "check_stability", "grid_growth_rates"]
 
@@ -34,7 +34,7 @@ def grid_growth_rates(params: BrakeParams, modes, nodes: int = 33, penalty: floa
     Returns the largest real part per requested mode. Solved at ``gamma = 1`` and scaled
     by ``1/sqrt(gamma)`` (every coefficient is proportional to ``1/gamma``) for conditioning.
     """
-    modes = _modes(modes)
+    modes = mode_numbers(modes)
     nodes, penalty = check.positive_int("nodes", nodes), check.positive("penalty", penalty)
     if nodes % 2 == 0 or nodes <= 2 * modes.max():
         raise ParameterError("nodes", nodes, f"odd and > 2 max(modes) = {2 * modes.max()}")

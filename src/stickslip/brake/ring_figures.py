@@ -16,12 +16,12 @@ import numpy as np
 import xarray as xr
 
 from ..figures import Check
-from .params import BrakeParams
-from .ring import integrate, perturbed_steady
-from .ring_classify import classify
+from .reduced.params import BrakeParams
+from .ring.integrate import integrate, perturbed_steady
+from .ring.classify import classify
 from .ring_plots import plot_initial_condition, plot_regimes
-from .ring_scheme import STATE_NAMES, RingScheme
-from .stability import growth_rates
+from .ring.scheme import STATE_NAMES, RingScheme
+from .reduced.flutter import growth_rates
 
 __all__ = ["CASES", "PAPER_REGIMES", "regimes_data", "initial_condition_data", "plot_regimes",
            "plot_initial_condition", "check_regimes", "check_initial_condition", "separation_number"]

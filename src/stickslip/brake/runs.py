@@ -19,10 +19,10 @@ from typing import Callable, ClassVar
 import numpy as np
 import xarray as xr
 
-from .. import _validate as check
+from .. import validation as check
 from ..errors import ParameterError
-from .params import BrakeParams, PhysicalParams
-from .ring_scheme import STATE_NAMES
+from .reduced.params import BrakeParams, PhysicalParams
+from .ring.scheme import STATE_NAMES
 
 __all__ = ["RunFormat", "RunRecord", "schedule", "prepare", "save", "resume", "loop", "run_to_dataset",
            "dataset_to_run", "settings_key"]

@@ -27,13 +27,13 @@ import numpy as np
 import xarray as xr
 
 from ..figures import Check
-from .params import BrakeParams
-from .wave_checks import energy_balance, integrate_wave
-from .wave_continuation import continue_waves
-from .wave_shoot import stick_exit_orbit
-from .wave_zones import Scaling, ZoneFlows
+from .reduced.params import BrakeParams
+from .waves.checks import energy_balance, integrate_wave
+from .waves.continuation import continue_waves
+from .waves.shoot import stick_exit_orbit
+from .waves.zones import Scaling, ZoneFlows
 from .wave_plots import plot_fig5, plot_fig6, plot_fig11, plot_fig12
-from .waves import travelling_wave
+from .waves.solve import travelling_wave
 
 __all__ = ["fig5_data", "fig6_data", "fig11_data", "fig12_data", "plot_fig5", "plot_fig6", "plot_fig11",
            "plot_fig12", "check_fig5", "check_fig6", "check_fig11", "check_fig12", "FIG5", "FIG6", "FIG11",

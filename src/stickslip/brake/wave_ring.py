@@ -16,12 +16,12 @@ import numpy as np
 import xarray as xr
 
 from ..figures import Check
-from .params import BrakeParams
-from .ring import InitialCondition, integrate, perturbed_steady
-from .ring_classify import classify
+from .reduced.params import BrakeParams
+from .ring.integrate import InitialCondition, integrate, perturbed_steady
+from .ring.classify import classify
 from .wave_figures import FIG5, FIG6, FIG12
-from .wave_stability import wave_persistence
-from .waves import find_waves, travelling_wave
+from .waves.stability import wave_persistence
+from .waves.solve import find_waves, travelling_wave
 
 __all__ = ["initial_from_wave", "comparison_data", "plot_comparison", "check_comparison"]
 

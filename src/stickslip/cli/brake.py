@@ -228,7 +228,7 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (directory ending
             json: Json = False):
     """Regime map over friction and mismatch (resumable, parallel): travelling waves or ring limit regimes."""
     import numpy as np
-    from ..brake.regimes import REGIME_CODES, ring_regime_map, wave_regime_map
+    from ..brake.maps import REGIME_CODES, ring_regime_map, wave_regime_map
 
     if out.suffix != ".zarr":
         raise ParameterError("--out", str(out), "a directory name ending in .zarr")

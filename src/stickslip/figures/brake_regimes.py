@@ -9,7 +9,7 @@ import numpy as np
 import xarray as xr
 
 from .. import plotting
-from ..brake.regimes import REGIME_CODES, ring_regime_map, wave_regime_map
+from ..brake.maps import REGIME_CODES, ring_regime_map, wave_regime_map
 from . import Check, FigureSpec, register
 
 OMEGA, MODES = 50.0, 4

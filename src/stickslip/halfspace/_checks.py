@@ -1,4 +1,4 @@
-"""Validators for arrays of parameters (the scalar ones live in `stickslip._validate`)."""
+"""Validators for arrays of parameters (the scalar ones live in `stickslip.validation`)."""
 
 from __future__ import annotations
 

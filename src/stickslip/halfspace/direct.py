@@ -25,7 +25,7 @@ import numpy as np
 import xarray as xr
 from scipy.optimize import brentq
 
-from .. import _validate as check
+from .. import validation as check
 from ..errors import NoSolutionError, ParameterError
 from .inverse import _k
 from .waves import radok

@@ -39,7 +39,7 @@ import numpy as np
 import xarray as xr
 from scipy.special import roots_jacobi
 
-from .. import _validate as check
+from .. import validation as check
 from ..errors import ParameterError
 from ._checks import b_array, real_array
 from .inverse import inverse_problem

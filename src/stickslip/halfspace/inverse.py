@@ -33,7 +33,7 @@ from dataclasses import dataclass
 import numpy as np
 import xarray as xr
 
-from .. import _validate as check
+from .. import validation as check
 from ..errors import NoSolutionError, ParameterError
 from ._checks import b_array
 from .waves import Radok, radok

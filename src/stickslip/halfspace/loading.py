@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .. import _validate as check
+from .. import validation as check
 from ..errors import ParameterError
 from .waves import _nu
 

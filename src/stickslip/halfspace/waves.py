@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-from .. import _validate as check
+from .. import validation as check
 from ._checks import cbar_array
 
 __all__ = ["Material", "wave_speed_ratio", "rayleigh_speed_ratio", "Radok", "radok"]

@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import xarray as xr
 
-from .. import _validate as check
+from .. import validation as check
 from ..errors import NoSolutionError
 from .cycle import LimitCycle, characterise, limit_cycle, return_map, solve_section
 from .model import Oscillator

@@ -17,7 +17,7 @@ import numpy as np
 import xarray as xr
 from scipy.optimize import minimize_scalar
 
-from .. import _validate as check
+from .. import validation as check
 from ..errors import NoSolutionError
 from .model import Mode, Oscillator
 from .simulate import Engine, Trajectory

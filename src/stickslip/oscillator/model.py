@@ -17,7 +17,7 @@ from enum import IntEnum
 
 import numpy as np
 
-from .. import _validate as check
+from .. import validation as check
 from ..errors import ParameterError
 from ..friction import FrictionLaw
 

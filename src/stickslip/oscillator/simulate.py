@@ -20,7 +20,7 @@ from typing import Callable
 import numpy as np
 import xarray as xr
 
-from .. import _validate as check
+from .. import validation as check
 from ..errors import ParameterError
 from ._kernel import run_affine
 from .flows import AffineSlip, NumericSlip

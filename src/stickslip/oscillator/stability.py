@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-from .. import _validate as check
+from .. import validation as check
 from .model import Oscillator
 
 __all__ = ["EquilibriumStability", "HopfPoint", "equilibrium_stability", "hopf_points", "damping_coefficients"]

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from stickslip.brake import growth_rates
-from stickslip.brake.coefficients import elastic_moduli
+from stickslip.brake.reduced.coefficients import elastic_moduli
 from stickslip.brake.fem import (FemScheme, annulus_mesh, assemble, fem_growth_rates, integrate_fem,
                                  perturbed_steady, slip_wave_rate)
 from stickslip.errors import ParameterError

@@ -8,11 +8,11 @@ from scipy.optimize import brentq
 from scipy.special import jv, jvp, yv, yvp
 
 from stickslip.brake import BrakeParams
-from stickslip.brake.coefficients import elastic_moduli
+from stickslip.brake.reduced.coefficients import elastic_moduli
 from stickslip.brake.fem import (FemScheme, annulus_frequencies, annulus_mesh, assemble, fem_frequencies,
                                  fourier_block, max_frequency)
 from stickslip.brake.fem.scheme import bare
-from stickslip.brake.ring_scheme import RingScheme
+from stickslip.brake.ring.scheme import RingScheme
 from stickslip.errors import ParameterError
 
 from .helpers import orders

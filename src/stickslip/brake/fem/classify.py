@@ -19,8 +19,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import ParameterError
-from ..ring_classify import RegimeResult, _speed, classify, count_zones
-from ..ring_scheme import SEPARATION, STICK
+from ..ring.classify import RegimeResult, _speed, classify, count_zones
+from ..ring.scheme import SEPARATION, STICK
 
 __all__ = ["FemRegime", "classify_fem", "contact_residuals"]
 

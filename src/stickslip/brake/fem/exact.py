@@ -27,10 +27,9 @@ import numpy as np
 from scipy.optimize import brentq
 from scipy.special import jv, jvp, yv, yvp
 
-from ... import _validate as check
+from ... import validation as check
 from ...errors import ParameterError
-from ..coefficients import elastic_moduli
-from ..params import _poisson, _radius_ratio
+from ..reduced.coefficients import elastic_moduli
 
 __all__ = ["characteristic_matrix", "annulus_frequencies"]
 
@@ -49,7 +48,7 @@ def characteristic_matrix(w, n: int, xi: float, nu: float) -> np.ndarray:
     """The 4x4 boundary matrix at ``w = omega sqrt(gamma) > 0`` (vectorised: shape ``w.shape + (4, 4)``);
     rows ``u_r(xi), u_theta(xi), sigma_rr(1), sigma_rtheta(1)``, columns ``J_n, Y_n`` of ``phi``
     then of ``psi``; each column scaled by its largest entry (the roots are unchanged)."""
-    xi, nu = _radius_ratio(xi), _poisson("nu", nu)
+    xi, nu = check.radius_ratio("xi", xi), check.poisson_ratio("nu", nu)
     if isinstance(n, bool) or int(n) != n or n < 0:
         raise ParameterError("n", n, "an integer >= 0")
     w = np.asarray(w, dtype=float)
@@ -97,7 +96,7 @@ def annulus_frequencies(xi: float, nu: float, n: int, count: int = 2, w_max: flo
         Scan step for sign changes of the determinant, relative to ``sqrt(b̃)``;
         each bracket is then refined by Brent's method to 1e-14.
     """
-    xi, nu = _radius_ratio(xi), _poisson("nu", nu)
+    xi, nu = check.radius_ratio("xi", xi), check.poisson_ratio("nu", nu)
     if isinstance(n, bool) or int(n) != n or n < 0:
         raise ParameterError("n", n, "an integer >= 0")
     n, count = int(n), check.positive_int("count", count)

@@ -24,9 +24,8 @@ from skfem import Basis, BilinearForm, ElementQuad1, ElementVector, MeshQuad, as
 from skfem.helpers import dot
 from skfem.models.elasticity import lame_parameters, linear_elasticity
 
-from ... import _validate as check
+from ... import validation as check
 from ...errors import ParameterError
-from ..params import _poisson, _radius_ratio
 
 __all__ = ["AnnulusMesh", "FemSystem", "annulus_mesh", "assemble"]
 
@@ -75,7 +74,7 @@ def annulus_mesh(n_theta: int = 256, n_r: int = 16, xi: float = 1.5) -> AnnulusM
     xi : float
         ``R*/R`` > 1.
     """
-    n_theta, n_r, xi = check.positive_int("n_theta", n_theta), check.positive_int("n_r", n_r), _radius_ratio(xi)
+    n_theta, n_r, xi = check.positive_int("n_theta", n_theta), check.positive_int("n_r", n_r), check.radius_ratio("xi", xi)
     if n_theta < 16 or n_theta % 8:
         raise ParameterError("n_theta", n_theta, "a multiple of 8, >= 16")
     r = np.linspace(1.0, xi, n_r + 1)
@@ -181,7 +180,7 @@ def assemble(mesh: AnnulusMesh, nu: float = 0.3) -> FemSystem:
     """
     if not isinstance(mesh, AnnulusMesh):
         raise ParameterError("mesh", mesh, "an AnnulusMesh (see annulus_mesh)")
-    nu = _poisson("nu", nu)
+    nu = check.poisson_ratio("nu", nu)
     basis = Basis(mesh.mesh, ElementVector(ElementQuad1()))
     K_cart = asm(linear_elasticity(*lame_parameters(1.0, nu)), basis)
     lumped = np.asarray(asm(_mass, basis).sum(axis=1)).ravel()

@@ -30,8 +30,8 @@ import xarray as xr
 from scipy.linalg import eigh, eigvals
 
 from ...errors import ParameterError
-from ..params import BrakeParams
-from ..ring_scheme import amplification_matrix
+from ..reduced.params import BrakeParams
+from ..ring.scheme import amplification_matrix
 from .mesh import FemSystem
 
 __all__ = ["fourier_block", "fem_frequencies", "max_frequency", "FemGrowth", "fem_growth_rates"]

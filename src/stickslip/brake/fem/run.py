@@ -25,9 +25,9 @@ from typing import Callable, ClassVar
 
 import numpy as np
 
-from ... import _validate as check
+from ... import validation as check
 from ...errors import ParameterError
-from ..params import BrakeParams
+from ..reduced.params import BrakeParams
 from ..runs import RunFormat, RunRecord, loop, prepare, resume, snapshot_due
 from .scheme import STATE_NAMES, FemScheme, advance, scheme_energy
 

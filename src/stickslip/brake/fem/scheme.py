@@ -28,11 +28,11 @@ from functools import cached_property, lru_cache
 import numpy as np
 from numba import njit
 
-from ... import _validate as check
+from ... import validation as check
 from ...errors import ParameterError
-from ..coefficients import ReducedCoefficients, elastic_moduli
-from ..params import BrakeParams
-from ..ring_scheme import SEPARATION, SLIP_NEG, SLIP_POS, STATE_NAMES, STICK
+from ..reduced.coefficients import ReducedCoefficients, elastic_moduli
+from ..reduced.params import BrakeParams
+from ..ring.scheme import SEPARATION, SLIP_NEG, SLIP_POS, STATE_NAMES, STICK
 from .mesh import FemSystem, annulus_mesh, assemble
 from .modes import max_frequency
 from .static import FemSteady, steady_state

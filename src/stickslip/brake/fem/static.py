@@ -25,8 +25,8 @@ import scipy.sparse.linalg as spla
 import xarray as xr
 
 from ...errors import ParameterError
-from ..params import BrakeParams
-from ..steady import steady_sliding
+from ..reduced.params import BrakeParams
+from ..reduced.steady import steady_sliding
 from .mesh import FemSystem, annulus_mesh, assemble
 
 __all__ = ["FemSteady", "steady_state"]

@@ -1,0 +1,173 @@
+"""Automatic classification of the limit regime of a ring run (paper [14], [17]-[20]).
+
+Per node and step the scheme knows its state: stick [17], positive slip [18], reverse
+slip [19] or separation [20]. Over the densely sampled tail of a run, `classify` gives
+
+* the zone fractions (time averages) and the regime name, the present zones joined in the
+  order stick, slip, separation, reverse-slip (e.g. ``stick-slip-separation``);
+* the mode number ``n``: the number of stick zones around the ring in the frame of the
+  wave (the stick masks of the snapshots shifted back by ``c t`` and averaged; a zone is a
+  run of at least ``min_run`` nodes occupied at least half as often as the most occupied
+  node; contact zones if nothing sticks), and ``n_fft``, the dominant Fourier mode of ``V``;
+* the wave speed ``c`` in the paper's convention ``phi = theta - c t`` (a pattern
+  ``X(theta - c t)`` moves by ``+c dt``): the shift between consecutive snapshots that
+  maximises their periodic cross-correlation (sub-node by a parabola through the peak),
+  accumulated and fitted against time;
+* a stationarity test: a travelling wave satisfies ``X(theta, t + s) = X(theta - c s, t)``.
+  The residual is the largest RMS misfit of ``U`` and ``V`` (relative to their RMS
+  deviation from the mean) over all pairs of tail snapshots, the shift done by linear
+  interpolation, and the state mismatch the largest fraction of nodes whose state differs
+  from the shifted earlier state (shift rounded to a node).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ... import validation as check
+from ...errors import ParameterError
+from .scheme import SEPARATION, STATE_NAMES, STICK
+
+__all__ = ["RegimeResult", "classify", "regime_name", "count_zones", "pattern_shift"]
+
+_ORDER = ("stick", "slip", "separation", "reverse_slip")
+
+
+def regime_name(present) -> str:
+    """``stick-slip-separation-reverse-slip`` style name of the set of present zones."""
+    names = [k for k in _ORDER if k in set(present)]
+    return "-".join(k.replace("_", "-") for k in names) if names else "none"
+
+
+def count_zones(mask: np.ndarray, min_run: int = 1) -> int:
+    """Number of periodic runs of ``True`` of length >= ``min_run`` in a 1-D mask."""
+    mask = np.asarray(mask, dtype=bool)
+    if mask.all():
+        return 1
+    if not mask.any():
+        return 0
+    start = int(np.argmin(mask))  # rotate so that the ring starts outside a run
+    m = np.concatenate([[False], np.roll(mask, -start), [False]]).astype(np.int8)
+    d = np.diff(m)
+    lengths = np.flatnonzero(d == -1) - np.flatnonzero(d == 1)
+    return int(np.sum(lengths >= min_run))
+
+
+def pattern_shift(x1: np.ndarray, x2: np.ndarray, max_shift: float = np.pi) -> float:
+    """Shift ``s`` (radians, ``|s| <= max_shift``) with ``x2(theta) ~ x1(theta - s)``."""
+    N = x1.size
+    a, b = x1 - x1.mean(), x2 - x2.mean()
+    corr = np.real(np.fft.ifft(np.conj(np.fft.fft(a)) * np.fft.fft(b)))  # corr[k] = sum a[j] b[j + k]
+    lag = (np.arange(N) + N // 2) % N - N // 2
+    allowed = np.abs(lag) * 2 * np.pi / N <= max_shift + 1e-12
+    i = int(np.flatnonzero(allowed)[np.argmax(corr[allowed])])
+    c0, cm, cp = corr[i], corr[i - 1], corr[(i + 1) % N]
+    den = cm - 2 * c0 + cp
+    frac = 0.5 * (cm - cp) / den if den < 0 else 0.0
+    return float((lag[i] + np.clip(frac, -0.5, 0.5)) * 2 * np.pi / N)
+
+
+def _shift(x, s, theta):
+    """``x(theta - s)`` by periodic linear interpolation."""
+    return np.interp((theta - s) % (2 * np.pi), theta, x, period=2 * np.pi)
+
+
+@dataclass(frozen=True)
+class RegimeResult:
+    """Limit regime of a run: zones, mode number, wave speed, stationarity."""
+
+    regime: str
+    fractions: dict
+    n: int
+    n_fft: int
+    c: float
+    c_over_sqrt_a: float
+    stationary: bool
+    residual: float
+    state_mismatch: float
+    window: tuple
+    snapshots: int
+    params: dict
+
+    def to_dict(self) -> dict:
+        out = {k: getattr(self, k) for k in ("regime", "n", "n_fft", "c", "c_over_sqrt_a", "stationary",
+                                             "residual", "state_mismatch", "snapshots")}
+        out.update({"fractions": dict(self.fractions), "window": list(self.window), "params": dict(self.params)})
+        return {k: (float(v) if isinstance(v, np.floating) else v) for k, v in out.items()}
+
+
+def classify(run, transits: float | None = None, min_fraction: float = 0.01, min_run: int = 2,
+             tol: float = 0.1) -> RegimeResult:
+    """Classify the last ``transits`` (default: the run's dense tail) of a `RingRun`.
+
+    Parameters
+    ----------
+    run : RingRun
+        A run with at least 3 snapshots in the window.
+    transits : float, optional
+        Window length in wave transits; default the ``tail`` of the run.
+    min_fraction : float
+        A zone kind is present if its time-averaged node fraction is >= this, in [0, 1).
+    min_run : int
+        Stick zones shorter than this (nodes) are not counted in ``n``.
+    tol : float
+        Stationarity threshold on the relative residual (and on the state mismatch).
+    """
+    s = run.scheme
+    min_fraction = check.in_range("min_fraction", min_fraction, 0.0, 1.0, hi_open=True)
+    min_run, tol = check.positive_int("min_run", min_run), check.positive("tol", tol)
+    if transits is None:
+        span = run.settings["tail_samples"] * run.settings["chunk"] * s.dt
+    else:
+        span = check.positive("transits", transits) * s.transit_time
+    t1 = run.t_end
+    snap_t = np.asarray(run.snapshots.get("snap_t", []))
+    sel = np.flatnonzero(snap_t >= t1 - span - 1e-12 * t1)
+    if sel.size < 3:
+        raise ParameterError("run", f"{sel.size} snapshots in the window", ">= 3 (run longer or with a tail)")
+    ser = run.t >= snap_t[sel[0]]
+    fr = dict(zip(STATE_NAMES, (float(x) for x in run.series["fractions"][ser].mean(axis=0))))
+    regime = regime_name([k for k, v in fr.items() if v >= min_fraction])
+    state, U, V, ts = (run.snapshots[k][sel] for k in ("state", "U", "V", "snap_t"))
+    power = np.mean(np.abs(run.series["modes_V"][ser]) ** 2, axis=0)
+    n_fft = int(np.argmax(power[1:]) + 1)
+    c = _speed(V, ts, n_fft)
+    n = 0
+    for mask, kind in ((state == STICK, "stick"), (state != SEPARATION, "slip")):
+        if fr[kind] >= min_fraction and n == 0:
+            n = count_zones(_wave_frame(mask, c * (ts - ts[0]), s.dtheta), min_run)
+    n = n_fft if n == 0 else n
+    residual, mismatch = _stationarity(s.theta, U, V, state, ts, c)
+    return RegimeResult(regime, fr, n, n_fft, c, c / np.sqrt(s.coefficients.a),
+                        bool(residual < tol and mismatch < tol), residual, mismatch,
+                        (float(ts[0]), float(ts[-1])), int(sel.size), s.params.to_dict())
+
+
+def _speed(V, ts, n_fft):
+    steps = [pattern_shift(V[i], V[i + 1], np.pi / n_fft) for i in range(len(ts) - 1)]
+    return float(np.polyfit(ts, np.concatenate([[0.0], np.cumsum(steps)]), 1)[0])
+
+
+def _wave_frame(masks, shifts, dtheta):
+    """Nodes where the mask holds in at least half of the snapshots seen in the wave frame
+    (snapshot ``i`` moved back by ``shifts[i]``), relative to the most occupied node."""
+    occupancy = np.mean([np.roll(m, -int(np.round(d / dtheta))) for m, d in zip(masks, shifts)], axis=0)
+    return occupancy >= 0.5 * occupancy.max() if occupancy.max() > 0 else occupancy > 0
+
+
+def _stationarity(theta, U, V, state, ts, c):
+    """Largest RMS misfit of ``X(t_j)`` and ``X(t_i)`` shifted by ``c (t_j - t_i)``, relative to
+    the RMS of ``X - mean`` (X = U, V), and the largest fraction of mismatched node states."""
+    res, mism = 0.0, 0.0
+    dev = [X - X.mean(axis=1, keepdims=True) for X in (U, V)]
+    scale = [max(float(np.sqrt(np.mean(X**2))), 1e-300) for X in dev]
+    for i in range(len(ts)):
+        for j in range(i + 1, len(ts)):
+            d = c * (ts[j] - ts[i])
+            for X, sc in zip(dev, scale):
+                res = max(res, float(np.sqrt(np.mean((X[j] - _shift(X[i], d, theta)) ** 2))) / sc)
+            k = int(np.round(d / (theta[1] - theta[0])))
+            mism = max(mism, float(np.mean(np.roll(state[i], k) != state[j])))
+    return res, mism

@@ -1,0 +1,78 @@
+"""Small validators: each checks one named value and raises `ParameterError`."""
+
+from __future__ import annotations
+
+import math
+from numbers import Real
+
+from .errors import ParameterError
+
+
+def finite(name: str, value) -> float:
+    """Return ``value`` as float; it must be a finite real number."""
+    if isinstance(value, bool) or not isinstance(value, Real):
+        raise ParameterError(name, value, "a finite real number")
+    value = float(value)
+    if not math.isfinite(value):
+        raise ParameterError(name, value, "a finite real number")
+    return value
+
+
+def positive(name: str, value) -> float:
+    """A finite number > 0."""
+    v = finite(name, value)
+    if v <= 0.0:
+        raise ParameterError(name, v, "> 0")
+    return v
+
+
+def nonnegative(name: str, value) -> float:
+    """A finite number >= 0."""
+    v = finite(name, value)
+    if v < 0.0:
+        raise ParameterError(name, v, ">= 0")
+    return v
+
+
+def in_range(name: str, value, lo: float, hi: float, *, lo_open=False, hi_open=False) -> float:
+    """A finite number in the interval between ``lo`` and ``hi``."""
+    v = finite(name, value)
+    below = v <= lo if lo_open else v < lo
+    above = v >= hi if hi_open else v > hi
+    if below or above:
+        left, right = ("(" if lo_open else "["), (")" if hi_open else "]")
+        raise ParameterError(name, v, f"in {left}{lo:g}, {hi:g}{right}")
+    return v
+
+
+def greater_than(name: str, value, bound: float, meaning: str = "") -> float:
+    """A finite number > ``bound`` (``meaning`` says what the parameter is, for the message)."""
+    v = finite(name, value)
+    if v <= bound:
+        raise ParameterError(name, v, f"> {bound:g}" + (f" ({meaning})" if meaning else ""))
+    return v
+
+
+def poisson_ratio(name: str, value) -> float:
+    """Poisson's ratio of an isotropic elastic solid in plane strain: in [0, 0.5)."""
+    return in_range(name, value, 0.0, 0.5, hi_open=True)
+
+
+def radius_ratio(name: str, value) -> float:
+    """Outer over inner radius of an annulus: a finite number > 1."""
+    return greater_than(name, value, 1.0, "outer radius / inner radius")
+
+
+def at_least(name: str, value, bound: float, bound_name: str) -> float:
+    """A finite number >= another parameter's value."""
+    v = finite(name, value)
+    if v < bound:
+        raise ParameterError(name, v, f">= {bound_name} = {bound:g}")
+    return v
+
+
+def positive_int(name: str, value) -> int:
+    """An integer >= 1."""
+    if isinstance(value, bool) or int(value) != value or value < 1:
+        raise ParameterError(name, value, "an integer >= 1")
+    return int(value)
