@@ -6,9 +6,12 @@ explicit step cannot avoid). Measured in one run, on the same saturated state (c
 section 3.1: stick, slip and separation present):
 
 * scipy CSR ``K @ u`` (baseline) and the same product in a compiled CSR loop;
-* the compiled block-circulant stencil product (`fem.scheme.stencil_apply`, same matrix);
-* compiled predictor without contact (`fem.scheme.bare`);
-* the production step with contact and Coulomb friction (`fem.scheme.advance`);
+* the compiled block-circulant stencil product (`stickslip.contact.kernel.stencil_apply`,
+  same matrix);
+* the compiled step with contact switched off (`FemScheme.advance(..., contact=False)`);
+* the production step with contact and Coulomb friction (`FemScheme.advance`: the shared
+  kernel of `stickslip.contact` on the annulus stencil), and the same step through the
+  general sparse-matrix path (`advance(..., sparse=True)`);
 * `integrate_fem` end to end (setup, kernel, and sampling of energy, zone fractions, Fourier
   modes and snapshots 32 times per transit), over 5x the steps.
 
@@ -25,7 +28,8 @@ from numba import njit
 
 from stickslip.brake import BrakeParams
 from stickslip.brake.fem import integrate_fem
-from stickslip.brake.fem.scheme import advance, bare, stencil_apply
+from stickslip.contact import StepState
+from stickslip.contact.kernel import stencil_apply
 
 
 @njit(cache=True)
@@ -61,16 +65,12 @@ def main():
     u = state0["u"].copy()
     out = np.empty_like(u)
     fresh = lambda: {key: v.copy() for key, v in state0.items()}  # noqa: E731
-    buf = (np.zeros(N), np.zeros(N), np.zeros(N, np.int8), np.zeros_like(u))
+    buf = s.new_output()
 
-    def full(n=M):
+    def step(n=M, contact=True, sparse=False):
         k = fresh()
-        advance(k["u"], k["v"], k["a"], *buf, n, s.dt, s.operator, p.delta, p.friction, s.beta2, True)
+        s.advance(StepState(k["u"], k["v"], k["a"]), n, contact, buf, sparse=sparse)
         return k
-
-    def pred(n=M):
-        k = fresh()
-        bare(k["u"], k["v"], k["a"], n, s.dt, s.operator, s.beta2)
 
     def scipy_mv():
         for _ in range(M):
@@ -82,14 +82,16 @@ def main():
 
     def stencil_mv():
         for _ in range(M):
-            stencil_apply(s.operator, u, out)
+            stencil_apply(s.stencil, u, out)
 
-    full(1), pred(1)  # compile
+    step(1), step(1, sparse=True)  # compile
+    err_paths = np.abs(step(50)["u"] - step(50, sparse=True)["u"]).max() / np.abs(step(50)["u"]).max()
     csr_matvec(K.indptr, K.indices, K.data, u, out)  # compile
-    stencil_apply(s.operator, u, out)
+    stencil_apply(s.stencil, u, out)
     err = np.abs(-s.mass * out - K @ u).max() / np.abs(K @ u).max()
     t_scipy, t_csr, t_sten = _timed(scipy_mv, M), _timed(csr_mv, M), _timed(stencil_mv, M)
-    t_pred, t_full = _timed(pred, M), _timed(full, M)
+    t_pred, t_full = _timed(lambda: step(contact=False), M), _timed(step, M)
+    t_sparse = _timed(lambda: step(sparse=True), M)
     T = 5 * M / s.steps_per_transit  # long enough that the setup (steady solve, CFL eigenvalues) is amortised
     t0 = time.perf_counter()
     r = integrate_fem(p, N, nr, transits=T)
@@ -98,11 +100,13 @@ def main():
     print(f"FE brake integrator, mesh {s.system.mesh.describe()}: {s.system.n_free} dofs, nnz(K) = {K.nnz}, "
           f"{spt:.0f} steps per P-wave transit (beta2 = {s.beta2}, courant = {s.courant})")
     print(f"state: stick {fr[0]:.2f}, slip {fr[1]:.2f}, reverse slip {fr[2]:.2f}, separation {fr[3]:.2f}; "
-          f"stencil product = K u to {err:.1e} (relative)")
+          f"stencil product = K u to {err:.1e}, stencil and sparse steps agree to {err_paths:.1e} after 50 steps "
+          "(relative)")
     rows = [("bare sparse matvec K @ u (scipy CSR)", t_scipy, "baseline"),
             ("same product, compiled CSR loop", t_csr, ""), ("same product, compiled stencil", t_sten, ""),
-            ("compiled step without contact (matvec + predictor)", t_pred, ""),
+            ("compiled step, contact off", t_pred, ""),
             ("compiled step with contact + Coulomb (advance)", t_full, ""),
+            ("the same step, general sparse path", t_sparse, ""),
             ("integrate_fem end to end, with sampling", t_int, "")]
     for name, t, note in rows:
         print(f"  {name:<52s} {1e6 * t:8.2f} us/step  {t * spt:7.4f} s/transit   ratio {t / t_scipy:5.2f} {note}")

@@ -5,9 +5,11 @@ Baseline: the same explicit finite-difference update written with numpy whole-ar
 operations and no contact or friction logic (what "vectorised numpy" costs per step).
 Measured in one run, on the same state (a saturated stick-slip-separation regime):
 
-* compiled step with contact + Coulomb (`ring_scheme.advance`), the production kernel;
+* compiled step with contact + Coulomb (`RingScheme.advance`: the shared kernel of
+  `stickslip.contact` on the ring's stencil), the production path;
+* the same step through the general sparse-matrix path (`advance(..., sparse=True)`);
 * numpy step with contact + Coulomb (same algorithm, checked equal to the kernel);
-* compiled bare update (`ring_scheme.bare`);
+* compiled step with contact switched off (`advance(..., contact=False)`);
 * `integrate` end to end (kernel + sampling of energy, zone fractions, Fourier modes).
 
 Usage: ``python benchmarks/brake_ring.py [--nodes 512] [--steps 20000]``
@@ -21,14 +23,20 @@ import time
 import numpy as np
 
 from stickslip.brake import BrakeParams
-from stickslip.brake.ring.integrate import integrate, perturbed_steady
-from stickslip.brake.ring.scheme import advance, bare
+from stickslip.brake.ring import integrate, perturbed_steady
+from stickslip.contact import StepState
+
+
+def _fields(s, k):
+    """``U, V, vU, vV, aU, aV`` of the kernel state (dofs interleaved ``U_0, V_0, U_1, ...``)."""
+    return [x for name in ("u", "v", "a") for x in s.fields(k[name])]
 
 
 def numpy_bare(s, k, nsteps):
     """The finite-difference update alone (no contact, no friction), numpy whole-array ops."""
-    a, b, g, h, D, d = s.coef
-    U, V, vU, vV, aU, aV = (k[x] for x in ("U", "V", "vU", "vV", "aU", "aV"))
+    c, d = s.coefficients, s.dtheta
+    a, b, g, h, D = c.a, c.b, c.g, c.h, c.D
+    U, V, vU, vV, aU, aV = _fields(s, k)
     dt, b2 = s.dt, s.beta2
     for _ in range(nsteps):
         Up, Um, Vp, Vm = np.roll(U, -1), np.roll(U, 1), np.roll(V, -1), np.roll(V, 1)
@@ -44,8 +52,9 @@ def numpy_bare(s, k, nsteps):
 
 def numpy_full(s, k, nsteps, delta, f):
     """The same update with the node-by-node contact and Coulomb projection, vectorised."""
-    a, b, g, h, D, d = s.coef
-    U, V, vU, vV, aU, aV = (k[x].copy() for x in ("U", "V", "vU", "vV", "aU", "aV"))
+    c, d = s.coefficients, s.dtheta
+    a, b, g, h, D = c.a, c.b, c.g, c.h, c.D
+    U, V, vU, vV, aU, aV = (x.copy() for x in _fields(s, k))
     dt, b2 = s.dt, s.beta2
     cdt2 = (b2 + 0.5) * dt * dt
     for _ in range(nsteps):
@@ -85,40 +94,42 @@ def main():
     s, state0 = run.scheme, run.kernel
     fr = run.fractions[-1]
     fresh = lambda: {key: v.copy() for key, v in state0.items()}  # noqa: E731
-    buf = (np.zeros(N), np.zeros(N), np.zeros(N, np.int8), np.zeros((2, N)))
+    out = s.new_output()
 
-    def compiled_full(k=None, n=M):
-        k = k or fresh()
-        advance(k["U"], k["V"], k["vU"], k["vV"], k["aU"], k["aV"], *buf, n, s.dt, s.coef, p.delta, p.friction,
-                s.beta2, True)
+    def compiled(n=M, contact=True, sparse=False):
+        k = fresh()
+        s.advance(StepState(k["u"], k["v"], k["a"]), n, contact, out, sparse=sparse)
         return k
 
-    def compiled_bare():
-        k = fresh()
-        bare(k["U"], k["V"], k["vU"], k["vV"], k["aU"], k["aV"], M, s.dt, s.coef, s.beta2)
-
-    compiled_full(n=1), compiled_bare()  # compile
-    k_ref = compiled_full(n=50)
+    compiled(n=1), compiled(n=1, sparse=True)  # compile
+    k_ref = compiled(n=50)
+    U_ref, V_ref = s.fields(k_ref["u"])
     U_np, V_np = numpy_full(s, fresh(), 50, p.delta, p.friction)
-    err = max(np.abs(U_np - k_ref["U"]).max() / p.delta, np.abs(V_np - k_ref["V"]).max() / np.abs(k_ref["V"]).max())
+    err = max(np.abs(U_np - U_ref).max() / p.delta, np.abs(V_np - V_ref).max() / np.abs(V_ref).max())
+    U_sp, V_sp = s.fields(compiled(n=50, sparse=True)["u"])
+    err_sparse = max(np.abs(U_sp - U_ref).max() / p.delta, np.abs(V_sp - V_ref).max() / np.abs(V_ref).max())
     t_bare_np = _timed(lambda: numpy_bare(s, fresh(), M // 10)) / (M // 10)
     t_full_np = _timed(lambda: numpy_full(s, fresh(), M // 10, p.delta, p.friction)) / (M // 10)
-    t_full = _timed(compiled_full) / M
-    t_bare = _timed(compiled_bare) / M
+    t_full = _timed(compiled) / M
+    t_sparse = _timed(lambda: compiled(sparse=True)) / M
+    t_bare = _timed(lambda: compiled(contact=False)) / M
     T = M / s.steps_per_transit
     t0 = time.perf_counter()
     integrate(p, N, transits=T, initial=perturbed_steady(p, N))
     t_int = (time.perf_counter() - t0) / (run.settings["chunk"] * int(np.ceil(T * s.steps_per_transit
                                                                               / run.settings["chunk"])))
     print(f"ring integrator, {N} nodes, state: stick {fr[0]:.2f}, slip {fr[1]:.2f}, reverse slip {fr[2]:.2f}, "
-          f"separation {fr[3]:.2f}; numpy and compiled steps agree to {err:.1e} (relative) after 50 steps")
+          f"separation {fr[3]:.2f}; numpy and compiled steps agree to {err:.1e}, stencil and sparse paths to "
+          f"{err_sparse:.1e} (relative) after 50 steps")
     print(f"  bare vectorised update (numpy, no contact)  {1e6 * t_bare_np:8.2f} us/step   (baseline)")
     print(f"  numpy step with contact + Coulomb           {1e6 * t_full_np:8.2f} us/step   "
           f"ratio {t_full_np / t_bare_np:5.2f}")
-    print(f"  compiled bare update (numba)                {1e6 * t_bare:8.2f} us/step   "
+    print(f"  compiled step, contact off (numba)          {1e6 * t_bare:8.2f} us/step   "
           f"ratio {t_bare / t_bare_np:5.2f}")
+    print(f"  compiled step, general sparse path          {1e6 * t_sparse:8.2f} us/step   "
+          f"ratio {t_sparse / t_bare_np:5.2f}")
     print(f"  compiled step with contact + Coulomb        {1e6 * t_full:8.2f} us/step   ratio {t_full / t_bare_np:5.2f}"
-          f"   (vs compiled bare: {t_full / t_bare:4.2f})")
+          f"   (vs contact off: {t_full / t_bare:4.2f})")
     print(f"  integrate() end to end, with sampling       {1e6 * t_int:8.2f} us/step   ratio {t_int / t_bare_np:5.2f}")
     print(f"RATIO time per step with contact+friction / bare vectorised update = {t_full / t_bare_np:.3f}")
 

@@ -23,7 +23,7 @@ from ..errors import NoSolutionError
 from ..sweep import run_sweep
 from .reduced.params import PhysicalParams
 from .ring.integrate import integrate, perturbed_steady
-from .ring.classify import classify
+from .ring import classify
 from .waves.solve import find_waves
 
 __all__ = ["REGIME_CODES", "regime_code", "wave_regime_map", "ring_regime_map"]

@@ -18,9 +18,10 @@ import xarray as xr
 from ..figures import Check
 from .reduced.params import BrakeParams
 from .ring.integrate import integrate, perturbed_steady
-from .ring.classify import classify
+from .ring import classify
 from .ring_plots import plot_initial_condition, plot_regimes
-from .ring.scheme import STATE_NAMES, RingScheme
+from ..contact import STATE_NAMES
+from .ring import RingScheme
 from .reduced.flutter import growth_rates
 
 __all__ = ["CASES", "PAPER_REGIMES", "regimes_data", "initial_condition_data", "plot_regimes",

@@ -18,7 +18,7 @@ import xarray as xr
 from ..figures import Check
 from .reduced.params import BrakeParams
 from .ring.integrate import InitialCondition, integrate, perturbed_steady
-from .ring.classify import classify
+from .ring import classify
 from .wave_figures import FIG5, FIG6, FIG12
 from .waves.stability import wave_persistence
 from .waves.solve import find_waves, travelling_wave

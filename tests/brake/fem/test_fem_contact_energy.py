@@ -7,8 +7,8 @@ import pytest
 
 from stickslip.brake import BrakeParams
 from stickslip.brake.fem import FemInitial, FemScheme, fourier_block, integrate_fem, perturbed_steady
-from stickslip.brake.fem.scheme import SEPARATION, SLIP_NEG, SLIP_POS, STICK
-from stickslip.brake.ring.scheme import amplification_matrix
+from stickslip.contact import SEPARATION, SLIP_NEG, SLIP_POS, STICK
+from stickslip.contact import amplification_matrix
 
 # order-one coefficients; kappa = delta / sqrt(gamma) = 0.03 is small enough for separation
 PARAMS = BrakeParams(xi=1.5, nu=0.3, gamma=1.0, delta=0.03, friction=0.7)

@@ -5,8 +5,10 @@ import numpy as np
 import pytest
 
 from stickslip.brake import BrakeParams
-from stickslip.brake.ring.integrate import InitialCondition, _start, integrate, perturbed_steady
-from stickslip.brake.ring.scheme import SEPARATION, SLIP_NEG, SLIP_POS, STICK, RingScheme, advance
+from stickslip.brake.ring import InitialCondition, RingScheme, integrate, perturbed_steady
+from stickslip.contact import SEPARATION, SLIP_NEG, SLIP_POS, STICK
+
+from .test_scheme import start
 
 # coefficients of order 1; delta / sqrt(gamma) = 0.03 is small enough for separation
 PARAMS = BrakeParams(xi=1.5, nu=0.3, gamma=1.0, delta=0.03, friction=0.7)
@@ -87,13 +89,10 @@ def test_convergence_in_dt_is_first_order_through_stick_and_separation_events():
     finals, seen = [], np.zeros(4)
     for M in (1000, 2000, 4000, 8000):
         scheme = RingScheme(PARAMS, N, 0.5, t_end / (M * RingScheme(PARAMS, N, 0.5, 1.0).dt_max))
-        k = _start(scheme, ini, True)
-        P, Q, state, work = np.zeros(N), np.zeros(N), np.zeros(N, np.int8), np.zeros((2, N))
+        k = start(scheme, ini, True)
         for _ in range(10):
-            advance(k["U"], k["V"], k["vU"], k["vV"], k["aU"], k["aV"], P, Q, state, work, M // 10, scheme.dt,
-                    scheme.coef, PARAMS.delta, PARAMS.friction, 0.5, True)
-            seen += np.bincount(state, minlength=4)
-        finals.append(k["V"].copy())
+            seen += np.bincount(scheme.advance(k, M // 10).state, minlength=4)
+        finals.append(scheme.fields(k.u)[1].copy())
     assert np.all(seen > 0)
     e = [np.abs(finals[i] - finals[i + 1]).max() for i in range(3)]
     orders = np.log2(np.array(e[:-1]) / e[1:])

@@ -8,25 +8,25 @@ import numpy as np
 import pytest
 
 from stickslip.brake import BrakeParams, growth_rates
-from stickslip.brake.ring.integrate import InitialCondition, _start, integrate, perturbed_steady
-from stickslip.brake.ring.scheme import RingScheme, advance, bare
+from stickslip.brake.ring import InitialCondition, RingScheme, integrate, perturbed_steady
 from stickslip.errors import ParameterError
+
+from ...contact.helpers import free_run
 
 BASE = BrakeParams(xi=1.5, nu=0.3, gamma=1.0, delta=0.001, friction=0.7)  # coefficients of order 1
 
 
-def _buffers(N):
-    return np.zeros(N), np.zeros(N), np.zeros(N, np.int8), np.zeros((2, N))
+def start(scheme, ini, contact):
+    """The scheme's state for the initial condition ``ini``."""
+    return scheme.initial_state(scheme.dofs(ini.U, ini.V), scheme.dofs(ini.Ud, ini.Vd), contact)
 
 
 def _steps(scheme, k, nsteps, contact=True):
-    """Advance the kernel arrays ``k`` by ``nsteps`` one at a time; returns ``u_m`` per step."""
-    P, Q, state, work = _buffers(scheme.nodes)
-    p, out = scheme.params, []
+    """Advance the state ``k`` by ``nsteps`` one at a time; returns ``(U_m, V_m)`` per step."""
+    out = []
     for _ in range(nsteps):
-        advance(k["U"], k["V"], k["vU"], k["vV"], k["aU"], k["aV"], P, Q, state, work, 1, scheme.dt, scheme.coef,
-                p.delta, p.friction, scheme.beta2, contact)
-        out.append(work.copy())
+        last = scheme.advance(k, 1, contact)
+        out.append(np.array(scheme.fields(last.u_prev)))
     return np.array(out)
 
 
@@ -48,7 +48,7 @@ def test_kernel_reproduces_the_discrete_dispersion_relation(k, branch):
     ``sin(w_d dt / 2) = w dt / 2`` and ``w^2`` from the centred-difference symbols."""
     scheme = RingScheme(BASE, 64, 0.5, 0.9)
     w, ini = _free_mode(scheme, k, branch)
-    u = _steps(scheme, _start(scheme, ini, False), 60, contact=False)
+    u = _steps(scheme, start(scheme, ini, False), 60, contact=False)
     j = np.argmax(np.abs(ini.V))
     ratio = (u[2:, 1, j] + u[:-2, 1, j]) / (2 * u[1:-1, 1, j])
     good = np.abs(u[1:-1, 1, j]) > 0.3 * np.abs(u[:, 1, j]).max()
@@ -76,10 +76,8 @@ def test_stability_limit_is_the_cfl_condition(beta2):
     rng = np.random.default_rng(1)
     grow = []
     for factor in (0.99, 1.02):
-        U, V = rng.standard_normal(32), rng.standard_normal(32)
-        vU, vV, aU, aV = (np.zeros(32) for _ in range(4))
-        bare(U, V, vU, vV, aU, aV, 2000, factor * scheme.dt_max, scheme.coef, beta2)
-        grow.append(np.abs(V).max() if np.all(np.isfinite(V)) else np.inf)
+        u = free_run(scheme, rng.standard_normal(64), 2000, factor * scheme.dt_max)
+        grow.append(np.abs(u).max() if np.all(np.isfinite(u)) else np.inf)
     assert grow[0] < 10 and grow[1] > 1e6
 
 
@@ -154,12 +152,9 @@ def test_observed_order_in_time(beta2):
         probe = RingScheme(BASE, N, beta2, 1.0)
         scheme = RingScheme(BASE, N, beta2, t_end / (M * probe.dt_max))
         ini = perturbed_steady(BASE, N, amplitude=1e-3, mode=2, noise=1e-3)
-        k = _start(scheme, ini, True)
-        P, Q, state, work = _buffers(N)
-        advance(k["U"], k["V"], k["vU"], k["vV"], k["aU"], k["aV"], P, Q, state, work, M, scheme.dt, scheme.coef,
-                BASE.delta, BASE.friction, beta2, True)
-        assert np.all(state == 1)
-        finals.append(k["V"].copy())
+        k = start(scheme, ini, True)
+        assert np.all(scheme.advance(k, M).state == 1)
+        finals.append(scheme.fields(k.u)[1].copy())
     e = [np.abs(finals[i] - finals[i + 1]).max() for i in range(3)]
     order = np.log2(e[1] / e[2])
     assert order == pytest.approx(RingScheme(BASE, N, beta2).order, abs=0.02)

@@ -1,12 +1,10 @@
 """Classification of the limit regime of an FE run, on its contact nodes (paper [17]-[20]).
 
-A `FemRun` has the interface `brake.ring_classify.classify` reads (``scheme.theta``,
-``dtheta``, ``dt``, ``transit_time``, ``coefficients.a``; snapshots ``U, V, state, snap_t`` of
-the nodes on ``r = R``; series ``fractions``, ``modes_V``), so the ring's classifier is
-applied unchanged: zone fractions and regime name, mode number (stick zones counted in
-the frame of the wave) and dominant Fourier mode, wave speed, stationarity. `FemRegime`
-adds what is specific to the FE: the speed in units of the P-wave speed along ``r = R``,
-the number of stick zones per snapshot (its median: robust when the pattern is not a
+A `FemRun` keeps the books of `stickslip.contact.runs`, so the shared classifier
+`stickslip.contact.classify` applies unchanged: zone fractions and regime name, mode number
+(stick zones counted in the frame of the wave) and dominant Fourier mode, wave speed (also
+in units of the P-wave speed along ``r = R``, ``c_over_cp``), stationarity. `FemRegime`
+adds what is specific to the FE: the number of stick zones per snapshot (its median: robust when the pattern is not a
 rigid travelling wave, where the wave-frame count of the ring classifier merges zones), the
 dominant Fourier mode of the contact pressure and the pattern speed measured on it, the
 contact pressure relative to the steady ``p_e``, and the energy statistics of the window.
@@ -19,8 +17,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import ParameterError
-from ..ring.classify import RegimeResult, _speed, classify, count_zones
-from ..ring.scheme import SEPARATION, STICK
+from .run import FemRun
+from ...contact import SEPARATION, SLIP_NEG, SLIP_POS, STICK, RegimeResult, classify, count_zones, pattern_speed
 
 __all__ = ["FemRegime", "classify_fem", "contact_residuals"]
 
@@ -29,7 +27,6 @@ __all__ = ["FemRegime", "classify_fem", "contact_residuals"]
 class FemRegime:
     """Limit regime of an FE run (fields of `RegimeResult` plus FE-specific numbers).
 
-    ``c_over_cp``: wave speed ``c`` over ``c_p / R`` (angular P-wave speed at ``r = R``);
     ``n_zones``: median number of stick zones (>= ``min_run`` nodes) per snapshot, or of
     contact zones if nothing sticks; ``n_fft_P``: dominant Fourier mode of the contact
     pressure; ``c_P_over_cp``: speed of the pressure pattern (shift of at most
@@ -40,7 +37,6 @@ class FemRegime:
     """
 
     result: RegimeResult
-    c_over_cp: float
     n_zones: int
     n_fft_P: int
     c_P_over_cp: float
@@ -56,10 +52,9 @@ class FemRegime:
     def to_dict(self) -> dict:
         out = self.result.to_dict()
         out.update({k: int(getattr(self, k)) if k.startswith("n_") else float(getattr(self, k))
-                    for k in ("c_over_cp", "n_zones", "n_fft_P", "c_P_over_cp", "p_max_over_pe", "p_mean_over_pe",
+                    for k in ("n_zones", "n_fft_P", "c_P_over_cp", "p_max_over_pe", "p_mean_over_pe",
                               "energy_mean", "energy_cv", "transits")})
         return out
-
 
     def to_xarray(self):
         """The fractions as a variable over ``kind``, every scalar in ``attrs``."""
@@ -78,11 +73,9 @@ def classify_fem(run, transits: float | None = None, min_fraction: float = 0.01,
                  tol: float = 0.1) -> FemRegime:
     """Classify the last ``transits`` (default: the dense tail) of a `FemRun`.
 
-    Parameters are those of `brake.ring_classify.classify` (transits of the FE run:
+    Parameters are those of `stickslip.contact.classify` (transits of the FE run:
     ``2 pi R / c_p``).
     """
-    from .run import FemRun
-
     if not isinstance(run, FemRun):
         raise ParameterError("run", run, "a FemRun (see integrate_fem)")
     if not run.settings["contact"]:
@@ -95,11 +88,11 @@ def classify_fem(run, transits: float | None = None, min_fraction: float = 0.01,
     pe = float(s.steady.pressure.mean())
     P, state, ts = run.P[snap], run.state[snap], run.snap_t[snap]
     n_fft_P = int(np.argmax(np.mean(np.abs(np.fft.rfft(P, axis=1)[:, 1:]) ** 2, axis=0)) + 1)
-    c_P = _speed(P, ts, n_fft_P)
+    c_P = pattern_speed(P, ts, n_fft_P)
     mask = state == STICK if res.fractions["stick"] >= min_fraction else state != SEPARATION
     zones = int(np.median([count_zones(m, min_run) for m in mask]))
     energy = run.energy[ser]
-    return FemRegime(res, res.c / s.p_wave_speed, zones, n_fft_P, c_P / s.p_wave_speed,
+    return FemRegime(res, zones, n_fft_P, c_P / s.p_wave_speed,
                      float(P.max() / pe), float(P.mean() / pe), float(energy.mean()),
                      float(energy.std() / energy.mean()) if energy.mean() > 0 else 0.0, run.transits)
 
@@ -114,15 +107,13 @@ def contact_residuals(run) -> dict:
     slipping nodes, and ``slip_direction`` = min ``sign(q) (1 - w)`` there (>= 0: friction
     opposes the slip). Sticking/slipping counts are returned too.
     """
-    from .run import FemRun
-
     if not isinstance(run, FemRun):
         raise ParameterError("run", run, "a FemRun (see integrate_fem)")
     s, f = run.scheme, run.params.friction
     pe, delta = float(s.steady.pressure.mean()), run.params.delta
     P, Q, gap, w, state = run.P, run.Q, run.gap, run.Vd, run.state
-    stick, slip = state == STICK, (state == 1) | (state == 2)
-    sign = np.where(state == 2, -1.0, 1.0)
+    stick, slip = state == STICK, (state == SLIP_POS) | (state == SLIP_NEG)
+    sign = np.where(state == SLIP_NEG, -1.0, 1.0)
     fp = max(f * pe, 1e-300)
     return {"P_min": float(P.min() / pe), "gap_min": float(gap.min() / delta),
             "complementarity": float(np.abs(P * gap).max() / (pe * delta)),

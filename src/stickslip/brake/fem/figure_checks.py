@@ -11,8 +11,8 @@ from __future__ import annotations
 import numpy as np
 
 from ...figures import Check
-from ..ring.classify import count_zones
-from ..ring.scheme import SEPARATION
+from ...contact import count_zones
+from ...contact import SEPARATION
 
 __all__ = ["check_fig7", "check_fig8", "check_fig9", "check_fig10", "check_regime_map", "common_checks"]
 

@@ -24,7 +24,7 @@ import xarray as xr
 from ...errors import ParameterError
 from ..reduced.params import BrakeParams
 from ..ring_figures import CASES, PAPER_REGIMES
-from ..ring.scheme import STATE_NAMES
+from ...contact import STATE_NAMES
 from .classify import classify_fem, contact_residuals
 from .figure_checks import check_fig7, check_fig8, check_fig9, check_fig10, check_regime_map
 from .halfspace import slip_wave_rate

@@ -25,6 +25,7 @@ from skfem.helpers import dot
 from skfem.models.elasticity import lame_parameters, linear_elasticity
 
 from ... import validation as check
+from ...contact import stencil_matrix
 from ...errors import ParameterError
 
 __all__ = ["AnnulusMesh", "FemSystem", "annulus_mesh", "assemble"]
@@ -153,21 +154,6 @@ def _stencil(K_pol: sp.csr_matrix, n_theta: int, n_r: int) -> np.ndarray:
     return 0.5 * (C + T)
 
 
-def _from_stencil(C: np.ndarray, n_theta: int) -> sp.csr_matrix:
-    n_r = C.shape[0]
-    i, di, dj, c, c2 = (a.ravel() for a in np.meshgrid(*map(np.arange, C.shape), indexing="ij"))
-    val = C.ravel()
-    ok = (val != 0.0) & (i + di - 1 >= 0) & (i + di - 1 < n_r)
-    i, di, dj, c, c2, val = i[ok], di[ok] - 1, dj[ok] - 1, c[ok], c2[ok], val[ok]
-    j = np.arange(n_theta)
-    rows = 2 * (i[:, None] * n_theta + j) + c[:, None]
-    cols = 2 * ((i + di)[:, None] * n_theta + (j + dj[:, None]) % n_theta) + c2[:, None]
-    n = 2 * n_r * n_theta
-    K = sp.csr_matrix((np.repeat(val, n_theta), (rows.ravel(), cols.ravel())), shape=(n, n))
-    K.sort_indices()
-    return K
-
-
 def assemble(mesh: AnnulusMesh, nu: float = 0.3) -> FemSystem:
     """Assemble the plane-strain stiffness and the row-sum lumped mass (scikit-fem).
 
@@ -196,4 +182,4 @@ def assemble(mesh: AnnulusMesh, nu: float = 0.3) -> FemSystem:
     C = _stencil(K_pol, mesh.n_theta, mesh.n_r)
     ring_mass = lumped[dx][:: mesh.n_theta][: mesh.n_r]  # the same on every node of a ring
     mass = np.repeat(ring_mass, 2 * mesh.n_theta)
-    return FemSystem(mesh, nu, _from_stencil(C, mesh.n_theta), mass, C)
+    return FemSystem(mesh, nu, stencil_matrix(C, mesh.n_theta), mass, C)

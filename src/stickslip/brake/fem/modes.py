@@ -29,9 +29,9 @@ import numpy as np
 import xarray as xr
 from scipy.linalg import eigh, eigvals
 
+from ...contact import discrete_rates
 from ...errors import ParameterError
 from ..reduced.params import BrakeParams
-from ..ring.scheme import amplification_matrix
 from .mesh import FemSystem
 
 __all__ = ["fourier_block", "fem_frequencies", "max_frequency", "FemGrowth", "fem_growth_rates"]
@@ -105,11 +105,7 @@ class FemGrowth:
 
     def discrete(self, dt: float, beta2: float) -> np.ndarray:
         """Fully discrete ``log z / dt`` of the explicit beta2 scheme, per mode and branch."""
-        out = np.empty_like(self.s)
-        for idx, s in np.ndenumerate(self.s):
-            z = np.linalg.eigvals(amplification_matrix(-(s * dt) ** 2, beta2))
-            out[idx] = np.log(z[np.argmax(np.abs(z))]) / dt
-        return out
+        return discrete_rates(-self.s**2, dt, beta2)
 
     def to_dict(self) -> dict:
         return {"n": self.n.tolist(), "growth_rate": self.growth_rate.tolist(),

@@ -1,7 +1,8 @@
 """Time integration of the FE brake model from perturbed steady sliding (paper section 3.1).
 
-`integrate_fem` advances the explicit scheme of `fem.scheme` and records, like the ring
-integrator `brake.ring.integrate` (same schedule, same checkpoint guarantees):
+`integrate_fem` advances the explicit scheme of `fem.scheme` and records, with the run
+books of `stickslip.contact.runs` that the ring integrator uses too (same schedule, same
+checkpoint guarantees):
 
 * every ``1/samples_per_transit`` of a P-wave transit: the energy of the deviation from
   FE steady sliding, the fraction of contact nodes in each state (stick, slip, reverse
@@ -26,10 +27,10 @@ from typing import Callable, ClassVar
 import numpy as np
 
 from ... import validation as check
+from ...contact import RunFormat, RunRecord, prepare, run_explicit
 from ...errors import ParameterError
-from ..reduced.params import BrakeParams
-from ..runs import RunFormat, RunRecord, loop, prepare, resume, snapshot_due
-from .scheme import STATE_NAMES, FemScheme, advance, scheme_energy
+from ..reduced import BrakeParams
+from .scheme import FemScheme
 
 __all__ = ["FemInitial", "FemRun", "integrate_fem", "perturbed_steady"]
 
@@ -88,12 +89,11 @@ _FORMAT = RunFormat(
             "P": ("E", "contact pressure p = lambda_n / (R dtheta)"),
             "Q": ("E", "friction shear q = lambda_t / (R dtheta), positive along the shaft motion"),
             "gap": ("R", "gap u_r - delta at t_{m+1} (where the constraint of the step acts)")},
-    kernel=("u", "v", "a", "ref"), kernel_dim="dof", kernel_note="scheme state for resuming (polar dofs)",
     energy_units="E R^2", energy_note="energy of the deviation from FE steady sliding (per unit length in z)",
     node_label="contact node",
     source="FE model of eq. [10], explicit beta2 scheme [22] with multipliers [23] (docs/theory/brake-fem.md)",
-    key_attrs=("n_theta", "n_r", "beta2", "courant"), scheme=FemScheme,
-    extra_attrs=lambda s: {"p_wave_speed": s.p_wave_speed, "mesh": s.system.mesh.describe()})
+    key_attrs=("n_theta", "n_r", "beta2", "courant"), scheme=FemScheme, params_type=BrakeParams,
+    traction_scale=lambda s: s.traction_scale, extra_attrs=lambda s: {"p_wave_speed": s.p_wave_speed, "mesh": s.system.mesh.describe()})
 
 
 @dataclass(frozen=True, eq=False)
@@ -110,30 +110,12 @@ class FemRun(RunRecord):
 
     FORMAT: ClassVar[RunFormat] = _FORMAT
 
-    @property
-    def transits(self) -> float:
-        return self.t_end / self.scheme.transit_time
-
     def to_dict(self) -> dict:
         """Parameters, mesh, scheme, schedule and progress (no arrays)."""
         s = self.scheme
         return {"params": self.params.to_dict(), **s.key(), "dt": s.dt, "transit_time": s.transit_time,
                 "transits": self.transits, "samples_done": self.samples_done, "complete": self.complete,
                 **{k: v for k, v in self.settings.items() if k != "initial_hash"}}
-
-
-def _start(scheme: FemScheme, ini: FemInitial, contact: bool) -> dict:
-    """``u_0, v_{-1}, a_{-1}``: ``a_{-1}`` is the internal acceleration plus the steady reactions
-    at contact nodes touching the shaft, ``v_{-1} = v_0 - dt a_{-1}`` (exact at rest in steady sliding)."""
-    a = -(scheme.system.K @ ini.u) / scheme.mass
-    ref = scheme.steady.u.copy() if contact else np.zeros_like(ini.u)
-    if contact:
-        N, st = scheme.n_theta, scheme.steady
-        touching = ini.u[0:2 * N:2] <= scheme.params.delta
-        m = scheme.mass[0]
-        a[0:2 * N:2] += touching * st.reaction_n / m
-        a[1:2 * N:2] += touching * st.reaction_t / m
-    return {"u": ini.u.copy(), "v": ini.v - scheme.dt * a, "a": a, "ref": ref}
 
 
 def integrate_fem(params: BrakeParams, n_theta: int = 256, n_r: int = 16, t_end: float | None = None, *,
@@ -176,34 +158,5 @@ def integrate_fem(params: BrakeParams, n_theta: int = 256, n_r: int = 16, t_end:
     t_end, settings = prepare(scheme, t_end=t_end, transits=transits, samples_per_transit=samples_per_transit,
                               snapshot_every=snapshot_every, tail=tail, modes=modes, contact=contact,
                               initial=initial, progress=progress)
-    run = resume(FemRun, checkpoint, scheme, settings) if checkpoint is not None else None
-    if run is None:
-        run = FemRun(scheme, settings, {}, {}, _start(scheme, initial, contact), 0)
-    p, N = scheme.params, scheme.n_theta
-    lam_n, lam_t, state, work = np.zeros(N), np.zeros(N), np.zeros(N, np.int8), np.zeros_like(run.kernel["u"])
-
-    def step(k):
-        advance(k["u"], k["v"], k["a"], lam_n, lam_t, state, work, settings["chunk"], scheme.dt, scheme.operator,
-                p.delta, p.friction, scheme.beta2, settings["contact"])
-
-    def record(done, k, series, snaps):
-        _record(scheme, run.settings, done, k, lam_n, lam_t, state, work, series, snaps)
-
-    return loop(run, checkpoint, every, progress, t_end, step, record)
-
-
-def _record(s, st, done, k, lam_n, lam_t, state, work, series, snaps):
-    m, N = done * st["chunk"] - 1, s.n_theta  # index of the last step: fields at t_m
-    kin, ela = scheme_energy(s, work, k["u"], k["ref"])
-    U, V = work[0:2 * N:2], work[1:2 * N:2]
-    rec = {"t": m * s.dt, "kinetic": kin, "energy": kin + ela,
-           "fractions": np.bincount(state, minlength=len(STATE_NAMES)) / N,
-           "modes_U": np.fft.rfft(U)[:st["modes"] + 1] / N, "modes_V": np.fft.rfft(V)[:st["modes"] + 1] / N}
-    for key, v in rec.items():
-        series.setdefault(key, []).append(v)
-    if snapshot_due(done, st):
-        scale = s.mass[0] / s.system.mesh.h_theta  # reaction per unit mass -> traction (units of E)
-        for key, v in {"snap_t": m * s.dt, "U": U.copy(), "V": V.copy(), "Ud": (k["u"][0:2 * N:2] - U) / s.dt,
-                       "Vd": (k["u"][1:2 * N:2] - V) / s.dt, "P": scale * lam_n, "Q": scale * lam_t,
-                       "gap": k["u"][0:2 * N:2] - s.params.delta, "state": state.copy()}.items():
-            snaps.setdefault(key, []).append(v)
+    return run_explicit(FemRun, scheme, initial.u, initial.v, settings, t_end, checkpoint=checkpoint, every=every,
+                        progress=progress)

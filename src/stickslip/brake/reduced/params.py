@@ -144,6 +144,20 @@ class BrakeParams:
             out["physical"] = {k: getattr(p, k) for k in p.__dataclass_fields__}
         return out
 
+    def to_attrs(self) -> dict:
+        """Flat attributes for a netCDF file (``physical_*`` for the SI set); see `from_attrs`."""
+        out = {k: v for k, v in self.to_dict().items() if k != "physical"}
+        if self.physical is not None:
+            out.update({f"physical_{k}": v for k, v in self.to_dict()["physical"].items()})
+        return out
+
+    @classmethod
+    def from_attrs(cls, attrs) -> "BrakeParams":
+        """The parameters stored by `to_attrs` (other attributes are ignored)."""
+        physical = {k[len("physical_"):]: float(v) for k, v in attrs.items() if k.startswith("physical_")}
+        return cls(*(float(attrs[k]) for k in ("xi", "nu", "gamma", "delta", "friction")),
+                   physical=PhysicalParams(**physical) if physical else None)
+
     def coefficients(self) -> ReducedCoefficients:
         """The reduced-model coefficients [13] (see `stickslip.brake.reduced.coefficients`)."""
         return coefficients(self.xi, self.nu, self.gamma)

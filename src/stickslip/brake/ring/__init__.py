@@ -7,7 +7,7 @@
 * `classify`: the limit regime of a run (`stickslip.contact.classify`).
 """
 
-from .classify import RegimeResult, classify
+from ...contact import RegimeResult, classify
 from .integrate import InitialCondition, RingRun, integrate, perturbed_steady, transit_time
 from .scheme import RingScheme
 

@@ -1,13 +1,14 @@
 """Time integration of the reduced model [12] on the ring, from a perturbed steady state.
 
-`integrate` advances the explicit scheme of `ring_scheme` (centred differences in
+`integrate` advances the explicit scheme of `brake.ring.scheme` (centred differences in
 ``theta``, explicit Newmark / central differences in time, forward-increment Lagrange
-multipliers for contact and Coulomb friction, node by node) and records
+multipliers for contact and Coulomb friction, node by node) and records, with the run
+books of `stickslip.contact.runs`,
 
 * a time series every ``1/samples_per_transit`` of a wave transit: energy, the fraction
   of nodes in each state (stick, slip, reverse slip, separation), Fourier modes of U, V;
 * snapshots of the fields every ``snapshot_every`` transits, and at every sample during
-  the last ``tail`` transits (for the classification of the limit regime, `ring_classify`).
+  the last ``tail`` transits (for the classification of the limit regime, `classify`).
 
 Runs are budgeted in wave transits ``2 pi / sqrt(a)`` (the step is set by the CFL
 condition, so one transit is about ``nodes`` steps). With ``checkpoint=path`` the run is
@@ -25,10 +26,10 @@ from typing import Callable, ClassVar
 import numpy as np
 
 from ... import validation as check
+from ...contact import RunFormat, RunRecord, prepare, run_explicit
 from ...errors import ParameterError
-from ..reduced.params import BrakeParams
-from ..runs import RunFormat, RunRecord, loop, prepare, resume, snapshot_due
-from .scheme import STATE_NAMES, RingScheme, advance, energies
+from ..reduced import BrakeParams
+from .scheme import RingScheme
 
 __all__ = ["InitialCondition", "RingRun", "integrate", "perturbed_steady", "transit_time"]
 
@@ -64,12 +65,6 @@ class InitialCondition:
         return hashlib.sha1(b"".join(a.tobytes() for a in (self.U, self.V, self.Ud, self.Vd))).hexdigest()
 
 
-def _reference(scheme: RingScheme) -> tuple[float, float]:
-    """Steady sliding [16] in the reduced model: ``(U_e, V_e) = (delta, delta f g / h)``."""
-    p, c = scheme.params, scheme.coefficients
-    return p.delta, p.delta * p.friction * c.g / c.h
-
-
 def perturbed_steady(params: BrakeParams, nodes: int = 512, amplitude: float = 1e-3, mode: int | None = None,
                      seed: int = 0, phase: float = 0.0, noise: float = 0.0) -> InitialCondition:
     """Steady sliding [16] with ``V`` perturbed by ``delta * pattern(theta)``, at rest.
@@ -89,10 +84,9 @@ def perturbed_steady(params: BrakeParams, nodes: int = 512, amplitude: float = 1
             raise ParameterError("mode", mode, f"an integer in [0, {scheme.nodes // 2}]")
         pattern = amplitude * np.cos(mode * scheme.theta + check.finite("phase", phase)) + noise * white
         label = f"{amplitude:g} delta mode {mode}" + (f" + {noise:g} delta noise(seed={seed})" if noise else "")
-    U_e, V_e = _reference(scheme)
+    U_e, V_e = scheme.fields(scheme.steady_reference()[0])
     zero = np.zeros(scheme.nodes)
-    return InitialCondition(np.full(scheme.nodes, U_e), V_e + params.delta * pattern, zero, zero.copy(),
-                            "steady sliding + " + label)
+    return InitialCondition(U_e, V_e + params.delta * pattern, zero, zero.copy(), "steady sliding + " + label)
 
 
 _FORMAT = RunFormat(
@@ -100,11 +94,11 @@ _FORMAT = RunFormat(
             "Ud": ("R Omega", "radial velocity (U_{m+1} - U_m)/dt"),
             "Vd": ("R Omega", "tangential velocity (V_{m+1} - V_m)/dt (shaft surface speed = 1)"),
             "P": ("E / M", "contact pressure per unit modal mass (p = M P)"),
-            "Q": ("E / M", "friction traction per unit modal mass (q = M Q)")},
-    kernel=("U", "V", "vU", "vV", "aU", "aV"), kernel_dim="node", kernel_note="scheme state for resuming",
+            "Q": ("E / M", "friction traction per unit modal mass (q = M Q)"),
+            "gap": ("R", "gap U - delta at t_{m+1} (where the constraint of the step acts)")},
     energy_units="E R^2 / M", energy_note="energy of the scheme", node_label="node",
     source="reduced model [12] (corrected), explicit scheme of docs/theory/brake-ring.md",
-    key_attrs=("nodes", "beta2", "courant"), scheme=RingScheme)
+    key_attrs=("nodes", "beta2", "courant"), scheme=RingScheme, params_type=BrakeParams)
 
 
 @dataclass(frozen=True, eq=False)
@@ -117,27 +111,11 @@ class RingRun(RunRecord):
     ``kinetic``, ``fractions`` (columns `STATE_NAMES`), ``modes_U``, ``modes_V`` (complex
     Fourier coefficients ``rfft / nodes``, modes ``0..K``). Snapshots: ``snap_t`` and the
     fields ``U, V, Ud, Vd`` (``Ud, Vd`` the step velocities ``(u_{m+1} - u_m)/dt``),
-    ``P, Q`` (reactions per unit modal mass) and ``state`` (codes of `ring_scheme`).
+    ``P, Q`` (reactions per unit modal mass), ``gap`` and ``state`` (codes of
+    `stickslip.contact.states`). ``kernel``: the scheme state (dofs ``U_0, V_0, U_1, ...``).
     """
 
     FORMAT: ClassVar[RunFormat] = _FORMAT
-
-
-def _start(scheme: RingScheme, ini: InitialCondition, contact: bool) -> dict:
-    """Kernel arrays ``u_0, v_{-1}, a_{-1}`` such that the first step sees the given velocities.
-
-    ``a_{-1}`` is the internal acceleration at ``u_0`` plus the steady reactions at nodes in
-    contact (``U <= delta``), and ``v_{-1} = v_0 - dt a_{-1}``: then the predictor ``v*_0``
-    equals the given ``v_0`` up to ``dt beta2`` times the change of the reactions, which is
-    exact for the free problem and for an unperturbed steady state.
-    """
-    p, c = scheme.params, scheme.coefficients
-    aU, aV = scheme.accelerations(ini.U, ini.V)
-    if contact:
-        touching = ini.U <= p.delta
-        aU, aV = aU + touching * c.g * p.delta, aV + touching * p.friction * c.g * p.delta
-    return {"U": ini.U.copy(), "V": ini.V.copy(), "vU": ini.Ud - scheme.dt * aU, "vV": ini.Vd - scheme.dt * aV,
-            "aU": aU, "aV": aV}
 
 
 def integrate(params: BrakeParams, nodes: int = 512, t_end: float | None = None, *, transits: float | None = None,
@@ -180,34 +158,5 @@ def integrate(params: BrakeParams, nodes: int = 512, t_end: float | None = None,
     t_end, settings = prepare(scheme, t_end=t_end, transits=transits, samples_per_transit=samples_per_transit,
                               snapshot_every=snapshot_every, tail=tail, modes=modes, contact=contact,
                               initial=initial, progress=progress)
-    run = resume(RingRun, checkpoint, scheme, settings) if checkpoint is not None else None
-    if run is None:
-        run = RingRun(scheme, settings, {}, {}, _start(scheme, initial, contact), 0)
-    p, N = scheme.params, scheme.nodes
-    P, Q, state, work = np.zeros(N), np.zeros(N), np.zeros(N, np.int8), np.zeros((2, N))
-
-    def step(k):
-        advance(k["U"], k["V"], k["vU"], k["vV"], k["aU"], k["aV"], P, Q, state, work, settings["chunk"], scheme.dt,
-                scheme.coef, p.delta, p.friction, scheme.beta2, settings["contact"])
-
-    def record(done, k, series, snaps):
-        _record(scheme, run.settings, done, k, P, Q, state, work, series, snaps)
-
-    return loop(run, checkpoint, every, progress, t_end, step, record)
-
-
-def _record(s, st, done, k, P, Q, state, work, series, snaps):
-    m = done * st["chunk"] - 1  # index of the last step: fields at t_m
-    w = ((k["U"] - work[0]) / s.dt, (k["V"] - work[1]) / s.dt)
-    ref = _reference(s) if st["contact"] else (0.0, 0.0)
-    kin, ela = energies(work[0], work[1], k["U"], k["V"], s.dt, s.coef, *ref)
-    rec = {"t": m * s.dt, "kinetic": kin, "energy": kin + ela,
-           "fractions": np.bincount(state, minlength=len(STATE_NAMES)) / s.nodes,
-           "modes_U": np.fft.rfft(work[0])[:st["modes"] + 1] / s.nodes,
-           "modes_V": np.fft.rfft(work[1])[:st["modes"] + 1] / s.nodes}
-    for key, v in rec.items():
-        series.setdefault(key, []).append(v)
-    if snapshot_due(done, st):
-        for key, v in {"snap_t": m * s.dt, "U": work[0].copy(), "V": work[1].copy(), "Ud": w[0], "Vd": w[1],
-                       "P": P.copy(), "Q": Q.copy(), "state": state.copy()}.items():
-            snaps.setdefault(key, []).append(v)
+    return run_explicit(RingRun, scheme, scheme.dofs(initial.U, initial.V), scheme.dofs(initial.Ud, initial.Vd),
+                        settings, t_end, checkpoint=checkpoint, every=every, progress=progress)

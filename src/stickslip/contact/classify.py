@@ -1,11 +1,12 @@
-"""Automatic classification of the limit regime of a ring run (paper [14], [17]-[20]).
+"""Automatic classification of the limit regime of a contact run (paper [14], [17]-[20]).
 
-Per node and step the scheme knows its state: stick [17], positive slip [18], reverse
+Works on any run of the books of `stickslip.contact.runs` whose contact nodes lie on a
+closed line (the ring, the FE annulus). Per node and step the scheme knows its state: stick [17], positive slip [18], reverse
 slip [19] or separation [20]. Over the densely sampled tail of a run, `classify` gives
 
 * the zone fractions (time averages) and the regime name, the present zones joined in the
   order stick, slip, separation, reverse-slip (e.g. ``stick-slip-separation``);
-* the mode number ``n``: the number of stick zones around the ring in the frame of the
+* the mode number ``n``: the number of stick zones along the contact line in the frame of the
   wave (the stick masks of the snapshots shifted back by ``c t`` and averaged; a zone is a
   run of at least ``min_run`` nodes occupied at least half as often as the most occupied
   node; contact zones if nothing sticks), and ``n_fft``, the dominant Fourier mode of ``V``;
@@ -22,37 +23,15 @@ slip [19] or separation [20]. Over the densely sampled tail of a run, `classify`
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
-from ... import validation as check
-from ...errors import ParameterError
-from .scheme import SEPARATION, STATE_NAMES, STICK
+from .. import validation as check
+from ..errors import ParameterError
+from .states import SEPARATION, STATE_NAMES, STICK, count_zones, regime_name
 
-__all__ = ["RegimeResult", "classify", "regime_name", "count_zones", "pattern_shift"]
-
-_ORDER = ("stick", "slip", "separation", "reverse_slip")
-
-
-def regime_name(present) -> str:
-    """``stick-slip-separation-reverse-slip`` style name of the set of present zones."""
-    names = [k for k in _ORDER if k in set(present)]
-    return "-".join(k.replace("_", "-") for k in names) if names else "none"
-
-
-def count_zones(mask: np.ndarray, min_run: int = 1) -> int:
-    """Number of periodic runs of ``True`` of length >= ``min_run`` in a 1-D mask."""
-    mask = np.asarray(mask, dtype=bool)
-    if mask.all():
-        return 1
-    if not mask.any():
-        return 0
-    start = int(np.argmin(mask))  # rotate so that the ring starts outside a run
-    m = np.concatenate([[False], np.roll(mask, -start), [False]]).astype(np.int8)
-    d = np.diff(m)
-    lengths = np.flatnonzero(d == -1) - np.flatnonzero(d == 1)
-    return int(np.sum(lengths >= min_run))
+__all__ = ["RegimeResult", "classify", "pattern_shift", "pattern_speed"]
 
 
 def pattern_shift(x1: np.ndarray, x2: np.ndarray, max_shift: float = np.pi) -> float:
@@ -76,36 +55,49 @@ def _shift(x, s, theta):
 
 @dataclass(frozen=True)
 class RegimeResult:
-    """Limit regime of a run: zones, mode number, wave speed, stationarity."""
+    """Limit regime of a run: zones, mode number, wave speed, stationarity.
+
+    ``relative_speeds`` holds ``c`` over each reference speed of the scheme
+    (`ExplicitScheme.speed_scales`), read as attributes ``c_over_<name>`` (for the ring,
+    ``c_over_sqrt_a``: ``c`` over the reduced model's P-wave speed ``sqrt(a)``).
+    """
 
     regime: str
     fractions: dict
     n: int
     n_fft: int
     c: float
-    c_over_sqrt_a: float
     stationary: bool
     residual: float
     state_mismatch: float
     window: tuple
     snapshots: int
     params: dict
+    relative_speeds: dict = field(default_factory=dict)
+
+    def __getattr__(self, name):
+        speeds = self.__dict__.get("relative_speeds", {})
+        if name.startswith("c_over_") and name[len("c_over_"):] in speeds:
+            return speeds[name[len("c_over_"):]]
+        raise AttributeError(name)
 
     def to_dict(self) -> dict:
-        out = {k: getattr(self, k) for k in ("regime", "n", "n_fft", "c", "c_over_sqrt_a", "stationary",
-                                             "residual", "state_mismatch", "snapshots")}
+        out = {k: getattr(self, k) for k in ("regime", "n", "n_fft", "c")}
+        out.update({f"c_over_{k}": v for k, v in self.relative_speeds.items()})
+        out.update({k: getattr(self, k) for k in ("stationary", "residual", "state_mismatch", "snapshots")})
         out.update({"fractions": dict(self.fractions), "window": list(self.window), "params": dict(self.params)})
         return {k: (float(v) if isinstance(v, np.floating) else v) for k, v in out.items()}
 
 
 def classify(run, transits: float | None = None, min_fraction: float = 0.01, min_run: int = 2,
              tol: float = 0.1) -> RegimeResult:
-    """Classify the last ``transits`` (default: the run's dense tail) of a `RingRun`.
+    """Classify the last ``transits`` (default: the run's dense tail) of a contact run.
 
     Parameters
     ----------
-    run : RingRun
-        A run with at least 3 snapshots in the window.
+    run : RunRecord
+        A run of `stickslip.contact.runs` (a `RingRun`, a `FemRun`) with at least 3
+        snapshots in the window.
     transits : float, optional
         Window length in wave transits; default the ``tail`` of the run.
     min_fraction : float
@@ -133,20 +125,22 @@ def classify(run, transits: float | None = None, min_fraction: float = 0.01, min
     state, U, V, ts = (run.snapshots[k][sel] for k in ("state", "U", "V", "snap_t"))
     power = np.mean(np.abs(run.series["modes_V"][ser]) ** 2, axis=0)
     n_fft = int(np.argmax(power[1:]) + 1)
-    c = _speed(V, ts, n_fft)
+    c = pattern_speed(V, ts, n_fft)
     n = 0
     for mask, kind in ((state == STICK, "stick"), (state != SEPARATION, "slip")):
         if fr[kind] >= min_fraction and n == 0:
             n = count_zones(_wave_frame(mask, c * (ts - ts[0]), s.dtheta), min_run)
     n = n_fft if n == 0 else n
     residual, mismatch = _stationarity(s.theta, U, V, state, ts, c)
-    return RegimeResult(regime, fr, n, n_fft, c, c / np.sqrt(s.coefficients.a),
-                        bool(residual < tol and mismatch < tol), residual, mismatch,
-                        (float(ts[0]), float(ts[-1])), int(sel.size), s.params.to_dict())
+    return RegimeResult(regime, fr, n, n_fft, c, bool(residual < tol and mismatch < tol), residual, mismatch,
+                        (float(ts[0]), float(ts[-1])), int(sel.size), s.params.to_dict(),
+                        {k: c / v for k, v in s.speed_scales.items()})
 
 
-def _speed(V, ts, n_fft):
-    steps = [pattern_shift(V[i], V[i + 1], np.pi / n_fft) for i in range(len(ts) - 1)]
+def pattern_speed(X: np.ndarray, ts: np.ndarray, n: int) -> float:
+    """Speed of the pattern of the snapshots ``X[i]`` (rows at times ``ts``): shifts of at
+    most ``pi / n`` between consecutive snapshots, accumulated and fitted against time."""
+    steps = [pattern_shift(X[i], X[i + 1], np.pi / n) for i in range(len(ts) - 1)]
     return float(np.polyfit(ts, np.concatenate([[0.0], np.cumsum(steps)]), 1)[0])
 
 

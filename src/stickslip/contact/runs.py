@@ -1,12 +1,21 @@
-"""Explicit contact runs around the ring: schedule, records, checkpoints (shared).
+"""Checkpointed run books of an explicit contact scheme: schedule, records, resume.
 
-The reduced-model integrator (`ring`) and the finite elements (`fem`) advance different
-schemes but keep the same books: a time series sampled ``samples_per_transit`` times per
-wave transit, snapshots of the contact nodes every ``snapshot_every`` transits and at every
-sample of the last ``tail`` transits, and a netCDF checkpoint written every ``every`` time
-units, on any exception and at the end. A run resumed from its checkpoint is bitwise
-identical to an uninterrupted one (float64 throughout, and the scheme state is stored).
-This module holds those books; each model supplies a `RunFormat`, a step and a recorder.
+Every contact model (the ring of the reduced model, the FE annulus) advances its scheme
+(`stickslip.contact.scheme.ExplicitScheme`) and keeps the same books:
+
+* a time series sampled ``samples_per_transit`` times per P-wave transit: the energy of
+  the deviation from steady sliding, the kinetic energy, the fraction of contact nodes in
+  each state, Fourier modes of the normal and tangential displacements along the contact
+  line;
+* snapshots of the contact nodes (``U, V`` normal and tangential displacements, their
+  step velocities ``Ud, Vd``, the reactions ``P, Q``, the ``gap`` at ``t_{m+1}`` and the
+  ``state``) every ``snapshot_every`` transits and at every sample of the last ``tail``;
+* a netCDF checkpoint written every ``every`` time units, on any exception and at the end.
+
+A run resumed from its checkpoint is bitwise identical to an uninterrupted one (float64
+throughout, and the scheme state is stored); a checkpoint of another run is refused.
+A model supplies a `RunFormat` (units and names of its fields, its scheme and parameter
+types) and a `RunRecord` subclass; `run_explicit` does the rest.
 """
 
 from __future__ import annotations
@@ -21,36 +30,50 @@ import xarray as xr
 
 from .. import validation as check
 from ..errors import ParameterError
-from .reduced.params import BrakeParams, PhysicalParams
-from .ring.scheme import STATE_NAMES
+from .scheme import StepState
+from .states import STATE_ATTRS, STATE_NAMES, state_fractions
 
-__all__ = ["RunFormat", "RunRecord", "schedule", "prepare", "save", "resume", "loop", "run_to_dataset",
-           "dataset_to_run", "settings_key"]
+__all__ = ["RunFormat", "RunRecord", "schedule", "prepare", "save", "resume", "loop", "run_explicit",
+           "run_to_dataset", "dataset_to_run", "settings_key", "snapshot_due"]
 
 _KEYS = ("chunk", "samples_total", "snap_every", "tail_samples", "samples_per_transit", "modes", "contact",
          "initial", "initial_hash")
+_SNAPSHOT = ("U", "V", "Ud", "Vd", "P", "Q", "gap")
+_KERNEL = ("u", "v", "a", "ref")
 
 
 @dataclass(frozen=True)
 class RunFormat:
-    """How one model's run is stored: snapshot fields, scheme state, scheme constructor."""
+    """How one model's run is stored.
 
-    fields: dict            # snapshot field -> (units, long_name)
-    kernel: tuple           # names of the scheme-state arrays stored for resuming
-    kernel_dim: str         # their dimension name
-    kernel_note: str
+    ``fields`` maps each snapshot field of `_SNAPSHOT` (``U, V, Ud, Vd, P, Q, gap``) to its
+    ``(units, long_name)``; ``traction_scale(scheme)`` turns reactions per unit mass into
+    the stored ``P, Q``; ``params_type`` has ``to_attrs()`` and ``from_attrs(attrs)``;
+    ``scheme(params, *key)`` rebuilds the scheme from the ``key_attrs`` stored in attrs.
+    """
+
+    fields: dict
     energy_units: str
     energy_note: str
     node_label: str         # "node" or "contact node"
     source: str
-    key_attrs: tuple        # scheme constructor arguments after params, stored in attrs
-    scheme: Callable        # scheme(params, *key values)
+    key_attrs: tuple
+    scheme: Callable
+    params_type: type
+    traction_scale: Callable = staticmethod(lambda scheme: 1.0)
     extra_attrs: Callable = staticmethod(lambda scheme: {})
 
 
 @dataclass(frozen=True, eq=False)
 class RunRecord:
-    """A run's books. Subclasses set ``FORMAT``; series and snapshots read as attributes."""
+    """A run's books. Subclasses set ``FORMAT``; series and snapshots read as attributes.
+
+    Series (one row per sample): ``t``, ``energy`` (of the deviation from steady sliding,
+    `ExplicitScheme.energies`), ``kinetic``, ``fractions`` (columns `STATE_NAMES`),
+    ``modes_U``, ``modes_V`` (``rfft / nodes`` of ``U``, ``V`` along the contact line).
+    Snapshots: ``snap_t``, ``U``, ``V``, ``Ud``, ``Vd``, ``P``, ``Q``, ``gap``, ``state``.
+    ``kernel``: the scheme state ``u, v, a`` and the reference ``ref`` (steady sliding).
+    """
 
     FORMAT: ClassVar[RunFormat]
     scheme: object
@@ -61,7 +84,7 @@ class RunRecord:
     samples_done: int
 
     @property
-    def params(self) -> BrakeParams:
+    def params(self):
         return self.scheme.params
 
     @property
@@ -75,6 +98,10 @@ class RunRecord:
     @property
     def t_end(self) -> float:
         return float(self.samples_done * self.settings["chunk"] * self.scheme.dt)
+
+    @property
+    def transits(self) -> float:
+        return self.t_end / self.scheme.transit_time
 
     def __getattr__(self, name):
         for store in ("series", "snapshots"):
@@ -102,13 +129,6 @@ def settings_key(run) -> tuple:
                                                        if k not in ("samples_total", "tail_samples"))
 
 
-def _params_attrs(params: BrakeParams) -> dict:
-    out = {k: v for k, v in params.to_dict().items() if k != "physical"}
-    if params.physical is not None:
-        out.update({f"physical_{k}": v for k, v in params.to_dict()["physical"].items()})
-    return out
-
-
 def run_to_dataset(run) -> xr.Dataset:
     fmt, s, st = run.FORMAT, run.scheme, run.settings
     N, K = s.theta.size, st["modes"] + 1
@@ -123,8 +143,7 @@ def run_to_dataset(run) -> xr.Dataset:
         "fraction": (("sample", "kind"), col(ser, "fractions", (0, 4)),
                      {"units": "1", "long_name": f"fraction of {fmt.node_label}s in each state"}),
         "state": (("snapshot", "node"), col(snp, "state", (0, N), np.int8),
-                  {"long_name": f"{fmt.node_label} state", "flag_values": [0, 1, 2, 3],
-                   "flag_meanings": " ".join(STATE_NAMES)}),
+                  {"long_name": f"{fmt.node_label} state", **STATE_ATTRS}),
     }
     for name in ("U", "V"):
         z = col(ser, f"modes_{name}", (0, K), complex)
@@ -132,27 +151,28 @@ def run_to_dataset(run) -> xr.Dataset:
             data[f"modes_{name}_{part}"] = (("sample", "mode"), arr, {"units": "R", "long_name": f"rfft({name})/N"})
     for name, (units, long) in fmt.fields.items():
         data[name] = (("snapshot", "node"), col(snp, name, (0, N)), {"units": units, "long_name": long})
-    for name in fmt.kernel:
-        data[f"kernel_{name}"] = (fmt.kernel_dim, run.kernel[name], {"long_name": fmt.kernel_note})
+    for name in _KERNEL:
+        data[f"kernel_{name}"] = ("dof", run.kernel[name], {"long_name": "scheme state for resuming"})
     coords = {"t": ("sample", col(ser, "t", 0), {"units": "1/Omega", "long_name": "time Omega t"}),
               "snap_t": ("snapshot", col(snp, "snap_t", 0), {"units": "1/Omega"}),
               "theta": ("node", s.theta, {"units": "rad"}), "kind": ("kind", list(STATE_NAMES)),
               "mode": ("mode", np.arange(K))}
-    attrs = {**_params_attrs(s.params), **dict(zip(fmt.key_attrs, _scheme_key(s, fmt))), **fmt.extra_attrs(s),
+    attrs = {**s.params.to_attrs(), **dict(zip(fmt.key_attrs, _scheme_key(s, fmt))), **fmt.extra_attrs(s),
              "dt": s.dt, "transit_time": s.transit_time, "samples_done": run.samples_done,
              "complete": int(run.complete), **{k: (int(v) if isinstance(v, bool) else v) for k, v in st.items()},
              "source": fmt.source}
     return xr.Dataset(data, coords=coords, attrs=attrs)
 
 
+def _plain(value):
+    return value.item() if hasattr(value, "item") else value
+
+
 def dataset_to_run(cls, ds: xr.Dataset):
     fmt, a = cls.FORMAT, ds.attrs
-    physical = {k[len("physical_"):]: float(v) for k, v in a.items() if k.startswith("physical_")}
-    params = BrakeParams(float(a["xi"]), float(a["nu"]), float(a["gamma"]), float(a["delta"]), float(a["friction"]),
-                         physical=PhysicalParams(**physical) if physical else None)
-    key = [a[k].item() if hasattr(a[k], "item") else a[k] for k in fmt.key_attrs]
-    scheme = fmt.scheme(params, *key)
-    settings = {k: (a[k].item() if hasattr(a[k], "item") else a[k]) for k in _KEYS}
+    params = fmt.params_type.from_attrs(a)
+    scheme = fmt.scheme(params, *[_plain(a[k]) for k in fmt.key_attrs])
+    settings = {k: _plain(a[k]) for k in _KEYS}
     settings["contact"] = bool(settings["contact"])
     series = {"t": ds["t"].values, "energy": ds["energy"].values, "kinetic": ds["kinetic"].values,
               "fractions": ds["fraction"].values}
@@ -160,7 +180,7 @@ def dataset_to_run(cls, ds: xr.Dataset):
         series[f"modes_{name}"] = ds[f"modes_{name}_re"].values + 1j * ds[f"modes_{name}_im"].values
     snapshots = {"snap_t": ds["snap_t"].values, "state": ds["state"].values.astype(np.int8)}
     snapshots.update({name: ds[name].values for name in fmt.fields})
-    kernel = {name: ds[f"kernel_{name}"].values.copy() for name in fmt.kernel}
+    kernel = {name: ds[f"kernel_{name}"].values.copy() for name in _KERNEL}
     return cls(scheme, settings, series, snapshots, kernel, int(a["samples_done"]))
 
 
@@ -254,3 +274,41 @@ def snapshot_due(done: int, st: dict) -> bool:
     """Snapshots every ``snap_every`` samples and at every sample of the tail."""
     return done % st["snap_every"] == 0 or done > st["samples_total"] - st["tail_samples"] or \
         done == st["samples_total"]
+
+
+def run_explicit(cls, scheme, u0, v0, settings: dict, t_end: float, *, checkpoint=None, every=None, progress=None):
+    """Run ``scheme`` from displacement ``u0`` and velocity ``v0`` with the books of ``cls``.
+
+    ``settings`` come from `prepare`; with ``checkpoint`` the run resumes from the file if
+    it holds this run (else `ParameterError`), and is written as it goes.
+    """
+    run = resume(cls, checkpoint, scheme, settings) if checkpoint is not None else None
+    if run is None:
+        start = scheme.initial_state(u0, v0, settings["contact"])
+        ref = scheme.steady_reference()[0] if settings["contact"] else np.zeros_like(start.u)
+        run = cls(scheme, settings, {}, {}, {"u": start.u, "v": start.v, "a": start.a, "ref": ref.copy()}, 0)
+    out = scheme.new_output()
+    (normal, tangent), (gap0, _) = scheme.contact_dofs, scheme.surface
+    scale = run.FORMAT.traction_scale(scheme)
+    st = run.settings
+
+    def step(k):
+        scheme.advance(StepState(k["u"], k["v"], k["a"]), st["chunk"], st["contact"], out)
+
+    def record(done, k, series, snaps):
+        m = done * st["chunk"] - 1  # index of the last step: fields at t_m
+        u0_, u1 = out.u_prev, k["u"]
+        kin, ela = scheme.energies(u0_, u1, k["ref"])
+        U, V = u0_[normal], u0_[tangent]
+        rec = {"t": m * scheme.dt, "kinetic": kin, "energy": kin + ela, "fractions": state_fractions(out.state),
+               "modes_U": np.fft.rfft(U)[:st["modes"] + 1] / U.size, "modes_V": np.fft.rfft(V)[:st["modes"] + 1] / V.size}
+        for key, v in rec.items():
+            series.setdefault(key, []).append(v)
+        if snapshot_due(done, st):
+            fields = {"snap_t": m * scheme.dt, "U": U, "V": V, "Ud": (u1[normal] - U) / scheme.dt,
+                      "Vd": (u1[tangent] - V) / scheme.dt, "P": scale * out.lam_n, "Q": scale * out.lam_t,
+                      "gap": u1[normal] - gap0, "state": out.state.copy()}
+            for key, v in fields.items():
+                snaps.setdefault(key, []).append(v)
+
+    return loop(run, checkpoint, every, progress, t_end, step, record)

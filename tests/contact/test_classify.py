@@ -5,9 +5,9 @@ import numpy as np
 import pytest
 
 from stickslip.brake import BrakeParams, growth_rates
-from stickslip.brake.ring.integrate import RingRun, integrate
-from stickslip.brake.ring.classify import classify, count_zones, pattern_shift, regime_name
-from stickslip.brake.ring.scheme import SEPARATION, SLIP_NEG, SLIP_POS, STICK, RingScheme
+from stickslip.brake.ring import RingRun, RingScheme, integrate
+from stickslip.contact import (SEPARATION, SLIP_NEG, SLIP_POS, STICK, classify, count_zones, pattern_shift,
+                               regime_name)
 from stickslip.errors import ParameterError
 
 BASE = BrakeParams(xi=1.5, nu=0.3, gamma=1.0, delta=0.001, friction=0.7)

@@ -1,0 +1,178 @@
+"""Compiled kernels of the explicit beta2 scheme with forward-increment multipliers ([22], [23]).
+
+The semi-discrete problem is ``M u'' = -K u + C^T lambda`` with a lumped (diagonal) mass
+``M`` and one reaction pair per contact node: ``lambda_n`` on its normal dof and
+``lambda_t`` on its tangential dof. With ``A_m = -M^{-1} K u_m`` (the model's operator),
+one step is (Carpenter, Taylor & Katona 1991; the paper's [22], [23]):
+
+    predictor:  v*_m = v_{m-1} + dt ((1 - beta2) a_{m-1} + beta2 A_m),
+                u*_{m+1} = u_m + dt v*_m + dt^2/2 A_m,
+    contact:    r_n = max(0, (g_j - u*_n) / (c dt^2)),                  c = beta2 + 1/2,
+                r_t = clip((u_t,m + dt s_j - u*_t) / (c dt^2), -f r_n, f r_n),
+    corrector:  u_{m+1} = u* + c dt^2 r,   a_m = A_m + r,   v_m = v*_m + beta2 dt r,
+
+``r = M^{-1} lambda`` (reactions per unit mass), ``g_j`` the position of the rigid surface
+along the normal of node ``j`` (``u_n >= g_j``) and ``s_j`` its tangential speed. Because
+``u_{m+1}`` depends on ``r_m`` through ``c dt^2`` exactly (``c dt^2 = dt^2/2`` from
+``u*`` plus ``beta2 dt^2`` from ``v*``), the normal multiplier makes ``u_n = g_j`` where it is
+positive, and the tangential one makes a sticking node move with the surface; clipping
+it to ``[-f r_n, f r_n]`` solves the discrete Coulomb law, the slip velocity being affine
+and increasing in ``r_t``. The mass is diagonal and each multiplier acts on one dof, so
+this is exact node by node, with no iteration (``docs/theory/contact.md``).
+
+`explicit_step` does the predictor, the multipliers and the corrector once ``A_m`` is
+known. `advance` is the compiled loop: it computes ``A_m`` from one of two forms of the
+operator ``M^{-1} K`` and calls `explicit_step`:
+
+* a CSR matrix (`csr_apply`): any operator, the general path for any mesh;
+* a stencil (`stencil_apply`): a block-circulant operator on ``n_r`` closed rings of ``n_theta``
+  nodes with two dofs each (``2 (i n_theta + j) + c``, couplings to the 3 x 3 neighbouring
+  nodes, the same for every ``j``), read from ``n_r x 36`` numbers instead of ``nnz``:
+  the FE annulus (``n_r`` layers) and the reduced model on the ring (``n_r = 1``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from .states import SEPARATION, SLIP_NEG, SLIP_POS
+
+__all__ = ["explicit_step", "predictor", "csr_apply", "stencil_apply", "advance", "multiplier_factor"]
+
+
+@njit(cache=True)
+def multiplier_factor(beta2, dt):
+    """``(beta2 + 1/2) dt^2``: how much a reaction per unit mass moves ``u_{m+1}`` ([23], erratum B5)."""
+    return (beta2 + 0.5) * dt * dt
+
+
+@njit(cache=True)
+def predictor(u, v, a, A, dt, beta2):
+    """Explicit Newmark predictor in place: ``v <- v*_m``, ``u <- u*_{m+1}``, ``a <- A_m``."""
+    for k in range(u.shape[0]):
+        vs = v[k] + dt * ((1.0 - beta2) * a[k] + beta2 * A[k])
+        v[k] = vs
+        u[k] += dt * vs + 0.5 * dt * dt * A[k]
+        a[k] = A[k]
+
+
+@njit(cache=True)
+def explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, contact, lam_n, lam_t, state, ut_old):
+    """One step of the scheme in place, given ``A = -M^{-1} K u_m``.
+
+    ``u, v, a`` hold ``u_m, v_{m-1}, a_{m-1}`` on entry and ``u_{m+1}, v_m, a_m`` on exit.
+    Contact node ``j`` has its normal dof ``normal[j]`` and tangential dof ``tangent[j]``,
+    the rigid surface at ``gap0[j]`` along the normal and moving at ``speed[j]``.
+    ``lam_n, lam_t, state`` receive the reactions per unit mass and the node states;
+    ``ut_old`` is scratch of the size of ``normal``. ``contact=False``: no reactions.
+    """
+    nc = normal.shape[0]
+    for j in range(nc):
+        ut_old[j] = u[tangent[j]]
+    predictor(u, v, a, A, dt, beta2)
+    cdt2 = multiplier_factor(beta2, dt)
+    on = 1.0 if contact else 0.0
+    for j in range(nc):  # branch-free, so that the loop vectorises
+        r, t = normal[j], tangent[j]
+        p = on * max((gap0[j] - u[r]) / cdt2, 0.0)
+        trial = (ut_old[j] + dt * speed[j] - u[t]) / cdt2
+        lim = f * p
+        q = min(max(trial, -lim), lim)
+        touch = p > 0.0
+        state[j] = SEPARATION * (1 - touch) + touch * (SLIP_POS * (trial > lim) + SLIP_NEG * (trial < -lim))
+        lam_n[j], lam_t[j] = p, q
+        a[r] += p
+        a[t] += q
+        v[r] += beta2 * dt * p
+        v[t] += beta2 * dt * q
+        u[r] = gap0[j] if touch else u[r]
+        u[t] += cdt2 * q
+
+
+@njit(cache=True)
+def csr_apply(indptr, indices, data, u, out):
+    """``out = -A u`` for a CSR matrix ``A`` (``(indptr, indices, data)``, e.g. ``M^{-1} K``)."""
+    for i in range(out.shape[0]):
+        acc = 0.0
+        for k in range(indptr[i], indptr[i + 1]):
+            acc += data[k] * u[indices[k]]
+        out[i] = -acc
+
+
+
+@njit(cache=True)
+def _single_ring(C, u, out):
+    """`stencil_apply` for one ring of nodes (``n_r = 1``): one pass, branch-free inside."""
+    N = out.shape[0] // 2
+    m00, m01, m10, m11 = C[0, 1, 0, 0, 0], C[0, 1, 0, 0, 1], C[0, 1, 0, 1, 0], C[0, 1, 0, 1, 1]
+    c00, c01, c10, c11 = C[0, 1, 1, 0, 0], C[0, 1, 1, 0, 1], C[0, 1, 1, 1, 0], C[0, 1, 1, 1, 1]
+    p00, p01, p10, p11 = C[0, 1, 2, 0, 0], C[0, 1, 2, 0, 1], C[0, 1, 2, 1, 0], C[0, 1, 2, 1, 1]
+    for k in range(2, 2 * N - 2, 2):
+        um, vm, uc, vc, up, vp = u[k - 2], u[k - 1], u[k], u[k + 1], u[k + 2], u[k + 3]
+        out[k] = -(m00 * um + m01 * vm + c00 * uc + c01 * vc + p00 * up + p01 * vp)
+        out[k + 1] = -(m10 * um + m11 * vm + c10 * uc + c11 * vc + p10 * up + p11 * vp)
+    for j in (0, N - 1):  # periodic wrap
+        jm = j - 1 if j > 0 else N - 1
+        jp = j + 1 if j < N - 1 else 0
+        um, vm, uc, vc, up, vp = u[2 * jm], u[2 * jm + 1], u[2 * j], u[2 * j + 1], u[2 * jp], u[2 * jp + 1]
+        out[2 * j] = -(m00 * um + m01 * vm + c00 * uc + c01 * vc + p00 * up + p01 * vp)
+        out[2 * j + 1] = -(m10 * um + m11 * vm + c10 * uc + c11 * vc + p10 * up + p11 * vp)
+
+
+@njit(cache=True)
+def stencil_apply(C, u, out):
+    """``out = -A u`` for the block-circulant ``A`` of stencil ``C[i, di + 1, dj + 1, c, c']``:
+    the coupling of dof ``c`` of node ``(i, j)`` with dof ``c'`` of node ``(i + di, (j + dj) mod
+    n_theta)``; layers ``i + di`` outside ``[0, n_r)`` are fixed (zero)."""
+    n_r = C.shape[0]
+    if n_r == 1:
+        _single_ring(C, u, out)
+        return
+    N = out.shape[0] // (2 * n_r)
+    for k in range(out.shape[0]):
+        out[k] = 0.0
+    for i in range(n_r):
+        base = 2 * i * N
+        for di in range(-1, 2):
+            i2 = i + di
+            if i2 < 0 or i2 >= n_r:
+                continue
+            b2 = 2 * i2 * N
+            for dj in range(-1, 2):
+                c00, c01 = C[i, di + 1, dj + 1, 0, 0], C[i, di + 1, dj + 1, 0, 1]
+                c10, c11 = C[i, di + 1, dj + 1, 1, 0], C[i, di + 1, dj + 1, 1, 1]
+                jlo = 1 if dj == -1 else 0
+                jhi = N - 1 if dj == 1 else N
+                off = b2 + 2 * dj
+                for j in range(jlo, jhi):
+                    ur, ut = u[off + 2 * j], u[off + 2 * j + 1]
+                    out[base + 2 * j] -= c00 * ur + c01 * ut
+                    out[base + 2 * j + 1] -= c10 * ur + c11 * ut
+                if dj != 0:  # periodic wrap
+                    j, j2 = (0, N - 1) if dj == -1 else (N - 1, 0)
+                    ur, ut = u[b2 + 2 * j2], u[b2 + 2 * j2 + 1]
+                    out[base + 2 * j] -= c00 * ur + c01 * ut
+                    out[base + 2 * j + 1] -= c10 * ur + c11 * ut
+
+
+@njit(cache=True)
+def advance(C, indptr, indices, data, u, v, a, normal, tangent, gap0, speed, nsteps, dt, beta2, f, contact, lam_n,
+            lam_t, state, work):
+    """``nsteps`` steps of the scheme in place, ``A_m = -(M^{-1} K) u_m``.
+
+    ``M^{-1} K`` is the stencil ``C`` (`stencil_apply`) if ``C`` is not empty, else the CSR
+    matrix ``(indptr, indices, data)`` (`csr_apply`). ``work`` receives ``u_m`` of the last
+    step; the other arguments are those of `explicit_step`.
+    """
+    A = np.empty(u.shape[0])
+    ut_old = np.empty(normal.shape[0])
+    stencil = C.shape[0] > 0
+    for step in range(nsteps):
+        if stencil:
+            stencil_apply(C, u, A)
+        else:
+            csr_apply(indptr, indices, data, u, A)
+        if step == nsteps - 1:
+            work[:] = u
+        explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, contact, lam_n, lam_t, state, ut_old)

@@ -1,0 +1,274 @@
+"""The explicit-scheme interface shared by every contact model (ring, FE annulus, general FE).
+
+`ExplicitScheme` is the contract a model's discretisation meets to use the shared
+kernel (`stickslip.contact.kernel`), the run books (`stickslip.contact.runs`) and the
+classification (`stickslip.contact.classify`). A model writes a frozen dataclass with the
+fields ``params``, ``beta2`` and ``courant``, calls `ExplicitScheme.validate_time_step` in
+``__post_init__``, and defines:
+
+* ``omega_max``: the highest free angular frequency of the discrete problem (no contact);
+* ``transit_time``: the time a P-wave takes to run once along the contact line;
+* ``theta``: the positions of the contact nodes along the closed contact line [rad];
+* ``mass``: the lumped mass per dof (a number or an array), for the energies;
+* ``contact_dofs``: the normal and tangential dof of every contact node (two int arrays);
+* ``surface``: the rigid surface per contact node, ``(gap0, speed)``: ``u_n >= gap0``
+  and its tangential speed;
+* the operator ``M^{-1} K``: either ``stencil`` (structured rings of nodes, see
+  `kernel.stencil_apply`: the fast path) or ``operator_matrix()`` (a scipy sparse matrix:
+  the general path);
+* ``steady_reference()``: steady sliding ``u_e`` and its reactions per unit mass
+  ``(r_n, r_t)`` per contact node (the start of a run and the zero of its energy).
+
+What it gets: the time step and its CFL limit, the order, the numerical damping
+of a free mode, the starting state of a run, the step itself and the scheme's energies.
+"""
+
+from __future__ import annotations
+
+from abc import ABC, abstractmethod
+from dataclasses import dataclass
+from functools import cached_property
+
+import numpy as np
+import scipy.sparse as sp
+
+from .. import validation as check
+from ..errors import ParameterError
+from .kernel import advance, csr_apply, stencil_apply
+
+__all__ = ["ExplicitScheme", "StepState", "StepOutput", "amplification_matrix", "discrete_rates", "stencil_matrix"]
+
+
+def amplification_matrix(w2, beta2) -> np.ndarray:
+    """One step of the scheme for ``x'' = -lambda x``, ``w2 = lambda dt^2`` (complex allowed):
+    ``(u_m, v_{m-1} dt, a_{m-1} dt^2) -> (u_{m+1}, v_m dt, a_m dt^2)``."""
+    am = np.array([-w2, 0.0, 0.0], dtype=complex)
+    vm = np.array([0.0, 1.0, 1.0 - beta2]) + beta2 * am
+    um = np.array([1.0, 0.0, 0.0]) + vm + 0.5 * am
+    return np.array([um, vm, am])
+
+
+def discrete_rates(lam, dt: float, beta2: float) -> np.ndarray:
+    """``log(z)/dt`` of the amplification factor ``z`` of largest modulus, for ``x'' = -lambda x``.
+
+    The fully discrete counterpart of ``s = sqrt(-lambda)`` (vectorised over ``lam``).
+    """
+    lam = np.asarray(lam, dtype=complex)
+    out = np.empty(lam.shape, dtype=complex)
+    for idx, value in np.ndenumerate(lam):
+        z = np.linalg.eigvals(amplification_matrix(value * dt**2, beta2))
+        out[idx] = np.log(z[np.argmax(np.abs(z))]) / dt
+    return out
+
+
+_NO_STENCIL = np.zeros((0, 3, 3, 2, 2))
+
+
+def stencil_matrix(C: np.ndarray, n_theta: int) -> sp.csr_matrix:
+    """The sparse matrix of the stencil ``C[i, di + 1, dj + 1, c, c']`` on ``n_r = len(C)`` rings of
+    ``n_theta`` nodes (`kernel.stencil_apply` applies minus it without forming it)."""
+    n_r = C.shape[0]
+    i, di, dj, c, c2 = (a.ravel() for a in np.meshgrid(*map(np.arange, C.shape), indexing="ij"))
+    val = C.ravel()
+    ok = (val != 0.0) & (i + di - 1 >= 0) & (i + di - 1 < n_r)
+    i, di, dj, c, c2, val = i[ok], di[ok] - 1, dj[ok] - 1, c[ok], c2[ok], val[ok]
+    j = np.arange(n_theta)
+    rows = 2 * (i[:, None] * n_theta + j) + c[:, None]
+    cols = 2 * ((i + di)[:, None] * n_theta + (j + dj[:, None]) % n_theta) + c2[:, None]
+    n = 2 * n_r * n_theta
+    K = sp.csr_matrix((np.repeat(val, n_theta), (rows.ravel(), cols.ravel())), shape=(n, n))
+    K.sort_indices()
+    return K
+
+
+@dataclass(eq=False)
+class StepState:
+    """The scheme's state between steps: ``u = u_m``, ``v = v_{m-1}``, ``a = a_{m-1}`` (updated in place)."""
+
+    u: np.ndarray
+    v: np.ndarray
+    a: np.ndarray
+
+    def copy(self) -> "StepState":
+        return StepState(self.u.copy(), self.v.copy(), self.a.copy())
+
+
+@dataclass(eq=False)
+class StepOutput:
+    """What the last step of `ExplicitScheme.advance` leaves: ``u_prev`` (its ``u_m``), the
+    reactions per unit mass ``lam_n, lam_t`` and the ``state`` code of every contact node."""
+
+    u_prev: np.ndarray
+    lam_n: np.ndarray
+    lam_t: np.ndarray
+    state: np.ndarray
+
+
+class ExplicitScheme(ABC):
+    """Explicit beta2 scheme [22] with forward-increment multipliers [23] (see the module docstring)."""
+
+    beta2: float
+    courant: float
+
+    def validate_time_step(self) -> None:
+        """Check and normalise ``beta2`` in [1/2, 1] and ``courant`` in (0, 1]."""
+        object.__setattr__(self, "beta2", check.in_range("beta2", self.beta2, 0.5, 1.0))
+        object.__setattr__(self, "courant", check.in_range("courant", self.courant, 0.0, 1.0, lo_open=True))
+
+    # --- what a model defines -----------------------------------------------------------
+    @property
+    @abstractmethod
+    def omega_max(self) -> float:
+        """Highest free angular frequency of the discrete problem."""
+
+    @property
+    @abstractmethod
+    def transit_time(self) -> float:
+        """Time for a P-wave to run once along the contact line."""
+
+    @property
+    @abstractmethod
+    def theta(self) -> np.ndarray:
+        """Positions of the contact nodes along the closed contact line [rad]."""
+
+    @property
+    @abstractmethod
+    def mass(self):
+        """Lumped mass per dof (number or array)."""
+
+    @property
+    @abstractmethod
+    def contact_dofs(self) -> tuple[np.ndarray, np.ndarray]:
+        """``(normal, tangent)``: the two dofs of every contact node (int64 arrays)."""
+
+    @property
+    @abstractmethod
+    def surface(self) -> tuple[np.ndarray, np.ndarray]:
+        """``(gap0, speed)`` per contact node: the rigid surface is at ``u_n = gap0`` and moves at ``speed``."""
+
+
+    @abstractmethod
+    def steady_reference(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Steady sliding: ``u_e`` and the reactions per unit mass ``(r_n, r_t)`` per contact node."""
+
+    # --- the operator: a stencil (fast path) or a sparse matrix (general path) ----------
+    @property
+    def stencil(self) -> np.ndarray | None:
+        """Stencil of ``M^{-1} K`` on structured rings of nodes (`kernel.stencil_apply`), or None."""
+        return None
+
+    def operator_matrix(self):
+        """``M^{-1} K`` as a scipy sparse matrix (by default, from the stencil)."""
+        if self.stencil is None:
+            raise NotImplementedError(f"{type(self).__name__} defines neither stencil nor operator_matrix()")
+        return stencil_matrix(self.stencil, self.nodes)
+
+    def apply(self, u: np.ndarray, out: np.ndarray | None = None, sparse: bool = False) -> np.ndarray:
+        """``-M^{-1} K u`` (the internal accelerations); ``sparse=True`` forces the general path."""
+        u = np.ascontiguousarray(u, dtype=float)
+        out = np.empty_like(u) if out is None else out
+        if self.stencil is not None and not sparse:
+            stencil_apply(self.stencil, u, out)
+        else:
+            A = self.sparse_operator
+            csr_apply(A.indptr, A.indices, A.data, u, out)
+        return out
+
+    # --- what every scheme gets ---------------------------------------------------------
+    @cached_property
+    def sparse_operator(self):
+        """`operator_matrix` in CSR form with sorted int64 indices (for the compiled kernels)."""
+        A = self.operator_matrix().tocsr()
+        A.sort_indices()
+        return type(A)((A.data.astype(float), A.indices.astype(np.int64), A.indptr.astype(np.int64)),
+                       shape=A.shape)
+
+    @property
+    def dt_max(self) -> float:
+        """CFL limit ``sqrt(2/beta2) / omega_max`` of the free discrete problem."""
+        return float(np.sqrt(2.0 / self.beta2) / self.omega_max)
+
+    @property
+    def dt(self) -> float:
+        return self.courant * self.dt_max
+
+    @property
+    def steps_per_transit(self) -> float:
+        return self.transit_time / self.dt
+
+    @property
+    def order(self) -> int:
+        """Order of accuracy in time: 2 for central differences (``beta2 = 1/2``), 1 otherwise."""
+        return 2 if self.beta2 == 0.5 else 1
+
+    @property
+    def nodes(self) -> int:
+        """Number of contact nodes."""
+        return int(self.theta.size)
+
+    @property
+    def dtheta(self) -> float:
+        return 2.0 * np.pi / self.nodes
+
+    @property
+    def speed_scales(self) -> dict:
+        """Named reference speeds [rad per unit time]: a classification reports ``c`` over each."""
+        return {}
+
+    def step_factor(self, omega) -> np.ndarray:
+        """Spectral radius per step of the scheme for a free mode of frequency ``omega``."""
+        out = [np.abs(np.linalg.eigvals(amplification_matrix((w * self.dt) ** 2, self.beta2))).max()
+               for w in np.ravel(omega)]
+        return np.reshape(out, np.shape(omega))
+
+    def energies(self, u0: np.ndarray, u1: np.ndarray, ref: np.ndarray | None = None) -> tuple[float, float]:
+        """``(kinetic, elastic)`` at ``t_{m+1/2}``: ``w^T M w / 2`` and ``(u_m - u_e)^T K (u_{m+1} - u_e) / 2``.
+
+        ``w = (u_{m+1} - u_m)/dt``, ``u_e = ref`` (default 0). Their sum is conserved by central
+        differences without contact; with contact its change over a step is the work
+        ``(r_m - r_e) . M (u_{m+1} - u_{m-1}) / 2`` of the reactions.
+        """
+        w = (u1 - u0) / self.dt
+        x0, x1 = (u0, u1) if ref is None else (u0 - ref, u1 - ref)
+        mass = self.mass
+        return 0.5 * float(np.dot(mass * w, w)), -0.5 * float(np.dot(x0, mass * self.apply(x1)))
+
+    def initial_state(self, u0: np.ndarray, v0: np.ndarray, contact: bool = True) -> StepState:
+        """``u_0, v_{-1}, a_{-1}`` such that the first step starts from displacement ``u0`` and velocity ``v0``.
+
+        ``a_{-1}`` is the internal acceleration at ``u0`` plus the steady reactions at the
+        contact nodes touching the surface, and ``v_{-1} = v0 - dt a_{-1}``: exact for the free
+        problem and for unperturbed steady sliding.
+        """
+        u0, v0 = (np.array(x, dtype=float) for x in (u0, v0))
+        if u0.shape != v0.shape or u0.shape != self.sparse_operator.shape[:1]:
+            raise ParameterError("initial", f"arrays of shape {u0.shape}, {v0.shape}",
+                                 f"two arrays of shape {self.sparse_operator.shape[:1]}")
+        a = self.apply(u0)
+        if contact:
+            (normal, tangent), (gap0, _) = self.contact_dofs, self.surface
+            _, r_n, r_t = self.steady_reference()
+            touching = u0[normal] <= gap0
+            a[normal] += touching * r_n
+            a[tangent] += touching * r_t
+        return StepState(u0, v0 - self.dt * a, a)
+
+    def new_output(self) -> StepOutput:
+        n = self.nodes
+        return StepOutput(np.zeros(self.sparse_operator.shape[0]), np.zeros(n), np.zeros(n), np.zeros(n, np.int8))
+
+    def advance(self, state: StepState, nsteps: int = 1, contact: bool = True, out: StepOutput | None = None, *,
+                sparse: bool = False) -> StepOutput:
+        """Advance ``state`` by ``nsteps`` steps in place; return what the last step leaves.
+
+        ``contact=False`` switches contact and friction off; ``sparse=True`` takes the general
+        sparse-matrix path even where the scheme has a stencil (the same operator).
+        """
+        nsteps = check.positive_int("nsteps", nsteps)
+        out = self.new_output() if out is None else out
+        (normal, tangent), (gap0, speed) = self.contact_dofs, self.surface
+        A = self.sparse_operator
+        C = self.stencil if self.stencil is not None and not sparse else _NO_STENCIL
+        advance(C, A.indptr, A.indices, A.data, state.u, state.v, state.a, normal, tangent, gap0, speed, nsteps,
+                self.dt, self.beta2, self.params.friction, bool(contact), out.lam_n, out.lam_t, out.state, out.u_prev)
+        return out

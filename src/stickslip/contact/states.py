@@ -1,0 +1,58 @@
+"""States of a contact node and the names of the regimes they make up (paper [17]-[20]).
+
+At every step the explicit scheme (`stickslip.contact.kernel`) leaves each contact node in
+one of four states, stored as ``int8`` codes:
+
+====  ================  ======================================================
+code  name              meaning
+====  ================  ======================================================
+0     ``stick``         in contact, moving with the rigid surface [17]
+1     ``slip``          in contact, slower than the surface (forward slip) [18]
+2     ``reverse_slip``  in contact, faster than the surface [19]
+3     ``separation``    no contact, zero reactions [20]
+====  ================  ======================================================
+
+A regime is named by the states present, joined in the order stick, slip, separation,
+reverse slip: ``stick-slip-separation``, say.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["STICK", "SLIP_POS", "SLIP_NEG", "SEPARATION", "STATE_NAMES", "STATE_ATTRS", "regime_name",
+           "count_zones", "state_fractions"]
+
+STICK, SLIP_POS, SLIP_NEG, SEPARATION = 0, 1, 2, 3
+STATE_NAMES = ("stick", "slip", "reverse_slip", "separation")
+#: CF attributes of a variable holding state codes.
+STATE_ATTRS = {"flag_values": [STICK, SLIP_POS, SLIP_NEG, SEPARATION], "flag_meanings": " ".join(STATE_NAMES)}
+
+_ORDER = ("stick", "slip", "separation", "reverse_slip")
+
+
+def regime_name(present) -> str:
+    """``stick-slip-separation-reverse-slip`` style name of a set of state names (``none`` if empty)."""
+    names = [k for k in _ORDER if k in set(present)]
+    return "-".join(k.replace("_", "-") for k in names) if names else "none"
+
+
+def count_zones(mask: np.ndarray, min_run: int = 1) -> int:
+    """Number of runs of ``True`` of length >= ``min_run`` in a periodic 1-D mask (a closed contact line)."""
+    mask = np.asarray(mask, dtype=bool)
+    if mask.all():
+        return 1
+    if not mask.any():
+        return 0
+    start = int(np.argmin(mask))  # rotate so that the line starts outside a run
+    m = np.concatenate([[False], np.roll(mask, -start), [False]]).astype(np.int8)
+    d = np.diff(m)
+    lengths = np.flatnonzero(d == -1) - np.flatnonzero(d == 1)
+    return int(np.sum(lengths >= min_run))
+
+
+def state_fractions(state: np.ndarray) -> np.ndarray:
+    """Fraction of the nodes in each state (columns in the order of `STATE_NAMES`), over the last axis."""
+    state = np.asarray(state)
+    counts = np.stack([np.sum(state == code, axis=-1) for code in range(len(STATE_NAMES))], axis=-1)
+    return counts / state.shape[-1]
