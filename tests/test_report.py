@@ -50,13 +50,13 @@ def test_registry_lists_the_paper_figures():
 
 def test_unreproduced_claims_are_findings_not_failures(tmp_path):
     from stickslip.figures import Check, FigureSpec
-    from stickslip.report import FigureOutcome, Summary, _markdown
+    from stickslip.report import FigureOutcome, Summary, markdown_report
 
     spec = FigureSpec("x", "X", "model", "claim", "method", None, None, None)
     checks = [Check("numerics", True, "1", "1"), Check("paper says 8 modes", False, "5", "8", claim=True)]
     summary = Summary(tmp_path, True, [FigureOutcome(spec, checks, 0.0, False, "x.png")])
     assert summary.passed and summary.to_dict()["figures"][0]["not_reproduced"] == ["paper says 8 modes"]
-    text = _markdown(summary)
+    text = markdown_report(summary)
     assert "**not reproduced**" in text and "0 of 1 marked claims" in text
     failing = Summary(tmp_path, True, [FigureOutcome(spec, [Check("numerics", False, "2", "1")], 0.0, False, "x.png")])
-    assert not failing.passed and "**FAIL**" in _markdown(failing)
+    assert not failing.passed and "**FAIL**" in markdown_report(failing)

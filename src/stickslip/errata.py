@@ -181,14 +181,14 @@ ERRATA: list[Erratum] = [
         'caption of Figure 6 "The phase diagram (V, V\') for the stick-slip regime for different angular velocity Ω" (identical to Figure 5); the text says Figure 6 shows "phase diagrams for stick-slip-separation wave in the plane of the normal velocity and normal displacement".',
         "stick-slip-separation waves in the `(U, U')` plane (and `(V, V')` alongside) for several `Ω`.",
         '(see the tests)',
-        ('tests/brake/test_waves_figures.py::test_checks_pass_on_computed_data', ),
+        ('tests/figures/brake/test_waves.py::test_checks_pass_on_computed_data', ),
     ),
     Erratum(
         'W4', 'Figure 5: "different normal contact pressure" vs "different angular velocity Ω"',
         'the text says Figure 5 shows stick-slip phase diagrams "for different normal contact pressure"; the caption says "for different angular velocity Ω".',
         "in the reduced model the stick-slip waves do not depend on the mismatch (hence on the pressure `P_e = gδ`) except through the shift `V_e = fgδ/h` of `V`: changing the pressure only translates the `(V, V')` diagram. Distinct diagrams come from `Ω`, and they are homothetic (`cΩ` fixed, amplitudes ∝ `Ω`). The caption is the consistent reading.",
         'with `V = V_e + W` the slip equation and the stick-exit condition are free of `δ` (`docs/theory/brake-waves.md` §7); numerically `c` is constant to `1e−12` along the stick-slip part of a `δ`-family.',
-        ('tests/brake/waves/test_solve.py::test_stick_slip_waves_do_not_depend_on_the_mismatch', 'tests/brake/waves/test_continuation.py::test_stick_slip_part_has_a_constant_speed', 'tests/brake/test_waves_figures.py::test_figure_5_waves_are_self_similar_in_omega', ),
+        ('tests/brake/waves/test_solve.py::test_stick_slip_waves_do_not_depend_on_the_mismatch', 'tests/brake/waves/test_continuation.py::test_stick_slip_part_has_a_constant_speed', 'tests/figures/brake/test_waves.py::test_figure_5_waves_are_self_similar_in_omega', ),
     ),
     Erratum(
         'W5', '§3.1 "stick-separation" (Figure 8) has no counterpart in the reduced model [12]',

@@ -19,7 +19,7 @@ from pathlib import Path
 
 import xarray as xr
 
-from . import __version__
+from . import __version__, plotting
 from .errata import ERRATA, to_markdown
 from .errors import ParameterError
 from .figures import Check, FigureSpec, registry
@@ -129,14 +129,15 @@ def reproduce(out: Path, *, quick: bool = False, only: str | None = None, force:
         source = registry()[spec.data_from] if spec.data_from else spec
         ds, cached = _load_or_compute(source, data_dir, quick, fingerprint, force and source is spec)
         image = f"{spec.key}.png"
-        spec.plot(ds, out / image)
+        plotting.save(spec.plot(ds), out / image)
         checks = spec.check(ds)
         summary.outcomes.append(FigureOutcome(spec, checks, time.perf_counter() - start, cached, image))
         write_report(summary)  # keep the report current while the run proceeds
     return summary
 
 
-def _markdown(summary: Summary) -> str:
+def markdown_report(summary: Summary) -> str:
+    """The report of ``summary`` in Markdown."""
     now = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     checks = [c for o in summary.outcomes for c in o.checks]
     n_checks = sum(not c.claim for c in checks)
@@ -185,10 +186,10 @@ img{{max-width:100%}}code{{background:#f4f4f4}}</style></head><body>
 def write_report(summary: Summary) -> None:
     import markdown
 
-    md = _markdown(summary)
+    md = markdown_report(summary)
     (summary.out / "report.md").write_text(md)
     body = markdown.markdown(md, extensions=["tables"])
     (summary.out / "report.html").write_text(_HTML.format(body=body))
 
 
-__all__ = ["reproduce", "Summary", "ERRATA"]
+__all__ = ["reproduce", "Summary", "FigureOutcome", "markdown_report", "write_report", "ERRATA"]

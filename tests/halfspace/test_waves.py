@@ -7,7 +7,7 @@ import pytest
 
 from stickslip.errors import ParameterError
 from stickslip.halfspace import Material, radok, rayleigh_speed_ratio, wave_speed_ratio
-from stickslip.halfspace.waves import _rayleigh_function
+from stickslip.halfspace.waves import rayleigh_function
 
 
 def test_wave_speeds_from_moduli():
@@ -23,7 +23,7 @@ def test_wave_speeds_from_moduli():
 def test_rayleigh_root(nu):
     xi = rayleigh_speed_ratio(nu)
     assert 0.87 < xi < 0.96
-    assert abs(_rayleigh_function(xi, wave_speed_ratio(nu))) < 1e-13
+    assert abs(rayleigh_function(xi, wave_speed_ratio(nu))) < 1e-13
     # Viktorov's approximation (0.862 + 1.14 nu)/(1 + nu), good to about 1.5 %
     assert xi == pytest.approx((0.862 + 1.14 * nu) / (1 + nu), rel=1.5e-2)
 

@@ -8,7 +8,7 @@ from scipy.integrate import solve_ivp
 
 from stickslip.friction import Coulomb, LinearWeakening
 from stickslip.oscillator import Mode, Oscillator
-from stickslip.oscillator._kernel import run_affine
+from stickslip.oscillator.kernel import run_affine
 from stickslip.oscillator.flows import AffineSlip, NumericSlip
 
 # (damping, tau): undamped, damped, negatively damped, overdamped, critically damped, growing node

@@ -16,7 +16,7 @@ The names below are the public API; the figures of the paper live in `stickslip.
 
 from .reduced import (STEEL, BrakeParams, GrowthRates, ModeGrowth, PhysicalParams, ReducedCoefficients,
                       SteadySliding, coefficients, coupling, growth_rate_limit, growth_rates, most_unstable_mode,
-                      neutral_radius_ratio, shape_integrals, steady_sliding)
+                      neutral_radius_ratio, separation_number, shape_integrals, steady_sliding)
 from .ring import InitialCondition, RegimeResult, RingRun, RingScheme, classify, integrate, perturbed_steady, \
     transit_time
 from .waves import REGIMES as WAVE_REGIMES
@@ -24,7 +24,7 @@ from .waves import TravellingWave, WaveBranch, continue_waves, find_waves, trave
 
 __all__ = ["BrakeParams", "PhysicalParams", "STEEL", "ReducedCoefficients", "coefficients", "coupling",
            "neutral_radius_ratio", "shape_integrals", "SteadySliding", "steady_sliding", "GrowthRates",
-           "ModeGrowth", "growth_rates", "growth_rate_limit", "most_unstable_mode",
+           "ModeGrowth", "growth_rates", "growth_rate_limit", "most_unstable_mode", "separation_number",
            "InitialCondition", "RingRun", "RingScheme", "integrate", "perturbed_steady", "transit_time",
            "RegimeResult", "classify", "TravellingWave", "find_waves", "travelling_wave", "WaveBranch",
            "continue_waves", "WAVE_REGIMES", "wave_persistence"]

@@ -8,7 +8,7 @@ from typing import Annotated, Optional
 import typer
 
 from ..errors import ParameterError
-from ._common import emit, output_path, progress_bar
+from .common import emit, output_path, progress_bar
 
 app = typer.Typer(no_args_is_help=True, help="Elastic annulus on a rotating shaft: reduced model (paper section 3).")
 

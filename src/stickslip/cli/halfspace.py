@@ -8,7 +8,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from ._common import emit, output_path
+from .common import emit, output_path
 
 app = typer.Typer(no_args_is_help=True, help="Rigid body sliding on an elastic half-space: periodic stick-slip waves.")
 
@@ -68,6 +68,6 @@ def fields(b: B, c: C, v_star: VStar, nu: Nu = 0.3, mu: Mu = 0.5, system: System
         if out:
             ds.to_netcdf(out)
         if plot:
-            from ..halfspace.figures import plot_fields
+            from .. import plotting
 
-            plot_fields(ds, plot)
+            plotting.save(plotting.plot_interface_fields(ds), plot)

@@ -11,7 +11,7 @@ import typer
 from ..friction import make_law
 from ..oscillator import (Oscillator, continue_cycle, continue_from_hopf, equilibrium_stability, hopf_points,
                           limit_cycle, simulate)
-from ._common import emit, output_path, progress_bar
+from .common import emit, output_path, progress_bar
 
 app = typer.Typer(no_args_is_help=True, help="The 1-DOF friction oscillator m x'' + c x' + k x = F (paper section 2).")
 
@@ -40,15 +40,14 @@ def _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping) -
     return Oscillator(mass, stiffness, normal_force, belt_speed, make_law(law.value, fs=fs, fd=fd, tau=tau), damping)
 
 
-def _write(ds, out, plot, draw) -> None:
+def _write(ds, out, plot, draw: str) -> None:
+    """Write ``ds`` to ``out`` and its plot ``stickslip.plotting.<draw>`` to ``plot`` (either may be None)."""
     if out is not None:
         ds.to_netcdf(out)
     if plot is not None:
         from .. import plotting
 
-        fig, axes = plotting.figure(2, size=(5.5, 4.2))
-        draw(axes, ds)
-        plotting.save(fig, plot)
+        plotting.save(getattr(plotting, draw)(ds), plot)
 
 
 @app.command()
@@ -62,14 +61,7 @@ def cycle(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Be
     result = limit_cycle(_osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping), x0, v0)
     emit(result.to_dict(), json, "limit cycle")
 
-    def draw(axes, ds):
-        from .. import plotting
-
-        plotting.oscillator_phase(axes[0], ds, "limit cycle")
-        axes[1].plot(ds["t"], ds["x"], lw=1)
-        axes[1].set_xlabel("t [s]"), axes[1].set_ylabel("x [m]")
-
-    _write(result.to_xarray() if (out or plot) else None, out, plot, draw)
+    _write(result.to_xarray() if (out or plot) else None, out, plot, "plot_cycle")
 
 
 @app.command("simulate")
@@ -88,14 +80,7 @@ def simulate_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_sp
     emit({"status": traj.status, "message": traj.message, "t_end": traj.t_end, "x_end": float(traj.x[-1]),
           "v_end": float(traj.v[-1]), "switches": len(traj.events), **counts}, json, "simulation")
 
-    def draw(axes, ds):
-        from .. import plotting
-
-        plotting.oscillator_phase(axes[0], ds, "phase portrait")
-        plotting.modal_line(axes[1], ds["t"].values, ds["x"].values, ds["mode"].values)
-        axes[1].set_xlabel("t [s]"), axes[1].set_ylabel("x [m]")
-
-    _write(traj.to_xarray(samples) if (out or plot) else None, out, plot, draw)
+    _write(traj.to_xarray(samples) if (out or plot) else None, out, plot, "plot_trajectory")
 
 
 @app.command()
@@ -143,16 +128,7 @@ def continue_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_sp
                 "events": data["events"]}
     emit(data, json, "continuation")
 
-    def draw(axes, ds):
-        p = ds["parameter_value"].values
-        stable = ds["stable"].values.astype(bool)
-        for ax, name in zip(axes, ("amplitude", "period")):
-            ax.plot(p, ds[name], color="0.7", lw=0.8)
-            ax.plot(p[stable], ds[name].values[stable], "o", ms=3, label="stable")
-            ax.plot(p[~stable], ds[name].values[~stable], "x", ms=3, label="unstable")
-            ax.set_xlabel(parameter), ax.set_ylabel(f"{name} [{ds[name].attrs['units']}]"), ax.legend()
-
-    _write(branch.to_xarray() if (out or plot) else None, out, plot, draw)
+    _write(branch.to_xarray() if (out or plot) else None, out, plot, "plot_branch")
 
 
 def _axis(option: str, text: str) -> tuple[str, list[float]]:
@@ -197,9 +173,4 @@ def map_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: 
     if plot:
         from .. import plotting
 
-        fig, (ax,) = plotting.figure()
-        names = list(axes)
-        mesh = ax.pcolormesh(ds[names[0]], ds[names[1]], ds["regime"].values.T, shading="nearest", vmin=0, vmax=4)
-        fig.colorbar(mesh, ax=ax, label="; ".join(f"{k} {v}" for k, v in REGIMES.items()))
-        ax.set_xlabel(names[0]), ax.set_ylabel(names[1])
-        plotting.save(fig, plot)
+        plotting.save(plotting.plot_oscillator_map(ds, REGIMES), plot)

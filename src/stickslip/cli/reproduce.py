@@ -8,7 +8,7 @@ from typing import Annotated, Optional
 import typer
 from rich.console import Console
 
-from ._common import emit
+from .common import emit
 
 
 def reproduce(out: Annotated[Path, typer.Option(help="Output directory.")] = Path("results"),

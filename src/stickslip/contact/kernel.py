@@ -100,7 +100,6 @@ def csr_apply(indptr, indices, data, u, out):
         out[i] = -acc
 
 
-
 @njit(cache=True)
 def _single_ring(C, u, out):
     """`stencil_apply` for one ring of nodes (``n_r = 1``): one pass, branch-free inside."""

@@ -146,7 +146,6 @@ class ExplicitScheme(ABC):
     def surface(self) -> tuple[np.ndarray, np.ndarray]:
         """``(gap0, speed)`` per contact node: the rigid surface is at ``u_n = gap0`` and moves at ``speed``."""
 
-
     @abstractmethod
     def steady_reference(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Steady sliding: ``u_e`` and the reactions per unit mass ``(r_n, r_t)`` per contact node."""

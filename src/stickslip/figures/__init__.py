@@ -1,13 +1,19 @@
-"""Registry of the paper's figures for `stickslip reproduce`.
+"""The paper's figures for `stickslip reproduce`: one module per figure, one registry.
 
-Each figure module defines three functions and registers them:
+A figure module (``figures/<model>/<figure>.py``) holds everything about its figure:
 
-* ``compute(quick: bool) -> xarray.Dataset``: all numbers the figure needs (no plotting);
-* ``plot(ds, path)``: draws the PNG from the dataset alone;
-* ``check(ds) -> list[Check]``: tests the paper's claim against the computed numbers.
+* ``compute(quick: bool) -> xarray.Dataset``: all the numbers the figure needs (no
+  plotting); it may take a ``cache`` folder to resume a sweep point by point;
+* ``check(ds) -> list[Check]``: the paper's claim and the verification of the computation,
+  measured in the dataset alone;
+* ``plot(ds, fig=None) -> matplotlib.figure.Figure``: draws the dataset on ``fig`` (or a new
+  figure) and returns it, without pyplot or a change of backend;
+* ``FIGURE = FigureSpec(...)``: its key, title, claim and method for the report.
 
-Computation is separated from plotting so that `reproduce` can checkpoint each
-dataset to netCDF and resume a killed run without recomputing it.
+`FIGURES` below lists the modules in the paper's order: it is the registry. Computing
+apart from plotting lets `reproduce` checkpoint each dataset to netCDF and resume a
+killed run without recomputing it. To add a figure: write the module, add it to
+`FIGURES`.
 """
 
 from __future__ import annotations
@@ -18,10 +24,14 @@ from typing import Callable
 
 import xarray as xr
 
-__all__ = ["Check", "FigureSpec", "register", "registry"]
+__all__ = ["Check", "FigureSpec", "close_check", "registry", "FIGURES"]
 
-_MODULES = ["fig2", "fig3", "oscillator_bifurcation", "oscillator_regimes", "brake_stability", "brake_waves", "brake_ring", "brake_regimes", "brake_fem", "halfspace"]
-_REGISTRY: dict[str, "FigureSpec"] = {}
+#: The figure modules (relative to this package), in the order of the report.
+FIGURES = ("oscillator.fig2", "oscillator.fig3", "oscillator.bifurcation", "oscillator.regimes",
+           "brake.stability", "brake.fig5", "brake.fig6", "brake.fig11", "brake.fig12", "brake.waves_vs_ring",
+           "brake.ring_regimes", "brake.initial_condition", "brake.regime_maps", "brake.fig7", "brake.fig8",
+           "brake.fig9", "brake.fig10", "brake.fem_regimes", "halfspace.fig14", "halfspace.inverse_map",
+           "halfspace.direct_map")
 
 
 @dataclass(frozen=True)
@@ -43,7 +53,7 @@ class Check:
 
 @dataclass(frozen=True)
 class FigureSpec:
-    """A reproducible figure: the paper's claim and how it is computed and checked."""
+    """A reproducible figure: the paper's claim and how it is computed, plotted and checked."""
 
     key: str
     title: str
@@ -51,22 +61,16 @@ class FigureSpec:
     claim: str
     method: str
     compute: Callable[[bool], xr.Dataset] | None
-    plot: Callable[[xr.Dataset, object], None]
+    plot: Callable
     check: Callable[[xr.Dataset], list[Check]]
     errata: tuple[str, ...] = field(default_factory=tuple)
     data_from: str | None = None  # reuse the dataset (and checkpoint) of another figure
 
 
-def register(spec: FigureSpec) -> FigureSpec:
-    _REGISTRY[spec.key] = spec
-    return spec
-
-
 def registry() -> dict[str, FigureSpec]:
-    """All registered figures, in the paper's order."""
-    for name in _MODULES:
-        importlib.import_module(f"{__name__}.{name}")
-    return dict(_REGISTRY)
+    """All figures by key, in the order of `FIGURES`."""
+    specs = [importlib.import_module(f"{__name__}.{name}").FIGURE for name in FIGURES]
+    return {spec.key: spec for spec in specs}
 
 
 def close_check(name: str, measured: float, expected: float, rtol: float = 0.0, atol: float = 0.0,

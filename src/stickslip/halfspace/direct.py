@@ -27,7 +27,7 @@ from scipy.optimize import brentq
 
 from .. import validation as check
 from ..errors import NoSolutionError, ParameterError
-from .inverse import _k
+from .inverse import system_factor
 from .waves import radok
 
 __all__ = ["DirectSolution", "direct_problem", "direct_map", "cbar_grid"]
@@ -153,7 +153,7 @@ def direct_problem(T, v, v_star, *, nu, mu, system: str = "printed", n_grid: int
         No wave carries this loading (the message says what was searched).
     """
     T, v, vs = _loading(T, v, v_star)
-    k = _k(system)
+    k = system_factor(system)
     n_grid = check.positive_int("n_grid", n_grid)
     grid = cbar_grid(n_grid)
     rd = radok(grid, nu, mu)
@@ -208,7 +208,7 @@ def direct_map(v_ratio, T_ratio, *, nu, mu, system: str = "printed", n_grid: int
     unique). Roots are bracketed on the ``cbar`` grid as in `direct_problem` and refined
     by vectorised bisection.
     """
-    k = _k(system)
+    k = system_factor(system)
     v_ratio = np.atleast_1d(np.asarray(v_ratio, dtype=float))
     T_ratio = np.atleast_1d(np.asarray(T_ratio, dtype=float))
     for name, arr in (("v_ratio", v_ratio), ("T_ratio", T_ratio)):

@@ -41,7 +41,7 @@ from scipy.special import roots_jacobi
 
 from .. import validation as check
 from ..errors import ParameterError
-from ._checks import b_array, real_array
+from .arrays import b_array, real_array
 from .inverse import inverse_problem
 from .waves import Radok, radok
 

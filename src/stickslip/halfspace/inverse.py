@@ -32,20 +32,22 @@ from dataclasses import dataclass
 
 import numpy as np
 import xarray as xr
+from scipy.optimize import brentq
 
 from .. import validation as check
 from ..errors import NoSolutionError, ParameterError
-from ._checks import b_array
+from .arrays import b_array
 from .waves import Radok, radok
 
 __all__ = ["SYSTEMS", "InverseSolution", "inverse_problem", "system_matrix", "determinant",
-           "closed_form", "printed_closed_form", "inverse_map"]
+           "closed_form", "printed_closed_form", "inverse_map", "b_for_loading", "system_factor"]
 
 SYSTEMS = {"printed": 2.0, "text": 1.0}
 """Factor ``k`` of the second equation: [55] as printed (2) or [53] as printed (1)."""
 
 
-def _k(system: str) -> float:
+def system_factor(system: str) -> float:
+    """The factor of the v-terms of the chosen system: 2 for the printed [54]-[55], 1 for [52]-[53]."""
     if system not in SYSTEMS:
         raise ParameterError("system", system, "one of " + ", ".join(repr(s) for s in SYSTEMS))
     return SYSTEMS[system]
@@ -83,7 +85,7 @@ def _H(b, rd: Radok, k: float):
 def system_matrix(b, cbar, v_star, nu, mu, system: str = "printed"):
     """Matrix ``M`` (shape ``(..., 2, 2)``) and right-hand side ``r`` (``(..., 2)``) of
     [54]-[55] in the unknowns ``(v, T)``."""
-    k = _k(system)
+    k = system_factor(system)
     b = b_array(b)
     rd = radok(cbar, nu, mu)
     b, _ = np.broadcast_arrays(b, rd.cbar)
@@ -98,7 +100,7 @@ def determinant(b, cbar, nu, mu, system: str = "printed"):
     Uses the simplified ``H`` (module docstring); the tests compare it with the printed
     [57] and with the determinant of `system_matrix`.
     """
-    k = _k(system)
+    k = system_factor(system)
     b = b_array(b)
     rd = radok(cbar, nu, mu)
     H = _H(b, rd, k)
@@ -190,7 +192,7 @@ def inverse_problem(b, cbar, v_star, *, nu, mu, system: str = "printed") -> Inve
         ``v_star == 0``, or (``system="text"``) ``D = 0`` at some point.
     """
     vs = _v_star(v_star)
-    k = _k(system)
+    k = system_factor(system)
     b = b_array(b)
     rd = radok(cbar, nu, mu)
     a11, a12, a21, a22, r1, r2 = _entries(b, rd, vs, k)
@@ -275,3 +277,17 @@ def _inverse_allow_singular(B, C, v_star, nu, mu, system):
         T = np.where(det != 0, (M[..., 0, 0] * r[..., 1] - M[..., 1, 0] * r[..., 0]) / det, np.nan)
     rd = radok(C, nu, mu)
     return InverseSolution(b=B, cbar=C, v_star=vs, system=system, v=v, T=T, D=D, H=H, radok=rd)
+
+
+def b_for_loading(cbar, T, v_star, *, nu, mu, system: str = "printed") -> float:
+    """The period ``b`` at which the inverse problem gives the traction ``T`` at speed ``cbar``.
+
+    For the printed system ``T`` decreases from infinity (``b -> 1``) to 0 (``b -> inf``)
+    like ``1/(b - 1)``, so the root is unique; it is bracketed in ``log(b - 1)``.
+    """
+    def g(u):
+        sol = inverse_problem(1.0 + np.exp(u), cbar, v_star, nu=nu, mu=mu, system=system)
+        return float(np.log(sol.T / T))
+
+    u = brentq(g, -30.0, 30.0, xtol=1e-14)
+    return 1.0 + float(np.exp(u))

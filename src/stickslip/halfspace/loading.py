@@ -26,7 +26,6 @@ from dataclasses import dataclass
 
 from .. import validation as check
 from ..errors import ParameterError
-from .waves import _nu
 
 __all__ = ["remote_strain", "v_star_from_stress", "stress_from_v_star", "driving_traction",
            "stresses_from_T", "Loading", "loading_from_wave"]
@@ -51,7 +50,7 @@ def remote_strain(tau_yy, young, nu, *, plane: str = "strain") -> float:
     """``eps*_xx`` under ``tau*_yy`` alone: [25] in plane strain, ``-nu tau/E`` in plane stress."""
     t = _tau_yy(tau_yy)
     E = check.positive("young", young)
-    nu = _nu(nu)
+    nu = check.poisson_ratio("nu", nu)
     if plane == "strain":
         return -nu * (1.0 + nu) * t / E
     if plane == "stress":
@@ -62,14 +61,14 @@ def remote_strain(tau_yy, young, nu, *, plane: str = "strain") -> float:
 def v_star_from_stress(cbar, tau_yy_over_G, nu) -> float:
     """``v* = V*/c2 = cbar nu (tau*_yy/G)/2`` ([26] scaled); > 0 for ``cbar, tau < 0``."""
     c = check.in_range("c", cbar, -1.0, 0.0, lo_open=True, hi_open=True)
-    return c * _nu(nu) * _tau_yy(tau_yy_over_G) / 2.0
+    return c * check.poisson_ratio("nu", nu) * _tau_yy(tau_yy_over_G) / 2.0
 
 
 def stress_from_v_star(cbar, v_star, nu) -> float:
     """``tau*_yy/G = 2 v*/(cbar nu)``: [26] solved for the remote normal stress (``nu > 0``)."""
     c = check.in_range("c", cbar, -1.0, 0.0, lo_open=True, hi_open=True)
     vs = check.positive("v_star", v_star)
-    nu = _nu(nu)
+    nu = check.poisson_ratio("nu", nu)
     if nu == 0.0:
         raise ParameterError("nu", nu, "> 0 here: with nu = 0, [26] gives V* = 0 for every tau*_yy")
     return 2.0 * vs / (c * nu)

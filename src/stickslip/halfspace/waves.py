@@ -24,22 +24,18 @@ import numpy as np
 from scipy.optimize import brentq
 
 from .. import validation as check
-from ._checks import cbar_array
+from .arrays import cbar_array
 
-__all__ = ["Material", "wave_speed_ratio", "rayleigh_speed_ratio", "Radok", "radok"]
-
-
-def _nu(nu, name: str = "nu") -> float:
-    return check.in_range(name, nu, 0.0, 0.5, hi_open=True)
+__all__ = ["Material", "wave_speed_ratio", "rayleigh_speed_ratio", "rayleigh_function", "Radok", "radok"]
 
 
 def wave_speed_ratio(nu) -> float:
     """``c1/c2 = sqrt(2 (1 - nu) / (1 - 2 nu))`` in plane strain (``0 <= nu < 1/2``)."""
-    nu = _nu(nu)
+    nu = check.poisson_ratio("nu", nu)
     return math.sqrt(2.0 * (1.0 - nu) / (1.0 - 2.0 * nu))
 
 
-def _rayleigh_function(xi, c1bar):
+def rayleigh_function(xi, c1bar):
     """Rayleigh's function ``(2 - xi^2)^2 - 4 sqrt(1 - xi^2) sqrt(1 - xi^2/c1bar^2)``."""
     return (2.0 - xi**2) ** 2 - 4.0 * np.sqrt(1.0 - xi**2) * np.sqrt(1.0 - xi**2 / c1bar**2)
 
@@ -51,7 +47,7 @@ def rayleigh_speed_ratio(nu) -> float:
     ``xi = 1``, with a single root in between; it is bracketed in (0.5, 1).
     """
     c1bar = wave_speed_ratio(nu)
-    return brentq(lambda xi: _rayleigh_function(xi, c1bar) / xi**2, 0.5, 1.0, xtol=1e-15, rtol=1e-15)
+    return brentq(lambda xi: rayleigh_function(xi, c1bar) / xi**2, 0.5, 1.0, xtol=1e-15, rtol=1e-15)
 
 
 @dataclass(frozen=True)
@@ -74,7 +70,7 @@ class Material:
 
     def __post_init__(self):
         object.__setattr__(self, "young", check.positive("young", self.young))
-        object.__setattr__(self, "poisson", _nu(self.poisson, "poisson"))
+        object.__setattr__(self, "poisson", check.poisson_ratio("poisson", self.poisson))
         object.__setattr__(self, "density", check.positive("density", self.density))
 
     @property
@@ -179,7 +175,7 @@ def radok(cbar, nu, mu) -> Radok:
         Local friction coefficient > 0.
     """
     c = cbar_array(cbar)
-    nu = _nu(nu)
+    nu = check.poisson_ratio("nu", nu)
     mu = check.positive("mu", mu)
     c1bar = wave_speed_ratio(nu)
     c2sq, r = c * c, 1.0 / c1bar**2

@@ -22,10 +22,10 @@ from ..errors import NoSolutionError
 from .model import Mode, Oscillator
 from .simulate import Engine, Trajectory
 
-__all__ = ["LimitCycle", "return_map", "limit_cycle"]
+__all__ = ["LimitCycle", "return_map", "limit_cycle", "return_horizon"]
 
 
-def _horizon(osc: Oscillator) -> float:
+def return_horizon(osc: Oscillator) -> float:
     """Time within which an orbit must come back to the section."""
     x_lo, x_hi = osc.stick_limits
     return 200 * 2 * math.pi / osc.omega + 4 * (x_hi - x_lo) / osc.belt_speed
@@ -43,7 +43,7 @@ class ReturnMap:
 
 def return_map(engine: Engine, x: float) -> ReturnMap:
     """``P(x)`` and ``P'(x)`` on the section ``v = 0`` (upward)."""
-    traj = engine.run(x, 0.0, _horizon(engine.osc), section=0.0)
+    traj = engine.run(x, 0.0, return_horizon(engine.osc), section=0.0)
     if traj.status != 1:
         reason = traj.message if traj.status < 0 else "the orbit settles without returning"
         raise NoSolutionError(f"no return to the section v = 0 from x = {x:.6g}: {reason}")
@@ -226,7 +226,7 @@ def limit_cycle(osc: Oscillator, x0: float | None = None, v0: float | None = Non
     if v0 == 0.0 and x0 < osc.equilibrium:  # already on the section: shoot from here
         start = x0
     else:
-        first = engine.run(x0, v0, _horizon(osc), section=0.0)
+        first = engine.run(x0, v0, return_horizon(osc), section=0.0)
         if first.status != 1:
             raise NoSolutionError(f"the orbit from ({x0:.6g}, {v0:.6g}) does not reach the section v = 0: "
                                   f"{first.message}")

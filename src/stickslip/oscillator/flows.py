@@ -20,7 +20,7 @@ import numpy as np
 from scipy.integrate import DOP853
 from scipy.optimize import brentq
 
-from . import _kernel
+from . import kernel
 from .model import Mode, Oscillator
 
 _EPS = np.finfo(float).eps
@@ -106,7 +106,7 @@ class AffineSlip:
         t, xi0 = 0.0, x0 - self.x_c
         yield t
         while t < t_max:
-            t = _kernel._next_piece(self.sigma, self.w02, self.om2, xi0, v0, t, t_max)
+            t = kernel.next_piece(self.sigma, self.w02, self.om2, xi0, v0, t, t_max)
             yield t
 
     def first_crossing(self, x0, v0, t_max, levels):
@@ -114,7 +114,7 @@ class AffineSlip:
         self._x0, self._v0 = x0, v0
         xi0 = x0 - self.x_c
         scale = max(abs(v0), math.sqrt(self.w02) * abs(xi0), *(abs(l) for l, _ in levels))
-        g = lambda t, level: _kernel._va(self.sigma, self.w02, self.om2, xi0, v0, t)[0] - level
+        g = lambda t, level: kernel.velocity_acceleration(self.sigma, self.w02, self.om2, xi0, v0, t)[0] - level
         t, index = _scan(g, self._pieces(x0, v0, t_max), levels, 16 * _EPS * scale)
         return (t_max, None) if index is None else (t, index)
 
@@ -125,7 +125,7 @@ class AffineSlip:
 
     def jacobian(self, t):
         """``d(x, v)(t) / d(x0, v0)``: the matrix exponential, in closed form."""
-        c, s = _kernel._cs(self.om2, t)
+        c, s = kernel.cos_sin(self.om2, t)
         e = math.exp(self.sigma * t)
         return e * np.array([[c - self.sigma * s, s], [-self.w02 * s, c + self.sigma * s]])
 

@@ -2,7 +2,7 @@
 
 The trajectory is a chain of segments, each in one mode. Slip segments use the
 closed-form flow for affine laws (no step-size error; compiled event loop in
-`_kernel`) and DOP853 with event location otherwise; stick segments are exact
+`kernel`) and DOP853 with event location otherwise; stick segments are exact
 (``x = x0 + V t``). At ``v = V`` the next mode is chosen by Filippov's rule
 (`Oscillator.mode_at_switch`): stick if the needed force is within ``f_s N``,
 otherwise slip on in the direction the spring pulls, which gives reverse slip when the
@@ -12,7 +12,6 @@ as a crossing, so there is no chattering at the switch.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Callable
@@ -22,7 +21,7 @@ import xarray as xr
 
 from .. import validation as check
 from ..errors import ParameterError
-from ._kernel import run_affine
+from .kernel import run_affine
 from .flows import AffineSlip, NumericSlip
 from .model import Mode, Oscillator
 

@@ -16,6 +16,7 @@ from scipy.integrate import solve_ivp
 
 from stickslip.brake import (BrakeParams, PhysicalParams, coefficients, growth_rate_limit, growth_rates,
                              most_unstable_mode, neutral_radius_ratio)
+from stickslip.brake.reduced import grid_growth_rates
 from stickslip.errors import ParameterError
 
 BASE = BrakeParams(xi=1.5, nu=0.3, gamma=1.0, delta=0.001, friction=0.7)  # coefficients of order 1
@@ -154,4 +155,19 @@ def test_outputs_follow_the_cli_contract():
 def test_stability_rejects_bad_input(params, modes, name):
     with pytest.raises(ParameterError) as err:
         growth_rates(params, modes)
+    assert err.value.name == name
+
+
+def test_grid_route_is_independent_of_the_closed_form():
+    p = BrakeParams(2.0, 0.45, 3e-6, 0.002, 1.3)
+    modes = [1, 2, 5]
+    assert grid_growth_rates(p, modes, nodes=13) == pytest.approx(growth_rates(p, modes).growth_rate, rel=1e-4)
+
+
+@pytest.mark.parametrize("kwargs, name", [(dict(nodes=12), "nodes"), (dict(nodes=9), "nodes"),
+                                          (dict(penalty=0.0), "penalty"), (dict(modes=[]), "modes")])
+def test_grid_route_rejects_bad_input(kwargs, name):
+    args = dict(params=BrakeParams(1.5, 0.3, 1.0, 0.001, 0.5), modes=[1, 5], nodes=13) | kwargs
+    with pytest.raises(ParameterError) as err:
+        grid_growth_rates(**args)
     assert err.value.name == name

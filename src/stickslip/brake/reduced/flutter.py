@@ -32,12 +32,14 @@ from numbers import Integral
 import numpy as np
 import xarray as xr
 
+from ... import validation as check
 from ...errors import ParameterError
 from .coefficients import ReducedCoefficients
 from .params import BrakeParams
 
 __all__ = ["ModeGrowth", "GrowthRates", "growth_rates", "most_unstable_mode", "growth_rate_limit",
-           "unstable_root", "mode_numbers"]
+           "unstable_root", "mode_numbers", "grid_growth_rates",
+           "separation_number"]
 
 
 def unstable_root(K, eps):
@@ -178,3 +180,38 @@ def growth_rate_limit(params: BrakeParams) -> float:
     """``sup_n Re s(n) = f |D| / (2 sqrt(a))``, reached as ``n -> infinity``."""
     c = _check_params(params).coefficients()
     return float(params.friction * abs(c.D) / (2.0 * np.sqrt(c.a)))
+
+
+def grid_growth_rates(params: BrakeParams, modes, nodes: int = 33, penalty: float = 1e6) -> np.ndarray:
+    """Independent route: eigenvalues of [12] linearised on a theta-grid.
+
+    Fourier-spectral derivatives on ``nodes`` (odd) points, contact by a penalty
+    ``P = -penalty g U`` (``U = delta`` is not imposed), ``Q = f P``. Each eigenvector is
+    assigned the mode ``|n|`` that dominates its V-part; fast penalty modes are dropped.
+    Returns the largest real part per requested mode. Solved at ``gamma = 1`` and scaled
+    by ``1/sqrt(gamma)`` (every coefficient is proportional to ``1/gamma``) for conditioning.
+    """
+    modes = mode_numbers(modes)
+    nodes, penalty = check.positive_int("nodes", nodes), check.positive("penalty", penalty)
+    if nodes % 2 == 0 or nodes <= 2 * modes.max():
+        raise ParameterError("nodes", nodes, f"odd and > 2 max(modes) = {2 * modes.max()}")
+    c, f = params.replace(gamma=1.0).coefficients(), params.friction
+    k = np.fft.fftfreq(nodes, 1.0 / nodes)
+    F = np.fft.fft(np.eye(nodes), axis=0)
+    d1, d2 = (np.real(np.fft.ifft(m[:, None] * F, axis=0)) for m in (1j * k, -k**2))
+    eye, kappa = np.eye(nodes), penalty * c.g
+    K = np.block([[c.b * d2 - (c.g + kappa) * eye, c.D * d1],
+                  [-c.D * d1 - f * kappa * eye, c.a * d2 - c.h * eye]])
+    zero = np.zeros_like(K)
+    lam, vec = np.linalg.eig(np.block([[zero, np.eye(2 * nodes)], [K, zero]]))
+    slow = np.abs(lam) < 0.1 * np.sqrt(kappa)
+    dominant = np.abs(k[np.argmax(np.abs(np.fft.fft(vec[nodes:2 * nodes], axis=0)), axis=0)])
+    return np.array([lam[slow & (dominant == n)].real.max() for n in modes]) / np.sqrt(params.gamma)
+
+
+def separation_number(params: BrakeParams) -> float:
+    """``S = g delta sqrt(a) / |D|``: contact is lost where ``D V' > g delta``, and a stick-slip
+    wave has ``|V'| ~ 1/sqrt(a)`` (velocities of the order of the shaft speed), so separation
+    needs ``S`` of order one or less. ``S = kappa * (gamma g) sqrt(gamma a) / (gamma |D|)``."""
+    c = params.coefficients()
+    return float(c.g * params.delta * np.sqrt(c.a) / abs(c.D))

@@ -27,7 +27,6 @@ __all__ = ["BrakeParams", "PhysicalParams", "STEEL"]
 STEEL = {"young": 2.1e11, "density": 7850.0, "poisson": 0.3}
 
 
-
 @dataclass(frozen=True)
 class PhysicalParams:
     """The brake-like system in SI units.

@@ -8,8 +8,8 @@
 """
 
 from ...contact import RegimeResult, classify
-from .integrate import InitialCondition, RingRun, integrate, perturbed_steady, transit_time
+from .integrate import InitialCondition, RingRun, initial_from_wave, integrate, perturbed_steady, transit_time
 from .scheme import RingScheme
 
 __all__ = ["RingScheme", "InitialCondition", "RingRun", "integrate", "perturbed_steady", "transit_time",
-           "RegimeResult", "classify"]
+           "RegimeResult", "classify", "initial_from_wave"]

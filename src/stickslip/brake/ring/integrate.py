@@ -31,7 +31,7 @@ from ...errors import ParameterError
 from ..reduced import BrakeParams
 from .scheme import RingScheme
 
-__all__ = ["InitialCondition", "RingRun", "integrate", "perturbed_steady", "transit_time"]
+__all__ = ["InitialCondition", "RingRun", "integrate", "perturbed_steady", "transit_time", "initial_from_wave"]
 
 
 def transit_time(params: BrakeParams) -> float:
@@ -87,6 +87,13 @@ def perturbed_steady(params: BrakeParams, nodes: int = 512, amplitude: float = 1
     U_e, V_e = scheme.fields(scheme.steady_reference()[0])
     zero = np.zeros(scheme.nodes)
     return InitialCondition(U_e, V_e + params.delta * pattern, zero, zero.copy(), "steady sliding + " + label)
+
+
+def initial_from_wave(wave, nodes: int) -> InitialCondition:
+    """The wave sampled on ``nodes`` points at ``t = 0`` (``U_t = -c U'``, ``V_t = -c V'``)."""
+    theta = 2 * np.pi * np.arange(nodes) / nodes
+    e = wave.evaluate(theta)
+    return InitialCondition(e["U"], e["V"], -wave.c * e["dU"], -wave.c * e["dV"], label=f"wave n={wave.n}")
 
 
 _FORMAT = RunFormat(

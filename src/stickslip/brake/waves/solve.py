@@ -34,6 +34,7 @@ from .zones import REVERSE, SEPARATION, SLIP, STICK, Scaling, ZoneFlows
 __all__ = ["Zone", "TravellingWave", "travelling_wave", "find_waves", "solve_layout", "REGIMES", "regime_name",
            "STICK", "SLIP", "REVERSE", "SEPARATION"]
 
+
 # --- construction ----------------------------------------------------------------------
 def _check(params, modes) -> int:
     if not isinstance(params, BrakeParams):

@@ -1,0 +1,217 @@
+"""Figure data of the FE runs of section 3.1 (Figures 7-10) and a regime map.
+
+One dataset per run set; plots (`fem.plots`) and checks (`fem.figure_checks`) read only the
+dataset. Each case is run on the default steel ring (``R = 0.1 m``, ``R* = 0.15 m``,
+``E = 2.1e11 Pa``, ``rho = 7850 kg/m^3``, ``nu = 0.3``; the paper gives no geometry for this
+section) from FE steady sliding perturbed by white noise ``1e-3 delta`` and from a seeded
+mode (``0.1 delta cos n theta`` plus the same noise), with the paper's scheme
+``beta2 = 0.9``. Budgets are in P-wave transits ``2 pi R / c_p``.
+
+* `fig7_data`: ``f = 0.2, delta = 0.004, Omega = 1 rad/s`` (paper: stick-slip, 4 modes);
+* `fig8_data`: ``f = 2, delta = 0.004, Omega = 80 rad/s`` (paper: stick-separation, 2 modes);
+* `fig9_data`: ``f = 0.7, delta = 0.001, Omega = 50 rad/s`` (paper: stick-slip-separation,
+  8 modes; Figure 9 its radial displacement, Figure 10 its contact pressure: one run set);
+* `regime_map_data`: ``f = 0.7``, ``d = 0.1 mm``, regimes over ``xi = R*/R`` and ``Omega``.
+"""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+import xarray as xr
+from matplotlib.figure import Figure
+
+from ... import plotting
+from ...brake import BrakeParams
+from ...brake.fem import FemScheme, classify_fem, fem_growth_rates, integrate_fem, perturbed_steady, slip_wave_rate
+from ...brake.fem.classify import contact_residuals
+from ...contact import SEPARATION, STATE_ATTRS, STATE_NAMES, count_zones
+from ...errors import ParameterError
+from .. import Check
+from .paper import CASES, GEOMETRY, PAPER_REGIMES
+
+__all__ = ["METHOD", "MESHES", "case_data", "common_checks", "runs_text", "separation_zones", "case_plot", "title",
+           "spacetime", "waterfall"]
+
+METHOD = ("Plane-strain annulus meshed with bilinear quadrilaterals (scikit-fem assembly, lumped mass, outer radius "
+          "clamped), explicit β2-scheme [22] with β2 = 0.9 as in the paper and forward-increment Lagrange "
+          "multipliers [23] solved exactly node by node (erratum B5); steel ring R = 0.1 m, R* = 0.15 m (the paper "
+          "gives no geometry); runs from FE steady sliding (checked against Lamé) perturbed by noise and by a seeded "
+          "mode, budgeted in P-wave transits; the contact conditions verified at every node; the limit regime "
+          "classified on the contact nodes. Mesh 512 × 32, 400 transits (quick: 256 × 16, 300).")
+
+#: (n_theta, n_r, transits per run) of the quick and full modes.
+MESHES = {True: (256, 16, 300), False: (512, 32, 400)}
+
+
+_SNAPS = 64  # tail snapshots kept (2 transits at 32 per transit)
+
+
+_SCALARS = ("n", "n_fft", "n_zones", "n_fft_P", "c_over_cp", "c_P_over_cp", "stationary", "residual",
+            "energy_mean", "energy_cv", "p_max_over_pe", "p_mean_over_pe")
+
+
+_RESIDUALS = ("P_min", "gap_min", "complementarity", "coulomb", "stick_speed", "slip_law", "slip_direction")
+
+
+def _params(case: int) -> BrakeParams:
+    f, d, om = CASES[case]
+    return BrakeParams.from_physical(om, d, f)
+
+
+def _one_run(p, N, nr, T, seed):
+    s = FemScheme(p, N, nr, 0.9)
+    ini = perturbed_steady(s) if seed is None else perturbed_steady(s, 0.1, seed, noise=1e-3)
+    t0 = time.perf_counter()
+    run = integrate_fem(p, N, nr, transits=T, initial=ini)
+    seconds = time.perf_counter() - t0
+    res, resid = classify_fem(run), contact_residuals(run)
+    tr = run.t / s.transit_time
+    per = [(tr >= k) & (tr < k + 1) for k in range(int(np.floor(tr[-1])))]
+    pe = s.steady.pressure.mean()
+    return {"regime": res.regime, **{k: getattr(res, k) for k in _SCALARS}, **{k: resid[k] for k in _RESIDUALS},
+            "fraction": [res.fractions[k] for k in STATE_NAMES], "seconds": seconds,
+            "energy": np.array([run.energy[m].mean() for m in per]),
+            "fraction_history": np.array([run.fractions[m].mean(axis=0) for m in per]),
+            "U": run.U[-_SNAPS:] / p.delta - 1.0, "Vd": run.Vd[-_SNAPS:], "P": run.P[-_SNAPS:] / pe,
+            "state": run.state[-_SNAPS:], "snap_t": run.snap_t[-_SNAPS:] / s.transit_time}
+
+
+def case_data(case: int, seeds=(None,), quick: bool = False, mesh: tuple | None = None) -> xr.Dataset:
+    """Runs of section 3.1 case ``case`` (0, 1, 2) from noise (``None``) and seeded modes.
+
+    ``mesh = (n_theta, n_r, transits)`` overrides `MESHES` (quick: 256 x 16, 300 transits;
+    full: 512 x 32, 400 transits per run).
+    """
+    if case not in (0, 1, 2):
+        raise ParameterError("case", case, "0, 1 or 2 (section 3.1 cases)")
+    N, nr, T = MESHES[bool(quick)] if mesh is None else mesh
+    p = _params(case)
+    s = FemScheme(p, N, nr, 0.9)
+    runs = [_one_run(p, N, nr, T, seed) for seed in seeds]
+    dims = ("run",)
+    data = {"regime": (dims, np.array([r["regime"] for r in runs]))}
+    for key in _SCALARS + _RESIDUALS + ("seconds",):
+        data[key] = (dims, np.array([r[key] for r in runs]))
+    data["fraction"] = (dims + ("kind",), np.array([r["fraction"] for r in runs]), {"units": "1"})
+    nt = min(len(r["energy"]) for r in runs)
+    data["energy"] = (dims + ("transit",), np.array([r["energy"][:nt] for r in runs]),
+                      {"units": "E R^2", "long_name": "energy of the deviation from steady sliding, per transit"})
+    data["fraction_history"] = (dims + ("transit", "kind"), np.array([r["fraction_history"][:nt] for r in runs]))
+    for key, units in (("U", "delta"), ("Vd", "R Omega"), ("P", "p_e"), ("state", None), ("snap_t", "transits")):
+        arr = np.array([r[key] for r in runs])
+        data[key] = (dims + ("snapshot",) + (("theta",) if arr.ndim == 3 else ()), arr,
+                     {"units": units} if units else dict(STATE_ATTRS))
+    data["U"][2]["long_name"] = "u_r(R)/d - 1 (radial displacement beyond the mismatch)"
+    g = fem_growth_rates(p, s.system, np.arange(1, N // 2 + 1))
+    data["growth"] = ("mode", g.growth_rate * s.transit_time, {"units": "1/transit", "long_name": "FE flutter"})
+    data["growth_discrete"] = ("mode", g.discrete(s.dt, 0.9).real.max(axis=1) * s.transit_time,
+                               {"units": "1/transit", "long_name": "fully discrete (beta2 = 0.9)"})
+    errors = s.steady.errors()
+    rho = slip_wave_rate(p.friction, p.nu)
+    cs_over_cp = float(np.sqrt((1 - 2 * p.nu) / (2 * (1 - p.nu))))
+    coords = {"run": ["noise" if sd is None else f"mode {sd}" for sd in seeds],
+              "seed_mode": ("run", [0 if sd is None else sd for sd in seeds]), "kind": list(STATE_NAMES),
+              "theta": s.theta, "transit": np.arange(nt), "mode": g.n}
+    attrs = {"case": case + 1, "friction": p.friction, "delta": p.delta, "omega": p.omega, "gamma": p.gamma,
+             "kappa": p.delta / np.sqrt(p.gamma), "n_theta": N, "n_r": nr, "transits": T, "beta2": 0.9,
+             "mesh": s.system.mesh.describe(), "dt": s.dt, "steps_per_transit": s.steps_per_transit,
+             "p_e": errors["p_e"], "lame_error_u": errors["u"], "lame_error_v": errors["v"],
+             "lame_error_p": errors["p"], "paper_regime": PAPER_REGIMES[case][0], "paper_modes": PAPER_REGIMES[case][1],
+             "halfspace_rate_per_transit_per_mode": float(2 * np.pi * rho.real * cs_over_cp) if rho == rho else 0.0,
+             "quick": int(bool(quick)), "geometry": GEOMETRY, "initial": "FE steady sliding + 1e-3 delta white noise (seed 0), "
+             "or + 0.1 delta cos(n theta) + 1e-3 delta noise"}
+    return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def runs_text(ds, key, fmt="{}"):
+    return ", ".join(f"{r}: {fmt.format(v)}" for r, v in zip(ds["run"].values, ds[key].values))
+
+
+def separation_zones(ds) -> np.ndarray:
+    """Median number of separation zones per snapshot, per run."""
+    return np.array([np.median([count_zones(s == SEPARATION, 1) for s in st]) for st in ds["state"].values])
+
+
+def common_checks(ds) -> list[Check]:
+    """Lamé agreement, contact residuals, instability of steady sliding."""
+    lame = max(ds.attrs["lame_error_u"], ds.attrs["lame_error_v"], ds.attrs["lame_error_p"])
+    bad = {k: max(0.0, float(v)) for k, v in (
+        ("p < 0", -ds["P_min"].min()), ("gap < 0", -ds["gap_min"].min()),
+        ("p gap", ds["complementarity"].max()), ("|q| - f p", ds["coulomb"].max()),
+        ("stick |1 - w|", ds["stick_speed"].max()), ("slip |q - f p sign(1 - w)|", ds["slip_law"].max()),
+        ("friction along the slip", -ds["slip_direction"].min()))}
+    stick = ds["fraction"].sel(kind="stick")
+    return [
+        Check("FE steady sliding on this mesh matches the Lamé solution (eq. [11] corrected)", lame < 1e-3,
+              f"max relative error u {ds.attrs['lame_error_u']:.2e}, v {ds.attrs['lame_error_v']:.2e}, "
+              f"p {ds.attrs['lame_error_p']:.2e} (p_e = {ds.attrs['p_e']:.4g} E)", "< 1e-3 (order 2 in the mesh)",
+              f"mesh {ds.attrs['mesh']}"),
+        Check("contact and Coulomb's law hold at every recorded node and step", all(v <= 1e-9 for v in bad.values()),
+              ", ".join(f"{k}: {v:.1e}" for k, v in bad.items()), "all violations <= 1e-9 (relative to p_e, d, 1)",
+              "lambda_n >= 0, gap >= 0, lambda_n gap = 0, |q| <= f p, stick: w = 1, slip: q = f p sign(1 - w)"),
+        Check("steady sliding is unstable: stick zones appear in every run", bool(stick.min() > 0.005),
+              ", ".join(f"{r}: stick {float(v):.3f}" for r, v in zip(ds["run"].values, stick.values)), "> 0.005",
+              f"flutter: fastest discrete mode n = {int(ds['growth_discrete'].idxmax())} "
+              f"({float(ds['growth_discrete'].max()):.2f} per transit, beta2 = 0.9)"),
+    ]
+
+
+def title(ds, i):
+    r = ds.isel(run=i)
+    return (f"{str(r['run'].values)}: {str(r['regime'].values)}, {int(r['n_zones'])} zones, "
+            f"c = {float(r['c_over_cp']):.2f} c_p/R")
+
+
+def case_plot(ds, fig, profile, label) -> Figure:
+    """States of every run (last 2 transits), a profile per run, energies and growth rates."""
+    nrun = ds.sizes["run"]
+    fig = Figure(figsize=(4.2 * (nrun + 1), 7.5)) if fig is None else fig
+    axes = fig.subplots(2, nrun + 1, squeeze=False)
+    th = ds["theta"].values
+    for i in range(nrun):
+        plotting.state_image(axes[0, i], ds["state"].isel(run=i).values, title(ds, i))
+        axes[0, i].set(xlabel="θ", ylabel="t [transits, last 2]" if i == 0 else "")
+        ax = axes[1, i]
+        ax.plot(th, ds[profile].isel(run=i, snapshot=-1), lw=0.9, label=label)
+        ax.plot(th, ds["P"].isel(run=i, snapshot=-1), lw=0.9, label="p / p_e")
+        ax.axhline(1.0, color="k", lw=0.4)
+        ax.set(xlabel="θ", xticks=[0, np.pi, 2 * np.pi], xticklabels=["0", "π", "2π"])
+        ax.legend(fontsize=7)
+    ax = axes[0, nrun]
+    for i in range(nrun):
+        ax.semilogy(ds["transit"], ds["energy"].isel(run=i), lw=0.8, label=str(ds["run"].values[i]))
+    ax.set(xlabel="transits", ylabel="energy of the deviation [E R²]", title="growth and saturation")
+    ax.legend(fontsize=7)
+    ax = axes[1, nrun]
+    ax.plot(ds["mode"], ds["growth"], label="FE, semi-discrete (max over branches)")
+    ax.plot(ds["mode"], ds["growth_discrete"], label="FE, β2 = 0.9 (fully discrete)")
+    hs = ds.attrs["halfspace_rate_per_transit_per_mode"]
+    if hs > 0:
+        ax.plot(ds["mode"], hs * ds["mode"], "k:", label="half-space slip wave (f > 1)")
+    ax.axhline(0, color="k", lw=0.5)
+    ax.set(xlabel="mode n", ylabel="Re s per transit", title="flutter of steady sliding",
+           ylim=(min(-1.0, float(ds["growth_discrete"].min())), 1.2 * float(ds["growth"].max())))
+    ax.legend(fontsize=7)
+    a = ds.attrs
+    fig.suptitle(f"case {a['case']}: f = {a['friction']:g}, δ = {a['delta']:g}, Ω = {a['omega']:g} rad/s "
+                 f"(κ = {a['kappa']:.3g}); paper: {a['paper_regime']}, {a['paper_modes']} modes\n{a['mesh']}, "
+                 f"β2 = 0.9, {a['transits']} transits per run", fontsize=9)
+    return fig
+
+
+def spacetime(ax, ds, i, key, label, cmap):
+    r = ds.isel(run=i)
+    im = ax.imshow(r[key].values, aspect="auto", origin="lower", cmap=cmap, interpolation="nearest",
+                   extent=(0, 2 * np.pi, float(r["snap_t"][0]), float(r["snap_t"][-1])))
+    ax.set(xlabel="θ", ylabel="t [transits]", xticks=[0, np.pi, 2 * np.pi], xticklabels=["0", "π", "2π"])
+    ax.set_title(f"{label}\n{title(ds, i)}", fontsize=8)
+    return im
+
+
+def waterfall(ax, ds, i, key, step, scale):
+    r = ds.isel(run=i)
+    for k, snap in enumerate(range(0, r.sizes["snapshot"], step)):
+        ax.plot(r["theta"], r[key].isel(snapshot=snap) / scale + k, lw=0.7, color="C0")
+    ax.set(xlabel="θ", ylabel="successive times (offset)", xticks=[0, np.pi, 2 * np.pi], xticklabels=["0", "π", "2π"])

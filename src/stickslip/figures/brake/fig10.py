@@ -1,0 +1,57 @@
+"""Figure 10 (section 3.1, FE): the contact pressure of the runs of Figure 9 (zero in separation)."""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+from matplotlib.figure import Figure
+
+from ...contact import SEPARATION
+from .. import Check, FigureSpec
+from .fem_cases import METHOD, runs_text, spacetime
+
+
+def check(ds) -> list[Check]:
+    """Case 2 (f = 0.7), contact pressure: zero in separation zones, mean p_e."""
+    P, st = ds["P"].values, ds["state"].values
+    sep = st == SEPARATION
+    return [
+        Check("the contact pressure vanishes exactly in the separation zones and is positive elsewhere",
+              bool(np.all(P[sep] == 0.0) and np.all(P[~sep] > 0.0) and sep.any()),
+              f"{int(sep.sum())} separated node-snapshots, max p there {float(P[sep].max()) if sep.any() else 0:.1e}; "
+              f"min p in contact {float(P[~sep].min()):.2e} p_e", "0 and > 0"),
+        Check("the mean contact pressure stays at the steady p_e (the mean load is set by the mismatch)",
+              bool(np.all(np.abs(ds["p_mean_over_pe"].values - 1.0) < 0.05)), runs_text(ds, "p_mean_over_pe", "{:.3f}"),
+              "1 +- 0.05", "largest p / p_e over the last transits (no paper value): "
+              + runs_text(ds, "p_max_over_pe", "{:.2f}")),
+    ]
+
+
+def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
+    """Figure 10: contact pressure ``p / p_e`` vs ``theta`` (space-time and successive profiles)."""
+    nrun = ds.sizes["run"]
+    fig = Figure(figsize=(4.5 * nrun, 8)) if fig is None else fig
+    axes = fig.subplots(2, nrun, squeeze=False)
+    for i in range(nrun):
+        im = spacetime(axes[0, i], ds, i, "P", "contact pressure p / p_e", "viridis")
+        fig.colorbar(im, ax=axes[0, i])
+        r = ds.isel(run=i)
+        for k in (0, r.sizes["snapshot"] // 4, r.sizes["snapshot"] - 1):
+            axes[1, i].plot(r["theta"], r["P"].isel(snapshot=k), lw=0.8,
+                            label=f"t = {float(r['snap_t'][k]):.2f} transits")
+        axes[1, i].axhline(1.0, color="k", lw=0.4)
+        axes[1, i].set(xlabel="θ", ylabel="p / p_e", xticks=[0, np.pi, 2 * np.pi], xticklabels=["0", "π", "2π"])
+        axes[1, i].legend(fontsize=7)
+    a = ds.attrs
+    fig.suptitle(f"Figure 10: contact pressure, f = {a['friction']:g}, δ = {a['delta']:g}, Ω = {a['omega']:g} rad/s "
+                 f"(p_e = {a['p_e']:.3g} E); {a['mesh']}", fontsize=9)
+    return fig
+
+
+FIGURE = FigureSpec(
+    key="fig10", title="Figure 10 — FE: contact pressure of the stick-slip-separation wave",
+    model="brake-like system, finite elements",
+    claim="The normal contact pressure of the stick-slip-separation wave (zero in the separation zones).",
+    method=METHOD + " Same runs as Figure 9.",
+    compute=None, data_from="fig9", plot=plot, check=check,
+)

@@ -1,0 +1,43 @@
+"""Figure 12: a travelling wave of mode 8 with reverse slip (overshoot)."""
+
+from __future__ import annotations
+
+import xarray as xr
+from matplotlib.figure import Figure
+
+from ...brake import BrakeParams, travelling_wave
+from .. import Check, FigureSpec
+from .paper import FIG12
+from .wave_cases import METHOD, cases_dataset, common_checks, phase_plot
+
+
+def compute(quick: bool = False) -> xr.Dataset:
+    """A mode-8 wave with reverse slip (overshoot): phase plane ``(V, V')``."""
+    p = BrakeParams.from_physical(FIG12["omega"], FIG12["mismatch"], FIG12["friction"])
+    wave = travelling_wave(p, FIG12["modes"], regime="stick-slip-separation-reverse-slip")
+    ds = cases_dataset([wave], [FIG12["omega"]], "omega", 1000 if quick else 4000)
+    ds.attrs["mismatch"] = FIG12["mismatch"]
+    return ds
+
+
+def check(ds: xr.Dataset) -> list[Check]:
+    w = ds["slip_velocity"].values
+    return common_checks(ds, "Fig. 12") + [
+        Check("Fig. 12: mode-8 wave with reverse slip (overshoot: V_t > 1 somewhere)",
+              bool(int(ds.attrs["modes"]) == 8 and "reverse-slip" in str(ds["structure"].values[0]) and w.min() < 0),
+              f"{ds['structure'].values[0]}, min(1 - V_t) = {w.min():.4g}", "n = 8, reverse-slip zone, min < 0"),
+    ]
+
+
+def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
+    return phase_plot(ds, fig, [("V", "dV", "V (units of R)", "V' = dV/dφ"), ("phi", "slip_velocity", "φ", "1 − V̇")],
+                      f"Fig. 12: mode-{ds.attrs['modes']} wave with reverse slip (1 − V̇ < 0: overshoot)")
+
+
+FIGURE = FigureSpec(
+    key="fig12", title="Figure 12 — mode-8 travelling wave with reverse slip (overshooting)",
+    model="brake-like system, reduced model, travelling waves",
+    claim="A traveling wave in mode 8 with reverse slip (overshooting), computed by multiple shooting.",
+    method=METHOD + " Here f = 0.2, d = 10 µm, Ω = 100 rad/s, n = 8.",
+    compute=compute, plot=plot, check=check,
+)

@@ -1,0 +1,48 @@
+"""Figure 5: stick-slip travelling waves for several shaft speeds, phase plane ``(V, V')``."""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+from matplotlib.figure import Figure
+
+from .. import Check, FigureSpec
+from .paper import FIG5
+from .wave_cases import METHOD, cases_dataset, common_checks, phase_plot, waves_over_omega
+
+
+def compute(quick: bool = False) -> xr.Dataset:
+    """Stick-slip waves (``n = 4``) for several shaft speeds: phase diagrams ``(V, V')``."""
+    waves, omegas = waves_over_omega(FIG5, "stick-slip", quick)
+    ds = cases_dataset(waves, omegas, "omega", 400 if quick else 1500)
+    ds["omega"].attrs["units"] = "rad/s"
+    ds.attrs["mismatch"] = FIG5["mismatch"]
+    return ds
+
+
+def check(ds: xr.Dataset) -> list[Check]:
+    regimes = sorted(set(str(r) for r in ds["regime"].values))
+    cw = ds["c"].values * ds["omega"].values
+    amp = np.abs(ds["dV"]).max("sample").values / ds["omega"].values
+    return common_checks(ds, "Fig. 5") + [
+        Check("Fig. 5: every wave is a stick-slip wave", regimes == ["stick-slip"], str(regimes), "['stick-slip']"),
+        Check("Fig. 5: self-similar in Omega: c Omega and max|V'|/Omega do not depend on Omega",
+              bool(np.ptp(cw) < 1e-8 * abs(cw[0]) and np.ptp(amp) < 1e-8 * amp[0]),
+              f"c Omega = {cw[0]:.8g} rad/s (spread {np.ptp(cw):.1e}), max|V'|/Omega spread {np.ptp(amp) / amp[0]:.1e}",
+              "spread < 1e-8", "stick-slip waves depend on delta/sqrt(gamma) only through V_e"),
+    ]
+
+
+def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
+    return phase_plot(ds, fig, [("V", "dV", "V (units of R)", "V' = dV/dφ")],
+                      f"Fig. 5: stick-slip waves, n = {ds.attrs['modes']}, f = {ds.attrs['friction']}, several Ω")
+
+
+FIGURE = FigureSpec(
+    key="fig5", title="Figure 5 — phase diagrams (V, V') of stick-slip waves for several Ω",
+    model="brake-like system, reduced model, travelling waves",
+    claim="Stick-slip travelling waves exist; their phase diagrams (V, V') for different angular velocities Ω "
+          "(the text says 'different normal contact pressure', see W4).",
+    method=METHOD + " Here f = 0.2, d = 0.1 mm, n = 4, several Ω.",
+    compute=compute, plot=plot, check=check, errata=("W1", "W4"),
+)

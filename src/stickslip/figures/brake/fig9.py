@@ -1,0 +1,55 @@
+"""Figure 9 (section 3.1, FE): case 2, ``f = 0.7``: a stick-slip-separation wave with 8 modes (radial displacement)."""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+from matplotlib.figure import Figure
+
+from .. import Check, FigureSpec
+from .fem_cases import METHOD, case_data, common_checks, runs_text, spacetime, waterfall
+
+
+def compute(quick: bool = False) -> xr.Dataset:
+    """Case 2 (``f = 0.7``), for Figures 9 and 10: from noise and from seeded modes 8 and 4."""
+    return case_data(1, (None, 8, 4), quick)
+
+
+def check(ds) -> list[Check]:
+    """Case 2 (f = 0.7), radial displacement: stick-slip-separation wave with 8 modes, propagating."""
+    reg = ds["regime"].values
+    return common_checks(ds) + [
+        Check("stick-slip-separation from every initial condition (paper)",
+              bool(np.all(reg == "stick-slip-separation")), runs_text(ds, "regime"), "stick-slip-separation", claim=True),
+        Check("8 modes (paper)", bool(np.any(ds["n_zones"].values == 8)),
+              f"stick zones per snapshot (median): {runs_text(ds, 'n_zones')}; dominant pressure mode: "
+              f"{runs_text(ds, 'n_fft_P')}", "8 in some run", f"time per run: {runs_text(ds, 'seconds', '{:.0f} s')}", claim=True),
+        Check("the radial displacement pattern propagates (Figure 9)",
+              bool(np.all(np.abs(ds["c_P_over_cp"].values) > 0.05)), runs_text(ds, "c_P_over_cp", "{:.3f}"),
+              "|c| > 0.05 c_p/R", "speed of the pressure pattern; separation pulses ride on it"),
+    ]
+
+
+def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
+    """Figure 9: radial displacement ``u_r(R)/d - 1`` vs ``theta`` and ``t`` (propagation)."""
+    nrun = ds.sizes["run"]
+    fig = Figure(figsize=(4.5 * nrun, 8)) if fig is None else fig
+    axes = fig.subplots(2, nrun, squeeze=False)
+    for i in range(nrun):
+        im = spacetime(axes[0, i], ds, i, "U", "u_r(R)/d - 1 (> 0: separated)", "magma")
+        fig.colorbar(im, ax=axes[0, i])
+        scale = max(float(ds["U"].isel(run=i).max()), 1e-12)
+        waterfall(axes[1, i], ds, i, "U", 4, scale)
+    a = ds.attrs
+    fig.suptitle(f"Figure 9: f = {a['friction']:g}, δ = {a['delta']:g}, Ω = {a['omega']:g} rad/s; {a['mesh']}; "
+                 f"paper: {a['paper_regime']}, {a['paper_modes']} modes", fontsize=9)
+    return fig
+
+
+FIGURE = FigureSpec(
+    key="fig9", title="Figure 9 — FE: stick-slip-separation wave with 8 modes, radial displacement",
+    model="brake-like system, finite elements",
+    claim="For Ω = 50 rad/s, δ = 0.001 and f = 0.7 a stick-slip-separation wave with 8 modes; the radial "
+          "displacement shows the propagation.",
+    method=METHOD, compute=compute, plot=plot, check=check, errata=("B5",),
+)
