@@ -24,30 +24,14 @@ import argparse
 import time
 
 import numpy as np
-from numba import njit
 
 from stickslip.brake import BrakeParams
 from stickslip.brake.fem import integrate_fem
 from stickslip.contact import StepState
-from stickslip.contact.kernel import stencil_apply
+from stickslip.contact.kernel import csr_apply, stencil_apply
+from timing import best_of
 
 
-@njit(cache=True)
-def csr_matvec(indptr, indices, data, u, out):
-    for k in range(u.shape[0]):
-        s = 0.0
-        for p in range(indptr[k], indptr[k + 1]):
-            s += data[p] * u[indices[p]]
-        out[k] = s
-
-
-def _timed(fn, n, repeat=3):
-    best = np.inf
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t0)
-    return best / n
 
 
 def main():
@@ -78,7 +62,7 @@ def main():
 
     def csr_mv():
         for _ in range(M):
-            csr_matvec(K.indptr, K.indices, K.data, u, out)  # compile
+            csr_apply(K.indptr, K.indices, K.data, u, out)  # compile
 
     def stencil_mv():
         for _ in range(M):
@@ -86,12 +70,12 @@ def main():
 
     step(1), step(1, sparse=True)  # compile
     err_paths = np.abs(step(50)["u"] - step(50, sparse=True)["u"]).max() / np.abs(step(50)["u"]).max()
-    csr_matvec(K.indptr, K.indices, K.data, u, out)  # compile
+    csr_apply(K.indptr, K.indices, K.data, u, out)  # compile
     stencil_apply(s.stencil, u, out)
     err = np.abs(-s.mass * out - K @ u).max() / np.abs(K @ u).max()
-    t_scipy, t_csr, t_sten = _timed(scipy_mv, M), _timed(csr_mv, M), _timed(stencil_mv, M)
-    t_pred, t_full = _timed(lambda: step(contact=False), M), _timed(step, M)
-    t_sparse = _timed(lambda: step(sparse=True), M)
+    t_scipy, t_csr, t_sten, t_pred, t_full, t_sparse = (
+        best_of(fn)[0] / M for fn in (scipy_mv, csr_mv, stencil_mv, lambda: step(contact=False), step,
+                                      lambda: step(sparse=True)))
     T = 5 * M / s.steps_per_transit  # long enough that the setup (steady solve, CFL eigenvalues) is amortised
     t0 = time.perf_counter()
     r = integrate_fem(p, N, nr, transits=T)

@@ -25,6 +25,7 @@ import numpy as np
 from stickslip.brake import BrakeParams
 from stickslip.brake.ring import integrate, perturbed_steady
 from stickslip.contact import StepState
+from timing import best_of
 
 
 def _fields(s, k):
@@ -74,14 +75,6 @@ def numpy_full(s, k, nsteps, delta, f):
     return U, V
 
 
-def _timed(fn, repeat=3):
-    best = np.inf
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t0)
-    return best
-
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -108,11 +101,11 @@ def main():
     err = max(np.abs(U_np - U_ref).max() / p.delta, np.abs(V_np - V_ref).max() / np.abs(V_ref).max())
     U_sp, V_sp = s.fields(compiled(n=50, sparse=True)["u"])
     err_sparse = max(np.abs(U_sp - U_ref).max() / p.delta, np.abs(V_sp - V_ref).max() / np.abs(V_ref).max())
-    t_bare_np = _timed(lambda: numpy_bare(s, fresh(), M // 10)) / (M // 10)
-    t_full_np = _timed(lambda: numpy_full(s, fresh(), M // 10, p.delta, p.friction)) / (M // 10)
-    t_full = _timed(compiled) / M
-    t_sparse = _timed(lambda: compiled(sparse=True)) / M
-    t_bare = _timed(lambda: compiled(contact=False)) / M
+    t_bare_np = best_of(lambda: numpy_bare(s, fresh(), M // 10))[0] / (M // 10)
+    t_full_np = best_of(lambda: numpy_full(s, fresh(), M // 10, p.delta, p.friction))[0] / (M // 10)
+    t_full = best_of(compiled)[0] / M
+    t_sparse = best_of(lambda: compiled(sparse=True))[0] / M
+    t_bare = best_of(lambda: compiled(contact=False))[0] / M
     T = M / s.steps_per_transit
     t0 = time.perf_counter()
     integrate(p, N, transits=T, initial=perturbed_steady(p, N))

@@ -9,7 +9,6 @@ Run: ``.venv/bin/python benchmarks/brake_waves.py``. All numbers are measured in
 
 from __future__ import annotations
 
-import time
 
 import numpy as np
 
@@ -19,6 +18,7 @@ from stickslip.brake.waves.checks import integrate_wave
 from stickslip.brake.waves.continuation import continue_waves
 from stickslip.brake.waves.zones import Scaling
 from stickslip.brake.waves.solve import travelling_wave
+from timing import best_of
 
 # the three regimes of the paper's section 3.1 (default steel ring), and the Fig. 12 wave
 CASES = [("4-mode, f = 0.2, d = 0.4 mm, 1 rad/s", (1.0, 4e-4, 0.2), 4),
@@ -26,14 +26,6 @@ CASES = [("4-mode, f = 0.2, d = 0.4 mm, 1 rad/s", (1.0, 4e-4, 0.2), 4),
          ("2-mode, f = 2, d = 0.4 mm, 80 rad/s", (80.0, 4e-4, 2.0), 2),
          ("Fig. 12, f = 0.2, d = 10 um, 100 rad/s", (100.0, 1e-5, 0.2), 8)]
 
-
-def best_of(fn, repeat=3):
-    times = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = fn()
-        times.append(time.perf_counter() - t0)
-    return min(times), out
 
 
 def main():

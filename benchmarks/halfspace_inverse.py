@@ -15,23 +15,15 @@ from __future__ import annotations
 
 import argparse
 import math
-import time
 
 import numpy as np
 
 from stickslip.halfspace import inverse_problem, wave_from_inverse
 from stickslip.halfspace.waves import wave_speed_ratio
+from timing import best_of
 
 NU, MU, VS = 0.3, 0.5, 1e-3
 
-
-def best_of(fn, repeat=3):
-    best = math.inf
-    for _ in range(repeat):
-        t = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t)
-    return best
 
 
 def bare_scalar(b, c, v_star=VS, nu=NU, mu=MU):
@@ -59,12 +51,12 @@ def main():
     b = 1.0 + 10 ** rng.uniform(-3, 3, n)
     c = -rng.uniform(1e-3, 1 - 1e-3, n)
 
-    t_vec = best_of(lambda: inverse_problem(b, c, VS, nu=NU, mu=MU))
+    t_vec = best_of(lambda: inverse_problem(b, c, VS, nu=NU, mu=MU))[0]
     sol = inverse_problem(b, c, VS, nu=NU, mu=MU)
     m = args.loop
     idx = range(m)
-    t_bare = best_of(lambda: [bare_scalar(float(b[i]), float(c[i])) for i in idx]) * n / m
-    t_api = best_of(lambda: [inverse_problem(float(b[i]), float(c[i]), VS, nu=NU, mu=MU) for i in idx]) * n / m
+    t_bare = best_of(lambda: [bare_scalar(float(b[i]), float(c[i])) for i in idx])[0] * n / m
+    t_api = best_of(lambda: [inverse_problem(float(b[i]), float(c[i]), VS, nu=NU, mu=MU) for i in idx])[0] * n / m
     api = [inverse_problem(float(b[i]), float(c[i]), VS, nu=NU, mu=MU) for i in idx]
     bare = [bare_scalar(float(b[i]), float(c[i])) for i in idx]
     err = max(max(abs(float(a.v) / sol.v[i] - 1), abs(bare[i][1] / sol.T[i] - 1)) for i, a in enumerate(api))
@@ -79,13 +71,13 @@ def main():
 
     w = wave_from_inverse(11.358175100459, -0.7, VS, nu=NU, mu=MU)
     x = np.linspace(0.0, w.b, 100_000, endpoint=False)
-    t_f = best_of(lambda: w.fields(x))
+    t_f = best_of(lambda: w.fields(x))[0]
     print(f"interface fields at 100,000 points (closed form, all fields): {t_f * 1e3:.1f} ms "
           f"({t_f / 1e5 * 1e9:.0f} ns/point)")
     z = np.linspace(0.01, w.b - 0.01, 1000) - 0.05j
-    t_q = best_of(lambda: w.phi_quadrature(z), repeat=1)
+    t_q = best_of(lambda: w.phi_quadrature(z), repeat=1)[0]
     q_err = float(np.max(np.abs(w.phi_quadrature(z) - w.phi(z))) / np.max(np.abs(w.phi(z))))
-    t_c = best_of(lambda: w.phi(z))
+    t_c = best_of(lambda: w.phi(z))[0]
     print(f"Cauchy integral [46] by quadrature at 1,000 points (Im z = -0.05): {t_q:.2f} s, "
           f"closed form {t_c * 1e3:.2f} ms -> closed form {t_q / t_c:,.0f}x faster; max rel. difference {q_err:.1e}")
 

@@ -1,9 +1,6 @@
 import json
-import subprocess
-import sys
 from pathlib import Path
 
-import pytest
 
 from stickslip.cli import run
 from stickslip.errata import ERRATA, to_markdown
@@ -52,7 +49,7 @@ def test_unreproduced_claims_are_findings_not_failures(tmp_path):
     from stickslip.figures import Check, FigureSpec
     from stickslip.report import FigureOutcome, Summary, markdown_report
 
-    spec = FigureSpec("x", "X", "model", "claim", "method", None, None, None)
+    spec = FigureSpec("x", "X", "model", "claim", "method")
     checks = [Check("numerics", True, "1", "1"), Check("paper says 8 modes", False, "5", "8", claim=True)]
     summary = Summary(tmp_path, True, [FigureOutcome(spec, checks, 0.0, False, "x.png")])
     assert summary.passed and summary.to_dict()["figures"][0]["not_reproduced"] == ["paper says 8 modes"]

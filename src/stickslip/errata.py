@@ -104,7 +104,7 @@ ERRATA: list[Erratum] = [
         "contact nodes land exactly on u_r = δ at every step for β2 = 0.9 as for 1/2.",
         ("tests/brake/ring/test_scheme.py::test_observed_order_in_time",
          "tests/brake/ring/test_scheme.py::test_stability_limit_is_the_cfl_condition",
-         "tests/brake/fem/test_fem_contact_energy.py::test_contact_conditions_at_every_node_and_step"),
+         "tests/contact/test_conditions.py::test_contact_conditions_at_every_node_and_step"),
     ),
     Erratum(
         'H1', "Section 4.1, eq. [29]: argument of φ2'",

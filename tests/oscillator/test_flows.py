@@ -1,6 +1,5 @@
 """The closed-form slip flow against an independent integrator, in every damping regime."""
 
-import math
 
 import numpy as np
 import pytest

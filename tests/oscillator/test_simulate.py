@@ -2,7 +2,6 @@ import math
 
 import numpy as np
 import pytest
-from scipy.integrate import solve_ivp
 
 from stickslip.errors import ParameterError
 from stickslip.friction import Coulomb, LinearWeakening, Stribeck, UserLaw

@@ -21,7 +21,7 @@ types) and a `RunRecord` subclass; `run_explicit` does the rest.
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable, ClassVar
 
@@ -38,7 +38,14 @@ __all__ = ["RunFormat", "RunRecord", "schedule", "prepare", "save", "resume", "l
 
 _KEYS = ("chunk", "samples_total", "snap_every", "tail_samples", "samples_per_transit", "modes", "contact",
          "initial", "initial_hash")
-_SNAPSHOT = ("U", "V", "Ud", "Vd", "P", "Q", "gap")
+#: Snapshot fields: (kind of unit, long name); a model's `RunFormat` names the units and may refine the names.
+_SNAPSHOT = {"U": ("length", "normal displacement of the contact node"),
+             "V": ("length", "tangential displacement of the contact node"),
+             "Ud": ("velocity", "normal step velocity (u_{m+1} - u_m)/dt"),
+             "Vd": ("velocity", "tangential step velocity (u_{m+1} - u_m)/dt (surface speed = 1)"),
+             "P": ("traction", "normal reaction (contact pressure)"),
+             "Q": ("traction", "tangential reaction (friction), positive along the surface motion"),
+             "gap": ("length", "gap u_n - gap0 at t_{m+1} (where the constraint of the step acts)")}
 _KERNEL = ("u", "v", "a", "ref")
 
 
@@ -46,13 +53,14 @@ _KERNEL = ("u", "v", "a", "ref")
 class RunFormat:
     """How one model's run is stored.
 
-    ``fields`` maps each snapshot field of `_SNAPSHOT` (``U, V, Ud, Vd, P, Q, gap``) to its
-    ``(units, long_name)``; ``traction_scale(scheme)`` turns reactions per unit mass into
-    the stored ``P, Q``; ``params_type`` has ``to_attrs()`` and ``from_attrs(attrs)``;
-    ``scheme(params, *key)`` rebuilds the scheme from the ``key_attrs`` stored in attrs.
+    ``units`` gives the units of ``length``, ``velocity`` and ``traction`` for the snapshot
+    fields (``U, V, Ud, Vd, P, Q, gap``), ``notes`` long names that replace the generic ones;
+    ``traction_scale(scheme)`` turns reactions per unit mass into the stored ``P, Q``;
+    ``params_type`` has ``to_attrs()`` and ``from_attrs(attrs)``; ``scheme(params, *key)``
+    rebuilds the scheme from the ``key_attrs`` stored in attrs.
     """
 
-    fields: dict
+    units: dict
     energy_units: str
     energy_note: str
     node_label: str         # "node" or "contact node"
@@ -62,6 +70,12 @@ class RunFormat:
     params_type: type
     traction_scale: Callable = staticmethod(lambda scheme: 1.0)
     extra_attrs: Callable = staticmethod(lambda scheme: {})
+    notes: dict = field(default_factory=dict)
+
+    @property
+    def fields(self) -> dict:
+        """``name -> (units, long_name)`` of every snapshot field."""
+        return {k: (self.units[kind], self.notes.get(k, note)) for k, (kind, note) in _SNAPSHOT.items()}
 
 
 @dataclass(frozen=True, eq=False)

@@ -3,8 +3,8 @@
 `ExplicitScheme` is the contract a model's discretisation meets to use the shared
 kernel (`stickslip.contact.kernel`), the run books (`stickslip.contact.runs`) and the
 classification (`stickslip.contact.classify`). A model writes a frozen dataclass with the
-fields ``params``, ``beta2`` and ``courant``, calls `ExplicitScheme.validate_time_step` in
-``__post_init__``, and defines:
+fields ``params``, ``beta2`` and ``courant``, sets ``PARAMS`` (the type of ``params``),
+calls `ExplicitScheme.validate_common` in ``__post_init__``, and defines:
 
 * ``omega_max``: the highest free angular frequency of the discrete problem (no contact);
 * ``transit_time``: the time a P-wave takes to run once along the contact line;
@@ -28,6 +28,7 @@ from __future__ import annotations
 from abc import ABC, abstractmethod
 from dataclasses import dataclass
 from functools import cached_property
+from typing import ClassVar
 
 import numpy as np
 import scipy.sparse as sp
@@ -107,11 +108,15 @@ class StepOutput:
 class ExplicitScheme(ABC):
     """Explicit beta2 scheme [22] with forward-increment multipliers [23] (see the module docstring)."""
 
+    PARAMS: ClassVar[type] = object
+    params: object
     beta2: float
     courant: float
 
-    def validate_time_step(self) -> None:
-        """Check and normalise ``beta2`` in [1/2, 1] and ``courant`` in (0, 1]."""
+    def validate_common(self) -> None:
+        """Check ``params`` (a ``PARAMS``) and normalise ``beta2`` in [1/2, 1] and ``courant`` in (0, 1]."""
+        if not isinstance(self.params, self.PARAMS):
+            raise ParameterError("params", self.params, f"a {self.PARAMS.__name__}")
         object.__setattr__(self, "beta2", check.in_range("beta2", self.beta2, 0.5, 1.0))
         object.__setattr__(self, "courant", check.in_range("courant", self.courant, 0.0, 1.0, lo_open=True))
 

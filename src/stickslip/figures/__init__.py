@@ -8,7 +8,8 @@ A figure module (``figures/<model>/<figure>.py``) holds everything about its fig
   measured in the dataset alone;
 * ``plot(ds, fig=None) -> matplotlib.figure.Figure``: draws the dataset on ``fig`` (or a new
   figure) and returns it, without pyplot or a change of backend;
-* ``FIGURE = FigureSpec(...)``: its key, title, claim and method for the report.
+* ``FIGURE = FigureSpec(...)``: its key, title, claim and method for the report (the
+  registry adds the module's ``compute``, ``check`` and ``plot``).
 
 `FIGURES` below lists the modules in the paper's order: it is the registry. Computing
 apart from plotting lets `reproduce` checkpoint each dataset to netCDF and resume a
@@ -19,7 +20,7 @@ killed run without recomputing it. To add a figure: write the module, add it to
 from __future__ import annotations
 
 import importlib
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Callable
 
 import xarray as xr
@@ -60,16 +61,21 @@ class FigureSpec:
     model: str
     claim: str
     method: str
-    compute: Callable[[bool], xr.Dataset] | None
-    plot: Callable
-    check: Callable[[xr.Dataset], list[Check]]
     errata: tuple[str, ...] = field(default_factory=tuple)
     data_from: str | None = None  # reuse the dataset (and checkpoint) of another figure
+    compute: Callable[[bool], xr.Dataset] | None = None
+    plot: Callable | None = None
+    check: Callable[[xr.Dataset], list[Check]] | None = None
+
+
+def _spec(name: str) -> FigureSpec:
+    module = importlib.import_module(f"{__name__}.{name}")
+    return replace(module.FIGURE, compute=getattr(module, "compute", None), plot=module.plot, check=module.check)
 
 
 def registry() -> dict[str, FigureSpec]:
     """All figures by key, in the order of `FIGURES`."""
-    specs = [importlib.import_module(f"{__name__}.{name}").FIGURE for name in FIGURES]
+    specs = [_spec(name) for name in FIGURES]
     return {spec.key: spec for spec in specs}
 
 

@@ -83,17 +83,14 @@ def perturbed_steady(scheme: FemScheme, amplitude: float = 1e-3, mode: int | Non
 
 
 _FORMAT = RunFormat(
-    fields={"U": ("R", "radial displacement u_r at r = R"), "V": ("R", "hoop displacement u_theta at r = R"),
-            "Ud": ("R Omega", "radial velocity (u_{m+1} - u_m)/dt at r = R"),
-            "Vd": ("R Omega", "hoop velocity (u_{m+1} - u_m)/dt at r = R (shaft surface speed = 1)"),
-            "P": ("E", "contact pressure p = lambda_n / (R dtheta)"),
-            "Q": ("E", "friction shear q = lambda_t / (R dtheta), positive along the shaft motion"),
-            "gap": ("R", "gap u_r - delta at t_{m+1} (where the constraint of the step acts)")},
+    units={"length": "R", "velocity": "R Omega", "traction": "E"},
+    notes={"P": "contact pressure p = lambda_n / (R dtheta)", "Q": "friction shear q = lambda_t / (R dtheta)"},
     energy_units="E R^2", energy_note="energy of the deviation from FE steady sliding (per unit length in z)",
     node_label="contact node",
     source="FE model of eq. [10], explicit beta2 scheme [22] with multipliers [23] (docs/theory/brake-fem.md)",
     key_attrs=("n_theta", "n_r", "beta2", "courant"), scheme=FemScheme, params_type=BrakeParams,
-    traction_scale=lambda s: s.traction_scale, extra_attrs=lambda s: {"p_wave_speed": s.p_wave_speed, "mesh": s.system.mesh.describe()})
+    traction_scale=lambda s: s.traction_scale,
+    extra_attrs=lambda s: {"p_wave_speed": s.p_wave_speed, "mesh": s.system.mesh.describe()})
 
 
 @dataclass(frozen=True, eq=False)

@@ -15,11 +15,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
+from typing import ClassVar
 
 import numpy as np
 
 from ...contact import ExplicitScheme
-from ...errors import ParameterError
 from ..reduced import BrakeParams, ReducedCoefficients, elastic_moduli
 from .mesh import FemSystem, annulus_mesh, assemble
 from .modes import max_frequency
@@ -52,6 +52,7 @@ class FemScheme(ExplicitScheme):
         the largest free frequency of the mesh: the CFL limit set by the P-wave speed).
     """
 
+    PARAMS: ClassVar[type] = BrakeParams
     params: BrakeParams
     n_theta: int = 256
     n_r: int = 16
@@ -59,12 +60,10 @@ class FemScheme(ExplicitScheme):
     courant: float = 0.9
 
     def __post_init__(self):
-        if not isinstance(self.params, BrakeParams):
-            raise ParameterError("params", self.params, "a stickslip.brake.BrakeParams")
+        self.validate_common()
         annulus_mesh(self.n_theta, self.n_r, self.params.xi)  # validates n_theta, n_r
         object.__setattr__(self, "n_theta", int(self.n_theta))
         object.__setattr__(self, "n_r", int(self.n_r))
-        self.validate_time_step()
 
     @cached_property
     def system(self) -> FemSystem:

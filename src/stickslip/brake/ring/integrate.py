@@ -97,12 +97,8 @@ def initial_from_wave(wave, nodes: int) -> InitialCondition:
 
 
 _FORMAT = RunFormat(
-    fields={"U": ("R", "radial displacement U at r = 1"), "V": ("R", "tangential displacement V at r = 1"),
-            "Ud": ("R Omega", "radial velocity (U_{m+1} - U_m)/dt"),
-            "Vd": ("R Omega", "tangential velocity (V_{m+1} - V_m)/dt (shaft surface speed = 1)"),
-            "P": ("E / M", "contact pressure per unit modal mass (p = M P)"),
-            "Q": ("E / M", "friction traction per unit modal mass (q = M Q)"),
-            "gap": ("R", "gap U - delta at t_{m+1} (where the constraint of the step acts)")},
+    units={"length": "R", "velocity": "R Omega", "traction": "E / M"},
+    notes={"P": "contact pressure per unit modal mass (p = M P)", "Q": "friction traction per unit modal mass (q = M Q)"},
     energy_units="E R^2 / M", energy_note="energy of the scheme", node_label="node",
     source="reduced model [12] (corrected), explicit scheme of docs/theory/brake-ring.md",
     key_attrs=("nodes", "beta2", "courant"), scheme=RingScheme, params_type=BrakeParams)

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import cached_property
+from typing import ClassVar
 
 import numpy as np
 
@@ -51,19 +52,18 @@ class RingScheme(ExplicitScheme):
         limit of the free discrete problem (``omega_max`` its highest frequency).
     """
 
+    PARAMS: ClassVar[type] = BrakeParams
     params: BrakeParams
     nodes: int = 512
     beta2: float = 0.5
     courant: float = 0.9
 
     def __post_init__(self):
-        if not isinstance(self.params, BrakeParams):
-            raise ParameterError("params", self.params, "a stickslip.brake.BrakeParams")
+        self.validate_common()
         nodes = check.positive_int("nodes", self.nodes)
         if nodes < 8:
             raise ParameterError("nodes", nodes, "an integer >= 8")
         object.__setattr__(self, "nodes", nodes)
-        self.validate_time_step()
 
     @cached_property
     def coefficients(self) -> ReducedCoefficients:

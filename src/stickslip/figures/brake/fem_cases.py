@@ -32,7 +32,7 @@ from .. import Check
 from .paper import CASES, GEOMETRY, PAPER_REGIMES
 
 __all__ = ["METHOD", "MESHES", "case_data", "common_checks", "runs_text", "separation_zones", "case_plot", "title",
-           "spacetime", "waterfall"]
+           "spacetime", "waterfall", "spacetime_panels"]
 
 METHOD = ("Plane-strain annulus meshed with bilinear quadrilaterals (scikit-fem assembly, lumped mass, outer radius "
           "clamped), explicit β2-scheme [22] with β2 = 0.9 as in the paper and forward-increment Lagrange "
@@ -215,3 +215,14 @@ def waterfall(ax, ds, i, key, step, scale):
     for k, snap in enumerate(range(0, r.sizes["snapshot"], step)):
         ax.plot(r["theta"], r[key].isel(snapshot=snap) / scale + k, lw=0.7, color="C0")
     ax.set(xlabel="θ", ylabel="successive times (offset)", xticks=[0, np.pi, 2 * np.pi], xticklabels=["0", "π", "2π"])
+
+
+def spacetime_panels(ds, fig, key, label, cmap):
+    """A column per run: ``key`` over ``theta`` and time on top (with a colour bar); returns the
+    figure and the empty bottom axes, one per run."""
+    nrun = ds.sizes["run"]
+    fig = Figure(figsize=(4.5 * nrun, 8)) if fig is None else fig
+    axes = fig.subplots(2, nrun, squeeze=False)
+    for i in range(nrun):
+        fig.colorbar(spacetime(axes[0, i], ds, i, key, label, cmap), ax=axes[0, i])
+    return fig, list(axes[1])

@@ -83,5 +83,4 @@ FIGURE = FigureSpec(
           "thickness ξ = R*/R and the shaft speed Ω change.",
     method="FE runs from noise (f = 0.7, d = 0.1 mm) over ξ and Ω, which enter only through ξ and "
            "κ = d sqrt(E/ρ)/(R² Ω); classification of each limit regime.",
-    compute=compute, plot=plot, check=check,
 )

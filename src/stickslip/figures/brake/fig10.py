@@ -8,7 +8,7 @@ from matplotlib.figure import Figure
 
 from ...contact import SEPARATION
 from .. import Check, FigureSpec
-from .fem_cases import METHOD, runs_text, spacetime
+from .fem_cases import METHOD, runs_text, spacetime_panels
 
 
 def check(ds) -> list[Check]:
@@ -29,19 +29,14 @@ def check(ds) -> list[Check]:
 
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
     """Figure 10: contact pressure ``p / p_e`` vs ``theta`` (space-time and successive profiles)."""
-    nrun = ds.sizes["run"]
-    fig = Figure(figsize=(4.5 * nrun, 8)) if fig is None else fig
-    axes = fig.subplots(2, nrun, squeeze=False)
-    for i in range(nrun):
-        im = spacetime(axes[0, i], ds, i, "P", "contact pressure p / p_e", "viridis")
-        fig.colorbar(im, ax=axes[0, i])
+    fig, bottom = spacetime_panels(ds, fig, "P", "contact pressure p / p_e", "viridis")
+    for i, ax in enumerate(bottom):
         r = ds.isel(run=i)
         for k in (0, r.sizes["snapshot"] // 4, r.sizes["snapshot"] - 1):
-            axes[1, i].plot(r["theta"], r["P"].isel(snapshot=k), lw=0.8,
-                            label=f"t = {float(r['snap_t'][k]):.2f} transits")
-        axes[1, i].axhline(1.0, color="k", lw=0.4)
-        axes[1, i].set(xlabel="θ", ylabel="p / p_e", xticks=[0, np.pi, 2 * np.pi], xticklabels=["0", "π", "2π"])
-        axes[1, i].legend(fontsize=7)
+            ax.plot(r["theta"], r["P"].isel(snapshot=k), lw=0.8, label=f"t = {float(r['snap_t'][k]):.2f} transits")
+        ax.axhline(1.0, color="k", lw=0.4)
+        ax.set(xlabel="θ", ylabel="p / p_e", xticks=[0, np.pi, 2 * np.pi], xticklabels=["0", "π", "2π"])
+        ax.legend(fontsize=7)
     a = ds.attrs
     fig.suptitle(f"Figure 10: contact pressure, f = {a['friction']:g}, δ = {a['delta']:g}, Ω = {a['omega']:g} rad/s "
                  f"(p_e = {a['p_e']:.3g} E); {a['mesh']}", fontsize=9)
@@ -53,5 +48,5 @@ FIGURE = FigureSpec(
     model="brake-like system, finite elements",
     claim="The normal contact pressure of the stick-slip-separation wave (zero in the separation zones).",
     method=METHOD + " Same runs as Figure 9.",
-    compute=None, data_from="fig9", plot=plot, check=check,
+    data_from="fig9",
 )

@@ -114,5 +114,4 @@ FIGURE = FigureSpec(
           "vanishes and one obtains the stick-slip-separation state.",
     method=METHOD + " Continuation in d (f = 0.7, n = 4, Ω = 50 rad/s) with births and deaths of zones located "
                     "where two switching points coalesce; direct solves at the end points agree with the branch.",
-    compute=compute, plot=plot, check=check,
 )

@@ -5,19 +5,14 @@ from __future__ import annotations
 import xarray as xr
 from matplotlib.figure import Figure
 
-from ...brake import BrakeParams, travelling_wave
 from .. import Check, FigureSpec
 from .paper import FIG12
-from .wave_cases import METHOD, cases_dataset, common_checks, phase_plot
+from .wave_cases import METHOD, common_checks, phase_plot, waves_dataset
 
 
 def compute(quick: bool = False) -> xr.Dataset:
     """A mode-8 wave with reverse slip (overshoot): phase plane ``(V, V')``."""
-    p = BrakeParams.from_physical(FIG12["omega"], FIG12["mismatch"], FIG12["friction"])
-    wave = travelling_wave(p, FIG12["modes"], regime="stick-slip-separation-reverse-slip")
-    ds = cases_dataset([wave], [FIG12["omega"]], "omega", 1000 if quick else 4000)
-    ds.attrs["mismatch"] = FIG12["mismatch"]
-    return ds
+    return waves_dataset(FIG12, "stick-slip-separation-reverse-slip", quick, samples=(1000, 4000))
 
 
 def check(ds: xr.Dataset) -> list[Check]:
@@ -39,5 +34,4 @@ FIGURE = FigureSpec(
     model="brake-like system, reduced model, travelling waves",
     claim="A traveling wave in mode 8 with reverse slip (overshooting), computed by multiple shooting.",
     method=METHOD + " Here f = 0.2, d = 10 µm, Ω = 100 rad/s, n = 8.",
-    compute=compute, plot=plot, check=check,
 )

@@ -88,5 +88,4 @@ FIGURE = FigureSpec(
     method="The same parameters (f = 0.7, δ = 0.001, Ω = 50 rad/s, β2 = 0.9) started from steady sliding plus a mode-2 "
            "or a mode-3 perturbation; each run classified over its last transits and checked for statistical "
            "steadiness.",
-    compute=compute, plot=plot, check=check,
 )

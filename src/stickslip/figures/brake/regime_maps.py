@@ -85,5 +85,5 @@ FIGURE = FigureSpec(
     method="Two resumable Dask sweeps over (f, d) at Ω = 50 rad/s on the steel ring: the regime of the principal "
            "4-mode travelling wave (multiple shooting), and the limit regime of the ring integration from perturbed "
            "steady sliding (128 nodes, central differences); the paper's qualitative statements tested on both.",
-    compute=compute, plot=plot, check=check, errata=("W5",),
+    errata=("W5",),
 )

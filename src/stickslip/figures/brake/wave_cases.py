@@ -18,7 +18,7 @@ from ...brake.waves import Scaling, ZoneFlows, energy_balance, integrate_wave, s
 from .. import Check
 from .paper import GEOMETRY
 
-__all__ = ["METHOD", "diagnostics", "cases_dataset", "waves_over_omega", "common_checks", "phase_plot", "by_zone"]
+__all__ = ["METHOD", "diagnostics", "cases_dataset", "waves_dataset", "common_checks", "phase_plot", "by_zone"]
 
 METHOD = ("Multiple shooting with the switching points as unknowns (BOUNDSCO formulation), exact closed forms "
           "inside each zone of the corrected [15], the wave speed found by scanning the period map T(c) = 2π/n; "
@@ -81,11 +81,16 @@ def cases_dataset(waves, labels, label_name, num) -> xr.Dataset:
     return ds
 
 
-def waves_over_omega(cfg, regime, quick):
-    omegas = cfg["omegas"][::2] if quick else cfg["omegas"]
+def waves_dataset(cfg: dict, regime: str, quick: bool, samples=(400, 1500)) -> xr.Dataset:
+    """The waves of ``cfg`` (`paper`), one per shaft speed of ``cfg["omegas"]`` (every other one if
+    ``quick``) or at ``cfg["omega"]``, in the given regime, as a dataset of ``samples`` points per wave."""
+    omegas = tuple(cfg["omegas"][::2] if quick else cfg["omegas"]) if "omegas" in cfg else (cfg["omega"],)
     waves = [travelling_wave(BrakeParams.from_physical(om, cfg["mismatch"], cfg["friction"]), cfg["modes"],
                              regime=regime) for om in omegas]
-    return waves, omegas
+    ds = cases_dataset(waves, omegas, "omega", samples[0] if quick else samples[1])
+    ds["omega"].attrs["units"] = "rad/s"
+    ds.attrs["mismatch"] = cfg["mismatch"]
+    return ds
 
 
 # --- checks --------------------------------------------------------------------------------

@@ -127,5 +127,4 @@ FIGURE = FigureSpec(
            "Figures 5, 6 and 12 and must carry them (regime, speed, stick fraction); section 3.1 case 1 integrated "
            "from noise settles on a stationary wave, compared with the shooting wave of the same mode number; the "
            "growth of a small perturbation of each wave measured with an independent Moreau-type stepper.",
-    compute=compute, plot=plot, check=check,
 )

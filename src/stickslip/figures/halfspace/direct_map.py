@@ -72,5 +72,5 @@ FIGURE = FigureSpec(
     claim="(The paper could not solve it: Newton fails.) Given the loading (T, v, v*), find the wave (c̄, b).",
     method="b eliminated by the second equation, every sign change in c̄ bracketed on a grid and refined by Brent; "
            "the map over (v/v*, T/v*) counts solutions; inverse → direct round trips.",
-    compute=compute, plot=plot, check=check, errata=("H4",),
+    errata=("H4",),
 )

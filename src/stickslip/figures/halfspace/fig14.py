@@ -170,5 +170,5 @@ FIGURE = FigureSpec(
            "the slip condition [40] and the stick condition are verified as residuals, the singularity exponents "
            "measured, the tensile zone located. A second wave with the v that makes the perturbation decay at depth "
            "(erratum H6) is shown for comparison.",
-    compute=compute, plot=plot, check=check, errata=("H3", "H6", "H7"),
+    errata=("H3", "H6", "H7"),
 )

@@ -103,6 +103,6 @@ FIGURE = FigureSpec(
           "and is unique; with v* = 0 only the trivial solution exists; closed forms [56]-[58].",
     method="The 2×2 system [54]-[55] solved vectorised on a dense (b, c̄) grid; D and H evaluated; the printed closed "
            "forms for v and T compared with the linear solve; H = γ1 b (K − 1) with K = πλ/sin πλ.",
-    compute=compute, plot=plot, check=check,
+   
     errata=("H4", "H5"),
 )

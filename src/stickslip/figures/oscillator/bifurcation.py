@@ -146,5 +146,4 @@ FIGURE = FigureSpec(
            "f_s = 0.6, f_d = 0.4, v_s = 0.1, c = 0.05; Coulomb with c = 0.05 and c = 0); a second branch started "
            "at the Hopf point from the averaged amplitude; grazing located by bisection; event-driven simulations "
            "for bistability; a plain solve_ivp bisection for the end of the damped Coulomb branch.",
-    compute=compute, plot=plot, check=check,
 )

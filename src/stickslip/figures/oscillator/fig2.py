@@ -119,5 +119,5 @@ FIGURE = FigureSpec(
            "f_s = 0.6, f_d = 0.4) from five initial conditions (one inside S, one with reverse slip); the limit cycle "
            "by shooting on the section v = 0 with saltation-matrix Floquet multipliers; an independent solve_ivp "
            "integration for the period.",
-    compute=compute, plot=plot, check=check, errata=("E1",),
+    errata=("E1",),
 )

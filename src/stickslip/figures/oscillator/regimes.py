@@ -94,5 +94,4 @@ FIGURE = FigureSpec(
     method="A resumable Dask sweep (Zarr store) over a (V, c) grid: linear stability of steady sliding, and shooting "
            "from the end of the stick segment, through which every stick-slip cycle passes; the Hopf curve in "
            "closed form and the grazing point from the continuation as references.",
-    compute=compute, plot=plot, check=check,
 )

@@ -1,0 +1,96 @@
+"""The run books of `stickslip.contact.runs`, for both models that keep them (the ring of the
+reduced model and the FE annulus): checkpoint and resume bit for bit, extension, refusal of
+another run's checkpoint, the netCDF format, and the options every run validates."""
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from stickslip.errors import ParameterError
+
+from .models import CASE2, MODELS
+
+
+class Stop(Exception):
+    pass
+
+
+def _same(a, b, parts=("series", "snapshots", "kernel")):
+    for part in parts:
+        da, db = getattr(a, part), getattr(b, part)
+        assert da.keys() == db.keys()
+        for key in da:
+            assert np.array_equal(da[key], db[key]), (part, key)
+
+
+@pytest.fixture(params=MODELS, ids=lambda m: m.name)
+def model(request):
+    return request.param
+
+
+def test_interrupted_run_resumes_bitwise_from_its_checkpoint(model, tmp_path):
+    path = tmp_path / "run.nc"
+    T = model.scheme(CASE2).transit_time
+    kwargs = dict(checkpoint=path, every=5 * T)
+    reference = model.run(CASE2, 30)
+    seen = []
+
+    def stop_half_way(t, t_end):
+        seen.append(t)
+        if t > 0.55 * t_end:
+            raise Stop
+
+    with pytest.raises(Stop):
+        model.run(CASE2, 30, progress=stop_half_way, **kwargs)
+    saved = type(reference).from_xarray(xr.load_dataset(path))
+    assert not saved.complete and saved.samples_done == len(seen)  # saved at interruption: nothing lost
+    resumed = model.run(CASE2, 30, progress=lambda t, te: seen.append(t), **kwargs)
+    assert resumed.complete and np.all(np.diff(seen) > 0) and seen[-1] >= reference.t[-1]
+    _same(resumed, reference)
+    _same(model.run(CASE2, 30, **kwargs), reference)  # complete: read back, nothing recomputed
+
+
+def test_a_checkpoint_can_be_extended_and_another_run_is_refused(model, tmp_path):
+    path = tmp_path / "run.nc"
+    model.run(CASE2, 10, checkpoint=path)
+    _same(model.run(CASE2, 20, checkpoint=path), model.run(CASE2, 20), parts=("series", "kernel"))
+    other_start = model.perturbed(model.scheme(CASE2), seed=1)
+    for options in (dict(beta2=0.6), dict(initial=other_start), dict(courant=0.8)):
+        with pytest.raises(ParameterError) as err:
+            model.run(CASE2, 2, checkpoint=path, **options)
+        assert err.value.name == "checkpoint"
+    with pytest.raises(ParameterError) as err:
+        model.run(CASE2.replace(friction=0.5), 2, checkpoint=path)
+    assert err.value.name == "checkpoint"
+
+
+def test_result_dataset_has_units_and_round_trips(model, tmp_path):
+    run = model.run(CASE2, 6, snapshot_every=2.0, tail=1.0)
+    ds = run.to_xarray()
+    assert ds["U"].dims == ("snapshot", "node") and ds["fraction"].dims == ("sample", "kind")
+    assert ds["t"].attrs["units"] == "1/Omega" and ds["P"].attrs["units"] == model.units_P
+    assert list(ds["kind"].values) == ["stick", "slip", "reverse_slip", "separation"]
+    assert list(ds["state"].attrs["flag_values"]) == [0, 1, 2, 3]
+    assert ds.attrs["physical_omega"] == 50.0 and ds.attrs["complete"] == 1
+    assert np.allclose(ds["fraction"].sum("kind"), 1.0)
+    tail = run.settings["tail_samples"]  # snapshots: every 2 transits and at every sample of the last one
+    assert tail + 2 <= ds.sizes["snapshot"] <= tail + 3
+    assert np.all(np.diff(ds["snap_t"].values[-tail:]) == pytest.approx(run.settings["chunk"] * run.scheme.dt))
+    path = tmp_path / "run.nc"
+    ds.to_netcdf(path)
+    back = type(run).from_xarray(xr.load_dataset(path))
+    _same(back, run)
+    assert back.params == run.params and back.params.omega == 50.0
+
+
+@pytest.mark.parametrize("options, name", [
+    (dict(), "t_end"), (dict(t_end=1.0, transits=1.0), "t_end"), (dict(t_end=-1.0), "t_end"),
+    (dict(transits=0.0), "transits"), (dict(transits=1, samples_per_transit=2), "samples_per_transit"),
+    (dict(transits=1, initial="noise"), "initial"), (dict(transits=1, beta2=0.3), "beta2"),
+    (dict(transits=1, courant=1.5), "courant"), (dict(transits=1, every=0.0), "every"),
+    (dict(transits=1, tail=-1.0), "tail"), (dict(transits=1, progress=3), "progress"),
+    (dict(transits=1, modes=0), "modes")])
+def test_runs_reject_bad_options(model, options, name):
+    with pytest.raises(ParameterError) as err:
+        model.integrate(CASE2, **(model.mesh | options))
+    assert err.value.name == name
