@@ -17,7 +17,7 @@ The half-space is loaded by remote stresses ``tau*_yy < 0`` (compression) and
 Scaled (``E = 2 G (1 + nu)``): ``v* = V*/c2 = cbar nu (tau*_yy/G) / 2`` and
 ``T = T*/G = (mu - mu*)(-tau*_yy/G)``. So for given ``(cbar, v*)``, [26] fixes
 ``tau*_yy/G = 2 v*/(cbar nu)`` and then ``T``: this is how the paper's Figure 14 fixes
-``b`` from ``cbar`` (see `stickslip.halfspace.figures`).
+``b`` from ``cbar`` (see `stickslip.halfspace.b_for_loading`).
 """
 
 from __future__ import annotations

@@ -8,13 +8,16 @@ forward-increment Lagrange multipliers [23], node by node. Units are the paper's
 lengths ``R``, stresses ``E``, time ``1/Omega``. See ``docs/theory/brake-fem.md``.
 
 * `annulus_mesh`, `assemble`: mesh and matrices (`FemSystem`);
-* `steady_state`: steady sliding (static contact problem), to compare with `brake.steady`;
+* `steady_state`: steady sliding (static contact problem), to compare with `brake.reduced.steady`;
 * `annulus_frequencies` (exact, Bessel), `fem_frequencies`, `fem_growth_rates`
   (flutter of steady sliding per mode), `slip_wave_rate` (half-space slip waves);
 * `FemScheme`, `integrate_fem`, `perturbed_steady`, `FemRun`: time integration with
   checkpoint/resume and progress callback;
-* `classify_fem`: the limit regime on the contact nodes (`FemRegime`);
-* `figures`: the data, plots and checks of the paper's Figures 7-10.
+* `classify_fem`: the limit regime on the contact nodes (`FemRegime`).
+
+The time stepping, run books and classification are those of `stickslip.contact`; the
+annulus supplies its operator (a block-circulant stencil) and its steady state. The paper's
+Figures 7-10 are in `stickslip.figures.brake`.
 """
 
 from .classify import FemRegime, classify_fem

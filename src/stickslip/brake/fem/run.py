@@ -61,7 +61,7 @@ def perturbed_steady(scheme: FemScheme, amplitude: float = 1e-3, mode: int | Non
 
     ``pattern = amplitude cos(mode theta + phase) + noise w(theta)`` if ``mode`` is given,
     else ``amplitude w(theta)``, ``w`` white noise (unit RMS, from ``seed``), and
-    ``X(r) = (xi^2/r - r)/(xi^2 - 1)`` the static profile (as `brake.ring.perturbed_steady`).
+    ``X(r) = (xi^2/r - r)/(xi^2 - 1)`` the static profile (as `stickslip.brake.ring.perturbed_steady`).
     """
     if not isinstance(scheme, FemScheme):
         raise ParameterError("scheme", scheme, "a FemScheme")

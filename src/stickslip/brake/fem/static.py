@@ -10,7 +10,7 @@ system
 
 ``E`` moving the row of contact node ``j``'s radial dof to its hoop dof. The solution is
 an exact fixed point of the explicit scheme (the reactions the scheme computes at rest are
-``lambda_n`` and ``f lambda_n``). It must agree with the Lamé solution `brake.steady`:
+``lambda_n`` and ``f lambda_n``). It must agree with the Lamé solution `brake.reduced.steady`:
 ``u = delta X(r)``, ``v = V_e X(r)`` and ``p = lambda_n / (2 pi / n_theta) = p_e``, up to the
 discretisation error ``O(h^2)``.
 """

@@ -1,7 +1,7 @@
 """Continuation of travelling-wave families in the mismatch, the shaft speed or friction.
 
 Along a family the zone sequence is kept and each point is a multiple-shooting solve
-(`wave_boundsco`) started from a secant prediction. A zone sequence ends in one of two
+(`boundsco`) started from a secant prediction. A zone sequence ends in one of two
 ways (paper, Figure 11):
 
 * **death** of a zone: its length goes to 0 (its two switching points coalesce), e.g.
@@ -14,7 +14,7 @@ Either way the current sequence stops passing the checks. The event is located b
 bisection on the parameter (the last value where the old sequence still passes), and the
 family is continued in the new regime, found by the stick-exit return map near the last
 wave speed. Because the internal problem depends on ``delta`` and ``gamma`` only through
-``delta/sqrt(gamma)`` (`wave_zones.Scaling`), continuing in ``delta`` or in ``Omega``
+``delta/sqrt(gamma)`` (`zones.Scaling`), continuing in ``delta`` or in ``Omega``
 follows the same internal family; only the conversion of ``c`` and amplitudes differs.
 """
 

@@ -1,7 +1,7 @@
 """The result object of the travelling-wave solver: zones, profiles, exports.
 
-A `TravellingWave` holds the solution of the multiple-shooting system (`wave_boundsco`)
-for one zone sequence, in internal units (`wave_zones.Scaling`), and converts to the
+A `TravellingWave` holds the solution of the multiple-shooting system (`boundsco`)
+for one zone sequence, in internal units (`zones.Scaling`), and converts to the
 paper's dimensionless units on output (``evaluate``, ``to_dict``, ``to_xarray``).
 """
 
@@ -67,7 +67,7 @@ class TravellingWave:
     residual : float
         Largest absolute residual of the multiple-shooting equations (internal units).
     margins : dict
-        Worst relative margin of each inequality on a fine grid (see `wave_boundsco.verify`).
+        Worst relative margin of each inequality on a fine grid (see `boundsco.verify`).
     """
 
     params: BrakeParams

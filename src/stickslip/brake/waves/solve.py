@@ -3,10 +3,10 @@
 A wave ``U(phi), V(phi)``, ``phi = theta - c t``, periodic with period ``2 pi/n``, made of
 stick [17], slip [18], reverse slip [19] and separation [20] zones. Inside each zone the
 equations [15] are linear with constant coefficients and solved in closed form
-(`wave_zones`); the wave is the solution of the multiple-shooting system with the
-switching points as unknowns (`wave_boundsco`, the BOUNDSCO formulation of the paper).
+(`zones`); the wave is the solution of the multiple-shooting system with the
+switching points as unknowns (`boundsco`, the BOUNDSCO formulation of the paper).
 
-Initial guesses come from the stick-exit return map (`wave_shoot`): every zone sequence
+Initial guesses come from the stick-exit return map (`shoot`): every zone sequence
 that contains stick is determined by ``c`` alone, and the waves of ``n`` modes are the
 roots of ``T(c) = 2 pi/n``. A scan of ``c`` brackets them; each root is then polished by
 multiple shooting and every inequality of [17]-[20] is verified on a fine grid.

@@ -16,7 +16,7 @@ once per wave period:
   shift), relative to the initial perturbation. Its growth rate estimates the largest
   Lyapunov (Floquet) exponent of the wave, with the translation direction removed.
 
-Units are internal (`wave_zones.Scaling`: coefficients at ``gamma = 1``, time
+Units are internal (`zones.Scaling`: coefficients at ``gamma = 1``, time
 ``tau = t/sqrt(gamma)``, in which the shaft surface speed is still 1).
 """
 

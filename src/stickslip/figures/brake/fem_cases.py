@@ -1,17 +1,17 @@
-"""Figure data of the FE runs of section 3.1 (Figures 7-10) and a regime map.
+"""What the FE figures of section 3.1 (7-10) share: the runs of one case as a dataset, the
+checks every case passes, and the panels of their plots (which read only the dataset).
 
-One dataset per run set; plots (`fem.plots`) and checks (`fem.figure_checks`) read only the
-dataset. Each case is run on the default steel ring (``R = 0.1 m``, ``R* = 0.15 m``,
+Each case is run on the default steel ring (``R = 0.1 m``, ``R* = 0.15 m``,
 ``E = 2.1e11 Pa``, ``rho = 7850 kg/m^3``, ``nu = 0.3``; the paper gives no geometry for this
 section) from FE steady sliding perturbed by white noise ``1e-3 delta`` and from a seeded
 mode (``0.1 delta cos n theta`` plus the same noise), with the paper's scheme
-``beta2 = 0.9``. Budgets are in P-wave transits ``2 pi R / c_p``.
+``beta2 = 0.9``. Budgets are in P-wave transits ``2 pi R / c_p``. The cases (`paper.CASES`):
 
-* `fig7_data`: ``f = 0.2, delta = 0.004, Omega = 1 rad/s`` (paper: stick-slip, 4 modes);
-* `fig8_data`: ``f = 2, delta = 0.004, Omega = 80 rad/s`` (paper: stick-separation, 2 modes);
-* `fig9_data`: ``f = 0.7, delta = 0.001, Omega = 50 rad/s`` (paper: stick-slip-separation,
-  8 modes; Figure 9 its radial displacement, Figure 10 its contact pressure: one run set);
-* `regime_map_data`: ``f = 0.7``, ``d = 0.1 mm``, regimes over ``xi = R*/R`` and ``Omega``.
+* Figure 7: ``f = 0.2, delta = 0.004, Omega = 1 rad/s`` (paper: stick-slip, 4 modes);
+* Figure 8: ``f = 2, delta = 0.004, Omega = 80 rad/s`` (paper: stick-separation, 2 modes);
+* Figures 9 and 10: ``f = 0.7, delta = 0.001, Omega = 50 rad/s`` (paper:
+  stick-slip-separation, 8 modes; Figure 9 its radial displacement, Figure 10 its contact
+  pressure: one run set).
 """
 
 from __future__ import annotations

@@ -1,9 +1,9 @@
 """Travelling waves against the time integration of the ring, and their stability.
 
-Two questions of issue 3 meet here:
+Two questions meet here:
 
-* do the multiple-shooting waves (`waves`) and the time integration of [12]
-  (`ring.integrate`) agree? The ring is started on a wave and must carry it unchanged
+* do the multiple-shooting waves (`stickslip.brake.waves`) and the time integration of
+  [12] (`stickslip.brake.ring`) agree? The ring is started on a wave and must carry it unchanged
   (same regime, speed, zone fractions); and a run from perturbed steady sliding that
   settles on a stationary wave must match the wave of the same mode number;
 * are the waves stable (an open question of the paper)? `wave_persistence` measures
