@@ -64,6 +64,21 @@ def test_a_checkpoint_can_be_extended_and_another_run_is_refused(model, tmp_path
     assert err.value.name == "checkpoint"
 
 
+def test_a_file_that_is_not_a_run_of_this_model_is_refused(model, tmp_path):
+    """Another model's checkpoint, a netCDF of something else, a file that is not netCDF."""
+    other = [m for m in MODELS if m is not model][0]
+    foreign = tmp_path / "other_model.nc"
+    other.run(CASE2, 2, checkpoint=foreign)
+    unrelated = tmp_path / "unrelated.nc"
+    xr.Dataset({"x": ("t", np.arange(3.0))}).to_netcdf(unrelated)
+    text = tmp_path / "text.nc"
+    text.write_text("not netCDF")
+    for path in (foreign, unrelated, text):
+        with pytest.raises(ParameterError) as err:
+            model.run(CASE2, 2, checkpoint=path)
+        assert err.value.name == "checkpoint"
+
+
 def test_result_dataset_has_units_and_round_trips(model, tmp_path):
     run = model.run(CASE2, 6, snapshot_every=2.0, tail=1.0)
     ds = run.to_xarray()

@@ -241,11 +241,15 @@ def resume(cls, path, scheme, settings):
     path = Path(path)
     if not path.exists():
         return None
-    old = cls.from_xarray(xr.load_dataset(path))
+    refused = ParameterError("checkpoint", str(path), "a checkpoint of the same run (parameters, scheme, schedule "
+                             "and initial condition must match; delete it to start afresh)")
+    try:
+        old = cls.from_xarray(xr.load_dataset(path))
+    except (OSError, KeyError, ValueError, TypeError) as err:  # not a run of this model (or not netCDF)
+        raise refused from err
     if old.params.to_dict() != scheme.params.to_dict() or \
             settings_key(old) != settings_key(cls(scheme, settings, {}, {}, {}, 0)):
-        raise ParameterError("checkpoint", str(path), "a checkpoint of the same run (parameters, scheme, schedule "
-                             "and initial condition must match; delete it to start afresh)")
+        raise refused
     return cls(scheme, {**old.settings, "samples_total": settings["samples_total"],
                         "tail_samples": settings["tail_samples"]},
                old.series, old.snapshots, old.kernel, old.samples_done)
