@@ -1,11 +1,13 @@
-"""Unilateral contact and Coulomb friction at every contact node and step, and the discrete
-energy balance (the work of the reactions), for both models of the shared explicit scheme,
-in runs where all four node states occur."""
+"""The run books of both models record a consistent motion: in runs where all four node
+states occur, the recorded energy changes by exactly the work of the recorded reactions on
+the recorded displacements (central differences).
+
+Signorini's and Coulomb's laws are checked on reactions recomputed from the motion in
+test_motion.py, not on the kernel's own states (which satisfy them by construction)."""
 
 import numpy as np
 import pytest
 
-from stickslip.contact import SEPARATION, SLIP_NEG, SLIP_POS, STICK
 
 from .models import MODELS, ORDER_ONE
 
@@ -19,11 +21,6 @@ def _every_step(model, beta2=0.5, transits=20):
     return run
 
 
-@pytest.fixture(scope="module", params=[(m, b) for m in MODELS for b in (0.5, 0.9)],
-                ids=lambda p: f"{p[0].name}-beta2={p[1]}")
-def run(request):
-    return _every_step(*request.param)
-
 
 @pytest.mark.parametrize("model", MODELS, ids=lambda m: m.name)
 def test_all_four_states_occur_with_central_differences(model):
@@ -32,32 +29,6 @@ def test_all_four_states_occur_with_central_differences(model):
     assert np.all(counts > 0.01), counts
 
 
-def test_contact_conditions_at_every_node_and_step(run):
-    """``P >= 0``, ``U >= delta`` and ``P (U - delta) = 0`` at the constrained time ``t_{m+1}``."""
-    delta = ORDER_ONE.delta
-    P, U_next, state = run.P[:-1], run.U[1:], run.state[:-1]
-    assert P.min() >= 0.0
-    assert U_next.min() >= delta * (1 - 1e-14)
-    assert np.all(U_next[P > 0] == delta)  # complementarity, exactly
-    assert np.all((P == 0) == (state == SEPARATION)) and np.all(run.Q[run.state == SEPARATION] == 0.0)
-    assert run.gap.min() >= 0.0 and np.all(run.P * run.gap == 0.0) and np.array_equal(run.gap[:-1], U_next - delta)
-
-
-def test_coulomb_law_at_every_node_and_step(run):
-    """``|Q| <= f P``; stick: ``V_dot = 1``; slip: ``Q = f P sign(1 - V_dot)`` ([17]-[19])."""
-    f, P, Q, slip, state = ORDER_ONE.friction, run.P, run.Q, 1.0 - run.Vd, run.state
-    fP = f * P
-    assert np.all(np.abs(Q) <= fP * (1 + 1e-12))
-    stick = state == STICK
-    if stick.any():
-        assert np.abs(slip[stick]).max() < 1e-9
-    for code, sign in ((SLIP_POS, 1.0), (SLIP_NEG, -1.0)):
-        sel = state == code
-        assert Q[sel] == pytest.approx(sign * fP[sel], rel=1e-12)
-        assert np.all(sign * slip[sel] > -1e-9)
-    contact = state != SEPARATION  # Q (1 - V_dot) - f P |1 - V_dot| = 0 wherever there is contact
-    residual = Q[contact] * slip[contact] - fP[contact] * np.abs(slip[contact])
-    assert np.abs(residual).max() < 1e-9 * fP.max()
 
 
 @pytest.mark.parametrize("model", MODELS, ids=lambda m: m.name)

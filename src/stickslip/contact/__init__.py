@@ -8,7 +8,9 @@ model use the same machinery; a new geometry plugs in by defining an `ExplicitSc
 * `scheme`: `ExplicitScheme`, the interface a model's discretisation meets (time step and
   CFL limit, steps per transit, order, numerical damping, energies, start of a run);
 * `runs`: checkpointed run books (series, snapshots, resume bit for bit);
-* `classify`: the limit regime of a run (zones, mode number, wave speed, stationarity).
+* `classify`: the limit regime of a run (zones, mode number, wave speed, stationarity);
+* `energy`: step-by-step traces and their discrete energy balance (for verification);
+* `verify`: reactions recomputed from the motion, and the contact laws checked on them.
 """
 
 from .classify import RegimeResult, classify, pattern_shift, pattern_speed
