@@ -35,6 +35,18 @@ def test_sweep_resumes_after_a_kill(tmp_path):
         run_sweep(_square, {"x": [1, 2]}, store, outputs={"sum": "1"}, scheduler="synchronous")
 
 
+def test_a_store_computed_with_other_fixed_parameters_is_refused(tmp_path):
+    store = tmp_path / "s.zarr"
+    axes, outputs = {"x": [1, 2], "y": [10]}, {"sum": "1", "product": "1"}
+    run_sweep(_square, axes, store, outputs=outputs, scheduler="synchronous", attrs={"omega": 50.0, "law": "a"})
+    again = run_sweep(_square, axes, store, outputs=outputs, scheduler="synchronous", attrs={"omega": 50.0, "law": "a"})
+    assert again["done"].all()
+    for attrs in ({"omega": 100.0, "law": "a"}, {"omega": 50.0, "law": "b"}, {"omega": 50.0, "law": "a", "n": 4}):
+        with pytest.raises(ParameterError) as err:
+            run_sweep(_square, axes, store, outputs=outputs, scheduler="synchronous", attrs=attrs)
+        assert err.value.name == "store"
+
+
 def test_regime_classification_matches_theory():
     base = Oscillator(1.0, 1.0, 1.0, 0.2, Stribeck(0.6, 0.4, 0.1), damping=0.05)
     assert classify(base)["regime"] == 1  # below the Hopf speed: steady sliding unstable

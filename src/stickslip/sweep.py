@@ -45,11 +45,23 @@ def _create(store: Path, axes: dict, outputs: dict, attrs: dict) -> None:
     xr.Dataset(data, coords=coords, attrs=attrs).to_zarr(store, mode="w", consolidated=False)
 
 
-def _matches(store: Path, axes: dict, outputs: dict) -> bool:
-    ds = xr.open_zarr(store, consolidated=False)
-    same_axes = list(ds["done"].dims) == list(axes) and all(
+def _same_value(a, b) -> bool:
+    try:
+        return bool(np.array_equal(np.asarray(a, dtype=float), np.asarray(b, dtype=float)))
+    except (TypeError, ValueError):
+        return str(a) == str(b)
+
+
+def _matches(store: Path, axes: dict, outputs: dict, attrs: dict) -> bool:
+    """The store holds this sweep: the same axes, outputs and fixed parameters (``attrs``)."""
+    try:
+        ds = xr.open_zarr(store, consolidated=False)
+    except (OSError, ValueError, KeyError):
+        return False
+    same_axes = "done" in ds and list(ds["done"].dims) == list(axes) and all(
         ds[k].size == len(v) and np.allclose(ds[k].values, np.asarray(v, float)) for k, v in axes.items())
-    return same_axes and all(name in ds for name in outputs)
+    same_attrs = all(k in ds.attrs and _same_value(ds.attrs[k], v) for k, v in attrs.items())
+    return same_axes and same_attrs and all(name in ds for name in outputs)
 
 
 def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Sequence[float]], store, *,
@@ -65,8 +77,9 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
     axes : mapping
         Axis name -> values, e.g. ``{"belt_speed": [...], "damping": [...]}``.
     store : path
-        Zarr directory. Created if absent; if present with the same axes and outputs the
-        sweep resumes, otherwise a `ParameterError` is raised (remove it to start over).
+        Zarr directory. Created if absent; if present with the same axes, outputs and
+        ``attrs`` the sweep resumes, otherwise a `ParameterError` is raised (remove it to
+        start over): a store computed with other parameters is never reused.
     outputs : mapping
         Output name -> units.
     batch : int
@@ -94,8 +107,9 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
     batch = check.positive_int("batch", batch)
     store = Path(store)
     if store.exists():
-        if not _matches(store, axes, outputs):
-            raise ParameterError("store", str(store), "a new path, or a sweep store with the same axes and outputs")
+        if not _matches(store, axes, outputs, dict(attrs or {})):
+            raise ParameterError("store", str(store), "a new path, or a sweep store with the same axes, outputs and "
+                                 "fixed parameters")
     else:
         _create(store, axes, outputs, dict(attrs or {}))
     group = zarr.open_group(str(store), mode="r+")

@@ -18,6 +18,7 @@ import math
 
 
 from .. import validation as check
+from ..contact import REGIME_CODES, regime_code
 from ..errors import NoSolutionError
 from ..sweep import run_sweep
 from .reduced.params import PhysicalParams
@@ -26,14 +27,6 @@ from .ring import classify
 from .waves.solve import find_waves
 
 __all__ = ["REGIME_CODES", "regime_code", "wave_regime_map", "ring_regime_map"]
-
-REGIME_CODES = {"none": 0, "stick-slip": 1, "stick-slip-reverse-slip": 2, "stick-slip-separation": 3,
-                "stick-slip-separation-reverse-slip": 4, "stick-separation": 5, "slip": 6, "other": 7}
-
-
-def regime_code(name: str) -> int:
-    """Integer code of a regime name (``other`` for combinations without a code)."""
-    return REGIME_CODES.get(name, REGIME_CODES["other"])
 
 
 def _params(material: dict, omega: float, friction: float, mismatch: float):
@@ -67,7 +60,8 @@ def wave_regime_map(frictions, mismatches, store, *, omega: float = 50.0, modes:
     func = functools.partial(_wave_point, dict(material or {}), omega, modes)
     return run_sweep(func, {"friction": list(frictions), "mismatch": list(mismatches)}, store,
                      outputs={"wave_regime": "1", "waves": "1", "c_over_sqrt_a": "1"},
-                     attrs={"omega": omega, "modes": modes, "codes": repr(REGIME_CODES)}, **options)
+                     attrs={"omega": omega, "modes": modes, "codes": repr(REGIME_CODES),
+                            "material": repr(sorted((material or {}).items()))}, **options)
 
 
 def ring_regime_map(frictions, mismatches, store, *, omega: float = 50.0, nodes: int = 128,
@@ -79,5 +73,6 @@ def ring_regime_map(frictions, mismatches, store, *, omega: float = 50.0, nodes:
     outputs = {"ring_regime": "1", "n_fft": "1", **{f"fraction_{k}": "1" for k in
                                                      ("stick", "slip", "reverse_slip", "separation")}}
     return run_sweep(func, {"friction": list(frictions), "mismatch": list(mismatches)}, store, outputs=outputs,
-                     attrs={"omega": omega, "nodes": nodes, "transits": transits, "codes": repr(REGIME_CODES)},
+                     attrs={"omega": omega, "nodes": nodes, "transits": transits, "codes": repr(REGIME_CODES),
+                            "material": repr(sorted((material or {}).items()))},
                      **options)

@@ -16,10 +16,10 @@ model use the same machinery; a new geometry plugs in by defining an `ExplicitSc
 from .classify import RegimeResult, classify, pattern_shift, pattern_speed
 from .runs import RunFormat, RunRecord, prepare, run_explicit
 from .scheme import ExplicitScheme, StepOutput, StepState, amplification_matrix, discrete_rates, stencil_matrix
-from .states import (SEPARATION, SLIP_NEG, SLIP_POS, STATE_ATTRS, STATE_NAMES, STICK, count_zones, regime_name,
-                     state_fractions)
+from .states import (REGIME_ATTRS, REGIME_CODES, SEPARATION, SLIP_NEG, SLIP_POS, STATE_ATTRS, STATE_NAMES, STICK,
+                     count_zones, regime_code, regime_name, state_fractions)
 
 __all__ = ["ExplicitScheme", "StepState", "StepOutput", "amplification_matrix", "discrete_rates", "stencil_matrix",
            "RunFormat", "RunRecord", "prepare", "run_explicit", "RegimeResult", "classify", "pattern_shift",
            "pattern_speed", "STICK", "SLIP_POS", "SLIP_NEG", "SEPARATION", "STATE_NAMES", "STATE_ATTRS",
-           "count_zones", "regime_name", "state_fractions"]
+           "count_zones", "regime_name", "state_fractions", "REGIME_CODES", "REGIME_ATTRS", "regime_code"]

@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = ["STICK", "SLIP_POS", "SLIP_NEG", "SEPARATION", "STATE_NAMES", "STATE_ATTRS", "regime_name",
-           "count_zones", "state_fractions"]
+           "REGIME_CODES", "REGIME_ATTRS", "regime_code", "count_zones", "state_fractions"]
 
 STICK, SLIP_POS, SLIP_NEG, SEPARATION = 0, 1, 2, 3
 STATE_NAMES = ("stick", "slip", "reverse_slip", "separation")
@@ -29,12 +29,22 @@ STATE_NAMES = ("stick", "slip", "reverse_slip", "separation")
 STATE_ATTRS = {"flag_values": [STICK, SLIP_POS, SLIP_NEG, SEPARATION], "flag_meanings": " ".join(STATE_NAMES)}
 
 _ORDER = ("stick", "slip", "separation", "reverse_slip")
+#: Integer codes of regime names, for maps and sweeps (``other``: a combination without a code).
+REGIME_CODES = {"none": 0, "stick-slip": 1, "stick-slip-reverse-slip": 2, "stick-slip-separation": 3,
+                "stick-slip-separation-reverse-slip": 4, "stick-separation": 5, "slip": 6, "other": 7}
+#: CF attributes of a variable holding regime codes.
+REGIME_ATTRS = {"flag_values": list(REGIME_CODES.values()), "flag_meanings": " ".join(REGIME_CODES)}
 
 
 def regime_name(present) -> str:
     """``stick-slip-separation-reverse-slip`` style name of a set of state names (``none`` if empty)."""
     names = [k for k in _ORDER if k in set(present)]
     return "-".join(k.replace("_", "-") for k in names) if names else "none"
+
+
+def regime_code(name: str) -> int:
+    """Integer code of a regime name (`REGIME_CODES`; ``other`` for combinations without a code)."""
+    return REGIME_CODES.get(name, REGIME_CODES["other"])
 
 
 def count_zones(mask: np.ndarray, min_run: int = 1) -> int:

@@ -21,6 +21,7 @@ from ..errors import NoSolutionError
 from ..sweep import run_sweep
 from .cycle import limit_cycle
 from .model import Oscillator
+from .simulate import params_attrs
 from .stability import equilibrium_stability
 
 __all__ = ["REGIMES", "classify", "regime_map"]
@@ -70,5 +71,6 @@ def regime_map(osc: Oscillator, axes: dict, store, **options):
     """
     for name in axes:
         osc.parameter(name)
-    attrs = {"regimes": "; ".join(f"{k} = {v}" for k, v in REGIMES.items()), "friction_law": type(osc.friction).__name__}
+    attrs = {**params_attrs(osc), "regimes": "; ".join(f"{k} = {v}" for k, v in REGIMES.items()),
+             "friction_law": type(osc.friction).__name__}
     return run_sweep(functools.partial(_point, osc), axes, store, outputs=OUTPUTS, attrs=attrs, **options)
