@@ -91,6 +91,8 @@ def select(only: str | None) -> list[FigureSpec]:
 
 def _load_or_compute(spec: FigureSpec, data_dir: Path, quick: bool, fingerprint: str, force: bool):
     path = data_dir / f"{spec.key}.nc"
+    if spec.inputs is not None:  # data from outside the package (a campaign): part of the fingerprint
+        fingerprint = f"{fingerprint}+{spec.inputs(data_dir)}"
     if path.exists() and not force:
         try:
             ds = xr.load_dataset(path)
@@ -100,11 +102,12 @@ def _load_or_compute(spec: FigureSpec, data_dir: Path, quick: bool, fingerprint:
             pass  # unreadable checkpoint (killed mid-write by another tool): recompute
     # figures built on sweeps take a cache folder, so a killed sweep resumes point by point
     cache = data_dir / f"{spec.key}.partial"
-    if "cache" in inspect.signature(spec.compute).parameters:
+    accepts = inspect.signature(spec.compute).parameters
+    options = {"data_dir": data_dir} if "data_dir" in accepts else {}
+    if "cache" in accepts:
         cache.mkdir(exist_ok=True)
-        ds = spec.compute(quick, cache=cache)
-    else:
-        ds = spec.compute(quick)
+        options["cache"] = cache
+    ds = spec.compute(quick, **options)
     ds.attrs.update({"fingerprint": fingerprint, "quick": int(quick), "figure": spec.key})
     tmp = path.with_suffix(".nc.partial")
     ds.to_netcdf(tmp)

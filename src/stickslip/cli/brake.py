@@ -279,3 +279,47 @@ def fem_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = Non
         run = integrate_fem(p, n_theta, n_r, transits=transits, beta2=beta2, initial=initial, checkpoint=checkpoint,
                             progress=tick)
     _report_run(run, classify_fem, out, json, "FE limit regime")
+
+
+@app.command("campaign")
+def campaign_cmd(
+        out: Annotated[Path, typer.Option(help="Folder of the campaign's stores (resumed if present).")] =
+        Path("results/data/brake-fem-campaign"),
+        part: Annotated[str, typer.Option(help="statistics, geometry or all.")] = "all",
+        seeds: Annotated[int, typer.Option(help="Unseeded runs per case and mesh (statistics).")] = 16,
+        geometry_seeds: Annotated[int, typer.Option(help="Unseeded runs per case, xi and beta2 (geometry).")] = 4,
+        workers: Annotated[Optional[int], typer.Option(help="Worker processes (default: all cores).")] = None,
+        export: Annotated[Optional[Path], typer.Option(help="When done, also write fem_<part>.nc here.")] = None,
+        json: Json = False):
+    """Section 3.1 by finite elements: limit regimes from unseeded starts (about an hour on 2 cores; resumable)."""
+    import datetime
+
+    from ..brake.fem import campaign
+    from ..figures.brake import campaign_data
+    from ..figures.brake.paper import CASES
+
+    if part not in ("statistics", "geometry", "all"):
+        raise ParameterError("--part", part, "statistics, geometry or all")
+    for option, value in (("--seeds", seeds), ("--geometry-seeds", geometry_seeds), ("--workers", workers)):
+        if value is not None and value < 1:
+            raise ParameterError(option, value, ">= 1")
+    if out.exists() and not out.is_dir():
+        raise ParameterError("--out", str(out), "a folder (created if absent)")
+    if export is not None and export.exists() and not export.is_dir():
+        raise ParameterError("--export", str(export), "a folder (created if absent)")
+    out.mkdir(parents=True, exist_ok=True)
+    summary = {"out": str(out)}
+    sweeps = {"statistics": lambda tick: campaign.statistics(out / "statistics.zarr", CASES, seeds=seeds,
+                                                             workers=workers, progress=tick),
+              "geometry": lambda tick: campaign.geometry(out / "geometry.zarr", CASES, seeds=geometry_seeds,
+                                                         workers=workers, progress=tick)}
+    for kind, sweep in sweeps.items():
+        if part not in (kind, "all"):
+            continue
+        with progress_bar(f"FE {kind}") as tick:
+            ds = sweep(tick)
+        summary[kind] = campaign_data.summary(ds, kind)
+        if export is not None:
+            summary[kind]["exported"] = str(campaign_data.export(ds.drop_vars("done"), kind, export,
+                                                                 datetime.date.today().isoformat()))
+    emit(summary, json, "FE campaign")

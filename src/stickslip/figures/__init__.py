@@ -3,7 +3,9 @@
 A figure module (``figures/<model>/<figure>.py``) holds everything about its figure:
 
 * ``compute(quick: bool) -> xarray.Dataset``: all the numbers the figure needs (no
-  plotting); it may take a ``cache`` folder to resume a sweep point by point;
+  plotting); it may take a ``cache`` folder to resume a sweep point by point, and the
+  report's ``data_dir`` to find data computed outside `reproduce` (then it also defines
+  ``inputs(data_dir) -> str``, a fingerprint of those data);
 * ``check(ds) -> list[Check]``: the paper's claim and the verification of the computation,
   measured in the dataset alone;
 * ``plot(ds, fig=None) -> matplotlib.figure.Figure``: draws the dataset on ``fig`` (or a new
@@ -31,7 +33,8 @@ __all__ = ["Check", "FigureSpec", "close_check", "registry", "FIGURES"]
 FIGURES = ("oscillator.fig2", "oscillator.fig3", "oscillator.bifurcation", "oscillator.regimes",
            "brake.stability", "brake.fig5", "brake.fig6", "brake.fig11", "brake.fig12", "brake.waves_vs_ring",
            "brake.ring_regimes", "brake.initial_condition", "brake.regime_maps", "brake.fig7", "brake.fig8",
-           "brake.fig9", "brake.fig10", "brake.fem_regimes", "halfspace.fig14", "halfspace.inverse_map",
+           "brake.fig9", "brake.fig10", "brake.fem_statistics", "brake.fem_geometry", "brake.fem_regimes",
+           "halfspace.fig14", "halfspace.inverse_map",
            "halfspace.direct_map")
 
 
@@ -66,11 +69,13 @@ class FigureSpec:
     compute: Callable[[bool], xr.Dataset] | None = None
     plot: Callable | None = None
     check: Callable[[xr.Dataset], list[Check]] | None = None
+    inputs: Callable | None = None  # inputs(data_dir) -> str: fingerprint of data from outside the package
 
 
 def _spec(name: str) -> FigureSpec:
     module = importlib.import_module(f"{__name__}.{name}")
-    return replace(module.FIGURE, compute=getattr(module, "compute", None), plot=module.plot, check=module.check)
+    return replace(module.FIGURE, compute=getattr(module, "compute", None), plot=module.plot, check=module.check,
+                   inputs=getattr(module, "inputs", None))
 
 
 def registry() -> dict[str, FigureSpec]:

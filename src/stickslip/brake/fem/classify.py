@@ -18,9 +18,9 @@ import numpy as np
 
 from ...errors import ParameterError
 from .run import FemRun
-from ...contact import SEPARATION, SLIP_NEG, SLIP_POS, STICK, RegimeResult, classify, count_zones, pattern_speed
+from ...contact import SEPARATION, STICK, RegimeResult, classify, count_zones, pattern_speed
 
-__all__ = ["FemRegime", "classify_fem", "contact_residuals"]
+__all__ = ["FemRegime", "classify_fem"]
 
 
 @dataclass(frozen=True)
@@ -96,29 +96,3 @@ def classify_fem(run, transits: float | None = None, min_fraction: float = 0.01,
                      float(P.max() / pe), float(P.mean() / pe), float(energy.mean()),
                      float(energy.std() / energy.mean()) if energy.mean() > 0 else 0.0, run.transits)
 
-
-def contact_residuals(run) -> dict:
-    """Residuals of the contact and Coulomb conditions over all snapshots of a run ([10], [17]-[20]).
-
-    ``P_min`` = min ``p / p_e`` (>= 0); ``gap_min`` = min gap ``/ delta`` at ``t_{m+1}`` (>= 0);
-    ``complementarity`` = max ``|p gap| / (p_e delta)`` (= 0); ``coulomb`` = max
-    ``(|q| - f p) / (f p_e)`` (<= 0); ``stick_speed`` = max ``|1 - w|`` at sticking nodes (the
-    node moves with the shaft); ``slip_law`` = max ``|q - f p sign(1 - w)| / (f p_e)`` at
-    slipping nodes, and ``slip_direction`` = min ``sign(q) (1 - w)`` there (>= 0: friction
-    opposes the slip). Sticking/slipping counts are returned too.
-    """
-    if not isinstance(run, FemRun):
-        raise ParameterError("run", run, "a FemRun (see integrate_fem)")
-    s, f = run.scheme, run.params.friction
-    pe, delta = float(s.steady.pressure.mean()), run.params.delta
-    P, Q, gap, w, state = run.P, run.Q, run.gap, run.Vd, run.state
-    stick, slip = state == STICK, (state == SLIP_POS) | (state == SLIP_NEG)
-    sign = np.where(state == SLIP_NEG, -1.0, 1.0)
-    fp = max(f * pe, 1e-300)
-    return {"P_min": float(P.min() / pe), "gap_min": float(gap.min() / delta),
-            "complementarity": float(np.abs(P * gap).max() / (pe * delta)),
-            "coulomb": float((np.abs(Q) - f * P).max() / fp),
-            "stick_speed": float(np.abs(1.0 - w[stick]).max()) if stick.any() else 0.0,
-            "slip_law": float(np.abs(Q - sign * f * P)[slip].max() / fp) if slip.any() else 0.0,
-            "slip_direction": float((sign * (1.0 - w))[slip].min()) if slip.any() else 0.0,
-            "stick_count": int(stick.sum()), "slip_count": int(slip.sum())}

@@ -25,8 +25,9 @@ from matplotlib.figure import Figure
 from ... import plotting
 from ...brake import BrakeParams
 from ...brake.fem import FemScheme, classify_fem, fem_growth_rates, integrate_fem, perturbed_steady, slip_wave_rate
-from ...brake.fem.classify import contact_residuals
-from ...contact import SEPARATION, STATE_ATTRS, STATE_NAMES, count_zones
+from ...contact import SEPARATION, STATE_ATTRS, STATE_NAMES, StepState, count_zones
+from ...contact.energy import trace
+from ...contact.verify import contact_law_residuals, implied_reactions
 from ...errors import ParameterError
 from .. import Check
 from .paper import CASES, GEOMETRY, PAPER_REGIMES
@@ -38,8 +39,11 @@ METHOD = ("Plane-strain annulus meshed with bilinear quadrilaterals (scikit-fem 
           "clamped), explicit β2-scheme [22] with β2 = 0.9 as in the paper and forward-increment Lagrange "
           "multipliers [23] solved exactly node by node (erratum B5); steel ring R = 0.1 m, R* = 0.15 m (the paper "
           "gives no geometry); runs from FE steady sliding (checked against Lamé) perturbed by noise and by a seeded "
-          "mode, budgeted in P-wave transits; the contact conditions verified at every node; the limit regime "
-          "classified on the contact nodes. Mesh 512 × 32, 400 transits (quick: 256 × 16, 300).")
+          "mode, budgeted in P-wave transits; the contact laws checked on reactions recomputed from the motion "
+          "(M a + K u = Cᵀλ with the assembled sparse K) over 200 steps at the end of every run; the limit regime "
+          "classified on the contact nodes. Mesh 512 × 32, 400 transits (quick: 256 × 16, 300). The paper's "
+          "regime and mode-number claims are settled by the statistics of unseeded runs (brake-fem-statistics); "
+          "here the runs seeded with a mode show whether that wave is a limit regime.")
 
 #: (n_theta, n_r, transits per run) of the quick and full modes.
 MESHES = {True: (256, 16, 300), False: (512, 32, 400)}
@@ -52,7 +56,10 @@ _SCALARS = ("n", "n_fft", "n_zones", "n_fft_P", "c_over_cp", "c_P_over_cp", "sta
             "energy_mean", "energy_cv", "p_max_over_pe", "p_mean_over_pe")
 
 
-_RESIDUALS = ("P_min", "gap_min", "complementarity", "coulomb", "stick_speed", "slip_law", "slip_direction")
+_RESIDUALS = ("off_contact", "kernel", "negative_pressure", "penetration", "complementarity", "coulomb",
+              "stick_motion", "slip_direction", "stick_count", "slip_count")
+#: Steps traced at the end of every run for the check of the contact laws.
+TRACE_STEPS = 200
 
 
 def _params(case: int) -> BrakeParams:
@@ -66,7 +73,7 @@ def _one_run(p, N, nr, T, seed):
     t0 = time.perf_counter()
     run = integrate_fem(p, N, nr, transits=T, initial=ini)
     seconds = time.perf_counter() - t0
-    res, resid = classify_fem(run), contact_residuals(run)
+    res, resid = classify_fem(run), _law_residuals(run)
     tr = run.t / s.transit_time
     per = [(tr >= k) & (tr < k + 1) for k in range(int(np.floor(tr[-1])))]
     pe = s.steady.pressure.mean()
@@ -76,6 +83,14 @@ def _one_run(p, N, nr, T, seed):
             "fraction_history": np.array([run.fractions[m].mean(axis=0) for m in per]),
             "U": run.U[-_SNAPS:] / p.delta - 1.0, "Vd": run.Vd[-_SNAPS:], "P": run.P[-_SNAPS:] / pe,
             "state": run.state[-_SNAPS:], "snap_t": run.snap_t[-_SNAPS:] / s.transit_time}
+
+
+def _law_residuals(run) -> dict:
+    """Contact-law residuals of reactions recomputed from `TRACE_STEPS` traced steps after the run."""
+    s, k = run.scheme, run.kernel
+    tr = trace(s, StepState(k["u"].copy(), k["v"].copy(), k["a"].copy()), TRACE_STEPS)
+    r, steps = implied_reactions(tr, s.mass, s.system.K)
+    return contact_law_residuals(tr, r, steps, s.params.friction)
 
 
 def case_data(case: int, seeds=(None,), quick: bool = False, mesh: tuple | None = None) -> xr.Dataset:
@@ -108,6 +123,8 @@ def case_data(case: int, seeds=(None,), quick: bool = False, mesh: tuple | None 
     data["growth"] = ("mode", g.growth_rate * s.transit_time, {"units": "1/transit", "long_name": "FE flutter"})
     data["growth_discrete"] = ("mode", g.discrete(s.dt, 0.9).real.max(axis=1) * s.transit_time,
                                {"units": "1/transit", "long_name": "fully discrete (beta2 = 0.9)"})
+    data["flutter_speed"] = ("mode", -g.lowest.imag / g.n / s.p_wave_speed,
+                             {"units": "c_p/R", "long_name": "phase speed -Im s / n of the lowest flutter branch"})
     errors = s.steady.errors()
     rho = slip_wave_rate(p.friction, p.nu)
     cs_over_cp = float(np.sqrt((1 - 2 * p.nu) / (2 * (1 - p.nu))))
@@ -135,22 +152,23 @@ def separation_zones(ds) -> np.ndarray:
 
 
 def common_checks(ds) -> list[Check]:
-    """Lamé agreement, contact residuals, instability of steady sliding."""
+    """Lamé agreement, the contact laws on reactions recomputed from the motion, instability of steady sliding."""
     lame = max(ds.attrs["lame_error_u"], ds.attrs["lame_error_v"], ds.attrs["lame_error_p"])
-    bad = {k: max(0.0, float(v)) for k, v in (
-        ("p < 0", -ds["P_min"].min()), ("gap < 0", -ds["gap_min"].min()),
-        ("p gap", ds["complementarity"].max()), ("|q| - f p", ds["coulomb"].max()),
-        ("stick |1 - w|", ds["stick_speed"].max()), ("slip |q - f p sign(1 - w)|", ds["slip_law"].max()),
-        ("friction along the slip", -ds["slip_direction"].min()))}
+    worst = {k: float(ds[k].max()) for k in _RESIDUALS[:8]}
     stick = ds["fraction"].sel(kind="stick")
     return [
         Check("FE steady sliding on this mesh matches the Lamé solution (eq. [11] corrected)", lame < 1e-3,
               f"max relative error u {ds.attrs['lame_error_u']:.2e}, v {ds.attrs['lame_error_v']:.2e}, "
               f"p {ds.attrs['lame_error_p']:.2e} (p_e = {ds.attrs['p_e']:.4g} E)", "< 1e-3 (order 2 in the mesh)",
               f"mesh {ds.attrs['mesh']}"),
-        Check("contact and Coulomb's law hold at every recorded node and step", all(v <= 1e-9 for v in bad.values()),
-              ", ".join(f"{k}: {v:.1e}" for k, v in bad.items()), "all violations <= 1e-9 (relative to p_e, d, 1)",
-              "lambda_n >= 0, gap >= 0, lambda_n gap = 0, |q| <= f p, stick: w = 1, slip: q = f p sign(1 - w)"),
+        Check("the reactions the equations of motion need are the kernel's, and obey Signorini and Coulomb",
+              all(worst[k] <= 1e-8 for k in ("off_contact", "kernel", "negative_pressure", "complementarity", "coulomb"))
+              and worst["penetration"] <= 1e-12 and worst["stick_motion"] <= 1e-9 and worst["slip_direction"] == 0
+              and bool(ds["stick_count"].min() > 0) and bool(ds["slip_count"].min() > 0),
+              ", ".join(f"{k} {v:.1e}" for k, v in worst.items()) + f"; stick node-steps {int(ds['stick_count'].min())}+,"
+              f" slip {int(ds['slip_count'].min())}+", "<= 1e-8 (relative to max lambda_n), gap >= 0, stick and slip met",
+              f"reactions from M a + K u over {TRACE_STEPS} traced steps after each run (a from the displacements, "
+              "K the assembled sparse matrix, not the kernel's stencil)"),
         Check("steady sliding is unstable: stick zones appear in every run", bool(stick.min() > 0.005),
               ", ".join(f"{r}: stick {float(v):.3f}" for r, v in zip(ds["run"].values, stick.values)), "> 0.005",
               f"flutter: fastest discrete mode n = {int(ds['growth_discrete'].idxmax())} "

@@ -45,16 +45,16 @@ def check(ds) -> list[Check]:
     """Regimes over xi and Omega (f = 0.7, d = 0.1 mm)."""
     sep = ds["fraction"].sel(kind="separation")
     stick = ds["fraction"].sel(kind="stick")
-    grows = bool(np.all(sep.isel(omega=-1).values >= sep.isel(omega=0).values))
+    grows = bool(np.all(sep.isel(omega=-1).values > sep.isel(omega=0).values + 0.01))
     return [
         Check("stick zones in every run (steady sliding unstable for every xi and Omega)",
               bool(stick.min() > 0.005), f"min stick fraction {float(stick.min()):.3f}", "> 0.005"),
         Check("separation grows as kappa = d sqrt(E/rho)/(R^2 Omega) decreases (paper: small mismatch, "
               "high speed)", grows, f"separation fraction {np.round(sep.values, 3).tolist()} (rows xi "
               f"{ds['xi'].values.tolist()}, columns Omega {ds['omega'].values.tolist()} rad/s)",
-              "largest Omega >= smallest Omega, every xi",
+              "at every xi, larger at the largest Omega than at the smallest, by more than 0.01",
               "regimes: " + "; ".join(f"xi={x:g}: " + ", ".join(str(r) for r in ds['regime'].sel(xi=x).values)
-                                      for x in ds["xi"].values)),
+                                      for x in ds["xi"].values), claim=True),
     ]
 
 

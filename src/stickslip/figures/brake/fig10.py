@@ -6,20 +6,17 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from ...contact import SEPARATION
 from .. import Check, FigureSpec
 from .fem_cases import METHOD, runs_text, spacetime_panels
 
 
 def check(ds) -> list[Check]:
-    """Case 2 (f = 0.7), contact pressure: zero in separation zones, mean p_e."""
-    P, st = ds["P"].values, ds["state"].values
-    sep = st == SEPARATION
+    """Case 2 (f = 0.7), contact pressure: it vanishes where the ring separates; its mean stays p_e."""
     return [
-        Check("the contact pressure vanishes exactly in the separation zones and is positive elsewhere",
-              bool(np.all(P[sep] == 0.0) and np.all(P[~sep] > 0.0) and sep.any()),
-              f"{int(sep.sum())} separated node-snapshots, max p there {float(P[sep].max()) if sep.any() else 0:.1e}; "
-              f"min p in contact {float(P[~sep].min()):.2e} p_e", "0 and > 0"),
+        Check("the pressure recomputed from the motion is >= 0 and vanishes where the ring separates",
+              bool(ds["negative_pressure"].max() <= 1e-8 and ds["complementarity"].max() <= 1e-8),
+              f"max(-p) {float(ds['negative_pressure'].max()):.1e}, max |p gap| {float(ds['complementarity'].max()):.1e}",
+              "<= 1e-8 (relative)", "p from M a + K u = Cᵀλ over the traced steps, not from the kernel's states"),
         Check("the mean contact pressure stays at the steady p_e (the mean load is set by the mismatch)",
               bool(np.all(np.abs(ds["p_mean_over_pe"].values - 1.0) < 0.05)), runs_text(ds, "p_mean_over_pe", "{:.3f}"),
               "1 +- 0.05", "largest p / p_e over the last transits (no paper value): "

@@ -11,22 +11,25 @@ from .fem_cases import METHOD, case_data, common_checks, runs_text, spacetime_pa
 
 
 def compute(quick: bool = False) -> xr.Dataset:
-    """Case 2 (``f = 0.7``), for Figures 9 and 10: from noise and from seeded modes 8 and 4."""
-    return case_data(1, (None, 8, 4), quick)
+    """Case 2 (``f = 0.7``), for Figures 9 and 10: from noise and from a seeded mode 8."""
+    return case_data(1, (None, 8), quick)
 
 
 def check(ds) -> list[Check]:
-    """Case 2 (f = 0.7), radial displacement: stick-slip-separation wave with 8 modes, propagating."""
-    reg = ds["regime"].values
+    """Case 2 (f = 0.7), radial displacement. The paper's claim (stick-slip-separation, 8 modes) from
+    unseeded starts: brake-fem-statistics."""
+    seeded = ds.sel(run="mode 8")
     return common_checks(ds) + [
-        Check("stick-slip-separation from every initial condition (paper)",
-              bool(np.all(reg == "stick-slip-separation")), runs_text(ds, "regime"), "stick-slip-separation", claim=True),
-        Check("8 modes (paper)", bool(np.any(ds["n_zones"].values == 8)),
-              f"stick zones per snapshot (median): {runs_text(ds, 'n_zones')}; dominant pressure mode: "
-              f"{runs_text(ds, 'n_fft_P')}", "8 in some run", f"time per run: {runs_text(ds, 'seconds', '{:.0f} s')}", claim=True),
+        Check("seeded start (cos 8θ): the 8-mode stick-slip-separation wave is a limit regime (stationary)",
+              bool(str(seeded["regime"].values) == "stick-slip-separation" and float(seeded["n_zones"]) == 8
+                   and bool(seeded["stationary"])),
+              f"seeded mode 8: {seeded['regime'].values}, {float(seeded['n_zones']):g} stick zones, stationary "
+              f"{bool(seeded['stationary'])}; dominant pressure mode {float(seeded['n_fft_P']):g}",
+              "stick-slip-separation, 8 stick zones, stationary", f"time per run: {runs_text(ds, 'seconds', '{:.0f} s')}",
+              claim=True),
         Check("the radial displacement pattern propagates (Figure 9)",
               bool(np.all(np.abs(ds["c_P_over_cp"].values) > 0.05)), runs_text(ds, "c_P_over_cp", "{:.3f}"),
-              "|c| > 0.05 c_p/R", "speed of the pressure pattern; separation pulses ride on it"),
+              "|c| > 0.05 c_p/R in every run", "speed of the pressure pattern; separation pulses ride on it"),
     ]
 
 

@@ -1,0 +1,171 @@
+"""Statistics of the FE annulus's limit regimes from unseeded starts (paper section 3.1).
+
+The paper reports one limit regime per case, from one (unstated) start. Here each case is
+run from many independent random perturbations of FE steady sliding (white noise of
+amplitude ``1e-3 delta``, one seed per run), on several meshes, and each run is driven to a
+stated stationarity criterion:
+
+* the run is integrated in chunks of ``chunk`` P-wave transits, from ``min_transits`` up to
+  ``max_transits``; after each chunk its last ``window`` transits are classified
+  (`classify_fem`), and the run stops as soon as they form a stationary travelling wave
+  (relative misfit and state mismatch of the shifted snapshots below 0.1);
+* the outcome is the regime of that window and its **mode number counted as the median
+  number of stick zones around the ring per snapshot** (``n_zones``: the same count for
+  stick-slip, stick-slip-separation and stick-separation), with whether it was stationary.
+
+Two sweeps, both resumable (`stickslip.sweep.run_sweep`, one Zarr store each, and a
+checkpoint per run so that a killed run resumes where it stopped):
+
+* `statistics`: over ``(case, mesh, seed)`` at ``beta2 = 0.9`` and the paper's geometry;
+* `geometry`: over ``(case, xi, beta2, seed)`` on ``256 x round(32 (xi - 1))`` meshes (the
+  radial spacing of the 256 x 16 mesh at ``xi = 1.5``), the paper's open question of the
+  ring's thickness and of the scheme's damping.
+
+Cases are given as ``(friction, mismatch [m], Omega [rad/s])`` on the steel ring of
+`PhysicalParams` with inner radius 0.1 m.
+"""
+
+from __future__ import annotations
+
+import functools
+import time
+from pathlib import Path
+
+
+from ... import validation as check
+from ...contact import REGIME_ATTRS, regime_code
+from ...errors import ParameterError
+from ...sweep import run_sweep
+from ..reduced import BrakeParams
+from .classify import classify_fem
+from .run import integrate_fem, perturbed_steady
+from .scheme import FemScheme
+
+__all__ = ["OUTCOMES", "limit_regime", "statistics", "geometry", "geometry_mesh"]
+
+#: What each run records (name -> units).
+OUTCOMES = {"regime": "1", "n_zones": "1", "n_fft": "1", "stationary": "1", "residual": "1", "transits": "1",
+            "stick": "1", "slip": "1", "reverse_slip": "1", "separation": "1", "c_over_cp": "1", "seconds": "s"}
+
+
+def limit_regime(params: BrakeParams, n_theta: int, n_r: int, seed: int, *, beta2: float = 0.9,
+                 amplitude: float = 1e-3, chunk: float = 50.0, min_transits: float = 100.0,
+                 max_transits: float = 400.0, window: float = 2.0, checkpoint=None) -> dict:
+    """Run from FE steady sliding plus white noise (``seed``) to stationarity or ``max_transits``.
+
+    Returns the outcomes of `OUTCOMES` (``regime`` as a code of
+    `stickslip.contact.REGIME_CODES`). With ``checkpoint`` (a netCDF path) the run resumes
+    from it; it is left in place.
+    """
+    chunk, min_transits = check.positive("chunk", chunk), check.positive("min_transits", min_transits)
+    max_transits = check.at_least("max_transits", max_transits, min_transits, "min_transits")
+    scheme = FemScheme(params, n_theta, n_r, beta2)
+    initial = perturbed_steady(scheme, amplitude, seed=int(seed))
+    start, T = time.perf_counter(), min_transits
+    while True:
+        run = integrate_fem(params, n_theta, n_r, transits=T, initial=initial, beta2=beta2, tail=window,
+                            checkpoint=checkpoint)
+        res = classify_fem(run)
+        if res.stationary or T >= max_transits:
+            break
+        T = min(T + chunk, max_transits)
+    return {"regime": float(regime_code(res.regime)), "n_zones": float(res.n_zones), "n_fft": float(res.n_fft),
+            "stationary": float(res.stationary), "residual": float(res.residual), "transits": float(run.transits),
+            **{k: float(res.fractions[k]) for k in ("stick", "slip", "reverse_slip", "separation")},
+            "c_over_cp": float(res.c_over_cp), "seconds": time.perf_counter() - start}
+
+
+def _point_checkpoint(folder: Path, name: str) -> Path:
+    folder.mkdir(parents=True, exist_ok=True)
+    return folder / f"{name}.nc"
+
+
+def _statistics_point(cases, meshes, budget, runs_dir, case, mesh, seed) -> dict:
+    f, d, om = cases[int(case)]
+    n_theta, n_r = meshes[int(mesh)]
+    path = _point_checkpoint(Path(runs_dir), f"case{int(case)}-mesh{int(mesh)}-seed{int(seed)}")
+    out = limit_regime(BrakeParams.from_physical(om, d, f), n_theta, n_r, int(seed), checkpoint=path,
+                       **budget[int(mesh)])
+    path.unlink(missing_ok=True)
+    return out
+
+
+def _check_cases(cases) -> tuple:
+    try:
+        cases = tuple((float(f), float(d), float(om)) for f, d, om in cases)
+    except (TypeError, ValueError):
+        raise ParameterError("cases", cases, "a list of (friction, mismatch [m], Omega [rad/s])") from None
+    for f, d, om in cases:
+        BrakeParams.from_physical(om, d, f)  # validates
+    if not cases:
+        raise ParameterError("cases", cases, "at least one case")
+    return cases
+
+
+def statistics(store, cases, meshes=((256, 16), (512, 32)), seeds: int = 16, *,
+               budgets=({"max_transits": 300.0}, {"max_transits": 400.0}), **options):
+    """Limit regimes of each case from ``seeds`` unseeded starts on each mesh (resumable).
+
+    ``meshes`` are ``(n_theta, n_r)``; ``budgets`` the keyword arguments of `limit_regime`
+    per mesh; ``options`` go to `run_sweep` (``workers``, ``progress``, ``scheduler``).
+    Returns the dataset over ``(case, mesh, seed)``.
+    """
+    cases = _check_cases(cases)
+    meshes = tuple((check.positive_int("n_theta", a), check.positive_int("n_r", b)) for a, b in meshes)
+    seeds = check.positive_int("seeds", seeds)
+    if len(budgets) != len(meshes):
+        raise ParameterError("budgets", budgets, f"one dict per mesh ({len(meshes)})")
+    store = Path(store)
+    func = functools.partial(_statistics_point, cases, meshes, tuple(dict(b) for b in budgets),
+                             str(store.with_suffix(".runs")))
+    attrs = {"cases": repr(cases), "meshes": repr(meshes), "budgets": repr(tuple(dict(b) for b in budgets)),
+             "mesh_n_theta": [m[0] for m in meshes], "mesh_n_r": [m[1] for m in meshes], **_case_attrs(cases),
+             "beta2": 0.9, "mode_number": "median number of stick zones per snapshot (n_zones)",
+             "initial": "FE steady sliding + 1e-3 delta white noise (one seed per run)", **_regime_attrs()}
+    options.setdefault("batch", max(1, options.get("workers") or 2))
+    return run_sweep(func, {"case": list(range(len(cases))), "mesh": list(range(len(meshes))),
+                            "seed": list(range(seeds))}, store, outputs=OUTCOMES, attrs=attrs, **options)
+
+
+def geometry_mesh(xi: float, n_theta: int = 256) -> tuple[int, int]:
+    """``(n_theta, n_r)`` with the radial spacing of ``256 x 16`` at ``xi = 1.5``."""
+    return n_theta, max(2, int(round(32 * (check.radius_ratio("xi", xi) - 1.0))))
+
+
+def _geometry_point(cases, n_theta, budget, runs_dir, case, xi, beta2, seed) -> dict:
+    f, d, om = cases[int(case)]
+    n_theta, n_r = geometry_mesh(xi, n_theta)
+    path = _point_checkpoint(Path(runs_dir), f"case{int(case)}-xi{xi:g}-beta2{beta2:g}-seed{int(seed)}")
+    params = BrakeParams.from_physical(om, d, f, outer_radius=0.1 * xi)
+    out = limit_regime(params, n_theta, n_r, int(seed), beta2=beta2, checkpoint=path, **budget)
+    path.unlink(missing_ok=True)
+    return out
+
+
+def geometry(store, cases, xis=(1.25, 1.5, 2.0, 3.0), beta2s=(0.6, 0.75, 0.9), seeds: int = 4, *,
+             n_theta: int = 256, budget=None, **options):
+    """Limit regimes of each case over the ring's thickness ``xi`` and ``beta2`` (resumable)."""
+    cases = _check_cases(cases)
+    xis = [check.radius_ratio("xi", x) for x in xis]
+    beta2s = [check.in_range("beta2", b, 0.5, 1.0) for b in beta2s]
+    seeds, n_theta = check.positive_int("seeds", seeds), check.positive_int("n_theta", n_theta)
+    budget = dict(budget or {"max_transits": 300.0})
+    store = Path(store)
+    func = functools.partial(_geometry_point, cases, n_theta, budget, str(store.with_suffix(".runs")))
+    attrs = {"cases": repr(cases), "n_theta": n_theta, "budget": repr(budget), **_case_attrs(cases),
+             "mesh": "n_theta x round(32 (xi - 1)) (the radial spacing of 256 x 16 at xi = 1.5)",
+             "mode_number": "median number of stick zones per snapshot (n_zones)",
+             "initial": "FE steady sliding + 1e-3 delta white noise (one seed per run)", **_regime_attrs()}
+    options.setdefault("batch", max(1, options.get("workers") or 2))
+    return run_sweep(func, {"case": list(range(len(cases))), "xi": xis, "beta2": beta2s,
+                            "seed": list(range(seeds))}, store, outputs=OUTCOMES, attrs=attrs, **options)
+
+
+def _case_attrs(cases) -> dict:
+    return {"case_friction": [c[0] for c in cases], "case_mismatch": [c[1] for c in cases],
+            "case_omega": [c[2] for c in cases]}
+
+
+def _regime_attrs() -> dict:
+    return {"regime_codes": REGIME_ATTRS["flag_meanings"],
+            "regime_code_values": " ".join(str(v) for v in REGIME_ATTRS["flag_values"])}
