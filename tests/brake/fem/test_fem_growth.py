@@ -35,23 +35,39 @@ def test_seeded_mode_grows_at_the_fully_discrete_rate(beta2, transits):
     assert measured * s.transit_time > 0.5  # it does grow (per transit)
 
 
-def test_low_mode_rates_converge_and_are_below_the_reduced_model():
-    """Lowest branch of modes 1-4 (the branch [12] approximates), case 1: observed order ~2 in the
-    mesh; FE / reduced-model growth = 0.29, 0.40, 0.61, 0.98 (reported in the docs), both waves
-    run against the shaft, the FE wave at 0.84 of the reduced-model speed (its frequencies are
-    ~17 % too high)."""
+@pytest.fixture(scope="module")
+def low_modes():
+    """Lowest branch of modes 1-4 (the branch [12] approximates), case 1, on three meshes."""
     p = case(0)
     grids = [(64, 4), (128, 8), (256, 16)]
-    lows = np.array([fem_growth_rates(p, assemble(annulus_mesh(N, nr), p.nu), [1, 2, 3, 4]).lowest
-                     for N, nr in grids])
+    return p, np.array([fem_growth_rates(p, assemble(annulus_mesh(N, nr), p.nu), [1, 2, 3, 4]).lowest
+                        for N, nr in grids])
+
+
+def test_low_mode_rates_converge_at_order_two(low_modes):
+    """Observed order of the lowest branch's growth rates under mesh halving: ~2 (bilinear elements)."""
+    _, lows = low_modes
     diffs = np.abs(np.diff(lows.real, axis=0)).max(axis=1)
     assert orders([1, 0.5], diffs)[0] == pytest.approx(2.0, abs=0.2)
+
+
+def test_low_mode_waves_run_against_the_shaft_in_both_models(low_modes):
+    """D < 0 for this ring: the flutter waves of steady sliding run against the shaft (c = -Im s / n < 0)
+    in the FE model and in the reduced model [12], two independent discretisations."""
+    p, lows = low_modes
+    red = growth_rates(p, [1, 2, 3, 4])
+    assert np.all(lows[-1].imag > 0) and np.all(red.frequency > 0) and np.all(lows[-1].real > 0)
+
+
+def test_regression_fe_to_reduced_model_growth_and_speed_ratios(low_modes):
+    """Regression snapshot, not a check of either model: FE / reduced-model growth = 0.29, 0.40,
+    0.61, 0.98 for modes 1-4 and FE / reduced wave speed ~0.85 (the one-term Galerkin model [12]
+    is compared with the FE, not expected to equal it; the numbers are reported in the docs)."""
+    p, lows = low_modes
     red = growth_rates(p, [1, 2, 3, 4])
     ratio = lows[-1].real / red.growth_rate
     assert np.all(np.diff(ratio) > 0) and 0.25 < ratio[0] < 0.35 and 0.9 < ratio[-1] < 1.05, ratio
-    speed_ratio = (lows[-1].imag / red.frequency)
-    assert np.all(lows[-1].imag > 0) and np.all(red.frequency > 0)  # c = -Im s / n < 0: against the shaft
-    assert np.all(np.abs(speed_ratio - 0.85) < 0.03), speed_ratio
+    assert np.all(np.abs(lows[-1].imag / red.frequency - 0.85) < 0.03)
 
 
 def test_f_above_one_is_ill_posed_like_the_half_space():

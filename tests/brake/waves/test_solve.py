@@ -237,17 +237,38 @@ def test_slip_zone_exponents_solve_the_flutter_dispersion_relation(waves):
 
 
 def test_stick_separation_waves_do_not_exist():
+    """W5. In stick U = delta and V' = -1/c, so the radial equation (c^2 - b) U'' - D V' + g U = P
+    gives the constant P = g delta + D/c. Lift-off straight from stick needs P = 0 at the stick
+    exit, hence over the whole zone (c = c* = -D/(g delta)); there Coulomb's |Q| <= f P = 0 needs
+    Q = h V + D U' = h V to vanish on an interval, while V' = -1/c != 0. So the solver must refuse
+    the regime, and a stick zone of positive length with P -> 0 must fail the inequalities."""
     p = CASES["stick-slip-separation"][0]
     with pytest.raises(NoSolutionError, match="no stick-separation wave"):
         travelling_wave(p, 4, regime="stick-separation")
-    # forcing the sequence: lift-off from stick needs P = g delta + D/c = 0 over the whole
-    # stick zone, so that |Q| < f P fails there whatever the solver returns
     sc = Scaling(p)
-    lay = Layout((STICK, SEPARATION), direction=1)
-    x0 = lay.pack(-1.1, [1.0, 0.57], [[sc.delta, 0, 0, 1 / 1.1], [sc.delta, 0, 0, 0.9]])
-    x, res = solve(lay, x0, sc.coefficients, p.friction, sc.delta, math.pi / 2)
-    margins = verify(lay, x, sc.coefficients, p.friction, sc.delta)
-    assert res > 1e-8 or min(margins["stick_friction"], margins["pressure"]) < 0
+    co = sc.coefficients
+    s = np.linspace(0.0, 0.5, 11)
+    for c in (-1.3, -2.0, 1.7):  # P is constant along any stick zone, from the radial equation with U'' = 0
+        fl = ZoneFlows(co, p.friction, sc.delta, c)
+        Y = fl.flow(STICK, [sc.delta, 0.0, 0.2, -1.0 / c], s)
+        assert np.allclose(fl.pressure(STICK, Y), co.g * sc.delta + co.D / c, rtol=1e-13, atol=0)
+        assert fl.stick_pressure() == pytest.approx(co.g * sc.delta + co.D / c, rel=1e-14)
+    c_star = -co.D / (co.g * sc.delta)
+    fl = ZoneFlows(co, p.friction, sc.delta, c_star)
+    y0 = [sc.delta, 0.0, 0.2, -1.0 / c_star]
+    Q = fl.traction(STICK, fl.flow(STICK, y0, s))
+    assert abs(fl.stick_pressure()) < 1e-12 * co.g * sc.delta
+    assert np.allclose(np.diff(Q), -co.h / c_star * np.diff(s), rtol=1e-10)  # Q = h V moves: |Q| <= 0 fails
+    # near c*, Coulomb allows a stick zone of length at most 2 f P |c| / h (-> 0 at c*): a longer
+    # stick zone followed by separation is rejected by the checks of [17]-[20]
+    c = 1.05 * c_star
+    fl = ZoneFlows(co, p.friction, sc.delta, c)
+    longest = 2 * p.friction * fl.stick_pressure() * abs(c) / co.h
+    L = 2.0 * longest
+    y0 = [sc.delta, 0.0, L / (2 * c), -1.0 / c]  # the best placed zone: Q = h V runs from -hL/2c to hL/2c
+    lay = Layout((STICK, SEPARATION), direction=int(np.sign(c)))
+    x = lay.pack(c, [L, 1.0], [y0, fl.flow(STICK, y0, L)])
+    assert 0 < longest < 0.01 and verify(lay, x, co, p.friction, sc.delta)["stick_friction"] < -0.5
 
 
 def test_to_dict_is_json_ready_and_to_xarray_has_units(waves):
