@@ -15,7 +15,7 @@ import pytest
 from scipy.integrate import solve_ivp
 
 from stickslip.brake import BrakeParams, coefficients
-from stickslip.brake.waves.boundsco import Layout, residual, solve, verify
+from stickslip.brake.waves.boundsco import Layout, residual, verify
 from stickslip.brake.waves.checks import energy_balance, integrate_wave
 from stickslip.brake.waves.shoot import stick_exit_orbit
 from stickslip.brake.waves.zones import REVERSE, SEPARATION, SLIP, STICK, Scaling, ZoneFlows

@@ -32,7 +32,7 @@ from ...errors import ParameterError
 from .. import Check
 from .paper import CASES, GEOMETRY, PAPER_REGIMES
 
-__all__ = ["METHOD", "MESHES", "case_data", "common_checks", "runs_text", "separation_zones", "case_plot", "title",
+__all__ = ["METHOD", "MESHES", "case_data", "common_checks", "seeded_check", "runs_text", "separation_zones", "case_plot", "title",
            "spacetime", "waterfall", "spacetime_panels"]
 
 METHOD = ("Plane-strain annulus meshed with bilinear quadrilaterals (scikit-fem assembly, lumped mass, outer radius "
@@ -174,6 +174,22 @@ def common_checks(ds) -> list[Check]:
               f"flutter: fastest discrete mode n = {int(ds['growth_discrete'].idxmax())} "
               f"({float(ds['growth_discrete'].max()):.2f} per transit, beta2 = 0.9)"),
     ]
+
+
+def seeded_check(ds, mode: int, regime: str, figure: str, detail: str = "") -> Check:
+    """The run seeded with ``cos(mode theta)`` ends, stationary, in ``regime`` with ``mode`` stick
+    zones: the paper's wave is a limit regime (a seeded run, labelled so; the claim from
+    unseeded starts is brake-fem-statistics')."""
+    r = ds.sel(run=f"mode {mode}")
+    ok = str(r["regime"].values) == regime and float(r["n_zones"]) == mode and bool(r["stationary"])
+    return Check(f"seeded start (cos {mode}θ): the {mode}-mode {regime} wave of {figure} is a limit regime (stationary)",
+                 bool(ok), f"seeded mode {mode}: {r['regime'].values}, {float(r['n_zones']):g} stick zones, stationary "
+                 f"{bool(r['stationary'])}, c = {float(r['c_over_cp']):.3f} c_p/R; slip "
+                 f"{float(r['fraction'].sel(kind='slip')):.3f}, reverse slip "
+                 f"{float(r['fraction'].sel(kind='reverse_slip')):.3f}, separation "
+                 f"{float(r['fraction'].sel(kind='separation')):.3f}",
+                 f"{regime}, {mode} stick zones, stationary", detail or f"time per run: {runs_text(ds, 'seconds', '{:.0f} s')}",
+                 claim=True)
 
 
 def title(ds, i):

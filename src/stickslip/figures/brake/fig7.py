@@ -7,7 +7,7 @@ import xarray as xr
 from matplotlib.figure import Figure
 
 from .. import Check, FigureSpec
-from .fem_cases import METHOD, case_data, case_plot, common_checks, runs_text
+from .fem_cases import METHOD, case_data, case_plot, common_checks, seeded_check
 
 
 def compute(quick: bool = False) -> xr.Dataset:
@@ -20,13 +20,7 @@ def check(ds) -> list[Check]:
     seeded = ds.sel(run="mode 4")
     c_lin = float(ds["flutter_speed"].sel(mode=4))
     return common_checks(ds) + [
-        Check("seeded start (cos 4θ): the 4-mode stick-slip wave of Figure 7 is a limit regime (stationary)",
-              bool(str(seeded["regime"].values) == "stick-slip" and float(seeded["n_zones"]) == 4
-                   and bool(seeded["stationary"])),
-              f"seeded mode 4: {seeded['regime'].values}, {float(seeded['n_zones']):g} stick zones, stationary "
-              f"{bool(seeded['stationary'])}, c = {float(seeded['c_over_cp']):.3f} c_p/R",
-              "stick-slip, 4 stick zones, stationary", f"time per run: {runs_text(ds, 'seconds', '{:.0f} s')}",
-              claim=True),
+        seeded_check(ds, 4, "stick-slip", "Figure 7"),
         Check("the 4-mode wave runs in the direction of the linear flutter wave of mode 4 (lowest branch)",
               bool(np.sign(float(seeded["c_over_cp"])) == np.sign(c_lin) != 0),
               f"c = {float(seeded['c_over_cp']):.3f} c_p/R", f"sign of -Im s(4)/4 = {c_lin:.3f} c_p/R",

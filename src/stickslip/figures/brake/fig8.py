@@ -6,7 +6,7 @@ import xarray as xr
 from matplotlib.figure import Figure
 
 from .. import Check, FigureSpec
-from .fem_cases import METHOD, case_data, case_plot, common_checks
+from .fem_cases import METHOD, case_data, case_plot, common_checks, seeded_check
 
 
 def compute(quick: bool = False) -> xr.Dataset:
@@ -21,15 +21,8 @@ def check(ds) -> list[Check]:
     hs = ds.attrs["halfspace_rate_per_transit_per_mode"]
     ns = [N // 16, N // 8]
     per_n = [float(ds["growth"].sel(mode=n)) / n for n in ns]
-    seeded = ds.sel(run="mode 2")
     return common_checks(ds) + [
-        Check("seeded start (cos 2θ): a 2-mode stick-separation wave is a limit regime (stationary)",
-              bool(str(seeded["regime"].values) == "stick-separation" and float(seeded["n_zones"]) == 2
-                   and bool(seeded["stationary"])),
-              f"seeded mode 2: {seeded['regime'].values}, {float(seeded['n_zones']):g} stick zones, stationary "
-              f"{bool(seeded['stationary'])} (slip {float(seeded['fraction'].sel(kind='slip')):.3f}, reverse slip "
-              f"{float(seeded['fraction'].sel(kind='reverse_slip')):.3f})", "stick-separation, 2 stick zones, stationary",
-              claim=True),
+        seeded_check(ds, 2, "stick-separation", "Figure 8"),
         Check("f = 2 > 1: steady sliding is ill-posed (growth proportional to the wavenumber)",
               bool(hs > 0 and all(0.85 < g / hs < 1.2 for g in per_n)),
               f"FE growth / n at n = {ns[0]}, {ns[1]}: {per_n[0]:.3f}, {per_n[1]:.3f} per transit; half-space slip "
