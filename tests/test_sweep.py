@@ -64,3 +64,15 @@ def test_map_command(tmp_path, capsys):
     assert sum(data["counts"].values()) == 6 and data["counts"]["stick-slip"] >= 1
     assert (tmp_path / "m.png").exists()
     assert run(args[:-6] + ["--x", "belt_speed=0.2:1.3", "--out", str(tmp_path / "n.zarr")]) == 2
+
+
+@pytest.mark.parametrize("axis, words", [("belt_speed=0:1:3", "every value > 0"), ("fs=0.1:0.2:2", ">= fd"),
+                                         ("foo=1:2:3", "one of mass")])
+def test_map_command_checks_every_point_before_starting(axis, words, tmp_path, capsys):
+    """An axis that leaves the valid range is one line naming --x, in the main process (it used to
+    fail in a worker, where the error could not even be unpickled: exit 3)."""
+    args = ["oscillator", "map", "--mass", "1", "--stiffness", "1", "--normal-force", "1", "--belt-speed", "0.2",
+            "--fs", "0.6", "--fd", "0.4", "--x", axis, "--out", str(tmp_path / "m.zarr")]
+    assert run(args) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "--x" in err and words in err and not (tmp_path / "m.zarr").exists()

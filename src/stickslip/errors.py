@@ -14,6 +14,9 @@ class ParameterError(ValueError):
         self.name, self.value, self.allowed = name, value, allowed
         super().__init__(f"invalid {name} = {value!r}: must be {allowed}")
 
+    def __reduce__(self):  # raised in a worker process, it must cross back intact
+        return type(self), (self.name, self.value, self.allowed)
+
 
 class NoSolutionError(RuntimeError):
     """The problem is well posed but has no solution of the requested kind."""

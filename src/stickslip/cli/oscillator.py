@@ -164,7 +164,16 @@ def map_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: 
         raise ParameterError("--out", str(out), "a directory name ending in .zarr")
     plot = output_path("--plot", plot, ".png")
     osc = _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping)
-    axes = dict((_axis("--x", x), _axis("--y", y)))
+    axes = {}
+    for option, text in (("--x", x), ("--y", y)):
+        name, values = _axis(option, text)
+        try:  # every point of the map is a valid oscillator, checked here rather than in a worker
+            for value in values:
+                osc.with_parameter(name, value)
+        except ParameterError as exc:
+            raise ParameterError(option, text, f"an axis of {exc.name} with every value {exc.allowed}"
+                                 if exc.name != "parameter" else exc.allowed) from None
+        axes[name] = values
     with progress_bar("regime map") as tick:
         ds = regime_map(osc, axes, out, workers=workers, progress=tick)
     counts = {REGIMES[k]: int((ds["regime"] == k).sum()) for k in REGIMES}
