@@ -4,6 +4,8 @@ import json
 import subprocess
 import sys
 
+from pathlib import Path
+
 import pytest
 import xarray as xr
 
@@ -71,7 +73,47 @@ def test_output_paths_are_validated(tmp_path, capsys):
     code, _, err = _run(BASE + ["--out", str(tmp_path / "x.txt")], capsys)
     assert code == 2 and "--out" in err
     code, _, err = _run(BASE + ["--out", str(tmp_path / "missing" / "x.nc")], capsys)
-    assert code == 2 and "existing directory" in err
+    assert code == 2 and "existing folder" in err
+
+
+OSC = ["--mass", "1", "--stiffness", "1", "--normal-force", "1", "--belt-speed", "0.2", "--fs", "0.6", "--fd", "0.4"]
+BRAKE = ["--omega", "50", "--mismatch", "1e-4", "--friction", "0.7"]
+#: (command, the option, a suffix it needs, whether it is a folder, the library function it must not reach)
+OUTPUTS = [
+    (["oscillator", "simulate", *OSC, "--t-end", "5"], "--out", ".nc", False, "stickslip.oscillator.simulate"),
+    (["oscillator", "simulate", *OSC, "--t-end", "5"], "--plot", ".png", False, "stickslip.oscillator.simulate"),
+    (["oscillator", "map", *OSC], "--out", ".zarr", True, "stickslip.oscillator.regimes.regime_map"),
+    (["brake", "integrate", *BRAKE, "--transits", "1"], "--checkpoint", ".nc", False, "stickslip.brake.integrate"),
+    (["brake", "fem", *BRAKE, "--transits", "1"], "--out", ".nc", False, "stickslip.brake.fem.integrate_fem"),
+    (["brake", "map"], "--out", ".zarr", True, "stickslip.brake.maps.wave_regime_map"),
+    (["brake", "campaign"], "--out", "", True, "stickslip.brake.fem.campaign.statistics"),
+    (["halfspace", "fields", "--b", "11.358", "--c", "-0.7", "--v-star", "0.001"], "--out", ".nc", False,
+     "stickslip.halfspace.wave_from_inverse"),
+    (["reproduce", "--only", "fig2"], "--out", "", True, "stickslip.report.reproduce"),
+]
+
+
+def _bad_paths(tmp_path, suffix, folder):
+    a_file = tmp_path / f"file{suffix}"
+    a_file.write_text("x")
+    a_dir = tmp_path / f"dir{suffix}"
+    a_dir.mkdir()
+    bad = {"missing parent": tmp_path / "missing" / "sub" / f"x{suffix}", "under a file": a_file / f"x{suffix}",
+           "unwritable": Path("/proc") / f"x{suffix}"}
+    bad.update({"a file": a_file} if folder else {"a folder": a_dir, "missing parent": tmp_path / "no" / f"x{suffix}"})
+    if folder:
+        del bad["missing parent"]  # a folder's missing parents are created
+    return bad
+
+
+@pytest.mark.parametrize("args, option, suffix, folder, target", OUTPUTS, ids=[f"{o[0][0]} {o[0][1]} {o[1]}"
+                                                                               for o in OUTPUTS])
+def test_bad_output_paths_fail_before_any_work(args, option, suffix, folder, target, tmp_path, capsys, monkeypatch):
+    module, _, name = target.rpartition(".")
+    monkeypatch.setattr(module + "." + name, lambda *a, **k: pytest.fail("the work started"), raising=True)
+    for what, path in _bad_paths(tmp_path, suffix, folder).items():
+        code, _, err = _run(args + [option, str(path)], capsys)
+        assert code == 2 and err.count("\n") == 1 and option in err, (what, err)
 
 
 def test_stability_and_continuation_commands(capsys):

@@ -8,7 +8,7 @@ from typing import Annotated, Optional
 import typer
 
 from ..errors import ParameterError
-from .common import emit, output_path, progress_bar
+from .common import emit, output_folder, output_path, progress_bar
 
 app = typer.Typer(no_args_is_help=True, help="Elastic annulus on a rotating shaft: reduced model (paper section 3).")
 
@@ -230,8 +230,7 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (directory ending
     import numpy as np
     from ..brake.maps import REGIME_CODES, ring_regime_map, wave_regime_map
 
-    if out.suffix != ".zarr":
-        raise ParameterError("--out", str(out), "a directory name ending in .zarr")
+    out = output_folder("--out", out, ".zarr")
     if kind not in ("waves", "ring"):
         raise ParameterError("--kind", kind, "waves or ring")
 
@@ -303,10 +302,8 @@ def campaign_cmd(
     for option, value in (("--seeds", seeds), ("--geometry-seeds", geometry_seeds), ("--workers", workers)):
         if value is not None and value < 1:
             raise ParameterError(option, value, ">= 1")
-    if out.exists() and not out.is_dir():
-        raise ParameterError("--out", str(out), "a folder (created if absent)")
-    if export is not None and export.exists() and not export.is_dir():
-        raise ParameterError("--export", str(export), "a folder (created if absent)")
+    out = output_folder("--out", out)
+    export = None if export is None else output_folder("--export", export)
     out.mkdir(parents=True, exist_ok=True)
     summary = {"out": str(out)}
     sweeps = {"statistics": lambda tick: campaign.statistics(out / "statistics.zarr", CASES, seeds=seeds,

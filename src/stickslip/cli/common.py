@@ -5,6 +5,8 @@ from __future__ import annotations
 import contextlib
 import json
 import math
+import os
+import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -44,14 +46,46 @@ def emit(data: dict, as_json: bool, title: str) -> None:
     Console().print(table)
 
 
+def _writable_folder(name: str, path: Path, folder: Path) -> None:
+    """``folder`` exists, is a folder, and a file can be created in it (tried, then removed)."""
+    if not folder.is_dir():
+        raise ParameterError(name, str(path), f"a path in an existing folder ({folder} is not one)")
+    try:
+        with tempfile.NamedTemporaryFile(dir=folder, prefix=".stickslip-probe-"):
+            pass
+    except OSError as exc:
+        raise ParameterError(name, str(path), f"a path in a folder you can write to (creating a file in {folder} "
+                                               f"failed: {exc.strerror or type(exc).__name__})") from None
+
+
 def output_path(name: str, path: Path | None, suffix: str) -> Path | None:
-    """Validate an output file name (its suffix and that its folder exists)."""
+    """Check an output file before any work: its suffix, that it is not a folder, that its
+    folder exists and can be written to, and that an existing file can be replaced."""
     if path is None:
         return None
     if path.suffix.lower() != suffix:
         raise ParameterError(name, str(path), f"a file name ending in {suffix}")
-    if not path.parent.exists():
-        raise ParameterError(name, str(path), "a path in an existing directory")
+    if path.is_dir():
+        raise ParameterError(name, str(path), "a file name, not a folder")
+    _writable_folder(name, path, path.parent if str(path.parent) else Path("."))
+    if path.exists() and not os.access(path, os.W_OK):
+        raise ParameterError(name, str(path), "a file you can write to")
+    return path
+
+
+def output_folder(name: str, path: Path, suffix: str | None = None) -> Path:
+    """Check an output folder (a store, a results folder) before any work: its suffix, that it is
+    not a file, and that it or its nearest existing parent can be written to."""
+    if suffix is not None and path.suffix.lower() != suffix:
+        raise ParameterError(name, str(path), f"a folder name ending in {suffix}")
+    if path.exists() and not path.is_dir():
+        raise ParameterError(name, str(path), "a folder (created if absent), not a file")
+    existing = path.resolve()
+    while not existing.exists():
+        existing = existing.parent
+    if not existing.is_dir():
+        raise ParameterError(name, str(path), f"a folder whose parents are folders ({existing} is a file)")
+    _writable_folder(name, path, existing)
     return path
 
 

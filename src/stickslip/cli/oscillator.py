@@ -11,7 +11,7 @@ import typer
 from ..friction import make_law
 from ..oscillator import (Oscillator, continue_cycle, continue_from_hopf, equilibrium_stability, hopf_points,
                           limit_cycle, simulate)
-from .common import emit, output_path, progress_bar
+from .common import emit, output_folder, output_path, progress_bar
 
 app = typer.Typer(no_args_is_help=True, help="The 1-DOF friction oscillator m x'' + c x' + k x = F (paper section 2).")
 
@@ -160,8 +160,7 @@ def map_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: 
     from ..errors import ParameterError
     from ..oscillator.regimes import REGIMES, regime_map
 
-    if out.suffix != ".zarr":
-        raise ParameterError("--out", str(out), "a directory name ending in .zarr")
+    out = output_folder("--out", out, ".zarr")
     plot = output_path("--plot", plot, ".png")
     osc = _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping)
     axes = {}

@@ -8,7 +8,7 @@ from typing import Annotated, Optional
 import typer
 from rich.console import Console
 
-from .common import emit
+from .common import emit, output_folder
 
 
 def reproduce(out: Annotated[Path, typer.Option(help="Output directory.")] = Path("results"),
@@ -19,6 +19,7 @@ def reproduce(out: Annotated[Path, typer.Option(help="Output directory.")] = Pat
     """Compute, plot and check every figure of the paper; write report.md and report.html."""
     from ..report import reproduce as run
 
+    out = output_folder("--out", out)
     console = Console(stderr=True)
     status = console.status("starting")
     status.start()
