@@ -131,3 +131,14 @@ def test_installed_entry_point_runs():
     proc = subprocess.run([sys.executable, "-m", "stickslip", "oscillator", "cycle", "--help"], capture_output=True,
                           text=True)
     assert proc.returncode == 0 and "--belt-speed" in proc.stdout
+
+
+@pytest.mark.parametrize("args", [
+    ["oscillator", "simulate", *OSC, "--damping", "1e6", "--t-end", "5", "--json"],
+    ["brake", "fem", "--omega", "50", "--mismatch", "0", "--friction", "0.7", "--transits", "1", "--json"],
+    ["halfspace", "inverse", "--b", "1e300", "--c", "-0.7", "--v-star", "0.001", "--json"],
+], ids=["simulate damping 1e6", "fem mismatch 0", "inverse b 1e300"])
+def test_a_non_finite_result_is_never_printed_with_exit_0(args, capsys):
+    """Inputs that once printed NaN with exit 0 (issue 9): now an error, nothing on stdout."""
+    code, out, err = _run(args, capsys)
+    assert code in (1, 2) and out == "" and err.strip()

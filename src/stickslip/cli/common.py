@@ -13,7 +13,7 @@ import numpy as np
 from rich.console import Console
 from rich.table import Table
 
-from ..errors import ParameterError
+from ..errors import NoSolutionError, ParameterError
 
 
 def _clean(value):
@@ -32,8 +32,25 @@ def _clean(value):
     return value
 
 
+def non_finite(value, prefix: str = "") -> list[str]:
+    """Paths (``a.b[2]``) of the NaN and infinite numbers in a nested result."""
+    if isinstance(value, dict):
+        return [p for k, v in value.items() for p in non_finite(v, f"{prefix}.{k}" if prefix else str(k))]
+    if isinstance(value, (list, tuple, np.ndarray)):
+        return [p for i, v in enumerate(value) for p in non_finite(v, f"{prefix}[{i}]")]
+    if isinstance(value, (float, np.floating)) and not math.isfinite(float(value)):
+        return [prefix]
+    return []
+
+
 def emit(data: dict, as_json: bool, title: str) -> None:
-    """Print ``data`` as one JSON object, or as a table for people."""
+    """Print ``data`` as one JSON object, or as a table for people. A result with a NaN or an
+    infinity is not printed: it is a `NoSolutionError` naming the fields (exit code 1)."""
+    bad = non_finite(data)
+    if bad:
+        raise NoSolutionError(f"no finite {title or 'result'}: {', '.join(bad[:5])}"
+                              f"{f' and {len(bad) - 5} more' if len(bad) > 5 else ''} came out NaN or infinite "
+                              "(the parameters are outside the range where the computation is meaningful)")
     data = _clean(data)
     if as_json:
         print(json.dumps(data))
@@ -94,6 +111,6 @@ def progress_bar(label: str):
     """A transient rich progress bar; yields the library's ``progress(done, total)`` callback."""
     from rich.progress import Progress
 
-    with Progress(transient=True) as bar:
+    with Progress(console=Console(stderr=True), transient=True) as bar:
         task = bar.add_task(label, total=None)
         yield lambda done, total: bar.update(task, completed=done, total=total)
