@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import os
 import sys
+import warnings
 
 import typer
 
@@ -37,7 +38,11 @@ def run(argv: list[str] | None = None) -> int:
         return code
 
     try:
-        result = app(args=argv, prog_name="stickslip", standalone_mode=False)
+        # numeric warnings are not for the user: a result that went NaN or infinite is refused
+        # by `common.emit` (one line, exit 1), a finite one is printed
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)
+            result = app(args=argv, prog_name="stickslip", standalone_mode=False)
         return result if isinstance(result, int) else 0
     except _EXIT as exc:
         return exc.exit_code
