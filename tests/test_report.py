@@ -1,6 +1,7 @@
 import json
 from pathlib import Path
 
+import pytest
 
 from stickslip.cli import run
 from stickslip.errata import ERRATA, to_markdown
@@ -38,6 +39,12 @@ def test_unknown_figure_is_a_usage_error(tmp_path, capsys):
     code = run(["reproduce", "--out", str(tmp_path), "--only", "fig99"])
     err = capsys.readouterr().err
     assert code == 2 and "fig99" in err and "fig2" in err
+
+
+@pytest.mark.parametrize("only", ["", ",", " , "])
+def test_an_empty_selection_is_refused_not_read_as_everything(only, tmp_path, capsys):
+    code = run(["reproduce", "--out", str(tmp_path), "--only", only])
+    assert code == 2 and "--only" in capsys.readouterr().err and not any(tmp_path.iterdir())
 
 
 def test_registry_lists_the_paper_figures():

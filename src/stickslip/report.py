@@ -80,9 +80,11 @@ def source_fingerprint() -> str:
 
 def select(only: str | None) -> list[FigureSpec]:
     specs = registry()
-    if not only:
+    if only is None:
         return list(specs.values())
     keys = [k.strip() for k in only.split(",") if k.strip()]
+    if not keys:  # "" or ",": not "everything" (a 20-minute run the user did not ask for)
+        raise ParameterError("--only", only, "comma-separated figure keys among " + ", ".join(specs))
     unknown = [k for k in keys if k not in specs]
     if unknown:
         raise ParameterError("--only", ",".join(unknown), "comma-separated figure keys among " + ", ".join(specs))

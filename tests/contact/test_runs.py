@@ -109,3 +109,19 @@ def test_runs_reject_bad_options(model, options, name):
     with pytest.raises(ParameterError) as err:
         model.integrate(CASE2, **(model.mesh | options))
     assert err.value.name == name
+
+
+@pytest.mark.parametrize("request_", [{"transits": 1e300}, {"transits": float("inf")}, {"t_end": 1e300}])
+def test_an_absurd_run_length_is_refused_up_front_with_the_limit(model, request_):
+    """More than MAX_WORK dof-steps is refused before any step, naming the option and the limit
+    for this mesh (it used to run until killed)."""
+    from stickslip.contact.runs import MAX_WORK
+
+    s = model.scheme(CASE2)
+    name = next(iter(request_))
+    with pytest.raises(ParameterError) as err:
+        model.integrate(CASE2, **model.mesh, **request_)
+    assert err.value.name == name and ("<=" in err.value.allowed or not np.isfinite(request_[name]))
+    if name == "transits" and np.isfinite(request_[name]):
+        limit = float(err.value.allowed.split()[1])
+        assert limit == pytest.approx(MAX_WORK / s.sparse_operator.shape[0] * s.dt / s.transit_time, rel=1e-3)

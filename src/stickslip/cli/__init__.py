@@ -31,6 +31,23 @@ def _one_line(message: str) -> str:
     return " ".join(str(message).split())
 
 
+def _as_typed(argv: list[str] | None, exc: ParameterError) -> ParameterError:
+    """The error with the library's parameter name replaced by the option of the command that
+    was run (``transits`` -> ``--transits``), when the command has such an option."""
+    if exc.name.startswith("-"):
+        return exc
+    command = typer.main.get_command(app)
+    for token in (sys.argv[1:] if argv is None else argv):
+        sub = getattr(command, "commands", {}).get(token)
+        if sub is None:
+            break
+        command = sub
+    for param in getattr(command, "params", []):
+        if param.name == exc.name and getattr(param, "opts", None):
+            return ParameterError(param.opts[0], exc.value, exc.allowed)
+    return exc
+
+
 def run(argv: list[str] | None = None) -> int:
     """Run the CLI and return its exit code."""
     def fail(prefix: str, exc, code: int) -> int:
@@ -54,7 +71,7 @@ def run(argv: list[str] | None = None) -> int:
             return 0
         return fail("error", exc.format_message(), 2)
     except ParameterError as exc:
-        return fail("error", exc, 2)
+        return fail("error", _as_typed(argv, exc), 2)
     except NoSolutionError as exc:
         return fail("no solution", exc, 1)
     except ValueError as exc:

@@ -208,6 +208,11 @@ def schedule(scheme, t_end, samples_per_transit, snapshot_every, tail) -> dict:
             "tail_samples": int(round(tail * per_transit))}
 
 
+#: The largest run accepted, in dof-steps (degrees of freedom x time steps): about 4 hours of the
+#: kernel at ~1.5 ns per dof-step. Larger requests are refused up front, not left to hang.
+MAX_WORK = 1e13
+
+
 def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tail, modes, contact, initial,
             progress) -> tuple[float, dict]:
     """Validate the common options of a run; return ``t_end`` and the settings."""
@@ -215,6 +220,14 @@ def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tai
         raise ParameterError("t_end", t_end, "given (> 0), or else transits, but not both")
     t_end = check.positive("t_end", t_end) if transits is None else \
         check.positive("transits", transits) * scheme.transit_time
+    dofs = scheme.sparse_operator.shape[0]
+    if t_end / scheme.dt * dofs > MAX_WORK:
+        limit = MAX_WORK / dofs * scheme.dt
+        name, value, most = ("t_end", t_end, limit) if transits is None else \
+            ("transits", transits, limit / scheme.transit_time)
+        raise ParameterError(name, value, f"<= {most:.4g} on this mesh ({dofs} dofs, {scheme.dt:.3g} per step): "
+                             f"at most {MAX_WORK:.0e} dof-steps per run (about 4 hours); continue a run from its "
+                             "checkpoint for more")
     spt = check.positive_int("samples_per_transit", samples_per_transit)
     if spt < 4:
         raise ParameterError("samples_per_transit", spt, "an integer >= 4")
