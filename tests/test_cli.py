@@ -37,9 +37,9 @@ def test_cycle_with_each_law(capsys):
 
 
 @pytest.mark.parametrize("change, name", [
-    (["--fs", "0.3"], "fs"), (["--mass", "-1"], "mass"), (["--stiffness", "0"], "stiffness"),
-    (["--normal-force", "nan"], "normal_force"), (["--belt-speed", "0"], "belt_speed"), (["--damping", "-0.1"], "damping"),
-    (["--law", "stribeck"], "tau"),
+    (["--fs", "0.3"], "--fs"), (["--mass", "-1"], "--mass"), (["--stiffness", "0"], "--stiffness"),
+    (["--normal-force", "nan"], "--normal-force"), (["--belt-speed", "0"], "--belt-speed"),
+    (["--damping", "-0.1"], "--damping"), (["--law", "stribeck"], "tau"),
 ])
 def test_bad_input_is_one_line_and_exit_2(change, name, capsys):
     code, out, err = _run(BASE + change + ["--json"], capsys)
