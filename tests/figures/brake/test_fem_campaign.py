@@ -1,0 +1,127 @@
+"""The figures of the FE campaign: their checks on synthetic campaign data (each claim passes
+when the data say so and fails on data that contradict it), their plots, and where the
+data come from (a finished campaign, the stored result if the FE code is unchanged, or the
+small version)."""
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from stickslip.contact import REGIME_CODES
+from stickslip.figures.brake import campaign_data, fem_geometry, fem_statistics
+from stickslip.figures.brake.paper import PAPER_REGIMES
+
+from ..helpers import assert_png
+
+CODES = np.array([REGIME_CODES[r] for r, _ in PAPER_REGIMES], float)
+MODES = np.array([m for _, m in PAPER_REGIMES], float)
+
+
+def _fractions(shape):
+    return {k: (tuple(shape), np.full(shape, 0.25)) for k in ("stick", "slip", "reverse_slip", "separation")}
+
+
+def statistics_data(seeds=4, meshes=((256, 16), (512, 32))):
+    """Every run of every case ends in the paper's regime and mode number, stationary."""
+    shape = (3, len(meshes), seeds)
+    dims = ("case", "mesh", "seed")
+    data = {"regime": (dims, np.broadcast_to(CODES[:, None, None], shape).copy()),
+            "n_zones": (dims, np.broadcast_to(MODES[:, None, None], shape).copy()),
+            "stationary": (dims, np.ones(shape)), "seconds": (dims, np.ones(shape)),
+            **{k: (dims, v) for k, (_, v) in _fractions(shape).items()}}
+    return xr.Dataset(data, coords={"case": range(3), "mesh": range(len(meshes)), "seed": range(seeds)},
+                      attrs={"mesh_n_theta": [m[0] for m in meshes], "mesh_n_r": [m[1] for m in meshes],
+                             "source": "synthetic"})
+
+
+def _claims(ds):
+    return {c.name.split(":")[0]: c.passed for c in fem_statistics.check(ds)}
+
+
+def test_statistics_claims_pass_on_data_that_reproduce_the_paper():
+    ds = statistics_data()
+    ds["regime"][0, :, 0] = REGIME_CODES["stick-slip-separation"]  # a second outcome for case 1
+    assert all(_claims(ds).values()), _claims(ds)
+
+
+def _set(name, index, value):
+    def corrupt(ds):
+        ds = ds.copy(deep=True)
+        ds[name].values[index] = value
+        return ds
+    return corrupt
+
+
+@pytest.mark.parametrize("corrupt, failing", [
+    (_set("n_zones", (0, 1, slice(None)), 3.0), "Figure 7 (case 1)"),          # fine mesh: another mode
+    (_set("n_zones", (1, 0, slice(0, 4)), 5.0), "Figure 9 (case 2)"),           # every run: another mode
+    (_set("regime", (2, 1, slice(None)), REGIME_CODES["stick-slip-separation"]), "Figure 8 (case 3)"),
+    (_set("regime", (2, 0, slice(None)), REGIME_CODES["stick-slip"]), "the paper's regime types from unseeded starts"),
+    (_set("regime", (0, 0, 0), np.nan), "every run ended in a classified window"),
+    (_set("slip", (1, 1, 2), 0.5), "every run ended in a classified window"),   # fractions do not sum to 1
+    (_set("n_zones", (0, 1, slice(None)), 2.0), "the most frequent outcome of each case does not change with the mesh"),
+    (lambda ds: ds, "the limit regime depends on the initial condition (paper, section 3.1)"),  # one outcome each
+], ids=["case 1 mode", "case 2 mode", "case 3 regime", "regime types", "nan", "fractions", "mesh", "one outcome"])
+def test_each_statistics_claim_fails_on_data_that_contradict_it(corrupt, failing):
+    claims = _claims(corrupt(statistics_data()))
+    matches = [v for k, v in claims.items() if k.startswith(failing)]
+    assert len(matches) == 1 and not matches[0], claims
+
+
+def test_one_mesh_cannot_settle_a_claim():
+    claims = _claims(statistics_data(meshes=((256, 16),)))
+    assert not claims["Figure 7 (case 1)"] and not claims["the paper's regime types from unseeded starts (any mode number)"]
+
+
+def test_a_quarter_of_the_runs_is_the_threshold():
+    ds = statistics_data(seeds=8)
+    ds["n_zones"][0, :, 2:] = 3.0  # 2 of 8 = 25 % keep the paper's mode
+    assert _claims(ds)["Figure 7 (case 1)"]
+    ds["n_zones"][0, 1, 1] = 3.0  # 1 of 8 on the fine mesh
+    assert not _claims(ds)["Figure 7 (case 1)"]
+
+
+def geometry_data(hit=(1, 2)):
+    """Most frequent outcomes over (xi, beta2): the paper's three only in cell ``hit``."""
+    xis, b2s, seeds = [1.25, 1.5, 2.0], [0.6, 0.75, 0.9], 3
+    shape = (3, len(xis), len(b2s), seeds)
+    dims = ("case", "xi", "beta2", "seed")
+    regime = np.broadcast_to(CODES[:, None, None, None], shape).copy()
+    n = np.full(shape, 6.0)
+    if hit is not None:
+        n[:, hit[0], hit[1], :] = MODES[:, None]
+    return xr.Dataset({"regime": (dims, regime), "n_zones": (dims, n)},
+                      coords={"case": range(3), "xi": xis, "beta2": b2s, "seed": range(seeds)}, attrs={"source": "x"})
+
+
+def test_geometry_claim_finds_the_cell_and_fails_without_it():
+    checks = fem_geometry.check(geometry_data())
+    assert all(c.passed for c in checks) and "xi 1.5, beta2 0.9" in checks[1].measured
+    assert not fem_geometry.check(geometry_data(hit=None))[1].passed
+    ds = geometry_data()
+    ds["n_zones"][2, 1, 2, :2] = 3.0  # case 3's most frequent mode in that cell is no longer the paper's
+    assert not fem_geometry.check(ds)[1].passed
+
+
+def test_campaign_plots(tmp_path):
+    assert_png(fem_statistics.plot, statistics_data(), tmp_path / "s.png")
+    assert_png(fem_geometry.plot, geometry_data(), tmp_path / "g.png")
+
+
+def test_data_come_from_the_campaign_then_the_stored_result_then_the_small_version(tmp_path, monkeypatch):
+    stored = tmp_path / "stored"
+    monkeypatch.setattr(campaign_data, "STORED_DIR", stored)
+    ds, why = campaign_data.find("statistics", tmp_path / "data")
+    assert ds is None and "no campaign found" in why
+    campaign_data.export(statistics_data(), "statistics", stored, "2026-11-23")  # fingerprint of today's code
+    ds, why = campaign_data.find("statistics", tmp_path / "data")
+    assert ds is not None and "stored with the package" in why and ds.sizes["seed"] == 4
+    stale = xr.load_dataset(stored / "fem_statistics.nc")
+    stale.attrs["model_fingerprint"] = "0" * 16  # computed by other FE code
+    stale.to_netcdf(stored / "fem_statistics.nc")
+    ds, why = campaign_data.find("statistics", tmp_path / "data")
+    assert ds is None and "other FE code" in why
+    finished = statistics_data().assign(done=(("case", "mesh", "seed"), np.ones((3, 2, 4), bool)))
+    finished.to_zarr(tmp_path / "data" / campaign_data.CAMPAIGN_DIR / "statistics.zarr", consolidated=False)
+    ds, why = campaign_data.find("statistics", tmp_path / "data")
+    assert ds is not None and "the campaign in" in why
