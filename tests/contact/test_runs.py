@@ -125,3 +125,34 @@ def test_an_absurd_run_length_is_refused_up_front_with_the_limit(model, request_
     if name == "transits" and np.isfinite(request_[name]):
         limit = float(err.value.allowed.split()[1])
         assert limit == pytest.approx(MAX_WORK / s.sparse_operator.shape[0] * s.dt / s.transit_time, rel=1e-3)
+
+
+def _tamper(path, how):
+    if how == "bytes":  # 200 bytes flipped in the middle of the file
+        data = bytearray(path.read_bytes())
+        mid = len(data) // 2
+        data[mid:mid + 200] = bytes(b ^ 0xFF for b in data[mid:mid + 200])
+        path.write_bytes(bytes(data))
+        return
+    ds = xr.load_dataset(path)
+    name = "kernel_u"
+    values = ds[name].values.copy()
+    if how == "nan":
+        values.flat[values.size // 2] = np.nan
+    else:  # one field scaled by 1e6
+        values *= 1e6
+    ds[name] = (ds[name].dims, values, ds[name].attrs)
+    ds.to_netcdf(path.with_suffix(".tmp.nc"))
+    path.with_suffix(".tmp.nc").replace(path)
+
+
+@pytest.mark.parametrize("how", ["bytes", "nan", "scaled"])
+def test_a_damaged_or_edited_checkpoint_is_refused_not_resumed(model, how, tmp_path):
+    """Issue 9: these were resumed silently and gave another answer (or NaN with exit 0)."""
+    path = tmp_path / "run.nc"
+    model.run(CASE2, 4, checkpoint=path)
+    model.run(CASE2, 6, checkpoint=path)  # an intact checkpoint resumes
+    _tamper(path, how)
+    with pytest.raises(ParameterError) as err:
+        model.run(CASE2, 8, checkpoint=path)
+    assert err.value.name == "checkpoint"

@@ -20,6 +20,7 @@ types) and a `RunRecord` subclass; `run_explicit` does the rest.
 
 from __future__ import annotations
 
+import hashlib
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -241,11 +242,27 @@ def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tai
     return t_end, settings
 
 
+def content_digest(ds: xr.Dataset) -> str:
+    """SHA-256 of every variable's name, type, shape and values (a changed byte changes it)."""
+    digest = hashlib.sha256()
+    for name in sorted(map(str, ds.variables)):
+        values = np.asarray(ds[name].values)
+        digest.update(f"{name}|{values.shape}|".encode())
+        if values.dtype.kind in "biuf":
+            digest.update(values.dtype.str.encode() + np.ascontiguousarray(values).tobytes())
+        else:
+            digest.update(repr(values.tolist()).encode())
+    return digest.hexdigest()
+
+
 def save(run, path) -> None:
-    """Write the run atomically (a kill during the write leaves the previous file)."""
+    """Write the run atomically (a kill during the write leaves the previous file), with a
+    checksum of its content that `resume` verifies."""
     path = Path(path)
     tmp = path.with_name(path.name + ".tmp")
-    run.to_xarray().to_netcdf(tmp)
+    ds = run.to_xarray()
+    ds.attrs["content_sha256"] = content_digest(ds)
+    ds.to_netcdf(tmp)
     os.replace(tmp, path)
 
 
@@ -257,8 +274,15 @@ def resume(cls, path, scheme, settings):
     refused = ParameterError("checkpoint", str(path), "a checkpoint of the same run (parameters, scheme, schedule "
                              "and initial condition must match; delete it to start afresh)")
     try:
-        old = cls.from_xarray(xr.load_dataset(path))
-    except (OSError, KeyError, ValueError, TypeError) as err:  # not a run of this model (or not netCDF)
+        ds = xr.load_dataset(path)
+    except (OSError, KeyError, ValueError, TypeError) as err:  # not netCDF, or damaged
+        raise refused from err
+    if ds.attrs.get("content_sha256") != content_digest(ds):
+        raise ParameterError("checkpoint", str(path), "an intact checkpoint written by stickslip (its content does "
+                             "not match its checksum: the file was changed or damaged; delete it to start afresh)")
+    try:
+        old = cls.from_xarray(ds)
+    except (OSError, KeyError, ValueError, TypeError) as err:  # not a run of this model
         raise refused from err
     if old.params.to_dict() != scheme.params.to_dict() or \
             settings_key(old) != settings_key(cls(scheme, settings, {}, {}, {}, 0)):
