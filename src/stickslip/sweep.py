@@ -25,6 +25,7 @@ import zarr
 
 from . import validation as check
 from .errors import ParameterError
+from .files import die_with_parent, exclusive
 
 __all__ = ["run_sweep"]
 
@@ -106,6 +107,11 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
         raise ParameterError("outputs", outputs, "a non-empty mapping of output names (not 'done') to units")
     batch = check.positive_int("batch", batch)
     store = Path(store)
+    with exclusive(store, "store"):  # one writer per store
+        return _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attrs)
+
+
+def _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attrs):
     if store.exists():
         if not _matches(store, axes, outputs, dict(attrs or {})):
             raise ParameterError("store", str(store), "a new path, or a sweep store with the same axes, outputs and "
@@ -123,7 +129,8 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
         extra = {}
         if scheduler == "processes" and todo:  # one pool for the whole sweep, not one per batch
             context = multiprocessing.get_context("spawn")
-            extra["pool"] = stack.enter_context(ProcessPoolExecutor(workers, mp_context=context))
+            extra["pool"] = stack.enter_context(ProcessPoolExecutor(workers, mp_context=context,
+                                                                    initializer=die_with_parent))
         for start in range(0, len(todo), batch):
             chunk = todo[start:start + batch]
             points = [{k: axes[k][i] for k, i in zip(axes, idx)} for idx in chunk]

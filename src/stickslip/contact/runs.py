@@ -20,6 +20,7 @@ types) and a `RunRecord` subclass; `run_explicit` does the rest.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import os
 from dataclasses import dataclass, field
@@ -31,6 +32,7 @@ import xarray as xr
 
 from .. import validation as check
 from ..errors import ParameterError
+from ..files import exclusive
 from .scheme import StepState
 from .states import STATE_ATTRS, STATE_NAMES, state_fractions
 
@@ -337,6 +339,13 @@ def run_explicit(cls, scheme, u0, v0, settings: dict, t_end: float, *, checkpoin
     ``settings`` come from `prepare`; with ``checkpoint`` the run resumes from the file if
     it holds this run (else `ParameterError`), and is written as it goes.
     """
+    with contextlib.ExitStack() as stack:
+        if checkpoint is not None:  # one writer per checkpoint, for the whole run
+            stack.enter_context(exclusive(checkpoint, "checkpoint"))
+        return _run_explicit(cls, scheme, u0, v0, settings, t_end, checkpoint, every, progress)
+
+
+def _run_explicit(cls, scheme, u0, v0, settings, t_end, checkpoint, every, progress):
     run = resume(cls, checkpoint, scheme, settings) if checkpoint is not None else None
     if run is None:
         start = scheme.initial_state(u0, v0, settings["contact"])

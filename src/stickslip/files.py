@@ -1,0 +1,72 @@
+"""Files that several processes could touch: one writer at a time, and workers that do not
+outlive the process that started them.
+
+`exclusive(path, option)` holds an advisory lock (``fcntl.flock``) on ``<path>.lock`` for
+as long as a run writes ``path`` (a checkpoint, a sweep store). A second run on the same
+file is refused at once with a `ParameterError` naming the option, instead of the two
+overwriting each other. The lock dies with its process, so a killed run leaves no stale
+lock. (On a system without ``fcntl`` the lock is a no-op.)
+
+`die_with_parent` is a process-pool initializer: on Linux the worker asks the kernel to
+kill it when its parent dies, so killing a sweep leaves no worker behind.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import signal
+from pathlib import Path
+
+from .errors import ParameterError
+
+try:
+    import fcntl
+except ImportError:  # pragma: no cover - not POSIX
+    fcntl = None
+
+__all__ = ["exclusive", "die_with_parent"]
+
+
+@contextlib.contextmanager
+def exclusive(path, option: str):
+    """Hold the write lock of ``path`` (``<path>.lock`` beside it), or raise `ParameterError`."""
+    path = Path(path)
+    if fcntl is None:
+        yield path
+        return
+    lock = path.with_name(path.name + ".lock")
+    while True:
+        fd = os.open(lock, os.O_RDWR | os.O_CREAT, 0o644)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            os.close(fd)
+            raise ParameterError(option, str(path), "a file no other run is writing (another stickslip process "
+                                                   "holds it now; wait for it, or use another path)") from None
+        try:  # the lock file may have been removed by its previous holder meanwhile: take the new one
+            same = os.stat(lock).st_ino == os.fstat(fd).st_ino
+        except FileNotFoundError:
+            same = False
+        if same:
+            break
+        os.close(fd)
+    try:
+        os.ftruncate(fd, 0)
+        os.write(fd, str(os.getpid()).encode())
+        yield path
+    finally:
+        with contextlib.suppress(OSError):
+            os.unlink(lock)  # while still held: nobody can have locked this file in between
+        os.close(fd)
+
+
+def die_with_parent() -> None:
+    """Ask the kernel to send SIGKILL to this process when its parent dies (Linux only)."""
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
+    except (OSError, AttributeError):  # pragma: no cover - not Linux
+        pass
