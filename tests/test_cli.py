@@ -142,3 +142,18 @@ def test_a_non_finite_result_is_never_printed_with_exit_0(args, capsys):
     """Inputs that once printed NaN with exit 0 (issue 9): now an error, nothing on stdout."""
     code, out, err = _run(args, capsys)
     assert code in (1, 2) and out == "" and err.strip()
+
+
+@pytest.mark.parametrize("args, option", [
+    (["oscillator", "simulate", *OSC, "--t-end", "5", "--samples", "1000000000000"], "--samples"),
+    (["oscillator", "simulate", *OSC, "--t-end", "5", "--samples", "0"], "--samples"),
+    (["halfspace", "fields", "--b", "11.358", "--c", "-0.7", "--v-star", "0.001", "--points", "1000000000000"],
+     "--points"),
+    (["brake", "stability", "--xi", "1.5", "--nu", "0.3", "--gamma", "1e-6", "--delta", "0.004", "--friction", "0.2",
+      "--modes", "1-99999999"], "--modes"),
+    (["brake", "continue", "--omega", "50", "--mismatch", "1e-5", "--friction", "0.7", "--modes", "4", "--stop",
+      "2.5e-6", "--points", "1000000000"], "--points"),
+], ids=["samples 1e12", "samples 0", "points 1e12", "modes 1e8", "branch points 1e9"])
+def test_absurd_sizes_are_refused_up_front(args, option, capsys):
+    code, out, err = _run(args, capsys)
+    assert code == 2 and out == "" and err.count("\n") == 1 and option in err and "from 1 to" in err

@@ -72,7 +72,20 @@ def at_least(name: str, value, bound: float, bound_name: str) -> float:
 
 
 def positive_int(name: str, value) -> int:
-    """An integer >= 1."""
-    if isinstance(value, bool) or int(value) != value or value < 1:
+    """An integer >= 1 (an integral float such as ``3.0`` is accepted)."""
+    if isinstance(value, bool) or not isinstance(value, Real) or not math.isfinite(value) \
+            or int(value) != value or value < 1:
         raise ParameterError(name, value, "an integer >= 1")
     return int(value)
+
+
+def count(name: str, value, most: int, what: str = "") -> int:
+    """An integer from 1 to ``most`` (a size: samples, points, modes), refused up front when it
+    would take more memory or time than any use needs."""
+    try:
+        v = positive_int(name, value)
+    except ParameterError:
+        v = most + 1
+    if v > most:
+        raise ParameterError(name, value, f"an integer from 1 to {most}" + (f" ({what})" if what else ""))
+    return v

@@ -86,11 +86,15 @@ def parse_modes(text: str) -> list[int]:
         modes = []
         for part in text.split(","):
             lo, _, hi = part.strip().partition("-")
+            if hi and int(hi) - int(lo) > 10_000:
+                raise ParameterError("--modes", text, "mode numbers from 1 to 100000, at most 10000 per range")
             modes += list(range(int(lo), int(hi) + 1)) if hi else [int(lo)]
+    except ParameterError:
+        raise
     except ValueError:
         raise ParameterError("--modes", text, "a list like 1-20, 8 or 2,4,8") from None
-    if not modes or min(modes) < 1:
-        raise ParameterError("--modes", text, "mode numbers >= 1")
+    if not modes or min(modes) < 1 or max(modes) > 100_000:
+        raise ParameterError("--modes", text, "mode numbers from 1 to 100000")
     return modes
 
 

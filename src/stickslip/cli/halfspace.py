@@ -8,6 +8,7 @@ from typing import Annotated, Optional
 
 import typer
 
+from .. import validation as check
 from .common import emit, output_path
 
 app = typer.Typer(no_args_is_help=True, help="Rigid body sliding on an elastic half-space: periodic stick-slip waves.")
@@ -57,6 +58,7 @@ def fields(b: B, c: C, v_star: VStar, nu: Nu = 0.3, mu: Mu = 0.5, system: System
     from ..halfspace import decaying_wave, inverse_problem, wave_from_inverse
 
     out, plot = output_path("--out", out, ".nc"), output_path("--plot", plot, ".png")
+    check.count("--points", points, 10_000_000, "interface points per period")
     if decaying:
         T = float(inverse_problem(b, c, v_star, nu=nu, mu=mu, system=system.value).T)
         wave = decaying_wave(b, c, T, v_star, nu=nu, mu=mu)

@@ -11,6 +11,7 @@ import typer
 from ..friction import make_law
 from ..oscillator import (Oscillator, continue_cycle, continue_from_hopf, equilibrium_stability, hopf_points,
                           limit_cycle, simulate)
+from .. import validation as check
 from .common import emit, output_folder, output_path, progress_bar
 
 app = typer.Typer(no_args_is_help=True, help="The 1-DOF friction oscillator m x'' + c x' + k x = F (paper section 2).")
@@ -74,6 +75,7 @@ def simulate_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_sp
                  json: Json = False, out: Out = None, plot: Plot = None):
     """Event-driven simulation with exact stick/slip switching."""
     out, plot = output_path("--out", out, ".nc"), output_path("--plot", plot, ".png")
+    check.count("--samples", samples, 10_000_000, "uniform samples of the trajectory")
     traj = simulate(_osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping), t_end, x0, v0)
     counts = {name: int((traj.modes == m).sum()) for name, m in (("stick_segments", 0), ("slip_segments", 1),
                                                                   ("reverse_slip_segments", -1))}

@@ -345,7 +345,7 @@ class StickSlipWave:
         """Interface fields at ``x`` (default: ``n`` points over one period, clustered at
         the transitions ``0 (= b), 1``)."""
         if x is None:
-            n = check.positive_int("n", n)
+            n = check.count("points", n, 10_000_000, "interface points per period")
             n_st = max(n // 4, 2)
             s_st = (np.arange(n_st) + 0.5) / n_st
             s_sl = (np.arange(max(n - n_st, 2)) + 0.5) / max(n - n_st, 2)

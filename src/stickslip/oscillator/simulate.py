@@ -127,7 +127,7 @@ class Trajectory:
 
     def to_xarray(self, num: int = 2001) -> xr.Dataset:
         """Sampled trajectory and switching events as an `xarray.Dataset`."""
-        t, x, v, mode = self.sample(num)
+        t, x, v, mode = self.sample(check.count("samples", num, 10_000_000, "uniform samples of the trajectory"))
         ev = self.events
         return xr.Dataset(
             {

@@ -211,7 +211,7 @@ def continue_waves(params: BrakeParams, modes: int, parameter: str = "delta", st
         raise ParameterError("parameter", parameter, f"one of {PARAMETERS}")
     if stop is None:
         raise ParameterError("stop", stop, "the end value of the continued parameter")
-    num = check.positive_int("num", num)
+    num = check.count("points", num, 100_000, "points along the branch")
     if num < 2:
         raise ParameterError("num", num, "an integer >= 2")
     if spacing not in ("linear", "log"):

@@ -1,0 +1,51 @@
+"""The validators refuse every bad value with a `ParameterError` naming it, and never let
+another exception (TypeError, OverflowError, ValueError from a conversion) escape."""
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from stickslip import validation as check
+from stickslip.errors import ParameterError
+
+ANYTHING = st.one_of(st.none(), st.booleans(), st.integers(), st.floats(allow_nan=True, allow_infinity=True),
+                     st.text(max_size=5), st.lists(st.integers(), max_size=2), st.complex_numbers())
+
+
+def _outcome(func, *args):
+    try:
+        return func(*args)
+    except ParameterError as err:
+        assert err.name == "x" and err.allowed
+        return err
+
+
+@given(ANYTHING)
+def test_positive_int_accepts_only_integers_from_one(value):
+    out = _outcome(check.positive_int, "x", value)
+    ok = (not isinstance(value, bool) and isinstance(value, (int, float)) and math.isfinite(value)
+          and int(value) == value and value >= 1)
+    assert (out == int(value)) if ok else isinstance(out, ParameterError)
+
+
+@given(ANYTHING)
+def test_count_is_bounded(value):
+    out = _outcome(check.count, "x", value, 1000)
+    ok = (not isinstance(value, bool) and isinstance(value, (int, float)) and math.isfinite(value)
+          and int(value) == value and 1 <= value <= 1000)
+    assert (out == int(value)) if ok else (isinstance(out, ParameterError) and "from 1 to 1000" in out.allowed)
+
+
+@given(ANYTHING)
+def test_positive_and_finite_refuse_what_is_not_a_finite_real(value):
+    for func in (check.finite, check.positive, check.nonnegative):
+        out = _outcome(func, "x", value)
+        if not isinstance(out, ParameterError):
+            assert isinstance(out, float) and math.isfinite(out)
+
+
+def test_numpy_integers_are_integers():
+    assert check.positive_int("x", np.int64(3)) == 3 and check.count("x", np.float64(4.0), 5) == 4
