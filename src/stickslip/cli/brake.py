@@ -7,6 +7,7 @@ from typing import Annotated, Optional
 
 import typer
 
+from .. import validation as check
 from ..errors import ParameterError
 from .common import emit, output_folder, output_path, progress_bar
 
@@ -29,28 +30,52 @@ Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on std
 _DEFAULTS = {"inner_radius": 0.1, "outer_radius": 0.15, "young": 2.1e11, "density": 7850.0}
 
 
-def _pick(name: str, given, physical_name: str, physical_given: bool):
-    if given is not None and physical_given:
-        raise ParameterError(f"--{name}", given, f"given alone, not together with --{physical_name}")
+def _pick(name: str, given, physical_names: list[str]):
+    """The dimensionless ``given`` value, refused when physical options that set it are given too."""
+    if given is not None and physical_names:
+        raise ParameterError(f"--{name}", given, "given alone, not together with "
+                             + " and ".join(f"--{n.replace('_', '-')}" for n in physical_names))
     return given
+
+
+def _check_options(options: dict) -> None:
+    """Every option given is a finite number in its range, named as typed, before any use."""
+    positive = ("xi", "gamma", "inner_radius", "outer_radius", "young", "density", "omega")
+    for name, value in options.items():
+        if value is None or name in ("need",):
+            continue
+        option = "--" + name.replace("_", "-")
+        if name == "nu":
+            check.poisson_ratio(option, value)
+        elif name == "xi":
+            check.radius_ratio(option, value)
+        elif name in positive:
+            check.positive(option, value)
+        else:
+            check.nonnegative(option, value)
+    material = [n for n in ("young", "density") if options.get(n) is not None]
+    if material and options.get("gamma") is not None:
+        raise ParameterError("--" + material[0], options[material[0]], "left out with --gamma (the material only "
+                             "serves to compute gamma from --omega)")
 
 
 def resolve(*, xi=None, nu=0.3, gamma=None, delta=None, friction=0.0, inner_radius=None, outer_radius=None,
             young=None, density=None, omega=None, mismatch=None, need=("xi", "gamma", "delta")) -> dict:
     """Dimensionless ``xi, gamma, delta`` from either the dimensionless or the SI options."""
+    _check_options(dict(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
+                        outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch))
     phys = {k: v for k, v in dict(inner_radius=inner_radius, outer_radius=outer_radius, young=young,
                                   density=density, omega=omega, mismatch=mismatch).items() if v is not None}
     m = {**_DEFAULTS, **phys}
     out = {"nu": nu, "friction": friction}
-    geometry = "inner_radius" in phys or "outer_radius" in phys
     if "xi" in need:
-        out["xi"] = _pick("xi", xi, "outer-radius", geometry)
+        out["xi"] = _pick("xi", xi, [n for n in ("inner_radius", "outer_radius") if n in phys])
         if out["xi"] is None:
             if m["inner_radius"] <= 0:
                 raise ParameterError("--inner-radius", m["inner_radius"], "> 0")
             out["xi"] = m["outer_radius"] / m["inner_radius"]
     if "gamma" in need:
-        out["gamma"] = _pick("gamma", gamma, "omega", "omega" in phys)
+        out["gamma"] = _pick("gamma", gamma, [n for n in ("omega",) if n in phys])
         if out["gamma"] is None:
             if "omega" not in phys:
                 raise ParameterError("--gamma", None, "given, or --omega [rad/s] with the material")
@@ -59,7 +84,7 @@ def resolve(*, xi=None, nu=0.3, gamma=None, delta=None, friction=0.0, inner_radi
             out["gamma"] = PhysicalParams(m["omega"], 0.0, 0.0, m["inner_radius"], m["outer_radius"], m["young"],
                                           m["density"], nu).gamma
     if "delta" in need:
-        out["delta"] = _pick("delta", delta, "mismatch", "mismatch" in phys)
+        out["delta"] = _pick("delta", delta, [n for n in ("mismatch",) if n in phys])
         if out["delta"] is None:
             if "mismatch" not in phys:
                 raise ParameterError("--delta", None, "given, or --mismatch [m]")
@@ -72,6 +97,7 @@ def params(**options):
     continuation in Omega) when ``--omega`` and ``--mismatch`` are given without dimensionless ones."""
     from ..brake import BrakeParams, PhysicalParams
 
+    _check_options({k: v for k, v in options.items() if k != "need"})
     si = {k: options[k] for k in ("inner_radius", "outer_radius", "young", "density") if options.get(k) is not None}
     if options.get("omega") is not None and options.get("mismatch") is not None and all(
             options.get(k) is None for k in ("xi", "gamma", "delta")):
@@ -211,6 +237,7 @@ def continue_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta 
     out = output_path("--out", out, ".nc")
     p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
+    check.finite("--stop", stop)
     branch = continue_waves(p, modes, parameter=parameter, stop=stop, num=points, regime=_regime(regime))
     data = branch.to_dict()
     if not json:

@@ -108,9 +108,14 @@ def output_folder(name: str, path: Path, suffix: str | None = None) -> Path:
 
 @contextlib.contextmanager
 def progress_bar(label: str):
-    """A transient rich progress bar; yields the library's ``progress(done, total)`` callback."""
+    """A transient rich progress bar on stderr; yields the library's ``progress(done, total)``
+    callback. Without a terminal on stderr (a pipe, a log file, a batch job) nothing is drawn."""
     from rich.progress import Progress
 
-    with Progress(console=Console(stderr=True), transient=True) as bar:
+    console = Console(stderr=True)
+    if not console.is_terminal:
+        yield lambda done, total: None
+        return
+    with Progress(console=console, transient=True) as bar:
         task = bar.add_task(label, total=None)
         yield lambda done, total: bar.update(task, completed=done, total=total)

@@ -12,6 +12,7 @@ from ..friction import make_law
 from ..oscillator import (Oscillator, continue_cycle, continue_from_hopf, equilibrium_stability, hopf_points,
                           limit_cycle, simulate)
 from .. import validation as check
+from ..errors import ParameterError
 from .common import emit, output_folder, output_path, progress_bar
 
 app = typer.Typer(no_args_is_help=True, help="The 1-DOF friction oscillator m x'' + c x' + k x = F (paper section 2).")
@@ -38,6 +39,8 @@ Plot = Annotated[Optional[Path], typer.Option("--plot", help="Write a figure to 
 
 
 def _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping) -> Oscillator:
+    if law is Law.coulomb and tau is not None:  # a value given for nothing is a mistake, not something to ignore
+        raise ParameterError("--tau", tau, "left out with --law coulomb (it sets linear-weakening or stribeck)")
     return Oscillator(mass, stiffness, normal_force, belt_speed, make_law(law.value, fs=fs, fd=fd, tau=tau), damping)
 
 
