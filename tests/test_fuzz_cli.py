@@ -4,9 +4,9 @@ one bad value at a time, on an otherwise valid and cheap invocation.
 The contract checked: the command exits 2 and prints nothing on stdout and exactly one
 line on stderr naming the option as the user types it (``--t-end``, not ``t_end``); never
 a traceback, an internal error (exit 3), a result, or a hang (each trial has a time limit).
-Values that are never valid for a number: NaN, infinities, text, the empty string. The
-wider battery (extreme but finite values, where a result must be finite or refused) is
-`test_fuzz_extremes` below.
+Values that are never valid for a number: NaN, infinities, text, the empty string. (The
+wider battery of extreme but finite values, where a result must be finite or refused, is
+not here yet.)
 """
 
 from __future__ import annotations
@@ -110,3 +110,4 @@ def test_a_value_that_is_no_number_is_refused_in_one_line_naming_the_option(comm
         out, err = capsys.readouterr()
         assert code == 2 and out == "", (value, code, out, err)
         assert err.count("\n") == 1 and option in err and "Traceback" not in err, (value, err)
+
