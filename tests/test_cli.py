@@ -157,3 +157,16 @@ def test_a_non_finite_result_is_never_printed_with_exit_0(args, capsys):
 def test_absurd_sizes_are_refused_up_front(args, option, capsys):
     code, out, err = _run(args, capsys)
     assert code == 2 and out == "" and err.count("\n") == 1 and option in err and "from 1 to" in err
+
+
+@pytest.mark.parametrize("args, option", [
+    (["oscillator", "simulate", *OSC, "--t-end", "1e300"], "--t-end"),
+    (["brake", "integrate", "--omega", "50", "--mismatch", "1e-4", "--friction", "0.7", "--transits", "1e300"],
+     "--transits"),
+    (["brake", "fem", "--xi", "1.0000001", "--gamma", "1e-6", "--delta", "0.004", "--friction", "0.2",
+      "--transits", "1"], "--transits"),
+], ids=["t-end 1e300", "transits 1e300", "xi 1.0000001 (vanishing step)"])
+def test_runs_that_would_not_end_are_refused_up_front_with_the_limit(args, option, capsys):
+    """These used to run until killed (issue 9)."""
+    code, out, err = _run(args, capsys)
+    assert code == 2 and out == "" and err.count("\n") == 1 and option in err and "<=" in err

@@ -27,6 +27,9 @@ from .model import Mode, Oscillator
 
 __all__ = ["Segment", "Trajectory", "simulate", "Engine"]
 
+#: The longest simulation accepted, in natural periods ``2 pi sqrt(m/k)`` (refused up front, not left to hang).
+MAX_PERIODS = 1e7
+
 _STATUS = {0: "reached t_end", 1: "reached the Poincare section", -2: "stopped after max_events segments",
            -3: "Zeno: more than 100 consecutive vanishing segments"}
 
@@ -313,6 +316,10 @@ def simulate(osc: Oscillator, t_end: float, x0: float | None = None, v0: float =
         Check ``status``: negative means the run stopped early (``message`` says why).
     """
     t_end = check.positive("t_end", t_end)
+    longest = MAX_PERIODS * 2 * np.pi / osc.omega
+    if t_end > longest:
+        raise ParameterError("t_end", t_end, f"<= {longest:.4g} s ({MAX_PERIODS:.0e} natural periods "
+                             "2 pi sqrt(m/k); simulate in pieces from the last state for more)")
     x0 = osc.equilibrium if x0 is None else check.finite("x0", x0)
     v0 = check.finite("v0", v0)
     rtol = check.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
