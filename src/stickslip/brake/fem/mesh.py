@@ -75,7 +75,8 @@ def annulus_mesh(n_theta: int = 256, n_r: int = 16, xi: float = 1.5) -> AnnulusM
     xi : float
         ``R*/R`` > 1.
     """
-    n_theta, n_r, xi = check.positive_int("n_theta", n_theta), check.positive_int("n_r", n_r), check.radius_ratio("xi", xi)
+    n_theta, n_r, xi = check.count("n_theta", n_theta, 65536, "nodes around"), \
+        check.count("n_r", n_r, 4096, "layers across"), check.radius_ratio("xi", xi)
     if n_theta < 16 or n_theta % 8:
         raise ParameterError("n_theta", n_theta, "a multiple of 8, >= 16")
     r = np.linspace(1.0, xi, n_r + 1)
