@@ -125,3 +125,12 @@ def test_data_come_from_the_campaign_then_the_stored_result_then_the_small_versi
     finished.to_zarr(tmp_path / "data" / campaign_data.CAMPAIGN_DIR / "statistics.zarr", consolidated=False)
     ds, why = campaign_data.find("statistics", tmp_path / "data")
     assert ds is not None and "the campaign in" in why
+
+
+def test_campaign_summary_counts_as_the_figure_does():
+    ds = statistics_data()
+    ds["n_zones"][1, 1, :3] = 5.0  # case 2 on the fine mesh: 1 run of 4 keeps the paper's 8 modes
+    out = campaign_data.summary(ds, "statistics")
+    assert out["runs"] == 24 and out["paper_outcome"]["case 1 on 256 x 16"]["reached"] == 1.0
+    case2 = out["paper_outcome"]["case 2 on 512 x 32"]
+    assert case2["reached"] == 0.25 and case2["most_frequent"] == "stick-slip-separation 5"

@@ -30,7 +30,10 @@ from ...brake.fem.campaign import limit_regime
 from ...contact import REGIME_CODES
 from .paper import CASES, PAPER_REGIMES
 
-__all__ = ["CAMPAIGN_DIR", "STORED_DIR", "model_fingerprint", "find", "inputs", "export", "summary"]
+_REGIME_NAMES = {v: k for k, v in REGIME_CODES.items()}
+
+__all__ = ["CAMPAIGN_DIR", "STORED_DIR", "model_fingerprint", "find", "inputs", "export", "outcome_counts",
+           "summary"]
 
 #: The campaign's folder inside the report's data folder (``stickslip brake campaign --out``'s default).
 CAMPAIGN_DIR = "brake-fem-campaign"
@@ -109,23 +112,32 @@ def export(ds: xr.Dataset, kind: str, folder: Path, computed: str) -> Path:
     return path
 
 
+def outcome_counts(ds, case: int, mesh: int) -> dict:
+    """``{(regime name, n_zones): (runs, stationary runs)}`` for one case and mesh."""
+    sel = ds.isel(case=case, mesh=mesh)
+    out: dict = {}
+    for code, n, st in zip(sel["regime"].values, sel["n_zones"].values, sel["stationary"].values):
+        key = (_REGIME_NAMES.get(int(code), "other") if np.isfinite(code) else "unclassified",
+               int(n) if np.isfinite(n) else -1)
+        runs, stationary = out.get(key, (0, 0))
+        out[key] = (runs + 1, stationary + int(st))
+    return dict(sorted(out.items(), key=lambda kv: -kv[1][0]))
+
+
 def summary(ds: xr.Dataset, kind: str) -> dict:
     """Runs, compute hours and, for the statistics, the fraction of runs per case and mesh that
     reach the paper's regime and mode number (what ``stickslip brake campaign`` prints)."""
     out = {"runs": int(ds["regime"].size), "compute_hours": float(np.nansum(ds["seconds"].values) / 3600)}
     if kind != "statistics":
         return out
-    names = {v: k for k, v in REGIME_CODES.items()}
     reached = {}
     for c, (regime, modes) in enumerate(PAPER_REGIMES):
         for m, (a, b) in enumerate(zip(ds.attrs["mesh_n_theta"], ds.attrs["mesh_n_r"])):
-            sel = ds.isel(case=c, mesh=m)
-            outcomes = [(names.get(int(r), "other"), float(n)) for r, n in
-                        zip(sel["regime"].values, sel["n_zones"].values)]
+            counts = outcome_counts(ds, c, m)
+            runs = sum(k for k, _ in counts.values())
             reached[f"case {c + 1} on {a} x {b}"] = {
-                "paper": f"{regime} {modes}",
-                "reached": float(np.mean([o == (regime, float(modes)) for o in outcomes])),
-                "stationary": float(sel["stationary"].mean()),
-                "most_frequent": " ".join(map(str, max(outcomes, key=outcomes.count)))}
+                "paper": f"{regime} {modes}", "reached": counts.get((regime, modes), (0, 0))[0] / runs,
+                "stationary": float(ds["stationary"].isel(case=c, mesh=m).mean()),
+                "most_frequent": " ".join(map(str, next(iter(counts))))}
     out["paper_outcome"] = reached
     return out

@@ -24,13 +24,13 @@ from ...brake.fem.campaign import statistics
 from ...contact import REGIME_CODES
 from .. import Check, FigureSpec
 from . import campaign_data
+from .campaign_data import outcome_counts
 from .paper import CASES, PAPER_REGIMES
 
-__all__ = ["THRESHOLD", "compute", "check", "plot", "inputs", "outcome_counts"]
+__all__ = ["THRESHOLD", "compute", "check", "plot", "inputs"]
 
 #: Fraction of unseeded runs, on each mesh, that must reach the paper's regime and mode number.
 THRESHOLD = 0.25
-_NAMES = {v: k for k, v in REGIME_CODES.items()}
 _SMALL = {True: 4, False: 6}  # seeds per case of the small version (quick, full)
 
 
@@ -57,18 +57,6 @@ def inputs(data_dir: Path | None) -> str:
 def _meshes(ds) -> list:
     return [(int(a), int(b)) for a, b in zip(np.atleast_1d(ds.attrs["mesh_n_theta"]),
                                              np.atleast_1d(ds.attrs["mesh_n_r"]))]
-
-
-def outcome_counts(ds, case: int, mesh: int) -> dict:
-    """``{(regime name, n_zones): (runs, stationary runs)}`` for one case and mesh."""
-    sel = ds.isel(case=case, mesh=mesh)
-    out: dict = {}
-    for code, n, st in zip(sel["regime"].values, sel["n_zones"].values, sel["stationary"].values):
-        key = (_NAMES.get(int(code), "other") if np.isfinite(code) else "unclassified",
-               int(n) if np.isfinite(n) else -1)
-        runs, stationary = out.get(key, (0, 0))
-        out[key] = (runs + 1, stationary + int(st))
-    return dict(sorted(out.items(), key=lambda kv: -kv[1][0]))
 
 
 def _paper_fraction(ds, case: int, mesh: int, modes: bool = True) -> float:
