@@ -47,3 +47,26 @@ def test_halfspace_tutorial_runs(tmp_path, monkeypatch):
         exec(block, namespace)
     assert abs(namespace["wave"].c + 0.7) < 1e-6 and abs(namespace["wave"].b - 2.0) < 1e-6
     assert namespace["f"].slip_residual < 1e-10
+
+
+def test_readme_command_lines_use_only_options_their_commands_have():
+    """Each `stickslip ...` line of the README names a command that exists and only its options
+    (a line once showed `brake steady --omega`, which the command does not take)."""
+    import shlex
+
+    import typer.main
+
+    from stickslip.cli import app
+
+    root = typer.main.get_command(app)
+    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+    lines = [line.split("#")[0].strip() for line in readme.splitlines() if line.startswith("stickslip ")]
+    assert len(lines) > 10
+    for line in lines:
+        command, tokens = root, shlex.split(line)[1:]
+        while tokens and hasattr(command, "commands") and tokens[0] in command.commands:
+            command = command.commands[tokens.pop(0)]
+        assert not hasattr(command, "commands"), line
+        known = {opt for p in command.params for opt in p.opts}
+        unknown = [t for t in tokens if t.startswith("--") and t not in known]
+        assert not unknown, (line, unknown)
