@@ -156,3 +156,15 @@ def test_a_damaged_or_edited_checkpoint_is_refused_not_resumed(model, how, tmp_p
     with pytest.raises(ParameterError) as err:
         model.run(CASE2, 8, checkpoint=path)
     assert err.value.name == "checkpoint"
+
+
+def test_a_checkpoint_in_another_run_format_is_refused(model, tmp_path):
+    """Its content intact (checksum valid) but written with another layout: refused, not misread."""
+    path = tmp_path / "run.nc"
+    model.run(CASE2, 4, checkpoint=path)
+    ds = xr.load_dataset(path)
+    ds.attrs["run_format"] = "stickslip-run-1"
+    ds.to_netcdf(path)
+    with pytest.raises(ParameterError) as err:
+        model.run(CASE2, 6, checkpoint=path)
+    assert err.value.name == "checkpoint" and "stickslip-run-1" in err.value.allowed

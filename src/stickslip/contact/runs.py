@@ -244,6 +244,10 @@ def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tai
     return t_end, settings
 
 
+#: The layout of a checkpoint; a file written with another layout is refused, not misread.
+RUN_FORMAT = "stickslip-run-2"
+
+
 def content_digest(ds: xr.Dataset) -> str:
     """SHA-256 of every variable's name, type, shape and values (a changed byte changes it)."""
     digest = hashlib.sha256()
@@ -263,7 +267,7 @@ def save(run, path) -> None:
     path = Path(path)
     tmp = path.with_name(path.name + ".tmp")
     ds = run.to_xarray()
-    ds.attrs["content_sha256"] = content_digest(ds)
+    ds.attrs.update({"run_format": RUN_FORMAT, "content_sha256": content_digest(ds)})
     ds.to_netcdf(tmp)
     os.replace(tmp, path)
 
@@ -279,6 +283,10 @@ def resume(cls, path, scheme, settings):
         ds = xr.load_dataset(path)
     except (OSError, KeyError, ValueError, TypeError) as err:  # not netCDF, or damaged
         raise refused from err
+    if ds.attrs.get("run_format") != RUN_FORMAT:
+        raise ParameterError("checkpoint", str(path), f"a checkpoint in the run format {RUN_FORMAT} (this one: "
+                             f"{ds.attrs.get('run_format', 'none')}, written by another version or another program; "
+                             "delete it to start afresh)")
     if ds.attrs.get("content_sha256") != content_digest(ds):
         raise ParameterError("checkpoint", str(path), "an intact checkpoint written by stickslip (its content does "
                              "not match its checksum: the file was changed or damaged; delete it to start afresh)")
