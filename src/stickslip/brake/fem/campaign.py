@@ -75,19 +75,20 @@ def limit_regime(params: BrakeParams, n_theta: int, n_r: int, seed: int, *, beta
             "c_over_cp": float(res.c_over_cp), "seconds": time.perf_counter() - start}
 
 
-def _point_checkpoint(folder: Path, name: str) -> Path:
+def _checkpointed(runs_dir, name: str, params, n_theta: int, n_r: int, seed, **options) -> dict:
+    """`limit_regime` with a checkpoint ``<runs_dir>/<name>.nc``, removed once the run is done."""
+    folder = Path(runs_dir)
     folder.mkdir(parents=True, exist_ok=True)
-    return folder / f"{name}.nc"
+    path = folder / f"{name}.nc"
+    out = limit_regime(params, n_theta, n_r, int(seed), checkpoint=path, **options)
+    path.unlink(missing_ok=True)
+    return out
 
 
 def _statistics_point(cases, meshes, budget, runs_dir, case, mesh, seed) -> dict:
     f, d, om = cases[int(case)]
-    n_theta, n_r = meshes[int(mesh)]
-    path = _point_checkpoint(Path(runs_dir), f"case{int(case)}-mesh{int(mesh)}-seed{int(seed)}")
-    out = limit_regime(BrakeParams.from_physical(om, d, f), n_theta, n_r, int(seed), checkpoint=path,
-                       **budget[int(mesh)])
-    path.unlink(missing_ok=True)
-    return out
+    return _checkpointed(runs_dir, f"case{int(case)}-mesh{int(mesh)}-seed{int(seed)}",
+                         BrakeParams.from_physical(om, d, f), *meshes[int(mesh)], seed, **budget[int(mesh)])
 
 
 def _check_cases(cases) -> tuple:
@@ -134,12 +135,9 @@ def geometry_mesh(xi: float, n_theta: int = 256) -> tuple[int, int]:
 
 def _geometry_point(cases, n_theta, budget, runs_dir, case, xi, beta2, seed) -> dict:
     f, d, om = cases[int(case)]
-    n_theta, n_r = geometry_mesh(xi, n_theta)
-    path = _point_checkpoint(Path(runs_dir), f"case{int(case)}-xi{xi:g}-beta2{beta2:g}-seed{int(seed)}")
-    params = BrakeParams.from_physical(om, d, f, outer_radius=0.1 * xi)
-    out = limit_regime(params, n_theta, n_r, int(seed), beta2=beta2, checkpoint=path, **budget)
-    path.unlink(missing_ok=True)
-    return out
+    return _checkpointed(runs_dir, f"case{int(case)}-xi{xi:g}-beta2{beta2:g}-seed{int(seed)}",
+                         BrakeParams.from_physical(om, d, f, outer_radius=0.1 * xi), *geometry_mesh(xi, n_theta),
+                         seed, beta2=beta2, **budget)
 
 
 def geometry(store, cases, xis=(1.25, 1.5, 2.0, 3.0), beta2s=(0.6, 0.75, 0.9), seeds: int = 4, *,

@@ -33,7 +33,7 @@ from .paper import CASES, PAPER_REGIMES
 _REGIME_NAMES = {v: k for k, v in REGIME_CODES.items()}
 
 __all__ = ["CAMPAIGN_DIR", "STORED_DIR", "model_fingerprint", "find", "inputs", "export", "outcome_counts",
-           "summary"]
+           "small_store", "summary"]
 
 #: The campaign's folder inside the report's data folder (``stickslip brake campaign --out``'s default).
 CAMPAIGN_DIR = "brake-fem-campaign"
@@ -90,6 +90,14 @@ def find(kind: str, data_dir: Path | None) -> tuple[xr.Dataset | None, str]:
                       f"(fingerprint {ds.attrs.get('model_fingerprint')}, now {model_fingerprint()}); "
                       "rerun `stickslip brake campaign`")
     return None, "no campaign found: run `stickslip brake campaign` (about an hour)"
+
+
+def small_store(cache: Path | None) -> Path:
+    """Where the small version's sweep is stored: the report's cache folder, else a new temporary one."""
+    if cache is None:
+        import tempfile
+        cache = tempfile.mkdtemp(prefix="stickslip-campaign-")
+    return Path(cache) / "small.zarr"
 
 
 def inputs(kind: str, data_dir: Path | None) -> str:

@@ -39,11 +39,7 @@ def compute(quick: bool = False, cache: Path | None = None, data_dir: Path | Non
     ds, source = campaign_data.find("statistics", data_dir)
     small = ds is None
     if small:
-        store = Path(cache) / "small.zarr" if cache is not None else None
-        if store is None:
-            import tempfile
-            store = Path(tempfile.mkdtemp()) / "small.zarr"
-        ds = statistics(store, CASES, meshes=((256, 16),), seeds=_SMALL[bool(quick)], budgets=({"max_transits": 300.0},))
+        ds = statistics(campaign_data.small_store(cache), CASES, meshes=((256, 16),), seeds=_SMALL[bool(quick)], budgets=({"max_transits": 300.0},))
         source = f"the small version ({_SMALL[bool(quick)]} runs per case on 256 x 16 only): {source}"
     ds = ds.drop_vars("done", errors="ignore")
     ds.attrs.update({"source": source, "small": int(small), "threshold": THRESHOLD})
@@ -73,6 +69,7 @@ def _paper_fraction(ds, case: int, mesh: int, modes: bool = True) -> float:
 def check(ds: xr.Dataset) -> list[Check]:
     meshes = _meshes(ds)
     mesh_names = [f"{a} x {b}" for a, b in meshes]
+    settled = len(meshes) >= 2  # one mesh cannot settle a claim
     out = [Check("every run ended in a classified window (regime and mode number defined)",
                  bool(np.all(np.isfinite(ds["regime"].values)) and np.all(np.isfinite(ds["n_zones"].values))
                       and np.all(np.abs(ds[["stick", "slip", "reverse_slip", "separation"]].to_array().sum("variable")
@@ -82,7 +79,6 @@ def check(ds: xr.Dataset) -> list[Check]:
     for case, (regime, modes) in enumerate(PAPER_REGIMES):
         fractions = [_paper_fraction(ds, case, m) for m in range(len(meshes))]
         stationary = [float(ds["stationary"].isel(case=case, mesh=m).mean()) for m in range(len(meshes))]
-        settled = len(meshes) >= 2
         detail = "; ".join(f"{name}: " + ", ".join(f"{r} {n} x{k}" + (f" ({s} stationary)" if s else "")
                                                    for (r, n), (k, s) in outcome_counts(ds, case, m).items())
                            for m, name in enumerate(mesh_names))
@@ -95,7 +91,6 @@ def check(ds: xr.Dataset) -> list[Check]:
             f">= {THRESHOLD:.0%} on each of two meshes" + ("" if settled else " (not settled: one mesh only)"),
             detail, claim=True))
     regimes = [[_paper_fraction(ds, c, m, modes=False) for m in range(len(meshes))] for c in range(ds.sizes["case"])]
-    settled = len(meshes) >= 2
     out.append(Check(
         "the paper's regime types from unseeded starts (any mode number): stick-slip (f = 0.2), "
         "stick-slip-separation (f = 0.7), stick-separation (f = 2), on both meshes",
