@@ -97,10 +97,10 @@ def params(**options):
     continuation in Omega) when ``--omega`` and ``--mismatch`` are given without dimensionless ones."""
     from ..brake import BrakeParams, PhysicalParams
 
-    _check_options({k: v for k, v in options.items() if k != "need"})
     si = {k: options[k] for k in ("inner_radius", "outer_radius", "young", "density") if options.get(k) is not None}
     if options.get("omega") is not None and options.get("mismatch") is not None and all(
             options.get(k) is None for k in ("xi", "gamma", "delta")):
+        _check_options({k: v for k, v in options.items() if k != "need"})  # resolve() checks the other path
         return PhysicalParams(options["omega"], options["mismatch"], options.get("friction", 0.0),
                               poisson=options.get("nu", 0.3), **si).dimensionless()
     return BrakeParams(**resolve(**options))
