@@ -134,10 +134,9 @@ def test_installed_entry_point_runs():
 
 
 @pytest.mark.parametrize("args", [
-    ["oscillator", "simulate", *OSC, "--damping", "1e6", "--t-end", "5", "--json"],
     ["brake", "fem", "--omega", "50", "--mismatch", "0", "--friction", "0.7", "--transits", "1", "--json"],
     ["halfspace", "inverse", "--b", "1e300", "--c", "-0.7", "--v-star", "0.001", "--json"],
-], ids=["simulate damping 1e6", "fem mismatch 0", "inverse b 1e300"])
+], ids=["fem mismatch 0", "inverse b 1e300"])
 def test_a_non_finite_result_is_never_printed_with_exit_0(args, capsys):
     """Inputs that once printed NaN with exit 0 (issue 9): now an error, nothing on stdout."""
     code, out, err = _run(args, capsys)
@@ -164,9 +163,10 @@ def test_absurd_sizes_are_refused_up_front(args, option, capsys):
     (["brake", "integrate", "--omega", "50", "--mismatch", "1e-4", "--friction", "0.7", "--transits", "1e300"],
      "--transits"),
     (["brake", "fem", "--xi", "1.0000001", "--gamma", "1e-6", "--delta", "0.004", "--friction", "0.2",
-      "--transits", "1"], "--transits"),
+      "--transits", "1"], "--xi"),
 ], ids=["t-end 1e300", "transits 1e300", "xi 1.0000001 (vanishing step)"])
 def test_runs_that_would_not_end_are_refused_up_front_with_the_limit(args, option, capsys):
-    """These used to run until killed (issue 9)."""
+    """These used to run until killed (issue 9). The thin wall is now refused by its radius
+    ratio (its coefficients lose their digits before its time step vanishes)."""
     code, out, err = _run(args, capsys)
-    assert code == 2 and out == "" and err.count("\n") == 1 and option in err and "<=" in err
+    assert code == 2 and out == "" and err.count("\n") == 1 and option in err and ("<=" in err or "in [" in err)

@@ -8,14 +8,21 @@ the command line turns it into one line and exit code 1.
 
 
 class ParameterError(ValueError):
-    """A public parameter is outside its allowed range."""
+    """A public parameter is outside its allowed range.
 
-    def __init__(self, name: str, value, allowed: str):
-        self.name, self.value, self.allowed = name, value, allowed
-        super().__init__(f"invalid {name} = {value!r}: must be {allowed}")
+    ``also`` names the other parameters the allowed range depends on (a bound on a
+    combination such as ``rho R^2 Omega^2 / E``), so that a message can name each of them.
+    """
+
+    def __init__(self, name: str, value, allowed: str, also: tuple[str, ...] = ()):
+        self.name, self.value, self.allowed, self.also = name, value, allowed, tuple(also)
+        text = f"invalid {name} = {value!r}: must be {allowed}"
+        if self.also:
+            text += f" (the bound depends on {', '.join(self.also)})"
+        super().__init__(text)
 
     def __reduce__(self):  # raised in a worker process, it must cross back intact
-        return type(self), (self.name, self.value, self.allowed)
+        return type(self), (self.name, self.value, self.allowed, self.also)
 
 
 class NoSolutionError(RuntimeError):

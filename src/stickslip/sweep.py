@@ -40,7 +40,9 @@ def _call(func, point: dict, names: Sequence[str]) -> list[float]:
 
 def _create(store: Path, axes: dict, outputs: dict, attrs: dict) -> None:
     shape = tuple(len(v) for v in axes.values())
-    data = {name: (tuple(axes), np.full(shape, np.nan), {"units": units}) for name, units in outputs.items()}
+    note = "NaN where the point is not computed yet (done is false) or the output does not apply to it"
+    data = {name: (tuple(axes), np.full(shape, np.nan), {"units": units, "comment": note})
+            for name, units in outputs.items()}
     data["done"] = (tuple(axes), np.zeros(shape, bool), {"long_name": "point computed"})
     coords = {k: (k, np.asarray(v, float)) for k, v in axes.items()}
     xr.Dataset(data, coords=coords, attrs=attrs).to_zarr(store, mode="w", consolidated=False)
@@ -91,8 +93,9 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
     progress : callable, optional
         ``progress(done, total)`` after every batch.
     workers : int, optional
-        Processes for the ``"processes"`` scheduler (default: the CPU count). Scripts
-        that use it need the ``if __name__ == "__main__":`` guard (spawned workers).
+        Processes for the ``"processes"`` scheduler (default: the CPU count); 1 runs the
+        points in this process. Scripts that use more need the ``if __name__ ==
+        "__main__":`` guard (spawned workers).
 
     Returns
     -------
@@ -106,6 +109,8 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
     if not outputs or "done" in outputs:
         raise ParameterError("outputs", outputs, "a non-empty mapping of output names (not 'done') to units")
     batch = check.positive_int("batch", batch)
+    if scheduler == "processes" and workers is not None and check.positive_int("workers", workers) == 1:
+        scheduler = "synchronous"  # a pool of one only adds the start-up of a process
     store = Path(store)
     with exclusive(store, "store"):  # one writer per store
         return _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attrs)

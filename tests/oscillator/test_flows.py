@@ -7,6 +7,7 @@ from scipy.integrate import solve_ivp
 
 from stickslip.friction import Coulomb, LinearWeakening
 from stickslip.oscillator import Mode, Oscillator
+from stickslip.oscillator import kernel
 from stickslip.oscillator.kernel import run_affine
 from stickslip.oscillator.flows import AffineSlip, NumericSlip
 
@@ -102,3 +103,28 @@ def test_compiled_kernel_and_python_flow_agree():
     t_hit, _ = flow.first_crossing(-0.3, 0.0, 1e6, [(osc.belt_speed, 1)])
     assert modes[0] == 1 and t[1] == pytest.approx(t_hit, rel=1e-14)
     assert x[1] == pytest.approx(float(flow._state(t_hit, -0.3, 0.0)[0]), abs=1e-14)
+
+
+@pytest.mark.parametrize("zeta", [50.0, 1e4, 1e8])
+def test_strongly_overdamped_flow_stays_finite_and_exact(zeta):
+    """Overdamped far past critical (damping ratio zeta), over many natural periods: cosh and
+    sinh alone overflow there (issue 9: NaN from zeta = 50 on), the flow must not. Checked
+    against the matrix exponential of the same linear system in 40-digit arithmetic
+    (mpmath; scipy's double-precision expm itself loses digits on a matrix this stiff),
+    the Jacobian against the same exponential."""
+    import mpmath
+
+    osc = Oscillator(1.0, 1.0, 1.0, 0.2, Coulomb(0.6, 0.4), 2.0 * zeta)
+    flow = AffineSlip(osc, Mode.SLIP_POS)
+    x0, v0 = 0.3, -0.1
+    with mpmath.workdps(40):
+        system = mpmath.matrix([[0, 1], [-flow.w02, 2 * flow.sigma]])  # (xi, v)' for xi = x - x_c
+        for t in (1e-3 / zeta, 1.0, 100.0, 1e4):
+            exact = mpmath.expm(system * t)
+            ref = exact * mpmath.matrix([x0 - flow.x_c, v0])
+            xi, v = kernel.state(flow.sigma, flow.w02, flow.om2, x0 - flow.x_c, v0, np.array([t]))
+            assert np.isfinite([xi[0], v[0]]).all()
+            assert abs(xi[0] - float(ref[0])) <= 1e-12 * abs(float(ref[0]))
+            assert abs(v[0] - float(ref[1])) <= 1e-9 * abs(float(ref[1])) + 1e-15
+            jac = np.array(exact.tolist(), dtype=float)
+            assert np.allclose(flow.jacobian(t), jac, rtol=1e-9, atol=1e-15)

@@ -32,20 +32,18 @@ def _one_line(message: str) -> str:
 
 
 def _as_typed(argv: list[str] | None, exc: ParameterError) -> ParameterError:
-    """The error with the library's parameter name replaced by the option of the command that
-    was run (``transits`` -> ``--transits``), when the command has such an option."""
-    if exc.name.startswith("-"):
-        return exc
+    """The error with the library's parameter names (its own and those its bound depends on)
+    replaced by the options of the command that was run (``transits`` -> ``--transits``),
+    when the command has such options."""
     command = typer.main.get_command(app)
     for token in (sys.argv[1:] if argv is None else argv):
         sub = getattr(command, "commands", {}).get(token)
         if sub is None:
             break
         command = sub
-    for param in getattr(command, "params", []):
-        if param.name == exc.name and getattr(param, "opts", None):
-            return ParameterError(param.opts[0], exc.value, exc.allowed)
-    return exc
+    options = {p.name: p.opts[0] for p in getattr(command, "params", []) if getattr(p, "opts", None)}
+    typed = lambda name: name if name.startswith("-") else options.get(name, name)
+    return ParameterError(typed(exc.name), exc.value, exc.allowed, tuple(typed(n) for n in exc.also))
 
 
 def run(argv: list[str] | None = None) -> int:

@@ -14,17 +14,17 @@ from .common import emit, output_folder, output_path, progress_bar
 app = typer.Typer(no_args_is_help=True, help="Elastic annulus on a rotating shaft: reduced model (paper section 3).")
 
 Opt = Optional[float]
-Xi = Annotated[Opt, typer.Option("--xi", help="Radius ratio R*/R > 1.")]
+Xi = Annotated[Opt, typer.Option("--xi", help="Radius ratio R*/R in [1.0001, 1000].")]
 Nu = Annotated[float, typer.Option("--nu", help="Poisson's ratio in [0, 0.5).")]
-Gamma = Annotated[Opt, typer.Option("--gamma", help="Inertia number rho R^2 Omega^2 / E > 0.")]
-Delta = Annotated[Opt, typer.Option("--delta", help="Mismatch d/R >= 0.")]
+Gamma = Annotated[Opt, typer.Option("--gamma", help="Inertia number rho R^2 Omega^2 / E in [1e-100, 1e100].")]
+Delta = Annotated[Opt, typer.Option("--delta", help="Mismatch d/R >= 0 (scaled: the model is linear in it).")]
 Friction = Annotated[float, typer.Option("--friction", help="Coulomb coefficient f >= 0.")]
 Inner = Annotated[Opt, typer.Option("--inner-radius", help="R [m] (default 0.1 with physical input).")]
 Outer = Annotated[Opt, typer.Option("--outer-radius", help="R* [m] (default 0.15 with physical input).")]
 Young = Annotated[Opt, typer.Option("--young", help="E [Pa] (default 2.1e11).")]
 Density = Annotated[Opt, typer.Option("--density", help="rho [kg/m^3] (default 7850).")]
-Omega = Annotated[Opt, typer.Option("--omega", help="Shaft speed Omega [rad/s] > 0.")]
-Mismatch = Annotated[Opt, typer.Option("--mismatch", help="Mismatch d [m] >= 0.")]
+Omega = Annotated[Opt, typer.Option("--omega", help="Shaft speed Omega [rad/s] > 0, with rho R^2 Omega^2 / E in [1e-100, 1e100].")]
+Mismatch = Annotated[Opt, typer.Option("--mismatch", help="Mismatch d [m] in [0, 0.01 R] (small strain at the bore).")]
 Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
 
 _DEFAULTS = {"inner_radius": 0.1, "outer_radius": 0.15, "young": 2.1e11, "density": 7850.0}
@@ -88,6 +88,12 @@ def resolve(*, xi=None, nu=0.3, gamma=None, delta=None, friction=0.0, inner_radi
         if out["delta"] is None:
             if "mismatch" not in phys:
                 raise ParameterError("--delta", None, "given, or --mismatch [m]")
+            from ..brake.reduced.params import MAX_STRAIN
+
+            if m["mismatch"] > MAX_STRAIN * m["inner_radius"]:
+                raise ParameterError("--mismatch", m["mismatch"], f"<= {MAX_STRAIN * m['inner_radius']:.6g} m "
+                                     f"({MAX_STRAIN:g} x --inner-radius: the interference is the hoop strain at the "
+                                     "bore, and linear elasticity holds for small strains only)")
             out["delta"] = m["mismatch"] / m["inner_radius"]
     return out
 

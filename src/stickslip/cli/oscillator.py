@@ -32,7 +32,7 @@ Fs = Annotated[float, typer.Option("--fs", help="Static friction coefficient f_s
 Fd = Annotated[float, typer.Option("--fd", help="Kinetic friction coefficient f_d >= 0.")]
 LawOpt = Annotated[Law, typer.Option("--law", help="Friction law.")]
 Tau = Annotated[Optional[float], typer.Option("--tau", help="linear-weakening: rate tau [s/m]; stribeck: Stribeck speed [m/s].")]
-Damping = Annotated[float, typer.Option("--damping", help="Viscous damping c [N s/m], >= 0.")]
+Damping = Annotated[float, typer.Option("--damping", help="Viscous damping c [N s/m], >= 0, with c/(2 sqrt(k m)) <= 1e11.")]
 Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
 Out = Annotated[Optional[Path], typer.Option("--out", help="Write the data to this netCDF file (.nc).")]
 Plot = Annotated[Optional[Path], typer.Option("--plot", help="Write a figure to this PNG file.")]

@@ -75,31 +75,10 @@ class AffineSlip:
         self.om2 = self.w02 - self.sigma**2
         self._x0 = self._v0 = 0.0
 
-    # C(t), S(t): e^{sigma t} C and e^{sigma t} S span the solutions.
-    def _cs(self, t):
-        t = np.asarray(t, dtype=float)
-        z = self.om2 * t * t
-        if self.om2 > 0:
-            w = math.sqrt(self.om2)
-            c, s = np.cos(w * t), np.sin(w * t) / w
-        elif self.om2 < 0:
-            w = math.sqrt(-self.om2)
-            c, s = np.cosh(w * t), np.sinh(w * t) / w
-        else:
-            c, s = np.ones_like(t), t.copy()
-        small = np.abs(z) < 1e-4
-        if np.any(small):  # series near critical damping, where sin(wt)/w loses digits
-            c = np.where(small, 1 - z / 2 + z * z / 24 - z**3 / 720, c)
-            s = np.where(small, t * (1 - z / 6 + z * z / 120 - z**3 / 5040), s)
-        return c, s
-
     def _state(self, t, x0, v0):
-        xi0 = x0 - self.x_c
-        c, s = self._cs(t)
-        e = np.exp(self.sigma * np.asarray(t, dtype=float))
-        xi = e * (xi0 * c + (v0 - self.sigma * xi0) * s)
-        v = e * (v0 * c + (self.sigma * v0 - self.w02 * xi0) * s)
-        return xi + self.x_c, v
+        t = np.asarray(t, dtype=float)
+        xi, v = kernel.state(self.sigma, self.w02, self.om2, x0 - self.x_c, v0, t.ravel())
+        return (xi + self.x_c).reshape(t.shape), v.reshape(t.shape)
 
     def _pieces(self, x0, v0, t_max):
         """0, the zeros of the acceleration in (0, t_max) (lazily), then t_max."""
@@ -125,9 +104,8 @@ class AffineSlip:
 
     def jacobian(self, t):
         """``d(x, v)(t) / d(x0, v0)``: the matrix exponential, in closed form."""
-        c, s = kernel.cos_sin(self.om2, t)
-        e = math.exp(self.sigma * t)
-        return e * np.array([[c - self.sigma * s, s], [-self.w02 * s, c + self.sigma * s]])
+        c, s = kernel.damped_cos_sin(self.sigma, self.w02, self.om2, t)
+        return np.array([[c - self.sigma * s, s], [-self.w02 * s, c + self.sigma * s]])
 
 
 class NumericSlip:

@@ -32,18 +32,49 @@ def cos_sin(om2, t):
 
 
 @njit(cache=True)
-def velocity_acceleration(sigma, w02, om2, xi0, v0, t):
-    """Velocity and acceleration at local time t."""
+def damped_cos_sin(sigma, w02, om2, t):
+    """``e^{sigma t} C`` and ``e^{sigma t} S`` (`cos_sin`), computed without overflow.
+
+    Overdamped (``om2 < 0``) and ``w t > 20``, ``cosh`` and ``sinh`` alone overflow long
+    before the product with ``e^{sigma t}`` does; there the product is written with the
+    exponent of the slow root, ``sigma + w = -w02 / (w - sigma)`` for ``sigma <= 0``,
+    which has no cancellation.
+    """
+    if om2 < 0:
+        w = math.sqrt(-om2)
+        if w * t > 20.0:
+            slow = -w02 / (w - sigma) if sigma <= 0 else sigma + w
+            e = math.exp(slow * t)
+            tail = math.exp(-2.0 * w * t)
+            return 0.5 * e * (1.0 + tail), 0.5 * e * (1.0 - tail) / w
     c, s = cos_sin(om2, t)
     e = math.exp(sigma * t)
-    a0 = 2 * sigma * v0 - w02 * xi0
-    return e * (v0 * c + (sigma * v0 - w02 * xi0) * s), e * (a0 * c + (sigma * a0 - w02 * v0) * s)
+    return e * c, e * s
 
 
 @njit(cache=True)
-def _x(sigma, om2, xi0, v0, t):
-    c, s = cos_sin(om2, t)
-    return math.exp(sigma * t) * (xi0 * c + (v0 - sigma * xi0) * s)
+def velocity_acceleration(sigma, w02, om2, xi0, v0, t):
+    """Velocity and acceleration at local time t."""
+    c, s = damped_cos_sin(sigma, w02, om2, t)
+    a0 = 2 * sigma * v0 - w02 * xi0
+    return v0 * c + (sigma * v0 - w02 * xi0) * s, a0 * c + (sigma * a0 - w02 * v0) * s
+
+
+@njit(cache=True)
+def _x(sigma, w02, om2, xi0, v0, t):
+    c, s = damped_cos_sin(sigma, w02, om2, t)
+    return xi0 * c + (v0 - sigma * xi0) * s
+
+
+@njit(cache=True)
+def state(sigma, w02, om2, xi0, v0, t):
+    """``(xi, v)`` at the local times ``t`` (an array)."""
+    xi, v = np.empty(t.size), np.empty(t.size)
+    for i in range(t.size):
+        c, s = damped_cos_sin(sigma, w02, om2, t.flat[i])
+        xi[i] = xi0 * c + (v0 - sigma * xi0) * s
+        v[i] = v0 * c + (sigma * v0 - w02 * xi0) * s
+    return xi, v
 
 
 @njit(cache=True)
@@ -173,7 +204,7 @@ def run_affine(p, x0, v0, mode, t_end, max_segments, section, use_section):
                 ta, ga_v, ga_s = tb, gb_v, gb_s
             if status < 0:
                 break
-            x_new = x_c + _x(sigma, om2, xi0, v, dt)
+            x_new = x_c + _x(sigma, w02, om2, xi0, v, dt)
             v_new = velocity_acceleration(sigma, w02, om2, xi0, v, dt)[0]
             hit = which >= 0
             if which == 0:

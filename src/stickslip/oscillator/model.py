@@ -30,6 +30,10 @@ class Mode(IntEnum):
     SLIP_POS = 1
 
 
+#: The largest damping ratio ``c / (2 sqrt(k m))`` (see `Oscillator`).
+MAX_DAMPING_RATIO = 1e11
+
+
 @dataclass(frozen=True)
 class Oscillator:
     """Parameters of the friction oscillator, in SI units.
@@ -41,7 +45,9 @@ class Oscillator:
     friction : FrictionLaw
         The friction law (`stickslip.friction`).
     damping : float
-        Viscous damping ``c`` [N s/m] >= 0.
+        Viscous damping ``c`` [N s/m] >= 0, with a damping ratio ``c / (2 sqrt(k m))`` at most
+        `MAX_DAMPING_RATIO` (1e11: the fast time of an overdamped slip, ``1/(2 zeta w)``, must
+        stay above the event loop's resolution of ``1e-12/w``).
     """
 
     mass: float
@@ -55,6 +61,11 @@ class Oscillator:
         for name in ("mass", "stiffness", "normal_force", "belt_speed"):
             object.__setattr__(self, name, check.positive(name, getattr(self, name)))
         object.__setattr__(self, "damping", check.nonnegative("damping", self.damping))
+        critical = 2.0 * math.sqrt(self.stiffness) * math.sqrt(self.mass)
+        if self.damping > MAX_DAMPING_RATIO * critical:
+            raise ParameterError("damping", self.damping, f"<= {MAX_DAMPING_RATIO * critical:.6g} (a damping ratio "
+                                 f"c/(2 sqrt(k m)) <= {MAX_DAMPING_RATIO:g}: beyond it the fast time 1/(2 zeta w) "
+                                 "is below the event loop's resolution of 1e-12/w)")
         if not isinstance(self.friction, FrictionLaw):
             raise ParameterError("friction", self.friction, "a stickslip.friction.FrictionLaw")
 

@@ -32,7 +32,8 @@ def damping_coefficients(osc: Oscillator, h: float | None = None) -> tuple[float
     h = 1e-3 * V if h is None else h
     slope = osc.friction.slope
     d1 = osc.damping + N * float(slope(V))
-    mu3 = (float(slope(V + h)) - 2 * float(slope(V)) + float(slope(V - h))) / h**2
+    mid = float(slope(V))
+    mu3 = ((float(slope(V + h)) - mid) / h - (mid - float(slope(V - h))) / h) / h  # h**2 may leave range
     return d1, N * mu3 / 6.0
 
 
@@ -98,6 +99,11 @@ def hopf_points(osc: Oscillator, parameter: str, lo: float, hi: float, num: int 
     lo, hi = check.finite("lo", lo), check.finite("hi", hi)
     if not lo < hi:
         raise check.ParameterError("hi", hi, f"> lo = {lo:g}")
+    for name, end in (("lo", lo), ("hi", hi)):  # the scan stays where the parameter is valid
+        try:
+            osc.with_parameter(parameter, end)
+        except check.ParameterError as err:
+            raise check.ParameterError(name, end, f"a valid {parameter}, {err.allowed}") from None
     check.positive_int("num", num)
 
     def d1(p):

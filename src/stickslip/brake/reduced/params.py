@@ -25,6 +25,13 @@ __all__ = ["BrakeParams", "PhysicalParams", "STEEL"]
 
 #: Default material (the paper's section 4 values): Young [Pa], density [kg/m^3], Poisson.
 STEEL = {"young": 2.1e11, "density": 7850.0, "poisson": 0.3}
+#: The interference ``d/R`` is the hoop strain at the bore: linear (small-strain)
+#: elasticity, the paper's model, does not hold beyond about 1 %.
+MAX_STRAIN = 0.01
+#: The range of the dimensionless ``gamma`` and ``delta``: the reduced coefficients scale
+#: like ``1/gamma`` and the energies like ``gamma delta^2``; beyond these they leave the
+#: range of double precision on the way.
+SCALE_RANGE = (1e-100, 1e100)
 
 
 @dataclass(frozen=True)
@@ -45,6 +52,9 @@ class PhysicalParams:
         ``E`` [Pa] > 0 and ``rho`` [kg/m^3] > 0. Defaults: steel.
     poisson : float
         ``nu`` in [0, 0.5). Default 0.3.
+
+    The interference is at most `MAX_STRAIN` ``R`` (small strain), the radius ratio in
+    `stickslip.validation.RADIUS_RATIO`, and ``gamma`` in `SCALE_RANGE`.
     """
 
     omega: float
@@ -66,6 +76,21 @@ class PhysicalParams:
             raise ParameterError("outer_radius", outer, f"> inner_radius = {self.inner_radius:g}")
         object.__setattr__(self, "outer_radius", outer)
         object.__setattr__(self, "poisson", check.poisson_ratio("poisson", self.poisson))
+        lo, hi = check.RADIUS_RATIO
+        if not lo * self.inner_radius <= outer <= hi * self.inner_radius:
+            raise ParameterError("outer_radius", outer, f"in [{lo:.4f}, {hi:g}] x inner_radius "
+                                 "(see the radius ratio xi)", also=("inner_radius",))
+        if self.mismatch > MAX_STRAIN * self.inner_radius:
+            raise ParameterError("mismatch", self.mismatch, f"<= {MAX_STRAIN * self.inner_radius:.6g} m "
+                                 f"({MAX_STRAIN:g} inner_radius: the interference is the hoop strain at the bore, "
+                                 "and linear elasticity holds for small strains only)", also=("inner_radius",))
+        lo, hi = SCALE_RANGE
+        speed = self.inner_radius * self.omega  # gamma = (rho / E) (R Omega)^2, without overflow on the way
+        if not lo <= (self.density / self.young) * speed * speed <= hi:
+            scale = self.inner_radius * math.sqrt(self.density / self.young)
+            raise ParameterError("omega", self.omega, f"in [{math.sqrt(lo) / scale:.3g}, {math.sqrt(hi) / scale:.3g}] "
+                                 f"rad/s (gamma = rho R^2 Omega^2 / E in [{lo:g}, {hi:g}])",
+                                 also=("density", "young", "inner_radius"))
 
     @property
     def xi(self) -> float:
@@ -91,13 +116,14 @@ class BrakeParams:
     Parameters
     ----------
     xi : float
-        Radius ratio ``R*/R`` > 1.
+        Radius ratio ``R*/R`` in [1.0001, 1000] (`stickslip.validation.RADIUS_RATIO`).
     nu : float
         Poisson's ratio in [0, 0.5).
     gamma : float
-        Inertia number ``rho R^2 Omega^2 / E`` > 0.
+        Inertia number ``rho R^2 Omega^2 / E`` in [1e-100, 1e100] (`SCALE_RANGE`).
     delta : float
-        Mismatch ``d/R`` >= 0.
+        Mismatch ``d/R`` in [0, 1e100]. The model is linear: in these scaled units any
+        ``delta`` is one problem rescaled; the small-strain bound is on the SI set.
     friction : float
         Coulomb coefficient ``f`` >= 0.
     physical : PhysicalParams, optional
@@ -114,8 +140,11 @@ class BrakeParams:
     def __post_init__(self):
         object.__setattr__(self, "xi", check.radius_ratio("xi", self.xi))
         object.__setattr__(self, "nu", check.poisson_ratio("nu", self.nu))
-        object.__setattr__(self, "gamma", check.positive("gamma", self.gamma))
+        lo, hi = SCALE_RANGE
+        object.__setattr__(self, "gamma", check.in_range("gamma", self.gamma, lo, hi))
         object.__setattr__(self, "delta", check.nonnegative("delta", self.delta))
+        if self.delta > hi:
+            raise ParameterError("delta", self.delta, f"<= {hi:g}")
         object.__setattr__(self, "friction", check.nonnegative("friction", self.friction))
         if self.physical is not None and not isinstance(self.physical, PhysicalParams):
             raise ParameterError("physical", self.physical, "a PhysicalParams or None")
