@@ -1,21 +1,111 @@
-"""Run one command-line trial in a forked child with a time limit (issue 9's harness).
+"""The command-line fuzzing harness of issue 9.
 
-A trial that hangs inside compiled code (numba, LAPACK) cannot be interrupted by a signal
-handler in the same process; a forked child can be killed. Forking after the package is
-imported and its kernels compiled keeps a trial at a few milliseconds of overhead.
+Every numeric option of every command, one value at a time, on an otherwise valid and
+cheap invocation (`BASE`). A trial runs in a forked child with a time limit: a hang inside
+compiled code (numba, LAPACK) cannot be interrupted by a signal handler in the same
+process, a child can be killed. Forking after the package is imported and its kernels
+compiled keeps a trial at a few milliseconds of overhead.
+
+`problems(trial, option, folder)` states the contract: exit 0 only with finite numbers on
+stdout (JSON) and in every file written, and nothing on stderr; otherwise exit 1 (no
+solution) or 2 (bad input) with nothing on stdout and exactly one line on stderr, which
+for exit 2 names the option as typed; never exit 3, a traceback, a signal or a hang.
+
+``python -m tests.fuzz_harness`` runs the whole battery and prints the counts of the
+closing note (trials, exit-3 cases, silent non-finite successes, hangs, messages that do
+not name the option).
 """
 
 from __future__ import annotations
 
+import collections
 import dataclasses
 import json
 import math
 import os
+import pathlib
 import signal
+import sys
 import tempfile
 import time
+import typing
 
 import numpy as np
+
+OSC = ["--mass", "1", "--stiffness", "1", "--normal-force", "1", "--belt-speed", "0.2", "--fs", "0.6", "--fd", "0.4"]
+BRAKE = ["--omega", "50", "--mismatch", "1e-4", "--friction", "0.7"]
+#: A valid, fast invocation of every command ({tmp} is a fresh folder).
+BASE = {
+    "oscillator cycle": OSC,
+    "oscillator simulate": OSC + ["--t-end", "5"],
+    "oscillator stability": OSC,
+    "oscillator continue": OSC + ["--stop", "0.3"],
+    "oscillator map": OSC + ["--x", "belt_speed=0.2:0.3:2", "--y", "damping=0.01:0.02:2", "--out", "{tmp}/m.zarr",
+                             "--workers", "1"],
+    "brake coefficients": ["--xi", "1.5", "--nu", "0.3", "--gamma", "1e-6"],
+    "brake steady": ["--xi", "1.5", "--nu", "0.3", "--delta", "0.004", "--friction", "0.2"],
+    "brake stability": ["--xi", "1.5", "--nu", "0.3", "--gamma", "1e-6", "--delta", "0.004", "--friction", "0.2",
+                        "--modes", "1-3"],
+    "brake integrate": BRAKE + ["--nodes", "32", "--transits", "1", "--out", "{tmp}/i.nc"],
+    "brake wave": BRAKE + ["--modes", "8", "--out", "{tmp}/w.nc"],
+    "brake continue": ["--omega", "50", "--mismatch", "1e-5", "--friction", "0.7", "--modes", "4", "--stop", "9e-6",
+                       "--points", "3", "--out", "{tmp}/b.nc"],
+    "brake map": ["--out", "{tmp}/w.zarr", "--frictions", "0.2:0.7:2", "--mismatches", "1e-5:1e-4:2", "--workers", "1"],
+    "brake fem": BRAKE + ["--n-theta", "16", "--n-r", "1", "--transits", "1", "--out", "{tmp}/f.nc"],
+    "brake campaign": ["--out", "{tmp}/c", "--seeds", "1"],
+    "halfspace inverse": ["--b", "2", "--c", "-0.7", "--v-star", "0.001"],
+    "halfspace direct": ["--T", "9.52e-4", "--v", "3.514e-3", "--v-star", "0.001"],
+    "halfspace fields": ["--b", "11.358", "--c", "-0.7", "--v-star", "0.001", "--points", "101", "--out", "{tmp}/h.nc"],
+    "reproduce": ["--only", "fig2", "--out", "{tmp}/r"],
+}
+#: Options that set the same quantity another way: varying one drops the others from the
+#: base invocation (and ``--omega`` comes in when the material sets gamma).
+SAME_QUANTITY = [("--xi", "--inner-radius", "--outer-radius"), ("--gamma", "--omega", "--young", "--density"),
+                 ("--delta", "--mismatch")]
+NEVER_NUMBERS = ["nan", "inf", "-inf", "abc", ""]
+EXTREMES = ["0", "-1", "1e300", "-1e300", "1e-300"]
+
+
+def numeric_options() -> list[tuple[str, str]]:
+    """``(command, option)`` for every option typed float or int."""
+    import typer.main
+
+    from stickslip.cli import app
+
+    out = []
+
+    def walk(cmd, path):
+        if hasattr(cmd, "commands"):
+            for name, sub in cmd.commands.items():
+                walk(sub, path + [name])
+            return
+        hints = typing.get_type_hints(cmd.callback, include_extras=True)
+        for param in cmd.params:
+            hint = hints.get(param.name)
+            base = typing.get_args(hint)[0] if typing.get_origin(hint) is typing.Annotated else hint
+            args = [a for a in typing.get_args(base) if a is not type(None)] or [base]
+            if args[0] in (float, int):
+                out.append((" ".join(path), param.opts[0]))
+
+    walk(typer.main.get_command(app), [])
+    return out
+
+
+OPTIONS = numeric_options()
+
+
+def args_for(command: str, option: str, value: str, tmp) -> list[str]:
+    """The base invocation of ``command`` with ``option value`` (and ``--json``)."""
+    base = [a.replace("{tmp}", str(tmp)) for a in BASE[command]]
+    drop = {option}
+    for group in SAME_QUANTITY:
+        if option in group:
+            drop |= set(group)
+    pairs = [(base[i], base[i + 1]) for i in range(0, len(base), 2)]
+    pairs = [(k, v) for k, v in pairs if k not in drop]
+    if option in ("--young", "--density") and command.startswith("brake"):
+        pairs.append(("--omega", "50"))
+    return command.split() + [x for kv in pairs for x in kv] + [option, value, "--json"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -31,9 +121,27 @@ class Trial:
         return self.code == "hang"
 
 
+#: Commands that write Zarr stores: zarr keeps an event-loop thread, which a forked child
+#: does not inherit (the child would wait on it forever), so these run in a fresh interpreter.
+FRESH = ("oscillator map", "brake map", "brake campaign", "reproduce")
+
+
 def trial(args: list[str], timeout: float = 60.0) -> Trial:
-    """Run ``stickslip ARGS`` in a forked child; kill it after ``timeout`` seconds."""
+    """Run ``stickslip ARGS`` in a forked child (a fresh interpreter for `FRESH` commands);
+    kill it after ``timeout`` seconds."""
     from stickslip.cli import run
+
+    if " ".join(args).startswith(FRESH):
+        import subprocess
+
+        start = time.perf_counter()
+        try:
+            proc = subprocess.run([sys.executable, "-m", "stickslip", *args], capture_output=True, text=True,
+                                  timeout=timeout)
+        except subprocess.TimeoutExpired as err:
+            return Trial(tuple(args), "hang", err.stdout or "", err.stderr or "", time.perf_counter() - start)
+        code = proc.returncode if proc.returncode >= 0 else f"killed by signal {-proc.returncode}"
+        return Trial(tuple(args), code, proc.stdout, proc.stderr, time.perf_counter() - start)
 
     with tempfile.TemporaryFile("w+") as out, tempfile.TemporaryFile("w+") as err:
         start = time.perf_counter()
@@ -43,10 +151,11 @@ def trial(args: list[str], timeout: float = 60.0) -> Trial:
             try:
                 os.dup2(out.fileno(), 1)
                 os.dup2(err.fileno(), 2)
+                # under pytest sys.stdout/err are capture objects, not the descriptors
+                sys.stdout = open(1, "w", closefd=False)
+                sys.stderr = open(2, "w", closefd=False)
                 code = run(list(args))
             finally:
-                import sys
-
                 sys.stdout.flush()
                 sys.stderr.flush()
                 os._exit(code if isinstance(code, int) else 3)
@@ -82,7 +191,6 @@ def json_finite(text: str) -> bool:
 def files_finite(folder) -> list[str]:
     """Files under ``folder`` (netCDF, Zarr, CSV, JSON) holding a non-finite number that
     their metadata does not explain (a variable may hold NaN if its ``comment`` says where)."""
-    import pathlib
 
     import xarray as xr
 
@@ -105,3 +213,65 @@ def files_finite(folder) -> list[str]:
             if "nan" in text or "inf" in text:
                 bad.append(path.name)
     return bad
+
+
+def problems(t: Trial, option: str, folder) -> list[str]:
+    """How a trial breaks the contract (empty: it keeps it)."""
+    if t.hang:
+        return ["hang"]
+    if t.code not in (0, 1, 2):
+        return [f"exit {t.code}"]
+    found = []
+    if "Traceback" in t.err:
+        found.append("traceback")
+    if t.code == 0:
+        if t.err:
+            found.append("stderr on success")
+        try:
+            finite = json_finite(t.out)
+        except ValueError:
+            finite = False
+        bad = files_finite(folder)
+        if not finite or bad:
+            found.append("non-finite success")
+    else:
+        if t.out or t.err.count("\n") != 1:
+            found.append("not one line")
+        if t.code == 2 and option not in t.err:
+            found.append("option not named")
+    return found
+
+
+def battery(values=EXTREMES, options=None, timeout: float = 120.0, log=None):
+    """Every ``(command, option)`` with every value: a list of ``(args, trial, problems)``."""
+    out = []
+    for command, option in (OPTIONS if options is None else options):
+        for value in values:
+            with tempfile.TemporaryDirectory() as tmp:
+                args = args_for(command, option, value, tmp)
+                t = trial(args, timeout)
+                found = problems(t, option, tmp)
+            out.append((args, t, found))
+            if log:
+                print(f"{t.code!s:>4} {t.seconds:6.1f}s {' '.join(args)}  {found or ''}  {t.err.strip()[:200]}",
+                      file=log, flush=True)
+    return out
+
+
+def main() -> None:
+    values = EXTREMES + NEVER_NUMBERS
+    results = battery(values, log=sys.stderr if "-v" in sys.argv else None)
+    counts = collections.Counter(p for _, _, found in results for p in found)
+    slowest = max(results, key=lambda r: r[1].seconds)
+    print(json.dumps({"trials": len(results), "values": values, "options": len(OPTIONS),
+                      "exit_3_or_signal": sum(1 for _, t, _ in results if not t.hang and t.code not in (0, 1, 2)),
+                      "non_finite_successes": counts["non-finite success"], "hangs": counts["hang"],
+                      "option_not_named": counts["option not named"], "not_one_line": counts["not one line"],
+                      "stderr_on_success": counts["stderr on success"], "tracebacks": counts["traceback"],
+                      "exits": dict(collections.Counter(str(t.code) for _, t, _ in results)),
+                      "slowest": [" ".join(slowest[0]), round(slowest[1].seconds, 1)],
+                      "failures": [[" ".join(a), f] for a, _, f in results if f]}, indent=1))
+
+
+if __name__ == "__main__":
+    main()

@@ -7,13 +7,25 @@ import warnings
 
 import pytest
 
-from stickslip.brake import BrakeParams
-from stickslip.brake.fem import FemScheme
+from stickslip.brake import (BrakeParams, PhysicalParams, continue_waves, growth_rates, integrate, perturbed_steady,
+                             steady_sliding, travelling_wave)
+from stickslip.brake.fem import FemScheme, integrate_fem
 from stickslip.brake.ring import RingScheme
 from stickslip.errors import NoSolutionError, ParameterError
 from stickslip.friction import Coulomb, Stribeck
-from stickslip.halfspace import inverse_problem
-from stickslip.oscillator import Oscillator, simulate
+from stickslip.halfspace import StickSlipWave, direct_problem, inverse_problem
+from stickslip.oscillator import Oscillator, continue_cycle, hopf_points, limit_cycle, simulate
+from stickslip.sweep import run_sweep
+
+def _one(x):
+    return {"y": x}
+
+
+def _fresh_store():
+    import tempfile
+
+    return tempfile.mkdtemp(prefix="fuzz-") + "/s.zarr"
+
 
 BAD = [float("nan"), float("inf"), -float("inf"), -1.0, 0.0, 1e300, 1e-300, "x", None, True, [1.0], 1j]
 OSC = dict(mass=1.0, stiffness=1.0, normal_force=1.0, belt_speed=0.2, friction=Coulomb(0.6, 0.4))
@@ -30,6 +42,35 @@ CALLS = {
     "simulate": (lambda **k: simulate(Oscillator(**OSC), **{"t_end": 5.0, **k}), ["t_end", "x0", "v0"]),
     "inverse_problem": (lambda **k: inverse_problem(**{"b": 2.0, "cbar": -0.7, "v_star": 1e-3, "nu": 0.3, "mu": 0.5,
                                                        **k}), ["b", "cbar", "v_star", "nu", "mu"]),
+    "direct_problem": (lambda **k: direct_problem(**{"T": 9.52e-4, "v": 3.514e-3, "v_star": 1e-3, "nu": 0.3,
+                                                     "mu": 0.5, **k}),
+                       ["T", "v", "v_star", "nu", "mu"]),
+    "StickSlipWave": (lambda **k: StickSlipWave(**{"b": 11.358, "cbar": -0.7, "T": 9.52e-4, "v": 3.514e-3,
+                                                   "v_star": 1e-3, "nu": 0.3, "mu": 0.5, **k}),
+                      ["b", "cbar", "T", "v", "v_star", "nu", "mu"]),
+    "PhysicalParams": (lambda **k: PhysicalParams(**{"omega": 50.0, "mismatch": 1e-4, "friction": 0.7, **k}),
+                       ["omega", "mismatch", "friction", "inner_radius", "outer_radius", "young", "density",
+                        "poisson"]),
+    "limit_cycle": (lambda **k: limit_cycle(Oscillator(**OSC), **k), ["x0", "v0", "rtol"]),
+    "hopf_points": (lambda **k: hopf_points(Oscillator(**OSC), **{"parameter": "belt_speed", "lo": 0.1, "hi": 1.0,
+                                                                  **k}), ["parameter", "lo", "hi", "num"]),
+    "continue_cycle": (lambda **k: continue_cycle(Oscillator(**OSC), **{"stop": 0.25, "max_points": 3, **k}),
+                       ["stop", "step", "max_step", "min_step", "max_points"]),
+    "steady_sliding": (lambda **k: steady_sliding(**{**{x: BRAKE[x] for x in ("xi", "nu", "delta", "friction")},
+                                                     **k}), ["xi", "nu", "delta", "friction"]),
+    "growth_rates": (lambda **k: growth_rates(**{"params": P, "modes": [1, 2], **k}), ["params", "modes"]),
+    "travelling_wave": (lambda **k: travelling_wave(**{"params": P, "modes": 8, **k}), ["modes", "num"]),
+    "continue_waves": (lambda **k: continue_waves(**{"params": P, "modes": 8, "stop": 0.0039, "num": 2, **k}),
+                       ["modes", "stop", "num"]),
+    "perturbed_steady": (lambda **k: perturbed_steady(**{"params": P, "nodes": 32, **k}),
+                         ["nodes", "amplitude", "mode", "seed", "phase", "noise"]),
+    "integrate": (lambda **k: integrate(**{"params": P, "nodes": 32, "transits": 0.5, **k}),
+                  ["nodes", "transits", "beta2", "courant", "samples_per_transit", "snapshot_every", "tail", "modes"]),
+    "integrate_fem": (lambda **k: integrate_fem(**{"params": P, "n_theta": 16, "n_r": 1, "transits": 0.5, **k}),
+                      ["n_theta", "n_r", "transits", "beta2", "courant", "samples_per_transit", "modes"]),
+    "run_sweep": (lambda **k: run_sweep(**{"func": _one, "axes": {"x": [1.0]}, "store": _fresh_store(),
+                                           "outputs": {"y": "1"}, "scheduler": "synchronous", **k}),
+                  ["axes", "store", "outputs", "batch", "workers"]),
 }
 CASES = [(name, param) for name, (_, params) in CALLS.items() for param in params]
 

@@ -76,3 +76,69 @@ def test_map_command_checks_every_point_before_starting(axis, words, tmp_path, c
     assert run(args) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "--x" in err and words in err and not (tmp_path / "m.zarr").exists()
+
+
+def _plain(x, y):
+    return {"sum": x + y, "product": x * y}
+
+
+def _store(tmp_path):
+    store = tmp_path / "s.zarr"
+    run_sweep(_plain, {"x": [1, 2, 3], "y": [10, 20]}, store, outputs={"sum": "1", "product": "1"},
+              scheduler="synchronous")
+    return store
+
+
+def _again(store, **options):
+    return run_sweep(_plain, {"x": [1, 2, 3], "y": [10, 20]}, store, outputs={"sum": "1", "product": "1"},
+                     scheduler="synchronous", **options)
+
+
+def test_a_store_whose_content_changed_is_refused_and_overwrite_starts_afresh(tmp_path):
+    """Issue 9: a value edited, or a chunk lost, in a finished store is not resumed silently."""
+    import zarr
+
+    store = _store(tmp_path)
+    group = zarr.open_group(str(store), mode="r+")
+    group["sum"][1, 1] = 999.0  # one value changed: axes and attributes all still match
+    with pytest.raises(ParameterError, match="checksum") as err:
+        _again(store)
+    assert err.value.name == "store"
+    ds = _again(store, overwrite=True)
+    assert ds["done"].all() and float(ds["sum"][1, 1]) == 22.0
+    chunks = [p for p in (store / "done").rglob("*") if p.is_file() and not p.name.startswith((".", "zarr"))]
+    assert chunks
+    for chunk in chunks:
+        chunk.unlink()  # a lost chunk reads back as the fill value: "not done"
+    with pytest.raises(ParameterError, match="checksum"):
+        _again(store)
+
+
+def test_a_store_from_another_format_is_refused(tmp_path):
+    import zarr
+
+    store = _store(tmp_path)
+    zarr.open_group(str(store), mode="r+").attrs["sweep_format"] = "stickslip-sweep-0"
+    with pytest.raises(ParameterError, match="stickslip-sweep-0"):
+        _again(store)
+
+
+def test_a_store_killed_between_its_data_and_its_checksum_resumes(tmp_path):
+    """The checksum of the next content is written before the data (``pending_sha256``): a kill
+    after the data and before ``content_sha256`` leaves a store that verifies and resumes."""
+    import zarr
+
+    store = _store(tmp_path)
+    group = zarr.open_group(str(store), mode="r+")
+    group.attrs["content_sha256"] = "0" * 64  # as if killed before the last update
+    assert _again(store)["done"].all()
+    group.attrs["pending_sha256"] = "0" * 64  # neither matches: refused
+    with pytest.raises(ParameterError, match="checksum"):
+        _again(store)
+
+
+def test_axes_that_differ_in_the_last_digit_are_another_sweep(tmp_path):
+    store = _store(tmp_path)
+    with pytest.raises(ParameterError, match="same axes"):
+        run_sweep(_plain, {"x": [1, 2, 3 + 1e-9], "y": [10, 20]}, store, outputs={"sum": "1", "product": "1"},
+                  scheduler="synchronous")

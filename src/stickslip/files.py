@@ -9,14 +9,22 @@ lock. (On a system without ``fcntl`` the lock is a no-op.)
 
 `die_with_parent` is a process-pool initializer: on Linux the worker asks the kernel to
 kill it when its parent dies, so killing a sweep leaves no worker behind.
+
+`content_digest(arrays)` is the SHA-256 of named arrays (name, shape, type and bytes):
+checkpoints and sweep stores carry it, and a file whose content no longer matches it (a
+flipped byte, a lost chunk, a value edited by hand) is refused instead of resumed.
 """
 
 from __future__ import annotations
 
 import contextlib
+import hashlib
 import os
 import signal
 from pathlib import Path
+from typing import Mapping
+
+import numpy as np
 
 from .errors import ParameterError
 
@@ -25,7 +33,20 @@ try:
 except ImportError:  # pragma: no cover - not POSIX
     fcntl = None
 
-__all__ = ["exclusive", "die_with_parent"]
+__all__ = ["exclusive", "die_with_parent", "content_digest"]
+
+
+def content_digest(arrays: Mapping[str, object]) -> str:
+    """SHA-256 of every array's name, shape, type and values (a changed byte changes it)."""
+    digest = hashlib.sha256()
+    for name in sorted(map(str, arrays)):
+        values = np.asarray(arrays[name])
+        digest.update(f"{name}|{values.shape}|".encode())
+        if values.dtype.kind in "biuf":
+            digest.update(values.dtype.str.encode() + np.ascontiguousarray(values).tobytes())
+        else:
+            digest.update(repr(values.tolist()).encode())
+    return digest.hexdigest()
 
 
 @contextlib.contextmanager
@@ -37,7 +58,11 @@ def exclusive(path, option: str):
         return
     lock = path.with_name(path.name + ".lock")
     while True:
-        fd = os.open(lock, os.O_RDWR | os.O_CREAT, 0o644)
+        try:
+            fd = os.open(lock, os.O_RDWR | os.O_CREAT, 0o644)
+        except (FileNotFoundError, NotADirectoryError, PermissionError) as err:
+            raise ParameterError(option, str(path), f"a path in an existing, writable folder ({type(err).__name__} "
+                                                   f"for {path.parent})") from None
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except BlockingIOError:

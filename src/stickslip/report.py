@@ -102,8 +102,14 @@ def _load_or_compute(spec: FigureSpec, data_dir: Path, quick: bool, fingerprint:
                 return ds, True
         except (OSError, ValueError):
             pass  # unreadable checkpoint (killed mid-write by another tool): recompute
-    # figures built on sweeps take a cache folder, so a killed sweep resumes point by point
-    cache = data_dir / f"{spec.key}.partial"
+    # figures built on sweeps take a cache folder, so a killed sweep resumes point by point; the
+    # folder is this code's and this mode's (a sweep left by other code or the other mode is
+    # never resumed: it is removed)
+    tag = hashlib.sha256(f"{fingerprint}|{int(quick)}".encode()).hexdigest()[:12]
+    cache = data_dir / f"{spec.key}.{tag}.partial"
+    for stale in data_dir.glob(f"{spec.key}.*.partial"):
+        if stale != cache and stale.is_dir():
+            shutil.rmtree(stale, ignore_errors=True)
     accepts = inspect.signature(spec.compute).parameters
     options = {"data_dir": data_dir} if "data_dir" in accepts else {}
     if "cache" in accepts:

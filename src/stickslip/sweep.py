@@ -3,7 +3,9 @@
 `run_sweep(func, axes, store, outputs=...)` evaluates ``func(**point)`` at every point of
 the grid spanned by ``axes`` and writes each finished batch into a Zarr store together
 with a ``done`` mask. If the run is killed, calling it again with the same store only
-computes the points that are not done yet. The batches go through ``dask.compute``, so
+computes the points that are not done yet. The store records its format and a SHA-256 of
+its content (`stickslip.files.content_digest`), so a store from another program or
+version, or one damaged since (a flipped byte, a lost chunk), is refused, not resumed. The batches go through ``dask.compute``, so
 the scheduler can be local threads or processes, or a cluster (``scheduler=client.get``
 with a `dask.distributed.Client`) when a sweep outgrows one machine.
 """
@@ -14,6 +16,8 @@ import contextlib
 import itertools
 import math
 import multiprocessing
+import os
+import shutil
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 from typing import Callable, Mapping, Sequence
@@ -25,9 +29,12 @@ import zarr
 
 from . import validation as check
 from .errors import ParameterError
-from .files import die_with_parent, exclusive
+from .files import content_digest, die_with_parent, exclusive
 
-__all__ = ["run_sweep"]
+__all__ = ["run_sweep", "verify_store", "SWEEP_FORMAT"]
+
+#: The layout of a sweep store; a store with another layout is refused, not misread.
+SWEEP_FORMAT = "stickslip-sweep-1"
 
 
 def _call(func, point: dict, names: Sequence[str]) -> list[float]:
@@ -46,6 +53,35 @@ def _create(store: Path, axes: dict, outputs: dict, attrs: dict) -> None:
     data["done"] = (tuple(axes), np.zeros(shape, bool), {"long_name": "point computed"})
     coords = {k: (k, np.asarray(v, float)) for k, v in axes.items()}
     xr.Dataset(data, coords=coords, attrs=attrs).to_zarr(store, mode="w", consolidated=False)
+    group = zarr.open_group(str(store), mode="r+")
+    digest = _digest(group)
+    group.attrs.update({"sweep_format": SWEEP_FORMAT, "content_sha256": digest, "pending_sha256": digest})
+
+
+def _digest(group, replace: Mapping | None = None) -> str:
+    """Checksum of every array of the store (``replace``: arrays about to be written instead)."""
+    arrays = {name: group[name][...] for name in group.array_keys()}
+    arrays.update(replace or {})
+    return content_digest(arrays)
+
+
+def verify_store(store) -> None:
+    """Refuse (`ParameterError`) a store of another format, or whose content does not match its
+    checksum. While a batch is written the store holds either its last or its next content
+    (``pending_sha256``): a kill at any point leaves a store that verifies and resumes."""
+    try:
+        group = zarr.open_group(str(store), mode="r")
+        found = group.attrs.get("sweep_format")
+        digest = _digest(group) if found == SWEEP_FORMAT else None
+    except Exception as err:  # noqa: BLE001 - whatever a damaged store makes the decoder raise
+        raise ParameterError("store", str(store), f"a readable sweep store ({type(err).__name__}: it is damaged; "
+                             "overwrite it to start afresh)") from None
+    if found != SWEEP_FORMAT:
+        raise ParameterError("store", str(store), f"a sweep store in the format {SWEEP_FORMAT} (this one: {found}, "
+                             "written by another version or program; overwrite it to start afresh)")
+    if digest not in (group.attrs.get("content_sha256"), group.attrs.get("pending_sha256")):
+        raise ParameterError("store", str(store), "an intact sweep store (its content does not match its checksum: "
+                             "it was changed or damaged; overwrite it to start afresh)")
 
 
 def _same_value(a, b) -> bool:
@@ -62,7 +98,7 @@ def _matches(store: Path, axes: dict, outputs: dict, attrs: dict) -> bool:
     except (OSError, ValueError, KeyError):
         return False
     same_axes = "done" in ds and list(ds["done"].dims) == list(axes) and all(
-        ds[k].size == len(v) and np.allclose(ds[k].values, np.asarray(v, float)) for k, v in axes.items())
+        ds[k].size == len(v) and np.array_equal(ds[k].values, np.asarray(v, float)) for k, v in axes.items())
     same_attrs = all(k in ds.attrs and _same_value(ds.attrs[k], v) for k, v in attrs.items())
     return same_axes and same_attrs and all(name in ds for name in outputs)
 
@@ -70,7 +106,7 @@ def _matches(store: Path, axes: dict, outputs: dict, attrs: dict) -> bool:
 def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Sequence[float]], store, *,
               outputs: Mapping[str, str], batch: int = 32, scheduler: str | Callable = "processes",
               progress: Callable[[int, int], None] | None = None, attrs: Mapping | None = None,
-              workers: int | None = None) -> xr.Dataset:
+              workers: int | None = None, overwrite: bool = False) -> xr.Dataset:
     """Evaluate ``func`` on a grid, resumably.
 
     Parameters
@@ -81,8 +117,8 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
         Axis name -> values, e.g. ``{"belt_speed": [...], "damping": [...]}``.
     store : path
         Zarr directory. Created if absent; if present with the same axes, outputs and
-        ``attrs`` the sweep resumes, otherwise a `ParameterError` is raised (remove it to
-        start over): a store computed with other parameters is never reused.
+        ``attrs``, and intact, the sweep resumes, otherwise a `ParameterError` is raised: a
+        store computed with other parameters, by another version or damaged is never reused.
     outputs : mapping
         Output name -> units.
     batch : int
@@ -97,22 +133,33 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
         points in this process. Scripts that use more need the ``if __name__ ==
         "__main__":`` guard (spawned workers).
 
+    overwrite : bool
+        Start afresh, replacing the store, instead of resuming it.
+
     Returns
     -------
     xarray.Dataset
         Every output on the grid, plus the ``done`` mask.
     """
-    axes = {str(k): list(v) for k, v in axes.items()}
+    try:
+        axes = {str(k): [check.finite(f"axes[{k!r}]", x) for x in v] for k, v in axes.items()}
+    except (AttributeError, TypeError):
+        raise ParameterError("axes", axes, "a mapping of names to lists of finite numbers") from None
     if not axes or any(len(v) == 0 for v in axes.values()):
         raise ParameterError("axes", axes, "a mapping of names to non-empty value lists")
-    outputs = dict(outputs)
-    if not outputs or "done" in outputs:
+    if not isinstance(outputs, Mapping) or not outputs or "done" in outputs or \
+            not all(isinstance(k, str) and isinstance(u, str) for k, u in outputs.items()):
         raise ParameterError("outputs", outputs, "a non-empty mapping of output names (not 'done') to units")
+    outputs = dict(outputs)
+    if not isinstance(store, (str, os.PathLike)):
+        raise ParameterError("store", store, "a path (str or os.PathLike) of a Zarr directory")
     batch = check.positive_int("batch", batch)
     if scheduler == "processes" and workers is not None and check.positive_int("workers", workers) == 1:
         scheduler = "synchronous"  # a pool of one only adds the start-up of a process
     store = Path(store)
     with exclusive(store, "store"):  # one writer per store
+        if overwrite and store.exists():
+            shutil.rmtree(store)
         return _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attrs)
 
 
@@ -120,7 +167,8 @@ def _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attr
     if store.exists():
         if not _matches(store, axes, outputs, dict(attrs or {})):
             raise ParameterError("store", str(store), "a new path, or a sweep store with the same axes, outputs and "
-                                 "fixed parameters")
+                                 "fixed parameters (overwrite it to start afresh)")
+        verify_store(store)
     else:
         _create(store, axes, outputs, dict(attrs or {}))
     group = zarr.open_group(str(store), mode="r+")
@@ -142,9 +190,15 @@ def _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attr
             values = dask.compute(*[dask.delayed(_call)(func, p, names) for p in points], scheduler=scheduler,
                                   **extra)
             where = tuple(np.array(c) for c in zip(*chunk))
+            new = {name: group[name][...] for name in [*names, "done"]}
             for j, name in enumerate(names):
-                group[name].vindex[where] = np.array([v[j] for v in values])
+                new[name][where] = [v[j] for v in values]
+            new["done"][where] = True
+            group.attrs["pending_sha256"] = _digest(group, new)
+            for name in names:
+                group[name].vindex[where] = new[name][where]
             group["done"].vindex[where] = True  # last: a batch counts only once all outputs are in
+            group.attrs["content_sha256"] = group.attrs["pending_sha256"]
             finished += len(chunk)
             if progress:
                 progress(finished, total)

@@ -76,10 +76,10 @@ def radius_ratio(name: str, value) -> float:
 
 
 def at_least(name: str, value, bound: float, bound_name: str) -> float:
-    """A finite number >= another parameter's value."""
+    """A finite number >= another parameter's value (the message names both)."""
     v = finite(name, value)
     if v < bound:
-        raise ParameterError(name, v, f">= {bound_name} = {bound:g}")
+        raise ParameterError(name, v, f">= {bound_name} = {bound:g}", also=(bound_name,))
     return v
 
 

@@ -75,7 +75,7 @@ def test_too_short_window_is_refused():
     run = _synthetic(K=2)
     with pytest.raises(ParameterError) as err:
         classify(run)
-    assert err.value.name == "run"
+    assert err.value.name == "transits" and "3 snapshots" in str(err.value)
     with pytest.raises(ParameterError) as err:
         classify(_synthetic(), min_fraction=1.0)
     assert err.value.name == "min_fraction"

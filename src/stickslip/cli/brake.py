@@ -9,7 +9,7 @@ import typer
 
 from .. import validation as check
 from ..errors import ParameterError
-from .common import emit, output_folder, output_path, progress_bar
+from .common import Overwrite, emit, output_folder, output_path, progress_bar
 
 app = typer.Typer(no_args_is_help=True, help="Elastic annulus on a rotating shaft: reduced model (paper section 3).")
 
@@ -18,7 +18,7 @@ Xi = Annotated[Opt, typer.Option("--xi", help="Radius ratio R*/R in [1.0001, 100
 Nu = Annotated[float, typer.Option("--nu", help="Poisson's ratio in [0, 0.5).")]
 Gamma = Annotated[Opt, typer.Option("--gamma", help="Inertia number rho R^2 Omega^2 / E in [1e-100, 1e100].")]
 Delta = Annotated[Opt, typer.Option("--delta", help="Mismatch d/R >= 0 (scaled: the model is linear in it).")]
-Friction = Annotated[float, typer.Option("--friction", help="Coulomb coefficient f >= 0.")]
+Friction = Annotated[float, typer.Option("--friction", help="Coulomb coefficient f in [0, 10].")]
 Inner = Annotated[Opt, typer.Option("--inner-radius", help="R [m] (default 0.1 with physical input).")]
 Outer = Annotated[Opt, typer.Option("--outer-radius", help="R* [m] (default 0.15 with physical input).")]
 Young = Annotated[Opt, typer.Option("--young", help="E [Pa] (default 2.1e11).")]
@@ -73,7 +73,11 @@ def resolve(*, xi=None, nu=0.3, gamma=None, delta=None, friction=0.0, inner_radi
         if out["xi"] is None:
             if m["inner_radius"] <= 0:
                 raise ParameterError("--inner-radius", m["inner_radius"], "> 0")
-            out["xi"] = m["outer_radius"] / m["inner_radius"]
+            xi, (lo, hi) = m["outer_radius"] / m["inner_radius"], check.RADIUS_RATIO
+            if not lo <= xi <= hi:
+                raise ParameterError("--outer-radius", m["outer_radius"], f"in [{lo:.4f}, {hi:g}] x --inner-radius "
+                                     f"= {m['inner_radius']:g} (the radius ratio xi)", also=("--inner-radius",))
+            out["xi"] = xi
     if "gamma" in need:
         out["gamma"] = _pick("gamma", gamma, [n for n in ("omega",) if n in phys])
         if out["gamma"] is None:
@@ -174,10 +178,10 @@ def integrate_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta
                   transits: Annotated[float, typer.Option(help="Duration in wave transits 2 pi / sqrt(a).")] = 100.0,
                   beta2: Annotated[float, typer.Option(help="Scheme parameter of [22] (1/2: central differences).")] = 0.5,
                   mode: Annotated[Optional[int], typer.Option(help="Seed this Fourier mode (default: white noise).")] = None,
-                  amplitude: Annotated[float, typer.Option(help="Perturbation amplitude relative to delta.")] = 1e-3,
+                  amplitude: Annotated[float, typer.Option(help="Perturbation amplitude relative to delta, in [0, 100].")] = 1e-3,
                   checkpoint: Annotated[Optional[Path], typer.Option(help="Checkpoint file (.nc): resumed if present.")] = None,
                   out: Annotated[Optional[Path], typer.Option(help="Write the run to this netCDF file (.nc).")] = None,
-                  json: Json = False):
+                  overwrite: Overwrite = False, json: Json = False):
     """Time integration of [12] on the ring from perturbed steady sliding; classifies the limit regime."""
     from ..brake import classify, integrate, perturbed_steady
 
@@ -187,7 +191,7 @@ def integrate_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta
     initial = perturbed_steady(p, nodes, amplitude=amplitude, mode=mode)
     with progress_bar("integrating") as tick:
         run = integrate(p, nodes, transits=transits, beta2=beta2, initial=initial, checkpoint=checkpoint,
-                        progress=tick)
+                        progress=tick, overwrite=overwrite)
     _report_run(run, classify, out, json, "limit regime")
 
 
@@ -262,7 +266,7 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (directory ending
             omega: Annotated[float, typer.Option(help="Shaft speed [rad/s].")] = 50.0,
             modes: Annotated[int, typer.Option(help="Mode number n of the waves (kind = waves).")] = 4,
             workers: Annotated[Optional[int], typer.Option(help="Worker processes (default: all cores).")] = None,
-            json: Json = False):
+            overwrite: Overwrite = False, json: Json = False):
     """Regime map over friction and mismatch (resumable, parallel): travelling waves or ring limit regimes."""
     import numpy as np
     from ..brake.maps import REGIME_CODES, ring_regime_map, wave_regime_map
@@ -284,9 +288,10 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (directory ending
     f, d = axis("--frictions", frictions, False), axis("--mismatches", mismatches, True)
     with progress_bar(f"{kind} map") as tick:
         if kind == "waves":
-            ds = wave_regime_map(f, d, out, omega=omega, modes=modes, workers=workers, progress=tick)
+            ds = wave_regime_map(f, d, out, omega=omega, modes=modes, workers=workers, progress=tick,
+                                 overwrite=overwrite)
         else:
-            ds = ring_regime_map(f, d, out, omega=omega, workers=workers, progress=tick)
+            ds = ring_regime_map(f, d, out, omega=omega, workers=workers, progress=tick, overwrite=overwrite)
     name = "wave_regime" if kind == "waves" else "ring_regime"
     counts = {k: int((ds[name] == v).sum()) for k, v in REGIME_CODES.items() if int((ds[name] == v).sum())}
     emit({"store": str(out), "kind": kind, "points": int(ds[name].size), "counts": counts}, json, "regime map")
@@ -303,17 +308,20 @@ def fem_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = Non
             mode: Annotated[Optional[int], typer.Option(help="Seed this Fourier mode (default: white noise).")] = None,
             checkpoint: Annotated[Optional[Path], typer.Option(help="Checkpoint file (.nc): resumed if present.")] = None,
             out: Annotated[Optional[Path], typer.Option(help="Write the run to this netCDF file (.nc).")] = None,
-            json: Json = False):
+            overwrite: Overwrite = False, json: Json = False):
     """Finite element model of section 3.1 (scikit-fem): run to the limit regime and classify it."""
     from ..brake.fem import FemScheme, classify_fem, integrate_fem, perturbed_steady
 
     checkpoint, out = output_path("--checkpoint", checkpoint, ".nc"), output_path("--out", out, ".nc")
     p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
+    if p.delta == 0:  # checked before the run, not after it
+        raise ParameterError("delta", p.delta, "> 0 (the limit regime is measured against the steady contact pressure "
+                             "p_e, which is zero without interference)", also=("mismatch",))
     initial = perturbed_steady(FemScheme(p, n_theta, n_r, beta2), mode=mode)
     with progress_bar("finite elements") as tick:
         run = integrate_fem(p, n_theta, n_r, transits=transits, beta2=beta2, initial=initial, checkpoint=checkpoint,
-                            progress=tick)
+                            progress=tick, overwrite=overwrite)
     _report_run(run, classify_fem, out, json, "FE limit regime")
 
 
@@ -326,7 +334,7 @@ def campaign_cmd(
         geometry_seeds: Annotated[int, typer.Option(help="Unseeded runs per case, xi and beta2 (geometry).")] = 4,
         workers: Annotated[Optional[int], typer.Option(help="Worker processes (default: all cores).")] = None,
         export: Annotated[Optional[Path], typer.Option(help="When done, also write fem_<part>.nc here.")] = None,
-        json: Json = False):
+        overwrite: Overwrite = False, json: Json = False):
     """Section 3.1 by finite elements: limit regimes from unseeded starts (about an hour on 2 cores; resumable)."""
     import datetime
 
@@ -344,9 +352,9 @@ def campaign_cmd(
     out.mkdir(parents=True, exist_ok=True)
     summary = {"out": str(out)}
     sweeps = {"statistics": lambda tick: campaign.statistics(out / "statistics.zarr", CASES, seeds=seeds,
-                                                             workers=workers, progress=tick),
+                                                             workers=workers, progress=tick, overwrite=overwrite),
               "geometry": lambda tick: campaign.geometry(out / "geometry.zarr", CASES, seeds=geometry_seeds,
-                                                         workers=workers, progress=tick)}
+                                                         workers=workers, progress=tick, overwrite=overwrite)}
     for kind, sweep in sweeps.items():
         if part not in (kind, "all"):
             continue

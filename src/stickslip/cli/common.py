@@ -8,12 +8,18 @@ import math
 import os
 import tempfile
 from pathlib import Path
+from typing import Annotated
 
 import numpy as np
+import typer
 from rich.console import Console
 from rich.table import Table
 
 from ..errors import NoSolutionError, ParameterError
+
+#: ``--overwrite``: start a store or checkpoint afresh instead of resuming it.
+Overwrite = Annotated[bool, typer.Option("--overwrite", help="Start afresh, replacing the store or checkpoint, "
+                                         "instead of resuming it (one from another run is refused without it).")]
 
 
 def _clean(value):

@@ -13,7 +13,7 @@ from ..oscillator import (Oscillator, continue_cycle, continue_from_hopf, equili
                           limit_cycle, simulate)
 from .. import validation as check
 from ..errors import ParameterError
-from .common import emit, output_folder, output_path, progress_bar
+from .common import Overwrite, emit, output_folder, output_path, progress_bar
 
 app = typer.Typer(no_args_is_help=True, help="The 1-DOF friction oscillator m x'' + c x' + k x = F (paper section 2).")
 
@@ -160,7 +160,7 @@ def map_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: 
             y: Annotated[str, typer.Option("--y", help="Second axis, name=lo:hi:n.")] = "damping=0.01:0.3:20",
             law: LawOpt = Law.coulomb, tau: Tau = None, damping: Damping = 0.0,
             workers: Annotated[Optional[int], typer.Option(help="Worker processes (default: all cores).")] = None,
-            json: Json = False, plot: Plot = None):
+            overwrite: Overwrite = False, json: Json = False, plot: Plot = None):
     """Regime map over two parameters (steady sliding, stick-slip, bistable, pure slip): resumable, parallel."""
     from ..errors import ParameterError
     from ..oscillator.regimes import REGIMES, regime_map
@@ -176,10 +176,10 @@ def map_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: 
                 osc.with_parameter(name, value)
         except ParameterError as exc:
             raise ParameterError(option, text, f"an axis of {exc.name} with every value {exc.allowed}"
-                                 if exc.name != "parameter" else exc.allowed) from None
+                                 if exc.name != "parameter" else exc.allowed, also=exc.also) from None
         axes[name] = values
     with progress_bar("regime map") as tick:
-        ds = regime_map(osc, axes, out, workers=workers, progress=tick)
+        ds = regime_map(osc, axes, out, workers=workers, progress=tick, overwrite=overwrite)
     counts = {REGIMES[k]: int((ds["regime"] == k).sum()) for k in REGIMES}
     emit({"store": str(out), "axes": {k: [min(v), max(v), len(v)] for k, v in axes.items()}, "counts": counts},
          json, "regime map")

@@ -118,7 +118,8 @@ def classify(run, transits: float | None = None, min_fraction: float = 0.01, min
     snap_t = np.asarray(run.snapshots.get("snap_t", []))
     sel = np.flatnonzero(snap_t >= t1 - span - 1e-12 * t1)
     if sel.size < 3:
-        raise ParameterError("run", f"{sel.size} snapshots in the window", ">= 3 (run longer or with a tail)")
+        raise ParameterError("transits", transits if transits is not None else run.transits,
+                             f"long enough for 3 snapshots in the analysis window (it holds {sel.size}: run longer)")
     ser = run.t >= snap_t[sel[0]]
     fr = dict(zip(STATE_NAMES, (float(x) for x in run.series["fractions"][ser].mean(axis=0))))
     regime = regime_name([k for k, v in fr.items() if v >= min_fraction])

@@ -21,7 +21,6 @@ types) and a `RunRecord` subclass; `run_explicit` does the rest.
 from __future__ import annotations
 
 import contextlib
-import hashlib
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -32,7 +31,7 @@ import xarray as xr
 
 from .. import validation as check
 from ..errors import ParameterError
-from ..files import exclusive
+from ..files import content_digest, exclusive
 from .scheme import StepState
 from .states import STATE_ATTRS, STATE_NAMES, state_fractions
 
@@ -248,17 +247,8 @@ def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tai
 RUN_FORMAT = "stickslip-run-2"
 
 
-def content_digest(ds: xr.Dataset) -> str:
-    """SHA-256 of every variable's name, type, shape and values (a changed byte changes it)."""
-    digest = hashlib.sha256()
-    for name in sorted(map(str, ds.variables)):
-        values = np.asarray(ds[name].values)
-        digest.update(f"{name}|{values.shape}|".encode())
-        if values.dtype.kind in "biuf":
-            digest.update(values.dtype.str.encode() + np.ascontiguousarray(values).tobytes())
-        else:
-            digest.update(repr(values.tolist()).encode())
-    return digest.hexdigest()
+def _digest(ds: xr.Dataset) -> str:
+    return content_digest({name: ds[name].values for name in ds.variables})
 
 
 def save(run, path) -> None:
@@ -267,7 +257,7 @@ def save(run, path) -> None:
     path = Path(path)
     tmp = path.with_name(path.name + ".tmp")
     ds = run.to_xarray()
-    ds.attrs.update({"run_format": RUN_FORMAT, "content_sha256": content_digest(ds)})
+    ds.attrs.update({"run_format": RUN_FORMAT, "content_sha256": _digest(ds)})
     ds.to_netcdf(tmp)
     os.replace(tmp, path)
 
@@ -278,7 +268,7 @@ def resume(cls, path, scheme, settings):
     if not path.exists():
         return None
     refused = ParameterError("checkpoint", str(path), "a checkpoint of the same run (parameters, scheme, schedule "
-                             "and initial condition must match; delete it to start afresh)")
+                             "and initial condition must match; overwrite it to start afresh)")
     try:
         ds = xr.load_dataset(path)
     except (OSError, KeyError, ValueError, TypeError) as err:  # not netCDF, or damaged
@@ -286,10 +276,10 @@ def resume(cls, path, scheme, settings):
     if ds.attrs.get("run_format") != RUN_FORMAT:
         raise ParameterError("checkpoint", str(path), f"a checkpoint in the run format {RUN_FORMAT} (this one: "
                              f"{ds.attrs.get('run_format', 'none')}, written by another version or another program; "
-                             "delete it to start afresh)")
-    if ds.attrs.get("content_sha256") != content_digest(ds):
+                             "overwrite it to start afresh)")
+    if ds.attrs.get("content_sha256") != _digest(ds):
         raise ParameterError("checkpoint", str(path), "an intact checkpoint written by stickslip (its content does "
-                             "not match its checksum: the file was changed or damaged; delete it to start afresh)")
+                             "not match its checksum: the file was changed or damaged; overwrite it to start afresh)")
     try:
         old = cls.from_xarray(ds)
     except (OSError, KeyError, ValueError, TypeError) as err:  # not a run of this model
@@ -341,15 +331,19 @@ def snapshot_due(done: int, st: dict) -> bool:
         done == st["samples_total"]
 
 
-def run_explicit(cls, scheme, u0, v0, settings: dict, t_end: float, *, checkpoint=None, every=None, progress=None):
+def run_explicit(cls, scheme, u0, v0, settings: dict, t_end: float, *, checkpoint=None, every=None, progress=None,
+                 overwrite: bool = False):
     """Run ``scheme`` from displacement ``u0`` and velocity ``v0`` with the books of ``cls``.
 
     ``settings`` come from `prepare`; with ``checkpoint`` the run resumes from the file if
-    it holds this run (else `ParameterError`), and is written as it goes.
+    it holds this run (else `ParameterError`; ``overwrite=True`` starts afresh instead),
+    and is written as it goes.
     """
     with contextlib.ExitStack() as stack:
         if checkpoint is not None:  # one writer per checkpoint, for the whole run
             stack.enter_context(exclusive(checkpoint, "checkpoint"))
+            if overwrite:
+                Path(checkpoint).unlink(missing_ok=True)
         return _run_explicit(cls, scheme, u0, v0, settings, t_end, checkpoint, every, progress)
 
 

@@ -37,7 +37,19 @@ def cbar_array(value, name: str = "c") -> np.ndarray:
                     allowed="in (-1, 0) (subsonic wave, c < 0 in the paper's convention)")
 
 
-def b_array(value, name: str = "b") -> np.ndarray:
-    """Period ``b`` in units of the stick length ``a = 1``: ``b > 1``."""
-    return array_in(name, value, 1.0, np.inf, lo_open=True, hi_open=True,
-                    allowed="> 1 (period in units of the stick length a = 1)")
+#: The largest period ``b`` (in stick lengths) of a wave's fields: the stick zone, ``1/b`` of
+#: the period, must hold 10 of the at most 1e7 interface points a field evaluation takes.
+MAX_B = 1e6
+#: The largest period of the closed forms (the inverse and direct problems): ``D`` grows like
+#: ``b^2`` and leaves double range near 1e154.
+MAX_B_ALGEBRA = 1e100
+#: The largest friction coefficient: measured ones stay below about 2; the closed forms are
+#: checked up to 50.
+MAX_MU = 100.0
+
+
+def b_array(value, name: str = "b", most: float = MAX_B_ALGEBRA) -> np.ndarray:
+    """Period ``b`` in units of the stick length ``a = 1``: in ``(1, most]``."""
+    why = "a shorter stick zone is not resolved" if most <= MAX_B else "D ~ b^2 leaves double range"
+    return array_in(name, value, 1.0, most, lo_open=True, hi_open=False,
+                    allowed=f"in (1, {most:g}] (period in units of the stick length a = 1; {why})")

@@ -41,7 +41,7 @@ from scipy.special import roots_jacobi
 
 from .. import validation as check
 from ..errors import ParameterError
-from .arrays import b_array, real_array
+from .arrays import MAX_B, b_array, real_array
 from .inverse import inverse_problem
 from .waves import Radok, radok
 
@@ -173,9 +173,7 @@ class StickSlipWave:
     rd: Radok = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
-        object.__setattr__(self, "b", check.finite("b", self.b))
-        if self.b <= 1.0:
-            raise ParameterError("b", self.b, "> 1 (period in units of the stick length a = 1)")
+        object.__setattr__(self, "b", float(b_array(self.b, most=MAX_B)))
         object.__setattr__(self, "T", check.positive("T", self.T))
         object.__setattr__(self, "v", check.finite("v", self.v))
         object.__setattr__(self, "v_star", check.finite("v_star", self.v_star))
@@ -423,7 +421,7 @@ class StickSlipWave:
                 "far_field_sigma_yy": float(rd.gamma2) * float(ff.real),
                 "far_field_sigma_xy": float(rd.gamma1) * float(ff.imag),
                 "decay_residual": self.decay_residual,
-                "tensile_zone_start": float("nan") if tz is None else tz[0],
+                **({} if tz is None else {"tensile_zone_start": tz[0]}),  # left out when there is none
                 "tensile_zone_length": 0.0 if tz is None else tz[1] - tz[0],
                 "stick_violation_length": float(sum(h - l for l, h in sv))}
 

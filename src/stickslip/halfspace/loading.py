@@ -25,6 +25,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .. import validation as check
+from .arrays import MAX_MU
 from ..errors import ParameterError
 
 __all__ = ["remote_strain", "v_star_from_stress", "stress_from_v_star", "driving_traction",
@@ -39,7 +40,7 @@ def _tau_yy(tau_yy) -> float:
 
 
 def _mu_pair(mu, mu_star) -> tuple[float, float]:
-    mu = check.positive("mu", mu)
+    mu = check.in_range("mu", mu, 0.0, MAX_MU, lo_open=True)
     mu_star = check.nonnegative("mu_star", mu_star)
     if mu_star >= mu:
         raise ParameterError("mu_star", mu_star, f"< mu = {mu:g} (apparent friction below the local one)")
@@ -76,7 +77,8 @@ def stress_from_v_star(cbar, v_star, nu) -> float:
 
 def driving_traction(tau_yy, tau_xy, mu) -> float:
     """``T* = -tau*_xy - mu tau*_yy`` ([40]); any consistent unit (or scaled by ``G``)."""
-    return -check.finite("tau_xy", tau_xy) - check.positive("mu", mu) * _tau_yy(tau_yy)
+    mu = check.in_range("mu", mu, 0.0, MAX_MU, lo_open=True)
+    return -check.finite("tau_xy", tau_xy) - mu * _tau_yy(tau_yy)
 
 
 def stresses_from_T(T, mu, mu_star) -> tuple[float, float]:

@@ -24,7 +24,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from .. import validation as check
-from .arrays import cbar_array
+from .arrays import MAX_MU, cbar_array
 
 __all__ = ["Material", "wave_speed_ratio", "rayleigh_speed_ratio", "rayleigh_function", "Radok", "radok"]
 
@@ -176,7 +176,7 @@ def radok(cbar, nu, mu) -> Radok:
     """
     c = cbar_array(cbar)
     nu = check.poisson_ratio("nu", nu)
-    mu = check.positive("mu", mu)
+    mu = check.in_range("mu", mu, 0.0, MAX_MU, lo_open=True)
     c1bar = wave_speed_ratio(nu)
     c2sq, r = c * c, 1.0 / c1bar**2
     beta1 = np.sqrt(1.0 - c2sq * r)

@@ -153,9 +153,13 @@ def continue_cycle(osc: Oscillator, stop: float, *, parameter: str = "belt_speed
     stop = check.finite("stop", stop)
     if stop == start:
         raise check.ParameterError("stop", stop, f"different from the start value {start:g}")
-    step = check.positive("step", step)
+    try:  # the branch may run up to stop: it must be a valid value of the parameter
+        osc.with_parameter(parameter, stop)
+    except check.ParameterError as err:
+        raise check.ParameterError("stop", stop, f"a valid {parameter}, {err.allowed}", also=err.also) from None
+    min_step = check.positive("min_step", min_step)
+    step = check.at_least("step", step, min_step, "min_step")
     max_step = check.at_least("max_step", max_step, step, "step")
-    min_step = check.in_range("min_step", min_step, 0.0, step, lo_open=True)
     check.positive_int("max_points", max_points)
     problem = _Problem(osc, parameter, method, rtol)
     problem.set_range(stop)

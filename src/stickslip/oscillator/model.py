@@ -65,7 +65,7 @@ class Oscillator:
         if self.damping > MAX_DAMPING_RATIO * critical:
             raise ParameterError("damping", self.damping, f"<= {MAX_DAMPING_RATIO * critical:.6g} (a damping ratio "
                                  f"c/(2 sqrt(k m)) <= {MAX_DAMPING_RATIO:g}: beyond it the fast time 1/(2 zeta w) "
-                                 "is below the event loop's resolution of 1e-12/w)")
+                                 "is below the event loop's resolution of 1e-12/w)", also=("mass", "stiffness"))
         if not isinstance(self.friction, FrictionLaw):
             raise ParameterError("friction", self.friction, "a stickslip.friction.FrictionLaw")
 
@@ -80,6 +80,8 @@ class Oscillator:
 
     def parameter(self, name: str) -> float:
         """Value of a named parameter of the oscillator or of its friction law."""
+        if not isinstance(name, str):
+            raise ParameterError("parameter", name, "one of " + ", ".join(self.parameter_names()))
         if name in self.PARAMETERS:
             return getattr(self, name)
         if name in getattr(self.friction, "__dataclass_fields__", {}) and name not in ("mu", "label"):

@@ -319,7 +319,8 @@ def simulate(osc: Oscillator, t_end: float, x0: float | None = None, v0: float =
     longest = MAX_PERIODS * 2 * np.pi / osc.omega
     if t_end > longest:
         raise ParameterError("t_end", t_end, f"<= {longest:.4g} s ({MAX_PERIODS:.0e} natural periods "
-                             "2 pi sqrt(m/k); simulate in pieces from the last state for more)")
+                             "2 pi sqrt(m/k); simulate in pieces from the last state for more)",
+                             also=("mass", "stiffness"))
     x0 = osc.equilibrium if x0 is None else check.finite("x0", x0)
     v0 = check.finite("v0", v0)
     rtol = check.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)

@@ -98,13 +98,13 @@ def hopf_points(osc: Oscillator, parameter: str, lo: float, hi: float, num: int 
     osc.parameter(parameter)
     lo, hi = check.finite("lo", lo), check.finite("hi", hi)
     if not lo < hi:
-        raise check.ParameterError("hi", hi, f"> lo = {lo:g}")
+        raise check.ParameterError("hi", hi, f"> lo = {lo:g}", also=("lo",))
     for name, end in (("lo", lo), ("hi", hi)):  # the scan stays where the parameter is valid
         try:
             osc.with_parameter(parameter, end)
         except check.ParameterError as err:
             raise check.ParameterError(name, end, f"a valid {parameter}, {err.allowed}") from None
-    check.positive_int("num", num)
+    num = check.count("num", num, 1_000_000, "scan intervals")
 
     def d1(p):
         return osc.with_parameter(parameter, p).effective_damping

@@ -97,9 +97,9 @@ def test_end_of_a_family_is_reported():
 
 
 @pytest.mark.parametrize("kwargs, name", [
-    (dict(parameter="xi", stop=2.0), "parameter"), (dict(stop=None), "stop"), (dict(num=1), "num"),
+    (dict(parameter="xi", stop=2.0), "parameter"), (dict(stop=None), "stop"), (dict(num=1), "points"),
     (dict(spacing="cubic"), "spacing"), (dict(stop=-1.0), "delta"), (dict(parameter="omega", stop=3.0), "parameter"),
-    (dict(stop=0.0, spacing="log"), "spacing")])
+    (dict(stop=0.0), "stop"), (dict(parameter="friction", stop=0.0, spacing="log"), "spacing")])
 def test_bad_input(kwargs, name):
     args = dict(parameter="delta", stop=0.05) | kwargs
     with pytest.raises(ParameterError, match=name):

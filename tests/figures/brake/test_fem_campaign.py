@@ -6,10 +6,13 @@ small version)."""
 import numpy as np
 import pytest
 import xarray as xr
+import zarr
 
 from stickslip.contact import REGIME_CODES
+from stickslip.errors import ParameterError
 from stickslip.figures.brake import campaign_data, fem_geometry, fem_statistics
 from stickslip.figures.brake.paper import PAPER_REGIMES
+from stickslip.sweep import run_sweep
 
 from ..helpers import assert_png
 
@@ -121,10 +124,17 @@ def test_data_come_from_the_campaign_then_the_stored_result_then_the_small_versi
     stale.to_netcdf(stored / "fem_statistics.nc")
     ds, why = campaign_data.find("statistics", tmp_path / "data")
     assert ds is None and "other FE code" in why
-    finished = statistics_data().assign(done=(("case", "mesh", "seed"), np.ones((3, 2, 4), bool)))
-    finished.to_zarr(tmp_path / "data" / campaign_data.CAMPAIGN_DIR / "statistics.zarr", consolidated=False)
+    data = statistics_data()
+    store = tmp_path / "data" / campaign_data.CAMPAIGN_DIR / "statistics.zarr"
+    store.parent.mkdir(parents=True)
+    point = lambda case, mesh, seed: {k: float(data[k][int(case), int(mesh), int(seed)]) for k in data.data_vars}
+    run_sweep(point, {k: data[k].values.tolist() for k in ("case", "mesh", "seed")}, store,
+              outputs={k: "1" for k in data.data_vars}, scheduler="synchronous", attrs=data.attrs)
     ds, why = campaign_data.find("statistics", tmp_path / "data")
     assert ds is not None and "the campaign in" in why
+    zarr.open_group(str(store), mode="r+")["regime"][0, 0, 0] = 9.0  # a damaged campaign: refused, not read
+    with pytest.raises(ParameterError, match="checksum"):
+        campaign_data.find("statistics", tmp_path / "data")
 
 
 def test_campaign_summary_counts_as_the_figure_does():

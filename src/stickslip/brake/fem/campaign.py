@@ -28,6 +28,7 @@ Cases are given as ``(friction, mismatch [m], Omega [rad/s])`` on the steel ring
 from __future__ import annotations
 
 import functools
+import shutil
 import time
 from pathlib import Path
 
@@ -124,6 +125,7 @@ def statistics(store, cases, meshes=((256, 16), (512, 32)), seeds: int = 16, *,
              "beta2": 0.9, "mode_number": "median number of stick zones per snapshot (n_zones)",
              "initial": "FE steady sliding + 1e-3 delta white noise (one seed per run)", **_regime_attrs()}
     options.setdefault("batch", max(1, options.get("workers") or 2))
+    _fresh_runs(store, options)
     return run_sweep(func, {"case": list(range(len(cases))), "mesh": list(range(len(meshes))),
                             "seed": list(range(seeds))}, store, outputs=OUTCOMES, attrs=attrs, **options)
 
@@ -155,8 +157,15 @@ def geometry(store, cases, xis=(1.25, 1.5, 2.0, 3.0), beta2s=(0.6, 0.75, 0.9), s
              "mode_number": "median number of stick zones per snapshot (n_zones)",
              "initial": "FE steady sliding + 1e-3 delta white noise (one seed per run)", **_regime_attrs()}
     options.setdefault("batch", max(1, options.get("workers") or 2))
+    _fresh_runs(store, options)
     return run_sweep(func, {"case": list(range(len(cases))), "xi": xis, "beta2": beta2s,
                             "seed": list(range(seeds))}, store, outputs=OUTCOMES, attrs=attrs, **options)
+
+
+def _fresh_runs(store: Path, options: dict) -> None:
+    """With ``overwrite``, the runs' checkpoints go with the store (`run_sweep` replaces it)."""
+    if options.get("overwrite"):
+        shutil.rmtree(store.with_suffix(".runs"), ignore_errors=True)
 
 
 def _case_attrs(cases) -> dict:

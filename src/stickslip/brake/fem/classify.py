@@ -80,6 +80,9 @@ def classify_fem(run, transits: float | None = None, min_fraction: float = 0.01,
         raise ParameterError("run", run, "a FemRun (see integrate_fem)")
     if not run.settings["contact"]:
         raise ParameterError("run", "a run without contact", "a run with contact (contact=True)")
+    if run.scheme.params.delta == 0:
+        raise ParameterError("delta", 0.0, "> 0 (the limit regime is measured against the steady contact pressure "
+                             "p_e, which is zero without interference)")
     res = classify(run, transits, min_fraction, min_run, tol)
     t0, _ = res.window
     s = run.scheme

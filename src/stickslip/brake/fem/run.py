@@ -119,7 +119,8 @@ def integrate_fem(params: BrakeParams, n_theta: int = 256, n_r: int = 16, t_end:
                   transits: float | None = None, initial: FemInitial | None = None, beta2: float = 0.9,
                   courant: float = 0.9, samples_per_transit: int = 32, snapshot_every: float = 1.0,
                   tail: float = 2.0, modes: int = 32, contact: bool = True, checkpoint=None,
-                  every: float | None = None, progress: Callable[[float, float], None] | None = None) -> FemRun:
+                  every: float | None = None, progress: Callable[[float, float], None] | None = None,
+                  overwrite: bool = False) -> FemRun:
     """Integrate the FE model of [10] from ``initial`` up to ``t_end`` (or ``transits``).
 
     Parameters
@@ -144,9 +145,12 @@ def integrate_fem(params: BrakeParams, n_theta: int = 256, n_r: int = 16, t_end:
         False: no contact and no friction (free vibrations, inner surface free).
     checkpoint : path, optional
         netCDF file: resumed from if it exists; written every ``every`` time units
-        (default ``t_end/10``), on interruption and at the end.
+        (default ``t_end/10``), on interruption and at the end. A checkpoint of another
+        run (or a damaged one) is refused with a `ParameterError`.
     progress : callable, optional
         ``progress(t, t_end)`` after every sample.
+    overwrite : bool
+        Start afresh, replacing the checkpoint, instead of resuming from it.
     """
     scheme = FemScheme(params, n_theta, n_r, beta2, courant)
     initial = perturbed_steady(scheme) if initial is None else initial
@@ -156,4 +160,4 @@ def integrate_fem(params: BrakeParams, n_theta: int = 256, n_r: int = 16, t_end:
                               snapshot_every=snapshot_every, tail=tail, modes=modes, contact=contact,
                               initial=initial, progress=progress)
     return run_explicit(FemRun, scheme, initial.u, initial.v, settings, t_end, checkpoint=checkpoint, every=every,
-                        progress=progress)
+                        progress=progress, overwrite=overwrite)

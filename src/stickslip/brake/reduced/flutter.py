@@ -71,7 +71,8 @@ def _check_params(params) -> BrakeParams:
     if not isinstance(params, BrakeParams):
         raise ParameterError("params", params, "a stickslip.brake.BrakeParams")
     if params.delta <= 0.0:
-        raise ParameterError("delta", params.delta, "> 0 (steady sliding in contact needs a positive mismatch)")
+        raise ParameterError("delta", params.delta, "> 0 (steady sliding in contact needs a positive mismatch)",
+                             also=("mismatch",))
     return params
 
 

@@ -32,6 +32,9 @@ MAX_STRAIN = 0.01
 #: like ``1/gamma`` and the energies like ``gamma delta^2``; beyond these they leave the
 #: range of double precision on the way.
 SCALE_RANGE = (1e-100, 1e100)
+#: The largest Coulomb coefficient accepted: measured ones stay below about 2 (clean
+#: metals in vacuum); past 10 the model describes no contact there is.
+MAX_FRICTION = 10.0
 
 
 @dataclass(frozen=True)
@@ -69,11 +72,12 @@ class PhysicalParams:
     def __post_init__(self):
         for name in ("omega", "inner_radius", "young", "density"):
             object.__setattr__(self, name, check.positive(name, getattr(self, name)))
-        for name in ("mismatch", "friction"):
-            object.__setattr__(self, name, check.nonnegative(name, getattr(self, name)))
+        object.__setattr__(self, "mismatch", check.nonnegative("mismatch", self.mismatch))
+        object.__setattr__(self, "friction", check.in_range("friction", self.friction, 0.0, MAX_FRICTION))
         outer = check.finite("outer_radius", self.outer_radius)
         if outer <= self.inner_radius:
-            raise ParameterError("outer_radius", outer, f"> inner_radius = {self.inner_radius:g}")
+            raise ParameterError("outer_radius", outer, f"> inner_radius = {self.inner_radius:g}",
+                                 also=("inner_radius",))
         object.__setattr__(self, "outer_radius", outer)
         object.__setattr__(self, "poisson", check.poisson_ratio("poisson", self.poisson))
         lo, hi = check.RADIUS_RATIO
@@ -125,7 +129,7 @@ class BrakeParams:
         Mismatch ``d/R`` in [0, 1e100]. The model is linear: in these scaled units any
         ``delta`` is one problem rescaled; the small-strain bound is on the SI set.
     friction : float
-        Coulomb coefficient ``f`` >= 0.
+        Coulomb coefficient ``f`` in [0, 10] (`MAX_FRICTION`).
     physical : PhysicalParams, optional
         The SI set these numbers come from, if any (for converting rates to 1/s).
     """
@@ -145,7 +149,7 @@ class BrakeParams:
         object.__setattr__(self, "delta", check.nonnegative("delta", self.delta))
         if self.delta > hi:
             raise ParameterError("delta", self.delta, f"<= {hi:g}")
-        object.__setattr__(self, "friction", check.nonnegative("friction", self.friction))
+        object.__setattr__(self, "friction", check.in_range("friction", self.friction, 0.0, MAX_FRICTION))
         if self.physical is not None and not isinstance(self.physical, PhysicalParams):
             raise ParameterError("physical", self.physical, "a PhysicalParams or None")
 

@@ -20,6 +20,7 @@ result as an uninterrupted run).
 from __future__ import annotations
 
 import hashlib
+from numbers import Integral
 from dataclasses import dataclass
 from typing import Callable, ClassVar
 
@@ -74,13 +75,16 @@ def perturbed_steady(params: BrakeParams, nodes: int = 512, amplitude: float = 1
     ``U = delta`` and the velocities are zero.
     """
     scheme = RingScheme(params, nodes)
-    amplitude, noise = check.nonnegative("amplitude", amplitude), check.nonnegative("noise", noise)
+    # relative to the interference delta; 100 delta is far from any steady sliding already
+    amplitude, noise = check.in_range("amplitude", amplitude, 0.0, 100.0), check.in_range("noise", noise, 0.0, 100.0)
+    if not isinstance(seed, Integral) or isinstance(seed, bool) or seed < 0:
+        raise ParameterError("seed", seed, "an integer >= 0")
     white = np.random.default_rng(seed).standard_normal(scheme.nodes)
     white /= np.sqrt(np.mean(white**2))
     if mode is None:
         pattern, label = amplitude * white, f"{amplitude:g} delta noise(seed={seed})"
     else:
-        if isinstance(mode, bool) or int(mode) != mode or not 0 <= mode <= scheme.nodes // 2:
+        if not isinstance(mode, Integral) or isinstance(mode, bool) or not 0 <= mode <= scheme.nodes // 2:
             raise ParameterError("mode", mode, f"an integer in [0, {scheme.nodes // 2}]")
         pattern = amplitude * np.cos(mode * scheme.theta + check.finite("phase", phase)) + noise * white
         label = f"{amplitude:g} delta mode {mode}" + (f" + {noise:g} delta noise(seed={seed})" if noise else "")
@@ -125,7 +129,7 @@ def integrate(params: BrakeParams, nodes: int = 512, t_end: float | None = None,
               initial: InitialCondition | None = None, beta2: float = 0.5, courant: float = 0.9,
               samples_per_transit: int = 32, snapshot_every: float = 1.0, tail: float = 2.0, modes: int = 32,
               contact: bool = True, checkpoint=None, every: float | None = None,
-              progress: Callable[[float, float], None] | None = None) -> RingRun:
+              progress: Callable[[float, float], None] | None = None, overwrite: bool = False) -> RingRun:
     """Integrate [12] on ``nodes`` points from ``initial`` up to ``t_end`` (or ``transits``).
 
     Parameters
@@ -150,9 +154,12 @@ def integrate(params: BrakeParams, nodes: int = 512, t_end: float | None = None,
         False switches contact and friction off (free linear problem).
     checkpoint : path, optional
         netCDF file: resumed from if it exists, written every ``every`` time units
-        (default ``t_end/10``), on interruption and at the end.
+        (default ``t_end/10``), on interruption and at the end. A checkpoint of another
+        run (or a damaged one) is refused with a `ParameterError`.
     progress : callable, optional
         ``progress(t, t_end)`` after every sample.
+    overwrite : bool
+        Start afresh, replacing the checkpoint, instead of resuming from it.
     """
     scheme = RingScheme(params, nodes, beta2, courant)
     initial = perturbed_steady(params, scheme.nodes) if initial is None else initial
@@ -162,4 +169,5 @@ def integrate(params: BrakeParams, nodes: int = 512, t_end: float | None = None,
                               snapshot_every=snapshot_every, tail=tail, modes=modes, contact=contact,
                               initial=initial, progress=progress)
     return run_explicit(RingRun, scheme, scheme.dofs(initial.U, initial.V), scheme.dofs(initial.Ud, initial.Vd),
-                        settings, t_end, checkpoint=checkpoint, every=every, progress=progress)
+                        settings, t_end, checkpoint=checkpoint, every=every, progress=progress,
+                        overwrite=overwrite)

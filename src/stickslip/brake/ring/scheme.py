@@ -60,7 +60,7 @@ class RingScheme(ExplicitScheme):
 
     def __post_init__(self):
         self.validate_common()
-        nodes = check.positive_int("nodes", self.nodes)
+        nodes = check.count("nodes", self.nodes, 1 << 22, "nodes around the ring")
         if nodes < 8:
             raise ParameterError("nodes", nodes, "an integer >= 8")
         object.__setattr__(self, "nodes", nodes)

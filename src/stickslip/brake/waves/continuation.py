@@ -103,12 +103,13 @@ class WaveBranch:
         prof = [w.evaluate(np.linspace(0, w.period, 1001)) for w in self.waves]
         delta = np.array([w.params.delta for w in self.waves])
         rad = {"units": "rad"}
+        padded = {**rad, "comment": "NaN past the last zone of a point (points have different numbers of zones)"}
         ds = xr.Dataset(
             {"c": ("point", [w.c for w in self.waves], {"long_name": "wave speed (theta per unit Omega t)"}),
              "c_internal": ("point", [w.x[0] for w in self.waves], {"long_name": "c sqrt(gamma)"}),
              "structure": ("point", [w.structure for w in self.waves]),
              "regime": ("point", [w.regime for w in self.waves]),
-             "zone_start": (("point", "zone"), starts, rad), "zone_end": (("point", "zone"), ends, rad),
+             "zone_start": (("point", "zone"), starts, padded), "zone_end": (("point", "zone"), ends, padded),
              "zone_kind": (("point", "zone"), kinds),
              **{f"length_{k.replace('-', '_')}": ("point", length[k], {**rad, "long_name": f"total {k} length"})
                 for k in KINDS},
@@ -213,13 +214,18 @@ def continue_waves(params: BrakeParams, modes: int, parameter: str = "delta", st
         raise ParameterError("stop", stop, "the end value of the continued parameter")
     num = check.count("points", num, 100_000, "points along the branch")
     if num < 2:
-        raise ParameterError("num", num, "an integer >= 2")
+        raise ParameterError("points", num, "an integer >= 2")
     if spacing not in ("linear", "log"):
         raise ParameterError("spacing", spacing, "'linear' or 'log'")
     start = _value(params, parameter)
     if not math.isfinite(start):
         raise ParameterError("parameter", parameter, "'omega' only for parameters built from physical values")
-    with_parameter(params, parameter, stop)  # validates stop
+    try:  # the branch runs up to stop: it must be a valid value of the parameter
+        with_parameter(params, parameter, stop)
+    except ParameterError as err:
+        raise ParameterError("stop", stop, f"a valid {parameter}: {err.name} {err.allowed}", also=err.also) from None
+    if parameter == "delta" and not stop > 0:
+        raise ParameterError("stop", stop, "> 0 (a wave needs contact: delta > 0)")
     if spacing == "log":
         if start <= 0 or stop <= 0:
             raise ParameterError("spacing", spacing, "'linear' when the parameter range reaches 0")

@@ -28,6 +28,7 @@ from ...brake import BrakeParams
 from ...brake.fem import FemScheme, classify_fem, integrate_fem, perturbed_steady
 from ...brake.fem.campaign import limit_regime
 from ...contact import REGIME_CODES
+from ...sweep import verify_store
 from .paper import CASES, PAPER_REGIMES
 
 _REGIME_NAMES = {v: k for k, v in REGIME_CODES.items()}
@@ -64,6 +65,7 @@ def model_fingerprint() -> str:
 def _complete_store(path: Path) -> xr.Dataset | None:
     if not path.exists():
         return None
+    verify_store(path)  # a damaged campaign is refused, never read silently
     try:
         ds = xr.open_zarr(path, consolidated=False).load()
     except (OSError, ValueError, KeyError):

@@ -66,8 +66,9 @@ def cases_dataset(waves, labels, label_name, num) -> xr.Dataset:
     data["phi"] = (("case", "sample"), phis, {"units": "rad", "long_name": "phi = theta - c t"})
     pad = lambda rows, fill: [r + [fill] * (m - len(r)) for r in rows]  # noqa: E731
     data["zone_kind"] = (("case", "zone"), pad([[z.kind for z in w.zones] for w in waves], ""))
-    data["zone_start"] = (("case", "zone"), pad([[z.start for z in w.zones] for w in waves], np.nan))
-    data["zone_end"] = (("case", "zone"), pad([[z.end for z in w.zones] for w in waves], np.nan))
+    padded = {"units": "rad", "comment": "NaN past the last zone of a case (cases have different numbers of zones)"}
+    data["zone_start"] = (("case", "zone"), pad([[z.start for z in w.zones] for w in waves], np.nan), padded)
+    data["zone_end"] = (("case", "zone"), pad([[z.end for z in w.zones] for w in waves], np.nan), padded)
     data["regime"] = ("case", [w.regime for w in waves])
     data["structure"] = ("case", [w.structure for w in waves])
     data["delta"] = ("case", [w.params.delta for w in waves])

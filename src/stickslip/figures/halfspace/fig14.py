@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
@@ -21,10 +23,14 @@ def _wave_vars(waves: list[StickSlipWave], x: np.ndarray) -> dict:
     out["Sigma_yy"][2]["long_name"] = "total normal stress Sigma_yy/G"
     out["slip_velocity"][2]["long_name"] = "slip velocity (V - U_dot)/c2"
     scal = {}
-    for key in waves[0].summary():
-        vals = [w.summary()[key] for w in waves]
+    summaries = [w.summary() for w in waves]
+    for key in dict.fromkeys(k for s in summaries for k in s):  # a key may be missing: no tensile zone
+        vals = [s.get(key, math.nan) for s in summaries]
         if all(isinstance(v, (int, float)) for v in vals):
-            scal[key] = ("variant", np.array(vals, dtype=float), {"units": "1"})
+            attrs = {"units": "1"}
+            if any(key not in s for s in summaries):
+                attrs["comment"] = "NaN for a variant without this feature (e.g. no tensile zone)"
+            scal[key] = ("variant", np.array(vals, dtype=float), attrs)
     scal["slip_residual"] = ("variant", np.array([f.slip_residual for f in fields]), {"units": "1"})
     scal["stick_residual"] = ("variant", np.array([f.stick_residual for f in fields]), {"units": "1"})
     return out | scal
