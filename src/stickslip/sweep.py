@@ -33,6 +33,8 @@ from .files import content_digest, die_with_parent, exclusive
 
 __all__ = ["run_sweep", "verify_store", "SWEEP_FORMAT"]
 
+#: The most worker processes a sweep starts.
+MAX_WORKERS = 64
 #: The layout of a sweep store; a store with another layout is refused, not misread.
 SWEEP_FORMAT = "stickslip-sweep-1"
 
@@ -154,7 +156,9 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
     if not isinstance(store, (str, os.PathLike)):
         raise ParameterError("store", store, "a path (str or os.PathLike) of a Zarr directory")
     batch = check.positive_int("batch", batch)
-    if scheduler == "processes" and workers is not None and check.positive_int("workers", workers) == 1:
+    if workers is not None:  # each worker process holds its own interpreter (about 200 MB)
+        workers = check.count("workers", workers, MAX_WORKERS, "worker processes, about 200 MB each")
+    if scheduler == "processes" and workers == 1:
         scheduler = "synchronous"  # a pool of one only adds the start-up of a process
     store = Path(store)
     with exclusive(store, "store"):  # one writer per store

@@ -110,7 +110,7 @@ def _correct(problem: _Problem, u_pred, tangent, tol, max_iter=12):
     for it in range(max_iter):
         try:
             g, dg, engine, rm = problem.residual(u)
-        except NoSolutionError:
+        except (NoSolutionError, check.ParameterError):  # no cycle, or an iterate past the valid range
             return None
         if it >= 3 and abs(g) > 0.5 * previous:  # not converging: let the caller shrink the step
             return None
@@ -250,7 +250,10 @@ def _locate_grazing(problem: _Problem, ua, ub, tol, iterations: int = 40) -> flo
             return solve(np.array([a[0] + slope * (p - a[1]), p]))
         except NoSolutionError:
             return np.array([math.nan, p]), None
+        except check.ParameterError:  # past the parameter's valid range: no grazing there
+            return np.array([math.nan, p]), OUTSIDE
 
+    OUTSIDE = "outside"
     _, side_a = solve(ua)
     a = np.array(ua, float)
     slope = (ub[0] - ua[0]) / (ub[1] - ua[1]) if ub[1] != ua[1] else 0.0
@@ -259,6 +262,8 @@ def _locate_grazing(problem: _Problem, ua, ub, tol, iterations: int = 40) -> flo
     width, b = (ub[1] - ua[1]) / 4, None
     for _ in range(16):
         u_try, side = classify(a, a[1] + width)
+        if side is OUTSIDE:
+            return math.nan
         if side != side_a:
             b = u_try
             break

@@ -17,8 +17,10 @@ In order of preference:
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import hashlib
+import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -94,12 +96,15 @@ def find(kind: str, data_dir: Path | None) -> tuple[xr.Dataset | None, str]:
     return None, "no campaign found: run `stickslip brake campaign` (about an hour)"
 
 
-def small_store(cache: Path | None) -> Path:
-    """Where the small version's sweep is stored: the report's cache folder, else a new temporary one."""
-    if cache is None:
-        import tempfile
-        cache = tempfile.mkdtemp(prefix="stickslip-campaign-")
-    return Path(cache) / "small.zarr"
+@contextlib.contextmanager
+def small_store(cache: Path | None):
+    """Where the small version's sweep is stored: the report's cache folder (kept, so a killed
+    report resumes), else a temporary folder removed afterwards (with the runs' checkpoints)."""
+    if cache is not None:
+        yield Path(cache) / "small.zarr"
+        return
+    with tempfile.TemporaryDirectory(prefix="stickslip-campaign-") as tmp:
+        yield Path(tmp) / "small.zarr"
 
 
 def inputs(kind: str, data_dir: Path | None) -> str:

@@ -35,8 +35,9 @@ def compute(quick: bool = False, cache: Path | None = None, data_dir: Path | Non
     ds, source = campaign_data.find("geometry", data_dir)
     small = ds is None
     if small:
-        ds = geometry(campaign_data.small_store(cache), CASES, xis=(1.5, 2.5), beta2s=(0.6, 0.9), seeds=2, n_theta=128,
-                      budget={"max_transits": 150.0 if quick else 250.0})
+        with campaign_data.small_store(cache) as store:
+            ds = geometry(store, CASES, xis=(1.5, 2.5), beta2s=(0.6, 0.9), seeds=2, n_theta=128,
+                          budget={"max_transits": 150.0 if quick else 250.0})
         source = f"the small version (xi 1.5, 2.5; beta2 0.6, 0.9; 2 runs each; 128 nodes around): {source}"
     ds = ds.drop_vars("done", errors="ignore")
     ds.attrs.update({"source": source, "small": int(small)})

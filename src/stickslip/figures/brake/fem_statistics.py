@@ -39,7 +39,9 @@ def compute(quick: bool = False, cache: Path | None = None, data_dir: Path | Non
     ds, source = campaign_data.find("statistics", data_dir)
     small = ds is None
     if small:
-        ds = statistics(campaign_data.small_store(cache), CASES, meshes=((256, 16),), seeds=_SMALL[bool(quick)], budgets=({"max_transits": 300.0},))
+        with campaign_data.small_store(cache) as store:
+            ds = statistics(store, CASES, meshes=((256, 16),), seeds=_SMALL[bool(quick)],
+                            budgets=({"max_transits": 300.0},))
         source = f"the small version ({_SMALL[bool(quick)]} runs per case on 256 x 16 only): {source}"
     ds = ds.drop_vars("done", errors="ignore")
     ds.attrs.update({"source": source, "small": int(small), "threshold": THRESHOLD})
