@@ -26,3 +26,19 @@ def test_fem_command(tmp_path, capsys):
     data = json.loads(capsys.readouterr().out)
     assert data["regime"] and abs(data["p_mean_over_pe"] - 1) < 0.1 and (tmp_path / "fem.nc").exists()
     assert run(["brake", "fem", "--omega", "50", "--mismatch", "1e-4", "--friction", "0.7", "--n-theta", "30"]) == 2
+
+
+def test_a_checkpoint_of_another_run_is_refused_and_overwrite_starts_afresh(tmp_path, capsys):
+    ck = tmp_path / "ck.nc"
+    base = ["brake", "integrate", "--omega", "50", "--mismatch", "1e-4", "--nodes", "32", "--transits", "2",
+            "--checkpoint", str(ck), "--json"]
+    assert run(base + ["--friction", "0.7"]) == 0
+    capsys.readouterr()
+    assert run(base + ["--friction", "0.5"]) == 2  # another friction: not this run's checkpoint
+    out, err = capsys.readouterr()
+    assert out == "" and err.count("\n") == 1 and "--checkpoint" in err and "overwrite" in err
+    assert run(base + ["--friction", "0.5", "--overwrite"]) == 0
+    fresh = json.loads(capsys.readouterr().out)
+    assert fresh["params"]["friction"] == 0.5
+    assert run(base + ["--friction", "0.5"]) == 0  # and now it resumes
+    assert json.loads(capsys.readouterr().out) == fresh
