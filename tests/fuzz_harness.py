@@ -94,6 +94,61 @@ def numeric_options() -> list[tuple[str, str]]:
 OPTIONS = numeric_options()
 
 
+def path_options() -> list[tuple[str, str]]:
+    """``(command, option)`` for every option typed as a path (outputs, checkpoints, stores)."""
+    import pathlib as _pathlib
+
+    import typer.main
+
+    from stickslip.cli import app
+
+    out = []
+
+    def walk(cmd, path):
+        if hasattr(cmd, "commands"):
+            for name, sub in cmd.commands.items():
+                walk(sub, path + [name])
+            return
+        hints = typing.get_type_hints(cmd.callback, include_extras=True)
+        for param in cmd.params:
+            hint = hints.get(param.name)
+            base = typing.get_args(hint)[0] if typing.get_origin(hint) is typing.Annotated else hint
+            if _pathlib.Path in ([a for a in typing.get_args(base) if a is not type(None)] or [base]):
+                out.append((" ".join(path), param.opts[0]))
+
+    walk(typer.main.get_command(app), [])
+    return out
+
+
+PATH_OPTIONS = path_options()
+#: Bad places to write: ``{tmp}`` is a fresh folder holding a file ``file``; /proc is a
+#: place nobody can create files in, root included (a read-only folder is writable by root).
+BAD_PATHS = {"a folder": "{tmp}", "a missing folder": "{tmp}/missing/x{suffix}", "an unwritable place": "/proc/x{suffix}",
+             "under a file": "{tmp}/file/x{suffix}", "another suffix": "{tmp}/x.txt"}
+_SUFFIX = {"--plot": ".png", "--checkpoint": ".nc", "--out": ".nc", "--export": ""}
+#: Options that name a folder to create (any name, parents made): only unwritable places are bad.
+FOLDERS = {("brake campaign", "--out"), ("brake campaign", "--export"), ("reproduce", "--out")}
+
+
+def bad_places(command: str, option: str) -> list[str]:
+    """The kinds of `BAD_PATHS` that are wrong for this option."""
+    if (command, option) in FOLDERS:
+        return ["an unwritable place", "under a file"]
+    if any(a == option and b.endswith(".zarr") for a, b in zip(BASE[command], BASE[command][1:])):
+        return [k for k in BAD_PATHS if k != "a missing folder"]  # a store is made with its parents
+    return list(BAD_PATHS)
+
+
+def path_args(command: str, option: str, kind: str, tmp) -> list[str]:
+    """The base invocation with ``option`` pointing to a bad place of ``kind``."""
+    tmp = pathlib.Path(tmp)
+    (tmp / "file").write_text("")
+    folder_option = any(a == option and b.endswith(".zarr") for a, b in zip(BASE[command], BASE[command][1:]))
+    suffix = ".zarr" if folder_option else ("" if command in ("reproduce", "brake campaign") else _SUFFIX[option])
+    value = BAD_PATHS[kind].format(tmp=tmp, suffix=suffix)
+    return args_for(command, option, value, tmp)
+
+
 def args_for(command: str, option: str, value: str, tmp) -> list[str]:
     """The base invocation of ``command`` with ``option value`` (and ``--json``)."""
     base = [a.replace("{tmp}", str(tmp)) for a in BASE[command]]
@@ -258,12 +313,32 @@ def battery(values=EXTREMES, options=None, timeout: float = 120.0, log=None):
     return out
 
 
+def path_battery(log=None, timeout: float = 120.0):
+    """Every path option with every kind of bad place: a list of ``(args, trial, problems)``."""
+    out = []
+    for command, option in PATH_OPTIONS:
+        for kind in bad_places(command, option):
+            with tempfile.TemporaryDirectory() as tmp:
+                args = path_args(command, option, kind, tmp)
+                t = trial(args, timeout)
+                found = problems(t, option, tmp)
+                if t.code == 0 and kind != "another suffix":
+                    found.append("wrote to a bad place")
+            out.append((args, t, found))
+            if log:
+                print(f"{t.code!s:>4} {t.seconds:6.1f}s {' '.join(args)}  {found or ''}  {t.err.strip()[:200]}",
+                      file=log, flush=True)
+    return out
+
+
 def main() -> None:
     values = EXTREMES + NEVER_NUMBERS
-    results = battery(values, log=sys.stderr if "-v" in sys.argv else None)
+    log = sys.stderr if "-v" in sys.argv else None
+    results = battery(values, log=log) + path_battery(log=log)
     counts = collections.Counter(p for _, _, found in results for p in found)
     slowest = max(results, key=lambda r: r[1].seconds)
     print(json.dumps({"trials": len(results), "values": values, "options": len(OPTIONS),
+                      "path_options": len(PATH_OPTIONS), "bad_places": list(BAD_PATHS),
                       "exit_3_or_signal": sum(1 for _, t, _ in results if not t.hang and t.code not in (0, 1, 2)),
                       "non_finite_successes": counts["non-finite success"], "hangs": counts["hang"],
                       "option_not_named": counts["option not named"], "not_one_line": counts["not one line"],

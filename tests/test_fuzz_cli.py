@@ -23,7 +23,8 @@ from hypothesis import strategies as st
 
 from stickslip.cli import run
 
-from .fuzz_harness import BASE, EXTREMES, NEVER_NUMBERS, OPTIONS, args_for, problems, trial
+from .fuzz_harness import (BASE, EXTREMES, NEVER_NUMBERS, OPTIONS, PATH_OPTIONS, args_for, bad_places,
+                           path_args, problems, trial)
 
 
 def test_every_command_has_a_base_invocation():
@@ -112,3 +113,34 @@ def test_generated_values_on_generated_options(index, value, tmp_path_factory):
     folder = tmp_path_factory.mktemp("fuzz")
     t = trial(args_for(command, option, value, folder), timeout=300)
     assert not problems(t, option, folder), (t.args, t.code, t.err[-400:], t.out[:300])
+
+
+def _path_trial(index, kind, tmp_path):
+    command, option = PATH_OPTIONS[index]
+    folder = tmp_path / kind.replace(" ", "-")
+    folder.mkdir()
+    t = trial(path_args(command, option, kind, folder), timeout=300)
+    found = problems(t, option, folder)
+    if t.code == 0 and kind != "another suffix":
+        found.append("wrote to a bad place")
+    assert not found, (t.args, t.code, t.err[-400:], found)
+    if t.code != 0:  # refused before any work: no store, checkpoint or partial file left behind
+        assert sorted(p.name for p in folder.iterdir()) == ["file"], list(folder.iterdir())
+
+
+@pytest.mark.parametrize("index", range(len(PATH_OPTIONS)), ids=[f"{c} {o}" for c, o in PATH_OPTIONS])
+def test_a_bad_place_to_write_is_refused_before_any_work(index, tmp_path):
+    """A folder, a missing folder, an unwritable place, a path under a file or another suffix
+    for every output, checkpoint and store option: one line naming the option, exit 2, and
+    nothing written. `make test` tries one place per option (rotating), the slow set all."""
+    places = bad_places(*PATH_OPTIONS[index])
+    _path_trial(index, places[index % len(places)], tmp_path)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("index", range(len(PATH_OPTIONS)), ids=[f"{c} {o}" for c, o in PATH_OPTIONS])
+def test_every_bad_place_to_write_is_refused_before_any_work(index, tmp_path):
+    places = bad_places(*PATH_OPTIONS[index])
+    for kind in places:
+        if kind != places[index % len(places)]:
+            _path_trial(index, kind, tmp_path)

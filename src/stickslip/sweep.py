@@ -118,7 +118,7 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
     axes : mapping
         Axis name -> values, e.g. ``{"belt_speed": [...], "damping": [...]}``.
     store : path
-        Zarr directory. Created if absent; if present with the same axes, outputs and
+        Zarr directory. Created if absent (with its parents); if present with the same axes, outputs and
         ``attrs``, and intact, the sweep resumes, otherwise a `ParameterError` is raised: a
         store computed with other parameters, by another version or damaged is never reused.
     outputs : mapping
@@ -161,6 +161,10 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
     if scheduler == "processes" and workers == 1:
         scheduler = "synchronous"  # a pool of one only adds the start-up of a process
     store = Path(store)
+    try:  # a store is created with its missing parents, like any output folder
+        store.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as err:
+        raise ParameterError("store", str(store), f"a path whose parent folder can be made ({err.strerror})") from None
     with exclusive(store, "store"):  # one writer per store
         if overwrite and store.exists():
             shutil.rmtree(store)
