@@ -170,3 +170,14 @@ def test_runs_that_would_not_end_are_refused_up_front_with_the_limit(args, optio
     ratio (its coefficients lose their digits before its time step vanishes)."""
     code, out, err = _run(args, capsys)
     assert code == 2 and out == "" and err.count("\n") == 1 and option in err and ("<=" in err or "in [" in err)
+
+
+def test_version_and_figure_list(capsys):
+    from stickslip import __version__
+    from stickslip.figures import registry
+
+    assert run(["--version"]) == 0
+    assert capsys.readouterr().out.strip() == f"stickslip {__version__}"
+    assert run(["reproduce", "--list", "--json"]) == 0
+    out, err = capsys.readouterr()
+    assert json.loads(out)["figures"].keys() == registry().keys() and err == ""

@@ -21,6 +21,20 @@ _EXIT, _ABORT, _USAGE = typer.Exit, typer.Abort, typer.BadParameter.__mro__[1]
 
 app = typer.Typer(no_args_is_help=True, add_completion=False, pretty_exceptions_enable=False,
                   help="Friction-induced vibration and stick-slip waves (models of the paper, and beyond).")
+
+
+def _version(value: bool) -> None:
+    if value:
+        from .. import __version__
+
+        print(f"stickslip {__version__}")
+        raise typer.Exit(0)
+
+
+@app.callback()
+def _main(version: bool = typer.Option(False, "--version", callback=_version, is_eager=True,
+                                       help="Print the version and exit.")) -> None:
+    """Friction-induced vibration and stick-slip waves (models of the paper, and beyond)."""
 app.add_typer(oscillator.app, name="oscillator")
 app.add_typer(brake.app, name="brake")
 app.add_typer(halfspace.app, name="halfspace")

@@ -15,8 +15,20 @@ def reproduce(out: Annotated[Path, typer.Option(help="Output directory.")] = Pat
               quick: Annotated[bool, typer.Option("--quick", help="Coarser, faster runs (same checks).")] = False,
               only: Annotated[Optional[str], typer.Option(help="Comma-separated figure keys, e.g. fig2,fig3.")] = None,
               force: Annotated[bool, typer.Option("--force", help="Recompute even if a checkpoint exists.")] = False,
-              json: Annotated[bool, typer.Option("--json", help="Print one JSON summary on stdout.")] = False) -> int:
+              json: Annotated[bool, typer.Option("--json", help="Print one JSON summary on stdout.")] = False,
+              list_: Annotated[bool, typer.Option("--list", help="List the figure keys and titles, and exit.")] = False
+              ) -> int:
     """Compute, plot and check every figure of the paper; write report.md and report.html."""
+    if list_:
+        from ..figures import registry
+
+        figures = {key: spec.title for key, spec in registry().items()}
+        if json:
+            emit({"figures": figures}, True, "")
+        else:
+            for key, title in figures.items():
+                print(f"{key:>24}  {title}")
+        return 0
     from ..report import reproduce as run
 
     out = output_folder("--out", out)
