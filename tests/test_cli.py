@@ -181,3 +181,29 @@ def test_version_and_figure_list(capsys):
     assert run(["reproduce", "--list", "--json"]) == 0
     out, err = capsys.readouterr()
     assert json.loads(out)["figures"].keys() == registry().keys() and err == ""
+
+
+def test_help_texts_keep_their_units(capsys):
+    """Issue 10: rich markup ate ``[kg]``, ``[m/s]``, ``[rad/s]`` out of --help."""
+    import re
+
+    import typer.main
+
+    from stickslip.cli import app
+
+    def commands(cmd, path):
+        if hasattr(cmd, "commands"):
+            for name, sub in cmd.commands.items():
+                yield from commands(sub, path + [name])
+        else:
+            yield path, cmd
+
+    checked = 0
+    for path, cmd in commands(typer.main.get_command(app), []):
+        assert run([*path, "--help"]) == 0
+        shown = " ".join(capsys.readouterr().out.split())
+        for param in cmd.params:
+            for unit in re.findall(r"\[[^\]]+\]", getattr(param, "help", None) or ""):
+                assert unit in shown, (path, param.name, unit)
+                checked += 1
+    assert checked > 20

@@ -19,7 +19,7 @@ from . import brake, halfspace, oscillator, reproduce
 # its usage errors are the parent class of typer.BadParameter in both cases
 _EXIT, _ABORT, _USAGE = typer.Exit, typer.Abort, typer.BadParameter.__mro__[1]
 
-app = typer.Typer(no_args_is_help=True, add_completion=False, pretty_exceptions_enable=False,
+app = typer.Typer(no_args_is_help=True, add_completion=False, pretty_exceptions_enable=False, rich_markup_mode=None,
                   help="Friction-induced vibration and stick-slip waves (models of the paper, and beyond).")
 
 

@@ -11,7 +11,7 @@ from .. import validation as check
 from ..errors import ParameterError
 from .common import Overwrite, emit, output_folder, output_path, progress_bar
 
-app = typer.Typer(no_args_is_help=True, help="Elastic annulus on a rotating shaft: reduced model (paper section 3).")
+app = typer.Typer(no_args_is_help=True, rich_markup_mode=None, help="Elastic annulus on a rotating shaft: reduced model (paper section 3).")
 
 Opt = Optional[float]
 Xi = Annotated[Opt, typer.Option("--xi", help="Radius ratio R*/R in [1.0001, 1000].")]

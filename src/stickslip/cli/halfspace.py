@@ -11,7 +11,7 @@ import typer
 from .. import validation as check
 from .common import emit, output_path
 
-app = typer.Typer(no_args_is_help=True, help="Rigid body sliding on an elastic half-space: periodic stick-slip waves.")
+app = typer.Typer(no_args_is_help=True, rich_markup_mode=None, help="Rigid body sliding on an elastic half-space: periodic stick-slip waves.")
 
 
 class System(str, Enum):

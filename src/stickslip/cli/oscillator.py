@@ -15,7 +15,7 @@ from .. import validation as check
 from ..errors import ParameterError
 from .common import Overwrite, emit, output_folder, output_path, progress_bar
 
-app = typer.Typer(no_args_is_help=True, help="The 1-DOF friction oscillator m x'' + c x' + k x = F (paper section 2).")
+app = typer.Typer(no_args_is_help=True, rich_markup_mode=None, help="The 1-DOF friction oscillator m x'' + c x' + k x = F (paper section 2).")
 
 
 class Law(str, Enum):
