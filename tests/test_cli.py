@@ -207,3 +207,11 @@ def test_help_texts_keep_their_units(capsys):
                 assert unit in shown, (path, param.name, unit)
                 checked += 1
     assert checked > 20
+
+
+def test_a_parameter_that_is_no_number_is_refused(capsys):
+    """Issue 10: `--parameter name` (the law's label) was offered and crashed with exit 3."""
+    for command in (["continue", "--stop", "0.3"], ["stability"]):
+        assert run(["oscillator", *command, *OSC, "--parameter", "name"]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "--parameter" in err and "belt_speed" in err

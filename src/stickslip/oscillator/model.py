@@ -14,6 +14,7 @@ import dataclasses
 import math
 from dataclasses import dataclass
 from enum import IntEnum
+from numbers import Real
 
 import numpy as np
 
@@ -84,12 +85,15 @@ class Oscillator:
             raise ParameterError("parameter", name, "one of " + ", ".join(self.parameter_names()))
         if name in self.PARAMETERS:
             return getattr(self, name)
-        if name in getattr(self.friction, "__dataclass_fields__", {}) and name not in ("mu", "label"):
+        if name in self.parameter_names():
             return getattr(self.friction, name)
         raise ParameterError("parameter", name, "one of " + ", ".join(self.parameter_names()))
 
     def parameter_names(self) -> list[str]:
-        law = [n for n in getattr(self.friction, "__dataclass_fields__", {}) if n not in ("mu", "label", "step")]
+        """The oscillator's parameters and the friction law's numeric ones (not its name)."""
+        fields = getattr(self.friction, "__dataclass_fields__", {})
+        law = [n for n in fields if n not in ("mu", "label", "step")
+               and isinstance(getattr(self.friction, n), Real) and not isinstance(getattr(self.friction, n), bool)]
         return [*self.PARAMETERS, *law]
 
     def with_parameter(self, name: str, value: float) -> "Oscillator":
