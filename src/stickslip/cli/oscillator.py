@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import sys
+
 from enum import Enum
 from pathlib import Path
 from typing import Annotated, Optional
@@ -99,7 +101,7 @@ def stability(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed
     osc = _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping)
     value = osc.parameter(parameter)
     lo = value / 100 if lo is None else lo
-    hi = value * 100 if hi is None else hi
+    hi = min(value * 100, sys.float_info.max) if hi is None else hi  # the default stays finite
     data = equilibrium_stability(osc).to_dict()
     data["hopf_points"] = [h.to_dict() for h in hopf_points(osc, parameter, lo, hi)]
     emit(data, json, "steady sliding")
