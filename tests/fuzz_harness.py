@@ -66,8 +66,8 @@ NEVER_NUMBERS = ["nan", "inf", "-inf", "abc", ""]
 EXTREMES = ["0", "-1", "1e300", "-1e300", "1e-300"]
 
 
-def numeric_options() -> list[tuple[str, str]]:
-    """``(command, option)`` for every option typed float or int."""
+def options_typed(*types) -> list[tuple[str, str]]:
+    """``(command, option)`` for every option whose type (first of an Optional) is one of ``types``."""
     import typer.main
 
     from stickslip.cli import app
@@ -84,43 +84,16 @@ def numeric_options() -> list[tuple[str, str]]:
             hint = hints.get(param.name)
             base = typing.get_args(hint)[0] if typing.get_origin(hint) is typing.Annotated else hint
             args = [a for a in typing.get_args(base) if a is not type(None)] or [base]
-            if args[0] in (float, int):
+            if args[0] in types:
                 out.append((" ".join(path), param.opts[0]))
 
     walk(typer.main.get_command(app), [])
     return out
 
 
-OPTIONS = numeric_options()
-
-
-def path_options() -> list[tuple[str, str]]:
-    """``(command, option)`` for every option typed as a path (outputs, checkpoints, stores)."""
-    import pathlib as _pathlib
-
-    import typer.main
-
-    from stickslip.cli import app
-
-    out = []
-
-    def walk(cmd, path):
-        if hasattr(cmd, "commands"):
-            for name, sub in cmd.commands.items():
-                walk(sub, path + [name])
-            return
-        hints = typing.get_type_hints(cmd.callback, include_extras=True)
-        for param in cmd.params:
-            hint = hints.get(param.name)
-            base = typing.get_args(hint)[0] if typing.get_origin(hint) is typing.Annotated else hint
-            if _pathlib.Path in ([a for a in typing.get_args(base) if a is not type(None)] or [base]):
-                out.append((" ".join(path), param.opts[0]))
-
-    walk(typer.main.get_command(app), [])
-    return out
-
-
-PATH_OPTIONS = path_options()
+#: Every numeric option, and every option that is a path (outputs, checkpoints, stores).
+OPTIONS = options_typed(float, int)
+PATH_OPTIONS = options_typed(pathlib.Path)
 #: Bad places to write: ``{tmp}`` is a fresh folder holding a file ``file``; /proc is a
 #: place nobody can create files in, root included (a read-only folder is writable by root).
 BAD_PATHS = {"a folder": "{tmp}", "a missing folder": "{tmp}/missing/x{suffix}", "an unwritable place": "/proc/x{suffix}",
