@@ -67,8 +67,9 @@ POOL = textwrap.dedent("""
     from stickslip.files import die_with_parent
 
     def work(_):
-        import os
-        print(os.getpid(), flush=True)
+        import os, sys
+        sys.stdout.write(f"{os.getpid()}\n")  # one write: two workers' lines cannot interleave
+        sys.stdout.flush()
         time.sleep(60)
 
     if __name__ == "__main__":
