@@ -68,7 +68,7 @@ POOL = textwrap.dedent("""
 
     def work(_):
         import os, sys
-        sys.stdout.write(f"{os.getpid()}\n")  # one write: two workers' lines cannot interleave
+        sys.stdout.write(f"{os.getpid()}\\n")  # one write: two workers' lines cannot interleave
         sys.stdout.flush()
         time.sleep(60)
 
