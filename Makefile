@@ -33,8 +33,17 @@ test-all: $(STAMP)
 bench: $(STAMP)
 	for b in $(filter-out benchmarks/timing.py,$(wildcard benchmarks/*.py)); do echo "== $$b"; $(BIN)/python $$b || exit 1; done
 
-docs: $(STAMP)
+# docs/errata.md regenerated from the package, then the HTML (Markdown docs and the API
+# reference from the docstrings) in build/docs/html; a warning fails the build
+DOCS_STAMP := $(VENV)/.stickslip-docs-installed
+
+$(DOCS_STAMP): $(STAMP)
+	$(BIN)/python -m pip install --quiet -e '.[test,docs]'
+	touch $(DOCS_STAMP)
+
+docs: $(DOCS_STAMP)
 	$(BIN)/python -m stickslip.errata > docs/errata.md
+	$(BIN)/python -m sphinx -M html docs build/docs -W --keep-going -q
 
 clean:
 	rm -rf $(VENV) results .pytest_cache

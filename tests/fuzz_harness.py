@@ -51,7 +51,8 @@ BASE = {
     "brake continue": ["--omega", "50", "--mismatch", "1e-5", "--friction", "0.7", "--modes", "4", "--stop", "9e-6",
                        "--points", "3", "--out", "{tmp}/b.nc"],
     "brake map": ["--out", "{tmp}/w.zarr", "--frictions", "0.2:0.7:2", "--mismatches", "1e-5:1e-4:2", "--workers", "1"],
-    "brake fem": BRAKE + ["--n-theta", "16", "--n-r", "1", "--transits", "1", "--out", "{tmp}/f.nc"],
+    "brake fem": BRAKE + ["--n-theta", "16", "--n-r", "1", "--transits", "1", "--out", "{tmp}/f.nc", "--xdmf",
+                          "{tmp}/f.xdmf"],
     "brake campaign": ["--out", "{tmp}/c", "--seeds", "1"],
     "halfspace inverse": ["--b", "2", "--c", "-0.7", "--v-star", "0.001"],
     "halfspace direct": ["--T", "9.52e-4", "--v", "3.514e-3", "--v-star", "0.001"],
@@ -98,7 +99,7 @@ PATH_OPTIONS = options_typed(pathlib.Path)
 #: place nobody can create files in, root included (a read-only folder is writable by root).
 BAD_PATHS = {"a folder": "{tmp}", "a missing folder": "{tmp}/missing/x{suffix}", "an unwritable place": "/proc/x{suffix}",
              "under a file": "{tmp}/file/x{suffix}", "another suffix": "{tmp}/x.txt"}
-_SUFFIX = {"--plot": ".png", "--checkpoint": ".nc", "--out": ".nc", "--export": ""}
+_SUFFIX = {"--plot": ".png", "--checkpoint": ".nc", "--out": ".nc", "--export": "", "--xdmf": ".xdmf"}
 #: Options that name a folder to create (any name, parents made): only unwritable places are bad.
 FOLDERS = {("brake campaign", "--out"), ("brake campaign", "--export"), ("reproduce", "--out")}
 
@@ -217,7 +218,7 @@ def json_finite(text: str) -> bool:
 
 
 def files_finite(folder) -> list[str]:
-    """Files under ``folder`` (netCDF, Zarr, CSV, JSON) holding a non-finite number that
+    """Files under ``folder`` (netCDF, Zarr, XDMF, CSV, JSON) holding a non-finite number that
     their metadata does not explain (a variable may hold NaN if its ``comment`` says where)."""
 
     import xarray as xr
@@ -233,6 +234,16 @@ def files_finite(folder) -> list[str]:
                     if values.dtype.kind == "f" and not np.isfinite(values).all():
                         if "NaN" not in var.attrs.get("comment", ""):
                             bad.append(f"{path.name}:{name}")
+        elif path.suffix == ".xdmf" and path.is_file():  # ParaView output: every array of every time step
+            import meshio
+
+            with meshio.xdmf.TimeSeriesReader(path) as reader:
+                arrays = list(reader.read_points_cells()[:1])
+                for k in range(reader.num_steps):
+                    t, point_data, cell_data = reader.read_data(k)
+                    arrays += [np.asarray(t), *point_data.values(), *(a for v in cell_data.values() for a in v)]
+            if not all(np.isfinite(a).all() for a in arrays):
+                bad.append(path.name)
         elif path.suffix == ".json" and path.is_file():
             if not json_finite(path.read_text()):
                 bad.append(path.name)

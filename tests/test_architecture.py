@@ -15,11 +15,13 @@ SRC = ROOT / "src"
 PACKAGE = SRC / "stickslip"
 
 #: Top-level parts of the package and what each may import (besides itself).
-BASE = {"errors", "validation"}
+BASE = {"errors", "validation", "cf", "vocabulary"}
 MODELS = {"oscillator", "brake", "halfspace"}
 ALLOWED = {
     "errors": set(),
     "validation": {"errors"},
+    "vocabulary": set(),
+    "cf": {"vocabulary", "__init__"},
     "friction": BASE,
     "files": BASE,
     "contact": BASE | {"files"},

@@ -49,6 +49,18 @@ def test_halfspace_tutorial_runs(tmp_path, monkeypatch):
     assert namespace["f"].slip_residual < 1e-10
 
 
+def test_fem_tutorial_runs(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    namespace = {}
+    for block in _blocks("docs/tutorial-fem.md"):
+        exec(block, namespace)
+    assert namespace["steady"].errors()["p"] < 1e-3 and namespace["rates"].growth_rate.max() > 0
+    assert namespace["regime"].regime == "stick-slip" and namespace["regime"].n_zones == 7
+    assert not namespace["partial"].complete and namespace["resumed"].complete
+    assert (namespace["resumed"].U == namespace["whole"].U).all() and round(namespace["longer"].transits) == 150
+    assert "checkpoint" in str(namespace["refused"]) and (tmp_path / "fem.nc").exists()
+
+
 def test_readme_command_lines_use_only_options_their_commands_have():
     """Each `stickslip ...` line of the README names a command that exists and only its options
     (a line once showed `brake steady --omega`, which the command does not take)."""

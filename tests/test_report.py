@@ -64,3 +64,14 @@ def test_unreproduced_claims_are_findings_not_failures(tmp_path):
     assert "**not reproduced**" in text and "0 of 1 marked claims" in text
     failing = Summary(tmp_path, True, [FigureOutcome(spec, [Check("numerics", False, "2", "1")], 0.0, False, "x.png")])
     assert not failing.passed and "**FAIL**" in markdown_report(failing)
+
+
+@pytest.mark.slow
+def test_every_file_of_reproduce_quick_follows_the_cf_rules(tmp_path):
+    """The whole quick report (about 4 minutes): every data file it writes passes `cf_rules`."""
+    from .cf_rules import file_problems
+
+    assert run(["reproduce", "--out", str(tmp_path), "--quick"]) in (0, 1)
+    files = sorted((tmp_path / "data").glob("*.nc"))
+    assert len(files) == len({s.data_from or s.key for s in registry().values()})
+    assert [p for f in files for p in file_problems(f)] == []

@@ -139,6 +139,31 @@ def test_a_store_killed_between_its_data_and_its_checksum_resumes(tmp_path):
 
 def test_axes_that_differ_in_the_last_digit_are_another_sweep(tmp_path):
     store = _store(tmp_path)
-    with pytest.raises(ParameterError, match="same axes"):
+    with pytest.raises(ParameterError, match="same producer, axes"):
         run_sweep(_plain, {"x": [1, 2, 3 + 1e-9], "y": [10, 20]}, store, outputs={"sum": "1", "product": "1"},
                   scheduler="synchronous")
+
+
+def _other(x, y):
+    return {"sum": x + y, "product": x * y}
+
+
+def test_a_store_of_another_computation_or_version_is_refused(tmp_path):
+    """Another point function (another command), another stickslip version, or the same fixed
+    parameters less one: each is another computation, refused in one line."""
+    import zarr
+
+    store = tmp_path / "s.zarr"
+    axes, outputs = {"x": [1, 2], "y": [10]}, {"sum": "1", "product": "1"}
+    run_sweep(_other, axes, store, outputs=outputs, scheduler="synchronous", attrs={"omega": 50.0, "n": 4})
+    with pytest.raises(ParameterError, match="same producer"):
+        run_sweep(_square, axes, store, outputs=outputs, scheduler="synchronous", attrs={"omega": 50.0, "n": 4})
+    with pytest.raises(ParameterError, match="same producer"):
+        run_sweep(_other, axes, store, outputs=outputs, scheduler="synchronous", attrs={"omega": 50.0})
+    group = zarr.open_group(str(store), mode="r+", use_consolidated=False)
+    group.attrs["source"] = "stickslip 0.0.9"
+    with pytest.raises(ParameterError, match="written by stickslip"):
+        run_sweep(_other, axes, store, outputs=outputs, scheduler="synchronous", attrs={"omega": 50.0, "n": 4})
+    again = run_sweep(_other, axes, store, outputs=outputs, scheduler="synchronous", attrs={"omega": 50.0, "n": 4},
+                      overwrite=True)
+    assert again["done"].all() and again.attrs["source"].startswith("stickslip ")

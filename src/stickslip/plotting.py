@@ -13,8 +13,8 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
 __all__ = ["new_figure", "save", "modal_line", "oscillator_phase", "state_image", "state_legend", "zone_legend",
-           "plot_cycle", "plot_trajectory", "plot_branch", "plot_oscillator_map", "plot_interface_fields",
-           "MODE_COLOURS", "STATE_COLOURS", "ZONE_COLOURS"]
+           "mode_handles", "legend_beside", "legend_above", "wrap", "plot_cycle", "plot_trajectory", "plot_branch", "plot_oscillator_map", "plot_interface_fields",
+           "legibility_problems", "MODE_COLOURS", "STATE_COLOURS", "ZONE_COLOURS"]
 
 MODE_COLOURS = {-1: "tab:red", 0: "tab:green", 1: "tab:blue"}
 MODE_LABELS = {-1: "reverse slip", 0: "stick", 1: "slip"}
@@ -22,6 +22,9 @@ MODE_LABELS = {-1: "reverse slip", 0: "stick", 1: "slip"}
 STATE_COLOURS = ("#1b9e77", "#d95f02", "#7570b3", "#e7e7e7")
 #: Colours of the zones of a travelling wave.
 ZONE_COLOURS = {"stick": "tab:green", "slip": "tab:blue", "reverse-slip": "tab:red", "separation": "tab:orange"}
+#: Units of the oscillator's parameters (axes of maps and branches), where the data give none.
+PARAMETER_UNITS = {"mass": "kg", "stiffness": "N/m", "normal_force": "N", "belt_speed": "m/s", "damping": "N s/m",
+                   "fs": "1", "fd": "1", "vs": "m/s", "tau": "s/m"}
 
 
 def new_figure(fig: Figure | None = None, ncols: int = 1, nrows: int = 1, size=(6.4, 4.8)):
@@ -33,10 +36,95 @@ def new_figure(fig: Figure | None = None, ncols: int = 1, nrows: int = 1, size=(
     return fig, list(axes.ravel())
 
 
-def save(fig: Figure, path, dpi: int = 120) -> None:
-    """Lay out and write ``fig`` (the format from the suffix of ``path``)."""
+def save(fig: Figure, path, dpi: int = 120) -> list[str]:
+    """Lay out and write ``fig`` (the format from the suffix of ``path``); return its
+    `legibility_problems` (empty: legible)."""
     fig.tight_layout()
+    problems = legibility_problems(fig)
     fig.savefig(path, dpi=dpi)
+    return problems
+
+
+def legend_beside(ax, *args, **kwargs):
+    """A legend to the right of ``ax``, off its data (the layout makes room for it)."""
+    return ax.legend(*args, **{"fontsize": 8, "loc": "upper left", "bbox_to_anchor": (1.02, 1.0),
+                               "borderaxespad": 0.0, **kwargs})
+
+
+def legend_above(ax, *args, **kwargs):
+    """A legend over ``ax`` in one row (by default), off its data: ``ax`` has no title then."""
+    handles = args[0] if args else kwargs.get("handles")
+    ncol = len(handles) if handles is not None else len(ax.get_legend_handles_labels()[0])
+    return ax.legend(*args, **{"fontsize": 8, "loc": "lower center", "bbox_to_anchor": (0.5, 1.02),
+                               "borderaxespad": 0.0, "ncol": max(ncol, 1), **kwargs})
+
+
+def wrap(text: str, width: int = 90) -> str:
+    """``text`` broken into lines of at most ``width`` characters (titles that must fit the figure)."""
+    import textwrap
+
+    return "\n".join(textwrap.fill(line, width) for line in text.split("\n"))
+
+
+def label_curves(ax, curves, labels, fontsize: float = 8.0, shrink: float = 0.8) -> None:
+    """Write ``labels[k]`` next to ``curves[k]`` (``(x, y)`` arrays in data units) off every curve.
+
+    The candidate spots are just above the top, right of the rightmost point, below the bottom
+    and left of the leftmost point of the curve; the first (in that order) whose text box holds
+    no point of any curve, no other label and stays inside the axes is taken, else the least
+    covered. Call it after the limits are final. Text sizes are estimated before the layout,
+    on axes ``shrink`` times their current size (a margin for the layout to come)."""
+    fig = ax.figure
+    pos = ax.get_position()
+    width, height = pos.width * fig.get_figwidth() * shrink, pos.height * fig.get_figheight() * shrink
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+
+    def inches(x, y):
+        return (np.asarray(x, float) - x0) / (x1 - x0) * width, (np.asarray(y, float) - y0) / (y1 - y0) * height
+
+    pts = []
+    for x, y in curves:
+        x, y = np.append(x, x[0]), np.append(y, y[0])  # closed orbits: the closing chord too
+        px, py = inches(x, y)
+        t = np.linspace(0.0, 1.0, 8)[:, None]
+        pts.append(np.column_stack([(px[:-1] + t * np.diff(px)).ravel(), (py[:-1] + t * np.diff(py)).ravel()]))
+    pts = np.concatenate(pts) if pts else np.zeros((0, 2))
+    pts = pts[np.isfinite(pts).all(axis=1)]
+    taken = []
+    gap = 3.0 / 72  # clear of the curve (and of the margin of `legibility_problems`)
+    for (x, y), text in zip(curves, labels):
+        ok = np.isfinite(x) & np.isfinite(y)
+        x, y = np.asarray(x, float)[ok], np.asarray(y, float)[ok]
+        w = 0.62 * fontsize * max(len(line) for line in text.split("\n")) / 72
+        h = 1.3 * fontsize * (text.count("\n") + 1) / 72
+        spots = []
+        top, right = y >= y.max() - 1e-3 * np.ptp(y), x >= x.max() - 1e-3 * np.ptp(x)
+        bottom, left = y <= y.min() + 1e-3 * np.ptp(y), x <= x.min() + 1e-3 * np.ptp(x)
+        for sel, along, (dx, dy), ha, va in ((top, "x", (0, gap), "center", "bottom"),
+                                             (right, "y", (gap, 0), "left", "center"),
+                                             (bottom, "x", (0, -gap), "center", "top"),
+                                             (left, "y", (-gap, 0), "right", "center")):
+            ax_ = float(np.mean(x[sel])) if along == "x" else float(x[sel][0])
+            ay_ = float(np.mean(y[sel])) if along == "y" else float(y[sel][0])
+            cx, cy = inches(ax_, ay_)
+            cx, cy = float(cx) + dx, float(cy) + dy
+            bx0 = cx - w / 2 if ha == "center" else (cx if ha == "left" else cx - w)
+            by0 = cy - h / 2 if va == "center" else (cy if va == "bottom" else cy - h)
+            box = (bx0, by0, bx0 + w, by0 + h)
+            inside = np.count_nonzero((pts[:, 0] >= box[0]) & (pts[:, 0] <= box[2]) & (pts[:, 1] >= box[1])
+                                      & (pts[:, 1] <= box[3]))
+            clash = sum(min(box[2], b[2]) > max(box[0], b[0]) and min(box[3], b[3]) > max(box[1], b[1])
+                        for b in taken)
+            out = box[0] < 0 or box[1] < 0 or box[2] > width or box[3] > height
+            spots.append((inside + 1000 * (clash + out), len(spots), (ax_, ay_), (dx * 72, dy * 72), ha, va, box))
+        score, _, xy, offset, ha, va, box = min(spots)
+        taken.append(box)
+        ax.annotate(text, xy, xytext=offset, textcoords="offset points", ha=ha, va=va, fontsize=fontsize)
+
+
+def mode_handles(modes=(0, 1, -1)) -> list:
+    """Legend handles of the contact-mode colours of `modal_line`."""
+    return [Line2D([], [], color=MODE_COLOURS[m], label=MODE_LABELS[m]) for m in modes]
 
 
 def modal_line(ax, x, y, mode, lw=1.2, alpha=1.0):
@@ -60,14 +148,15 @@ def oscillator_phase(ax, ds, title: str | None = None) -> None:
     ax.axhline(ds.attrs.get("belt_speed_m_per_s", np.nan), color="0.6", lw=0.6, ls=":")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("dx/dt [m/s]")
-    handles = [Line2D([], [], color=c, label=MODE_LABELS[m]) for m, c in MODE_COLOURS.items()]
-    ax.legend(handles=handles, loc="lower right", fontsize=8)
+    handles = mode_handles() + [Line2D([], [], color="0.6", lw=0.6, ls=":", label="belt speed")]
+    legend_beside(ax, handles=handles)
     if title:
         ax.set_title(title)
 
 
 def state_image(ax, state, title: str = "", extent=(0, 2 * np.pi, 0, 2)):
-    """Contact-node states (rows: times, columns: nodes along the contact line) as an image."""
+    """Contact-node states (rows: times, columns: nodes along the contact line) as an image
+    (explain its colours with `state_legend`)."""
     from matplotlib.colors import ListedColormap
 
     im = ax.imshow(state, aspect="auto", origin="lower", cmap=ListedColormap(STATE_COLOURS), vmin=-0.5, vmax=3.5,
@@ -79,17 +168,21 @@ def state_image(ax, state, title: str = "", extent=(0, 2 * np.pi, 0, 2)):
 
 
 def state_legend(ax, **kwargs) -> None:
-    """A legend of the four contact-node states."""
+    """A legend of the four contact-node states (by default beside ``ax``, off its image)."""
     from matplotlib.patches import Patch
 
     names = ("stick", "slip", "reverse slip", "separation")
-    ax.legend(handles=[Patch(color=c, label=n) for c, n in zip(STATE_COLOURS, names)], **{"fontsize": 7, **kwargs})
+    handles = [Patch(facecolor=c, edgecolor="0.5", lw=0.5, label=n) for c, n in zip(STATE_COLOURS, names)]
+    legend_beside(ax, handles=handles, **{"title": "node state", "title_fontsize": 8, **kwargs})
 
 
-def zone_legend(ax, **kwargs) -> None:
-    """A legend of the zone kinds of a travelling wave."""
-    ax.legend([Line2D([], [], color=c) for c in ZONE_COLOURS.values()], list(ZONE_COLOURS),
-              **{"fontsize": 7, "loc": "best", **kwargs})
+def zone_legend(ax, kinds=None, marker=None, **kwargs) -> None:
+    """A legend of the zone kinds of a travelling wave (``kinds``: those shown, default all;
+    ``marker``: zones drawn as markers rather than lines)."""
+    kinds = [k for k in ZONE_COLOURS if kinds is None or k in kinds]
+    style = {"ls": "none", "marker": marker, "ms": 5} if marker else {}
+    ax.legend([Line2D([], [], color=ZONE_COLOURS[k], **style) for k in kinds], kinds,
+              **{"fontsize": 8, "loc": "best", **kwargs})
 
 
 def plot_cycle(ds, fig: Figure | None = None) -> Figure:
@@ -106,7 +199,7 @@ def plot_trajectory(ds, fig: Figure | None = None) -> Figure:
     fig, (ax1, ax2) = new_figure(fig, 2, size=(5.5, 4.2))
     oscillator_phase(ax1, ds, "phase portrait")
     modal_line(ax2, ds["t"].values, ds["x"].values, ds["mode"].values)
-    ax2.set(xlabel="t [s]", ylabel="x [m]")
+    ax2.set(xlabel="t [s]", ylabel="x [m]", title="displacement (colours as in the phase portrait)")
     return fig
 
 
@@ -115,22 +208,40 @@ def plot_branch(ds, fig: Figure | None = None) -> Figure:
     fig, axes = new_figure(fig, 2, size=(5.5, 4.2))
     p = ds["parameter_value"].values
     stable = ds["stable"].values.astype(bool)
-    for ax, name in zip(axes, ("amplitude", "period")):
-        ax.plot(p, ds[name], color="0.7", lw=0.8)
-        ax.plot(p[stable], ds[name].values[stable], "o", ms=3, label="stable")
-        ax.plot(p[~stable], ds[name].values[~stable], "x", ms=3, label="unstable")
-        ax.set(xlabel=str(ds.attrs.get("continuation_parameter", "parameter")), ylabel=f"{name} [{ds[name].attrs['units']}]")
-        ax.legend()
+    name = str(ds.attrs.get("continuation_parameter", "parameter"))
+    units = ds["parameter_value"].attrs.get("units") or PARAMETER_UNITS.get(name, "1")
+    for ax, key in zip(axes, ("amplitude", "period")):
+        ax.plot(p, ds[key], color="0.7", lw=0.8)
+        ax.plot(p[stable], ds[key].values[stable], "o", color="tab:blue", ms=3, label="stable")
+        ax.plot(p[~stable], ds[key].values[~stable], "x", color="tab:red", ms=3, label="unstable")
+        ax.set(xlabel=f"{name.replace('_', ' ')} [{units}]", ylabel=f"{key} [{ds[key].attrs.get('units', '1')}]")
+    legend_beside(axes[-1])
     return fig
 
 
 def plot_oscillator_map(ds, regimes: dict, fig: Figure | None = None) -> Figure:
     """A regime map of the oscillator over its two sweep axes (``regime`` codes named by ``regimes``)."""
-    fig, (ax,) = new_figure(fig)
+    from matplotlib.colors import BoundaryNorm, ListedColormap
+
+    fig, (ax,) = new_figure(fig, size=(8.4, 5.2))
     names = [d for d in ds["regime"].dims]
-    mesh = ax.pcolormesh(ds[names[0]], ds[names[1]], ds["regime"].values.T, shading="nearest", vmin=0, vmax=4)
-    fig.colorbar(mesh, ax=ax, label="; ".join(f"{k} {v}" for k, v in regimes.items()))
-    ax.set(xlabel=names[0], ylabel=names[1])
+    codes = sorted(int(k) for k in regimes)
+    # one colour per category (code k is the interval k +- 1/2), a labelled colour-bar tick each
+    palette = ["#9ecae1", "#fdae6b", "#e6550d", "#74c476", "#bbbbbb", "#9e9ac8", "#fdd0a2", "#31a354"]
+    cmap = ListedColormap([palette[i % len(palette)] for i in range(len(codes))])
+    bounds = np.concatenate([[codes[0] - 0.5], np.asarray(codes[1:], float) - 0.5, [codes[-1] + 0.5]])
+    mesh = ax.pcolormesh(ds[names[0]], ds[names[1]], ds["regime"].values.T, shading="nearest", cmap=cmap,
+                         norm=BoundaryNorm(bounds, cmap.N))
+    bar = fig.colorbar(mesh, ax=ax, label="regime (white: not computed)")
+    bar.set_ticks([float(k) for k in codes], labels=[wrap(str(regimes[k]), 22) for k in codes])
+    bar.ax.tick_params(labelsize=8, length=0)
+    bar.minorticks_off()
+
+    def label(name):
+        units = ds[name].attrs.get("units") or PARAMETER_UNITS.get(name, "1")
+        return f"{name.replace('_', ' ')} [{units}]"
+
+    ax.set(xlabel=label(names[0]), ylabel=label(names[1]))
     return fig
 
 
@@ -141,19 +252,447 @@ def plot_interface_fields(ds, fig: Figure | None = None) -> Figure:
     x = ds.x.values
     order = np.argsort(x)
     stick = ds.zone.values[order] == 0
-    for ax, names, label in ((axes[0], ("Sigma_yy", "Sigma_xy"), "stress / G"), (axes[1], ("u_xx",), "u_x,x"),
-                             (axes[2], ("slip_velocity", "material_velocity"), "velocity / c2")):
-        for name in names:
-            ax.plot(x[order], ds[name].values[order], lw=1, label=name)
+    for ax, names, label in ((axes[0], ("Sigma_yy", "Sigma_xy"), "stress / G [1]"), (axes[1], ("u_xx",), "u_x,x [1]"),
+                             (axes[2], ("slip_velocity", "material_velocity"), "velocity / c2 [1]")):
         finite = np.concatenate([ds[n].values[np.isfinite(ds[n].values)] for n in names])
         lo, hi = np.percentile(finite, [1, 99])
         pad = 0.3 * (hi - lo + 1e-30)
-        ax.set_ylim(lo - pad, hi + pad)
+        lo, hi = lo - pad, hi + pad
+        clipped = bool(np.any((finite < lo) | (finite > hi)))
+        for name in names:
+            ax.plot(x[order], ds[name].values[order], lw=1, label=name, gid=CLIPPED if clipped else None)
+        ax.set_ylim(lo, hi)
         ax.set_ylabel(label)
-        ax.legend(fontsize=8, loc="lower right")
+        legend_beside(ax, title="clipped at the singularities" if clipped else None, title_fontsize=7)
         ax.fill_between(x[order], 0, 1, where=stick, transform=ax.get_xaxis_transform(), color="0.9", lw=0)
-    axes[-1].set_xlabel("x / a  (grey: stick)")
+    axes[-1].set_xlabel("x / a [1]  (grey: stick)")
     a = ds.attrs
     axes[0].set_title(f"c = {a.get('c', float('nan')):.3g}, b = {a.get('b', float('nan')):.4g}, "
                       f"v = {a.get('v', float('nan')):.3g}, T = {a.get('T', float('nan')):.3g}")
     return fig
+
+
+# --- legibility ------------------------------------------------------------------------------
+#: Rules and thresholds of `legibility_problems`, fixed before any figure was measured.
+MIN_FONT_PT = 7.0
+#: Width of the report's column (``max-width: 70em`` at 16 px = 1120 CSS px = 11.67 in): a wider
+#: figure is shrunk to it, and so are its texts.
+REPORT_WIDTH_IN = 1120 / 96
+#: Two text boxes overlap when they intersect by more than this (points) in both directions.
+OVERLAP_PT = 1.0
+#: Length of data curve (points) a legend or a text may cover: a curve grazing a corner, no more;
+#: the boxes are grown by `COVER_PAD_PT` first (a text touching a curve sits on it).
+COVER_PT = 2.0
+COVER_PAD_PT = 1.5
+#: A colour map of at most this many colours codes categories (it needs a legend of them).
+CATEGORICAL_COLOURS = 16
+#: A unit in an axis label: in square brackets, ``[m/s]``, ``[rad]``, ``[1]`` for a pure number.
+UNIT = r"\[[^\]]*\S[^\]]*\]"
+#: The ``gid`` of a line clipped on purpose (a singularity); the figure must say "clipped".
+CLIPPED = "clipped"
+
+
+def legibility_problems(fig: Figure, width_in: float | None = REPORT_WIDTH_IN) -> list[str]:
+    """What makes ``fig`` hard to read at 100 %, as it is laid out now (call after the layout).
+
+    The rules (thresholds in the module constants, chosen before measuring any figure):
+
+    * every visible, non-empty text is at least `MIN_FONT_PT` points as shown in a column
+      ``width_in`` inches wide (the report's, `REPORT_WIDTH_IN`): a wider figure is shrunk to
+      the column, and its texts with it (``width_in=None``: the figure's own size);
+    * every axes with data has an x and a y label with a unit in square brackets (`UNIT`);
+      a categorical axis (text tick labels) needs a label but no unit, an axis shared with a
+      labelled one and showing no tick labels needs neither; a colour bar's long axis is
+      labelled likewise;
+    * titles, axis labels, tick labels, texts and legends do not overlap each other (by more
+      than `OVERLAP_PT` both ways) and lie inside the figure; texts in an axes lie inside it;
+    * legends and texts do not cover data: at most `COVER_PT` points of data curve and no
+      marker inside their boxes grown by `COVER_PAD_PT`; a legend does not lie on an image or
+      a bar (a text on a cell of an image is a cell label);
+    * data curves do not run off the axes: no finite vertex outside the view limits (or
+      ``<= 0`` on a log axis), unless the line's gid is `CLIPPED` and a text of the figure says so;
+    * colour codes are explained: every colour of a categorical image or mesh (colour map of
+      at most `CATEGORICAL_COLOURS` colours) is in a legend, or its colour bar has a text tick
+      per category; a continuous one has a colour bar; where data lines or bars of an axes
+      have two or more colours (not black or grey), each is in a legend of the figure.
+    """
+    import re
+
+    fig.draw_without_rendering()
+    scale = 72.0 / fig.dpi  # display pixels -> points
+    shrink = min(1.0, width_in / fig.get_figwidth()) if width_in else 1.0
+    problems: list[str] = []
+
+    def small(text):
+        return text.get_fontsize() * shrink < MIN_FONT_PT - 1e-9
+
+    def size(text):
+        shown = f", {text.get_fontsize() * shrink:.1f} pt in the report" if shrink < 1 else ""
+        return f"{text.get_fontsize():g} pt{shown} (< {MIN_FONT_PT:g} pt)"
+
+    axes = _all_axes(fig)
+    names = {ax: _axes_name(ax, i) for i, ax in enumerate(axes)}
+
+    # texts: font sizes, boxes
+    boxes = []  # (description, bbox, inside-axes or None)
+    for text, where, inside in _texts(fig, axes, names):
+        if small(text):
+            problems.append(f"{where}: text {_quote(text)} is {size(text)}")
+        boxes.append((f"{where} {_quote(text)}", text.get_window_extent(), inside))
+    for legend, where in _legends(fig, axes, names):
+        for text in [*legend.get_texts(), legend.get_title()]:
+            if _shown(text) and small(text):
+                problems.append(f"{where}: legend text {_quote(text)} is {size(text)}")
+        boxes.append((where, legend.get_window_extent(), None))
+    tol = OVERLAP_PT / scale
+    page = fig.bbox
+    for k, (what, box, inside) in enumerate(boxes):
+        if box.x0 < page.x0 - tol or box.y0 < page.y0 - tol or box.x1 > page.x1 + tol or box.y1 > page.y1 + tol:
+            problems.append(f"{what} runs off the figure")
+        if inside is not None:
+            a = inside.bbox
+            if box.x0 < a.x0 - tol or box.y0 < a.y0 - tol or box.x1 > a.x1 + tol or box.y1 > a.y1 + tol:
+                problems.append(f"{what} runs over the frame of its axes")
+        for other, obox, _ in boxes[k + 1:]:
+            w = min(box.x1, obox.x1) - max(box.x0, obox.x0)
+            h = min(box.y1, obox.y1) - max(box.y0, obox.y0)
+            if w > tol and h > tol:
+                problems.append(f"{what} overlaps {other}")
+
+    # labels and units
+    unit = re.compile(UNIT)
+    for ax in axes:
+        cb = getattr(ax, "_colorbar", None)
+        if cb is not None:
+            axis = ax.yaxis if cb.orientation == "vertical" else ax.xaxis
+            problems += _label_problems(axis, f"{names[ax]} colour bar", unit, ax)
+            continue
+        if not ax.axison or not _has_data(ax):
+            continue
+        for axis in (ax.xaxis, ax.yaxis):
+            problems += _label_problems(axis, names[ax], unit, ax)
+
+    # legends and texts over data; curves off the axes
+    pad = COVER_PAD_PT / scale
+    covers = [(where, legend.get_window_extent().padded(pad), True) for legend, where in _legends(fig, axes, names)]
+    covers += [(f"{names[ax]} text {_quote(t)}", t.get_window_extent().padded(pad), False)
+               for ax in axes for t in ax.texts if _shown(t) and not _on_image(ax, t)]
+    said = " ".join(t.get_text() for t, _, _ in _texts(fig, axes, names)).lower()
+    said += " ".join(t.get_text() for legend, _ in _legends(fig, axes, names)
+                     for t in [*legend.get_texts(), legend.get_title()]).lower()
+    for ax in axes:
+        if getattr(ax, "_colorbar", None) is not None:
+            continue
+        curves, points, areas = _data_geometry(ax)
+        for what, box, is_legend in covers:
+            covered = sum(float(np.count_nonzero(_inside(box, c))) for c in curves) * scale
+            if covered > COVER_PT:
+                problems.append(f"{what} covers {covered:.0f} pt of the curves of {names[ax]}")
+            hits = sum(int(np.count_nonzero(_inside(box, p))) for p in points)
+            if hits:
+                problems.append(f"{what} covers {hits} marker(s) of {names[ax]}")
+            if is_legend:
+                for kind, area in areas:
+                    w = min(box.x1, area.x1) - max(box.x0, area.x0)
+                    h = min(box.y1, area.y1) - max(box.y0, area.y0)
+                    if w > tol and h > tol:
+                        problems.append(f"{what} lies on the {kind} of {names[ax]}")
+                        break
+        for line in _data_lines(ax):
+            off = _off_axes(ax, line)
+            if off and not (line.get_gid() == CLIPPED and CLIPPED in said):
+                problems.append(f"{names[ax]}: {off} vertices of the curve {_line_name(line)} lie outside the axes")
+
+    # colour codes
+    legend_colours = _legend_colours(fig, axes)
+    for ax in axes:
+        if getattr(ax, "_colorbar", None) is not None:
+            continue
+        for mappable in [*ax.images, *[c for c in ax.collections if c.get_array() is not None]]:
+            problems += _colour_code_problems(mappable, names[ax], legend_colours)
+        colours = {}
+        for artist in [*_data_lines(ax), *[p for c in ax.containers for p in getattr(c, "patches", [])]]:
+            rgb = _rgb(artist.get_color() if hasattr(artist, "get_color") and not hasattr(artist, "get_facecolor")
+                       else artist.get_facecolor())
+            if rgb is not None and not _neutral(rgb):
+                colours.setdefault(rgb, artist)
+        if len(colours) >= 2:
+            for rgb, artist in colours.items():
+                if not any(_close(rgb, c) for c in legend_colours):
+                    problems.append(f"{names[ax]}: the colour {_hex(rgb)} (of {_line_name(artist)}) is in no legend")
+    return problems
+
+
+def _all_axes(fig):
+    out = []
+
+    def walk(ax):
+        if not ax.get_visible():
+            return
+        out.append(ax)
+        for child in getattr(ax, "child_axes", []):
+            walk(child)
+
+    for ax in fig.axes:
+        walk(ax)
+    return out
+
+
+def _axes_name(ax, i):
+    title = ax.get_title() or ax.get_title("left") or ax.get_ylabel() or ax.get_xlabel()
+    title = title.replace("\n", " ")
+    return f"axes {i + 1}" + (f" ({title[:40]})" if title else "")
+
+
+def _quote(text):
+    s = text.get_text().replace("\n", " ")
+    return repr(s if len(s) <= 40 else s[:37] + "...")
+
+
+def _shown(text):
+    return text.get_visible() and bool(text.get_text().strip())
+
+
+def _drawn_ticks(axis):
+    try:
+        ticks = axis._update_ticks()  # the ticks inside the view (the drawn ones)
+    except Exception:  # pragma: no cover - a future matplotlib
+        ticks = axis.get_major_ticks()
+    return ticks
+
+
+def _texts(fig, axes, names):
+    """``(text, where, axes it must lie in or None)`` for every visible non-empty text but legends'."""
+    for t in fig.texts:
+        if _shown(t):
+            yield t, "figure", None
+    for ax in axes:
+        where = names[ax]
+        for t in (ax.title, ax._left_title, ax._right_title):
+            if _shown(t):
+                yield t, f"{where} title", None
+        for t in ax.texts:
+            if _shown(t):
+                yield t, f"{where} text", ax
+        if not ax.axison:
+            continue
+        for name, axis in (("x", ax.xaxis), ("y", ax.yaxis)):
+            if not axis.get_visible():
+                continue
+            if _shown(axis.label):
+                yield axis.label, f"{where} {name} label", None
+            if _shown(axis.offsetText):
+                yield axis.offsetText, f"{where} {name} offset", None
+            for tick in _drawn_ticks(axis):
+                for t in (tick.label1, tick.label2):
+                    if _shown(t) and t.get_visible():
+                        yield t, f"{where} {name} tick label", None
+
+
+def _legends(fig, axes, names):
+    for legend in fig.legends:
+        if legend.get_visible():
+            yield legend, "figure legend"
+    for ax in axes:
+        legend = ax.get_legend()
+        if legend is not None and legend.get_visible():
+            yield legend, f"{names[ax]} legend"
+
+
+def _numeric(label: str) -> bool:
+    import re
+
+    s = re.sub(r"\\mathdefault|\\times|\\cdot|[${}^\\]", "", label)
+    return bool(re.fullmatch(r"[\s\d.,+\-−×·πe]*", s)) and bool(re.search(r"[\dπ]", s))
+
+
+def _label_problems(axis, where, unit, ax):
+    name = "x" if axis is ax.xaxis else "y"
+    label = axis.get_label_text().strip() if axis.label.get_visible() else ""
+    ticks = [t.label1.get_text() for t in _drawn_ticks(axis) if t.label1.get_visible() and t.label1.get_text().strip()]
+    ticks += [t.label2.get_text() for t in _drawn_ticks(axis) if t.label2.get_visible() and t.label2.get_text().strip()]
+    if not ticks:
+        shared = axis._get_shared_axis() if hasattr(axis, "_get_shared_axis") else [axis]
+        if any(other is not axis and other.get_label_text().strip() for other in shared):
+            return []
+    if not label:
+        return [f"{where}: no {name} label"]
+    categorical = bool(ticks) and not any(_numeric(t) for t in ticks)
+    if not categorical and not unit.search(label):
+        return [f"{where}: the {name} label {label!r} has no unit in square brackets"]
+    return []
+
+
+def _has_data(ax) -> bool:
+    return bool(_data_lines(ax) or ax.images or ax.collections or ax.containers)
+
+
+def _data_lines(ax):
+    out = []
+    for line in ax.lines:
+        if not line.get_visible() or not line.get_transform().contains_branch(ax.transData):
+            continue
+        xy = np.asarray(line.get_xydata(), float)
+        if xy.size and np.isfinite(xy).all(axis=1).any():
+            out.append(line)
+    return out
+
+
+def _line_name(artist) -> str:
+    label = artist.get_label() if hasattr(artist, "get_label") else ""
+    return repr(label) if label and not label.startswith("_") else type(artist).__name__
+
+
+def _data_geometry(ax):
+    """Display geometry of the data of ``ax`` inside its frame: curves sampled every pixel,
+    marker positions, and the boxes of images, meshes and bars."""
+    from matplotlib.collections import LineCollection, PathCollection, QuadMesh
+
+    from matplotlib.transforms import Bbox
+
+    frame = ax.bbox
+    curves, points, areas = [], [], []
+
+    def shown(box):  # the part of an image or a mesh inside the frame (the rest is clipped)
+        return Bbox.intersection(box, frame) or Bbox.from_extents(0, 0, 0, 0)
+
+    for line in _data_lines(ax):
+        xy = line.get_transform().transform(np.asarray(line.get_xydata(), float))
+        if line.get_linestyle() not in ("None", "", " ", "none") and line.get_linewidth() > 0:
+            curves.append(_clip(frame, _sample(xy)))
+        if line.get_marker() not in (None, "None", "", " ", "none"):
+            points.append(_clip(frame, xy[np.isfinite(xy).all(axis=1)]))
+    for coll in ax.collections:
+        if not coll.get_visible():
+            continue
+        if isinstance(coll, PathCollection) and len(coll.get_offsets()):
+            xy = coll.get_offset_transform().transform(np.asarray(coll.get_offsets(), float))
+            points.append(_clip(frame, xy[np.isfinite(xy).all(axis=1)]))
+        elif isinstance(coll, LineCollection):
+            for seg in coll.get_segments():
+                curves.append(_clip(frame, _sample(coll.get_transform().transform(np.asarray(seg, float)))))
+        elif isinstance(coll, QuadMesh):
+            areas.append(("mesh", shown(coll.get_window_extent())))
+    for image in ax.images:
+        if image.get_visible():
+            areas.append(("image", shown(image.get_window_extent())))
+    for container in ax.containers:
+        for patch in getattr(container, "patches", []):
+            if patch.get_visible():
+                areas.append(("bars", patch.get_window_extent()))
+    return curves, points, areas
+
+
+def _sample(xy):
+    """Points every display pixel along a polyline (NaN breaks it)."""
+    out = []
+    ok = np.isfinite(xy).all(axis=1)
+    a, b = xy[:-1], xy[1:]
+    seg = ok[:-1] & ok[1:]
+    a, b = a[seg], b[seg]
+    if not len(a):
+        return xy[ok]
+    n = np.maximum(np.ceil(np.hypot(*(b - a).T)).astype(int), 1)
+    idx = np.repeat(np.arange(len(a)), n)
+    frac = (np.arange(n.sum()) - np.repeat(np.cumsum(n) - n, n)) / np.repeat(n, n)
+    out = a[idx] + (b - a)[idx] * frac[:, None]
+    return out
+
+
+def _clip(frame, xy):
+    return xy[_inside(frame, xy)] if len(xy) else xy
+
+
+def _inside(box, xy):
+    if not len(xy):
+        return np.zeros(0, bool)
+    return (xy[:, 0] >= box.x0) & (xy[:, 0] <= box.x1) & (xy[:, 1] >= box.y0) & (xy[:, 1] <= box.y1)
+
+
+def _on_image(ax, text) -> bool:
+    """A text whose anchor lies on an image or a mesh of ``ax``: a cell label."""
+    from matplotlib.collections import QuadMesh
+
+    x, y = text.get_transform().transform(text.get_unitless_position())
+    areas = [im.get_window_extent() for im in ax.images]
+    areas += [c.get_window_extent() for c in ax.collections if isinstance(c, QuadMesh)]
+    return any(a.x0 <= x <= a.x1 and a.y0 <= y <= a.y1 for a in areas)
+
+
+def _off_axes(ax, line) -> int:
+    xy = np.asarray(line.get_xydata(), float)
+    xy = xy[np.isfinite(xy).all(axis=1)]
+    bad = np.zeros(len(xy), bool)
+    for k, (lim, log) in enumerate(((ax.get_xlim(), ax.get_xscale() == "log"),
+                                    (ax.get_ylim(), ax.get_yscale() == "log"))):
+        lo, hi = min(lim), max(lim)
+        eps = 1e-9 * (hi - lo)
+        bad |= (xy[:, k] < lo - eps) | (xy[:, k] > hi + eps)
+        if log:
+            bad |= xy[:, k] <= 0
+    return int(bad.sum())
+
+
+def _rgb(colour):
+    """``(r, g, b)`` rounded, of a colour or of the first of an array of colours (None if none)."""
+    from matplotlib.colors import to_rgba
+
+    try:
+        r, g, b, _ = to_rgba(colour)
+    except (ValueError, TypeError):
+        c = np.asarray(colour, float)
+        if c.ndim != 2 or not len(c):
+            return None
+        r, g, b, _ = to_rgba(c[0])
+    return (round(r, 3), round(g, 3), round(b, 3))
+
+
+def _neutral(rgb) -> bool:
+    return max(rgb) - min(rgb) < 0.02
+
+
+def _close(a, b, tol=0.02) -> bool:
+    return max(abs(x - y) for x, y in zip(a, b)) <= tol
+
+
+def _hex(rgb) -> str:
+    return "#" + "".join(f"{int(round(255 * c)):02x}" for c in rgb)
+
+
+def _legend_colours(fig, axes):
+    out = []
+    for legend, _ in _legends(fig, axes, {ax: "" for ax in axes}):
+        for handle in legend.legend_handles:
+            if handle is None:
+                continue
+            for getter in ("get_color", "get_markerfacecolor", "get_facecolor", "get_edgecolor"):
+                if hasattr(handle, getter):
+                    rgb = _rgb(getattr(handle, getter)())
+                    if rgb is not None:
+                        out.append(rgb)
+    return out
+
+
+def _colour_code_problems(mappable, where, legend_colours):
+    values = np.ma.masked_invalid(np.ma.asarray(mappable.get_array(), float)).compressed()
+    if not values.size:
+        return []
+    cmap = mappable.get_cmap()
+    colorbar = getattr(mappable, "colorbar", None)
+    if cmap.N > CATEGORICAL_COLOURS:
+        return [] if colorbar is not None else [f"{where}: a colour map without a colour bar"]
+    if colorbar is not None:
+        axis = colorbar.ax.yaxis if colorbar.orientation == "vertical" else colorbar.ax.xaxis
+        ticks = [t.label1.get_text() for t in _drawn_ticks(axis) if _shown(t.label1)]
+        ticks += [t.label2.get_text() for t in _drawn_ticks(axis) if _shown(t.label2)]
+        if len(ticks) >= len(np.unique(values)) and not any(_numeric(t) for t in ticks):
+            return []
+    missing = []
+    for value in np.unique(values):
+        rgb = _rgb(cmap(mappable.norm(value)))
+        if not any(_close(rgb, c) for c in legend_colours):
+            missing.append(f"{value:g} ({_hex(rgb)})")
+    if missing:
+        return [f"{where}: the categories {', '.join(missing)} of a colour code are in no legend "
+                "(nor a colour bar with a text tick per category)"]
+    return []

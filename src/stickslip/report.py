@@ -19,6 +19,7 @@ from pathlib import Path
 
 import xarray as xr
 
+from .cf import finish
 from . import __version__, plotting
 from .errata import ERRATA, to_markdown
 from .errors import ParameterError
@@ -116,7 +117,9 @@ def _load_or_compute(spec: FigureSpec, data_dir: Path, quick: bool, fingerprint:
         cache.mkdir(exist_ok=True)
         options["cache"] = cache
     ds = spec.compute(quick, **options)
+    domain = "oscillator" if spec.model.startswith("1-DOF") else "halfspace" if "half-space" in spec.model else "brake"
     ds.attrs.update({"fingerprint": fingerprint, "quick": int(quick), "figure": spec.key})
+    ds = finish(ds, spec.title, domain, history=f"stickslip reproduce{' --quick' if quick else ''} (figure {spec.key})")
     tmp = path.with_suffix(".nc.partial")
     ds.to_netcdf(tmp)
     os.replace(tmp, path)
@@ -140,8 +143,11 @@ def reproduce(out: Path, *, quick: bool = False, only: str | None = None, force:
         source = registry()[spec.data_from] if spec.data_from else spec
         ds, cached = _load_or_compute(source, data_dir, quick, fingerprint, force and source is spec)
         image = f"{spec.key}.png"
-        plotting.save(spec.plot(ds), out / image)
-        checks = spec.check(ds)
+        problems = plotting.save(spec.plot(ds), out / image)  # the figure's legibility problems
+        checks = spec.check(ds) + [Check(
+            "the figure is legible at 100 % (stickslip.plotting.legibility_problems)", not problems,
+            f"{len(problems)} problem(s)", "none: text >= 7 pt, units on axes, no overlaps, nothing on the data, "
+            "every colour code explained", "; ".join(problems[:8]).replace("|", "/"))]
         summary.outcomes.append(FigureOutcome(spec, checks, time.perf_counter() - start, cached, image))
         write_report(summary)  # keep the report current while the run proceeds
     return summary

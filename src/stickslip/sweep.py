@@ -28,15 +28,21 @@ import xarray as xr
 import zarr
 
 from . import validation as check
+from .cf import SOURCE, finish, flag_attrs, plain_attrs
 from .errors import ParameterError
+from .vocabulary import lookup
 from .files import content_digest, die_with_parent, exclusive
 
-__all__ = ["run_sweep", "verify_store", "SWEEP_FORMAT"]
+__all__ = ["run_sweep", "verify_store", "SWEEP_FORMAT", "NOT_COMPUTED"]
 
 #: The most worker processes a sweep starts.
 MAX_WORKERS = 64
 #: The layout of a sweep store; a store with another layout is refused, not misread.
 SWEEP_FORMAT = "stickslip-sweep-1"
+
+
+#: The code of a point not computed yet, in an output of codes.
+NOT_COMPUTED = -1
 
 
 def _call(func, point: dict, names: Sequence[str]) -> list[float]:
@@ -47,17 +53,36 @@ def _call(func, point: dict, names: Sequence[str]) -> list[float]:
     return [float(result[n]) for n in names]
 
 
-def _create(store: Path, axes: dict, outputs: dict, attrs: dict) -> None:
+def _variable(dims: tuple, shape: tuple, spec) -> tuple:
+    """An output's empty array: NaN floats with ``units``, or integer codes (``{meaning: code}``)."""
+    if isinstance(spec, Mapping):
+        codes = {"not_computed": NOT_COMPUTED, **spec}
+        return dims, np.full(shape, NOT_COMPUTED, np.int8), {**flag_attrs(codes), "comment": (
+            f"{NOT_COMPUTED} where the point is not computed yet (done is 0)")}
+    note = "NaN where the point is not computed yet (done is 0) or the output does not apply to it"
+    return dims, np.full(shape, np.nan), {"units": spec, "comment": note}
+
+
+def _create(store: Path, axes: dict, outputs: dict, attrs: dict, title: str, model: str) -> None:
     shape = tuple(len(v) for v in axes.values())
-    note = "NaN where the point is not computed yet (done is false) or the output does not apply to it"
-    data = {name: (tuple(axes), np.full(shape, np.nan), {"units": units, "comment": note})
-            for name, units in outputs.items()}
-    data["done"] = (tuple(axes), np.zeros(shape, bool), {"long_name": "point computed"})
+    data = {name: _variable(tuple(axes), shape, spec) for name, spec in outputs.items()}
+    for name, (_, _, var_attrs) in data.items():  # named by the vocabulary of the model, else by the output's name
+        var_attrs.setdefault("long_name", (lookup(name, model) or (None, name))[1])
+    data["done"] = (tuple(axes), np.zeros(shape, np.int8), {"units": "1", "long_name": "point computed (1) or not (0)"})
     coords = {k: (k, np.asarray(v, float)) for k, v in axes.items()}
-    xr.Dataset(data, coords=coords, attrs=attrs).to_zarr(store, mode="w", consolidated=False)
-    group = zarr.open_group(str(store), mode="r+")
+    params = plain_attrs(attrs)
+    ds = finish(xr.Dataset(data, coords=coords), title, model, params={**params, "parameters": " ".join(params)})
+    ds.to_zarr(store, mode="w", consolidated=False, zarr_format=2)  # v2: consolidated metadata is standard there
+    group = _group(store, "r+")
     digest = _digest(group)
     group.attrs.update({"sweep_format": SWEEP_FORMAT, "content_sha256": digest, "pending_sha256": digest})
+    zarr.consolidate_metadata(str(store))
+
+
+def _group(store, mode: str):
+    """The store's root group, read from its own metadata (never the consolidated copy, which
+    is refreshed after each batch and may lag behind a killed write)."""
+    return zarr.open_group(str(store), mode=mode, use_consolidated=False)
 
 
 def _digest(group, replace: Mapping | None = None) -> str:
@@ -72,7 +97,7 @@ def verify_store(store) -> None:
     checksum. While a batch is written the store holds either its last or its next content
     (``pending_sha256``): a kill at any point leaves a store that verifies and resumes."""
     try:
-        group = zarr.open_group(str(store), mode="r")
+        group = _group(store, "r")
         found = group.attrs.get("sweep_format")
         digest = _digest(group) if found == SWEEP_FORMAT else None
     except Exception as err:  # noqa: BLE001 - whatever a damaged store makes the decoder raise
@@ -84,6 +109,13 @@ def verify_store(store) -> None:
     if digest not in (group.attrs.get("content_sha256"), group.attrs.get("pending_sha256")):
         raise ParameterError("store", str(store), "an intact sweep store (its content does not match its checksum: "
                              "it was changed or damaged; overwrite it to start afresh)")
+
+
+def _producer(func) -> str:
+    """``module.function`` of the point function (of a `functools.partial`, its function)."""
+    while hasattr(func, "func"):
+        func = func.func
+    return f"{getattr(func, '__module__', '?')}.{getattr(func, '__qualname__', type(func).__name__)}"
 
 
 def _same_value(a, b) -> bool:
@@ -99,16 +131,21 @@ def _matches(store: Path, axes: dict, outputs: dict, attrs: dict) -> bool:
         ds = xr.open_zarr(store, consolidated=False)
     except (OSError, ValueError, KeyError):
         return False
+    attrs = plain_attrs(attrs)
+    if set(str(ds.attrs.get("parameters", "")).split()) != set(attrs):
+        return False
     same_axes = "done" in ds and list(ds["done"].dims) == list(axes) and all(
         ds[k].size == len(v) and np.array_equal(ds[k].values, np.asarray(v, float)) for k, v in axes.items())
     same_attrs = all(k in ds.attrs and _same_value(ds.attrs[k], v) for k, v in attrs.items())
-    return same_axes and same_attrs and all(name in ds for name in outputs)
+    same_source = ds.attrs.get("source") == SOURCE
+    return same_axes and same_attrs and same_source and all(name in ds for name in outputs)
 
 
 def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Sequence[float]], store, *,
               outputs: Mapping[str, str], batch: int = 32, scheduler: str | Callable = "processes",
               progress: Callable[[int, int], None] | None = None, attrs: Mapping | None = None,
-              workers: int | None = None, overwrite: bool = False) -> xr.Dataset:
+              workers: int | None = None, overwrite: bool = False, title: str = "parameter sweep",
+              model: str = "common") -> xr.Dataset:
     """Evaluate ``func`` on a grid, resumably.
 
     Parameters
@@ -122,7 +159,9 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
         ``attrs``, and intact, the sweep resumes, otherwise a `ParameterError` is raised: a
         store computed with other parameters, by another version or damaged is never reused.
     outputs : mapping
-        Output name -> units.
+        Output name -> units (floats, NaN until computed), or -> ``{meaning: code}`` for an
+        output of integer codes (stored as ``int8`` with ``flag_values``/``flag_meanings``;
+        `NOT_COMPUTED` until computed).
     batch : int
         Points per checkpoint.
     scheduler : str or callable
@@ -137,6 +176,9 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
 
     overwrite : bool
         Start afresh, replacing the store, instead of resuming it.
+    title, model : str
+        The store's ``title`` attribute, and the vocabulary of its variables' units and
+        long names (`stickslip.cf.finish`).
 
     Returns
     -------
@@ -150,8 +192,9 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
     if not axes or any(len(v) == 0 for v in axes.values()):
         raise ParameterError("axes", axes, "a mapping of names to non-empty value lists")
     if not isinstance(outputs, Mapping) or not outputs or "done" in outputs or \
-            not all(isinstance(k, str) and isinstance(u, str) for k, u in outputs.items()):
-        raise ParameterError("outputs", outputs, "a non-empty mapping of output names (not 'done') to units")
+            not all(isinstance(k, str) and isinstance(u, (str, Mapping)) for k, u in outputs.items()):
+        raise ParameterError("outputs", outputs, "a non-empty mapping of output names (not 'done') to units "
+                             "or to {meaning: code}")
     outputs = dict(outputs)
     if not isinstance(store, (str, os.PathLike)):
         raise ParameterError("store", store, "a path (str or os.PathLike) of a Zarr directory")
@@ -168,18 +211,20 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
     with exclusive(store, "store"):  # one writer per store
         if overwrite and store.exists():
             shutil.rmtree(store)
-        return _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attrs)
+        return _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attrs, title, model)
 
 
-def _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attrs):
+def _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attrs, title, model):
+    attrs = {**dict(attrs or {}), "producer": _producer(func)}
     if store.exists():
-        if not _matches(store, axes, outputs, dict(attrs or {})):
-            raise ParameterError("store", str(store), "a new path, or a sweep store with the same axes, outputs and "
-                                 "fixed parameters (overwrite it to start afresh)")
+        if not _matches(store, axes, outputs, attrs):
+            raise ParameterError("store", str(store), "a new path, or a sweep store of the same computation (the same "
+                                 f"producer, axes, outputs and fixed parameters, written by {SOURCE}; overwrite it "
+                                 "to start afresh)")
         verify_store(store)
     else:
-        _create(store, axes, outputs, dict(attrs or {}))
-    group = zarr.open_group(str(store), mode="r+")
+        _create(store, axes, outputs, attrs, title, model)
+    group = _group(store, "r+")
     names = list(outputs)
     shape = tuple(len(v) for v in axes.values())
     todo = [idx for idx in itertools.product(*(range(n) for n in shape)) if not group["done"][idx]]
@@ -207,6 +252,7 @@ def _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attr
                 group[name].vindex[where] = new[name][where]
             group["done"].vindex[where] = True  # last: a batch counts only once all outputs are in
             group.attrs["content_sha256"] = group.attrs["pending_sha256"]
+            zarr.consolidate_metadata(str(store))
             finished += len(chunk)
             if progress:
                 progress(finished, total)

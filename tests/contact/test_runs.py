@@ -82,14 +82,14 @@ def test_a_file_that_is_not_a_run_of_this_model_is_refused(model, tmp_path):
 def test_result_dataset_has_units_and_round_trips(model, tmp_path):
     run = model.run(CASE2, 6, snapshot_every=2.0, tail=1.0)
     ds = run.to_xarray()
-    assert ds["U"].dims == ("snapshot", "node") and ds["fraction"].dims == ("sample", "kind")
-    assert ds["t"].attrs["units"] == "1/Omega" and ds["P"].attrs["units"] == model.units_P
+    assert ds["U"].dims == ("snap_t", "theta") and ds["fraction"].dims == ("t", "kind")
+    assert ds["t"].attrs["scale"] == "1/Omega" and ds["P"].attrs["scale"] == model.units_P
     assert list(ds["kind"].values) == ["stick", "slip", "reverse_slip", "separation"]
     assert list(ds["state"].attrs["flag_values"]) == [0, 1, 2, 3]
     assert ds.attrs["physical_omega"] == 50.0 and ds.attrs["complete"] == 1
     assert np.allclose(ds["fraction"].sum("kind"), 1.0)
     tail = run.settings["tail_samples"]  # snapshots: every 2 transits and at every sample of the last one
-    assert tail + 2 <= ds.sizes["snapshot"] <= tail + 3
+    assert tail + 2 <= ds.sizes["snap_t"] <= tail + 3
     assert np.all(np.diff(ds["snap_t"].values[-tail:]) == pytest.approx(run.settings["chunk"] * run.scheme.dt))
     path = tmp_path / "run.nc"
     ds.to_netcdf(path)
@@ -168,3 +168,16 @@ def test_a_checkpoint_in_another_run_format_is_refused(model, tmp_path):
     with pytest.raises(ParameterError) as err:
         model.run(CASE2, 6, checkpoint=path)
     assert err.value.name == "checkpoint" and "stickslip-run-1" in err.value.allowed
+
+
+def test_a_checkpoint_from_another_version_is_refused(model, tmp_path):
+    """The checkpoint records the stickslip version that wrote it; another version's is refused
+    (`test_runs` shows ``overwrite`` starting afresh on any refused checkpoint)."""
+    path = tmp_path / "run.nc"
+    model.run(CASE2, 2, checkpoint=path)
+    ds = xr.load_dataset(path)
+    ds.attrs["source"] = "stickslip 0.0.9"
+    ds.to_netcdf(path)
+    with pytest.raises(ParameterError, match="written by stickslip") as err:
+        model.run(CASE2, 2, checkpoint=path)
+    assert err.value.name == "checkpoint"

@@ -59,9 +59,9 @@ def wave_regime_map(frictions, mismatches, store, *, omega: float = 50.0, modes:
     omega, modes = check.positive("omega", omega), check.positive_int("modes", modes)
     func = functools.partial(_wave_point, dict(material or {}), omega, modes)
     return run_sweep(func, {"friction": list(frictions), "mismatch": list(mismatches)}, store,
-                     outputs={"wave_regime": "1", "waves": "1", "c_over_sqrt_a": "1"},
-                     attrs={"omega": omega, "modes": modes, "codes": repr(REGIME_CODES),
-                            "material": repr(sorted((material or {}).items()))}, **options)
+                     outputs={"wave_regime": REGIME_CODES, "waves": "1", "c_over_sqrt_a": "1"},
+                     attrs={"omega": omega, "modes": modes, "material": dict(material or {})},
+                     title="travelling-wave regimes over friction and mismatch", model="brake", **options)
 
 
 def ring_regime_map(frictions, mismatches, store, *, omega: float = 50.0, nodes: int = 128,
@@ -70,9 +70,8 @@ def ring_regime_map(frictions, mismatches, store, *, omega: float = 50.0, nodes:
     omega, nodes = check.positive("omega", omega), check.positive_int("nodes", nodes)
     transits = check.positive("transits", transits)
     func = functools.partial(_ring_point, dict(material or {}), omega, nodes, transits)
-    outputs = {"ring_regime": "1", "n_fft": "1", **{f"fraction_{k}": "1" for k in
+    outputs = {"ring_regime": REGIME_CODES, "n_fft": "1", **{f"fraction_{k}": "1" for k in
                                                      ("stick", "slip", "reverse_slip", "separation")}}
     return run_sweep(func, {"friction": list(frictions), "mismatch": list(mismatches)}, store, outputs=outputs,
-                     attrs={"omega": omega, "nodes": nodes, "transits": transits, "codes": repr(REGIME_CODES),
-                            "material": repr(sorted((material or {}).items()))},
-                     **options)
+                     attrs={"omega": omega, "nodes": nodes, "transits": transits, "material": dict(material or {})},
+                     title="ring limit regimes over friction and mismatch", model="brake", **options)

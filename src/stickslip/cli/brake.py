@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import functools
+
 from pathlib import Path
 from typing import Annotated, Optional
 
@@ -9,7 +11,9 @@ import typer
 
 from .. import validation as check
 from ..errors import ParameterError
-from .common import Overwrite, emit, output_folder, output_path, progress_bar
+from .common import Overwrite, emit, output_folder, output_path, progress_bar, write_netcdf
+
+_emit = functools.partial(emit, model="brake")  # results are printed with the units of this model
 
 app = typer.Typer(no_args_is_help=True, rich_markup_mode=None, help="Elastic annulus on a rotating shaft: reduced model (paper section 3).")
 
@@ -143,7 +147,7 @@ def coefficients(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, inner_radius:
 
     p = resolve(xi=xi, nu=nu, gamma=gamma, inner_radius=inner_radius, outer_radius=outer_radius, young=young,
                 density=density, omega=omega, need=("xi", "gamma"))
-    emit(compute(p["xi"], p["nu"], p["gamma"]).to_dict(), json, "reduced-model coefficients [13]")
+    _emit(compute(p["xi"], p["nu"], p["gamma"]).to_dict(), json, "reduced-model coefficients [13]")
 
 
 @app.command()
@@ -154,7 +158,7 @@ def steady(xi: Xi = None, nu: Nu = 0.3, delta: Delta = None, friction: Friction 
 
     p = resolve(xi=xi, nu=nu, delta=delta, friction=friction, inner_radius=inner_radius, outer_radius=outer_radius,
                 mismatch=mismatch, need=("xi", "delta"))
-    emit(steady_sliding(p["xi"], p["nu"], p["delta"], p["friction"]).to_dict(), json, "steady sliding")
+    _emit(steady_sliding(p["xi"], p["nu"], p["delta"], p["friction"]).to_dict(), json, "steady sliding")
 
 
 @app.command()
@@ -167,7 +171,7 @@ def stability(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = N
 
     p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
-    emit(growth_rates(p, parse_modes(modes)).to_dict(), json, "linear stability of steady sliding")
+    _emit(growth_rates(p, parse_modes(modes)).to_dict(), json, "linear stability of steady sliding")
 
 
 @app.command("integrate")
@@ -198,8 +202,8 @@ def integrate_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta
 def _report_run(run, classify, out, json, title) -> None:
     """Write a finished ring or FE run if asked, and print its classified limit regime."""
     if out:
-        run.to_xarray().to_netcdf(out)
-    emit(classify(run).to_dict(), json, title)
+        write_netcdf(run.to_xarray(), out)
+    _emit(classify(run).to_dict(), json, title)
 
 
 REGIME_NAMES = ["stick-slip", "stick-slip-separation", "stick-separation", "stick-slip-reverse-slip",
@@ -226,9 +230,9 @@ def wave(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, 
     p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
     result = travelling_wave(p, modes, regime=_regime(regime))
-    emit(result.to_dict(), json, "travelling wave")
+    _emit(result.to_dict(), json, "travelling wave")
     if out:
-        result.to_xarray().to_netcdf(out)
+        write_netcdf(result.to_xarray(), out)
 
 
 @app.command("continue")
@@ -253,9 +257,9 @@ def continue_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta 
     if not json:
         data = {"parameter": data["parameter"], "n": data["n"], "points": len(data["values"]),
                 "c": [min(data["c"]), max(data["c"])], "events": data["events"], "stopped": data["stopped"]}
-    emit(data, json, "wave branch")
+    _emit(data, json, "wave branch")
     if out:
-        branch.to_xarray().to_netcdf(out)
+        write_netcdf(branch.to_xarray(), out)
 
 
 @app.command("map")
@@ -294,7 +298,7 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (directory ending
             ds = ring_regime_map(f, d, out, omega=omega, workers=workers, progress=tick, overwrite=overwrite)
     name = "wave_regime" if kind == "waves" else "ring_regime"
     counts = {k: int((ds[name] == v).sum()) for k, v in REGIME_CODES.items() if int((ds[name] == v).sum())}
-    emit({"store": str(out), "kind": kind, "points": int(ds[name].size), "counts": counts}, json, "regime map")
+    _emit({"store": str(out), "kind": kind, "points": int(ds[name].size), "counts": counts}, json, "regime map")
 
 
 @app.command("fem")
@@ -308,11 +312,24 @@ def fem_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = Non
             mode: Annotated[Optional[int], typer.Option(help="Seed this Fourier mode (default: white noise).")] = None,
             checkpoint: Annotated[Optional[Path], typer.Option(help="Checkpoint file (.nc): resumed if present.")] = None,
             out: Annotated[Optional[Path], typer.Option(help="Write the run to this netCDF file (.nc).")] = None,
+            xdmf: Annotated[Optional[Path], typer.Option(help=(
+                "Write volume snapshots for ParaView to this XDMF file (.xdmf, data in the .h5 of the same name): "
+                "displacement, velocity, stress; contact pressure, shear, traction, state. Lengths in R, stresses "
+                "in E, times Omega t."))] = None,
+            xdmf_every: Annotated[Optional[float], typer.Option(help=(
+                "Interval of the --xdmf snapshots in P-wave transits (> 0; default 1), and the last one."))] = None,
             overwrite: Overwrite = False, json: Json = False):
     """Finite element model of section 3.1 (scikit-fem): run to the limit regime and classify it."""
-    from ..brake.fem import FemScheme, classify_fem, integrate_fem, perturbed_steady
+    from ..brake.fem import FemScheme, classify_fem, integrate_fem, perturbed_steady, write_xdmf
 
     checkpoint, out = output_path("--checkpoint", checkpoint, ".nc"), output_path("--out", out, ".nc")
+    xdmf = output_path("--xdmf", xdmf, ".xdmf")
+    if xdmf is not None:
+        output_path("--xdmf", xdmf.with_suffix(".h5"), ".h5")  # its data file, written beside it
+    if xdmf_every is not None and xdmf is None:
+        raise ParameterError("--xdmf-every", xdmf_every, "given with --xdmf only (it sets the interval of the "
+                             "snapshots --xdmf writes)")
+    volume_every = None if xdmf is None else check.positive("--xdmf-every", 1.0 if xdmf_every is None else xdmf_every)
     p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
     if p.delta == 0:  # checked before the run, not after it
@@ -320,8 +337,15 @@ def fem_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = Non
                              "p_e, which is zero without interference)", also=("mismatch",))
     initial = perturbed_steady(FemScheme(p, n_theta, n_r, beta2), mode=mode)
     with progress_bar("finite elements") as tick:
-        run = integrate_fem(p, n_theta, n_r, transits=transits, beta2=beta2, initial=initial, checkpoint=checkpoint,
-                            progress=tick, overwrite=overwrite)
+        try:
+            run = integrate_fem(p, n_theta, n_r, transits=transits, beta2=beta2, initial=initial,
+                                checkpoint=checkpoint, progress=tick, overwrite=overwrite, volume_every=volume_every)
+        except ParameterError as err:  # the library names the interval volume_every
+            if err.name != "volume_every":
+                raise
+            raise ParameterError("--xdmf-every", volume_every, err.allowed) from None
+    if xdmf is not None:
+        write_xdmf(run, xdmf)
     _report_run(run, classify_fem, out, json, "FE limit regime")
 
 
@@ -364,4 +388,4 @@ def campaign_cmd(
         if export is not None:
             summary[kind]["exported"] = str(campaign_data.export(ds.drop_vars("done"), kind, export,
                                                                  datetime.date.today().isoformat()))
-    emit(summary, json, "FE campaign")
+    _emit(summary, json, "FE campaign")

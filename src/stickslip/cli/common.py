@@ -6,6 +6,8 @@ import contextlib
 import json
 import math
 import os
+import shlex
+import sys
 import tempfile
 from pathlib import Path
 from typing import Annotated
@@ -16,6 +18,7 @@ from rich.console import Console
 from rich.table import Table
 
 from ..errors import NoSolutionError, ParameterError
+from ..vocabulary import lookup
 
 #: ``--overwrite``: start a store or checkpoint afresh instead of resuming it.
 Overwrite = Annotated[bool, typer.Option("--overwrite", help="Start afresh, replacing the store or checkpoint, "
@@ -49,24 +52,85 @@ def non_finite(value, prefix: str = "") -> list[str]:
     return []
 
 
-def emit(data: dict, as_json: bool, title: str) -> None:
-    """Print ``data`` as one JSON object, or as a table for people. A result with a NaN or an
-    infinity is not printed: it is a `NoSolutionError` naming the fields (exit code 1)."""
+def _number(value) -> str:
+    """A number for people: 6 significant digits, integers as they are."""
+    if isinstance(value, bool) or value is None:
+        return str(value).lower() if isinstance(value, bool) else "-"
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        return f"{value:.6g}"
+    if isinstance(value, list):
+        return "[" + ", ".join(_number(v) for v in value) + "]" if len(value) <= 8 else f"[{len(value)} items]"
+    return str(value)
+
+
+def _units(key: str, model: str) -> tuple[str, str]:
+    found = lookup(key.split(".")[-1], model)
+    return found if found is not None else ("", "")
+
+
+def _rows(data: dict, prefix: str = ""):
+    """``(key, value)`` rows of a nested result; lists of records are yielded whole."""
+    for key, value in data.items():
+        name = f"{prefix}{key}"
+        if isinstance(value, dict):
+            yield from _rows(value, f"{name}.")
+        else:
+            yield name, value
+
+
+def emit(data: dict, as_json: bool, title: str, model: str = "common") -> None:
+    """Print ``data`` as one JSON object on stdout (with ``units``: the units and meaning of
+    each key that has them), or as tables for people (value, units, meaning; 6 significant
+    digits). A result with a NaN or an infinity is not printed: it is a `NoSolutionError`
+    naming the fields (exit code 1). ``model`` picks the vocabulary of units
+    (`stickslip.vocabulary`)."""
     bad = non_finite(data)
     if bad:
         raise NoSolutionError(f"no finite {title or 'result'}: {', '.join(bad[:5])}"
                               f"{f' and {len(bad) - 5} more' if len(bad) > 5 else ''} came out NaN or infinite "
                               "(the parameters are outside the range where the computation is meaningful)")
     data = _clean(data)
+    rows = list(_rows(data))
+    records = {k: v for k, v in rows if isinstance(v, list) and v and all(isinstance(x, dict) for x in v)}
+    keys = {k for k, _ in rows} | {f"{k}.{c}" for k, v in records.items() for c in v[0]}
+    units = {k: dict(zip(("units", "long_name"), _units(k, model))) for k in sorted(keys) if any(_units(k, model))}
     if as_json:
-        print(json.dumps(data))
+        print(json.dumps({**data, "units": units} if units and "units" not in data else data))
         return
-    table = Table(title=title, show_header=False)
-    for key, value in data.items():
-        if isinstance(value, list) and len(value) > 8:
-            value = f"[{len(value)} items]"
-        table.add_row(key, str(value))
-    Console().print(table)
+    console = Console()
+    table = Table(title=title, show_header=True, header_style="bold")
+    for column in ("quantity", "value", "units", "meaning"):
+        table.add_column(column)
+    for key, value in rows:
+        if key not in records:
+            table.add_row(key, _number(value), *_units(key, model))
+    console.print(table)
+    for key, items in records.items():
+        columns = list(items[0])
+        notes = [f"{c}: {_units(c, model)[1]}" for c in columns if _units(c, model)[1]]
+        sub = Table(title=f"{title}: {key}", header_style="bold", caption="; ".join(notes) or None)
+        for c in columns:
+            unit = _units(c, model)[0]
+            sub.add_column(f"{c} [{unit}]" if unit and unit != "1" else c)
+        for item in items:
+            sub.add_row(*(_number(item.get(c)) for c in columns))
+        console.print(sub)
+
+
+def write_netcdf(ds, out: Path) -> None:
+    """Write a result dataset to ``out`` (through a temporary file, so a kill leaves no half
+    file), with the command line in its ``history``."""
+    from ..cf import stamp
+
+    ds = stamp(ds.copy(), "stickslip " + " ".join(shlex.quote(a) for a in sys.argv[1:]))
+    tmp = Path(out).with_name(Path(out).name + ".partial")
+    try:
+        ds.to_netcdf(tmp)
+        os.replace(tmp, out)
+    finally:
+        tmp.unlink(missing_ok=True)
 
 
 def _writable_folder(name: str, path: Path, folder: Path) -> None:

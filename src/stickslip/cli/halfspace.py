@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import functools
+
 from enum import Enum
 from pathlib import Path
 from typing import Annotated, Optional
@@ -9,7 +11,9 @@ from typing import Annotated, Optional
 import typer
 
 from .. import validation as check
-from .common import emit, output_path
+from .common import emit, output_path, write_netcdf
+
+_emit = functools.partial(emit, model="halfspace")  # results are printed with the units of this model
 
 app = typer.Typer(no_args_is_help=True, rich_markup_mode=None, help="Rigid body sliding on an elastic half-space: periodic stick-slip waves.")
 
@@ -34,7 +38,7 @@ def inverse(b: B, c: C, v_star: VStar, nu: Nu = 0.3, mu: Mu = 0.5, system: Syste
     """(v, T) from (b, c, v*): the linear system [54]-[55]."""
     from ..halfspace import inverse_problem
 
-    emit(inverse_problem(b, c, v_star, nu=nu, mu=mu, system=system.value).to_dict(), json, "inverse problem")
+    _emit(inverse_problem(b, c, v_star, nu=nu, mu=mu, system=system.value).to_dict(), json, "inverse problem")
 
 
 @app.command()
@@ -44,7 +48,7 @@ def direct(T: Annotated[float, typer.Option("--T", help="Driving traction T = T*
     """(c, b) from the loading (T, v, v*): all solutions, or exit code 1 if there is none."""
     from ..halfspace import direct_problem
 
-    emit(direct_problem(T, v, v_star, nu=nu, mu=mu, system=system.value).to_dict(), json, "direct problem")
+    _emit(direct_problem(T, v, v_star, nu=nu, mu=mu, system=system.value).to_dict(), json, "direct problem")
 
 
 @app.command()
@@ -64,11 +68,11 @@ def fields(b: B, c: C, v_star: VStar, nu: Nu = 0.3, mu: Mu = 0.5, system: System
         wave = decaying_wave(b, c, T, v_star, nu=nu, mu=mu)
     else:
         wave = wave_from_inverse(b, c, v_star, nu=nu, mu=mu, system=system.value)
-    emit(wave.summary(), json, "interface fields")
+    _emit(wave.summary(), json, "interface fields")
     if out or plot:
         ds = wave.fields(n=points).to_xarray()
         if out:
-            ds.to_netcdf(out)
+            write_netcdf(ds, out)
         if plot:
             from .. import plotting
 

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import functools
+
 import sys
 
 from enum import Enum
@@ -15,7 +17,9 @@ from ..oscillator import (Oscillator, continue_cycle, continue_from_hopf, equili
                           limit_cycle, simulate)
 from .. import validation as check
 from ..errors import ParameterError
-from .common import Overwrite, emit, output_folder, output_path, progress_bar
+from .common import Overwrite, emit, output_folder, output_path, progress_bar, write_netcdf
+
+_emit = functools.partial(emit, model="oscillator")  # results are printed with the units of this model
 
 app = typer.Typer(no_args_is_help=True, rich_markup_mode=None, help="The 1-DOF friction oscillator m x'' + c x' + k x = F (paper section 2).")
 
@@ -49,7 +53,7 @@ def _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping) -
 def _write(ds, out, plot, draw: str) -> None:
     """Write ``ds`` to ``out`` and its plot ``stickslip.plotting.<draw>`` to ``plot`` (either may be None)."""
     if out is not None:
-        ds.to_netcdf(out)
+        write_netcdf(ds, out)
     if plot is not None:
         from .. import plotting
 
@@ -65,7 +69,7 @@ def cycle(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Be
     """Limit cycle: period, stick and slip times, amplitude, Floquet multipliers."""
     out, plot = output_path("--out", out, ".nc"), output_path("--plot", plot, ".png")
     result = limit_cycle(_osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping), x0, v0)
-    emit(result.to_dict(), json, "limit cycle")
+    _emit(result.to_dict(), json, "limit cycle")
 
     _write(result.to_xarray() if (out or plot) else None, out, plot, "plot_cycle")
 
@@ -84,7 +88,7 @@ def simulate_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_sp
     traj = simulate(_osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping), t_end, x0, v0)
     counts = {name: int((traj.modes == m).sum()) for name, m in (("stick_segments", 0), ("slip_segments", 1),
                                                                   ("reverse_slip_segments", -1))}
-    emit({"status": traj.status, "message": traj.message, "t_end": traj.t_end, "x_end": float(traj.x[-1]),
+    _emit({"status": traj.status, "message": traj.message, "t_end": traj.t_end, "x_end": float(traj.x[-1]),
           "v_end": float(traj.v[-1]), "switches": len(traj.events), **counts}, json, "simulation")
 
     _write(traj.to_xarray(samples) if (out or plot) else None, out, plot, "plot_trajectory")
@@ -104,7 +108,7 @@ def stability(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed
     hi = min(value * 100, sys.float_info.max) if hi is None else hi  # the default stays finite
     data = equilibrium_stability(osc).to_dict()
     data["hopf_points"] = [h.to_dict() for h in hopf_points(osc, parameter, lo, hi)]
-    emit(data, json, "steady sliding")
+    _emit(data, json, "steady sliding")
 
 
 @app.command("continue")
@@ -133,7 +137,7 @@ def continue_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_sp
     if not json:
         data = {"parameter": data["parameter"], "points": len(data["points"]), "end_reason": data["end_reason"],
                 "events": data["events"]}
-    emit(data, json, "continuation")
+    _emit(data, json, "continuation")
 
     _write(branch.to_xarray() if (out or plot) else None, out, plot, "plot_branch")
 
@@ -183,7 +187,7 @@ def map_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: 
     with progress_bar("regime map") as tick:
         ds = regime_map(osc, axes, out, workers=workers, progress=tick, overwrite=overwrite)
     counts = {REGIMES[k]: int((ds["regime"] == k).sum()) for k in REGIMES}
-    emit({"store": str(out), "axes": {k: [min(v), max(v), len(v)] for k, v in axes.items()}, "counts": counts},
+    _emit({"store": str(out), "axes": {k: [min(v), max(v), len(v)] for k, v in axes.items()}, "counts": counts},
          json, "regime map")
     if plot:
         from .. import plotting

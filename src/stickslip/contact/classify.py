@@ -26,10 +26,12 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+import xarray as xr
 
 from .. import validation as check
+from ..cf import finish
 from ..errors import ParameterError
-from .states import SEPARATION, STATE_NAMES, STICK, count_zones, regime_name
+from .states import SEPARATION, STATE_NAMES, STICK, count_zones, regime_code, regime_name
 
 __all__ = ["RegimeResult", "classify", "pattern_shift", "pattern_speed"]
 
@@ -87,6 +89,18 @@ class RegimeResult:
         out.update({k: getattr(self, k) for k in ("stationary", "residual", "state_mismatch", "snapshots")})
         out.update({"fractions": dict(self.fractions), "window": list(self.window), "params": dict(self.params)})
         return {k: (float(v) if isinstance(v, np.floating) else v) for k, v in out.items()}
+
+    def to_xarray(self) -> xr.Dataset:
+        """The state fractions over ``kind``; the rest as attributes (numbers), with the
+        regime's code (`stickslip.contact.states.REGIME_CODES`)."""
+        d = self.to_dict()
+        frac = d.pop("fractions")
+        ds = xr.Dataset({"fraction": ("kind", list(frac.values()),
+                                      {"units": "1", "long_name": "fraction of the contact nodes in each state"})},
+                        coords={"kind": ("kind", list(frac), {"long_name": "contact state"})})
+        return finish(ds, "limit regime of a contact run", "brake",
+                      params={**d, "regime_code": regime_code(self.regime),
+                              "speed_units": "c: rad per unit Omega t; c_over_*: units of the reference speed"})
 
 
 def classify(run, transits: float | None = None, min_fraction: float = 0.01, min_run: int = 2,

@@ -30,16 +30,22 @@ import numpy as np
 import xarray as xr
 
 from .. import validation as check
+from ..cf import SOURCE, finish
 from ..errors import ParameterError
 from ..files import content_digest, exclusive
 from .scheme import StepState
 from .states import STATE_ATTRS, STATE_NAMES, state_fractions
 
 __all__ = ["RunFormat", "RunRecord", "schedule", "prepare", "save", "resume", "loop", "run_explicit",
-           "run_to_dataset", "dataset_to_run", "settings_key", "snapshot_due"]
+           "run_to_dataset", "dataset_to_run", "settings_key", "snapshot_due", "volume_due"]
 
 _KEYS = ("chunk", "samples_total", "snap_every", "tail_samples", "samples_per_transit", "modes", "contact",
-         "initial", "initial_hash")
+         "initial", "initial_hash", "volume_every")
+#: Volume snapshots (``prepare(volume_every=...)``, 0 = none): every free dof, and the reactions of the contact nodes.
+_VOLUME = {"vol_u": ("dof", "length", "displacement u_m of every free dof (volume snapshot)"),
+           "vol_v": ("dof", "velocity", "velocity v_m of the scheme at every free dof (volume snapshot)"),
+           "vol_P": ("node", "traction", "normal reaction (contact pressure) at the volume snapshot"),
+           "vol_Q": ("node", "traction", "tangential reaction (friction) at the volume snapshot")}
 #: Snapshot fields: (kind of unit, long name); a model's `RunFormat` names the units and may refine the names.
 _SNAPSHOT = {"U": ("length", "normal displacement of the contact node"),
              "V": ("length", "tangential displacement of the contact node"),
@@ -73,6 +79,7 @@ class RunFormat:
     traction_scale: Callable = staticmethod(lambda scheme: 1.0)
     extra_attrs: Callable = staticmethod(lambda scheme: {})
     notes: dict = field(default_factory=dict)
+    title: str = "run of an explicit contact scheme"
 
     @property
     def fields(self) -> dict:
@@ -150,34 +157,48 @@ def run_to_dataset(run) -> xr.Dataset:
     N, K = s.theta.size, st["modes"] + 1
     ser, snp = run.series, run.snapshots
 
-    def col(store, key, shape, dtype=float):
-        return np.asarray(store[key], dtype=dtype) if key in store else np.zeros(shape, dtype)
+    def col(store, key, shape, dtype=float):  # none yet (or none since a resume): an empty column of its shape
+        return np.asarray(store[key], dtype=dtype) if len(store.get(key, ())) else np.zeros(shape, dtype)
 
+    T, S, X = "t", "snap_t", "theta"  # the series, snapshot and node dimensions, indexed by time and angle
     data = {
-        "energy": ("sample", col(ser, "energy", 0), {"units": fmt.energy_units, "long_name": fmt.energy_note}),
-        "kinetic": ("sample", col(ser, "kinetic", 0), {"units": fmt.energy_units, "long_name": "kinetic energy"}),
-        "fraction": (("sample", "kind"), col(ser, "fractions", (0, 4)),
+        "energy": (T, col(ser, "energy", 0), {"units": fmt.energy_units, "long_name": fmt.energy_note}),
+        "kinetic": (T, col(ser, "kinetic", 0), {"units": fmt.energy_units, "long_name": "kinetic energy"}),
+        "fraction": ((T, "kind"), col(ser, "fractions", (0, 4)),
                      {"units": "1", "long_name": f"fraction of {fmt.node_label}s in each state"}),
-        "state": (("snapshot", "node"), col(snp, "state", (0, N), np.int8),
-                  {"long_name": f"{fmt.node_label} state", **STATE_ATTRS}),
+        "state": ((S, X), col(snp, "state", (0, N), np.int8), {"long_name": f"{fmt.node_label} state", **STATE_ATTRS}),
     }
     for name in ("U", "V"):
         z = col(ser, f"modes_{name}", (0, K), complex)
         for part, arr in (("re", z.real), ("im", z.imag)):
-            data[f"modes_{name}_{part}"] = (("sample", "mode"), arr, {"units": "R", "long_name": f"rfft({name})/N"})
+            data[f"modes_{name}_{part}"] = ((T, "mode"), arr, {"units": "R", "long_name": f"{part} of rfft({name})/N"})
     for name, (units, long) in fmt.fields.items():
-        data[name] = (("snapshot", "node"), col(snp, name, (0, N)), {"units": units, "long_name": long})
+        data[name] = ((S, X), col(snp, name, (0, N)), {"units": units, "long_name": long})
     for name in _KERNEL:
-        data[f"kernel_{name}"] = ("dof", run.kernel[name], {"long_name": "scheme state for resuming"})
-    coords = {"t": ("sample", col(ser, "t", 0), {"units": "1/Omega", "long_name": "time Omega t"}),
-              "snap_t": ("snapshot", col(snp, "snap_t", 0), {"units": "1/Omega"}),
-              "theta": ("node", s.theta, {"units": "rad"}), "kind": ("kind", list(STATE_NAMES)),
-              "mode": ("mode", np.arange(K))}
+        data[f"kernel_{name}"] = ("dof", run.kernel[name], {"units": "R", "long_name": f"scheme state {name} for resuming"})
+    coords = {T: (T, col(ser, "t", 0), {"units": "1/Omega", "long_name": "time Omega t"}),
+              S: (S, col(snp, "snap_t", 0), {"units": "1/Omega", "long_name": "time Omega t of the snapshot"}),
+              X: (X, s.theta, {"units": "rad", "long_name": f"angle of the {fmt.node_label}"}),
+              "kind": ("kind", list(STATE_NAMES), {"long_name": "contact state"}),
+              "mode": ("mode", np.arange(K), {"units": "1", "long_name": "circumferential Fourier mode"})}
     attrs = {**s.params.to_attrs(), **dict(zip(fmt.key_attrs, _scheme_key(s, fmt))), **fmt.extra_attrs(s),
              "dt": s.dt, "transit_time": s.transit_time, "samples_done": run.samples_done,
              "complete": int(run.complete), **{k: (int(v) if isinstance(v, bool) else v) for k, v in st.items()},
-             "source": fmt.source}
-    return xr.Dataset(data, coords=coords, attrs=attrs)
+             "source": fmt.source, "record": cls_name(run)}
+    if st.get("volume_every"):
+        W = "vol_t"  # the volume snapshots' dimension, indexed by time
+        for name, (where, kind, long) in _VOLUME.items():
+            dim, size = ("dof", run.kernel["u"].size) if where == "dof" else (X, N)
+            data[name] = ((W, dim), col(snp, name, (0, size)), {"units": fmt.units[kind], "long_name": long})
+        data["vol_state"] = ((W, X), col(snp, "vol_state", (0, N), np.int8),
+                             {"long_name": f"{fmt.node_label} state at the volume snapshot", **STATE_ATTRS})
+        coords[W] = (W, col(snp, "vol_t", 0), {"units": "1/Omega", "long_name": "time Omega t of the volume snapshot"})
+    return finish(xr.Dataset(data, coords=coords, attrs=attrs), fmt.title, "brake")
+
+
+def cls_name(run) -> str:
+    """The record type of a run (``FemRun``, ``RingRun``): a checkpoint of another model is refused."""
+    return type(run).__name__
 
 
 def _plain(value):
@@ -188,7 +209,7 @@ def dataset_to_run(cls, ds: xr.Dataset):
     fmt, a = cls.FORMAT, ds.attrs
     params = fmt.params_type.from_attrs(a)
     scheme = fmt.scheme(params, *[_plain(a[k]) for k in fmt.key_attrs])
-    settings = {k: _plain(a[k]) for k in _KEYS}
+    settings = {k: _plain(a[k]) if k in a or k != "volume_every" else 0 for k in _KEYS}  # 0: from before volumes
     settings["contact"] = bool(settings["contact"])
     series = {"t": ds["t"].values, "energy": ds["energy"].values, "kinetic": ds["kinetic"].values,
               "fractions": ds["fraction"].values}
@@ -197,6 +218,9 @@ def dataset_to_run(cls, ds: xr.Dataset):
     snapshots = {"snap_t": ds["snap_t"].values, "state": ds["state"].values.astype(np.int8)}
     snapshots.update({name: ds[name].values for name in fmt.fields})
     kernel = {name: ds[f"kernel_{name}"].values.copy() for name in _KERNEL}
+    if "vol_t" in ds.variables and ds.sizes["vol_t"]:  # none yet: left out, the books start them
+        snapshots.update({name: ds[name].values for name in ("vol_t", *_VOLUME)})
+        snapshots["vol_state"] = ds["vol_state"].values.astype(np.int8)
     return cls(scheme, settings, series, snapshots, kernel, int(a["samples_done"]))
 
 
@@ -216,8 +240,11 @@ MAX_WORK = 1e13
 
 
 def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tail, modes, contact, initial,
-            progress) -> tuple[float, dict]:
-    """Validate the common options of a run; return ``t_end`` and the settings."""
+            progress, volume_every=None) -> tuple[float, dict]:
+    """Validate the common options of a run; return ``t_end`` and the settings.
+
+    ``volume_every`` (transits, optional) asks for volume snapshots (`volume_due`): every
+    free dof's displacement and velocity, the contact nodes' reactions and states."""
     if (t_end is None) == (transits is None):
         raise ParameterError("t_end", t_end, "given (> 0), or else transits, but not both")
     t_end = check.positive("t_end", t_end) if transits is None else \
@@ -240,6 +267,8 @@ def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tai
                            check.nonnegative("tail", tail)),
                 "samples_per_transit": spt, "modes": modes, "contact": bool(contact), "initial": initial.label,
                 "initial_hash": initial.digest()}
+    settings["volume_every"] = 0 if volume_every is None else max(1, int(round(min(  # in samples
+        check.positive("volume_every", volume_every) * scheme.steps_per_transit / settings["chunk"], 2.0**53))))
     return t_end, settings
 
 
@@ -276,6 +305,10 @@ def resume(cls, path, scheme, settings):
     if ds.attrs.get("run_format") != RUN_FORMAT:
         raise ParameterError("checkpoint", str(path), f"a checkpoint in the run format {RUN_FORMAT} (this one: "
                              f"{ds.attrs.get('run_format', 'none')}, written by another version or another program; "
+                             "overwrite it to start afresh)")
+    if ds.attrs.get("source") != SOURCE or ds.attrs.get("record") != cls.__name__:
+        raise ParameterError("checkpoint", str(path), f"a checkpoint of a {cls.__name__} written by {SOURCE} (this one: "
+                             f"{ds.attrs.get('record', 'another record')} written by {ds.attrs.get('source', 'unknown')}; "
                              "overwrite it to start afresh)")
     if ds.attrs.get("content_sha256") != _digest(ds):
         raise ParameterError("checkpoint", str(path), "an intact checkpoint written by stickslip (its content does "
@@ -331,6 +364,12 @@ def snapshot_due(done: int, st: dict) -> bool:
         done == st["samples_total"]
 
 
+def volume_due(done: int, st: dict) -> bool:
+    """Volume snapshots (if the run has them) every ``volume_every`` samples and at the last one."""
+    every = st.get("volume_every", 0)
+    return bool(every) and (done % every == 0 or done == st["samples_total"])
+
+
 def run_explicit(cls, scheme, u0, v0, settings: dict, t_end: float, *, checkpoint=None, every=None, progress=None,
                  overwrite: bool = False):
     """Run ``scheme`` from displacement ``u0`` and velocity ``v0`` with the books of ``cls``.
@@ -374,6 +413,11 @@ def _run_explicit(cls, scheme, u0, v0, settings, t_end, checkpoint, every, progr
             fields = {"snap_t": m * scheme.dt, "U": U, "V": V, "Ud": (u1[normal] - U) / scheme.dt,
                       "Vd": (u1[tangent] - V) / scheme.dt, "P": scale * out.lam_n, "Q": scale * out.lam_t,
                       "gap": u1[normal] - gap0, "state": out.state.copy()}
+            for key, v in fields.items():
+                snaps.setdefault(key, []).append(v)
+        if volume_due(done, st):
+            fields = {"vol_t": m * scheme.dt, "vol_u": u0_.copy(), "vol_v": k["v"].copy(), "vol_P": scale * out.lam_n,
+                      "vol_Q": scale * out.lam_t, "vol_state": out.state.copy()}
             for key, v in fields.items():
                 snaps.setdefault(key, []).append(v)
 

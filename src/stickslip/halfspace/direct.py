@@ -25,6 +25,7 @@ import numpy as np
 import xarray as xr
 from scipy.optimize import brentq
 
+from ..cf import finish
 from .. import validation as check
 from ..errors import NoSolutionError, ParameterError
 from .inverse import system_factor
@@ -109,12 +110,14 @@ class DirectSolution:
 
     def to_xarray(self) -> xr.Dataset:
         cs, bs = (np.array([s[i] for s in self.solutions]) for i in (0, 1))
-        return xr.Dataset(
+        ds = xr.Dataset(
             {"c": ("solution", cs, {"units": "1", "long_name": "wave speed c/c2"}),
              "b": ("solution", bs, {"units": "1", "long_name": "period / stick length"}),
              "mu_star": ("solution", np.array(self.mu_star), {"units": "1", "long_name": "apparent friction implied by [26]"})},
             attrs={k: v for k, v in self.to_dict().items() if k in ("T", "v", "v_star", "nu", "mu", "system", "n_solutions")}
             | {"unique": int(self.unique)})
+        ds.coords["solution"] = ("solution", np.arange(len(cs)), {"units": "1", "long_name": "solution number"})
+        return finish(ds, "stick-slip wave of the half-space: direct problem", "halfspace")
 
 
 def _loading(T, v, v_star):

@@ -39,6 +39,7 @@ import numpy as np
 import xarray as xr
 from scipy.special import roots_jacobi
 
+from ..cf import finish
 from .. import validation as check
 from ..errors import ParameterError
 from .arrays import MAX_B, b_array, real_array
@@ -138,7 +139,10 @@ class InterfaceFields:
                         coords={"x": ("x", self.x, {"units": "1", "long_name": "x / a (moving frame)"})})
         ds.attrs.update(w.summary())
         ds.attrs.update({"slip_residual": self.slip_residual, "stick_residual": self.stick_residual})
-        return ds
+        ds["zone"] = ds["zone"].astype(np.int8)
+        ds["zone"].attrs.update({"long_name": "zone of the interface", "flag_values": np.array([0, 1], np.int8),
+                                 "flag_meanings": "stick slip"})
+        return finish(ds, "interface fields of a stick-slip wave of the half-space", "halfspace")
 
 
 @dataclass(frozen=True)

@@ -34,6 +34,7 @@ import numpy as np
 import xarray as xr
 from scipy.optimize import brentq
 
+from ..cf import finish
 from .. import validation as check
 from ..errors import NoSolutionError, ParameterError
 from .arrays import b_array
@@ -166,7 +167,7 @@ class InverseSolution:
         })
         ds.attrs.update({"v_star": self.v_star, "nu": rd.nu, "mu": rd.mu, "system": self.system,
                          "equations": "paper eqs [54]-[55]" if self.system == "printed" else "paper eqs [52]-[53]"})
-        return ds
+        return finish(ds, "stick-slip wave of the half-space: inverse problem", "halfspace")
 
 
 def inverse_problem(b, cbar, v_star, *, nu, mu, system: str = "printed") -> InverseSolution:

@@ -20,6 +20,8 @@ from dataclasses import dataclass, field
 import numpy as np
 import xarray as xr
 
+from ..cf import finish
+from ..vocabulary import lookup
 from .. import validation as check
 from ..errors import NoSolutionError
 from .cycle import LimitCycle, characterise, limit_cycle, return_map, solve_section
@@ -45,7 +47,8 @@ class Branch:
         col = lambda name: np.array([getattr(cy, name) for cy in c], float)
         ds = xr.Dataset(
             {
-                "parameter_value": ("point", self.values, {"long_name": self.parameter}),
+                "parameter_value": ("point", self.values, {"long_name": f"value of {self.parameter}",
+                                                           "units": (lookup(self.parameter, "oscillator") or ("1",))[0]}),
                 "period": ("point", col("period"), {"units": "s"}),
                 "amplitude": ("point", col("amplitude"), {"units": "m"}),
                 "x_min": ("point", col("x_min"), {"units": "m"}),
@@ -60,10 +63,12 @@ class Branch:
                 "stable": ("point", np.array([cy.stable for cy in c], "i1")),
                 "touches_stick": ("point", np.array([cy.touches_stick for cy in c], "i1")),
             },
+            coords={"point": ("point", np.arange(len(c)), {"long_name": "point number along the branch"})},
             attrs={"continuation_parameter": self.parameter, "end_reason": self.end_reason,
-                   "events": repr(self.events), **params_attrs(c[0].oscillator)},
+                   "events": "; ".join(", ".join(f"{k} {v}" for k, v in e.items()) for e in self.events)},
         )
-        return ds
+        return finish(ds, f"periodic orbits of the friction oscillator continued in {self.parameter}", "oscillator",
+                      params=params_attrs(c[0].oscillator))
 
     def to_dict(self) -> dict:
         return {"parameter": self.parameter, "end_reason": self.end_reason, "events": self.events,

@@ -17,6 +17,7 @@ import numpy as np
 import xarray as xr
 from scipy.optimize import minimize_scalar
 
+from ..cf import finish
 from .. import validation as check
 from ..errors import NoSolutionError
 from .model import Mode, Oscillator
@@ -108,10 +109,13 @@ class LimitCycle:
         ds = self.trajectory.to_xarray(num)
         summary = {k: v for k, v in self.to_dict().items() if k != "floquet_multipliers"}
         ds.attrs.update({k: (int(v) if isinstance(v, bool) else v) for k, v in summary.items()})
-        ds["floquet_multiplier"] = ("multiplier", np.asarray(self.floquet_multipliers, complex).real,
-                                    {"long_name": "Floquet multiplier (real part)"})
-        ds["floquet_multiplier_imag"] = ("multiplier", np.asarray(self.floquet_multipliers, complex).imag)
-        return ds
+        mult = np.asarray(self.floquet_multipliers, complex)
+        ds["floquet_multiplier"] = ("multiplier", mult.real, {"units": "1", "long_name": "Floquet multiplier (real part)"})
+        ds["floquet_multiplier_imag"] = ("multiplier", mult.imag,
+                                         {"units": "1", "long_name": "Floquet multiplier (imaginary part)"})
+        ds.coords["multiplier"] = ("multiplier", np.arange(mult.size), {"long_name": "multiplier number"})
+        ds.attrs["title"] = "limit cycle of the friction oscillator"
+        return finish(ds, ds.attrs["title"], "oscillator")
 
 
 def _x_max(engine: Engine, traj: Trajectory) -> float:

@@ -28,7 +28,8 @@ __all__ = ["REGIMES", "classify", "regime_map"]
 
 REGIMES = {0: "steady sliding", 1: "stick-slip", 2: "bistable: steady sliding or stick-slip",
            3: "pure-slip oscillation", 4: "none found"}
-OUTPUTS = {"regime": "1", "equilibrium_stable": "1", "amplitude": "m", "period": "s", "stick_time": "s"}
+OUTPUTS = {"regime": {v: k for k, v in REGIMES.items()}, "equilibrium_stable": "1", "amplitude": "m", "period": "s",
+           "stick_time": "s"}
 
 
 def classify(osc: Oscillator) -> dict:
@@ -71,6 +72,6 @@ def regime_map(osc: Oscillator, axes: dict, store, **options):
     """
     for name in axes:
         osc.parameter(name)
-    attrs = {**params_attrs(osc), "regimes": "; ".join(f"{k} = {v}" for k, v in REGIMES.items()),
-             "friction_law": type(osc.friction).__name__}
-    return run_sweep(functools.partial(_point, osc), axes, store, outputs=OUTPUTS, attrs=attrs, **options)
+    attrs = {**params_attrs(osc), "friction_law": type(osc.friction).__name__}
+    return run_sweep(functools.partial(_point, osc), axes, store, outputs=OUTPUTS, attrs=attrs,
+                     title="regimes of the friction oscillator", model="oscillator", **options)

@@ -19,6 +19,7 @@ from typing import Callable
 import numpy as np
 import xarray as xr
 
+from ..cf import finish
 from .. import validation as check
 from ..errors import ParameterError
 from .kernel import run_affine
@@ -129,23 +130,39 @@ class Trajectory:
         return tuple(np.concatenate(a) for a in (ts, xs, vs, ms))
 
     def to_xarray(self, num: int = 2001) -> xr.Dataset:
-        """Sampled trajectory and switching events as an `xarray.Dataset`."""
+        """Sampled trajectory and switching events as an `xarray.Dataset`.
+
+        ``t`` is a uniform grid of ``num`` times plus every switching instant, each time once:
+        a switching instant belongs to the segment it starts (``mode`` there is the new mode).
+        """
         t, x, v, mode = self.sample(check.count("samples", num, 10_000_000, "uniform samples of the trajectory"))
+        first = np.append(np.diff(t) > 0, True)  # of equal times keep the last: the start of the next segment
+        t, x, v, mode = t[first], x[first], v[first], mode[first]
         ev = self.events
-        return xr.Dataset(
+        flags = {k: v for k, v in MODE_ATTRS.items() if k != "long_name"}
+        ds = xr.Dataset(
             {
                 "x": ("t", x, {"units": "m", "long_name": "displacement"}),
                 "v": ("t", v, {"units": "m/s", "long_name": "velocity"}),
-                "mode": ("t", mode.astype("i1"), {"long_name": "contact mode", "flag_values": "-1 0 1",
-                                                   "flag_meanings": "reverse_slip stick slip"}),
+                "mode": ("t", mode.astype("i1"), {"long_name": "contact mode", **flags}),
                 "event_time": ("event", np.array([e[0] for e in ev], float), {"units": "s"}),
                 "event_x": ("event", np.array([e[1] for e in ev], float), {"units": "m"}),
-                "event_from": ("event", np.array([int(e[3]) for e in ev], "i1")),
-                "event_to": ("event", np.array([int(e[4]) for e in ev], "i1")),
+                "event_from": ("event", np.array([int(e[3]) for e in ev], "i1"),
+                               {"long_name": "contact mode before the switch", **flags}),
+                "event_to": ("event", np.array([int(e[4]) for e in ev], "i1"),
+                             {"long_name": "contact mode after the switch", **flags}),
             },
-            coords={"t": ("t", t, {"units": "s", "long_name": "time"})},
-            attrs={"status": self.status, "message": self.message, **params_attrs(self.oscillator)},
+            coords={"t": ("t", t, {"units": "s", "long_name": "time",
+                                   "comment": f"{num} uniform samples plus the switching instants"}),
+                    "event": ("event", np.arange(len(ev)), {"long_name": "switch number"})},
+            attrs={"status": self.status, "message": self.message},
         )
+        return finish(ds, "trajectory of the friction oscillator", "oscillator", params=params_attrs(self.oscillator))
+
+
+#: CF attributes of a variable of contact modes (`stickslip.oscillator.Mode` codes).
+MODE_ATTRS = {"long_name": "contact mode", "flag_values": np.array([-1, 0, 1], np.int8),
+              "flag_meanings": "reverse_slip stick slip"}
 
 
 def params_attrs(osc: Oscillator) -> dict:

@@ -61,7 +61,7 @@ def test_steady_sliding_matches_lame_with_order_two():
     interior[: 2 * 64] = False
     assert np.abs(st.forces[interior]).max() < 1e-12 * st.reaction_n.max()  # equilibrium off the contact
     ds = st.to_xarray()
-    assert ds["pressure"].attrs["units"] == "E" and ds.attrs["p_e"] == pytest.approx(lame.p_e)
+    assert ds["pressure"].attrs["scale"] == "E" and ds.attrs["p_e"] == pytest.approx(lame.p_e)
 
 
 def test_steady_state_is_a_fixed_point_of_the_scheme():

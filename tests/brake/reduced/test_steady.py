@@ -76,7 +76,7 @@ def test_steady_outputs():
     assert set(steady_sliding(1.5, 0.3, 0.001, 0.7).to_dict()) == {"p_e", "q_e", "U_e", "V_e"}
     ds = st.to_xarray(11)
     assert ds["u"].values[0] == pytest.approx(0.001) and ds["u"].values[-1] == pytest.approx(0.0, abs=1e-18)
-    assert ds["sigma_rr"].values[0] == pytest.approx(-st.p_e) and ds["sigma_rr"].attrs["units"] == "E"
+    assert ds["sigma_rr"].values[0] == pytest.approx(-st.p_e) and ds["sigma_rr"].attrs["scale"] == "E"
     assert ds["sigma_rth"].values[0] == pytest.approx(-st.q_e)
 
 

@@ -82,7 +82,7 @@ def test_continuation_in_omega_follows_the_same_internal_family():
 def test_branch_outputs(branch):
     ds = branch.to_xarray()
     assert ds.sizes["point"] == len(branch.waves) and "delta" in ds.coords
-    assert ds["zone_start"].attrs["units"] == "rad" and ds["U_max"].attrs["units"] == "R"
+    assert ds["zone_start"].attrs["units"] == "rad" and ds["U_max"].attrs["scale"] == "R"
     assert float(ds["length_separation"][0]) == 0 and float(ds["length_separation"][-1]) > 0
     assert "death of slip" in ds.attrs["events"]
     d = json.loads(json.dumps(branch.to_dict()))

@@ -279,7 +279,7 @@ def test_to_dict_is_json_ready_and_to_xarray_has_units(waves):
     assert [z["kind"] for z in d["zones"]] == w.structure.split("|")
     assert d["impacts"] and d["impacts"][0]["normal_impulse"] > 0
     ds = w.to_xarray(201)
-    assert ds["U"].attrs["units"] == "R" and ds["phi"].attrs["units"] == "rad" and ds.attrs["n"] == 8
+    assert ds["U"].attrs["scale"] == "R" and ds["phi"].attrs["units"] == "rad" and ds.attrs["n"] == 8
     assert ds.sizes["phi"] == 201
 
 

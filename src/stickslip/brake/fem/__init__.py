@@ -13,6 +13,7 @@ lengths ``R``, stresses ``E``, time ``1/Omega``. See ``docs/theory/brake-fem.md`
   (flutter of steady sliding per mode), `slip_wave_rate` (half-space slip waves);
 * `FemScheme`, `integrate_fem`, `perturbed_steady`, `FemRun`: time integration with
   checkpoint/resume and progress callback;
+* `write_xdmf`: the volume snapshots of a run as an XDMF time series for ParaView (meshio);
 * `classify_fem`: the limit regime on the contact nodes (`FemRegime`).
 
 The time stepping, run books and classification are those of `stickslip.contact`; the
@@ -25,6 +26,7 @@ from .exact import annulus_frequencies
 from .halfspace import slip_wave_rate
 from .mesh import AnnulusMesh, FemSystem, annulus_mesh, assemble
 from .modes import FemGrowth, fem_frequencies, fem_growth_rates, fourier_block, max_frequency
+from .paraview import write_xdmf
 from .run import FemInitial, FemRun, integrate_fem, perturbed_steady
 from .scheme import FemScheme
 from .static import FemSteady, steady_state
@@ -32,4 +34,4 @@ from .static import FemSteady, steady_state
 __all__ = ["AnnulusMesh", "FemSystem", "annulus_mesh", "assemble", "FemSteady", "steady_state",
            "annulus_frequencies", "fem_frequencies", "fourier_block", "max_frequency", "FemGrowth",
            "fem_growth_rates", "slip_wave_rate", "FemScheme", "FemInitial", "FemRun", "integrate_fem",
-           "perturbed_steady", "FemRegime", "classify_fem"]
+           "perturbed_steady", "FemRegime", "classify_fem", "write_xdmf"]

@@ -34,7 +34,7 @@ from pathlib import Path
 
 
 from ... import validation as check
-from ...contact import REGIME_ATTRS, regime_code
+from ...contact import REGIME_CODES, regime_code
 from ...errors import ParameterError
 from ...sweep import run_sweep
 from ..reduced import BrakeParams
@@ -45,7 +45,7 @@ from .scheme import FemScheme
 __all__ = ["OUTCOMES", "limit_regime", "statistics", "geometry", "geometry_mesh"]
 
 #: What each run records (name -> units).
-OUTCOMES = {"regime": "1", "n_zones": "1", "n_fft": "1", "stationary": "1", "residual": "1", "transits": "1",
+OUTCOMES = {"regime": REGIME_CODES, "n_zones": "1", "n_fft": "1", "stationary": "1", "residual": "1", "transits": "1",
             "stick": "1", "slip": "1", "reverse_slip": "1", "separation": "1", "c_over_cp": "1", "seconds": "s"}
 
 
@@ -120,14 +120,15 @@ def statistics(store, cases, meshes=((256, 16), (512, 32)), seeds: int = 16, *,
     store = Path(store)
     func = functools.partial(_statistics_point, cases, meshes, tuple(dict(b) for b in budgets),
                              str(store.with_suffix(".runs")))
-    attrs = {"cases": repr(cases), "meshes": repr(meshes), "budgets": repr(tuple(dict(b) for b in budgets)),
-             "mesh_n_theta": [m[0] for m in meshes], "mesh_n_r": [m[1] for m in meshes], **_case_attrs(cases),
+    attrs = {"mesh_n_theta": [m[0] for m in meshes], "mesh_n_r": [m[1] for m in meshes], **_case_attrs(cases),
+             **{f"mesh{m}_{k}": float(v) for m, b in enumerate(budgets) for k, v in sorted(dict(b).items())},
              "beta2": 0.9, "mode_number": "median number of stick zones per snapshot (n_zones)",
-             "initial": "FE steady sliding + 1e-3 delta white noise (one seed per run)", **_regime_attrs()}
+             "initial": "FE steady sliding + 1e-3 delta white noise (one seed per run)"}
     options.setdefault("batch", max(1, options.get("workers") or 2))
     _fresh_runs(store, options)
     return run_sweep(func, {"case": list(range(len(cases))), "mesh": list(range(len(meshes))),
-                            "seed": list(range(seeds))}, store, outputs=OUTCOMES, attrs=attrs, **options)
+                            "seed": list(range(seeds))}, store, outputs=OUTCOMES, attrs=attrs,
+                     title="FE limit regimes from unseeded starts, per case and mesh", model="brake", **options)
 
 
 def geometry_mesh(xi: float, n_theta: int = 256) -> tuple[int, int]:
@@ -152,14 +153,15 @@ def geometry(store, cases, xis=(1.25, 1.5, 2.0, 3.0), beta2s=(0.6, 0.75, 0.9), s
     budget = dict(budget or {"max_transits": 300.0})
     store = Path(store)
     func = functools.partial(_geometry_point, cases, n_theta, budget, str(store.with_suffix(".runs")))
-    attrs = {"cases": repr(cases), "n_theta": n_theta, "budget": repr(budget), **_case_attrs(cases),
+    attrs = {"n_theta": n_theta, "budget": budget, **_case_attrs(cases),
              "mesh": "n_theta x round(32 (xi - 1)) (the radial spacing of 256 x 16 at xi = 1.5)",
              "mode_number": "median number of stick zones per snapshot (n_zones)",
-             "initial": "FE steady sliding + 1e-3 delta white noise (one seed per run)", **_regime_attrs()}
+             "initial": "FE steady sliding + 1e-3 delta white noise (one seed per run)"}
     options.setdefault("batch", max(1, options.get("workers") or 2))
     _fresh_runs(store, options)
     return run_sweep(func, {"case": list(range(len(cases))), "xi": xis, "beta2": beta2s,
-                            "seed": list(range(seeds))}, store, outputs=OUTCOMES, attrs=attrs, **options)
+                            "seed": list(range(seeds))}, store, outputs=OUTCOMES, attrs=attrs,
+                     title="FE limit regimes over the radius ratio and beta2", model="brake", **options)
 
 
 def _fresh_runs(store: Path, options: dict) -> None:
@@ -171,8 +173,3 @@ def _fresh_runs(store: Path, options: dict) -> None:
 def _case_attrs(cases) -> dict:
     return {"case_friction": [c[0] for c in cases], "case_mismatch": [c[1] for c in cases],
             "case_omega": [c[2] for c in cases]}
-
-
-def _regime_attrs() -> dict:
-    return {"regime_codes": REGIME_ATTRS["flag_meanings"],
-            "regime_code_values": " ".join(str(v) for v in REGIME_ATTRS["flag_values"])}

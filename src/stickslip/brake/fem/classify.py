@@ -58,15 +58,11 @@ class FemRegime:
 
     def to_xarray(self):
         """The fractions as a variable over ``kind``, every scalar in ``attrs``."""
-        import xarray as xr
-
-        d = self.to_dict()
-        frac = d.pop("fractions")
-        attrs = {k: (str(v) if isinstance(v, (dict, list)) else (int(v) if isinstance(v, bool) else v))
-                 for k, v in d.items()}
-        attrs["speed_units"] = "c: rad per paper time unit 1/Omega; c_over_cp: units of c_p/R"
-        return xr.Dataset({"fraction": ("kind", list(frac.values()), {"units": "1"})},
-                          coords={"kind": list(frac)}, attrs=attrs)
+        ds = self.result.to_xarray()
+        ds.attrs.update({k: v for k, v in self.to_dict().items() if k.startswith(("n_", "c_", "p_", "energy_"))})
+        ds.attrs["transits"] = float(self.transits)
+        ds.attrs["title"] = "FE limit regime"
+        return ds
 
 
 def classify_fem(run, transits: float | None = None, min_fraction: float = 0.01, min_run: int = 2,

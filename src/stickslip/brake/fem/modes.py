@@ -29,6 +29,7 @@ import numpy as np
 import xarray as xr
 from scipy.linalg import eigh, eigvals
 
+from ...cf import finish
 from ...contact import discrete_rates
 from ...errors import ParameterError
 from ..reduced.params import BrakeParams
@@ -112,11 +113,15 @@ class FemGrowth:
                 "lowest": [[float(z.real), float(z.imag)] for z in self.lowest]}
 
     def to_xarray(self) -> xr.Dataset:
-        return xr.Dataset({"growth_rate": (("n", "branch"), self.s.real, {"units": "Omega (paper time 1/Omega)"}),
-                           "frequency": (("n", "branch"), self.s.imag, {"units": "Omega (paper time 1/Omega)"})},
-                          coords={"n": self.n}, attrs={**{k: v for k, v in self.params.to_dict().items()
-                                                          if k != "physical"},
-                                                       "source": "FE steady sliding, forward slip, eq. [10]"})
+        ds = xr.Dataset({"growth_rate": (("n", "branch"), self.s.real,
+                                         {"units": "1", "long_name": "growth rate Re s (per unit Omega t)"}),
+                         "frequency": (("n", "branch"), self.s.imag,
+                                       {"units": "1", "long_name": "angular frequency Im s (per unit Omega t)"})},
+                        coords={"n": ("n", self.n, {"long_name": "circumferential wave number"}),
+                                "branch": ("branch", np.arange(self.s.shape[1]), {"units": "1",
+                                           "long_name": "eigenvalue branch, by growth rate"})},
+                        attrs={"source": "FE steady sliding, forward slip, eq. [10]"})
+        return finish(ds, "FE growth rates of steady sliding", "brake", params=self.params.to_attrs())
 
 
 def fem_growth_rates(params: BrakeParams, system: FemSystem, modes=range(1, 9)) -> FemGrowth:

@@ -9,7 +9,10 @@ checkpoint guarantees):
   slip, separation) and Fourier modes of ``u_r, u_theta`` along ``r = R``;
 * snapshots of the contact nodes (``U = u_r``, ``V = u_theta``, step velocities, pressure
   ``P = p`` and shear ``Q = q`` in units of ``E``, states) every ``snapshot_every`` transits
-  and at every sample of the last ``tail`` transits (for `classify_fem`).
+  and at every sample of the last ``tail`` transits (for `classify_fem`);
+* with ``volume_every``: volume snapshots (displacement and velocity of every free dof,
+  reactions and states of the contact nodes) every ``volume_every`` transits and at the
+  end, kept in the run (and its checkpoint) for `write_xdmf` (ParaView).
 
 A run is budgeted in transits ``2 pi R / c_p`` (the step is set by the CFL limit, so a
 transit costs about ``1.4 n_theta`` steps for the default mesh shape and ``beta2 = 0.9``). With
@@ -32,7 +35,10 @@ from ...errors import ParameterError
 from ..reduced import BrakeParams
 from .scheme import FemScheme
 
-__all__ = ["FemInitial", "FemRun", "integrate_fem", "perturbed_steady"]
+__all__ = ["FemInitial", "FemRun", "integrate_fem", "perturbed_steady", "MAX_VOLUME"]
+
+#: The most numbers the volume snapshots of one run may hold (1.25e8 float64: 1 GB of memory).
+MAX_VOLUME = 1.25e8
 
 
 @dataclass(frozen=True, eq=False)
@@ -90,7 +96,8 @@ _FORMAT = RunFormat(
     source="FE model of eq. [10], explicit beta2 scheme [22] with multipliers [23] (docs/theory/brake-fem.md)",
     key_attrs=("n_theta", "n_r", "beta2", "courant"), scheme=FemScheme, params_type=BrakeParams,
     traction_scale=lambda s: s.traction_scale,
-    extra_attrs=lambda s: {"p_wave_speed": s.p_wave_speed, "mesh": s.system.mesh.describe()})
+    extra_attrs=lambda s: {"p_wave_speed": s.p_wave_speed, "mesh": s.system.mesh.describe()},
+    title="run of the FE annulus on the rotating shaft")
 
 
 @dataclass(frozen=True, eq=False)
@@ -103,6 +110,9 @@ class FemRun(RunRecord):
     Snapshots at the contact nodes: ``snap_t``, ``U``, ``V``, ``Ud``, ``Vd`` (step
     velocities, shaft surface speed = 1), ``P``, ``Q`` (pressure and shear, units of ``E``),
     ``gap`` (``u_r - delta`` at ``t_{m+1}``, where the constraint of step ``m`` acts), ``state``. ``kernel``: the scheme state ``u, v, a`` (all free dofs) and ``ref`` (``u_e``).
+    Volume snapshots (with ``volume_every``): ``vol_t``, ``vol_u``, ``vol_v`` (total
+    displacement and velocity ``v_m`` of every free dof, polar frames), ``vol_P``, ``vol_Q``,
+    ``vol_state`` (contact nodes).
     """
 
     FORMAT: ClassVar[RunFormat] = _FORMAT
@@ -120,7 +130,7 @@ def integrate_fem(params: BrakeParams, n_theta: int = 256, n_r: int = 16, t_end:
                   courant: float = 0.9, samples_per_transit: int = 32, snapshot_every: float = 1.0,
                   tail: float = 2.0, modes: int = 32, contact: bool = True, checkpoint=None,
                   every: float | None = None, progress: Callable[[float, float], None] | None = None,
-                  overwrite: bool = False) -> FemRun:
+                  overwrite: bool = False, volume_every: float | None = None) -> FemRun:
     """Integrate the FE model of [10] from ``initial`` up to ``t_end`` (or ``transits``).
 
     Parameters
@@ -151,6 +161,10 @@ def integrate_fem(params: BrakeParams, n_theta: int = 256, n_r: int = 16, t_end:
         ``progress(t, t_end)`` after every sample.
     overwrite : bool
         Start afresh, replacing the checkpoint, instead of resuming from it.
+    volume_every : float, optional
+        Keep volume snapshots every ``volume_every`` transits (> 0, rounded to whole samples)
+        and at the end, for `write_xdmf`; part of the run's settings (a checkpoint with
+        another interval is refused). At most `MAX_VOLUME` numbers in all.
     """
     scheme = FemScheme(params, n_theta, n_r, beta2, courant)
     initial = perturbed_steady(scheme) if initial is None else initial
@@ -158,6 +172,14 @@ def integrate_fem(params: BrakeParams, n_theta: int = 256, n_r: int = 16, t_end:
         raise ParameterError("initial", initial, f"a FemInitial with {scheme.system.n_free} dofs")
     t_end, settings = prepare(scheme, t_end=t_end, transits=transits, samples_per_transit=samples_per_transit,
                               snapshot_every=snapshot_every, tail=tail, modes=modes, contact=contact,
-                              initial=initial, progress=progress)
+                              initial=initial, progress=progress, volume_every=volume_every)
+    if settings["volume_every"]:
+        count = -(-settings["samples_total"] // settings["volume_every"])
+        size = scheme.system.n_free * 2 + scheme.n_theta * 3
+        if count * size > MAX_VOLUME:
+            sample = settings["chunk"] * scheme.dt / scheme.transit_time  # in transits
+            least = (settings["samples_total"] * size / MAX_VOLUME + 1) * sample
+            raise ParameterError("volume_every", volume_every, f">= {least:.3g} transits for this run ({count} volume "
+                                 f"snapshots of {size} numbers; at most {MAX_VOLUME:.3g} numbers, 1 GB, in all)")
     return run_explicit(FemRun, scheme, initial.u, initial.v, settings, t_end, checkpoint=checkpoint, every=every,
                         progress=progress, overwrite=overwrite)

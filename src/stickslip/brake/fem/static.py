@@ -24,6 +24,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 import xarray as xr
 
+from ...cf import finish
 from ...errors import ParameterError
 from ..reduced.params import BrakeParams
 from ..reduced.steady import steady_sliding
@@ -75,14 +76,13 @@ class FemSteady:
 
     def to_xarray(self) -> xr.Dataset:
         s = self.system
-        ds = xr.Dataset({"u_r": (("r", "theta"), s.radial(self.u), {"units": "R"}),
-                         "u_theta": (("r", "theta"), s.hoop(self.u), {"units": "R"}),
-                         "pressure": ("theta", self.pressure, {"units": "E"})},
-                        coords={"r": ("r", s.mesh.radii[:-1], {"units": "R"}),
+        ds = xr.Dataset({"u_r": (("r", "theta"), s.radial(self.u), {"units": "R", "long_name": "radial displacement"}),
+                         "u_theta": (("r", "theta"), s.hoop(self.u), {"units": "R", "long_name": "hoop displacement"}),
+                         "pressure": ("theta", self.pressure, {"units": "E", "long_name": "contact pressure"})},
+                        coords={"r": ("r", s.mesh.radii[:-1], {"units": "R", "long_name": "radius of the node ring"}),
                                 "theta": ("theta", s.mesh.theta, {"units": "rad"})})
-        ds.attrs.update({k: float(v) if isinstance(v, float) else v for k, v in self.to_dict().items()})
         ds.attrs["source"] = "FE static contact problem in forward slip; compare eq. [11] (corrected)"
-        return ds
+        return finish(ds, "FE steady sliding", "brake", params=self.to_dict())
 
 
 def steady_state(params: BrakeParams, system: FemSystem | None = None, *, n_theta: int = 256,

@@ -28,6 +28,7 @@ import numpy as np
 import xarray as xr
 from scipy.optimize import brentq
 
+from ...cf import finish
 from ... import validation as check
 
 __all__ = ["ReducedCoefficients", "coefficients", "shape_integrals", "coupling", "neutral_radius_ratio"]
@@ -84,8 +85,9 @@ class ReducedCoefficients:
     def to_xarray(self) -> xr.Dataset:
         data = {k: ((), v, {"units": "1", "long_name": f"coefficient {k} of eq. [13]"})
                 for k, v in self.to_dict().items()}
-        return xr.Dataset(data, attrs={"xi": self.xi, "nu": self.nu, "gamma": self.gamma,
-                                       "modal_mass": self.modal_mass, "source": "paper eq. [13]"})
+        ds = xr.Dataset(data, attrs={"xi": self.xi, "nu": self.nu, "gamma": self.gamma,
+                                     "modal_mass": self.modal_mass, "source": "paper eq. [13]"})
+        return finish(ds, "coefficients of the reduced model", "brake")
 
 
 def coefficients(xi: float, nu: float, gamma: float) -> ReducedCoefficients:

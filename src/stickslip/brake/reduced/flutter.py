@@ -32,6 +32,7 @@ from numbers import Integral
 import numpy as np
 import xarray as xr
 
+from ...cf import finish
 from ... import validation as check
 from ...errors import ParameterError
 from .coefficients import ReducedCoefficients
@@ -141,10 +142,9 @@ class GrowthRates:
         if np.isfinite(omega):
             ds["growth_rate_si"] = ("n", omega * self.growth_rate, {"units": "1/s", "long_name": "Omega Re s"})
             ds["frequency_si"] = ("n", omega * self.frequency, {"units": "rad/s", "long_name": "Omega Im s"})
-        ds.attrs.update({**{k: v for k, v in self.params.to_dict().items() if k != "physical"},
-                         "D": self.coefficients.D, "growth_rate_limit": self.limit,
+        ds.attrs.update({"D": self.coefficients.D, "growth_rate_limit": self.limit,
                          "source": "linearised eq. [12] (corrected), all points slipping"})
-        return ds
+        return finish(ds, "growth rates of steady sliding, reduced model", "brake", params=self.params.to_attrs())
 
 
 def growth_rates(params: BrakeParams, modes=range(1, 21)) -> GrowthRates:

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 import xarray as xr
 
+from ...cf import finish
 from ... import validation as check
 from .coefficients import coefficients, elastic_moduli
 
@@ -93,7 +94,10 @@ class SteadySliding:
                          "source": "paper eqs. [11] and [16], corrected"})
         if self.gamma is not None:
             ds.attrs["gamma"] = self.gamma
-        return ds
+        for name, long_name in (("sigma_rr", "radial stress"), ("sigma_thth", "hoop stress"),
+                                ("sigma_rth", "shear stress"), ("sigma_zz", "axial stress")):
+            ds[name].attrs["long_name"] = long_name
+        return finish(ds, "steady sliding of the annulus (closed form)", "brake")
 
 
 def steady_sliding(xi: float, nu: float, delta: float, friction: float,

@@ -105,7 +105,8 @@ _FORMAT = RunFormat(
     notes={"P": "contact pressure per unit modal mass (p = M P)", "Q": "friction traction per unit modal mass (q = M Q)"},
     energy_units="E R^2 / M", energy_note="energy of the scheme", node_label="node",
     source="reduced model [12] (corrected), explicit scheme of docs/theory/brake-ring.md",
-    key_attrs=("nodes", "beta2", "courant"), scheme=RingScheme, params_type=BrakeParams)
+    key_attrs=("nodes", "beta2", "courant"), scheme=RingScheme, params_type=BrakeParams,
+    title="run of the ring (reduced model) on the rotating shaft")
 
 
 @dataclass(frozen=True, eq=False)

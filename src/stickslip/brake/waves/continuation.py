@@ -27,6 +27,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import xarray as xr
 
+from ...cf import finish
 from ... import validation as check
 from ...errors import NoSolutionError, ParameterError
 from ..reduced.params import BrakeParams, PhysicalParams
@@ -119,7 +120,7 @@ class WaveBranch:
              "V_amplitude": ("point", [0.5 * np.ptp(p["V"]) for p in prof], {"units": "R"}),
              "P_max": ("point", [p["P"].max() for p in prof], {"units": "E/M"}),
              "residual": ("point", [w.residual for w in self.waves])},
-            coords={"point": np.arange(len(self.waves)),
+            coords={"point": ("point", np.arange(len(self.waves)), {"long_name": "point number along the branch"}),
                     self.parameter: ("point", np.asarray(self.values, float)),
                     "delta_internal": ("point", [Scaling(w.params).delta for w in self.waves],
                                        {"long_name": "delta/sqrt(gamma)"})})
@@ -127,7 +128,10 @@ class WaveBranch:
                          "events": "; ".join(f"{e.kind} of {'+'.join(e.zones)} at {self.parameter} = "
                                              f"{e.parameter:.8g} ({e.before} -> {e.after}, {e.cause})"
                                              for e in self.events)})
-        return ds
+        ds["regime"].attrs["long_name"] = "regime of the wave"
+        ds["structure"].attrs["long_name"] = "zone structure of one period"
+        return finish(ds, f"travelling waves continued in {self.parameter}", "brake",
+                      params=self.waves[0].params.to_attrs() if self.waves else None)
 
 
 def _diff(before: TravellingWave, after: TravellingWave):

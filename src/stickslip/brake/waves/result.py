@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import xarray as xr
 
+from ...cf import finish
 from ..reduced.params import BrakeParams
 from .boundsco import Layout, passed
 from .zones import KINDS, REVERSE, SEPARATION, SLIP, STICK, Scaling, ZoneFlows
@@ -183,11 +184,13 @@ class TravellingWave:
                 "zone": ("index of the zone", "1")}
         ds = xr.Dataset({k: ("phi", prof[k], {"long_name": ln, "units": u}) for k, (ln, u) in meta.items()},
                         coords={"phi": ("phi", phi, {"long_name": "phi = theta - c t", "units": "rad"})})
-        ds["zone_kind"] = ("zone_index", [z.kind for z in self.zones])
+        ds["zone"].attrs.update({"long_name": "index of the zone (zone_index)"})
+        ds["zone_kind"] = ("zone_index", [z.kind for z in self.zones], {"long_name": "kind of the zone"})
         ds["zone_start"] = ("zone_index", [z.start for z in self.zones], {"units": "rad"})
         ds["zone_end"] = ("zone_index", [z.end for z in self.zones], {"units": "rad"})
+        ds.coords["zone_index"] = ("zone_index", np.arange(len(self.zones)), {"units": "1",
+                                                                            "long_name": "zone number"})
         ds.attrs.update({"c": float(self.c), "n": int(self.n), "regime": self.regime,
                          "structure": self.structure, "residual": float(self.residual), "valid": int(self.valid),
-                         **{k: v for k, v in self.params.to_dict().items() if k != "physical"},
                          "source": "paper eqs. [14]-[20], closed-form zones + multiple shooting"})
-        return ds
+        return finish(ds, "travelling stick-slip wave of the reduced model", "brake", params=self.params.to_attrs())

@@ -28,6 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 import xarray as xr
 
+from ...cf import finish
 from ... import validation as check
 from ...errors import ParameterError
 from .zones import Scaling
@@ -99,15 +100,17 @@ class WavePersistence:
         return bool(np.max(self.drift) < 0.05)
 
     def to_xarray(self) -> xr.Dataset:
-        return xr.Dataset(
-            {"drift": ("time", self.drift, {"long_name": "distance to the exact wave / amplitude"}),
+        ds = xr.Dataset(
+            {"drift": ("time", self.drift, {"units": "1", "long_name": "distance to the exact wave / amplitude"}),
              "separation_of_runs": ("time", self.separation_of_runs,
-                                    {"long_name": "perturbed - unperturbed (aligned) / initial perturbation"}),
+                                    {"units": "1", "long_name": "perturbed - unperturbed (aligned) / initial perturbation"}),
              "lag": ("time", self.lag, {"units": "rad", "long_name": "phase lag behind the exact wave"}),
-             "stick_fraction": ("time", self.stick_fraction)},
-            coords={"time": ("time", self.time, {"long_name": "tau = t / sqrt(gamma)"})},
+             "stick_fraction": ("time", self.stick_fraction, {"units": "1",
+                                                              "long_name": "fraction of the ring nodes in stick"})},
+            coords={"time": ("time", self.time, {"units": "1", "long_name": "time tau = t / sqrt(gamma)"})},
             attrs={"growth_rate": self.growth_rate, "persists": int(self.persists), "nodes": self.nodes,
                    "wave_stick_fraction": self.wave_stick_fraction})
+        return finish(ds, "persistence of a travelling wave in the ring", "brake")
 
 
 def wave_persistence(wave, nodes: int = 512, periods: int = 30, perturbation: float = 1e-4,

@@ -17,6 +17,7 @@ In order of preference:
 
 from __future__ import annotations
 
+import ast
 import contextlib
 import functools
 import hashlib
@@ -27,9 +28,10 @@ import numpy as np
 import xarray as xr
 
 from ...brake import BrakeParams
+from ...cf import stamp
 from ...brake.fem import FemScheme, classify_fem, integrate_fem, perturbed_steady
 from ...brake.fem.campaign import limit_regime
-from ...contact import REGIME_CODES
+from ...contact import REGIME_ATTRS, REGIME_CODES
 from ...sweep import verify_store
 from .paper import CASES, PAPER_REGIMES
 
@@ -85,7 +87,7 @@ def find(kind: str, data_dir: Path | None) -> tuple[xr.Dataset | None, str]:
             return ds, f"the campaign in {store} ({int(ds['done'].size)} runs)"
     stored = STORED_DIR / f"fem_{kind}.nc"
     if stored.exists():
-        ds = xr.load_dataset(stored)
+        ds = _tidy(xr.load_dataset(stored))
         if ds.attrs.get("model_fingerprint") == model_fingerprint():
             return ds, (f"the campaign stored with the package ({int(ds['regime'].size)} runs, computed "
                         f"{ds.attrs.get('computed', '?')}, {ds.attrs.get('compute_seconds', float('nan')) / 3600:.1f} h "
@@ -94,6 +96,24 @@ def find(kind: str, data_dir: Path | None) -> tuple[xr.Dataset | None, str]:
                       f"(fingerprint {ds.attrs.get('model_fingerprint')}, now {model_fingerprint()}); "
                       "rerun `stickslip brake campaign`")
     return None, "no campaign found: run `stickslip brake campaign` (about an hour)"
+
+
+def _tidy(ds: xr.Dataset) -> xr.Dataset:
+    """A campaign stored by an earlier version in the present layout: its parameters written as
+    Python text become numbers, its regime codes get their flags (the values are unchanged)."""
+    for key in ("cases", "meshes", "budgets", "budget"):
+        text = ds.attrs.pop(key, None)
+        if not isinstance(text, str):
+            continue
+        value = ast.literal_eval(text)
+        if key == "budgets":
+            ds.attrs.update({f"mesh{m}_{k}": float(v) for m, b in enumerate(value) for k, v in sorted(b.items())})
+        elif key == "budget":
+            ds.attrs.update({f"budget_{k}": float(v) for k, v in sorted(value.items())})
+    for key in ("regime_codes", "regime_code_values"):
+        ds.attrs.pop(key, None)
+    ds["regime"].attrs.update(REGIME_ATTRS)
+    return ds
 
 
 @contextlib.contextmanager
@@ -123,7 +143,7 @@ def export(ds: xr.Dataset, kind: str, folder: Path, computed: str) -> Path:
     out.attrs.update({"model_fingerprint": model_fingerprint(), "computed": computed,
                       "compute_seconds": float(np.nansum(ds["seconds"].values))})
     path = folder / f"fem_{kind}.nc"
-    out.to_netcdf(path)
+    stamp(out, f"exported by stickslip brake campaign ({kind})").to_netcdf(path)
     return path
 
 

@@ -199,39 +199,47 @@ def title(ds, i):
 
 
 def case_plot(ds, fig, profile, label) -> Figure:
-    """States of every run (last 2 transits), a profile per run, energies and growth rates."""
+    """A column per run: node states (last 2 transits) over the profiles of ``profile`` and the
+    pressure at the last snapshot; below, the energies and the growth rates of steady sliding."""
     nrun = ds.sizes["run"]
-    fig = Figure(figsize=(4.2 * (nrun + 1), 7.5)) if fig is None else fig
-    axes = fig.subplots(2, nrun + 1, squeeze=False)
+    fig = Figure(figsize=(max(5.5 * nrun, 9.0), 11.0)) if fig is None else fig
+    grid = fig.add_gridspec(3, 2 * nrun)
     th = ds["theta"].values
     for i in range(nrun):
-        plotting.state_image(axes[0, i], ds["state"].isel(run=i).values, title(ds, i))
-        axes[0, i].set(xlabel="θ", ylabel="t [transits, last 2]" if i == 0 else "")
-        ax = axes[1, i]
+        ax = fig.add_subplot(grid[0, 2 * i:2 * i + 2])
+        plotting.state_image(ax, ds["state"].isel(run=i).values, title(ds, i))
+        ax.set(xlabel="θ [rad]", ylabel="t [transits], last 2 of the run")
+        if i == nrun - 1:
+            plotting.state_legend(ax)
+        ax = fig.add_subplot(grid[1, 2 * i:2 * i + 2])
         ax.plot(th, ds[profile].isel(run=i, snapshot=-1), lw=0.9, label=label)
         ax.plot(th, ds["P"].isel(run=i, snapshot=-1), lw=0.9, label="p / p_e")
         ax.axhline(1.0, color="k", lw=0.4)
-        ax.set(xlabel="θ", xticks=[0, np.pi, 2 * np.pi], xticklabels=["0", "π", "2π"])
-        ax.legend(fontsize=7)
-    ax = axes[0, nrun]
+        ax.set(xlabel="θ [rad] (last snapshot)", ylabel=f"{label}, p / p_e [1]", xticks=[0, np.pi, 2 * np.pi],
+               xticklabels=["0", "π", "2π"])
+        plotting.legend_above(ax)
+    ax = fig.add_subplot(grid[2, :nrun])
     for i in range(nrun):
         ax.semilogy(ds["transit"], ds["energy"].isel(run=i), lw=0.8, label=str(ds["run"].values[i]))
-    ax.set(xlabel="transits", ylabel="energy of the deviation [E R²]", title="growth and saturation")
-    ax.legend(fontsize=7)
-    ax = axes[1, nrun]
-    ax.plot(ds["mode"], ds["growth"], label="FE, semi-discrete (max over branches)")
-    ax.plot(ds["mode"], ds["growth_discrete"], label="FE, β2 = 0.9 (fully discrete)")
+    ax.set(xlabel="t [transits]", ylabel="energy of the deviation [E R²]")
+    plotting.legend_above(ax, title="growth and saturation, per run", title_fontsize=9)
+    ax = fig.add_subplot(grid[2, nrun:])
+    growth, discrete = ds["growth"].values, ds["growth_discrete"].values
+    lo = min(-1.0, float(np.nanmin(growth)), float(np.nanmin(discrete)))
+    hi = 1.2 * max(float(np.nanmax(growth)), float(np.nanmax(discrete)))
+    ax.plot(ds["mode"], growth, label="FE semi-discrete")
+    ax.plot(ds["mode"], discrete, label="FE discrete, β2 = 0.9")
     hs = ds.attrs["halfspace_rate_per_transit_per_mode"]
-    if hs > 0:
-        ax.plot(ds["mode"], hs * ds["mode"], "k:", label="half-space slip wave (f > 1)")
+    if hs > 0:  # a straight line: drawn up to the top of the axes
+        line = hs * ds["mode"].values
+        ax.plot(ds["mode"], np.where(line <= hi, line, np.nan), "k:", label="half-space slip wave")
     ax.axhline(0, color="k", lw=0.5)
-    ax.set(xlabel="mode n", ylabel="Re s per transit", title="flutter of steady sliding",
-           ylim=(min(-1.0, float(ds["growth_discrete"].min())), 1.2 * float(ds["growth"].max())))
-    ax.legend(fontsize=7)
+    ax.set(xlabel="mode number n [1]", ylabel="growth rate Re s [1/transit]", ylim=(lo, hi))
+    plotting.legend_above(ax, title="flutter of steady sliding (Re s: max over the branches)", title_fontsize=9)
     a = ds.attrs
-    fig.suptitle(f"case {a['case']}: f = {a['friction']:g}, δ = {a['delta']:g}, Ω = {a['omega']:g} rad/s "
-                 f"(κ = {a['kappa']:.3g}); paper: {a['paper_regime']}, {a['paper_modes']} modes\n{a['mesh']}, "
-                 f"β2 = 0.9, {a['transits']} transits per run", fontsize=9)
+    fig.suptitle(plotting.wrap(f"case {a['case']}: f = {a['friction']:g}, δ = {a['delta']:g}, Ω = {a['omega']:g} "
+                               f"rad/s (κ = {a['kappa']:.3g}); paper: {a['paper_regime']}, {a['paper_modes']} modes; "
+                               f"{a['mesh']}, β2 = 0.9, {a['transits']} transits per run", 120), fontsize=9)
     return fig
 
 
@@ -239,24 +247,31 @@ def spacetime(ax, ds, i, key, label, cmap):
     r = ds.isel(run=i)
     im = ax.imshow(r[key].values, aspect="auto", origin="lower", cmap=cmap, interpolation="nearest",
                    extent=(0, 2 * np.pi, float(r["snap_t"][0]), float(r["snap_t"][-1])))
-    ax.set(xlabel="θ", ylabel="t [transits]", xticks=[0, np.pi, 2 * np.pi], xticklabels=["0", "π", "2π"])
-    ax.set_title(f"{label}\n{title(ds, i)}", fontsize=8)
+    ax.set(xlabel="θ [rad]", ylabel="t [transits]", xticks=[0, np.pi, 2 * np.pi], xticklabels=["0", "π", "2π"])
+    ax.set_title(title(ds, i), fontsize=8)
     return im
 
 
-def waterfall(ax, ds, i, key, step, scale):
+def waterfall(ax, ds, i, key, step, scale, label=""):
+    """Successive profiles of ``key`` (every ``step``-th snapshot) divided by ``scale`` and lifted to
+    their time: the y axis is the time of each profile's baseline."""
     r = ds.isel(run=i)
-    for k, snap in enumerate(range(0, r.sizes["snapshot"], step)):
-        ax.plot(r["theta"], r[key].isel(snapshot=snap) / scale + k, lw=0.7, color="C0")
-    ax.set(xlabel="θ", ylabel="successive times (offset)", xticks=[0, np.pi, 2 * np.pi], xticklabels=["0", "π", "2π"])
+    snaps = list(range(0, r.sizes["snapshot"], step))
+    times = r["snap_t"].values[snaps]
+    lift = np.median(np.diff(times)) if len(times) > 1 else 1.0
+    for snap, t in zip(snaps, times):
+        ax.plot(r["theta"], t + lift * r[key].isel(snapshot=snap) / scale, lw=0.7, color="C0")
+    ax.set(xlabel="θ [rad]", ylabel="t [transits] (baseline of each profile)", xticks=[0, np.pi, 2 * np.pi],
+           xticklabels=["0", "π", "2π"])
+    ax.set_title(f"successive profiles of {label or key}\n(one baseline spacing = {scale:.3g})", fontsize=8)
 
 
 def spacetime_panels(ds, fig, key, label, cmap):
     """A column per run: ``key`` over ``theta`` and time on top (with a colour bar); returns the
     figure and the empty bottom axes, one per run."""
     nrun = ds.sizes["run"]
-    fig = Figure(figsize=(4.5 * nrun, 8)) if fig is None else fig
+    fig = Figure(figsize=(max(5.0 * nrun, 6.0), 9)) if fig is None else fig
     axes = fig.subplots(2, nrun, squeeze=False)
     for i in range(nrun):
-        fig.colorbar(spacetime(axes[0, i], ds, i, key, label, cmap), ax=axes[0, i])
+        fig.colorbar(spacetime(axes[0, i], ds, i, key, label, cmap), ax=axes[0, i], label=label)
     return fig, list(axes[1])

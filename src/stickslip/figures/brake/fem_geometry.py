@@ -68,7 +68,7 @@ def check(ds: xr.Dataset) -> list[Check]:
     where = [f"(xi {ds['xi'].values[i]:g}, beta2 {ds['beta2'].values[j]:g})" for i, j in zip(*np.nonzero(hit))]
     cells = ds.sizes["xi"] * ds.sizes["beta2"]
     return [
-        Check("every run ended in a classified window", bool(np.all(np.isfinite(ds["regime"].values))
+        Check("every run ended in a classified window", bool(np.all(ds["regime"].values >= 0)
                                                              and np.all(np.isfinite(ds["n_zones"].values))),
               f"{int(ds['regime'].size)} runs", "regime and mode number for every run", f"data: {ds.attrs['source']}"),
         Check("some ring thickness xi and damping beta2 give the paper's three regimes and mode numbers at once "
@@ -82,24 +82,26 @@ def check(ds: xr.Dataset) -> list[Check]:
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
     """Per case, the most frequent mode number over (xi, beta2), labelled with the regime."""
     code, n, share = most_frequent(ds)
-    fig, axes = plotting.new_figure(fig, ds.sizes["case"], size=(4.2, 3.8))
+    fig, axes = plotting.new_figure(fig, ds.sizes["case"], size=(3.8, 3.8))
     xi, b2 = ds["xi"].values, ds["beta2"].values
     for c, ax in enumerate(axes):
-        im = ax.imshow(n[c].T, origin="lower", aspect="auto", cmap="viridis", vmin=0, vmax=max(12, int(n.max())))
+        top = max(12, int(n.max()))
+        im = ax.imshow(n[c].T, origin="lower", aspect="auto", cmap="viridis", vmin=0, vmax=top)
         for i in range(xi.size):
             for j in range(b2.size):
                 regime = _NAMES.get(int(code[c, i, j]), "other")
                 ax.text(i, j, f"{n[c, i, j]} {_SHORT.get(regime, '?')}\n{share[c, i, j]:.0%}", ha="center",
-                        va="center", fontsize=7, color="w")
+                        va="center", fontsize=8, color="k" if n[c, i, j] > 0.6 * top else "w")
         regime, modes = PAPER_REGIMES[c]
         f, d, om = CASES[c]
         ax.set(xticks=range(xi.size), xticklabels=[f"{x:g}" for x in xi], yticks=range(b2.size),
-               yticklabels=[f"{b:g}" for b in b2], xlabel="ξ = R*/R", ylabel="β2",
+               yticklabels=[f"{b:g}" for b in b2], xlabel="ξ = R*/R [1]", ylabel="β2 [1]",
                title=f"case {c + 1} (f = {f:g}): paper {modes} modes, {_SHORT[regime]}")
         ax.title.set_fontsize(9)
-        fig.colorbar(im, ax=ax, label="most frequent mode number (stick zones)")
-    fig.suptitle("SS stick-slip, SSS stick-slip-separation, SSep stick-separation; % = share of the runs; "
-                 f"data: {ds.attrs['source'][:80]}", fontsize=8)
+        fig.colorbar(im, ax=ax, label="most frequent mode number [1]")
+    fig.suptitle(plotting.wrap("Cells: most frequent number of stick zones and regime (SS stick-slip, SSS "
+                               "stick-slip-separation, SSep stick-separation), % = share of the runs; "
+                               f"data: {ds.attrs['source'][:80]}", 130), fontsize=9)
     return fig
 
 

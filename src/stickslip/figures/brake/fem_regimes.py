@@ -62,17 +62,19 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
     """Regime names and zone fractions over ``xi`` and ``Omega``."""
     fig, (ax,) = plotting.new_figure(fig, size=(9, 3 + 0.8 * ds.sizes["xi"]))
     sep = ds["fraction"].sel(kind="separation").values
-    im = ax.imshow(sep, origin="lower", cmap="Greys", vmin=0, vmax=max(0.3, float(sep.max())), aspect="auto")
+    top = max(0.3, float(sep.max()))
+    im = ax.imshow(sep, origin="lower", cmap="Greys", vmin=0, vmax=top, aspect="auto")
     for i, xi in enumerate(ds["xi"].values):
         for j, om in enumerate(ds["omega"].values):
             c = ds.sel(xi=xi, omega=om)
             ax.text(j, i, f"{str(c['regime'].values)}\n{int(c['n_zones'])} zones, κ = {float(c['kappa']):.2g}",
-                    ha="center", va="center", fontsize=7, color="C3")
+                    ha="center", va="center", fontsize=7.5, color="w" if sep[i, j] > 0.45 * top else "k")
     ax.set(xticks=range(ds.sizes["omega"]), xticklabels=[f"{o:g}" for o in ds["omega"].values],
            yticks=range(ds.sizes["xi"]), yticklabels=[f"{x:g}" for x in ds["xi"].values], xlabel="Ω [rad/s]",
-           ylabel="ξ = R*/R", title=f"FE regimes, f = 0.7, d = 0.1 mm, R = 0.1 m ({ds.attrs['transits']} transits, "
-                                    "grey: separation fraction)")
-    fig.colorbar(im, ax=ax)
+           ylabel="ξ = R*/R [1]", title=f"FE regimes, f = 0.7, d = 0.1 mm, R = 0.1 m ({ds.attrs['transits']} transits, "
+                                        "grey: separation fraction)")
+    ax.title.set_fontsize(11)
+    fig.colorbar(im, ax=ax, label="separation fraction of the nodes [1]")
     return fig
 
 

@@ -73,7 +73,7 @@ def check(ds: xr.Dataset) -> list[Check]:
     mesh_names = [f"{a} x {b}" for a, b in meshes]
     settled = len(meshes) >= 2  # one mesh cannot settle a claim
     out = [Check("every run ended in a classified window (regime and mode number defined)",
-                 bool(np.all(np.isfinite(ds["regime"].values)) and np.all(np.isfinite(ds["n_zones"].values))
+                 bool(np.all(ds["regime"].values >= 0) and np.all(np.isfinite(ds["n_zones"].values))
                       and np.all(np.abs(ds[["stick", "slip", "reverse_slip", "separation"]].to_array().sum("variable")
                                         - 1.0) < 1e-9)),
                  f"{int(ds['regime'].size)} runs", "regime, mode number and fractions summing to 1 for every run",
@@ -119,30 +119,38 @@ def check(ds: xr.Dataset) -> list[Check]:
 
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
     """Per case, the number of runs ending in each (regime, mode number), per mesh; hatched: not stationary."""
+    from matplotlib.patches import Patch
+
     meshes = _meshes(ds)
-    fig, axes = plotting.new_figure(fig, ds.sizes["case"], size=(5.2, 4.4))
-    width = 0.8 / len(meshes)
-    for case, ax in enumerate(axes):
-        keys = []
+    keys = [[] for _ in range(ds.sizes["case"])]
+    for case in range(ds.sizes["case"]):
         for m in range(len(meshes)):
-            keys += [k for k in outcome_counts(ds, case, m) if k not in keys]
+            keys[case] += [k for k in outcome_counts(ds, case, m) if k not in keys[case]]
+    rows = [0.9 + 0.32 * max(len(k), 1) * max(len(meshes), 1) ** 0.5 for k in keys]
+    if fig is None:
+        fig = Figure(figsize=(9.0, sum(rows) + 0.8))
+    axes = list(fig.subplots(ds.sizes["case"], 1, squeeze=False, height_ratios=rows)[:, 0])
+    height = 0.8 / len(meshes)
+    for case, ax in enumerate(axes):
         for m, (a, b) in enumerate(meshes):
             counts = outcome_counts(ds, case, m)
-            x = np.arange(len(keys)) + (m - (len(meshes) - 1) / 2) * width
-            runs = np.array([counts.get(k, (0, 0))[0] for k in keys])
-            stat = np.array([counts.get(k, (0, 0))[1] for k in keys])
-            ax.bar(x, stat, width, color=f"C{m}", label=f"{a} x {b}")
-            ax.bar(x, runs - stat, width, bottom=stat, color=f"C{m}", alpha=0.4, hatch="//", edgecolor="w")
+            y = np.arange(len(keys[case])) + (m - (len(meshes) - 1) / 2) * height
+            runs = np.array([counts.get(k, (0, 0))[0] for k in keys[case]])
+            stat = np.array([counts.get(k, (0, 0))[1] for k in keys[case]])
+            ax.barh(y, stat, height, color=f"C{m}", label=f"{a} x {b}")
+            ax.barh(y, runs - stat, height, left=stat, color=f"C{m}", alpha=0.4, hatch="//", edgecolor="w")
         regime, modes = PAPER_REGIMES[case]
-        ax.set_xticks(np.arange(len(keys)), [f"{r}\n{n} modes" for r, n in keys], rotation=60, fontsize=7,
-                      ha="right")
+        ax.set_yticks(np.arange(len(keys[case])), [f"{r}, {n} modes" for r, n in keys[case]], fontsize=8)
+        ax.invert_yaxis()
         f, d, om = CASES[case]
-        ax.set(ylabel="runs", title=f"case {case + 1}: f = {f:g}, d = {d * 1e3:g} mm, Ω = {om:g} rad/s\n"
-                                    f"paper: {regime}, {modes} modes")
+        ax.set(xlabel="number of runs [1]", ylabel="limit regime",
+               title=f"case {case + 1}: f = {f:g}, d = {d * 1e3:g} mm, Ω = {om:g} rad/s; paper: {regime}, {modes} modes")
         ax.title.set_fontsize(9)
-    axes[0].legend(fontsize=7, title="mesh (hatched: not stationary)", title_fontsize=7)
-    fig.suptitle(f"Limit regimes from unseeded starts ({ds.sizes['seed']} runs per case and mesh); "
-                 f"data: {ds.attrs['source'][:90]}", fontsize=8)
+    handles, labels = axes[0].get_legend_handles_labels()
+    handles.append(Patch(facecolor="0.75", hatch="//", edgecolor="w", label="not stationary (pale, hatched)"))
+    plotting.legend_beside(axes[0], handles=handles, title="mesh", title_fontsize=8)
+    fig.suptitle(plotting.wrap(f"Limit regimes from unseeded starts ({ds.sizes['seed']} runs per case and mesh); "
+                               f"data: {ds.attrs['source'][:90]}", 110), fontsize=9)
     return fig
 
 

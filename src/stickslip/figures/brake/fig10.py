@@ -6,6 +6,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
+from ... import plotting
 from .. import Check, FigureSpec
 from .fem_cases import METHOD, runs_text, spacetime_panels
 
@@ -26,17 +27,18 @@ def check(ds) -> list[Check]:
 
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
     """Figure 10: contact pressure ``p / p_e`` vs ``theta`` (space-time and successive profiles)."""
-    fig, bottom = spacetime_panels(ds, fig, "P", "contact pressure p / p_e", "viridis")
+    fig, bottom = spacetime_panels(ds, fig, "P", "contact pressure p / p_e [1]", "viridis")
     for i, ax in enumerate(bottom):
         r = ds.isel(run=i)
         for k in (0, r.sizes["snapshot"] // 4, r.sizes["snapshot"] - 1):
-            ax.plot(r["theta"], r["P"].isel(snapshot=k), lw=0.8, label=f"t = {float(r['snap_t'][k]):.2f} transits")
+            ax.plot(r["theta"], r["P"].isel(snapshot=k), lw=0.8, label=f"t = {float(r['snap_t'][k]):.2f}")
         ax.axhline(1.0, color="k", lw=0.4)
-        ax.set(xlabel="θ", ylabel="p / p_e", xticks=[0, np.pi, 2 * np.pi], xticklabels=["0", "π", "2π"])
-        ax.legend(fontsize=7)
+        ax.set(xlabel="θ [rad]", ylabel="contact pressure p / p_e [1]", xticks=[0, np.pi, 2 * np.pi],
+               xticklabels=["0", "π", "2π"])
+        plotting.legend_above(ax, title="profiles at t [transits]", title_fontsize=8)
     a = ds.attrs
-    fig.suptitle(f"Figure 10: contact pressure, f = {a['friction']:g}, δ = {a['delta']:g}, Ω = {a['omega']:g} rad/s "
-                 f"(p_e = {a['p_e']:.3g} E); {a['mesh']}", fontsize=9)
+    fig.suptitle(plotting.wrap(f"Figure 10: contact pressure, f = {a['friction']:g}, δ = {a['delta']:g}, "
+                               f"Ω = {a['omega']:g} rad/s (p_e = {a['p_e']:.3g} E); {a['mesh']}", 110), fontsize=9)
     return fig
 
 

@@ -86,24 +86,44 @@ def check(ds: xr.Dataset) -> list[Check]:
 
 
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
-    fig, (ax1, ax2) = plotting.new_figure(fig, 2, size=(6.0, 4.6))
+    """Top: the radial displacement ``u_r(R) = U R`` over a period at a few mismatches, on a log
+    scale (it equals ``d`` in contact, so each curve sits at its own level and every separation
+    bump shows; ``U/delta - 1`` would put the contact parts of all curves on 0 and let the
+    smallest ``d`` flatten the rest). Bottom: the switching points along the branch."""
+    from matplotlib import colormaps
+    from matplotlib.lines import Line2D
+    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+
+    fig, (ax1, ax2) = plotting.new_figure(fig, 1, 2, size=(10.5, 4.4))
     phi = ds["profile_phi"].values
-    for k, i in enumerate(ds["profile_point"].values):
-        ax1.plot(phi, ds["profile_U"].values[k] / float(ds["delta"][i]) - 1.0,
-                 label=f"d = {float(ds['mismatch'][i]) * 1e6:.3g} µm ({ds['structure'].values[i]})", lw=1)
-    ax1.set(xlabel="φ", ylabel="U/δ − 1 (gap over mismatch)", title="radial displacement")
-    ax1.legend(fontsize=6)
+    radius = ds["mismatch"].values / ds["delta"].values  # R [m] (d = delta R)
+    points = ds["profile_point"].values
+    colours = colormaps["viridis"](np.linspace(0.0, 0.9, len(points)))
+    for k, i in enumerate(points):
+        ax1.plot(phi, ds["profile_U"].values[k] * radius[i] * 1e6, color=colours[k], lw=1.2,
+                 label=f"{float(ds['mismatch'][i]) * 1e6:.3g} µm: {ds['structure'].values[i]}")
+    ax1.set(yscale="log", xlabel="φ [rad]", ylabel="u_r(R) = U R [µm] (log scale)",
+            title="radial displacement over a period (= d in contact, > d in separation)")
+    ax1.yaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
+    ax1.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+    ax1.yaxis.set_minor_formatter(NullFormatter())
+    plotting.legend_beside(ax1, title="mismatch d: zones", title_fontsize=8)
     d = ds["mismatch"].values * 1e6
     for z in ds["zone"].values:
         kinds = ds["zone_kind"].values[:, z]
         for kind, colour in plotting.ZONE_COLOURS.items():
             sel = kinds == kind
-            ax2.plot(np.where(sel, d, np.nan), np.where(sel, ds["zone_start"].values[:, z], np.nan), ".",
+            ax2.plot(np.where(sel, d, np.nan), np.where(sel, ds["zone_start"].values[:, z], np.nan), "o",
                      color=colour, ms=3)
     for e in ds["event_parameter"].values:
-        ax2.axvline(e * 0.1 * 1e6, color="grey", lw=0.6, ls=":")
-    ax2.set(xscale="log", xlabel="mismatch d [µm]", ylabel="zone start φ", title="switching points (start of zone)")
-    plotting.zone_legend(ax2)
+        ax2.axvline(e * float(np.median(radius)) * 1e6, color="grey", lw=0.6, ls=":")
+    ax2.set(xscale="log", xlabel="mismatch d [µm]", ylabel="zone start φ [rad]",
+            title="switching points (start of each zone) along the branch")
+    kinds = {str(k) for k in np.ravel(ds["zone_kind"].values)}
+    handles = [Line2D([], [], ls="none", marker="o", ms=4, color=c, label=k) for k, c in plotting.ZONE_COLOURS.items()
+               if k in kinds]
+    handles.append(Line2D([], [], color="grey", lw=0.6, ls=":", label="birth or death\nof a zone"))
+    plotting.legend_beside(ax2, handles=handles, title="start of a zone", title_fontsize=8)
     return fig
 
 

@@ -28,7 +28,7 @@ def check(ds: xr.Dataset) -> list[Check]:
 
 
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
-    return phase_plot(ds, fig, [("V", "dV", "V (units of R)", "V' = dV/dφ")],
+    return phase_plot(ds, fig, [("V", "dV", "V [R]", "V' = dV/dφ [R/rad]")],
                       f"Fig. 5: stick-slip waves, n = {ds.attrs['modes']}, f = {ds.attrs['friction']}, several Ω")
 
 

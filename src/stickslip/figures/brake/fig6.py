@@ -26,7 +26,7 @@ def check(ds: xr.Dataset) -> list[Check]:
 
 
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
-    return phase_plot(ds, fig, [("U", "dU", "U (units of R)", "U' = dU/dφ"), ("V", "dV", "V (units of R)", "V'")],
+    return phase_plot(ds, fig, [("U", "dU", "U [R]", "U' = dU/dφ [R/rad]"), ("V", "dV", "V [R]", "V' = dV/dφ [R/rad]")],
                       f"Fig. 6: stick-slip-separation waves, n = {ds.attrs['modes']}, f = {ds.attrs['friction']}")
 
 

@@ -6,6 +6,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
+from ... import plotting
 from .. import Check, FigureSpec
 from .fem_cases import METHOD, case_data, common_checks, runs_text, seeded_check, spacetime_panels, waterfall
 
@@ -30,12 +31,12 @@ def check(ds) -> list[Check]:
 
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
     """Figure 9: radial displacement ``u_r(R)/d - 1`` vs ``theta`` and ``t`` (propagation)."""
-    fig, bottom = spacetime_panels(ds, fig, "U", "u_r(R)/d - 1 (> 0: separated)", "magma")
+    fig, bottom = spacetime_panels(ds, fig, "U", "u_r(R)/d − 1 [1] (> 0: separated)", "magma")
     for i, ax in enumerate(bottom):
-        waterfall(ax, ds, i, "U", 4, max(float(ds["U"].isel(run=i).max()), 1e-12))
+        waterfall(ax, ds, i, "U", 4, max(float(ds["U"].isel(run=i).max()), 1e-12), "u_r(R)/d − 1")
     a = ds.attrs
-    fig.suptitle(f"Figure 9: f = {a['friction']:g}, δ = {a['delta']:g}, Ω = {a['omega']:g} rad/s; {a['mesh']}; "
-                 f"paper: {a['paper_regime']}, {a['paper_modes']} modes", fontsize=9)
+    fig.suptitle(plotting.wrap(f"Figure 9: f = {a['friction']:g}, δ = {a['delta']:g}, Ω = {a['omega']:g} rad/s; "
+                               f"{a['mesh']}; paper: {a['paper_regime']}, {a['paper_modes']} modes", 110), fontsize=9)
     return fig
 
 

@@ -61,23 +61,43 @@ def check(ds: xr.Dataset) -> list[Check]:
 
 
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
-    """Energy histories and final node states for the two seeds on the finest grid."""
-    fig, axes = plotting.new_figure(fig, 1 + ds.sizes["seed"], size=(4.0, 3.8))
+    """Energy histories (whole runs on a log scale; the second half, where the limit regimes
+    are told apart, on a linear one) and the final node states of the two seeds on the finest grid."""
+    from matplotlib.lines import Line2D
+
+    nseed = ds.sizes["seed"]
+    fig, axes = plotting.new_figure(fig, max(nseed, 2), 2, size=(5.4, 4.2))
+    styles = ["-", "--", ":", "-."]
+    transit = ds["transit"].values
+    late = transit >= transit[-1] / 2
     for g, N in enumerate(ds["grid"].values):
         for k, seed in enumerate(ds["seed"].values):
-            axes[0].plot(ds["transit"], ds["energy"].sel(grid=N, seed=seed), color=f"C{k}", lw=0.8,
-                         ls=["-", "--", ":"][g % 3], label=f"{seed}, N={N}")
-    late = ds["energy_late"].values
-    axes[0].set(xlabel="transits", ylabel="energy of the deviation", ylim=(0.9 * late.min(), 1.1 * late.max()),
-                title=f"f={ds.attrs['friction']:g}, δ={ds.attrs['delta']:g}, Ω={ds.attrs['omega']:g}, β2=0.9")
-    axes[0].legend(fontsize=6)
+            energy = ds["energy"].sel(grid=N, seed=seed).values
+            style = {"color": f"C{k}", "lw": 0.8, "ls": styles[g % 4]}
+            axes[0].semilogy(transit, energy, **style)
+            axes[1].plot(transit[late], energy[late], **style)
+    a = ds.attrs
+    axes[0].set(xlabel="t [transits]", ylabel="energy of the deviation [E R²/M]",
+                title=f"whole runs: f = {a['friction']:g}, δ = {a['delta']:g}, Ω = {a['omega']:g} rad/s, β2 = 0.9")
+    axes[1].set(xlabel="t [transits]", ylabel="energy of the deviation [E R²/M]",
+                title="second half of the runs (linear scale)")
+    for ax in axes[:2]:
+        ax.title.set_fontsize(9)
+    handles = [Line2D([], [], color=f"C{k}", label=f"seeded {seed}") for k, seed in enumerate(ds["seed"].values)]
+    handles += [Line2D([], [], color="k", lw=0.8, ls=styles[g % 4], label=f"N = {N}")
+                for g, N in enumerate(ds["grid"].values)]
+    plotting.legend_beside(axes[1], handles=handles)
     last = ds.isel(grid=-1)
     for k, seed in enumerate(ds["seed"].values):
         c = last.sel(seed=seed)
-        plotting.state_image(axes[k + 1], c["state"].values,
-                             f"seeded {seed}, N={int(last.grid)}: {str(c['regime'].values)}, dominant n={int(c['n_fft'])}, "
-                             f"c/√a={float(c['c_over_sqrt_a']):.2f}")
-        axes[k + 1].set(xlabel="θ", ylabel="t [transits]")
+        ax = axes[len(axes) // 2 + k]
+        plotting.state_image(ax, c["state"].values,
+                             f"seeded {seed}, N = {int(last.grid)}: {str(c['regime'].values)},\ndominant n = "
+                             f"{int(c['n_fft'])}, c/√a = {float(c['c_over_sqrt_a']):.2f}")
+        ax.set(xlabel="θ [rad]", ylabel="t [transits], last 2")
+    plotting.state_legend(axes[len(axes) // 2 + nseed - 1])
+    for ax in axes[2:len(axes) // 2] + axes[len(axes) // 2 + nseed:]:
+        ax.set_visible(False)
     return fig
 
 

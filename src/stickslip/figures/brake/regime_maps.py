@@ -26,7 +26,9 @@ def compute(quick: bool, cache: Path | None = None) -> xr.Dataset:
         ring = ring_regime_map(frictions, mismatches, root / "ring.zarr", omega=OMEGA,
                                transits=100.0 if quick else 150.0)
     ds = xr.merge([waves.drop_vars("done"), ring.drop_vars("done")], combine_attrs="drop")
-    ds.attrs.update({"omega": OMEGA, "modes": MODES, "codes": repr(REGIME_CODES), "nodes": ring.attrs["nodes"],
+    for name in ("wave_regime", "ring_regime"):  # merge drops variable attributes too: the codes' flags back
+        ds[name].attrs = dict(waves[name].attrs if name in waves else ring[name].attrs)
+    ds.attrs.update({"omega": OMEGA, "modes": MODES, "nodes": ring.attrs["nodes"],
                      "transits": ring.attrs["transits"]})
     return ds
 
@@ -34,15 +36,16 @@ def compute(quick: bool, cache: Path | None = None) -> xr.Dataset:
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
     from matplotlib.colors import ListedColormap
 
-    fig, axes = plotting.new_figure(fig, 2, size=(6.8, 4.8))
+    fig, axes = plotting.new_figure(fig, 2, size=(5.6, 4.6))
     cmap = ListedColormap(COLOURS)
     for ax, name, title in ((axes[0], "wave_regime", f"principal travelling wave, n = {ds.attrs['modes']}"),
                             (axes[1], "ring_regime", "limit regime of the ring integration")):
         ax.pcolormesh(ds.mismatch * 1e6, ds.friction, ds[name], cmap=cmap, vmin=-0.5, vmax=7.5, shading="nearest")
-        ax.set(xscale="log", xlabel="mismatch d [µm]", ylabel="friction f", title=title)
+        ax.set(xscale="log", xlabel="mismatch d [µm]", ylabel="friction coefficient f [1]", title=title)
+        ax.title.set_fontsize(10)
     for name, code in REGIME_CODES.items():
         axes[1].plot([], [], "s", color=COLOURS[code], ms=9, label=name if name != "none" else "no wave found")
-    axes[1].legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
+    plotting.legend_beside(axes[1], title="regime (both maps)", title_fontsize=8)
     fig.suptitle(f"Steel ring R = 0.1 m, R* = 0.15 m, Ω = {ds.attrs['omega']:g} rad/s", fontsize=10)
     return fig
 

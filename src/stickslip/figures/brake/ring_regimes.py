@@ -117,49 +117,85 @@ def check(ds: xr.Dataset) -> list[Check]:
 
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
     """Node states (space-time) per case and scheme, energies, growth selection, and the sweep."""
+    from matplotlib.lines import Line2D
+
     ncase, nset = ds.sizes["case"], ds.sizes["setting"]
-    fig = Figure(figsize=(13, 9)) if fig is None else fig
-    grid = fig.add_gridspec(3, ncase + 1)
-    for i in range(ncase):
-        for j in range(nset):
-            ax = fig.add_subplot(grid[j, i])
+    fig = Figure(figsize=(11.5, 3.2 * nset + 7.4)) if fig is None else fig
+    grid = fig.add_gridspec(nset + 2, 2 * ncase, height_ratios=[1.0] * nset + [1.1, 1.1])
+    first_row, first_col = [], []
+    for j in range(nset):
+        for i in range(ncase):
+            ax = fig.add_subplot(grid[j, 2 * i:2 * i + 2], sharex=first_row[i] if j else None,
+                                 sharey=first_col[j] if i else None)
+            first_row += [ax] if j == 0 else []
+            first_col += [ax] if i == 0 else []
             c = ds.isel(case=i, setting=j)
             plotting.state_image(ax, c["state"].values,
-                                 f"f={float(c.friction):g}, δ={float(c.delta):g}, Ω={float(c.omega_case):g}: "
-                                 f"β2={float(c.beta2_setting):g}, N={int(c.nodes)}\n{str(c['regime'].values)}, "
-                                 f"n={int(c['n_fft'])}, c/√a={float(c['c_over_sqrt_a']):.2f}"
-                                 f" (FE: {str(c.paper_regime.values)}, {int(c.paper_modes)})")
-            ax.set(xlabel="θ" if j == nset - 1 else "", ylabel="t [transits]" if i == 0 else "")
-    ax = fig.add_subplot(grid[0, ncase])
+                                 f"case {i + 1}: f = {float(c.friction):g}, δ = {float(c.delta):g}, "
+                                 f"Ω = {float(c.omega_case):g} rad/s\nβ2 = {float(c.beta2_setting):g}, N = {int(c.nodes)}: "
+                                 f"{str(c['regime'].values)}, n = {int(c['n_fft'])}\nc/√a = "
+                                 f"{float(c['c_over_sqrt_a']):.2f}; FE: {str(c.paper_regime.values)}, "
+                                 f"{int(c.paper_modes)} modes")
+            ax.tick_params(labelbottom=j == nset - 1, labelleft=i == 0)
+            if j == nset - 1:
+                ax.set_xlabel("θ [rad]")
+            if i == 0:
+                ax.set_ylabel("t [transits], last 2")
+            if j == 0 and i == ncase - 1:
+                plotting.state_legend(ax)
+    styles = ["-", "--", ":", "-."]
+    ax = fig.add_subplot(grid[nset, :ncase])
     for i in range(ncase):
         for j in range(nset):
-            ax.semilogy(ds["transit"], ds["energy"].isel(case=i, setting=j), lw=0.8, ls="-" if j == 0 else "--",
-                        color=f"C{i}", label=f"case {i + 1}, β2={float(ds.beta2_setting[j]):g}")
-    ax.set(xlabel="transits", ylabel="energy of the deviation", title="growth and saturation")
-    ax.legend(fontsize=6)
-    ax = fig.add_subplot(grid[1, ncase])
+            ax.semilogy(ds["transit"], ds["energy"].isel(case=i, setting=j), lw=0.8, ls=styles[j % 4], color=f"C{i}")
+    ax.set(xlabel="t [transits]", ylabel="energy of the deviation [E R²/M]")
+    handles = [Line2D([], [], color=f"C{i}", label=f"case {i + 1}") for i in range(ncase)]
+    handles += [Line2D([], [], color="k", lw=0.8, ls=styles[j % 4], label=f"β2 = {float(ds.beta2_setting[j]):g}")
+                for j in range(nset)]
+    plotting.legend_above(ax, handles=handles, ncol=3, title="growth and saturation", title_fontsize=9)
+    ax = fig.add_subplot(grid[nset, ncase:])
     for k, b2 in enumerate(ds["beta2"].values):
         for g, N in enumerate(ds["grid"].values):
             ax.plot(ds["mode"], ds["growth"].isel(case=1).sel(beta2=b2, grid=N), ls="-" if k == 0 else ":",
-                    color=f"C{g}", label=f"N={N}, β2={b2:g}")
+                    color=f"C{g}")
             if k == 0:
                 ax.plot(ds["mode"], ds["growth"].isel(case=0).sel(beta2=b2, grid=N), ls="-.", color=f"C{g}", lw=0.7)
-    ax.plot(ds["mode"], ds["growth_continuous"].isel(case=1), "k-", lw=2, label="continuous (case 2)")
-    ax.plot(ds["mode"], ds["growth_continuous"].isel(case=0), "k-.", lw=1, label="continuous (case 1, -. β2=0.9)")
+    ax.plot(ds["mode"], ds["growth_continuous"].isel(case=1), "k-", lw=2)
+    ax.plot(ds["mode"], ds["growth_continuous"].isel(case=0), "k-.", lw=1)
     ax.axhline(0, color="k", lw=0.5)
-    ax.set(xlabel="n", ylabel="Re s per transit", title="steady sliding: fully discrete growth", ylim=(-1.5, None))
-    ax.legend(fontsize=6)
-    ax = fig.add_subplot(grid[2, :])
+    ax.set_yscale("symlog", linthresh=1.0)
+    ax.set(xlabel="mode number n [1]", ylabel="Re s [1/transit] (symlog)")
+    ax.set_title("fully discrete growth of steady sliding", fontsize=10)
+    handles = [Line2D([], [], color=f"C{g}", label=f"N = {N}") for g, N in enumerate(ds["grid"].values)]
+    handles += [Line2D([], [], color="k", lw=2, label="continuous model"),
+                Line2D([], [], color="0.4", ls="-", label="case 2, β2 = 0.9"),
+                Line2D([], [], color="0.4", ls=":", label="case 2, β2 = 0.5"),
+                Line2D([], [], color="0.4", ls="-.", lw=0.7, label="case 1, β2 = 0.9")]
+    plotting.legend_beside(ax, handles=handles)
+    ax = fig.add_subplot(grid[nset + 1, :])
     sep, stick = ds["sweep_fraction"].sel(kind="separation"), ds["sweep_fraction"].sel(kind="stick")
+    markers = {"stick-slip": "o", "stick-slip-separation": "^", "stick-separation": "s",
+               "stick-slip-reverse-slip": "v", "stick-slip-separation-reverse-slip": "D"}
+    met = []
     for x, xi in enumerate(ds["xi"].values):
-        S = ds["sweep_S"].sel(xi=xi)
-        ax.semilogx(S, sep.sel(xi=xi), "o-", color=f"C{x}", label=f"separation, ξ={xi:g}")
-        ax.semilogx(S, stick.sel(xi=xi), "s--", color=f"C{x}", label=f"stick, ξ={xi:g}")
-        for s_, om, r in zip(S.values, ds["omega"].values, ds["sweep_regime"].sel(xi=xi).values):
-            ax.annotate(f"Ω={om:g}\n{r}", (s_, float(sep.sel(xi=xi).sel(omega=om))), fontsize=5)
-    ax.set(xlabel="separation number S = g δ √a / |D|", ylabel="node fraction",
-           title=f"sweep f = 0.7, d = 0.1 mm, β2 = 0.9, N = {ds.attrs['sweep_nodes']}")
-    ax.legend(fontsize=6, ncol=2)
+        S = ds["sweep_S"].sel(xi=xi).values
+        order = np.argsort(S)
+        ax.plot(S[order], sep.sel(xi=xi).values[order], "-", color=f"C{x}")
+        ax.plot(S[order], stick.sel(xi=xi).values[order], "--", color=f"C{x}")
+        for s_, f_, r in zip(S, sep.sel(xi=xi).values, ds["sweep_regime"].sel(xi=xi).values):
+            r = str(r)
+            met += [r] if r not in met else []
+            ax.plot(s_, f_, markers.get(r, "X"), color=f"C{x}", ms=7, mec="k", mew=0.6)
+    ax.set_xscale("log")
+    om = ds["omega"].values
+    ax.set(xlabel="separation number S = g δ √a / |D| [1]", ylabel="node fraction [1]",
+           title=f"sweep over ξ and Ω = {om.min():g} to {om.max():g} rad/s: f = 0.7, d = 0.1 mm, β2 = 0.9, "
+                 f"N = {ds.attrs['sweep_nodes']}")
+    handles = [Line2D([], [], color=f"C{x}", label=f"ξ = {xi:g}") for x, xi in enumerate(ds["xi"].values)]
+    handles += [Line2D([], [], color="k", ls="-", label="separation fraction"),
+                Line2D([], [], color="k", ls="--", label="stick fraction")]
+    handles += [Line2D([], [], ls="none", marker=markers.get(r, "X"), color="w", mec="k", ms=7, label=r) for r in met]
+    plotting.legend_beside(ax, handles=handles, title="marker: regime", title_fontsize=8)
     return fig
 
 

@@ -66,7 +66,7 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
         line, = ax1.plot(ds["n"], c["growth_rate_si"], "o-", ms=3, label=label)
         ax1.axhline(float(c.omega * c.growth_rate_limit), color=line.get_color(), ls="--", lw=0.8)
         ax1.plot(ds["n_grid"], c.omega * c["growth_rate_grid"], "x", color="k", ms=5)
-    ax1.set(xlabel="mode number n", ylabel="growth rate Ω Re s [1/s]", yscale="log",
+    ax1.set(xlabel="mode number n [1]", ylabel="growth rate Ω Re s [1/s]", yscale="log",
             title="flutter of steady sliding (x: θ-grid operator, --: n → ∞)")
     ax1.legend(fontsize=8)
     for nu in ds["nu"].values:
@@ -76,7 +76,7 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
             ax2.axvline(x_star, color=line.get_color(), ls=":", lw=0.8)
     ax2.axhline(0.0, color="k", lw=0.6)
     ax2.axvline(ds.attrs["xi_case"], color="grey", ls="--", lw=0.8)
-    ax2.set(xscale="log", xlabel="ξ = R*/R", ylabel="(ã C1 − b̃ C2) / (ã C1 + b̃ C2)",
+    ax2.set(xscale="log", xlabel="ξ = R*/R [1]", ylabel="(ã C1 − b̃ C2) / (ã C1 + b̃ C2) [1]",
             title="sign of the coupling D (no flutter where D = 0)")
     ax2.legend(fontsize=8)
     return fig

@@ -127,20 +127,37 @@ def by_zone(ax, x, y, zone, kinds):
 
 
 def phase_plot(ds, fig, pairs, title) -> Figure:
-    fig, axes = plotting.new_figure(fig, len(pairs), size=(5.6, 4.6))
+    """Phase planes ``pairs = [(x, y, x label, y label), ...]`` of every case, coloured by zone;
+    with several shaft speeds each orbit is labelled with its Ω just above its top (orbits nest)."""
+    from matplotlib.lines import Line2D
+
+    fig, axes = plotting.new_figure(fig, len(pairs), size=(4.9, 4.6) if len(pairs) > 1 else (7.0, 5.2))
+    shown, chords = set(), False
     for ax, (xk, yk, xl, yl) in zip(axes, pairs):
+        labelled = "omega" in ds.coords and len(ds["case"]) > 1 and xk != "phi"
+        orbits, labels = [], []
         for i in ds["case"].values:
             c = ds.sel(case=i)
             kinds = [str(k) for k in c["zone_kind"].values]
             x, y = c[xk].values, c[yk].values
             if xk != "phi":  # closed orbit; jumps (impacts) show as dashed chords
                 ax.plot(np.append(x, x[0]), np.append(y, y[0]), color="0.6", lw=0.7, ls="--")
+                jumps = np.hypot(np.diff(x) / np.ptp(x), np.diff(y) / np.ptp(y))
+                chords |= bool(np.nanmax(jumps) > 0.02 or np.hypot((x[-1] - x[0]) / np.ptp(x),
+                                                                   (y[-1] - y[0]) / np.ptp(y)) > 0.02)
             by_zone(ax, x, y, c["zone"].values, kinds)
-            if "omega" in c.coords and len(ds["case"]) > 1:
-                k = int(np.argmax(x))
-                ax.annotate(f"Ω = {float(c.omega):g}", (x[k], y[k]), fontsize=7)
+            shown |= {kinds[int(z)] for z in np.unique(c["zone"].values) if 0 <= int(z) < len(kinds)}
+            orbits.append((x, y))
+            labels.append(f"Ω = {float(c.omega):g}")
         ax.set(xlabel=xl, ylabel=yl)
+        if labelled:  # each orbit labelled beside it, off every curve (orbits nest)
+            ax.margins(x=0.1, y=0.12)
+            plotting.label_curves(ax, orbits, labels)
         ax.ticklabel_format(style="sci", scilimits=(-3, 3))
-        plotting.zone_legend(ax)
-    fig.suptitle(title, fontsize=10)
+    handles = [Line2D([], [], color=plotting.ZONE_COLOURS[k], lw=1.4, label=k) for k in plotting.ZONE_COLOURS
+               if k in shown]
+    if chords:
+        handles.append(Line2D([], [], color="0.6", lw=0.7, ls="--", label="jump (impact)\nor closing chord"))
+    plotting.legend_beside(axes[-1], handles=handles, title="zone", title_fontsize=8)
+    fig.suptitle(title + (" (Ω in rad/s)" if "omega" in ds.coords and len(ds["case"]) > 1 else ""), fontsize=10)
     return fig

@@ -63,7 +63,7 @@ def compute(quick: bool = False) -> xr.Dataset:
          "growth_rate": ("case", col(7), {"long_name": "growth of a small perturbation (internal time)"}),
          "max_drift": ("case", col(8), {"long_name": "max distance to the exact wave / amplitude"}),
          "lands_into_stick": ("case", col(9), {"long_name": "the wave's landing impact ends in stick"}),
-         "ring_reverse": ("case", col(10), {"long_name": "reverse-slip fraction in the ring run"}),
+         "ring_reverse": ("case", col(10), {"units": "1", "long_name": "reverse-slip fraction in the ring run"}),
          "time": (("case", "sample"), np.array([pad(t) for t in times])),
          "drift": (("case", "sample"), np.array([pad(d) for d in drift])),
          "separation": (("case", "sample"), np.array([pad(s) for s in sep])),
@@ -71,19 +71,19 @@ def compute(quick: bool = False) -> xr.Dataset:
          "noise_stationary": ((), int(noise.stationary)),
          "noise_wave_c": ((), same_n[0].c if same_n else np.nan)},
         coords={"case": col(0)},
-        attrs={"nodes": nodes, "transits": transits, "from_noise": repr(FROM_NOISE)})
+        attrs={"nodes": nodes, "transits": transits, "from_noise": dict(FROM_NOISE)})
 
 
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
-    fig, (a1, a2) = plotting.new_figure(fig, 2, size=(6, 4.3))
+    fig, (a1, a2) = plotting.new_figure(fig, 2, size=(5.6, 4.3))
     for i, label in enumerate(ds.case.values):
         a1.semilogy(ds.time[i], ds.separation[i], label=f"{label} (rate {float(ds.growth_rate[i]):+.3f})")
         a2.plot(ds.time[i], ds.drift[i], label=label)
-    a1.set(xlabel="time (internal units)", ylabel="perturbed − unperturbed (aligned) / initial",
+    a1.set(xlabel="time τ = Ωt / √γ [1]", ylabel="perturbed − unperturbed (aligned) / initial [1]",
            title="stability: growth of a small perturbation")
-    a2.set(xlabel="time (internal units)", ylabel="distance to the exact wave / amplitude",
+    a2.set(xlabel="time τ = Ωt / √γ [1]", ylabel="distance to the exact wave / amplitude [1]",
            title="the ring carries the wave (started on it)")
-    a1.legend(fontsize=7), a2.legend(fontsize=7)
+    a1.legend(fontsize=8), a2.legend(fontsize=8)
     return fig
 
 

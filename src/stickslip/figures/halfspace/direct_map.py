@@ -57,11 +57,11 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
     for ax, system in zip(axes, ("printed", "text")):
         d = ds.sel(system=system, solution=0)
         m = ax.pcolormesh(d.T_ratio.values, d.v_ratio.values, d.c.values, shading="auto")
-        fig.colorbar(m, ax=ax, label="c / c2 (blank: no wave)")
+        fig.colorbar(m, ax=ax, label="wave speed c / c2 [1] (blank: no wave)")
         ax.set_xscale("log")
         ax.set_yscale("log")
-        ax.set_xlabel("T / v*")
-        ax.set_ylabel("v / v*")
+        ax.set_xlabel("T / v* [1]")
+        ax.set_ylabel("v / v* [1]")
         ax.set_title(f"direct problem, {system}: max {int(ds.n_solutions.sel(system=system).max())} wave(s)")
     return fig
 

@@ -133,21 +133,22 @@ def check(ds: xr.Dataset) -> list[Check]:
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
 
     b = ds.attrs["b"]
-    fig, (ax, ax2) = plotting.new_figure(fig, 2, size=(5.5, 4.2))
+    fig, (ax, ax2) = plotting.new_figure(fig, 2, size=(5.7, 4.4))
     x = ds.x.values
     for k in range(0, 2):
         ax.axvspan(k * b, k * b + 1.0, color="0.9", lw=0)
     for variant, style in (("paper", "-"), ("decaying", "--")):
         y = ds.Sigma_yy.sel(variant=variant).values
-        ax.plot(x, y, style, lw=1.2, label=f"{variant} (v = {ds.attrs['v_' + variant]:.4g})")
+        # the stresses are singular at the zone edges: the curves are clipped there, on purpose
+        ax.plot(x, y, style, lw=1.2, label=f"{variant} (v = {ds.attrs['v_' + variant]:.4g})", gid=plotting.CLIPPED)
     ax.axhline(0, color="k", lw=0.6)
     yr = ds.Sigma_yy.sel(variant="paper").values
     lo = np.nanmin(yr)
     ax.set_ylim(1.6 * lo, -1.2 * lo)
-    ax.set_xlabel("x / a   (grey: stick, white: slip)")
-    ax.set_ylabel(r"$\Sigma_{yy}/G$")
+    ax.set_xlabel("x / a [1]   (grey: stick, white: slip)")
+    ax.set_ylabel(r"$\Sigma_{yy}/G$ [1]")
     ax.set_title(f"Figure 14: c = {ds.attrs['cbar']}, b = {b:.4g}, T = {ds.attrs['T']:.3g}")
-    ax.legend(fontsize=8, loc="lower right")
+    plotting.legend_beside(ax, title="clipped at the\nsingular zone edges", title_fontsize=8)
     sel = (ds.zone.values == 1) & (x < b)
     stick = np.flatnonzero(ds.zone.values == 0)[0]
     for variant, style in (("paper", "-"), ("decaying", "--")):
@@ -158,9 +159,10 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
     s = ds.sigma_yy.sel(variant="paper").values
     k = (s[sel] - s[stick])[-1] / (b - x[sel])[-1] ** (alpha - 0.5)
     ax2.loglog(xs, 2 * k * xs ** (alpha - 0.5), "k:", label=fr"slope $\alpha - 1/2$ = {alpha - 0.5:.3f}")
-    ax2.set_xlabel("b - x (slip side)")
-    ax2.set_ylabel(r"$(\sigma_{yy} - \sigma_{yy}^{stick})/G$")
-    ax2.legend(fontsize=8, loc="upper right")
+    ax2.set_xlabel("b − x [a] (slip side)")
+    ax2.set_ylabel(r"$(\sigma_{yy} - \sigma_{yy}^{stick})/G$ [1]")
+    ax2.set_title("the singularity at the slip end")
+    plotting.legend_beside(ax2)
     return fig
 
 

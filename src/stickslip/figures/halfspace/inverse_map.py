@@ -75,24 +75,35 @@ def check(ds: xr.Dataset) -> list[Check]:
 
 
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
-    fig, axes = plotting.new_figure(fig, 3, size=(4.7, 4.2))
+    from matplotlib.colors import ListedColormap
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    fig, axes = plotting.new_figure(fig, 3, size=(3.8, 4.2))
     pr = ds.sel(system="printed")
     bm1 = ds.b.values - 1.0
     m = axes[0].pcolormesh(ds.c.values, bm1, pr.v.values / ds.attrs["v_star"], shading="auto")
-    fig.colorbar(m, ax=axes[0], label="v / v*")
-    axes[0].set_title("printed [54]-[55]: v / v* (independent of b)")
+    fig.colorbar(m, ax=axes[0], label="v / v* [1]")
+    axes[0].set_title("printed [54]-[55]: v / v*\n(independent of b)")
     m = axes[1].pcolormesh(ds.c.values, bm1, pr["T"].values, norm=LogNorm(), shading="auto")
-    fig.colorbar(m, ax=axes[1], label="T = T*/G")
+    fig.colorbar(m, ax=axes[1], label="T = T*/G [1]")
     axes[1].set_title("printed [54]-[55]: T")
     tx = ds.sel(system="text")
-    m = axes[2].pcolormesh(ds.c.values, bm1, np.sign(tx.D.values), cmap="coolwarm", shading="auto")
-    axes[2].plot(ds.c.values, ds.b_singular_text.values - 1.0, "k", lw=1, label="b = K/(2(K-1))")
-    axes[2].set_title("[52]-[53] as printed: sign of D")
-    axes[2].legend(fontsize=8, loc="upper right")
+    sign = np.sign(tx.D.values)
+    colours = {-1: "#3b4cc0", 0: "#dddddd", 1: "#b40426"}  # categories: D < 0, D = 0, D > 0
+    axes[2].pcolormesh(ds.c.values, bm1, sign, cmap=ListedColormap(list(colours.values())), vmin=-1.5, vmax=1.5,
+                       shading="auto")
+    axes[2].plot(ds.c.values, ds.b_singular_text.values - 1.0, "k", lw=1)
+    axes[2].set_title("[52]-[53] as printed:\nsign of D")
+    present = set(np.unique(sign[np.isfinite(sign)]).astype(int))
+    handles = [Patch(facecolor=c, label=f"D {'<' if k < 0 else '=' if k == 0 else '>'} 0")
+               for k, c in colours.items() if k in present]
+    plotting.legend_beside(axes[2], handles=handles + [Line2D([], [], color="k", lw=1, label="b = K/(2(K−1))")])
     for ax in axes:
+        ax.title.set_fontsize(10)
         ax.set_yscale("log")
-        ax.set_xlabel("c / c2")
-        ax.set_ylabel("b - 1")
+        ax.set_xlabel("c / c2 [1]")
+        ax.set_ylabel("b − 1 [1]")
     return fig
 
 

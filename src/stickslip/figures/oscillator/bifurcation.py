@@ -82,7 +82,9 @@ def compute(quick: bool) -> xr.Dataset:
 
 
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
-    fig, axes = plotting.new_figure(fig, 2, 1, size=(6.5, 4.6))
+    from matplotlib.lines import Line2D
+
+    fig, axes = plotting.new_figure(fig, 2, 1, size=(5.4, 4.6))
     for ax, name, unit in ((axes[0], "amplitude", "m"), (axes[1], "period", "s")):
         for key, label, colour in (("ss", "Stribeck, stick-slip", "tab:blue"), ("slip", "Stribeck, pure slip", "tab:red"),
                                    ("dc", "Coulomb, c > 0", "tab:green"), ("c0", "Coulomb, c = 0", "0.5")):
@@ -93,10 +95,11 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
         ax.axvline(float(ds.hopf_speed), color="k", lw=0.6, ls=":")
         ax.axvline(float(ds.grazing_from_stick_slip), color="tab:purple", lw=0.6, ls=":")
         ax.set_xlabel("belt speed V [m/s]"), ax.set_ylabel(f"{name} [{unit}]")
-    axes[0].annotate("Hopf (subcritical)", (float(ds.hopf_speed), 0.02), fontsize=8)
-    axes[0].annotate("grazing", (float(ds.grazing_from_stick_slip), 0.1), fontsize=8)
-    axes[0].legend(fontsize=8)
-    axes[0].set_title("Limit cycles vs belt speed: stick-slip branch, grazing, subcritical Hopf")
+    handles, _ = axes[0].get_legend_handles_labels()
+    handles += [Line2D([], [], color="k", lw=0.6, ls=":", label="Hopf point (subcritical)"),
+                Line2D([], [], color="tab:purple", lw=0.6, ls=":", label="grazing of the stick-slip branch")]
+    plotting.legend_beside(axes[1], handles=handles)
+    fig.suptitle("Limit cycles vs belt speed: stick-slip branch, grazing, subcritical Hopf", fontsize=11)
     return fig
 
 

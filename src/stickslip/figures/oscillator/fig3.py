@@ -12,6 +12,7 @@ from ... import plotting
 from ...friction import LinearWeakening, UserLaw
 from ...oscillator import Engine, Oscillator, equilibrium_stability, limit_cycle
 from ...oscillator.baseline import solve_ivp_switches
+from ...oscillator.simulate import MODE_ATTRS
 from .. import Check, FigureSpec, close_check
 from .common import orbits, osc_attrs, osc_from_attrs, section_after
 
@@ -48,13 +49,13 @@ def compute(quick: bool) -> xr.Dataset:
         {
             "orbit_x": (("start", "sample"), o["x"], {"units": "m"}),
             "orbit_v": (("start", "sample"), o["v"], {"units": "m/s"}),
-            "orbit_mode": (("start", "sample"), o["mode"]),
+            "orbit_mode": (("start", "sample"), o["mode"], {**MODE_ATTRS, "long_name": "contact mode on the orbit"}),
             "start_x": ("start", np.array([s[0] for s in STARTS]), {"units": "m"}),
             "start_v": ("start", np.array([s[1] for s in STARTS]), {"units": "m/s"}),
             "section_after_transient": ("start", np.array([section_after(OSC, x, v, 8 * cycle.period)
                                                           for x, v in STARTS]), {"units": "m"}),
             "x": ("t", cyc["x"].values, {"units": "m"}), "v": ("t", cyc["v"].values, {"units": "m/s"}),
-            "mode": ("t", cyc["mode"].values),
+            "mode": ("t", cyc["mode"].values, MODE_ATTRS),
             "period": ((), cycle.period, {"units": "s"}), "stick_time": ((), cycle.stick_time, {"units": "s"}),
             "section_x": ((), cycle.section_x, {"units": "m"}),
             "multipliers": ("k", np.sort(np.real(cycle.floquet_multipliers))),
@@ -70,17 +71,20 @@ def compute(quick: bool) -> xr.Dataset:
 
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
     osc = osc_from_attrs(ds.attrs)
-    fig, (ax,) = plotting.new_figure(fig, size=(7.5, 5.5))
+    fig, (ax,) = plotting.new_figure(fig, size=(9.5, 5.5))
     for i in range(ds.sizes["start"]):
         plotting.modal_line(ax, ds.orbit_x[i], ds.orbit_v[i], ds.orbit_mode[i], lw=0.8, alpha=0.7)
-        ax.plot(ds.start_x[i], ds.start_v[i], "ko", ms=3)
+        ax.plot(ds.start_x[i], ds.start_v[i], "ko", ms=3, label="initial states" if i == 0 else None)
     ax.plot(ds.x, ds.v, color="k", lw=2.2, label="limit cycle")
     x_lo, x_hi = osc.stick_limits
     ax.plot([x_lo, x_hi], [osc.belt_speed] * 2, color="tab:green", lw=4, alpha=0.5, label="stick segment")
     ax.plot([osc.equilibrium], [0], "r*", ms=10, label="unstable equilibrium x_e+")
     ax.set_xlabel("x [m]"), ax.set_ylabel("dx/dt [m/s]")
     ax.set_title("Fig. 3 — f = f_d (1 - τ|v_r|): flutter of the equilibrium, attracting stick-slip cycle")
-    ax.legend(fontsize=8, loc="lower left")
+    handles, labels = ax.get_legend_handles_labels()
+    modes = plotting.mode_handles((1, -1))  # the orbits' colours (stick: on the stick segment)
+    plotting.legend_beside(ax, handles=handles + modes, labels=labels + [h.get_label() for h in modes],
+                           title="orbits from the initial states", title_fontsize=8)
     return fig
 
 

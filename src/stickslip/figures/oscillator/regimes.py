@@ -38,7 +38,7 @@ def compute(quick: bool, cache: Path | None = None) -> xr.Dataset:
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
     from matplotlib.colors import ListedColormap
 
-    fig, (ax,) = plotting.new_figure(fig, size=(7.5, 5.2))
+    fig, (ax,) = plotting.new_figure(fig, size=(10.0, 5.2))
     colours = ["#9ecae1", "#fdae6b", "#e6550d", "#74c476", "#bbbbbb"]
     v, c = ds.belt_speed.values, ds.damping.values
     ax.pcolormesh(v, c, ds.regime.values.T, cmap=ListedColormap(colours), vmin=-0.5, vmax=4.5, shading="nearest")
@@ -46,14 +46,17 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
     law, N = osc.friction, osc.normal_force
     cs = np.linspace(c.min(), c.max(), 200)
     vh = law.vs * np.log(N * (law.fs - law.fd) / (cs * law.vs))
-    ax.plot(vh, cs, "k--", lw=1.2, label="Hopf: c + N μ'(V) = 0")
+    inside = (vh >= v.min()) & (vh <= v.max())  # the analytic curve where the map is
+    ax.plot(np.where(inside, vh, np.nan), cs, "k--", lw=1.2, label="Hopf: c + N μ'(V) = 0")
     ax.plot(float(ds.grazing_at_check_damping), float(ds.check_damping), "k*", ms=10, label="grazing (continuation)")
-    for code, colour in enumerate(colours[:4]):
-        ax.plot([], [], "s", color=colour, ms=10, label=REGIMES[code])
+    shown = set(np.unique(ds.regime.values[np.isfinite(ds.regime.values)]).astype(int)) | {0, 1, 2, 3}
+    for code, colour in enumerate(colours):
+        if code in shown:
+            ax.plot([], [], "s", color=colour, ms=10, label=REGIMES[code])
     ax.set_xlim(v.min(), v.max()), ax.set_ylim(c.min(), c.max())
     ax.set_xlabel("belt speed V [m/s]"), ax.set_ylabel("damping c [N s/m]")
     ax.set_title("Stribeck oscillator: long-time behaviour")
-    ax.legend(fontsize=8, loc="upper right")
+    plotting.legend_beside(ax)
     return fig
 
 

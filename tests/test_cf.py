@@ -1,0 +1,147 @@
+"""CF-style datasets (issue 10): the rules of `tests/cf_rules.py` hold for every result's
+``to_xarray`` and for every file the command line writes; the checker itself catches each
+broken rule. The files of ``reproduce --quick`` are checked in `tests/test_report.py`."""
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from stickslip import cf
+from stickslip.brake import BrakeParams, growth_rates, travelling_wave
+from stickslip.brake.fem import classify_fem, integrate_fem, steady_state
+from stickslip.brake.ring import classify as classify_ring, integrate
+from stickslip.cli import run
+from stickslip.friction import Coulomb
+from stickslip.halfspace import direct_problem, inverse_problem, wave_from_inverse
+from stickslip.oscillator import Oscillator, continue_cycle, limit_cycle, simulate
+from stickslip.sweep import run_sweep
+
+from .cf_rules import file_problems, problems
+
+CASE = BrakeParams.from_physical(50.0, 1e-4, 0.7)
+
+
+def _good() -> xr.Dataset:
+    ds = xr.Dataset({"x": ("t", np.arange(3.0), {"units": "m", "long_name": "position"}),
+                     "state": ("t", np.array([0, 1, 0], np.int8), {"long_name": "state", "flag_values": np.array(
+                         [0, 1], np.int8), "flag_meanings": "stick slip"})},
+                    coords={"t": ("t", [0.0, 1.0, 2.0], {"units": "s", "long_name": "time"})})
+    return cf.finish(ds, "a test", "oscillator")
+
+
+@pytest.mark.parametrize("break_it, says", [
+    (lambda ds: ds.attrs.pop("Conventions"), "Conventions"),
+    (lambda ds: ds.attrs.pop("history"), "history"),
+    (lambda ds: ds.attrs.update(source="someone"), "version"),
+    (lambda ds: ds["x"].attrs.update(units="R"), "UDUNITS"),
+    (lambda ds: ds["x"].attrs.pop("long_name"), "long_name"),
+    (lambda ds: ds.attrs.update(codes="{'a': 1, 'b': 2}"), "repr"),
+    (lambda ds: ds["state"].attrs.pop("flag_values"), "codes without"),
+])
+def test_the_checker_finds_each_broken_rule(break_it, says):
+    ds = _good()
+    assert problems(ds) == []
+    break_it(ds)
+    assert any(says in p for p in problems(ds)), problems(ds)
+
+
+def test_the_checker_finds_repeated_times_float_codes_and_a_missed_index():
+    t = np.array([0.0, 1.0, 1.0, 2.0])
+    ds = xr.Dataset({"x": ("t", t, {"units": "m", "long_name": "x"})}, coords={"t": ("t", t, {"units": "s",
+                                                                                            "long_name": "time"})})
+    ds.attrs.update(Conventions="CF-1.10", title="t", history="h", source=cf.SOURCE)
+    assert any("repeats" in p for p in problems(ds))
+    ds = xr.Dataset({"regime": ("p", [0.0, 1.0], {"long_name": "r", "flag_values": [0, 1], "flag_meanings": "a b"})},
+                    coords={"p": ("p", [0, 1], {"units": "1", "long_name": "p"})},
+                    attrs=dict(Conventions="CF-1.10", title="t", history="h", source=cf.SOURCE))
+    assert any("holds codes but is float64" in p for p in problems(ds))
+    ds = xr.Dataset({"x": ("sample", [1.0, 2.0], {"units": "m", "long_name": "x"})},
+                    coords={"time": ("sample", [0.0, 1.0], {"units": "s", "long_name": "t"})},
+                    attrs=dict(Conventions="CF-1.10", title="t", history="h", source=cf.SOURCE))
+    assert any("no index" in p for p in problems(ds))
+    assert problems(cf.finish(ds, "t")) == []  # finish makes the monotone coordinate the index
+
+
+def test_finish_scales_units_and_codes():
+    ds = xr.Dataset({"U": ("theta", [1.0, 2.0], {"units": "R", "long_name": "radial displacement"}),
+                     "regime": ((), np.float64(np.nan), {"flag_values": [0, 1], "flag_meanings": "a b"})},
+                    coords={"theta": ("theta", [0.0, 1.0])})
+    out = cf.finish(ds, "t", "brake", params={"flag": True, "nested": {"a": 1.0}})
+    assert out["U"].attrs["units"] == "1" and out["U"].attrs["scale"] == "R"
+    assert out["regime"].dtype == np.int8 and int(out["regime"]) == -1 and out["regime"].attrs["flag_meanings"] == "none a b"
+    assert out.attrs["flag"] == 1 and out.attrs["nested_a"] == 1.0 and out["theta"].attrs["units"] == "rad"
+    assert cf.is_udunits("N s/m") and cf.is_udunits("m s-1") and not cf.is_udunits("E R^2 / M")
+
+
+def _results():
+    osc = Oscillator(1.0, 1.0, 1.0, 0.2, Coulomb(0.6, 0.4), damping=0.05)
+    yield "simulate", simulate(osc, 20.0).to_xarray(501)
+    yield "limit_cycle", limit_cycle(osc).to_xarray(201)
+    yield "continue_cycle", continue_cycle(osc, 0.25).to_xarray()
+    yield "growth_rates", growth_rates(CASE).to_xarray()
+    yield "coefficients", CASE.coefficients().to_xarray()
+    yield "steady", CASE.steady().to_xarray(11)
+    yield "travelling_wave", travelling_wave(CASE, 8).to_xarray(201)
+    ring = integrate(CASE, 32, transits=2.0)
+    yield "ring run", ring.to_xarray()
+    yield "ring regime", classify_ring(ring, transits=1.0).to_xarray()
+    fem = integrate_fem(CASE, 16, 1, transits=2.0)
+    yield "fem run", fem.to_xarray()
+    yield "fem regime", classify_fem(fem, transits=1.0).to_xarray()
+    yield "fem steady", steady_state(CASE, n_theta=16, n_r=1).to_xarray()
+    yield "inverse", inverse_problem(np.array([2.0, 3.0]), np.array([-0.7, -0.7]), 0.001, nu=0.25, mu=0.5).to_xarray()
+    yield "direct", direct_problem(9.52e-4, 3.514e-3, 0.001, nu=0.25, mu=0.5).to_xarray()
+    yield "fields", wave_from_inverse(11.358, -0.7, 0.001, nu=0.25, mu=0.5).fields(n=101).to_xarray()
+
+
+def test_every_result_dataset_follows_the_rules():
+    bad = [p for name, ds in _results() for p in problems(ds, name)]
+    assert bad == []
+
+
+def _point(friction, mismatch):
+    return {"sum": friction + mismatch, "kind": float(friction > mismatch)}
+
+
+def test_a_sweep_store_follows_the_rules_and_is_consolidated(tmp_path):
+    store = tmp_path / "s.zarr"
+    run_sweep(_point, {"friction": [1.0, 2.0], "mismatch": [1.5]}, store, outputs={"sum": "m", "kind": {"low": 0,
+              "high": 1}}, scheduler="synchronous", attrs={"omega": 50.0, "material": {"young": 2e11}}, model="brake")
+    assert file_problems(store) == []
+    with xr.open_zarr(store, consolidated=True) as ds:
+        assert ds["kind"].dtype == np.int8 and list(ds["kind"].values.ravel()) == [0, 1]
+        assert ds.attrs["material_young"] == 2e11
+
+
+OSC = ["--mass", "1", "--stiffness", "1", "--normal-force", "1", "--belt-speed", "0.2", "--fs", "0.6", "--fd", "0.4"]
+BRAKE = ["--omega", "50", "--mismatch", "1e-4", "--friction", "0.7"]
+#: Every command that writes a file, with the files it writes.
+WRITERS = [
+    (["oscillator", "simulate", *OSC, "--t-end", "5", "--out", "{tmp}/s.nc"], ["s.nc"]),
+    (["oscillator", "cycle", *OSC, "--out", "{tmp}/c.nc"], ["c.nc"]),
+    (["oscillator", "continue", *OSC, "--stop", "0.3", "--out", "{tmp}/b.nc"], ["b.nc"]),
+    (["oscillator", "map", *OSC, "--x", "belt_speed=0.2:0.3:2", "--y", "damping=0.01:0.02:2", "--out", "{tmp}/m.zarr",
+      "--workers", "1"], ["m.zarr"]),
+    (["brake", "integrate", *BRAKE, "--nodes", "32", "--transits", "1", "--out", "{tmp}/i.nc",
+      "--checkpoint", "{tmp}/i-checkpoint.nc"], ["i.nc", "i-checkpoint.nc"]),
+    (["brake", "wave", *BRAKE, "--modes", "8", "--out", "{tmp}/w.nc"], ["w.nc"]),
+    (["brake", "continue", "--omega", "50", "--mismatch", "1e-5", "--friction", "0.7", "--modes", "4", "--stop",
+      "9e-6", "--points", "3", "--out", "{tmp}/bc.nc"], ["bc.nc"]),
+    (["brake", "map", "--out", "{tmp}/wm.zarr", "--frictions", "0.2:0.7:2", "--mismatches", "1e-5:1e-4:2",
+      "--workers", "1"], ["wm.zarr"]),
+    (["brake", "fem", *BRAKE, "--n-theta", "16", "--n-r", "1", "--transits", "1", "--out", "{tmp}/f.nc",
+      "--checkpoint", "{tmp}/f-checkpoint.nc"], ["f.nc", "f-checkpoint.nc"]),
+    (["halfspace", "fields", "--b", "11.358", "--c", "-0.7", "--v-star", "0.001", "--points", "101", "--out",
+      "{tmp}/h.nc"], ["h.nc"]),
+]
+
+
+@pytest.mark.parametrize("args, files", WRITERS, ids=[" ".join(a[:2]) for a, _ in WRITERS])
+def test_every_file_the_command_line_writes_follows_the_rules(args, files, tmp_path, capsys):
+    assert run([a.replace("{tmp}", str(tmp_path)) for a in args]) == 0, capsys.readouterr().err
+    bad = [p for name in files for p in file_problems(tmp_path / name)]
+    assert bad == []
+    for name in files:
+        if name.endswith(".nc"):
+            with xr.open_dataset(tmp_path / name) as ds:
+                assert "stickslip" in ds.attrs["history"].splitlines()[-1]
