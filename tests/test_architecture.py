@@ -15,13 +15,14 @@ SRC = ROOT / "src"
 PACKAGE = SRC / "stickslip"
 
 #: Top-level parts of the package and what each may import (besides itself).
-BASE = {"errors", "validation", "cf", "vocabulary"}
+BASE = {"errors", "validation", "cf", "vocabulary", "results"}
 MODELS = {"oscillator", "brake", "halfspace"}
 ALLOWED = {
     "errors": set(),
     "validation": {"errors"},
     "vocabulary": set(),
     "cf": {"vocabulary", "__init__"},
+    "results": {"cf", "vocabulary"},
     "friction": BASE,
     "files": BASE,
     "contact": BASE | {"files"},

@@ -31,7 +31,7 @@ def test_cycle_json_contract(capsys):
 
 def test_cycle_with_each_law(capsys):
     for extra in (["--law", "linear-weakening", "--tau", "0.5", "--fs", "0.4"],
-                  ["--law", "stribeck", "--tau", "0.1", "--damping", "0.05"]):
+                  ["--law", "stribeck", "--vs", "0.1", "--damping", "0.05"]):
         code, out, _ = _run(BASE + extra + ["--json"], capsys)
         assert code == 0 and json.loads(out)["period"] > 0
 
@@ -39,7 +39,7 @@ def test_cycle_with_each_law(capsys):
 @pytest.mark.parametrize("change, name", [
     (["--fs", "0.3"], "--fs"), (["--mass", "-1"], "--mass"), (["--stiffness", "0"], "--stiffness"),
     (["--normal-force", "nan"], "--normal-force"), (["--belt-speed", "0"], "--belt-speed"),
-    (["--damping", "-0.1"], "--damping"), (["--law", "stribeck"], "tau"),
+    (["--damping", "-0.1"], "--damping"), (["--law", "stribeck"], "--vs"), (["--law", "stribeck", "--tau", "0.1"], "--tau"),
 ])
 def test_bad_input_is_one_line_and_exit_2(change, name, capsys):
     code, out, err = _run(BASE + change + ["--json"], capsys)
@@ -83,7 +83,7 @@ OUTPUTS = [
     (["oscillator", "simulate", *OSC, "--t-end", "5"], "--out", ".nc", False, "stickslip.oscillator.simulate"),
     (["oscillator", "simulate", *OSC, "--t-end", "5"], "--plot", ".png", False, "stickslip.oscillator.simulate"),
     (["oscillator", "map", *OSC], "--out", ".zarr", True, "stickslip.oscillator.regimes.regime_map"),
-    (["brake", "integrate", *BRAKE, "--transits", "1"], "--checkpoint", ".nc", False, "stickslip.brake.integrate"),
+    (["brake", "integrate", *BRAKE, "--transits", "1"], "--out", ".nc", False, "stickslip.brake.integrate"),
     (["brake", "fem", *BRAKE, "--transits", "1"], "--out", ".nc", False, "stickslip.brake.fem.integrate_fem"),
     (["brake", "map"], "--out", ".zarr", True, "stickslip.brake.maps.wave_regime_map"),
     (["brake", "campaign"], "--out", "", True, "stickslip.brake.fem.campaign.statistics"),
@@ -117,7 +117,7 @@ def test_bad_output_paths_fail_before_any_work(args, option, suffix, folder, tar
 
 
 def test_stability_and_continuation_commands(capsys):
-    args = ["oscillator", "stability", *BASE[2:], "--law", "stribeck", "--tau", "0.1", "--damping", "0.05", "--json"]
+    args = ["oscillator", "stability", *BASE[2:], "--law", "stribeck", "--vs", "0.1", "--damping", "0.05", "--json"]
     code, out, _ = _run(args, capsys)
     data = json.loads(out)
     assert code == 0 and data["hopf_points"][0]["criticality"] == "subcritical"
@@ -149,8 +149,8 @@ def test_a_non_finite_result_is_never_printed_with_exit_0(args, capsys):
     (["halfspace", "fields", "--b", "11.358", "--c", "-0.7", "--v-star", "0.001", "--points", "1000000000000"],
      "--points"),
     (["brake", "stability", "--xi", "1.5", "--nu", "0.3", "--gamma", "1e-6", "--delta", "0.004", "--friction", "0.2",
-      "--modes", "1-99999999"], "--modes"),
-    (["brake", "continue", "--omega", "50", "--mismatch", "1e-5", "--friction", "0.7", "--modes", "4", "--stop",
+      "--wave-numbers", "1-99999999"], "--wave-numbers"),
+    (["brake", "continue", "--omega", "50", "--mismatch", "1e-5", "--friction", "0.7", "--wave-number", "4", "--stop",
       "2.5e-6", "--points", "1000000000"], "--points"),
 ], ids=["samples 1e12", "samples 0", "points 1e12", "modes 1e8", "branch points 1e9"])
 def test_absurd_sizes_are_refused_up_front(args, option, capsys):

@@ -30,7 +30,7 @@ def test_steady_contract_and_positive_pressure(capsys):
 
 def test_stability_contract(capsys):
     data = _json(["brake", "stability", "--xi", "1.5", "--nu", "0.3", "--gamma", "1e-6", "--delta", "0.004",
-                  "--friction", "0.2", "--modes", "1-20", "--json"], capsys)
+                  "--friction", "0.2", "--wave-numbers", "1-20", "--json"], capsys)
     assert [m["n"] for m in data["modes"]] == list(range(1, 21))
     assert all(set(m) == {"n", "growth_rate", "frequency"} for m in data["modes"])
     expected = growth_rates(BrakeParams(1.5, 0.3, 1e-6, 0.004, 0.2), range(1, 21)).growth_rate
@@ -38,7 +38,7 @@ def test_stability_contract(capsys):
 
 
 def test_physical_options_match_the_dimensionless_ones(capsys):
-    data = _json(["brake", "stability", "--omega", "50", "--mismatch", "1e-4", "--friction", "0.7", "--modes", "8",
+    data = _json(["brake", "stability", "--omega", "50", "--mismatch", "1e-4", "--friction", "0.7", "--wave-numbers", "8",
                   "--json"], capsys)
     p = PhysicalParams(50.0, 1e-4, 0.7).dimensionless()
     assert data["modes"][0]["growth_rate"] == pytest.approx(float(growth_rates(p, [8]).growth_rate[0]))
@@ -54,7 +54,7 @@ def test_physical_options_match_the_dimensionless_ones(capsys):
     (["coefficients", "--xi", "1.5"], "--gamma"),
     (["steady", "--xi", "1.5", "--delta", "-0.1"], "delta"),
     (["steady", "--xi", "1.5", "--delta", "0.01", "--friction", "nan"], "friction"),
-    (["stability", "--xi", "1.5", "--gamma", "1", "--delta", "0.01", "--modes", "x-3"], "--modes"),
+    (["stability", "--xi", "1.5", "--gamma", "1", "--delta", "0.01", "--wave-numbers", "x-3"], "--wave-numbers"),
     (["coefficients", "--xi", "1.5", "--outer-radius", "0.2", "--gamma", "1"], "--xi"),
 ])
 def test_bad_input_is_one_line_and_exit_2(args, name, capsys):
@@ -65,21 +65,21 @@ def test_bad_input_is_one_line_and_exit_2(args, name, capsys):
 
 def test_wave_contract(capsys):
     data = _json(["brake", "wave", "--xi", "1.5", "--nu", "0.3", "--gamma", "9.345e-7", "--delta", "0.001",
-                  "--friction", "0.7", "--modes", "8", "--json"], capsys)
+                  "--friction", "0.7", "--wave-number", "8", "--json"], capsys)
     assert {"c", "regime", "zones"} <= set(data) and data["c"] < 0
     assert all(set(z) >= {"kind", "start", "end"} for z in data["zones"])
     assert data["zones"][0]["start"] == 0 and abs(data["zones"][-1]["end"] - 2 * 3.141592653589793 / 8) < 1e-9
 
 
 def test_wave_not_found_exits_1_and_says_what_was_tried(capsys):
-    code = run(["brake", "wave", "--omega", "1", "--mismatch", "4e-4", "--friction", "0.2", "--modes", "4",
+    code = run(["brake", "wave", "--omega", "1", "--mismatch", "4e-4", "--friction", "0.2", "--wave-number", "4",
                 "--regime", "stick-separation", "--json"])
     out, err = capsys.readouterr()
     assert code == 1 and out == "" and err.count("\n") == 1 and "scanned" in err
 
 
 def test_wave_continuation_reports_zone_events(tmp_path, capsys):
-    data = _json(["brake", "continue", "--omega", "50", "--mismatch", "1e-5", "--friction", "0.7", "--modes", "4",
+    data = _json(["brake", "continue", "--omega", "50", "--mismatch", "1e-5", "--friction", "0.7", "--wave-number", "4",
                   "--parameter", "delta", "--stop", "2.5e-6", "--points", "20", "--out", str(tmp_path / "b.nc"),
                   "--json"], capsys)
     kinds = [(e["kind"], tuple(e["zones"])) for e in data["events"]]
@@ -93,8 +93,8 @@ def test_bad_regime_is_a_usage_error(capsys):
 
 
 def test_regime_map_command(tmp_path, capsys):
-    data = _json(["brake", "map", "--out", str(tmp_path / "w.zarr"), "--frictions", "0.2:0.7:2",
-                  "--mismatches", "1e-6:1e-4:2", "--workers", "1", "--json"], capsys)
+    data = _json(["brake", "map", "--out", str(tmp_path / "w.zarr"), "--x", "friction=0.2:0.7:2",
+                  "--y", "mismatch=1e-6:1e-4:2:log", "--workers", "1", "--json"], capsys)
     assert data["points"] == 4 and sum(data["counts"].values()) == 4 and data["counts"].get("stick-slip", 0) >= 1
     assert run(["brake", "map", "--out", str(tmp_path / "x.nc")]) == 2
-    assert run(["brake", "map", "--out", str(tmp_path / "y.zarr"), "--mismatches", "0:1e-4:3"]) == 2
+    assert run(["brake", "map", "--out", str(tmp_path / "y.zarr"), "--y", "mismatch=0:1e-4:3:log"]) == 2

@@ -4,12 +4,12 @@ from stickslip.cli import run
 
 
 def test_integrate_command_classifies_and_checkpoints(tmp_path, capsys):
-    ck, out = tmp_path / "ck.nc", tmp_path / "run.nc"
+    out = tmp_path / "run.nc"
     args = ["brake", "integrate", "--omega", "50", "--mismatch", "1e-4", "--friction", "0.7", "--nodes", "64",
-            "--transits", "20", "--checkpoint", str(ck), "--out", str(out), "--json"]
+            "--transits", "20", "--out", str(out), "--json"]
     assert run(args) == 0
     first = json.loads(capsys.readouterr().out)
-    assert first["regime"].startswith("stick") and ck.exists() and out.exists()
+    assert first["regime"].startswith("stick") and out.exists()
     assert run(args) == 0  # resumed from the finished checkpoint: same answer
     assert json.loads(capsys.readouterr().out)["fractions"] == first["fractions"]
 
@@ -31,12 +31,12 @@ def test_fem_command(tmp_path, capsys):
 def test_a_checkpoint_of_another_run_is_refused_and_overwrite_starts_afresh(tmp_path, capsys):
     ck = tmp_path / "ck.nc"
     base = ["brake", "integrate", "--omega", "50", "--mismatch", "1e-4", "--nodes", "32", "--transits", "2",
-            "--checkpoint", str(ck), "--json"]
+            "--out", str(ck), "--json"]
     assert run(base + ["--friction", "0.7"]) == 0
     capsys.readouterr()
     assert run(base + ["--friction", "0.5"]) == 2  # another friction: not this run's checkpoint
     out, err = capsys.readouterr()
-    assert out == "" and err.count("\n") == 1 and "--checkpoint" in err and "overwrite" in err
+    assert out == "" and err.count("\n") == 1 and "--out" in err and "overwrite" in err
     assert run(base + ["--friction", "0.5", "--overwrite"]) == 0
     fresh = json.loads(capsys.readouterr().out)
     assert fresh["params"]["friction"] == 0.5

@@ -48,7 +48,8 @@ def test_linear_weakening_validity_range():
     (lambda: Coulomb(0.3, 0.4), "fs"), (lambda: Coulomb(0.6, -0.1), "fd"), (lambda: Coulomb(float("nan"), 0.4), "fs"),
     (lambda: LinearWeakening(0.6, 0.4, -1.0), "tau"), (lambda: Stribeck(0.6, 0.4, 0.0), "vs"),
     (lambda: UserLaw(3.0, 0.5), "mu"), (lambda: make_law("viscous", fs=0.6, fd=0.4), "law"),
-    (lambda: make_law("stribeck", fs=0.6, fd=0.4), "tau"),
+    (lambda: make_law("stribeck", fs=0.6, fd=0.4), "vs"), (lambda: make_law("stribeck", fs=0.6, fd=0.4, tau=0.1), "tau"),
+    (lambda: make_law("coulomb", fs=0.6, fd=0.4, vs=0.1), "vs"),
 ])
 def test_invalid_parameters_name_themselves(build, name):
     with pytest.raises(ParameterError) as err:

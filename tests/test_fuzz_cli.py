@@ -96,7 +96,7 @@ NUMBERS = st.one_of(
 #: Sizes and durations: a large valid value is a legal run of minutes or hours (10^7 samples,
 #: a 65536-node mesh, 10^6 transits, a campaign of 1000 seeds), not a hang. Their bounds are
 #: tried by the extreme values above; the generated battery leaves them out.
-SIZES = {"--samples", "--points", "--nodes", "--n-theta", "--n-r", "--modes", "--seeds", "--geometry-seeds",
+SIZES = {"--samples", "--points", "--nodes", "--n-theta", "--n-r", "--wave-number", "--wave-numbers", "--seeds", "--geometry-seeds",
          "--workers", "--transits", "--t-end"}
 GENERATED = [i for i, (_, option) in enumerate(OPTIONS) if option not in SIZES]
 

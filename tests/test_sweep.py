@@ -55,8 +55,8 @@ def test_regime_classification_matches_theory():
 
 
 def test_map_command(tmp_path, capsys):
-    args = ["oscillator", "map", "--mass", "1", "--stiffness", "1", "--normal-force", "1", "--belt-speed", "0.2",
-            "--fs", "0.6", "--fd", "0.4", "--law", "stribeck", "--tau", "0.1", "--damping", "0.05",
+    args = ["oscillator", "map", "--mass", "1", "--stiffness", "1", "--normal-force", "1",
+            "--fs", "0.6", "--fd", "0.4", "--law", "stribeck", "--vs", "0.1",
             "--x", "belt_speed=0.2:1.3:3", "--y", "damping=0.04:0.06:2", "--workers", "1",
             "--out", str(tmp_path / "m.zarr"), "--plot", str(tmp_path / "m.png"), "--json"]
     assert run(args) == 0
@@ -71,8 +71,10 @@ def test_map_command(tmp_path, capsys):
 def test_map_command_checks_every_point_before_starting(axis, words, tmp_path, capsys):
     """An axis that leaves the valid range is one line naming --x, in the main process (it used to
     fail in a worker, where the error could not even be unpickled: exit 3)."""
-    args = ["oscillator", "map", "--mass", "1", "--stiffness", "1", "--normal-force", "1", "--belt-speed", "0.2",
-            "--fs", "0.6", "--fd", "0.4", "--x", axis, "--out", str(tmp_path / "m.zarr")]
+    base = {"--mass": "1", "--stiffness": "1", "--normal-force": "1", "--belt-speed": "0.2", "--fs": "0.6", "--fd": "0.4"}
+    swept = "--" + axis.split("=")[0].replace("_", "-")  # an axis' own option is left out (it would be refused)
+    args = ["oscillator", "map", *[t for k, v in base.items() if k != swept for t in (k, v)], "--x", axis,
+            "--out", str(tmp_path / "m.zarr")]
     assert run(args) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "--x" in err and words in err and not (tmp_path / "m.zarr").exists()
@@ -167,3 +169,14 @@ def test_a_store_of_another_computation_or_version_is_refused(tmp_path):
     again = run_sweep(_other, axes, store, outputs=outputs, scheduler="synchronous", attrs={"omega": 50.0, "n": 4},
                       overwrite=True)
     assert again["done"].all() and again.attrs["source"].startswith("stickslip ")
+
+
+@pytest.mark.parametrize("given, words", [(["--belt-speed", "0.2"], "--belt-speed"), ([], "--fs")])
+def test_map_refuses_an_option_its_axis_overrides_and_needs_the_others(given, words, tmp_path, capsys):
+    """--belt-speed with an axis of belt_speed used to be accepted and silently overridden."""
+    args = ["oscillator", "map", "--mass", "1", "--stiffness", "1", "--normal-force", "1", "--fd", "0.4",
+            *(["--fs", "0.6"] if given else []), *given, "--x", "belt_speed=0.2:0.3:2", "--y", "damping=0.01:0.02:2",
+            "--out", str(tmp_path / "m.zarr")]
+    assert run(args) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and words in err and not (tmp_path / "m.zarr").exists()

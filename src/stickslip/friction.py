@@ -210,18 +210,23 @@ def law_names() -> list[str]:
     return sorted(_REGISTRY)
 
 
-def make_law(name: str, *, fs: float, fd: float, tau: float | None = None) -> FrictionLaw:
-    """Build a registered law from the CLI's parameters.
+def make_law(name: str, *, fs: float, fd: float, tau: float | None = None, vs: float | None = None) -> FrictionLaw:
+    """Build a registered law from the CLI's parameters, named as the laws' fields.
 
-    ``tau`` is the weakening rate [s/m] for ``linear-weakening`` and the Stribeck speed
-    [m/s] for ``stribeck``.
+    ``tau`` is the weakening rate [s/m] of ``linear-weakening``, ``vs`` the Stribeck speed
+    [m/s] of ``stribeck``; each is required by its law and refused by the others.
     """
     if name not in _REGISTRY:
         raise ParameterError("law", name, "one of " + ", ".join(law_names()))
+    needs = {"coulomb": None, "linear-weakening": "tau", "stribeck": "vs"}[name]
+    for given, value in (("tau", tau), ("vs", vs)):
+        if value is not None and given != needs:
+            raise ParameterError(given, value, f"left out with law {name!r} (it sets "
+                                 f"{'linear-weakening' if given == 'tau' else 'stribeck'})")
+    if needs is not None and {"tau": tau, "vs": vs}[needs] is None:
+        raise ParameterError(needs, None, f"given for law {name!r}")
     if name == "coulomb":
         return Coulomb(fs, fd)
-    if tau is None:
-        raise ParameterError("tau", tau, f"given for law {name!r}")
     if name == "linear-weakening":
         return LinearWeakening(fs, fd, tau)
-    return Stribeck(fs, fd, tau)
+    return Stribeck(fs, fd, vs)

@@ -13,7 +13,8 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
 __all__ = ["new_figure", "save", "modal_line", "oscillator_phase", "state_image", "state_legend", "zone_legend",
-           "mode_handles", "legend_beside", "legend_above", "wrap", "plot_cycle", "plot_trajectory", "plot_branch", "plot_oscillator_map", "plot_interface_fields",
+           "mode_handles", "legend_beside", "legend_above", "wrap", "label_curves", "plot_cycle", "plot_trajectory",
+           "plot_branch", "plot_oscillator_map", "plot_interface_fields",
            "legibility_problems", "MODE_COLOURS", "STATE_COLOURS", "ZONE_COLOURS"]
 
 MODE_COLOURS = {-1: "tab:red", 0: "tab:green", 1: "tab:blue"}
@@ -281,7 +282,8 @@ REPORT_WIDTH_IN = 1120 / 96
 #: Two text boxes overlap when they intersect by more than this (points) in both directions.
 OVERLAP_PT = 1.0
 #: Length of data curve (points) a legend or a text may cover: a curve grazing a corner, no more;
-#: the boxes are grown by `COVER_PAD_PT` first (a text touching a curve sits on it).
+#: the boxes are grown by `COVER_PAD_PT` first (a text touching a curve sits on it: added after the
+#: first measurements, where a label set at a curve's vertical tangent was not caught).
 COVER_PT = 2.0
 COVER_PAD_PT = 1.5
 #: A colour map of at most this many colours codes categories (it needs a legend of them).
@@ -295,7 +297,8 @@ CLIPPED = "clipped"
 def legibility_problems(fig: Figure, width_in: float | None = REPORT_WIDTH_IN) -> list[str]:
     """What makes ``fig`` hard to read at 100 %, as it is laid out now (call after the layout).
 
-    The rules (thresholds in the module constants, chosen before measuring any figure):
+    The rules (thresholds in the module constants, chosen before measuring the figures, but
+    for `COVER_PAD_PT`):
 
     * every visible, non-empty text is at least `MIN_FONT_PT` points as shown in a column
       ``width_in`` inches wide (the report's, `REPORT_WIDTH_IN`): a wider figure is shrunk to

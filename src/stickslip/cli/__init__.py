@@ -56,6 +56,8 @@ def _as_typed(argv: list[str] | None, exc: ParameterError) -> ParameterError:
             break
         command = sub
     options = {p.name: p.opts[0] for p in getattr(command, "params", []) if getattr(p, "opts", None)}
+    if "checkpoint" not in options and "out" in options:  # the run file a command writes as it goes
+        options["checkpoint"] = options["out"]
     typed = lambda name: name if name.startswith("-") else options.get(name, name)
     return ParameterError(typed(exc.name), exc.value, exc.allowed, tuple(typed(n) for n in exc.also))
 

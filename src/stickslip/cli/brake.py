@@ -11,7 +11,7 @@ import typer
 
 from .. import validation as check
 from ..errors import ParameterError
-from .common import Overwrite, emit, output_folder, output_path, progress_bar, write_netcdf
+from .common import AXIS_HELP, Overwrite, axis, emit, output_folder, output_path, progress_bar, write_netcdf
 
 _emit = functools.partial(emit, model="brake")  # results are printed with the units of this model
 
@@ -121,20 +121,20 @@ def params(**options):
 
 
 def parse_modes(text: str) -> list[int]:
-    """``"1-20"``, ``"8"`` or ``"2,4,8"`` -> list of mode numbers."""
+    """``"1-20"``, ``"8"`` or ``"2,4,8"`` -> list of wave numbers (``--wave-numbers``)."""
     try:
         modes = []
         for part in text.split(","):
             lo, _, hi = part.strip().partition("-")
             if hi and int(hi) - int(lo) > 10_000:
-                raise ParameterError("--modes", text, "mode numbers from 1 to 100000, at most 10000 per range")
+                raise ParameterError("--wave-numbers", text, "mode numbers from 1 to 100000, at most 10000 per range")
             modes += list(range(int(lo), int(hi) + 1)) if hi else [int(lo)]
     except ParameterError:
         raise
     except ValueError:
-        raise ParameterError("--modes", text, "a list like 1-20, 8 or 2,4,8") from None
+        raise ParameterError("--wave-numbers", text, "a list like 1-20, 8 or 2,4,8") from None
     if not modes or min(modes) < 1 or max(modes) > 100_000:
-        raise ParameterError("--modes", text, "mode numbers from 1 to 100000")
+        raise ParameterError("--wave-numbers", text, "mode numbers from 1 to 100000")
     return modes
 
 
@@ -163,7 +163,8 @@ def steady(xi: Xi = None, nu: Nu = 0.3, delta: Delta = None, friction: Friction 
 
 @app.command()
 def stability(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, friction: Friction = 0.0,
-              modes: Annotated[str, typer.Option(help="Mode numbers, e.g. 1-20 or 2,4,8.")] = "1-20",
+              modes: Annotated[str, typer.Option("--wave-numbers", help="Wave numbers n (waves around the ring), "
+                                                 "e.g. 1-20 or 2,4,8.")] = "1-20",
               inner_radius: Inner = None, outer_radius: Outer = None, young: Young = None, density: Density = None,
               omega: Omega = None, mismatch: Mismatch = None, json: Json = False):
     """Growth rate Re s and frequency Im s of each Fourier mode n of steady sliding."""
@@ -181,29 +182,24 @@ def integrate_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta
                   nodes: Annotated[int, typer.Option(help="Nodes around the ring.")] = 512,
                   transits: Annotated[float, typer.Option(help="Duration in wave transits 2 pi / sqrt(a).")] = 100.0,
                   beta2: Annotated[float, typer.Option(help="Scheme parameter of [22] (1/2: central differences).")] = 0.5,
-                  mode: Annotated[Optional[int], typer.Option(help="Seed this Fourier mode (default: white noise).")] = None,
+                  mode: Annotated[Optional[int], typer.Option("--seed-wave-number", help="Start from steady sliding plus this "
+                                                 "Fourier mode (default: white noise).")] = None,
                   amplitude: Annotated[float, typer.Option(help="Perturbation amplitude relative to delta, in [0, 100].")] = 1e-3,
-                  checkpoint: Annotated[Optional[Path], typer.Option(help="Checkpoint file (.nc): resumed if present.")] = None,
-                  out: Annotated[Optional[Path], typer.Option(help="Write the run to this netCDF file (.nc).")] = None,
+                  out: Annotated[Optional[Path], typer.Option(help=(
+                "The run (.nc): written as it goes and at the end; a killed run resumes from it (--overwrite starts "
+                "afresh)."))] = None,
                   overwrite: Overwrite = False, json: Json = False):
     """Time integration of [12] on the ring from perturbed steady sliding; classifies the limit regime."""
     from ..brake import classify, integrate, perturbed_steady
 
-    checkpoint, out = output_path("--checkpoint", checkpoint, ".nc"), output_path("--out", out, ".nc")
+    out = output_path("--out", out, ".nc")
     p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
     initial = perturbed_steady(p, nodes, amplitude=amplitude, mode=mode)
     with progress_bar("integrating") as tick:
-        run = integrate(p, nodes, transits=transits, beta2=beta2, initial=initial, checkpoint=checkpoint,
+        run = integrate(p, nodes, transits=transits, beta2=beta2, initial=initial, checkpoint=out,
                         progress=tick, overwrite=overwrite)
-    _report_run(run, classify, out, json, "limit regime")
-
-
-def _report_run(run, classify, out, json, title) -> None:
-    """Write a finished ring or FE run if asked, and print its classified limit regime."""
-    if out:
-        write_netcdf(run.to_xarray(), out)
-    _emit(classify(run).to_dict(), json, title)
+    _emit(classify(run).to_dict(), json, "limit regime")
 
 
 REGIME_NAMES = ["stick-slip", "stick-slip-separation", "stick-separation", "stick-slip-reverse-slip",
@@ -218,7 +214,8 @@ def _regime(value: Optional[str]) -> Optional[str]:
 
 @app.command()
 def wave(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, friction: Friction = 0.0,
-         modes: Annotated[int, typer.Option(help="Number of waves n around the ring (period 2 pi / n).")] = 4,
+         modes: Annotated[int, typer.Option("--wave-number", help="Wave number n: waves around the ring (period "
+                                                                   "2 pi / n).")] = 4,
          regime: Annotated[Optional[str], typer.Option(help="Wanted regime, e.g. stick-slip (default: any).")] = None,
          inner_radius: Inner = None, outer_radius: Outer = None, young: Young = None, density: Density = None,
          omega: Omega = None, mismatch: Mismatch = None, json: Json = False,
@@ -237,7 +234,7 @@ def wave(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, 
 
 @app.command("continue")
 def continue_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, friction: Friction = 0.0,
-                 modes: Annotated[int, typer.Option(help="Number of waves n around the ring.")] = 4,
+                 modes: Annotated[int, typer.Option("--wave-number", help="Wave number n: waves around the ring.")] = 4,
                  parameter: Annotated[str, typer.Option(help="delta, gamma, omega (needs SI input) or friction.")] = "delta",
                  stop: Annotated[float, typer.Option(help="Continue the parameter to this value.")] = 0.0,
                  points: Annotated[int, typer.Option(help="Points along the branch.")] = 50,
@@ -265,31 +262,33 @@ def continue_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta 
 @app.command("map")
 def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (directory ending in .zarr); resumed if it exists.")],
             kind: Annotated[str, typer.Option(help="waves (shooting) or ring (time integration).")] = "waves",
-            frictions: Annotated[str, typer.Option(help="f axis lo:hi:n.")] = "0.1:2:16",
-            mismatches: Annotated[str, typer.Option(help="d axis [m], log-spaced lo:hi:n.")] = "1e-7:1e-4:12",
+            x: Annotated[str, typer.Option("--x", help=f"First axis: friction or mismatch [m], {AXIS_HELP}.")] =
+            "friction=0.1:2:16",
+            y: Annotated[str, typer.Option("--y", help=f"Second axis: the other one, {AXIS_HELP}.")] =
+            "mismatch=1e-7:1e-4:12:log",
             omega: Annotated[float, typer.Option(help="Shaft speed [rad/s].")] = 50.0,
-            modes: Annotated[int, typer.Option(help="Mode number n of the waves (kind = waves).")] = 4,
+            modes: Annotated[Optional[int], typer.Option("--wave-number", help="Wave number n of the waves "
+                                                         "(--kind waves only; default 4).")] = None,
             workers: Annotated[Optional[int], typer.Option(help="Worker processes (default: all cores).")] = None,
             overwrite: Overwrite = False, json: Json = False):
     """Regime map over friction and mismatch (resumable, parallel): travelling waves or ring limit regimes."""
-    import numpy as np
     from ..brake.maps import REGIME_CODES, ring_regime_map, wave_regime_map
 
     out = output_folder("--out", out, ".zarr")
     if kind not in ("waves", "ring"):
         raise ParameterError("--kind", kind, "waves or ring")
-
-    def axis(option, text, log):
-        try:
-            lo, hi, n = text.split(":")
-            lo, hi, n = float(lo), float(hi), int(n)
-        except ValueError:
-            raise ParameterError(option, text, "lo:hi:n") from None
-        if n < 2 or (log and min(lo, hi) <= 0):
-            raise ParameterError(option, text, "lo:hi:n with n >= 2" + (" and lo, hi > 0" if log else ""))
-        return np.logspace(np.log10(lo), np.log10(hi), n) if log else np.linspace(lo, hi, n)
-
-    f, d = axis("--frictions", frictions, False), axis("--mismatches", mismatches, True)
+    if kind == "ring" and modes is not None:
+        raise ParameterError("--wave-number", modes, "left out with --kind ring (the ring finds its own waves)")
+    modes = 4 if modes is None else modes
+    axes = dict(axis(option, text) for option, text in (("--x", x), ("--y", y)))
+    if set(axes) != {"friction", "mismatch"}:
+        raise ParameterError("--x", x, f"an axis of friction, with --y an axis of mismatch or the other way round "
+                             f"(got {', '.join(axes) or 'none'})", also=("--y",))
+    f, d = axes["friction"], axes["mismatch"]
+    for value in f:
+        check.in_range("--x" if x.startswith("friction") else "--y", value, 0.0, 10.0)
+    for value in d:
+        check.positive("--y" if y.startswith("mismatch") else "--x", value)
     with progress_bar(f"{kind} map") as tick:
         if kind == "waves":
             ds = wave_regime_map(f, d, out, omega=omega, modes=modes, workers=workers, progress=tick,
@@ -309,9 +308,11 @@ def fem_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = Non
             n_r: Annotated[int, typer.Option(help="Element layers across the ring.")] = 16,
             transits: Annotated[float, typer.Option(help="Duration in P-wave transits 2 pi R / c_p.")] = 100.0,
             beta2: Annotated[float, typer.Option(help="Scheme parameter of [22] (paper: 0.9).")] = 0.9,
-            mode: Annotated[Optional[int], typer.Option(help="Seed this Fourier mode (default: white noise).")] = None,
-            checkpoint: Annotated[Optional[Path], typer.Option(help="Checkpoint file (.nc): resumed if present.")] = None,
-            out: Annotated[Optional[Path], typer.Option(help="Write the run to this netCDF file (.nc).")] = None,
+            mode: Annotated[Optional[int], typer.Option("--seed-wave-number", help="Start from steady sliding plus this "
+                                                 "Fourier mode (default: white noise).")] = None,
+            out: Annotated[Optional[Path], typer.Option(help=(
+                "The run (.nc): written as it goes and at the end; a killed run resumes from it (--overwrite starts "
+                "afresh)."))] = None,
             xdmf: Annotated[Optional[Path], typer.Option(help=(
                 "Write volume snapshots for ParaView to this XDMF file (.xdmf, data in the .h5 of the same name): "
                 "displacement, velocity, stress; contact pressure, shear, traction, state. Lengths in R, stresses "
@@ -322,7 +323,7 @@ def fem_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = Non
     """Finite element model of section 3.1 (scikit-fem): run to the limit regime and classify it."""
     from ..brake.fem import FemScheme, classify_fem, integrate_fem, perturbed_steady, write_xdmf
 
-    checkpoint, out = output_path("--checkpoint", checkpoint, ".nc"), output_path("--out", out, ".nc")
+    out = output_path("--out", out, ".nc")
     xdmf = output_path("--xdmf", xdmf, ".xdmf")
     if xdmf is not None:
         output_path("--xdmf", xdmf.with_suffix(".h5"), ".h5")  # its data file, written beside it
@@ -339,14 +340,14 @@ def fem_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = Non
     with progress_bar("finite elements") as tick:
         try:
             run = integrate_fem(p, n_theta, n_r, transits=transits, beta2=beta2, initial=initial,
-                                checkpoint=checkpoint, progress=tick, overwrite=overwrite, volume_every=volume_every)
+                                checkpoint=out, progress=tick, overwrite=overwrite, volume_every=volume_every)
         except ParameterError as err:  # the library names the interval volume_every
             if err.name != "volume_every":
                 raise
             raise ParameterError("--xdmf-every", volume_every, err.allowed) from None
     if xdmf is not None:
         write_xdmf(run, xdmf)
-    _report_run(run, classify_fem, out, json, "FE limit regime")
+    _emit(classify_fem(run).to_dict(), json, "FE limit regime")
 
 
 @app.command("campaign")

@@ -119,6 +119,30 @@ def emit(data: dict, as_json: bool, title: str, model: str = "common") -> None:
         console.print(sub)
 
 
+#: The help of a map axis option (``--x``, ``--y``), the same for every map.
+AXIS_HELP = "name=lo:hi:n, n values from lo to hi (append :log for logarithmic spacing)"
+
+
+def axis(option: str, text: str) -> tuple[str, list[float]]:
+    """A map axis ``name=lo:hi:n`` (linear) or ``name=lo:hi:n:log`` -> ``(name, values)``."""
+    example = "e.g. belt_speed=0.05:1.5:40 or mismatch=1e-7:1e-4:12:log"
+    try:
+        name, _, spec = text.partition("=")
+        parts = spec.split(":")
+        log = len(parts) == 4 and parts[3] == "log"
+        if len(parts) != 3 and not log:
+            raise ValueError
+        lo, hi, n = float(parts[0]), float(parts[1]), int(parts[2])
+    except ValueError:
+        raise ParameterError(option, text, f"name=lo:hi:n or name=lo:hi:n:log, {example}") from None
+    if n < 2 or not name.strip() or not (math.isfinite(lo) and math.isfinite(hi)) or n > 100_000:
+        raise ParameterError(option, text, f"name=lo:hi:n with finite lo, hi and 2 <= n <= 100000, {example}")
+    if log and min(lo, hi) <= 0:
+        raise ParameterError(option, text, "lo, hi > 0 for a logarithmic axis (:log)")
+    values = np.logspace(np.log10(lo), np.log10(hi), n) if log else np.linspace(lo, hi, n)
+    return name.strip(), [float(v) for v in values]
+
+
 def write_netcdf(ds, out: Path) -> None:
     """Write a result dataset to ``out`` (through a temporary file, so a kill leaves no half
     file), with the command line in its ``history``."""

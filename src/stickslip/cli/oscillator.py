@@ -16,8 +16,7 @@ from ..friction import make_law
 from ..oscillator import (Oscillator, continue_cycle, continue_from_hopf, equilibrium_stability, hopf_points,
                           limit_cycle, simulate)
 from .. import validation as check
-from ..errors import ParameterError
-from .common import Overwrite, emit, output_folder, output_path, progress_bar, write_netcdf
+from .common import AXIS_HELP, Overwrite, axis, emit, output_folder, output_path, progress_bar, write_netcdf
 
 _emit = functools.partial(emit, model="oscillator")  # results are printed with the units of this model
 
@@ -37,17 +36,24 @@ Belt = Annotated[float, typer.Option("--belt-speed", help="Belt speed V [m/s], >
 Fs = Annotated[float, typer.Option("--fs", help="Static friction coefficient f_s >= f_d.")]
 Fd = Annotated[float, typer.Option("--fd", help="Kinetic friction coefficient f_d >= 0.")]
 LawOpt = Annotated[Law, typer.Option("--law", help="Friction law.")]
-Tau = Annotated[Optional[float], typer.Option("--tau", help="linear-weakening: rate tau [s/m]; stribeck: Stribeck speed [m/s].")]
+Tau = Annotated[Optional[float], typer.Option("--tau", help="Weakening rate tau [s/m] of --law linear-weakening.")]
+Vs = Annotated[Optional[float], typer.Option("--vs", help="Stribeck speed v_s [m/s] of --law stribeck.")]
 Damping = Annotated[float, typer.Option("--damping", help="Viscous damping c [N s/m], >= 0, with c/(2 sqrt(k m)) <= 1e11.")]
 Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
 Out = Annotated[Optional[Path], typer.Option("--out", help="Write the data to this netCDF file (.nc).")]
 Plot = Annotated[Optional[Path], typer.Option("--plot", help="Write a figure to this PNG file.")]
 
 
-def _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping) -> Oscillator:
-    if law is Law.coulomb and tau is not None:  # a value given for nothing is a mistake, not something to ignore
-        raise ParameterError("--tau", tau, "left out with --law coulomb (it sets linear-weakening or stribeck)")
-    return Oscillator(mass, stiffness, normal_force, belt_speed, make_law(law.value, fs=fs, fd=fd, tau=tau), damping)
+def Given(option):
+    """The option of ``Annotated[float, option]`` made optional (None when left out)."""
+    info = option.__metadata__[0]
+    return typer.Option(None, *info.param_decls, help=info.help)
+
+
+def _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, damping) -> Oscillator:
+    # a value given for nothing is a mistake, not something to ignore: make_law refuses it
+    friction = make_law(law.value, fs=fs, fd=fd, tau=tau, vs=vs)
+    return Oscillator(mass, stiffness, normal_force, belt_speed, friction, damping)
 
 
 def _write(ds, out, plot, draw: str) -> None:
@@ -62,13 +68,13 @@ def _write(ds, out, plot, draw: str) -> None:
 
 @app.command()
 def cycle(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Belt, fs: Fs, fd: Fd,
-          law: LawOpt = Law.coulomb, tau: Tau = None, damping: Damping = 0.0,
+          law: LawOpt = Law.coulomb, tau: Tau = None, vs: Vs = None, damping: Damping = 0.0,
           x0: Annotated[Optional[float], typer.Option(help="Start x [m] (default: end of the stick segment).")] = None,
           v0: Annotated[Optional[float], typer.Option(help="Start velocity [m/s].")] = None,
           json: Json = False, out: Out = None, plot: Plot = None):
     """Limit cycle: period, stick and slip times, amplitude, Floquet multipliers."""
     out, plot = output_path("--out", out, ".nc"), output_path("--plot", plot, ".png")
-    result = limit_cycle(_osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping), x0, v0)
+    result = limit_cycle(_osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, damping), x0, v0)
     _emit(result.to_dict(), json, "limit cycle")
 
     _write(result.to_xarray() if (out or plot) else None, out, plot, "plot_cycle")
@@ -77,7 +83,7 @@ def cycle(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Be
 @app.command("simulate")
 def simulate_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Belt, fs: Fs, fd: Fd,
                  t_end: Annotated[float, typer.Option("--t-end", help="Final time [s], > 0.")],
-                 law: LawOpt = Law.coulomb, tau: Tau = None, damping: Damping = 0.0,
+                 law: LawOpt = Law.coulomb, tau: Tau = None, vs: Vs = None, damping: Damping = 0.0,
                  x0: Annotated[Optional[float], typer.Option(help="Initial x [m] (default: equilibrium).")] = None,
                  v0: Annotated[float, typer.Option(help="Initial velocity [m/s].")] = 0.0,
                  samples: Annotated[int, typer.Option(help="Uniform samples in the output file.")] = 2001,
@@ -85,7 +91,7 @@ def simulate_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_sp
     """Event-driven simulation with exact stick/slip switching."""
     out, plot = output_path("--out", out, ".nc"), output_path("--plot", plot, ".png")
     check.count("--samples", samples, 10_000_000, "uniform samples of the trajectory")
-    traj = simulate(_osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping), t_end, x0, v0)
+    traj = simulate(_osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, damping), t_end, x0, v0)
     counts = {name: int((traj.modes == m).sum()) for name, m in (("stick_segments", 0), ("slip_segments", 1),
                                                                   ("reverse_slip_segments", -1))}
     _emit({"status": traj.status, "message": traj.message, "t_end": traj.t_end, "x_end": float(traj.x[-1]),
@@ -96,13 +102,13 @@ def simulate_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_sp
 
 @app.command()
 def stability(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Belt, fs: Fs, fd: Fd,
-              law: LawOpt = Law.coulomb, tau: Tau = None, damping: Damping = 0.0,
+              law: LawOpt = Law.coulomb, tau: Tau = None, vs: Vs = None, damping: Damping = 0.0,
               parameter: Annotated[str, typer.Option(help="Parameter scanned for Hopf points.")] = "belt_speed",
               lo: Annotated[Optional[float], typer.Option(help="Scan from (default: value / 100).")] = None,
               hi: Annotated[Optional[float], typer.Option(help="Scan to (default: value * 100).")] = None,
               json: Json = False):
     """Stability of steady sliding and its Hopf (flutter) points."""
-    osc = _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping)
+    osc = _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, damping)
     value = osc.parameter(parameter)
     lo = value / 100 if lo is None else lo
     hi = min(value * 100, sys.float_info.max) if hi is None else hi  # the default stays finite
@@ -114,7 +120,7 @@ def stability(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed
 @app.command("continue")
 def continue_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Belt, fs: Fs, fd: Fd,
                  stop: Annotated[float, typer.Option(help="Continue the parameter towards this value.")],
-                 law: LawOpt = Law.coulomb, tau: Tau = None, damping: Damping = 0.0,
+                 law: LawOpt = Law.coulomb, tau: Tau = None, vs: Vs = None, damping: Damping = 0.0,
                  parameter: Annotated[str, typer.Option(help="Continuation parameter.")] = "belt_speed",
                  from_hopf: Annotated[bool, typer.Option(help="Start from the nearest Hopf point instead.")] = False,
                  step: Annotated[float, typer.Option(help="Initial arclength step (scaled).")] = 0.02,
@@ -122,7 +128,7 @@ def continue_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_sp
                  json: Json = False, out: Out = None, plot: Plot = None):
     """Continuation of the limit cycle in a parameter (amplitude, period, grazing, Hopf)."""
     out, plot = output_path("--out", out, ".nc"), output_path("--plot", plot, ".png")
-    osc = _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping)
+    osc = _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, damping)
     if from_hopf:
         start = osc.parameter(parameter)
         points = hopf_points(osc, parameter, min(start, stop), max(start, stop))
@@ -142,29 +148,15 @@ def continue_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_sp
     _write(branch.to_xarray() if (out or plot) else None, out, plot, "plot_branch")
 
 
-def _axis(option: str, text: str) -> tuple[str, list[float]]:
-    """``name=lo:hi:n`` -> (name, values)."""
-    import numpy as np
-
-    from ..errors import ParameterError
-
-    try:
-        name, _, spec = text.partition("=")
-        lo, hi, n = spec.split(":")
-        values = np.linspace(float(lo), float(hi), int(n))
-    except ValueError:
-        raise ParameterError(option, text, "name=lo:hi:n, e.g. belt_speed=0.05:1.5:40") from None
-    if int(n) < 2 or not name:
-        raise ParameterError(option, text, "name=lo:hi:n with n >= 2")
-    return name.strip(), list(values)
-
-
 @app.command("map")
-def map_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Belt, fs: Fs, fd: Fd,
-            out: Annotated[Path, typer.Option(help="Zarr store (a directory ending in .zarr); resumed if it exists.")],
-            x: Annotated[str, typer.Option("--x", help="First axis, name=lo:hi:n.")] = "belt_speed=0.05:1.5:30",
-            y: Annotated[str, typer.Option("--y", help="Second axis, name=lo:hi:n.")] = "damping=0.01:0.3:20",
-            law: LawOpt = Law.coulomb, tau: Tau = None, damping: Damping = 0.0,
+def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (a directory ending in .zarr); resumed if it exists.")],
+            mass: Optional[float] = Given(Mass), stiffness: Optional[float] = Given(Stiffness),
+            normal_force: Optional[float] = Given(Normal), belt_speed: Optional[float] = Given(Belt),
+            fs: Optional[float] = Given(Fs), fd: Optional[float] = Given(Fd),
+            x: Annotated[str, typer.Option("--x", help=f"First axis, a parameter's {AXIS_HELP}.")] =
+            "belt_speed=0.05:1.5:30",
+            y: Annotated[str, typer.Option("--y", help=f"Second axis, {AXIS_HELP}.")] = "damping=0.01:0.3:20",
+            law: LawOpt = Law.coulomb, tau: Tau = None, vs: Vs = None, damping: Optional[float] = Given(Damping),
             workers: Annotated[Optional[int], typer.Option(help="Worker processes (default: all cores).")] = None,
             overwrite: Overwrite = False, json: Json = False, plot: Plot = None):
     """Regime map over two parameters (steady sliding, stick-slip, bistable, pure slip): resumable, parallel."""
@@ -173,10 +165,31 @@ def map_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: 
 
     out = output_folder("--out", out, ".zarr")
     plot = output_path("--plot", plot, ".png")
-    osc = _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, damping)
+    named = dict(axis(option, text) for option, text in (("--x", x), ("--y", y)))
+    base = {"mass": mass, "stiffness": stiffness, "normal_force": normal_force, "belt_speed": belt_speed, "fs": fs,
+            "fd": fd, "damping": damping, "tau": tau, "vs": vs}
+    for name, value in base.items():  # a swept parameter takes its values from the axis, not from its option
+        option = "--" + name.replace("_", "-")
+        if name in named and value is not None:
+            raise ParameterError(option, value, f"left out: {name} is an axis of the map")
+        if name in named:
+            base[name] = named[name][0]
+        elif value is None and name not in ("tau", "vs", "damping"):
+            raise ParameterError(option, None, f"given (or made an axis with --x/--y {name}=lo:hi:n)")
+    base["damping"] = 0.0 if base["damping"] is None else base["damping"]
+    try:
+        osc = _osc(*(base[k] for k in ("mass", "stiffness", "normal_force", "belt_speed", "fs", "fd")), law,
+                   base["tau"], base["vs"], base["damping"])
+    except ParameterError as exc:  # an axis' first value out of range: the axis is named
+        option, text = next(((o, t) for o, t in (("--x", x), ("--y", y)) if t.split("=")[0].strip() == exc.name),
+                            (None, None))
+        if option is None:
+            raise
+        raise ParameterError(option, text, f"an axis of {exc.name} with every value {exc.allowed}",
+                             also=exc.also) from None
     axes = {}
     for option, text in (("--x", x), ("--y", y)):
-        name, values = _axis(option, text)
+        name, values = axis(option, text)
         try:  # every point of the map is a valid oscillator, checked here rather than in a worker
             for value in values:
                 osc.with_parameter(name, value)

@@ -23,11 +23,14 @@ slip [19] or separation [20]. Over the densely sampled tail of a run, `classify`
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from dataclasses import dataclass, field
 
 import numpy as np
 import xarray as xr
 
+from ..results import Result
 from .. import validation as check
 from ..cf import finish
 from ..errors import ParameterError
@@ -55,14 +58,16 @@ def _shift(x, s, theta):
     return np.interp((theta - s) % (2 * np.pi), theta, x, period=2 * np.pi)
 
 
-@dataclass(frozen=True)
-class RegimeResult:
+@dataclass(frozen=True, repr=False)
+class RegimeResult(Result):
     """Limit regime of a run: zones, mode number, wave speed, stationarity.
 
     ``relative_speeds`` holds ``c`` over each reference speed of the scheme
     (`ExplicitScheme.speed_scales`), read as attributes ``c_over_<name>`` (for the ring,
     ``c_over_sqrt_a``: ``c`` over the reduced model's P-wave speed ``sqrt(a)``).
     """
+
+    MODEL: ClassVar[str] = "brake"
 
     regime: str
     fractions: dict

@@ -29,6 +29,7 @@ from typing import Callable, ClassVar
 import numpy as np
 import xarray as xr
 
+from ..results import Result
 from .. import validation as check
 from ..cf import SOURCE, finish
 from ..errors import ParameterError
@@ -87,8 +88,8 @@ class RunFormat:
         return {k: (self.units[kind], self.notes.get(k, note)) for k, (kind, note) in _SNAPSHOT.items()}
 
 
-@dataclass(frozen=True, eq=False)
-class RunRecord:
+@dataclass(frozen=True, eq=False, repr=False)
+class RunRecord(Result):
     """A run's books. Subclasses set ``FORMAT``; series and snapshots read as attributes.
 
     Series (one row per sample): ``t``, ``energy`` (of the deviation from steady sliding,
@@ -97,6 +98,8 @@ class RunRecord:
     Snapshots: ``snap_t``, ``U``, ``V``, ``Ud``, ``Vd``, ``P``, ``Q``, ``gap``, ``state``.
     ``kernel``: the scheme state ``u, v, a`` and the reference ``ref`` (steady sliding).
     """
+
+    MODEL: ClassVar[str] = "brake"
 
     FORMAT: ClassVar[RunFormat]
     scheme: object
@@ -133,8 +136,17 @@ class RunRecord:
                 return data[name]
         raise AttributeError(name)
 
+    def to_dict(self) -> dict:
+        """Parameters, scheme, schedule and progress (no arrays)."""
+        s = self.scheme
+        return {"params": self.params.to_dict(), **dict(zip(self.FORMAT.key_attrs, _scheme_key(s, self.FORMAT))),
+                "dt": s.dt, "transit_time": s.transit_time, "transits": self.transits,
+                "samples_done": self.samples_done, "complete": self.complete,
+                **{k: v for k, v in self.settings.items() if k != "initial_hash"}}
+
     def to_xarray(self) -> xr.Dataset:
-        """Snapshots ``(snapshot, node)``, series ``(sample[, kind | mode])``, units in attrs."""
+        """Snapshots over ``(snap_t, theta)``, series over ``t`` (and ``kind`` or ``mode``), with
+        CF-style metadata; `from_xarray` reads it back."""
         return run_to_dataset(self)
 
     @classmethod

@@ -19,12 +19,15 @@ problem is linear in ``v*``), so `direct_map` maps it over that plane.
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from dataclasses import dataclass
 
 import numpy as np
 import xarray as xr
 from scipy.optimize import brentq
 
+from ..results import Result
 from ..cf import finish
 from .. import validation as check
 from ..errors import NoSolutionError, ParameterError
@@ -60,8 +63,8 @@ def _brackets(b, F):
     return change
 
 
-@dataclass(frozen=True)
-class DirectSolution:
+@dataclass(frozen=True, repr=False)
+class DirectSolution(Result):
     """Waves ``(cbar, b)`` solving [52]-[55] for the loading ``(T, v, v*)``.
 
     ``solutions`` lists every ``(cbar, b)`` found, ordered by ``cbar``; ``c`` and ``b``
@@ -69,6 +72,8 @@ class DirectSolution:
     ``T = (mu - mu*)(-tau*_yy)/G`` imply for each solution (NaN for ``nu = 0``, where
     [26] gives ``V* = 0``).
     """
+
+    MODEL: ClassVar[str] = "halfspace"
 
     T: float
     v: float

@@ -33,12 +33,15 @@ reports the departure; `decaying_wave` builds the wave that satisfies it.
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from dataclasses import dataclass, field
 
 import numpy as np
 import xarray as xr
 from scipy.special import roots_jacobi
 
+from ..results import Result
 from ..cf import finish
 from .. import validation as check
 from ..errors import ParameterError
@@ -85,13 +88,15 @@ def decaying_velocity(b, cbar, T, v_star, *, nu, mu):
     return v_star + R * rd.cbar * rd.one_minus_b1b2
 
 
-@dataclass(frozen=True, eq=False)
-class InterfaceFields:
+@dataclass(frozen=True, eq=False, repr=False)
+class InterfaceFields(Result):
     """Fields along the interface at points ``x`` (one period: ST = [0, 1), SL = [1, b)).
 
     Stresses are perturbations over ``G`` (``sigma_*``) and totals with the remote
     stresses (``Sigma_* = tau*_* + sigma_*``); velocities over ``c2``.
     """
+
+    MODEL: ClassVar[str] = "halfspace"
 
     wave: "StickSlipWave"
     x: np.ndarray
@@ -119,6 +124,11 @@ class InterfaceFields:
         w = self.wave
         return float(np.max(np.abs(self.slip_velocity[~self.slip]), initial=0.0) / abs(w.v - w.v_star))
 
+    def to_dict(self) -> dict:
+        """The wave's scalars, the residuals of the fields and their size (JSON-ready)."""
+        return {**self.wave.summary(), "points": int(self.x.size), "slip_residual": float(self.slip_residual),
+                "stick_residual": float(self.stick_residual), "slip_fraction": float(np.mean(self.slip))}
+
     def to_xarray(self) -> xr.Dataset:
         w = self.wave
         one = {"units": "1"}
@@ -145,8 +155,8 @@ class InterfaceFields:
         return finish(ds, "interface fields of a stick-slip wave of the half-space", "halfspace")
 
 
-@dataclass(frozen=True)
-class StickSlipWave:
+@dataclass(frozen=True, repr=False)
+class StickSlipWave(Result):
     """A periodic stick-slip wave and its potential (closed form of [46], ``C0 = 0``).
 
     Parameters
@@ -165,6 +175,8 @@ class StickSlipWave:
         Remote normal stress over ``G`` (< 0), for the total stresses; by default the
         value [26] implies, ``2 v*/(cbar nu)`` (NaN if ``nu = 0``).
     """
+
+    MODEL: ClassVar[str] = "halfspace"
 
     b: float
     cbar: float
@@ -408,6 +420,14 @@ class StickSlipWave:
         if lo > 0:
             out.append((float(_x_of_s(lo ** (-1.0 / self.lam), self.b)), 1.0))
         return out
+
+    def to_dict(self) -> dict:
+        """The scalars describing the wave (`summary`)."""
+        return self.summary()
+
+    def to_xarray(self, n: int = 2001) -> xr.Dataset:
+        """The interface fields over one period (``fields(n=n).to_xarray()``)."""
+        return self.fields(n=n).to_xarray()
 
     def summary(self) -> dict:
         """Scalars describing the wave (JSON-ready)."""

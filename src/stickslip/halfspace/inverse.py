@@ -28,12 +28,15 @@ For the printed system ``v = v* K/(K - 1)`` does not depend on ``b`` (the paper'
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from dataclasses import dataclass
 
 import numpy as np
 import xarray as xr
 from scipy.optimize import brentq
 
+from ..results import Result
 from ..cf import finish
 from .. import validation as check
 from ..errors import NoSolutionError, ParameterError
@@ -108,13 +111,15 @@ def determinant(b, cbar, nu, mu, system: str = "printed"):
     return (b - 1.0) * H / (rd.gamma1 * rd.cbar), H
 
 
-@dataclass(frozen=True, eq=False)
-class InverseSolution:
+@dataclass(frozen=True, eq=False, repr=False)
+class InverseSolution(Result):
     """Solution ``(v, T)`` of [54]-[55] for given ``(b, cbar, v*)`` (arrays, broadcast).
 
     ``v = V/c2`` (rigid body speed), ``T = T*/G`` (driving traction). ``D``, ``H`` are the
     determinant [56] and [57]; ``radok`` holds ``beta1, beta2, gamma1, gamma2, alpha``.
     """
+
+    MODEL: ClassVar[str] = "halfspace"
 
     b: np.ndarray
     cbar: np.ndarray

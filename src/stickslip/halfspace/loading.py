@@ -22,8 +22,11 @@ Scaled (``E = 2 G (1 + nu)``): ``v* = V*/c2 = cbar nu (tau*_yy/G) / 2`` and
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from dataclasses import dataclass
 
+from ..results import Result
 from .. import validation as check
 from .arrays import MAX_MU
 from ..errors import ParameterError
@@ -90,9 +93,11 @@ def stresses_from_T(T, mu, mu_star) -> tuple[float, float]:
     return tau_yy, -mu_star * tau_yy
 
 
-@dataclass(frozen=True)
-class Loading:
+@dataclass(frozen=True, repr=False)
+class Loading(Result):
     """Scaled loading of a wave: ``T = T*/G``, ``v* = V*/c2``, remote stresses over ``G``."""
+
+    MODEL: ClassVar[str] = "halfspace"
 
     cbar: float
     nu: float

@@ -17,12 +17,15 @@ Everything is in the paper's scaling: speeds in units of ``c2``, ``cbar = c/c2``
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 import math
 from dataclasses import dataclass
 
 import numpy as np
 from scipy.optimize import brentq
 
+from ..results import Result
 from .. import validation as check
 from .arrays import MAX_MU, cbar_array
 
@@ -50,8 +53,8 @@ def rayleigh_speed_ratio(nu) -> float:
     return brentq(lambda xi: rayleigh_function(xi, c1bar) / xi**2, 0.5, 1.0, xtol=1e-15, rtol=1e-15)
 
 
-@dataclass(frozen=True)
-class Material:
+@dataclass(frozen=True, repr=False)
+class Material(Result):
     """Isotropic elastic material, SI units.
 
     Parameters
@@ -63,6 +66,8 @@ class Material:
     density : float
         Mass density ``rho`` [kg/m^3] > 0.
     """
+
+    MODEL: ClassVar[str] = "halfspace"
 
     young: float = 2.1e11
     poisson: float = 0.3

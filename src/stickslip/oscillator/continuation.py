@@ -14,12 +14,15 @@ parametrisation lets it turn at folds. ``G_x = P'(x_s) - 1`` comes from the mono
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 import math
 from dataclasses import dataclass, field
 
 import numpy as np
 import xarray as xr
 
+from ..results import Result
 from ..cf import finish
 from ..vocabulary import lookup
 from .. import validation as check
@@ -31,9 +34,11 @@ from .simulate import Engine, params_attrs
 __all__ = ["Branch", "continue_cycle"]
 
 
-@dataclass
-class Branch:
+@dataclass(repr=False)
+class Branch(Result):
     """Limit cycles along a parameter; ``events`` lists grazing and stability changes."""
+
+    MODEL: ClassVar[str] = "oscillator"
 
     parameter: str
     values: np.ndarray

@@ -10,6 +10,8 @@ Floquet multipliers exactly ``{1, 0}`` and ``P`` is locally constant.
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 import math
 from dataclasses import dataclass, field
 
@@ -17,6 +19,7 @@ import numpy as np
 import xarray as xr
 from scipy.optimize import minimize_scalar
 
+from ..results import Result
 from ..cf import finish
 from .. import validation as check
 from ..errors import NoSolutionError
@@ -55,14 +58,16 @@ def return_map(engine: Engine, x: float) -> ReturnMap:
     return ReturnMap(x, float(traj.x[-1]), derivative, traj)
 
 
-@dataclass(frozen=True)
-class LimitCycle:
+@dataclass(frozen=True, repr=False)
+class LimitCycle(Result):
     """A periodic orbit and its characteristics (SI units).
 
     ``floquet_multipliers`` are the eigenvalues of the monodromy matrix (with saltation
     matrices); one of them is 1 (the flow direction). They are NaN for a cycle that
     touches a switching line tangentially (grazing), where no monodromy matrix exists.
     """
+
+    MODEL: ClassVar[str] = "oscillator"
 
     oscillator: Oscillator
     section_x: float

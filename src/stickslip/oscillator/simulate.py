@@ -14,11 +14,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Callable
+from typing import Callable, ClassVar
 
 import numpy as np
 import xarray as xr
 
+from ..results import Result
 from ..cf import finish
 from .. import validation as check
 from ..errors import ParameterError
@@ -61,13 +62,15 @@ class Segment:
         return np.reshape(x, t.shape), np.reshape(v, t.shape)
 
 
-class Trajectory:
+class Trajectory(Result):
     """Result of `simulate`: segment ``i`` has mode ``modes[i]`` and runs from
     ``(t[i], x[i], v[i])`` to ``(t[i+1], x[i+1], v[i+1])``.
 
     ``status`` is 0 when ``t_end`` was reached, 1 when the run stopped on the Poincare
     section, and negative on failure (``message`` says why).
     """
+
+    MODEL: ClassVar[str] = "oscillator"
 
     def __init__(self, oscillator, modes, t, x, v, status, message, evaluators, jacobians=None):
         self.oscillator = oscillator
@@ -116,6 +119,13 @@ class Trajectory:
             if i + 1 < len(segs) and segs[i + 1].mode != seg.mode:
                 mono = _saltation(osc, seg.x1, seg.v1, seg.mode, segs[i + 1].mode) @ mono
         return mono
+
+    def to_dict(self) -> dict:
+        """Status, end state and the time spent in each contact mode (JSON-ready)."""
+        time = {name: float(self.durations(Mode(code)).sum()) for name, code in (("stick_time", 0), ("slip_time", 1),
+                                                                                ("reverse_slip_time", -1))}
+        return {"status": self.status, "message": self.message, "t_end": self.t_end, "x_end": float(self.x[-1]),
+                "v_end": float(self.v[-1]), **time, "segments": int(self.modes.size), "switches": len(self.events)}
 
     def sample(self, num: int = 2001):
         """Uniform samples plus every switching instant: ``t, x, v, mode`` arrays."""

@@ -14,12 +14,16 @@ the small cycle's amplitude ``A^2 = -4 d1 / (3 d3 w^2)``.
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 import math
 from dataclasses import dataclass
 
 import numpy as np
 from scipy.optimize import brentq
 
+from ..results import Result
+from ..vocabulary import lookup
 from .. import validation as check
 from .model import Oscillator
 
@@ -37,9 +41,11 @@ def damping_coefficients(osc: Oscillator, h: float | None = None) -> tuple[float
     return d1, N * mu3 / 6.0
 
 
-@dataclass(frozen=True)
-class EquilibriumStability:
+@dataclass(frozen=True, repr=False)
+class EquilibriumStability(Result):
     """Linear stability of steady sliding (the mass at rest, the belt slipping under it)."""
+
+    MODEL: ClassVar[str] = "oscillator"
 
     x_e: float
     eigenvalues: np.ndarray
@@ -69,9 +75,11 @@ def equilibrium_stability(osc: Oscillator) -> EquilibriumStability:
                                 osc.effective_damping)
 
 
-@dataclass(frozen=True)
-class HopfPoint:
+@dataclass(frozen=True, repr=False)
+class HopfPoint(Result):
     """A parameter value where the effective damping vanishes."""
+
+    MODEL: ClassVar[str] = "oscillator"
 
     parameter: str
     value: float
@@ -87,6 +95,13 @@ class HopfPoint:
     def to_dict(self) -> dict:
         return {"parameter": self.parameter, "value": self.value, "frequency": self.frequency,
                 "d3": self.d3, "criticality": self.criticality}
+
+    def to_xarray(self):
+        """The Hopf point's numbers, ``value`` in the units of its parameter."""
+        ds = Result.to_xarray(self)
+        ds["value"].attrs.update(units=(lookup(self.parameter, "oscillator") or ("1",))[0],
+                                 long_name=f"{self.parameter} at the Hopf point")
+        return ds
 
 
 def hopf_points(osc: Oscillator, parameter: str, lo: float, hi: float, num: int = 400) -> list[HopfPoint]:

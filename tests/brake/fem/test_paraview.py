@@ -225,7 +225,7 @@ def test_the_command_writes_a_readable_file(tmp_path, capsys):
     (["--xdmf-every", "0.5", "--no-xdmf"], "--xdmf-every", "--xdmf"),
     (["--xdmf", "{tmp}/x.vtu"], "--xdmf", ".xdmf"),
     (["--xdmf", "{tmp}/missing/x.xdmf"], "--xdmf", "folder"),
-    (["--xdmf", "{tmp}/f.xdmf", "--checkpoint", "{tmp}/f.txt"], "--checkpoint", ".nc"),
+    (["--xdmf", "{tmp}/f.xdmf", "--out", "{tmp}/f.txt"], "--out", ".nc"),
 ])
 def test_the_command_refuses_bad_input_in_one_line_before_any_work(extra, option, words, tmp_path, capsys,
                                                                     monkeypatch):

@@ -12,10 +12,13 @@ contact pressure relative to the steady ``p_e``, and the energy statistics of th
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from dataclasses import dataclass
 
 import numpy as np
 
+from ...results import Result
 from ...errors import ParameterError
 from .run import FemRun
 from ...contact import SEPARATION, STICK, RegimeResult, classify, count_zones, pattern_speed
@@ -23,8 +26,8 @@ from ...contact import SEPARATION, STICK, RegimeResult, classify, count_zones, p
 __all__ = ["FemRegime", "classify_fem"]
 
 
-@dataclass(frozen=True)
-class FemRegime:
+@dataclass(frozen=True, repr=False)
+class FemRegime(Result):
     """Limit regime of an FE run (fields of `RegimeResult` plus FE-specific numbers).
 
     ``n_zones``: median number of stick zones (>= ``min_run`` nodes) per snapshot, or of
@@ -35,6 +38,8 @@ class FemRegime:
     ``energy_mean``, ``energy_cv``: mean and coefficient of variation of the energy of the
     deviation from steady sliding in the window; ``transits``: length of the run.
     """
+
+    MODEL: ClassVar[str] = "brake"
 
     result: RegimeResult
     n_zones: int

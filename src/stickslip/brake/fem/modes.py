@@ -23,12 +23,15 @@ and the ``2 n_r n_theta`` eigenvalues of ``(K, gamma M)`` are those of the block
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from dataclasses import dataclass
 
 import numpy as np
 import xarray as xr
 from scipy.linalg import eigh, eigvals
 
+from ...results import Result
 from ...cf import finish
 from ...contact import discrete_rates
 from ...errors import ParameterError
@@ -86,9 +89,11 @@ def max_frequency(system: FemSystem) -> float:
     return float(fem_frequencies(system, np.arange(system.mesh.n_theta // 2 + 1))[:, -1].max())
 
 
-@dataclass(frozen=True)
-class FemGrowth:
+@dataclass(frozen=True, repr=False)
+class FemGrowth(Result):
     """Complex ``s`` (paper time) of steady sliding per mode ``n`` and branch (ascending ``|Im s|``)."""
+
+    MODEL: ClassVar[str] = "brake"
 
     params: BrakeParams
     n: np.ndarray
@@ -109,7 +114,9 @@ class FemGrowth:
         return discrete_rates(-self.s**2, dt, beta2)
 
     def to_dict(self) -> dict:
-        return {"n": self.n.tolist(), "growth_rate": self.growth_rate.tolist(),
+        top = int(np.argmax(self.growth_rate))
+        return {"most_unstable": int(self.n[top]), "max_growth_rate": float(self.growth_rate[top]),
+                "unstable": bool(self.growth_rate[top] > 0), "n": self.n.tolist(), "growth_rate": self.growth_rate.tolist(),
                 "lowest": [[float(z.real), float(z.imag)] for z in self.lowest]}
 
     def to_xarray(self) -> xr.Dataset:

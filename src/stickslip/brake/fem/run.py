@@ -100,7 +100,7 @@ _FORMAT = RunFormat(
     title="run of the FE annulus on the rotating shaft")
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, repr=False)
 class FemRun(RunRecord):
     """Result of `integrate_fem` (times in the paper's ``t = Omega t̄``).
 
@@ -117,12 +117,6 @@ class FemRun(RunRecord):
 
     FORMAT: ClassVar[RunFormat] = _FORMAT
 
-    def to_dict(self) -> dict:
-        """Parameters, mesh, scheme, schedule and progress (no arrays)."""
-        s = self.scheme
-        return {"params": self.params.to_dict(), **s.key(), "dt": s.dt, "transit_time": s.transit_time,
-                "transits": self.transits, "samples_done": self.samples_done, "complete": self.complete,
-                **{k: v for k, v in self.settings.items() if k != "initial_hash"}}
 
 
 def integrate_fem(params: BrakeParams, n_theta: int = 256, n_r: int = 16, t_end: float | None = None, *,

@@ -17,6 +17,8 @@ discretisation error ``O(h^2)``.
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from dataclasses import dataclass
 
 import numpy as np
@@ -24,6 +26,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 import xarray as xr
 
+from ...results import Result
 from ...cf import finish
 from ...errors import ParameterError
 from ..reduced.params import BrakeParams
@@ -33,13 +36,15 @@ from .mesh import FemSystem, annulus_mesh, assemble
 __all__ = ["FemSteady", "steady_state"]
 
 
-@dataclass(frozen=True, eq=False)
-class FemSteady:
+@dataclass(frozen=True, eq=False, repr=False)
+class FemSteady(Result):
     """FE steady sliding: free-dof displacement ``u`` and contact reactions (per node).
 
     ``reaction_n, reaction_t`` are nodal forces (units ``E R`` per unit length in z);
     ``pressure = reaction_n / h_theta`` is in units of ``E``.
     """
+
+    MODEL: ClassVar[str] = "brake"
 
     params: BrakeParams
     system: FemSystem

@@ -22,12 +22,15 @@ modal mass ``M = gamma int X^2 r dr = gamma B/(xi^2 - 1)``: ``p = M P``, ``q = M
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from dataclasses import dataclass
 
 import numpy as np
 import xarray as xr
 from scipy.optimize import brentq
 
+from ...results import Result
 from ...cf import finish
 from ... import validation as check
 
@@ -57,9 +60,11 @@ def coupling(xi, nu):
     return at * C1 - bt * C2
 
 
-@dataclass(frozen=True)
-class ReducedCoefficients:
+@dataclass(frozen=True, repr=False)
+class ReducedCoefficients(Result):
     """Coefficients of the reduced equations [12] (corrected) for given ``(xi, nu, gamma)``."""
+
+    MODEL: ClassVar[str] = "brake"
 
     xi: float
     nu: float

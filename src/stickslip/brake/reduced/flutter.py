@@ -26,12 +26,15 @@ in the paper's time ``t = Omega t̄``; since ``a, h, D`` scale as ``1/gamma``,
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from dataclasses import dataclass
 from numbers import Integral
 
 import numpy as np
 import xarray as xr
 
+from ...results import Result
 from ...cf import finish
 from ... import validation as check
 from ...errors import ParameterError
@@ -77,9 +80,11 @@ def _check_params(params) -> BrakeParams:
     return params
 
 
-@dataclass(frozen=True)
-class ModeGrowth:
+@dataclass(frozen=True, repr=False)
+class ModeGrowth(Result):
     """Growth rate ``Re s`` and frequency ``Im s`` of one mode (time ``t = Omega t̄``)."""
+
+    MODEL: ClassVar[str] = "brake"
 
     n: int
     growth_rate: float
@@ -94,9 +99,11 @@ class ModeGrowth:
         return {"n": self.n, "growth_rate": self.growth_rate, "frequency": self.frequency}
 
 
-@dataclass(frozen=True)
-class GrowthRates:
+@dataclass(frozen=True, repr=False)
+class GrowthRates(Result):
     """Complex growth rates ``s(n)`` (the root with larger real part) of steady sliding."""
+
+    MODEL: ClassVar[str] = "brake"
 
     params: BrakeParams
     coefficients: ReducedCoefficients

@@ -19,12 +19,15 @@ with ``p_e = M P_e`` (``M`` the modal mass of `ReducedCoefficients`).
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 import math
 from dataclasses import dataclass
 
 import numpy as np
 import xarray as xr
 
+from ...results import Result
 from ...cf import finish
 from ... import validation as check
 from .coefficients import coefficients, elastic_moduli
@@ -32,9 +35,11 @@ from .coefficients import coefficients, elastic_moduli
 __all__ = ["SteadySliding", "steady_sliding"]
 
 
-@dataclass(frozen=True)
-class SteadySliding:
+@dataclass(frozen=True, repr=False)
+class SteadySliding(Result):
     """The steady-sliding state: Lamé fields [11] and reduced-model values [16]."""
+
+    MODEL: ClassVar[str] = "brake"
 
     xi: float
     nu: float

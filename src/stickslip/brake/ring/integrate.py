@@ -109,7 +109,7 @@ _FORMAT = RunFormat(
     title="run of the ring (reduced model) on the rotating shaft")
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, repr=False)
 class RingRun(RunRecord):
     """Result of `integrate` (all times in the paper's ``t = Omega t̄``).
 

@@ -20,6 +20,8 @@ follows the same internal family; only the conversion of ``c`` and amplitudes di
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 import math
 from collections import Counter
 from dataclasses import dataclass, field
@@ -27,6 +29,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import xarray as xr
 
+from ...results import Result
 from ...cf import finish
 from ... import validation as check
 from ...errors import NoSolutionError, ParameterError
@@ -60,9 +63,11 @@ def _value(params: BrakeParams, name: str) -> float:
     return params.omega if name == "omega" else getattr(params, name)
 
 
-@dataclass(frozen=True)
-class WaveEvent:
+@dataclass(frozen=True, repr=False)
+class WaveEvent(Result):
     """A change of zone sequence along a family, located at ``parameter``."""
+
+    MODEL: ClassVar[str] = "brake"
 
     parameter: float
     kind: str  # "birth", "death" or "change"
@@ -76,9 +81,11 @@ class WaveEvent:
                 "before": self.before, "after": self.after, "cause": self.cause}
 
 
-@dataclass(frozen=True)
-class WaveBranch:
+@dataclass(frozen=True, repr=False)
+class WaveBranch(Result):
     """A family of waves of ``n`` modes along one parameter."""
+
+    MODEL: ClassVar[str] = "brake"
 
     parameter: str
     n: int

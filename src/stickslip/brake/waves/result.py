@@ -7,12 +7,15 @@ paper's dimensionless units on output (``evaluate``, ``to_dict``, ``to_xarray``)
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 import math
 from dataclasses import dataclass, field
 
 import numpy as np
 import xarray as xr
 
+from ...results import Result
 from ...cf import finish
 from ..reduced.params import BrakeParams
 from .boundsco import Layout, passed
@@ -36,9 +39,11 @@ def regime_name(kinds) -> str:
     return REGIMES.get(key, "-".join(k for k in KINDS if k in key))
 
 
-@dataclass(frozen=True)
-class Zone:
+@dataclass(frozen=True, repr=False)
+class Zone(Result):
     """One zone of a period: ``kind`` on ``start <= phi < end``."""
+
+    MODEL: ClassVar[str] = "brake"
 
     kind: str
     start: float
@@ -52,8 +57,8 @@ class Zone:
         return {"kind": self.kind, "start": float(self.start), "end": float(self.end)}
 
 
-@dataclass(frozen=True)
-class TravellingWave:
+@dataclass(frozen=True, repr=False)
+class TravellingWave(Result):
     """A travelling wave of [15] and its verification.
 
     Attributes
@@ -70,6 +75,8 @@ class TravellingWave:
     margins : dict
         Worst relative margin of each inequality on a fine grid (see `boundsco.verify`).
     """
+
+    MODEL: ClassVar[str] = "brake"
 
     params: BrakeParams
     n: int

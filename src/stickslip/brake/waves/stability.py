@@ -22,12 +22,15 @@ Units are internal (`zones.Scaling`: coefficients at ``gamma = 1``, time
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 import math
 from dataclasses import dataclass
 
 import numpy as np
 import xarray as xr
 
+from ...results import Result
 from ...cf import finish
 from ... import validation as check
 from ...errors import ParameterError
@@ -81,9 +84,11 @@ def _aligned_distance(A, B):
     return float(np.linalg.norm(A - np.roll(B, k))), k
 
 
-@dataclass(frozen=True)
-class WavePersistence:
+@dataclass(frozen=True, repr=False)
+class WavePersistence(Result):
     """Result of `wave_persistence` (internal time ``tau = t/sqrt(gamma)``)."""
+
+    MODEL: ClassVar[str] = "brake"
 
     time: np.ndarray
     drift: np.ndarray
@@ -93,6 +98,11 @@ class WavePersistence:
     wave_stick_fraction: float
     growth_rate: float
     nodes: int
+
+    def to_dict(self) -> dict:
+        return {"persists": self.persists, "growth_rate": float(self.growth_rate), "max_drift": float(np.max(self.drift)),
+                "wave_stick_fraction": float(self.wave_stick_fraction), "nodes": int(self.nodes),
+                "duration": float(self.time[-1]) if self.time.size else 0.0}
 
     @property
     def persists(self) -> bool:

@@ -71,8 +71,9 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
                     ha="center", va="center", fontsize=7.5, color="w" if sep[i, j] > 0.45 * top else "k")
     ax.set(xticks=range(ds.sizes["omega"]), xticklabels=[f"{o:g}" for o in ds["omega"].values],
            yticks=range(ds.sizes["xi"]), yticklabels=[f"{x:g}" for x in ds["xi"].values], xlabel="Ω [rad/s]",
-           ylabel="ξ = R*/R [1]", title=f"FE regimes, f = 0.7, d = 0.1 mm, R = 0.1 m ({ds.attrs['transits']} transits, "
-                                        "grey: separation fraction)")
+           ylabel="ξ = R*/R [1]",
+           title=f"FE regimes, f = 0.7, d = 0.1 mm, R = 0.1 m ({ds.attrs['transits']} transits, "
+                 "grey: separation fraction)")
     ax.title.set_fontsize(11)
     fig.colorbar(im, ax=ax, label="separation fraction of the nodes [1]")
     return fig

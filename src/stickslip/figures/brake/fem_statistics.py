@@ -144,7 +144,8 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
         ax.invert_yaxis()
         f, d, om = CASES[case]
         ax.set(xlabel="number of runs [1]", ylabel="limit regime",
-               title=f"case {case + 1}: f = {f:g}, d = {d * 1e3:g} mm, Ω = {om:g} rad/s; paper: {regime}, {modes} modes")
+               title=f"case {case + 1}: f = {f:g}, d = {d * 1e3:g} mm, Ω = {om:g} rad/s; "
+                     f"paper: {regime}, {modes} modes")
         ax.title.set_fontsize(9)
     handles, labels = axes[0].get_legend_handles_labels()
     handles.append(Patch(facecolor="0.75", hatch="//", edgecolor="w", label="not stationary (pale, hatched)"))

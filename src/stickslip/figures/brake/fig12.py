@@ -49,7 +49,8 @@ def check(ds: xr.Dataset) -> list[Check]:
 
 
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
-    return phase_plot(ds, fig, [("V", "dV", "V [R]", "V' = dV/dφ [R/rad]"), ("phi", "slip_velocity", "φ [rad]", "1 − V̇ [1]")],
+    return phase_plot(ds, fig, [("V", "dV", "V [R]", "V' = dV/dφ [R/rad]"),
+                                ("phi", "slip_velocity", "φ [rad]", "1 − V̇ [1]")],
                       f"Fig. 12: mode-{ds.attrs['modes']} wave with reverse slip (1 − V̇ < 0: overshoot)")
 
 

@@ -26,7 +26,8 @@ def check(ds: xr.Dataset) -> list[Check]:
 
 
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
-    return phase_plot(ds, fig, [("U", "dU", "U [R]", "U' = dU/dφ [R/rad]"), ("V", "dV", "V [R]", "V' = dV/dφ [R/rad]")],
+    return phase_plot(ds, fig, [("U", "dU", "U [R]", "U' = dU/dφ [R/rad]"),
+                                ("V", "dV", "V [R]", "V' = dV/dφ [R/rad]")],
                       f"Fig. 6: stick-slip-separation waves, n = {ds.attrs['modes']}, f = {ds.attrs['friction']}")
 
 

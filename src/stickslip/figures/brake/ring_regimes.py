@@ -132,7 +132,8 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
             c = ds.isel(case=i, setting=j)
             plotting.state_image(ax, c["state"].values,
                                  f"case {i + 1}: f = {float(c.friction):g}, δ = {float(c.delta):g}, "
-                                 f"Ω = {float(c.omega_case):g} rad/s\nβ2 = {float(c.beta2_setting):g}, N = {int(c.nodes)}: "
+                                 f"Ω = {float(c.omega_case):g} rad/s\n"
+                                 f"β2 = {float(c.beta2_setting):g}, N = {int(c.nodes)}: "
                                  f"{str(c['regime'].values)}, n = {int(c['n_fft'])}\nc/√a = "
                                  f"{float(c['c_over_sqrt_a']):.2f}; FE: {str(c.paper_regime.values)}, "
                                  f"{int(c.paper_modes)} modes")
