@@ -16,7 +16,7 @@ PACKAGE = SRC / "stickslip"
 
 #: Top-level parts of the package and what each may import (besides itself).
 BASE = {"errors", "validation", "cf", "vocabulary", "results"}
-MODELS = {"oscillator", "brake", "halfspace"}
+MODELS = {"oscillator", "brake", "halfspace", "fem"}
 ALLOWED = {
     "errors": set(),
     "validation": {"errors"},
@@ -30,6 +30,7 @@ ALLOWED = {
     "oscillator": BASE | {"friction", "sweep"},
     "brake": BASE | {"contact", "sweep"},
     "halfspace": BASE,
+    "fem": BASE | {"contact", "sweep", "files"},
     "plotting": set(),
     "errata": set(),
     "figures": BASE | MODELS | {"contact", "friction", "sweep", "plotting"},

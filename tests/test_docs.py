@@ -62,8 +62,9 @@ def test_fem_tutorial_runs(tmp_path, monkeypatch):
 
 
 def test_readme_command_lines_use_only_options_their_commands_have():
-    """Each `stickslip ...` line of the README names a command that exists and only its options
-    (a line once showed `brake steady --omega`, which the command does not take)."""
+    """Each `stickslip ...` line of the README and of the docs names a command that exists and
+    only its options (a line once showed `brake steady --omega`, which the command does not
+    take). The README's lines also run, in `test_readme_shell.py`."""
     import shlex
 
     import typer.main
@@ -71,10 +72,12 @@ def test_readme_command_lines_use_only_options_their_commands_have():
     from stickslip.cli import app
 
     root = typer.main.get_command(app)
-    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
-    lines = [line.split("#")[0].strip() for line in readme.splitlines()
+    root_dir = Path(__file__).resolve().parents[1]
+    text = "\n".join(block for p in [root_dir / "README.md", *sorted((root_dir / "docs").rglob("*.md"))]
+                     for block in re.findall(r"```sh\n(.*?)```", p.read_text(), flags=re.S))
+    lines = [line.split("#")[0].strip().rstrip("\\").strip() for line in text.splitlines()
              if line.startswith("stickslip ") and line.strip() != "stickslip --version"]
-    assert len(lines) > 10
+    assert len(lines) > 20
     for line in lines:
         command, tokens = root, shlex.split(line)[1:]
         while tokens and hasattr(command, "commands") and tokens[0] in command.commands:

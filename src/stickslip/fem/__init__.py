@@ -1,0 +1,12 @@
+"""Frictional contact dynamics on any 2-D geometry (issue 11, in progress).
+
+* `body`: a 2-D elastic body from a mesh file or a `meshio.Mesh` (`read_body`,
+  `body_from_meshio`), with named boundary groups, checked on the way in;
+* `assembly`: its stiffness, lumped mass and Rayleigh damping in SI units (`Material`,
+  `assemble`), plane strain or plane stress.
+"""
+
+from .assembly import BodySystem, Material, assemble
+from .body import CELL_KINDS, Body, body_from_meshio, read_body
+
+__all__ = ["Body", "read_body", "body_from_meshio", "CELL_KINDS", "Material", "BodySystem", "assemble"]

@@ -1,0 +1,110 @@
+"""Stiffness, lumped mass and Rayleigh damping of a `Body` (scikit-fem), in SI units.
+
+`assemble(body, material)` returns a `BodySystem`: ``K`` (CSR, N/m per unit thickness),
+the row-sum lumped ``mass`` (kg per unit thickness) and the Rayleigh coefficients, on the
+Cartesian dofs ``2 i`` (x) and ``2 i + 1`` (y) of node ``i``. Plane strain uses the Lamé
+parameters ``lambda = E nu / ((1 + nu)(1 - 2 nu))``, ``mu = E / (2 (1 + nu))``; plane stress
+replaces ``lambda`` by ``2 lambda mu / (lambda + 2 mu)``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+from skfem import Basis, BilinearForm, ElementQuad1, ElementTriP1, ElementVector, MeshQuad, MeshTri, asm
+from skfem.helpers import dot
+from skfem.models.elasticity import lame_parameters, linear_elasticity
+
+from .. import validation as check
+from ..errors import ParameterError
+from .body import Body
+
+__all__ = ["Material", "BodySystem", "assemble"]
+
+PLANES = ("strain", "stress")
+
+
+@dataclass(frozen=True)
+class Material:
+    """Linear elastic material: Young's modulus ``young`` [Pa], Poisson's ratio ``poisson``,
+    ``density`` [kg/m^3], ``plane`` ``"strain"`` (default) or ``"stress"``, and Rayleigh
+    damping ``C = alpha M + beta K`` (``alpha`` [1/s], ``beta`` [s], both >= 0)."""
+
+    young: float
+    poisson: float
+    density: float
+    plane: str = "strain"
+    alpha: float = 0.0
+    beta: float = 0.0
+
+    def __post_init__(self):
+        object.__setattr__(self, "young", check.positive("young", self.young))
+        object.__setattr__(self, "poisson", check.poisson_ratio("poisson", self.poisson))
+        object.__setattr__(self, "density", check.positive("density", self.density))
+        object.__setattr__(self, "alpha", check.nonnegative("alpha", self.alpha))
+        object.__setattr__(self, "beta", check.nonnegative("beta", self.beta))
+        if self.plane not in PLANES:
+            raise ParameterError("plane", self.plane, "strain or stress")
+
+    @property
+    def lame(self) -> tuple[float, float]:
+        """``(lambda, mu)`` of the plane problem [Pa]."""
+        lam, mu = lame_parameters(self.young, self.poisson)
+        return (2 * lam * mu / (lam + 2 * mu) if self.plane == "stress" else lam), mu
+
+    @property
+    def p_wave_speed(self) -> float:
+        """``sqrt((lambda + 2 mu) / rho)`` of the plane problem [m/s]: it sets the stable step."""
+        lam, mu = self.lame
+        return math.sqrt((lam + 2 * mu) / self.density)
+
+
+@BilinearForm
+def _mass(u, v, w):
+    return dot(u, v)
+
+
+@dataclass(frozen=True, eq=False)
+class BodySystem:
+    """The assembled body: ``K`` and the lumped ``mass`` on all ``2 n`` Cartesian dofs."""
+
+    body: Body
+    material: Material
+    K: sp.csr_matrix
+    mass: np.ndarray
+
+    @property
+    def n_dofs(self) -> int:
+        return self.K.shape[0]
+
+    def damping(self) -> sp.csr_matrix:
+        """Rayleigh damping ``alpha M + beta K``."""
+        m = self.material
+        return (sp.diags(m.alpha * self.mass) + m.beta * self.K).tocsr()
+
+    def dofs(self, nodes) -> np.ndarray:
+        """The x and y dofs of ``nodes``, interleaved."""
+        nodes = np.asarray(nodes, dtype=np.int64)
+        return np.stack([2 * nodes, 2 * nodes + 1], axis=1).ravel()
+
+
+def assemble(body: Body, material: Material) -> BodySystem:
+    """Assemble the stiffness and the row-sum lumped mass of ``body`` (see the module docstring)."""
+    if not isinstance(body, Body):
+        raise ParameterError("body", body, "a Body (see read_body)")
+    if not isinstance(material, Material):
+        raise ParameterError("material", material, "a Material")
+    mesh_type, element = (MeshTri, ElementTriP1) if body.kind == "triangle" else (MeshQuad, ElementQuad1)
+    mesh = mesh_type(np.ascontiguousarray(body.points.T), np.ascontiguousarray(body.cells.T))
+    basis = Basis(mesh, ElementVector(element()))
+    K = asm(linear_elasticity(*material.lame), basis)
+    lumped = material.density * np.asarray(asm(_mass, basis).sum(axis=1)).ravel()
+    # scikit-fem numbers the dofs by component blocks or interleaved depending on the element:
+    # reorder to 2 i + c, the convention of the contact machinery
+    order = np.empty(2 * len(body.points), dtype=np.int64)
+    order[0::2], order[1::2] = basis.nodal_dofs[0], basis.nodal_dofs[1]
+    K = K[order][:, order].tocsr()
+    return BodySystem(body, material, K, lumped[order])

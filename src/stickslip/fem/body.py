@@ -1,0 +1,144 @@
+"""A 2-D elastic body read from a mesh: nodes, linear cells and named boundary groups.
+
+`read_body(path)` reads any mesh meshio reads (gmsh ``.msh`` first); `body_from_meshio(mesh)`
+takes a `meshio.Mesh`. The body is one kind of linear cell (3-node triangles or 4-node
+quadrilaterals) in the plane; boundary groups are the named sets of edges (gmsh physical
+groups of dimension 1) on which contact, clamping or loads act.
+
+Checked on the way in, each refused with a `ParameterError` naming the mesh and the
+problem: a mesh that is not planar, no cells or cells of another kind, mixed kinds,
+inverted elements (some cells turn the other way than the rest), degenerate elements
+(area below 1e-10 of the mean), and boundary groups whose edges are not on the boundary.
+Unused points are dropped and the cells are oriented counter-clockwise.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import ParameterError
+
+__all__ = ["Body", "read_body", "body_from_meshio", "CELL_KINDS"]
+
+#: meshio cell types accepted for the body: linear triangles and quadrilaterals.
+CELL_KINDS = ("triangle", "quad")
+
+
+@dataclass(frozen=True, eq=False)
+class Body:
+    """Nodes ``points`` (``(n, 2)``, the mesh's units), cells ``(m, 3 | 4)`` counter-clockwise,
+    ``kind`` (``triangle`` or ``quad``) and boundary ``groups``: name -> edges ``(e, 2)``."""
+
+    points: np.ndarray
+    cells: np.ndarray
+    kind: str
+    groups: dict = field(default_factory=dict)
+    source: str = "mesh"
+
+    @property
+    def areas(self) -> np.ndarray:
+        """Signed area of every cell (positive: counter-clockwise)."""
+        return _areas(self.points, self.cells)
+
+    def group(self, name: str, option: str = "group") -> np.ndarray:
+        """Edges of the boundary group ``name``; an unknown name is a `ParameterError` naming
+        ``option`` and listing the groups the mesh has."""
+        if name not in self.groups:
+            have = ", ".join(sorted(self.groups)) or "none"
+            raise ParameterError(option, name, f"a boundary group of {self.source} (it has: {have})")
+        return self.groups[name]
+
+    def nodes(self, name: str, option: str = "group") -> np.ndarray:
+        """Sorted node indices of the boundary group ``name``."""
+        return np.unique(self.group(name, option))
+
+    def describe(self) -> str:
+        groups = ", ".join(f"{k} ({len(v)} edges)" for k, v in sorted(self.groups.items()))
+        return f"{len(self.cells)} {self.kind}s, {len(self.points)} nodes; boundary groups: {groups or 'none'}"
+
+
+def _areas(points: np.ndarray, cells: np.ndarray) -> np.ndarray:
+    x, y = points[cells, 0], points[cells, 1]
+    return 0.5 * np.sum(x * np.roll(y, -1, axis=1) - np.roll(x, -1, axis=1) * y, axis=1)
+
+
+def _boundary_edges(cells: np.ndarray) -> set:
+    edges = np.stack([cells, np.roll(cells, -1, axis=1)], axis=-1).reshape(-1, 2)
+    keys, counts = np.unique(np.sort(edges, axis=1), axis=0, return_counts=True)
+    return {tuple(k) for k in keys[counts == 1]}
+
+
+def body_from_meshio(mesh, source: str = "mesh") -> Body:
+    """The `Body` of a `meshio.Mesh` (see the module docstring for what is checked)."""
+    bad = lambda allowed: ParameterError("mesh", source, allowed)  # noqa: E731
+    points = np.asarray(getattr(mesh, "points", None), dtype=float)
+    if points.ndim != 2 or points.shape[0] == 0 or points.shape[1] not in (2, 3) or not np.all(np.isfinite(points)):
+        raise bad("a mesh with finite 2-D points")
+    extent = float(np.ptp(points[:, :2], axis=0).max()) or 1.0
+    if points.shape[1] == 3 and np.ptp(points[:, 2]) > 1e-12 * extent:
+        raise bad("a planar mesh (all z equal): this one is 3-D")
+    blocks = [(c.type, np.asarray(c.data)) for c in mesh.cells]
+    kinds = {t for t, _ in blocks if t not in ("vertex", "line", "line3")}
+    if not kinds:
+        raise bad("a mesh with 2-D cells (triangles or quadrilaterals); it has none")
+    if len(kinds) > 1 or not kinds <= set(CELL_KINDS):
+        raise bad(f"a mesh of one kind of linear cell, triangle or quad (it has {', '.join(sorted(kinds))})")
+    kind = kinds.pop()
+    cells = np.concatenate([d for t, d in blocks if t == kind]).astype(np.int64)
+    used, cells = np.unique(cells, return_inverse=True)
+    cells = cells.reshape(-1, 3 if kind == "triangle" else 4)
+    points = points[used, :2]
+    areas = _areas(points, cells)
+    if np.all(areas < 0):
+        cells, areas = cells[:, ::-1], -areas  # a mesh oriented clockwise throughout: turned round
+    tiny = np.abs(areas) <= 1e-10 * np.mean(np.abs(areas))
+    if np.any(tiny):
+        raise bad(f"a mesh without degenerate cells ({int(tiny.sum())} have no area, the first is cell "
+                  f"{int(np.argmax(tiny))})")
+    if np.any(areas < 0):
+        flipped = areas < 0
+        raise bad(f"a mesh without inverted cells ({int(flipped.sum())} of {len(cells)} turn the other way, "
+                  f"the first is cell {int(np.argmax(flipped))})")
+    renumber = np.full(int(used.max()) + 1, -1)
+    renumber[used] = np.arange(used.size)
+    boundary = _boundary_edges(cells)
+    groups = {}
+    for name, per_block in getattr(mesh, "cell_sets", {}).items():
+        if name.startswith("gmsh:"):
+            continue
+        edges = [d[np.asarray(idx, dtype=np.int64)] for (t, d), idx in zip(blocks, per_block)
+                 if t in ("line", "line3") and len(idx)]
+        if not edges:
+            continue  # a group of cells or points, not of edges
+        edges = np.concatenate(edges)[:, :2].astype(np.int64)
+        if np.any(edges >= renumber.size) or np.any(renumber[edges] < 0):
+            raise bad(f"boundary group {name!r} on nodes of the body's cells")
+        edges = renumber[edges]
+        inside = [e for e in map(tuple, np.sort(edges, axis=1)) if e not in boundary]
+        if inside:
+            raise bad(f"boundary group {name!r} on the boundary ({len(inside)} of its {len(edges)} edges are "
+                      "inside the body)")
+        groups[name] = edges
+    return Body(points, cells, kind, groups, source)
+
+
+def read_body(path) -> Body:
+    """The `Body` of a mesh file meshio reads (gmsh ``.msh``, VTK, XDMF, ...)."""
+    import meshio
+
+    path = Path(path)
+    if not path.is_file():
+        raise ParameterError("mesh", str(path), "an existing mesh file")
+    try:  # meshio prints its own complaint and calls sys.exit on a file no reader takes: both caught
+        with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
+            mesh = meshio.read(path)
+    except (Exception, SystemExit) as err:  # noqa: BLE001 - whatever the reader of that format raises
+        why = "no reader of meshio takes it" if isinstance(err, SystemExit) else \
+            f"{type(err).__name__}: {str(err).splitlines()[0] if str(err) else 'unreadable'}"
+        raise ParameterError("mesh", str(path), f"a mesh file meshio reads ({why})") from None
+    return body_from_meshio(mesh, str(path))

@@ -1,0 +1,63 @@
+"""Small meshes for the tests of `stickslip.fem`, made with gmsh's Python API at test time."""
+
+from __future__ import annotations
+
+import contextlib
+
+import meshio
+
+
+@contextlib.contextmanager
+def _gmsh(name: str):
+    import gmsh
+
+    gmsh.initialize(["-noenv"])
+    gmsh.option.setNumber("General.Terminal", 0)
+    gmsh.model.add(name)
+    try:
+        yield gmsh
+    finally:
+        gmsh.finalize()
+
+
+def rectangle(path, width: float = 0.04, height: float = 0.01, size: float = 0.004, quads: bool = False) -> meshio.Mesh:
+    """A ``width x height`` rectangle with boundary groups bottom, top, left, right."""
+    with _gmsh("rectangle") as gmsh:
+        r = gmsh.model.occ.addRectangle(0, 0, 0, width, height)
+        gmsh.model.occ.synchronize()
+        where = {"bottom": (width / 2, 0), "top": (width / 2, height), "left": (0, height / 2),
+                 "right": (width, height / 2)}
+        for name, (x, y) in where.items():
+            tag = [c for _, c in gmsh.model.getBoundary([(2, r)], oriented=False)
+                   if max(abs(a - b) for a, b in zip(gmsh.model.occ.getCenterOfMass(1, c)[:2], (x, y))) < 1e-9]
+            gmsh.model.addPhysicalGroup(1, tag, name=name)
+        gmsh.model.addPhysicalGroup(2, [r], name="body")
+        gmsh.option.setNumber("Mesh.MeshSizeMax", size)
+        if quads:  # a structured grid of quadrilaterals
+            for _, c in gmsh.model.getBoundary([(2, r)], oriented=False):
+                box = gmsh.model.occ.getBoundingBox(1, abs(c))
+                length = max(box[3] - box[0], box[4] - box[1])
+                gmsh.model.mesh.setTransfiniteCurve(abs(c), max(2, round(length / size) + 1))
+            gmsh.model.mesh.setTransfiniteSurface(r)
+            gmsh.model.mesh.setRecombine(2, r)
+        gmsh.model.mesh.generate(2)
+        gmsh.write(str(path))
+    return meshio.read(path)
+
+
+def annulus(path, inner: float = 1.0, outer: float = 1.5, size: float = 0.1) -> meshio.Mesh:
+    """An annulus ``inner < r < outer`` with boundary groups bore (r = inner) and rim (r = outer)."""
+    with _gmsh("annulus") as gmsh:
+        a = gmsh.model.occ.addDisk(0, 0, 0, outer, outer)
+        b = gmsh.model.occ.addDisk(0, 0, 0, inner, inner)
+        (ring,), _ = gmsh.model.occ.cut([(2, a)], [(2, b)])
+        gmsh.model.occ.synchronize()
+        curves = [c for _, c in gmsh.model.getBoundary([ring], oriented=False)]
+        radius = {c: abs(gmsh.model.occ.getBoundingBox(1, c)[3]) for c in curves}
+        gmsh.model.addPhysicalGroup(1, [c for c in curves if abs(radius[c] - inner) < 1e-6], name="bore")
+        gmsh.model.addPhysicalGroup(1, [c for c in curves if abs(radius[c] - outer) < 1e-6], name="rim")
+        gmsh.model.addPhysicalGroup(2, [ring[1]], name="body")
+        gmsh.option.setNumber("Mesh.MeshSizeMax", size)
+        gmsh.model.mesh.generate(2)
+        gmsh.write(str(path))
+    return meshio.read(path)

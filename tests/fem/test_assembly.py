@@ -1,0 +1,89 @@
+"""Assembly of a general body against closed forms: rigid motions cost nothing, a uniform
+strain stores the energy of the plane-strain or plane-stress law written out here, the
+lumped mass is the body's mass, and the free vibrations of an annulus clamped at its rim
+converge at second order to the exact Bessel frequencies (`stickslip.brake.fem.exact`)."""
+
+import numpy as np
+import pytest
+import scipy.sparse as sp
+import scipy.sparse.linalg as sla
+
+from stickslip.brake.fem.exact import annulus_frequencies
+from stickslip.errors import ParameterError
+from stickslip.fem import Material, assemble, body_from_meshio, read_body
+
+from .meshes import annulus, rectangle
+
+E, NU, RHO = 2.1e11, 0.3, 7850.0
+
+
+@pytest.fixture(scope="module", params=[False, True], ids=["triangles", "quads"])
+def rect(request, tmp_path_factory):
+    path = tmp_path_factory.mktemp("mesh") / "rect.msh"
+    rectangle(path, quads=request.param)
+    return read_body(path)
+
+
+def _strain_energy_density(eps, plane):
+    exx, eyy, gxy = eps
+    if plane == "stress":
+        c = E / (1 - NU**2)
+        return 0.5 * (c * (exx**2 + eyy**2 + 2 * NU * exx * eyy) + E / (2 * (1 + NU)) * gxy**2)
+    lam, mu = E * NU / ((1 + NU) * (1 - 2 * NU)), E / (2 * (1 + NU))
+    return 0.5 * (lam * (exx + eyy) ** 2 + 2 * mu * (exx**2 + eyy**2) + mu * gxy**2)
+
+
+@pytest.mark.parametrize("plane", ["strain", "stress"])
+def test_uniform_strain_stores_the_closed_form_energy_and_rigid_motions_none(rect, plane):
+    s = assemble(rect, Material(E, NU, RHO, plane=plane))
+    x, y = rect.points.T
+    scale = abs(s.K).max()
+    for rigid in ((np.ones_like(x), 0 * x), (0 * x, np.ones_like(x)), (-y, x)):
+        u = np.ravel(np.column_stack(rigid))
+        assert np.abs(s.K @ u).max() < 1e-10 * scale * np.abs(u).max()
+    eps = (1e-4, -3e-5, 2e-5)
+    u = np.ravel(np.column_stack([eps[0] * x + 0.5 * eps[2] * y, 0.5 * eps[2] * x + eps[1] * y]))
+    area = np.sum(rect.areas)
+    assert 0.5 * u @ (s.K @ u) == pytest.approx(area * _strain_energy_density(eps, plane), rel=1e-12)
+    f = s.K @ u  # the patch test: a uniform stress leaves the interior nodes in equilibrium
+    interior = np.setdiff1d(np.arange(len(x)), np.concatenate([rect.nodes(g) for g in rect.groups]))
+    assert np.abs(f[s.dofs(interior)]).max() < 1e-9 * np.abs(f).max()
+
+
+def test_the_lumped_mass_is_the_body_mass(rect):
+    s = assemble(rect, Material(E, NU, RHO))
+    assert s.mass[0::2].sum() == pytest.approx(RHO * 0.04 * 0.01, rel=1e-12)
+    assert np.array_equal(s.mass[0::2], s.mass[1::2]) and np.all(s.mass > 0)
+    c = Material(E, NU, RHO, alpha=2.0, beta=1e-6)
+    d = assemble(rect, c).damping()
+    assert np.allclose(d.toarray(), 2.0 * np.diag(s.mass) + 1e-6 * s.K.toarray())
+
+
+def _frequencies(path, size, count=5):
+    body = body_from_meshio(annulus(path, size=size), "annulus")
+    s = assemble(body, Material(1.0, NU, 1.0))  # E = rho = R = 1: omega in units of sqrt(E/rho)/R
+    free = np.setdiff1d(np.arange(s.n_dofs), s.dofs(body.nodes("rim")))
+    vals = sla.eigsh(s.K[free][:, free], k=count, M=sp.diags(s.mass[free]), sigma=0, which="LM",
+                     return_eigenvectors=False)
+    return np.sort(np.sqrt(vals))
+
+
+def test_annulus_frequencies_converge_to_the_exact_ones_at_order_two(tmp_path):
+    exact = sorted(float(w) for n in range(4) for w in np.atleast_1d(annulus_frequencies(1.5, NU, n, count=1)))
+    # the lowest: the breathing mode n = 0, then the double n = 1 pair
+    errors = []
+    for size in (0.2, 0.1, 0.05):
+        w = _frequencies(tmp_path / f"a{size}.msh", size)
+        errors.append(abs(w[0] - exact[0]) / exact[0])
+        assert abs(w[1] - exact[1]) / exact[1] < 0.02 and abs(w[2] - exact[1]) / exact[1] < 0.02
+    orders = np.log2(np.array(errors[:-1]) / np.array(errors[1:]))
+    assert errors[-1] < 2e-3 and np.all(np.abs(orders - 2.0) < 0.5), (errors, orders)
+
+
+@pytest.mark.parametrize("options, name", [({"young": -1.0}, "young"), ({"poisson": 0.5}, "poisson"),
+                                           ({"density": 0.0}, "density"), ({"plane": "shell"}, "plane"),
+                                           ({"alpha": -1.0}, "alpha"), ({"beta": float("nan")}, "beta")])
+def test_a_bad_material_names_its_parameter(options, name):
+    with pytest.raises(ParameterError) as err:
+        Material(**{"young": E, "poisson": NU, "density": RHO, **options})
+    assert err.value.name == name

@@ -1,0 +1,83 @@
+"""A body from a mesh: groups, orientation, and every bad mesh refused in one line naming it."""
+
+import meshio
+import numpy as np
+import pytest
+
+from stickslip.errors import ParameterError
+from stickslip.fem import body_from_meshio, read_body
+
+from .meshes import rectangle
+
+
+@pytest.fixture(scope="module")
+def rect(tmp_path_factory):
+    path = tmp_path_factory.mktemp("mesh") / "rect.msh"
+    rectangle(path)
+    return path
+
+
+@pytest.mark.parametrize("quads", [False, True], ids=["triangles", "quads"])
+def test_a_gmsh_rectangle_is_read_with_its_groups(quads, tmp_path):
+    path = tmp_path / "r.msh"
+    rectangle(path, quads=quads)
+    body = read_body(path)
+    assert body.kind == ("quad" if quads else "triangle")
+    assert np.sum(body.areas) == pytest.approx(0.04 * 0.01, rel=1e-12) and np.all(body.areas > 0)
+    assert set(body.groups) == {"bottom", "top", "left", "right"}
+    assert np.allclose(body.points[body.nodes("bottom"), 1], 0.0) and np.allclose(body.points[body.nodes("top"), 1], 0.01)
+    assert body.points[body.nodes("bottom"), 0].min() == 0.0 and body.points[body.nodes("bottom"), 0].max() == 0.04
+
+
+def test_a_clockwise_mesh_is_turned_round(rect):
+    m = meshio.read(rect)
+    cells = [meshio.CellBlock(c.type, c.data[:, ::-1] if c.type == "triangle" else c.data) for c in m.cells]
+    body = body_from_meshio(meshio.Mesh(m.points, cells, cell_sets=m.cell_sets))
+    assert np.all(body.areas > 0)
+
+
+def _refused(mesh, words):
+    with pytest.raises(ParameterError) as err:
+        body_from_meshio(mesh, "bad.msh")
+    assert err.value.name == "mesh" and words in str(err.value) and "\n" not in str(err.value)
+
+
+def test_bad_meshes_are_refused_naming_the_problem(rect):
+    m = meshio.read(rect)
+    tri = [c for c in m.cells if c.type == "triangle"][0].data
+    lines = [c for c in m.cells if c.type == "line"]
+    points3d = m.points.copy()
+    points3d[:, 2] = np.linspace(0, 1, len(points3d))
+    _refused(meshio.Mesh(points3d, m.cells), "3-D")
+    _refused(meshio.Mesh(m.points, lines), "has none")
+    _refused(meshio.Mesh(m.points, [meshio.CellBlock("triangle", tri), meshio.CellBlock("quad", [[0, 1, 2, 3]])]),
+             "quad, triangle")
+    _refused(meshio.Mesh(m.points, [meshio.CellBlock("triangle6", np.zeros((1, 6), int))]), "triangle6")
+    inverted = tri.copy()
+    inverted[3] = inverted[3, ::-1]
+    _refused(meshio.Mesh(m.points, [meshio.CellBlock("triangle", inverted)]), "1 of 68 turn the other way")
+    flat = np.vstack([tri, [[0, 0, 1]]])
+    _refused(meshio.Mesh(m.points, [meshio.CellBlock("triangle", flat)]), "degenerate")
+    inner = tri[:1, :2]  # an edge of a cell, inside the body
+    others = [c for c in np.sort(np.vstack([tri[:, :2], tri[:, 1:], tri[:, ::2]]), axis=1).tolist()]
+    shared = [e for e in others if others.count(e) == 2][:1]
+    mesh = meshio.Mesh(m.points, [meshio.CellBlock("triangle", tri), meshio.CellBlock("line", np.array(shared))],
+                       cell_sets={"seal": [np.array([], int), np.array([0])]})
+    assert inner.shape == (1, 2)
+    _refused(mesh, "inside the body")
+
+
+def test_an_unknown_group_names_the_option_and_the_groups_there_are(rect):
+    body = read_body(rect)
+    with pytest.raises(ParameterError) as err:
+        body.nodes("contact", option="contact_group")
+    assert err.value.name == "contact_group" and "bottom, left, right, top" in str(err.value)
+
+
+def test_a_missing_or_unreadable_file_is_refused(tmp_path):
+    with pytest.raises(ParameterError, match="an existing mesh file"):
+        read_body(tmp_path / "none.msh")
+    bad = tmp_path / "bad.msh"
+    bad.write_text("not a mesh")
+    with pytest.raises(ParameterError, match="a mesh file meshio reads"):
+        read_body(bad)
