@@ -3,10 +3,17 @@
 * `body`: a 2-D elastic body from a mesh file or a `meshio.Mesh` (`read_body`,
   `body_from_meshio`), with named boundary groups, checked on the way in;
 * `assembly`: its stiffness, lumped mass and Rayleigh damping in SI units (`Material`,
-  `assemble`), plane strain or plane stress.
+  `assemble`), plane strain or plane stress;
+* `surfaces`: rigid counter-surfaces with prescribed motion (`RigidCylinder`: a shaft, a
+  disc rim or a drum; `RigidFlat`: a belt) and the contact frames of a boundary group;
+* `static`: the static preload and steady sliding (``q = f p``) with the contact active set
+  (`steady_contact`).
 """
 
 from .assembly import BodySystem, Material, assemble
 from .body import CELL_KINDS, Body, body_from_meshio, read_body
+from .static import SteadyContact, steady_contact
+from .surfaces import ContactFrames, RigidCylinder, RigidFlat, contact_frames
 
-__all__ = ["Body", "read_body", "body_from_meshio", "CELL_KINDS", "Material", "BodySystem", "assemble"]
+__all__ = ["Body", "read_body", "body_from_meshio", "CELL_KINDS", "Material", "BodySystem", "assemble",
+           "RigidCylinder", "RigidFlat", "ContactFrames", "contact_frames", "SteadyContact", "steady_contact"]

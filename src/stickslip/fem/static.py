@@ -1,0 +1,120 @@
+"""Static preload and steady sliding of a general body on a rigid counter-surface.
+
+With the surface moving and the body at rest, every contact node in contact slips forward:
+its reactions are a pressure ``p >= 0`` along the normal ``n`` (into the body) and the
+friction ``q = f p`` along the surface's motion ``t``. In the nodal frames ``(n, t)`` of
+the contact nodes (`stickslip.fem.surfaces.contact_frames`), with the normal displacement of
+the active nodes prescribed by the gap (``u . n = -g``) and the clamped dofs fixed, the
+remaining dofs solve the non-symmetric linear system
+
+    (K_FF - f S K_AF) w_F = (f S K_AP - K_FP) w_P,      p = K_A. w,
+
+where ``A`` are the normal dofs of the active nodes and ``S`` puts ``f p`` on their
+tangential dofs. The active set starts with every node touching or penetrating and is
+updated (nodes in tension leave, penetrating ones join) until it settles. ``f = 0`` is the
+static preload (frictionless contact).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as sla
+
+from .. import validation as check
+from ..errors import NoSolutionError
+from .assembly import BodySystem
+from .surfaces import ContactFrames
+
+__all__ = ["SteadyContact", "frame_rotation", "steady_contact"]
+
+
+def frame_rotation(n_dofs: int, frames: ContactFrames) -> sp.csr_matrix:
+    """``T`` with ``u = T w``: ``w`` holds ``(u . n, u . t)`` at the contact nodes, ``u`` elsewhere."""
+    rows, cols, vals = [np.arange(n_dofs)], [np.arange(n_dofs)], [np.ones(n_dofs)]
+    keep = np.ones(n_dofs, bool)
+    i = frames.nodes
+    keep[2 * i], keep[2 * i + 1] = False, False
+    rows, cols, vals = [rows[0][keep]], [cols[0][keep]], [vals[0][keep]]
+    for comp in (0, 1):  # u_comp = n_comp w_n + t_comp w_t
+        rows += [2 * i + comp, 2 * i + comp]
+        cols += [2 * i, 2 * i + 1]
+        vals += [frames.normal[:, comp], frames.tangent[:, comp]]
+    return sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
+                         shape=(n_dofs, n_dofs))
+
+
+@dataclass(frozen=True, eq=False)
+class SteadyContact:
+    """Steady sliding (or, with ``friction = 0``, the preload): Cartesian displacement ``u``
+    of every dof [m], and per contact node (in the order of ``frames.nodes``) the normal
+    force ``pressure`` and the friction force ``shear`` [N per unit thickness], ``active``."""
+
+    frames: ContactFrames
+    friction: float
+    u: np.ndarray
+    pressure: np.ndarray
+    shear: np.ndarray
+    active: np.ndarray
+    iterations: int
+
+
+def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 0.0, clamped=(),
+                   max_iterations: int = 50) -> SteadyContact:
+    """Steady sliding of ``system`` on the surface of ``frames`` (see the module docstring).
+
+    ``clamped`` names boundary groups whose dofs are fixed (a contact node among them is held
+    by the clamp, not by contact); without any, the contact and the friction must hold the
+    body (else the system is singular: `NoSolutionError`).
+    """
+    friction = check.nonnegative("friction", friction)
+    n_dofs = system.n_dofs
+    T = frame_rotation(n_dofs, frames)
+    Kw = (T.T @ system.K @ T).tocsr()
+    fixed = np.zeros(n_dofs, bool)
+    for name in clamped:
+        fixed[system.dofs(system.body.nodes(name, "clamped"))] = True
+    normal_dofs, tangent_dofs = 2 * frames.nodes, 2 * frames.nodes + 1
+    free = ~fixed[normal_dofs]  # a clamped contact node (a shared corner) is held by the clamp, not the contact
+    active = (frames.gap <= 0.0) & free
+    for iteration in range(1, max_iterations + 1):
+        w, p = _solve(Kw, fixed, normal_dofs[active], tangent_dofs[active], -frames.gap[active], friction, n_dofs)
+        pressure = np.zeros(len(frames.nodes))
+        pressure[active] = p
+        penetrating = free & (~active) & (w[normal_dofs] < -frames.gap - 1e-12 * np.max(np.abs(frames.gap)))
+        new = (active & (pressure >= 0.0)) | penetrating
+        if np.array_equal(new, active):
+            return SteadyContact(frames, friction, T @ w, pressure, friction * pressure, active.copy(), iteration)
+        active = new
+    raise NoSolutionError(f"the contact active set did not settle in {max_iterations} iterations")
+
+
+def _solve(Kw, fixed, normal, tangent, prescribed, friction, n_dofs):
+    P = fixed.copy()
+    P[normal] = True
+    F = np.flatnonzero(~P)
+    wP = np.zeros(n_dofs)
+    wP[normal] = prescribed
+    where = np.full(n_dofs, -1)
+    where[F] = np.arange(F.size)
+    S = sp.csr_matrix((np.full(len(normal), friction), (where[tangent], np.arange(len(normal)))),
+                      shape=(F.size, len(normal)))
+    K_F = Kw[F]
+    K_A = Kw[normal]
+    A = (K_F[:, F] - S @ K_A[:, F]).tocsc()
+    rhs = S @ (K_A @ wP) - K_F @ wP
+    not_held = NoSolutionError("the body is not held (a rigid motion is free): clamp a boundary group or give it "
+                               "more contact")
+    try:
+        lu = sla.splu(A)
+    except RuntimeError:  # an exactly singular factor
+        raise not_held from None
+    pivots = np.abs(lu.U.diagonal())
+    if pivots.min() < 1e-12 * pivots.max():  # a rigid motion costs (numerically) nothing
+        raise not_held
+    wF = lu.solve(rhs)
+    w = wP.copy()
+    w[F] = wF
+    return w, Kw[normal] @ w

@@ -1,0 +1,139 @@
+"""Rigid counter-surfaces with prescribed motion, and the contact frames they give the nodes.
+
+A surface is seen from the body: at a contact node it has the unit normal ``n`` pointing
+into the body, the unit tangent ``t`` along which the surface moves (so the surface
+velocity there is ``speed * t`` with ``speed >= 0``), and the signed distance ``g`` from
+the surface to the node along ``n`` in the reference configuration (``g < 0``: the node
+starts inside the rigid body, the interference). Signorini reads ``u . n >= -g``; the
+friction of forward slip drags the node along ``t``.
+
+* `RigidCylinder`: a cylinder of ``radius`` about ``center`` turning at ``omega`` [rad/s]
+  (counter-clockwise for ``omega > 0``), the body outside it (a shaft in a bore, a disc rim
+  under a pad) or, with ``body_inside=True``, inside it (a drum around a seal);
+* `RigidFlat`: a straight surface through ``point`` with the normal ``normal`` into the
+  body, translating at ``velocity`` (a belt; the component along the normal must be zero).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import validation as check
+from ..errors import ParameterError
+
+__all__ = ["RigidCylinder", "RigidFlat", "ContactFrames", "contact_frames"]
+
+
+@dataclass(frozen=True)
+class RigidCylinder:
+    """A rigid cylinder turning about ``center`` (see the module docstring)."""
+
+    radius: float
+    omega: float
+    center: tuple = (0.0, 0.0)
+    body_inside: bool = False
+
+    def __post_init__(self):
+        check.positive("radius", self.radius)
+        check.finite("omega", self.omega)
+        if len(self.center) != 2:
+            raise ParameterError("center", self.center, "two coordinates (x, y) [m]")
+        object.__setattr__(self, "center", tuple(check.finite("center", c) for c in self.center))
+
+    def geometry(self, points: np.ndarray):
+        """``(n, t, g, speed)`` at ``points`` ``(k, 2)``."""
+        d = points - np.asarray(self.center)
+        r = np.hypot(d[:, 0], d[:, 1])
+        if np.any(r == 0):
+            raise ParameterError("center", self.center, "off the contact nodes (one sits on the axis)")
+        e_r = d / r[:, None]
+        n = -e_r if self.body_inside else e_r
+        g = (self.radius - r) if self.body_inside else (r - self.radius)
+        e_theta = np.column_stack([-e_r[:, 1], e_r[:, 0]])  # counter-clockwise
+        t = e_theta if self.omega >= 0 else -e_theta
+        return n, t, g, np.full(len(r), abs(self.omega) * self.radius)
+
+
+@dataclass(frozen=True)
+class RigidFlat:
+    """A rigid flat translating in its own plane (see the module docstring)."""
+
+    point: tuple
+    normal: tuple
+    velocity: tuple
+
+    def __post_init__(self):
+        for name in ("point", "normal", "velocity"):
+            value = getattr(self, name)
+            if len(value) != 2:
+                raise ParameterError(name, value, "two components (x, y)")
+            object.__setattr__(self, name, tuple(check.finite(name, c) for c in value))
+        if math.hypot(*self.normal) == 0:
+            raise ParameterError("normal", self.normal, "a non-zero vector")
+        n = np.asarray(self.normal) / math.hypot(*self.normal)
+        if abs(float(np.dot(n, self.velocity))) > 1e-12 * max(1.0, math.hypot(*self.velocity)):
+            raise ParameterError("velocity", self.velocity, "along the flat (no component along its normal)")
+
+    def geometry(self, points: np.ndarray):
+        n = np.asarray(self.normal, float) / math.hypot(*self.normal)
+        speed = math.hypot(*self.velocity)
+        t = np.asarray(self.velocity, float) / speed if speed > 0 else np.array([-n[1], n[0]])
+        g = (points - np.asarray(self.point)) @ n
+        k = len(points)
+        return np.tile(n, (k, 1)), np.tile(t, (k, 1)), g, np.full(k, speed)
+
+
+@dataclass(frozen=True, eq=False)
+class ContactFrames:
+    """Contact nodes (sorted along the contact line), their frames, gaps and surface speeds."""
+
+    nodes: np.ndarray
+    normal: np.ndarray
+    tangent: np.ndarray
+    gap: np.ndarray
+    speed: np.ndarray
+    arclength: np.ndarray
+
+
+def _order_along(points: np.ndarray, edges: np.ndarray, nodes: np.ndarray) -> np.ndarray:
+    """The nodes of a chain (open or closed) of edges, in order along it."""
+    neighbours = {int(v): [] for v in nodes}
+    for a, b in edges:
+        neighbours[int(a)].append(int(b))
+        neighbours[int(b)].append(int(a))
+    ends = [v for v, nb in neighbours.items() if len(nb) == 1]
+    if any(len(nb) > 2 for nb in neighbours.values()) or len(ends) not in (0, 2):
+        raise ParameterError("contact_group", f"{len(edges)} edges", "one chain of edges (a line, open or closed)")
+    start = min(ends) if ends else int(nodes[0])
+    order, prev = [start], None
+    while len(order) < len(nodes):
+        nxt = [v for v in neighbours[order[-1]] if v != prev and v not in order[-2:]]
+        if not nxt:
+            raise ParameterError("contact_group", f"{len(edges)} edges", "one connected chain of edges")
+        prev = order[-1]
+        order.append(nxt[0])
+    return np.asarray(order)
+
+
+def contact_frames(body, group: str, surface, tolerance: float = 0.05) -> ContactFrames:
+    """The frames of the nodes of boundary ``group`` of ``body`` against ``surface``.
+
+    The surface must touch the group: every node within ``tolerance`` times the group's
+    length of it (a `ParameterError` naming ``surface`` otherwise).
+    """
+    edges = body.group(group, "contact_group")
+    nodes = _order_along(body.points, edges, np.unique(edges))
+    pts = body.points[nodes]
+    n, t, g, speed = surface.geometry(pts)
+    seg = np.hypot(*np.diff(pts, axis=0).T)
+    s = np.concatenate([[0.0], np.cumsum(seg)])
+    length = s[-1] + (np.hypot(*(pts[0] - pts[-1])) if len(edges) == len(nodes) else 0.0)
+    if np.max(np.abs(g)) > tolerance * length:
+        worst = int(np.argmax(np.abs(g)))
+        raise ParameterError("surface", surface, f"touching boundary group {group!r} (its node {int(nodes[worst])} "
+                             f"is {g[worst]:.3g} m from it, more than {tolerance:g} x the group's length "
+                             f"{length:.3g} m)")
+    return ContactFrames(nodes, n, t, g, speed, s)

@@ -1,0 +1,74 @@
+"""Steady sliding of a general body against closed forms: the annulus on a turning shaft
+(Lamé with friction, `stickslip.brake.reduced.steady`, an independent closed form) and the
+Signorini conditions on a pad pressed by a tilted flat (some of it lifts off)."""
+
+import numpy as np
+import pytest
+
+from stickslip.brake.reduced.steady import steady_sliding
+from stickslip.errors import NoSolutionError, ParameterError
+from stickslip.fem import Material, assemble, body_from_meshio, read_body
+from stickslip.fem.static import steady_contact
+from stickslip.fem.surfaces import RigidCylinder, RigidFlat, contact_frames
+
+from .meshes import annulus, rectangle
+
+XI, NU, DELTA = 1.5, 0.3, 1e-3
+
+
+@pytest.mark.parametrize("friction", [0.0, 0.5])
+def test_the_annulus_on_a_turning_shaft_slides_as_lame_says(friction, tmp_path):
+    exact = steady_sliding(XI, NU, DELTA, friction)
+    errors = []
+    for size in (0.1, 0.05):
+        body = body_from_meshio(annulus(tmp_path / f"a{size}.msh", outer=XI, size=size), "annulus")
+        system = assemble(body, Material(1.0, NU, 1.0))  # E = R = 1: lengths in R, forces in E R
+        frames = contact_frames(body, "bore", RigidCylinder(1.0 + DELTA, 100.0))
+        st = steady_contact(system, frames, friction, clamped=["rim"])
+        u = st.u.reshape(-1, 2)[frames.nodes]
+        assert st.active.all() and np.allclose(np.sum(u * frames.normal, axis=1), DELTA, rtol=1e-12)
+        assert np.allclose(st.shear, friction * st.pressure, rtol=0, atol=1e-15)
+        p = st.pressure.sum() / (2 * np.pi)  # the mean bore pressure
+        x, y = body.points[frames.nodes].T  # the hoop direction of a counter-clockwise shaft, from the geometry
+        v = np.mean((-y * u[:, 0] + x * u[:, 1]) / np.hypot(x, y))
+        errors.append(abs(p / exact.p_e - 1))
+        assert (v == pytest.approx(exact.V_e, rel=2e-3)) if friction else abs(v) < 1e-3 * DELTA  # mesh asymmetry
+    assert errors[1] < 1e-4 and errors[1] < errors[0] / 4  # the pressure converges at order >= 2
+
+
+def _pad(tmp_path):
+    body = read_body(rectangle(tmp_path / "pad.msh") and tmp_path / "pad.msh")
+    return body, assemble(body, Material(2.1e11, 0.3, 7850.0))
+
+
+@pytest.mark.parametrize("case", ["clamped top", "cantilever"])
+def test_a_tilted_flat_lifts_part_of_a_pad_and_signorini_holds(case, tmp_path):
+    body, system = _pad(tmp_path)
+    tilt = 1e-5 / 0.04  # the flat enters 1e-5 m at one end of the pad and leaves it at the other
+    if case == "clamped top":
+        flat, clamped = RigidFlat(point=(0.0, 1e-5), normal=(tilt, 1.0), velocity=(1.0, -tilt)), ["top"]
+    else:  # clamped at its left end, pushed at its free end: the first guess of the active set is wrong
+        flat, clamped = RigidFlat(point=(0.04, 1e-5), normal=(-tilt, 1.0), velocity=(1.0, tilt)), ["left"]
+    frames = contact_frames(body, "bottom", flat)
+    st = steady_contact(system, frames, 0.3, clamped=clamped)
+    assert st.iterations > 1 or case == "clamped top"
+    u = st.u.reshape(-1, 2)[frames.nodes]
+    gap = np.sum(u * frames.normal, axis=1) + frames.gap  # >= 0, zero where in contact
+    scale = np.abs(frames.gap).max()
+    assert 0 < st.active.sum() < len(frames.nodes)  # part of the pad lifts off
+    assert np.all(st.pressure >= 0) and np.all(gap >= -1e-9 * scale)
+    assert np.abs(gap[st.active]).max() < 1e-9 * scale and np.all(st.pressure[~st.active] == 0)
+    assert np.all(st.shear == 0.3 * st.pressure)
+
+
+def test_a_surface_that_does_not_touch_and_a_free_body_are_refused(tmp_path):
+    body, system = _pad(tmp_path)
+    with pytest.raises(ParameterError) as err:
+        contact_frames(body, "bottom", RigidFlat(point=(0.0, -0.01), normal=(0.0, 1.0), velocity=(1.0, 0.0)))
+    assert err.value.name == "surface" and "touching" in str(err.value)
+    frames = contact_frames(body, "bottom", RigidFlat(point=(0.0, 1e-6), normal=(0.0, 1.0), velocity=(1.0, 0.0)))
+    with pytest.raises(NoSolutionError, match="not held"):
+        steady_contact(system, frames, 0.0)
+    with pytest.raises(ParameterError) as err:
+        RigidFlat(point=(0.0, 0.0), normal=(0.0, 1.0), velocity=(1.0, 0.5))
+    assert err.value.name == "velocity"
