@@ -7,13 +7,20 @@
 * `surfaces`: rigid counter-surfaces with prescribed motion (`RigidCylinder`: a shaft, a
   disc rim or a drum; `RigidFlat`: a belt) and the contact frames of a boundary group;
 * `static`: the static preload and steady sliding (``q = f p``) with the contact active set
-  (`steady_contact`).
+  (`steady_contact`);
+* `scheme`: the shared explicit contact scheme on the body's sparse matrices
+  (`ContactProblem`, `BodyScheme`);
+* `cea`: complex eigenvalue analysis of steady sliding over a frequency band, shift-invert
+  Arnoldi (`complex_eigenvalues`).
 """
 
 from .assembly import BodySystem, Material, assemble
 from .body import CELL_KINDS, Body, body_from_meshio, read_body
+from .cea import CeaModes, complex_eigenvalues
+from .scheme import BodyScheme, ContactProblem
 from .static import SteadyContact, steady_contact
 from .surfaces import ContactFrames, RigidCylinder, RigidFlat, contact_frames
 
 __all__ = ["Body", "read_body", "body_from_meshio", "CELL_KINDS", "Material", "BodySystem", "assemble",
-           "RigidCylinder", "RigidFlat", "ContactFrames", "contact_frames", "SteadyContact", "steady_contact"]
+           "RigidCylinder", "RigidFlat", "ContactFrames", "contact_frames", "SteadyContact", "steady_contact",
+           "ContactProblem", "BodyScheme", "CeaModes", "complex_eigenvalues"]

@@ -88,7 +88,8 @@ class RigidFlat:
 
 @dataclass(frozen=True, eq=False)
 class ContactFrames:
-    """Contact nodes (sorted along the contact line), their frames, gaps and surface speeds."""
+    """Contact nodes (sorted along the contact line), their frames, gaps, surface speeds and
+    arclengths [m]; ``closed``: the line closes on itself (a bore)."""
 
     nodes: np.ndarray
     normal: np.ndarray
@@ -96,6 +97,7 @@ class ContactFrames:
     gap: np.ndarray
     speed: np.ndarray
     arclength: np.ndarray
+    closed: bool = False
 
 
 def _order_along(points: np.ndarray, edges: np.ndarray, nodes: np.ndarray) -> np.ndarray:
@@ -136,4 +138,4 @@ def contact_frames(body, group: str, surface, tolerance: float = 0.05) -> Contac
         raise ParameterError("surface", surface, f"touching boundary group {group!r} (its node {int(nodes[worst])} "
                              f"is {g[worst]:.3g} m from it, more than {tolerance:g} x the group's length "
                              f"{length:.3g} m)")
-    return ContactFrames(nodes, n, t, g, speed, s)
+    return ContactFrames(nodes, n, t, g, speed, s, closed=len(edges) == len(nodes))

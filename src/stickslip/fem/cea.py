@@ -1,0 +1,165 @@
+"""Complex eigenvalue analysis (CEA) of steady sliding on a general body.
+
+Linearised about steady sliding, every contact node in contact is held normally (its
+normal dof is removed) and its friction ``f lambda_n`` acts on its tangential dof, with
+``lambda_n`` the normal row of ``K w + C w'`` (the lumped mass has no coupling there). The
+tangential rows therefore become ``K_t - f K_n`` and ``C_t - f C_n``: a non-symmetric
+(circulatory) stiffness. Modes ``w e^{s t}`` solve
+
+    (s^2 M + s C_eff + K_eff) w = 0.
+
+As the linear pencil of ``(w, s w)`` (twice the size), the eigenvalues nearest a shift
+``i 2 pi f`` in the complex ``s`` plane are found by shift-invert Arnoldi (a sparse LU of the shifted matrix, ARPACK
+through `scipy.sparse.linalg.eigs`); the shifts step up through the frequency band so that
+the discs of the eigenvalues found overlap, and eigenvalues found twice are merged.
+Reported: ``growth_rate = Re s`` [1/s] and ``frequency = Im s / 2 pi`` [Hz] >= 0, one mode per
+complex-conjugate pair; ``growth_rate > 0`` is flutter (squeal).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as sla
+
+from .. import validation as check
+from ..errors import NoSolutionError, ParameterError
+from ..results import Result
+from .scheme import BodyScheme, ContactProblem
+
+__all__ = ["CeaModes", "linearised", "complex_eigenvalues"]
+
+
+def linearised(problem: ContactProblem):
+    """``(K_eff, C_eff or None, mass, kept)``: the linearised operators on the kept dofs
+    (the free dofs of `BodyScheme` less the normal dofs of the contact nodes in contact)."""
+    scheme = BodyScheme(problem)
+    K = (scheme.rotation.T @ problem.system.K @ scheme.rotation).tocsr()[scheme.free][:, scheme.free]
+    normal, tangent = scheme.contact_dofs
+    touching = problem.steady.active[scheme.contact_nodes]
+    normal, tangent = normal[touching], tangent[touching]
+    keep = np.setdiff1d(np.arange(scheme.free.size), normal)
+    mat = problem.system.material
+    f = problem.friction
+
+    def effective(A):
+        A = A.tolil(copy=True)
+        for n, t in zip(normal, tangent):
+            A[t] = A[t] - f * A[n]
+        return A.tocsr()[keep][:, keep]
+
+    K_eff = effective(K)
+    damping = mat.alpha > 0 or mat.beta > 0
+    C_eff = (mat.alpha * sp.diags(scheme.mass[keep]) + mat.beta * K_eff).tocsr() if damping else None
+    return K_eff, C_eff, scheme.mass[keep], keep
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class CeaModes(Result):
+    """Modes of steady sliding in a band: ``s`` (complex, 1/s, ``Im s >= 0``), sorted by growth
+    rate (largest first), their ``shapes`` on the kept dofs (if asked) and the ``shifts`` used [Hz].
+
+    Every mode of the band with ``|Re s| < complete_below`` [1/s] (the smallest trusted disc
+    radius of the shifts) is found; one farther from the frequency axis may be missed (raise
+    ``count``)."""
+
+    MODEL: ClassVar[str] = "common"
+
+    s: np.ndarray
+    shapes: np.ndarray | None
+    shifts: np.ndarray
+    band: tuple
+    complete_below: float = math.inf
+
+    @property
+    def growth_rate(self) -> np.ndarray:
+        return self.s.real
+
+    @property
+    def frequency(self) -> np.ndarray:
+        return self.s.imag / (2.0 * np.pi)
+
+    @property
+    def unstable(self) -> np.ndarray:
+        return self.growth_rate > 0
+
+    def to_dict(self) -> dict:
+        return {"modes": [{"growth_rate": float(g), "frequency": float(f)}
+                          for g, f in zip(self.growth_rate, self.frequency)],
+                "unstable": int(np.sum(self.unstable)), "band_lo": float(self.band[0]), "band_hi": float(self.band[1]),
+                "complete_below": float(self.complete_below),
+                "shifts": [float(x) for x in self.shifts]}
+
+
+def _near(K_eff, C_eff, mass, shift_hz: float, count: int, vectors: bool):
+    """The eigenvalues ``s`` found about ``i 2 pi shift_hz``: ``(s, vectors, trusted, upper)``.
+
+    The pencil ``[[0, I], [-K, -C]] x = s [[I, 0], [0, M]] x`` of ``x = (w, s w)`` is
+    shift-inverted about ``sigma = i 2 pi shift_hz``, so that Arnoldi returns the ``count``
+    eigenvalues nearest ``sigma`` in the complex ``s`` plane: a strongly unstable mode (far
+    from the imaginary axis) is as near as a neutral one at the same distance. The farthest
+    of them may have neighbours just as far that were not returned, so only those nearer than
+    0.9 of the farthest are ``trusted``; ``upper`` [Hz] is where that disc meets the axis.
+    """
+    w0 = 2.0 * math.pi * shift_hz
+    n = K_eff.shape[0]
+    I = sp.identity(n, format="csr")
+    C = sp.csr_matrix((n, n)) if C_eff is None else C_eff
+    A = sp.bmat([[None, I], [-K_eff, -C]], format="csc")
+    B = sp.block_diag([I, sp.diags(mass)], format="csc")
+    sigma = 1j * w0
+    lu = sla.splu((A - sigma * B).astype(complex).tocsc())
+    Bd = np.concatenate([np.ones(n), mass])
+    op = sla.LinearOperator((2 * n, 2 * n), matvec=lambda x: lu.solve(Bd * x), dtype=complex)
+    nu, vec = sla.eigs(op, k=min(count, 2 * n - 2), return_eigenvectors=True, tol=1e-12)
+    s = sigma + 1.0 / nu
+    dist = np.abs(s - sigma)
+    radius = 0.9 * dist.max()
+    upper = (w0 + radius) / (2.0 * math.pi)
+    flip = s.imag < 0
+    s = np.where(flip, np.conj(s), s)  # one of each conjugate pair: Im s >= 0
+    vec = np.where(flip, np.conj(vec), vec)[:n]
+    return s, (vec if vectors else None), dist < radius, upper, radius
+
+
+def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], count: int = 30,
+                        mode_shapes: bool = False, max_shifts: int = 100) -> CeaModes:
+    """The modes of steady sliding of ``problem`` with frequencies in ``band`` [Hz] (see the
+    module docstring); ``count`` eigenvalues per shift. Each shift is placed at the upper end
+    of the previous one's trusted disc, until a disc reaches past the band."""
+    if not isinstance(problem, ContactProblem):
+        raise ParameterError("problem", problem, "a ContactProblem")
+    try:
+        lo, hi = (check.nonnegative("band", float(b)) for b in band)
+    except (TypeError, ValueError):
+        raise ParameterError("band", band, "(lo, hi) in Hz") from None
+    if not hi > lo:
+        raise ParameterError("band", band, "(lo, hi) with hi > lo >= 0 [Hz]")
+    K_eff, C_eff, mass, _ = linearised(problem)
+    count = min(check.positive_int("count", count), K_eff.shape[0] - 2)
+    max_shifts = check.positive_int("max_shifts", max_shifts)
+    found, shapes, shifts, shift, reach = [], [], [], lo, math.inf
+    while True:
+        if len(shifts) >= max_shifts:
+            raise NoSolutionError(f"the band {lo:g}-{hi:g} Hz needs more than {max_shifts} shifts of {count} "
+                                  "eigenvalues: narrow it or raise count")
+        s, vec, trusted, upper, radius = _near(K_eff, C_eff, mass, shift, count, mode_shapes)
+        shifts.append(shift)
+        reach = min(reach, radius)
+        for k in np.flatnonzero(trusted):
+            if not any(abs(s[k] - x) <= 1e-8 * abs(s[k]) for x in found):
+                found.append(s[k])
+                shapes.append(vec[:, k] if vec is not None else None)
+        if upper >= hi:
+            break
+        shift = max(upper, shift * (1 + 1e-9) + 1e-9)
+    s = np.array(found)
+    inside = (s.imag / (2 * math.pi) >= lo) & (s.imag / (2 * math.pi) <= hi)
+    order = np.argsort(-s.real[inside], kind="stable")
+    s = s[inside][order]
+    vecs = np.array([shapes[i] for i in np.flatnonzero(inside)[order]]).T if mode_shapes and s.size else None
+    return CeaModes(s, vecs, np.array(shifts), (lo, hi), float(reach))

@@ -1,0 +1,171 @@
+"""A general body on a rigid counter-surface as an explicit contact scheme of `stickslip.contact`.
+
+`ContactProblem` gathers what the scheme needs: the assembled body (`BodySystem`), the
+frames of its contact nodes against the surface (`ContactFrames`), the Coulomb coefficient
+and the clamped boundary groups. `BodyScheme` is the shared explicit beta2 scheme with
+forward-increment multipliers ([22]-[23], `stickslip.contact.kernel`) on the general path:
+the operator ``M^{-1} K`` is a sparse matrix on the free dofs, written in the nodal frames
+``(n, t)`` at the contact nodes (Cartesian elsewhere), so that the kernel finds each
+contact node's normal and tangential dof. The stable step comes from the largest free
+frequency of the mesh (Lanczos on ``M^{-1/2} K M^{-1/2}``), the zero of the energy and the
+start of a run from steady sliding (`stickslip.fem.static.steady_contact`).
+
+Units are SI: time in s, displacements in m, reactions per unit mass in m/s^2. The
+contact line's nodes are placed at ``theta = 2 pi s / L`` (``s`` the arclength, ``L`` the
+line's length) for the shared classification, which treats the line as closed.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+from typing import ClassVar
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as sla
+
+from .. import validation as check
+from ..contact import ExplicitScheme
+from ..errors import ParameterError
+from .assembly import BodySystem
+from .static import SteadyContact, frame_rotation, steady_contact
+from .surfaces import ContactFrames
+
+__all__ = ["ContactProblem", "BodyScheme"]
+
+
+@dataclass(frozen=True, eq=False)
+class ContactProblem:
+    """A body (``system``), its contact ``frames``, the Coulomb coefficient ``friction`` and
+    the names of its ``clamped`` boundary groups."""
+
+    system: BodySystem
+    frames: ContactFrames
+    friction: float = 0.0
+    clamped: tuple = ()
+
+    def __post_init__(self):
+        if not isinstance(self.system, BodySystem):
+            raise ParameterError("system", self.system, "a BodySystem (see assemble)")
+        if not isinstance(self.frames, ContactFrames):
+            raise ParameterError("frames", self.frames, "ContactFrames (see contact_frames)")
+        object.__setattr__(self, "friction", check.nonnegative("friction", self.friction))
+        object.__setattr__(self, "clamped", tuple(self.clamped))
+        for name in self.clamped:
+            self.system.body.nodes(name, "clamped")
+
+    @cached_property
+    def fixed(self) -> np.ndarray:
+        """Mask of the clamped dofs (all ``2 n`` of them)."""
+        mask = np.zeros(self.system.n_dofs, bool)
+        for name in self.clamped:
+            mask[self.system.dofs(self.system.body.nodes(name, "clamped"))] = True
+        return mask
+
+    @cached_property
+    def steady(self) -> SteadyContact:
+        return steady_contact(self.system, self.frames, self.friction, self.clamped)
+
+
+@dataclass(frozen=True, eq=False)
+class BodyScheme(ExplicitScheme):
+    """The explicit scheme of a `ContactProblem` (``beta2`` in [1/2, 1], ``courant`` in (0, 1]);
+    ``time_step`` [s], if given, replaces ``courant * dt_max`` and may not exceed ``dt_max``."""
+
+    PARAMS: ClassVar[type] = ContactProblem
+    params: ContactProblem
+    beta2: float = 0.9
+    courant: float = 0.9
+    time_step: float | None = None
+
+    def __post_init__(self):
+        self.validate_common()
+        if self.time_step is not None:
+            step = check.positive("time_step", self.time_step)
+            if step > self.dt_max:
+                raise ParameterError("time_step", step, f"<= the stable step {self.dt_max:.6g} s of this mesh "
+                                     f"(sqrt(2/beta2) / omega_max, omega_max = {self.omega_max:.6g} rad/s)")
+
+    # --- dofs: the free ones, in nodal frames at the contact nodes --------------------
+    @cached_property
+    def rotation(self) -> sp.csr_matrix:
+        """``T`` with Cartesian ``u = T w`` (all dofs)."""
+        return frame_rotation(self.params.system.n_dofs, self.params.frames)
+
+    @cached_property
+    def free(self) -> np.ndarray:
+        """The free dofs (not clamped), indices into all ``2 n``."""
+        return np.flatnonzero(~self.params.fixed)
+
+    @cached_property
+    def contact_nodes(self) -> np.ndarray:
+        """Positions in ``frames.nodes`` of the contact nodes that are not clamped."""
+        return np.flatnonzero(~self.params.fixed[2 * self.params.frames.nodes])
+
+    def cartesian(self, w: np.ndarray) -> np.ndarray:
+        """Free-dof vector(s) of the scheme -> Cartesian displacements of every dof."""
+        full = np.zeros(np.shape(w)[:-1] + (self.params.system.n_dofs,))
+        full[..., self.free] = w
+        return full @ self.rotation.T
+
+    # --- the interface of stickslip.contact ----------------------------------------------
+    @cached_property
+    def mass(self) -> np.ndarray:
+        return self.params.system.mass[self.free]
+
+    def operator_matrix(self):
+        K = (self.rotation.T @ self.params.system.K @ self.rotation).tocsr()[self.free][:, self.free]
+        return (sp.diags(1.0 / self.mass) @ K).tocsr()
+
+    @cached_property
+    def contact_dofs(self) -> tuple[np.ndarray, np.ndarray]:
+        where = np.full(self.params.system.n_dofs, -1, dtype=np.int64)
+        where[self.free] = np.arange(self.free.size)
+        nodes = self.params.frames.nodes[self.contact_nodes]
+        return where[2 * nodes], where[2 * nodes + 1]
+
+    @cached_property
+    def surface(self) -> tuple[np.ndarray, np.ndarray]:
+        f = self.params.frames
+        return -f.gap[self.contact_nodes], f.speed[self.contact_nodes]
+
+    def steady_reference(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        st = self.params.steady
+        w = (self.rotation.T @ st.u)[self.free]
+        m = self.mass[self.contact_dofs[0]]
+        return w, st.pressure[self.contact_nodes] / m, st.shear[self.contact_nodes] / m
+
+    @cached_property
+    def line_length(self) -> float:
+        """Length of the contact line [m] (closed lines include the closing edge)."""
+        f = self.params.frames
+        pts = self.params.system.body.points[f.nodes]
+        return float(f.arclength[-1] + (np.hypot(*(pts[0] - pts[-1])) if f.closed else 0.0))
+
+    @cached_property
+    def theta(self) -> np.ndarray:
+        return 2.0 * np.pi * self.params.frames.arclength[self.contact_nodes] / self.line_length
+
+    @cached_property
+    def omega_max(self) -> float:
+        """Largest free angular frequency [rad/s] (Lanczos; 1e-6 relative margin)."""
+        K = self.params.system.K[self.free][:, self.free]
+        scale = sp.diags(1.0 / np.sqrt(self.params.system.mass[self.free]))
+        lam = sla.eigsh((scale @ K @ scale).tocsc(), k=1, which="LA", return_eigenvectors=False, tol=1e-10)
+        return float(np.sqrt(lam[0]) * (1.0 + 1e-6))
+
+    @property
+    def dt(self) -> float:
+        """``time_step`` if given (at most the stable step), else ``courant * dt_max``."""
+        if self.time_step is not None:
+            return float(self.time_step)
+        return self.courant * self.dt_max
+
+    @property
+    def transit_time(self) -> float:
+        """The contact line's length over the P-wave speed [s]."""
+        return self.line_length / self.params.system.material.p_wave_speed
+
+    def key(self) -> dict:
+        return {"beta2": self.beta2, "courant": self.courant, "time_step": self.time_step or 0.0}
