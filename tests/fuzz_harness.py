@@ -83,6 +83,8 @@ def options_typed(*types) -> list[tuple[str, str]]:
             return
         hints = typing.get_type_hints(cmd.callback, include_extras=True)
         for param in cmd.params:
+            if getattr(param, "param_type_name", "option") != "option":
+                continue  # an argument is an input (a config file), not an option to fuzz here
             hint = hints.get(param.name)
             base = typing.get_args(hint)[0] if typing.get_origin(hint) is typing.Annotated else hint
             args = [a for a in typing.get_args(base) if a is not type(None)] or [base]

@@ -297,8 +297,22 @@ _HALFSPACE = {
     "v_closed": ("1", "v from the closed form"),
 }
 
+_FEM = {
+    "growth_rate": ("1/s", "growth rate Re s of the mode"),
+    "frequency": ("Hz", "frequency Im s / 2 pi of the mode"),
+    "complete_below": ("1/s", "every mode of the band with |Re s| below this is found"),
+    "unstable": ("1", "number of unstable modes"),
+    "shifts": ("1", "shifts of the eigenvalue search"),
+    "normal_force": ("N/m", "total normal contact force per unit thickness"),
+    "friction_force": ("N/m", "total friction force per unit thickness"),
+    "max_node_force": ("N/m", "largest normal force on one contact node per unit thickness"),
+    "contact_nodes": ("1", "nodes of the contact group"),
+    "active_nodes": ("1", "contact nodes in contact"),
+    "iterations": ("1", "active-set iterations"),
+}
+
 #: Model -> {name: (units, long name)}; ``common`` serves every model.
-VOCABULARY = {"common": _COMMON, "oscillator": _OSCILLATOR, "brake": _BRAKE, "halfspace": _HALFSPACE}
+VOCABULARY = {"common": _COMMON, "oscillator": _OSCILLATOR, "brake": _BRAKE, "halfspace": _HALFSPACE, "fem": _FEM}
 
 _PREFIXES = {"ss_": "stick-slip branch: ", "dc_": "damped Coulomb branch: ", "c0_": "undamped Coulomb branch: ",
              "slip_": "pure-slip branch: ", "sweep_": "sweep: ", "ring_": "ring run: ", "noise_": "run from noise: ",

@@ -13,7 +13,7 @@ import warnings
 import typer
 
 from ..errors import NoSolutionError, ParameterError
-from . import brake, halfspace, oscillator, reproduce
+from . import brake, fem, halfspace, oscillator, reproduce
 
 # typer vendors its own copy of click (older releases re-export click's classes):
 # its usage errors are the parent class of typer.BadParameter in both cases
@@ -38,6 +38,7 @@ def _main(version: bool = typer.Option(False, "--version", callback=_version, is
 app.add_typer(oscillator.app, name="oscillator")
 app.add_typer(brake.app, name="brake")
 app.add_typer(halfspace.app, name="halfspace")
+app.add_typer(fem.app, name="fem")
 app.command("reproduce")(reproduce.reproduce)
 
 

@@ -31,7 +31,7 @@ from ..errors import NoSolutionError, ParameterError
 from ..results import Result
 from .scheme import BodyScheme, ContactProblem
 
-__all__ = ["CeaModes", "linearised", "complex_eigenvalues"]
+__all__ = ["CeaModes", "linearised", "eigenvalues_near", "complex_eigenvalues"]
 
 
 def linearised(problem: ContactProblem):
@@ -95,7 +95,7 @@ class CeaModes(Result):
                 "shifts": [float(x) for x in self.shifts]}
 
 
-def _near(K_eff, C_eff, mass, shift_hz: float, count: int, vectors: bool):
+def eigenvalues_near(K_eff, C_eff, mass, shift_hz: float, count: int, vectors: bool):
     """The eigenvalues ``s`` found about ``i 2 pi shift_hz``: ``(s, vectors, trusted, upper)``.
 
     The pencil ``[[0, I], [-K, -C]] x = s [[I, 0], [0, M]] x`` of ``x = (w, s w)`` is
@@ -147,7 +147,7 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
         if len(shifts) >= max_shifts:
             raise NoSolutionError(f"the band {lo:g}-{hi:g} Hz needs more than {max_shifts} shifts of {count} "
                                   "eigenvalues: narrow it or raise count")
-        s, vec, trusted, upper, radius = _near(K_eff, C_eff, mass, shift, count, mode_shapes)
+        s, vec, trusted, upper, radius = eigenvalues_near(K_eff, C_eff, mass, shift, count, mode_shapes)
         shifts.append(shift)
         reach = min(reach, radius)
         for k in np.flatnonzero(trusted):

@@ -1,0 +1,192 @@
+"""A general-body problem from a small TOML config, validated with every problem listed at once.
+
+    mesh = "pad.msh"                # any mesh meshio reads; relative to the config file
+    clamped = ["top"]               # boundary groups held fixed (optional)
+
+    [material]                      # SI units
+    young = 2.1e11
+    poisson = 0.3
+    density = 7850.0
+    plane = "strain"                # or "stress"
+    alpha = 0.0                     # Rayleigh damping C = alpha M + beta K (optional)
+    beta = 0.0
+
+    [contact]
+    group = "bottom"                # the boundary group in contact
+    friction = 0.4                  # Coulomb coefficient
+
+    [surface]                       # the rigid counter-surface, one of:
+    kind = "cylinder"               # radius, omega [rad/s], center = [x, y], body_inside = false
+    # kind = "flat"                 # point = [x, y], normal = [nx, ny] (into the body), velocity = [vx, vy]
+    interference = 1e-5             # how far the surface is pushed into the body [m] (optional)
+
+    [cea]                           # for `stickslip fem cea`
+    band = [0.0, 20000.0]           # [Hz]
+    count = 30                      # eigenvalues per shift
+
+`load_config(path)` returns a `FemConfig`; `FemConfig.problem()` builds the `ContactProblem`.
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..errors import ParameterError
+from .assembly import PLANES, Material, assemble
+from .body import read_body
+from .scheme import ContactProblem
+from .surfaces import RigidCylinder, RigidFlat, contact_frames
+
+__all__ = ["FemConfig", "load_config"]
+
+_KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "cea"},
+          "material": {"young", "poisson", "density", "plane", "alpha", "beta"},
+          "contact": {"group", "friction"},
+          "surface": {"kind", "radius", "omega", "center", "body_inside", "point", "normal", "velocity",
+                      "interference"},
+          "cea": {"band", "count"}}
+
+
+@dataclass(frozen=True)
+class FemConfig:
+    """A validated config (see the module docstring); ``path`` is the config file."""
+
+    path: Path
+    mesh: Path
+    clamped: tuple
+    material: Material
+    group: str
+    friction: float
+    surface: object
+    band: tuple
+    count: int
+
+    def problem(self) -> ContactProblem:
+        """Read the mesh, assemble, and set the contact up (mesh errors name the mesh file)."""
+        body = read_body(self.mesh)
+        for name in (*self.clamped, self.group):
+            body.group(name, "clamped" if name in self.clamped else "contact.group")
+        frames = contact_frames(body, self.group, self.surface)
+        return ContactProblem(assemble(body, self.material), frames, self.friction, self.clamped)
+
+
+def _number(problems, where, value, lo=None, hi=None, positive=False):
+    ok = isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+    if ok and positive and value <= 0:
+        ok = False
+    if ok and lo is not None and value < lo:
+        ok = False
+    if ok and hi is not None and value >= hi:
+        ok = False
+    if not ok:
+        rng = "> 0" if positive else f"in [{lo}, {hi})" if hi is not None else f">= {lo}" if lo is not None else "finite"
+        problems.append(f"{where} = {value!r} must be a number {rng}")
+        return None
+    return float(value)
+
+
+def _pair(problems, where, value):
+    if isinstance(value, list) and len(value) == 2 and all(
+            isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in value):
+        return tuple(float(v) for v in value)
+    problems.append(f"{where} = {value!r} must be two numbers [x, y]")
+    return None
+
+
+def load_config(path) -> FemConfig:
+    """Read and check a config; every problem found goes into one `ParameterError`."""
+    path = Path(path)
+    try:
+        data = tomllib.loads(path.read_text())
+    except OSError as err:
+        raise ParameterError("config", str(path), f"a readable TOML file ({err.strerror})") from None
+    except tomllib.TOMLDecodeError as err:
+        raise ParameterError("config", str(path), f"a valid TOML file ({err})") from None
+    problems: list[str] = []
+    for section, keys in _KNOWN.items():
+        table = data if not section else data.get(section, {})
+        if not isinstance(table, dict):
+            problems.append(f"[{section}] must be a table")
+            continue
+        extra = sorted(k for k in table if k not in keys and not (section == "" and k in _KNOWN))
+        problems += [f"unknown key {'' if not section else section + '.'}{k}" for k in extra]
+    mesh = data.get("mesh")
+    mesh_path = None
+    if not isinstance(mesh, str):
+        problems.append("mesh must be the path of a mesh file")
+    else:
+        mesh_path = (path.parent / mesh) if not Path(mesh).is_absolute() else Path(mesh)
+        if not mesh_path.is_file():
+            problems.append(f"mesh = {mesh!r}: no such file ({mesh_path})")
+    clamped = data.get("clamped", [])
+    if not (isinstance(clamped, list) and all(isinstance(c, str) for c in clamped)):
+        problems.append(f"clamped = {clamped!r} must be a list of boundary group names")
+        clamped = []
+    m = data.get("material", {}) if isinstance(data.get("material", {}), dict) else {}
+    young = _number(problems, "material.young", m.get("young"), positive=True)
+    poisson = _number(problems, "material.poisson", m.get("poisson"), 0.0, 0.5)
+    density = _number(problems, "material.density", m.get("density"), positive=True)
+    alpha = _number(problems, "material.alpha", m.get("alpha", 0.0), 0.0)
+    beta = _number(problems, "material.beta", m.get("beta", 0.0), 0.0)
+    plane = m.get("plane", "strain")
+    if plane not in PLANES:
+        problems.append(f"material.plane = {plane!r} must be one of {', '.join(PLANES)}")
+    c = data.get("contact", {}) if isinstance(data.get("contact", {}), dict) else {}
+    group = c.get("group")
+    if not isinstance(group, str):
+        problems.append("contact.group must be the name of a boundary group")
+    friction = _number(problems, "contact.friction", c.get("friction", 0.0), 0.0, 100.0)
+    surface = _surface(problems, data.get("surface", {}) if isinstance(data.get("surface", {}), dict) else {})
+    e = data.get("cea", {}) if isinstance(data.get("cea", {}), dict) else {}
+    band = e.get("band", [0.0, 1e4])
+    if not (isinstance(band, list) and len(band) == 2 and all(isinstance(b, (int, float)) and math.isfinite(b)
+                                                              for b in band) and 0 <= band[0] < band[1]):
+        problems.append(f"cea.band = {band!r} must be [lo, hi] in Hz with 0 <= lo < hi")
+        band = [0.0, 1.0]
+    count = e.get("count", 30)
+    if not (isinstance(count, int) and not isinstance(count, bool) and 2 <= count <= 1000):
+        problems.append(f"cea.count = {count!r} must be an integer in [2, 1000]")
+    if problems:
+        raise ParameterError("config", str(path), f"a valid config; {len(problems)} problem"
+                             f"{'s' if len(problems) > 1 else ''}: " + "; ".join(problems))
+    material = Material(young, poisson, density, plane, alpha, beta)
+    return FemConfig(path, mesh_path, tuple(clamped), material, group, friction, surface, tuple(band), count)
+
+
+def _surface(problems, s):
+    kind = s.get("kind")
+    push = _number(problems, "surface.interference", s.get("interference", 0.0))
+    if kind == "cylinder":
+        radius = _number(problems, "surface.radius", s.get("radius"), positive=True)
+        omega = _number(problems, "surface.omega", s.get("omega"))
+        center = _pair(problems, "surface.center", s.get("center", [0.0, 0.0]))
+        inside = s.get("body_inside", False)
+        if not isinstance(inside, bool):
+            problems.append(f"surface.body_inside = {inside!r} must be true or false")
+        if None in (radius, omega, center, push) or not isinstance(inside, bool):
+            return None
+        radius = radius - push if inside else radius + push  # pushed into the body
+        if radius <= 0:
+            problems.append("surface.interference leaves the cylinder no radius")
+            return None
+        return RigidCylinder(radius, omega, center, inside)
+    if kind == "flat":
+        point = _pair(problems, "surface.point", s.get("point"))
+        normal = _pair(problems, "surface.normal", s.get("normal"))
+        velocity = _pair(problems, "surface.velocity", s.get("velocity"))
+        if None in (point, normal, velocity, push):
+            return None
+        size = math.hypot(*normal)
+        if size == 0:
+            problems.append("surface.normal must not be zero")
+            return None
+        if abs(normal[0] * velocity[0] + normal[1] * velocity[1]) > 1e-12 * size * max(1.0, math.hypot(*velocity)):
+            problems.append("surface.velocity must lie along the flat (no component along its normal)")
+            return None
+        shifted = (point[0] + push * normal[0] / size, point[1] + push * normal[1] / size)
+        return RigidFlat(shifted, normal, velocity)
+    problems.append(f"surface.kind = {kind!r} must be cylinder or flat")
+    return None

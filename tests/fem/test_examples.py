@@ -1,0 +1,76 @@
+"""The examples under `examples/` run as a user runs them (mesh script, then `stickslip fem`),
+and a config's problems are all named in one line."""
+
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from stickslip.brake.reduced.steady import steady_sliding
+from stickslip.cli import run
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+
+
+def _example(name: str, config: str, mesh: str, tmp_path: Path) -> Path:
+    folder = tmp_path / name
+    folder.mkdir()
+    shutil.copy(EXAMPLES / name / config, folder)
+    subprocess.run([sys.executable, str(EXAMPLES / name / "mesh.py"), mesh], cwd=folder, check=True)
+    return folder / config
+
+
+@pytest.mark.parametrize("name, config, mesh", [("pad_on_disc", "pad.toml", "pad.msh"),
+                                                ("annulus", "annulus.toml", "annulus.msh")])
+def test_an_example_runs_its_complex_eigenvalue_analysis(name, config, mesh, tmp_path, capsys):
+    path = _example(name, config, mesh, tmp_path)
+    assert run(["fem", "cea", str(path), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    rates = [m["growth_rate"] for m in data["modes"]]
+    assert rates and rates == sorted(rates, reverse=True) and data["unstable"] == sum(r > 0 for r in rates) > 0
+    assert data["units"]["modes.growth_rate"]["units"] == "1/s" and data["units"]["modes.frequency"]["units"] == "Hz"
+    assert all(0 <= m["frequency"] <= 40000 for m in data["modes"])
+
+
+def test_the_annulus_example_presses_the_shaft_as_lame_says(tmp_path, capsys):
+    path = _example("annulus", "annulus.toml", "annulus.msh", tmp_path)
+    assert run(["fem", "steady", str(path), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    R, E, d = 0.1, 2.1e11, 1e-4  # the example's values
+    exact = steady_sliding(1.5, 0.3, d / R, 0.7)
+    assert data["normal_force"] == pytest.approx(exact.p_e * E * 2 * np.pi * R, rel=2e-3)
+    assert data["friction_force"] == pytest.approx(0.7 * data["normal_force"], rel=1e-12)
+    assert data["active_nodes"] == data["contact_nodes"]
+
+
+def test_every_problem_of_a_config_is_named_in_one_line(tmp_path, capsys):
+    config = tmp_path / "bad.toml"
+    config.write_text('mesh = "none.msh"\ncolour = 3\n[material]\nyoung = -1\npoisson = 0.3\ndensity = 1\n'
+                      '[contact]\ngroup = "face"\n[surface]\nkind = "sphere"\n')
+    assert run(["fem", "cea", str(config)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "4 problems" in err
+    for words in ("none.msh", "unknown key colour", "material.young", "surface.kind"):
+        assert words in err
+
+
+def test_an_unknown_group_is_one_line_naming_it(tmp_path, capsys):
+    path = _example("pad_on_disc", "pad.toml", "pad.msh", tmp_path)
+    path.write_text(path.read_text().replace('group = "face"', 'group = "lining"'))
+    assert run(["fem", "steady", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "contact.group" in err and "lining" in err and "face" in err
+
+
+@pytest.mark.parametrize("kind", ["missing", "a folder", "not TOML"])
+def test_a_config_that_cannot_be_read_is_one_line(kind, tmp_path, capsys):
+    path = {"missing": tmp_path / "none.toml", "a folder": tmp_path, "not TOML": tmp_path / "x.toml"}[kind]
+    if kind == "not TOML":
+        path.write_text("mesh = [unclosed")
+    assert run(["fem", "steady", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "config" in err
