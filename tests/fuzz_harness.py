@@ -59,7 +59,25 @@ BASE = {
     "halfspace direct": ["--T", "9.52e-4", "--v", "3.514e-3", "--v-star", "0.001"],
     "halfspace fields": ["--b", "11.358", "--c", "-0.7", "--v-star", "0.001", "--points", "101", "--out", "{tmp}/h.nc"],
     "reproduce": ["--only", "fig2", "--out", "{tmp}/r"],
+    "fem run": ["{config}", "--transits", "2", "--out", "{tmp}/g.nc"],
 }
+_CONFIG: list[str] = []
+
+
+def example_config() -> str:
+    """The pad-on-disc example (coarse mesh) in a folder of its own, made once per process."""
+    if not _CONFIG:
+        import atexit
+        import shutil
+        import subprocess
+
+        root = pathlib.Path(__file__).resolve().parents[1] / "examples" / "pad_on_disc"
+        folder = pathlib.Path(tempfile.mkdtemp(prefix="stickslip-fuzz-"))
+        atexit.register(shutil.rmtree, folder, ignore_errors=True)
+        shutil.copy(root / "pad.toml", folder)
+        subprocess.run([sys.executable, str(root / "mesh.py"), "pad.msh", "0.004"], cwd=folder, check=True)
+        _CONFIG.append(str(folder / "pad.toml"))
+    return _CONFIG[0]
 #: Options that set the same quantity another way: varying one drops the others from the
 #: base invocation (and ``--omega`` comes in when the material sets gamma).
 SAME_QUANTITY = [("--xi", "--inner-radius", "--outer-radius"), ("--gamma", "--omega", "--young", "--density"),
@@ -129,6 +147,8 @@ def path_args(command: str, option: str, kind: str, tmp) -> list[str]:
 def args_for(command: str, option: str, value: str, tmp) -> list[str]:
     """The base invocation of ``command`` with ``option value`` (and ``--json``)."""
     base = [a.replace("{tmp}", str(tmp)) for a in BASE[command]]
+    positional = [example_config() if a == "{config}" else a for a in base[:1] if not a.startswith("--")]
+    base = base[len(positional):]
     drop = {option}
     for group in SAME_QUANTITY:
         if option in group:
@@ -137,7 +157,7 @@ def args_for(command: str, option: str, value: str, tmp) -> list[str]:
     pairs = [(k, v) for k, v in pairs if k not in drop]
     if option in ("--young", "--density") and command.startswith("brake"):
         pairs.append(("--omega", "50"))
-    return command.split() + [x for kv in pairs for x in kv] + [option, value, "--json"]
+    return command.split() + positional + [x for kv in pairs for x in kv] + [option, value, "--json"]
 
 
 @dataclasses.dataclass(frozen=True)

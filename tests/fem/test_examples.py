@@ -74,3 +74,16 @@ def test_a_config_that_cannot_be_read_is_one_line(kind, tmp_path, capsys):
     assert run(["fem", "steady", str(path)]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "config" in err
+
+
+def test_the_annulus_example_runs_to_its_limit_regime_and_resumes(tmp_path, capsys):
+    """`stickslip fem run`: the run file follows the CF rules; run again, it is resumed (the
+    same answer, no new work)."""
+    from ..cf_rules import file_problems
+
+    path = _example("annulus", "annulus.toml", "annulus.msh", tmp_path)
+    args = ["fem", "run", str(path), "--transits", "5", "--out", str(tmp_path / "run.nc"), "--json"]
+    assert run(args) == 0
+    first = json.loads(capsys.readouterr().out)
+    assert first["regime"] and file_problems(tmp_path / "run.nc") == []
+    assert run(args) == 0 and json.loads(capsys.readouterr().out) == first

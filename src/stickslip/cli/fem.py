@@ -4,11 +4,12 @@ from __future__ import annotations
 
 import functools
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, Optional
 
 import typer
 
-from .common import emit
+from .. import validation as check
+from .common import Overwrite, emit, output_path, progress_bar
 
 _emit = functools.partial(emit, model="fem")  # SI units: growth rates in 1/s, frequencies in Hz
 
@@ -49,3 +50,28 @@ def cea(config: Config, json: Json = False):
     data = result.to_dict()
     _emit({"modes": data["modes"], "unstable": data["unstable"], "complete_below": data["complete_below"],
            "shifts": len(data["shifts"])}, json, "complex eigenvalue analysis")
+
+
+@app.command()
+def run(config: Config,
+        transits: Annotated[float, typer.Option(help="Run length in P-wave transits along the contact line (> 0).")] = 20.0,
+        beta2: Annotated[float, typer.Option(help="Scheme parameter of [22] in [0.5, 1] (0.5: central differences).")] = 0.9,
+        amplitude: Annotated[float, typer.Option(help="Start: steady sliding plus tangential noise of this RMS, "
+                                                      "relative to the steady displacement (>= 0).")] = 1e-3,
+        out: Annotated[Optional[Path], typer.Option(help=(
+            "The run (.nc): written as it goes and at the end; a killed run resumes from it (--overwrite starts "
+            "afresh)."))] = None,
+        overwrite: Overwrite = False, json: Json = False):
+    """Explicit dynamics from perturbed steady sliding, then the limit regime on the contact nodes."""
+    from ..fem.run import classify_body, integrate_body, perturbed_steady_body
+    from ..fem.scheme import BodyScheme
+
+    out = output_path("--out", out, ".nc")
+    check.nonnegative("--amplitude", amplitude)
+    cfg = _problem(config)
+    problem = cfg.problem()
+    initial = perturbed_steady_body(BodyScheme(problem, beta2), amplitude)
+    with progress_bar("general body") as tick:
+        result = integrate_body(problem, transits=transits, beta2=beta2, initial=initial, checkpoint=out,
+                                progress=tick, overwrite=overwrite)
+    _emit(classify_body(result).to_dict(), json, "limit regime")

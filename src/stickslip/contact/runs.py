@@ -31,7 +31,7 @@ import xarray as xr
 
 from ..results import Result
 from .. import validation as check
-from ..cf import SOURCE, finish
+from ..cf import SOURCE, finish, plain_attrs
 from ..errors import ParameterError
 from ..files import content_digest, exclusive
 from .scheme import StepState
@@ -81,6 +81,9 @@ class RunFormat:
     extra_attrs: Callable = staticmethod(lambda scheme: {})
     notes: dict = field(default_factory=dict)
     title: str = "run of an explicit contact scheme"
+    time_units: str = "1/Omega"
+    time_note: str = "time Omega t"
+    model: str = "brake"
 
     @property
     def fields(self) -> dict:
@@ -183,13 +186,15 @@ def run_to_dataset(run) -> xr.Dataset:
     for name in ("U", "V"):
         z = col(ser, f"modes_{name}", (0, K), complex)
         for part, arr in (("re", z.real), ("im", z.imag)):
-            data[f"modes_{name}_{part}"] = ((T, "mode"), arr, {"units": "R", "long_name": f"{part} of rfft({name})/N"})
+            data[f"modes_{name}_{part}"] = ((T, "mode"), arr, {"units": fmt.units["length"],
+                                                               "long_name": f"{part} of rfft({name})/N"})
     for name, (units, long) in fmt.fields.items():
         data[name] = ((S, X), col(snp, name, (0, N)), {"units": units, "long_name": long})
     for name in _KERNEL:
-        data[f"kernel_{name}"] = ("dof", run.kernel[name], {"units": "R", "long_name": f"scheme state {name} for resuming"})
-    coords = {T: (T, col(ser, "t", 0), {"units": "1/Omega", "long_name": "time Omega t"}),
-              S: (S, col(snp, "snap_t", 0), {"units": "1/Omega", "long_name": "time Omega t of the snapshot"}),
+        data[f"kernel_{name}"] = ("dof", run.kernel[name], {"units": fmt.units["length"],
+                                                             "long_name": f"scheme state {name} for resuming"})
+    coords = {T: (T, col(ser, "t", 0), {"units": fmt.time_units, "long_name": fmt.time_note}),
+              S: (S, col(snp, "snap_t", 0), {"units": fmt.time_units, "long_name": f"{fmt.time_note} of the snapshot"}),
               X: (X, s.theta, {"units": "rad", "long_name": f"angle of the {fmt.node_label}"}),
               "kind": ("kind", list(STATE_NAMES), {"long_name": "contact state"}),
               "mode": ("mode", np.arange(K), {"units": "1", "long_name": "circumferential Fourier mode"})}
@@ -204,8 +209,9 @@ def run_to_dataset(run) -> xr.Dataset:
             data[name] = ((W, dim), col(snp, name, (0, size)), {"units": fmt.units[kind], "long_name": long})
         data["vol_state"] = ((W, X), col(snp, "vol_state", (0, N), np.int8),
                              {"long_name": f"{fmt.node_label} state at the volume snapshot", **STATE_ATTRS})
-        coords[W] = (W, col(snp, "vol_t", 0), {"units": "1/Omega", "long_name": "time Omega t of the volume snapshot"})
-    return finish(xr.Dataset(data, coords=coords, attrs=attrs), fmt.title, "brake")
+        coords[W] = (W, col(snp, "vol_t", 0), {"units": fmt.time_units,
+                                               "long_name": f"{fmt.time_note} of the volume snapshot"})
+    return finish(xr.Dataset(data, coords=coords, attrs=attrs), fmt.title, fmt.model)
 
 
 def cls_name(run) -> str:
@@ -217,10 +223,20 @@ def _plain(value):
     return value.item() if hasattr(value, "item") else value
 
 
-def dataset_to_run(cls, ds: xr.Dataset):
+def _same(a, b) -> bool:
+    """Two attribute values are the same (numbers exactly, arrays elementwise, text as text)."""
+    try:
+        return bool(np.array_equal(np.asarray(a), np.asarray(b)))
+    except (TypeError, ValueError):
+        return str(a) == str(b)
+
+
+def dataset_to_run(cls, ds: xr.Dataset, scheme=None):
+    """The run stored in ``ds``; its scheme rebuilt from the attributes, or ``scheme`` if given
+    (a model whose parameters cannot be stored as attributes, a mesh say, passes its own)."""
     fmt, a = cls.FORMAT, ds.attrs
-    params = fmt.params_type.from_attrs(a)
-    scheme = fmt.scheme(params, *[_plain(a[k]) for k in fmt.key_attrs])
+    if scheme is None:
+        scheme = fmt.scheme(fmt.params_type.from_attrs(a), *[_plain(a[k]) for k in fmt.key_attrs])
     settings = {k: _plain(a[k]) if k in a or k != "volume_every" else 0 for k in _KEYS}  # 0: from before volumes
     settings["contact"] = bool(settings["contact"])
     series = {"t": ds["t"].values, "energy": ds["energy"].values, "kinetic": ds["kinetic"].values,
@@ -326,10 +342,13 @@ def resume(cls, path, scheme, settings):
         raise ParameterError("checkpoint", str(path), "an intact checkpoint written by stickslip (its content does "
                              "not match its checksum: the file was changed or damaged; overwrite it to start afresh)")
     try:
-        old = cls.from_xarray(ds)
+        old = dataset_to_run(cls, ds, scheme)
+        stored = {k: _plain(ds.attrs[k]) for k in (*plain_attrs(scheme.params.to_attrs()), *cls.FORMAT.key_attrs)}
     except (OSError, KeyError, ValueError, TypeError) as err:  # not a run of this model
         raise refused from err
-    if old.params.to_dict() != scheme.params.to_dict() or \
+    expected = {**plain_attrs(scheme.params.to_attrs()),
+                **dict(zip(cls.FORMAT.key_attrs, _scheme_key(scheme, cls.FORMAT)))}
+    if any(not _same(stored[k], v) for k, v in expected.items()) or \
             settings_key(old) != settings_key(cls(scheme, settings, {}, {}, {}, 0)):
         raise refused
     return cls(scheme, {**old.settings, "samples_total": settings["samples_total"],

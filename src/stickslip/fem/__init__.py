@@ -11,16 +11,21 @@
 * `scheme`: the shared explicit contact scheme on the body's sparse matrices
   (`ContactProblem`, `BodyScheme`);
 * `cea`: complex eigenvalue analysis of steady sliding over a frequency band, shift-invert
-  Arnoldi (`complex_eigenvalues`).
+  Arnoldi (`complex_eigenvalues`);
+* `run`: explicit dynamics with the shared run books, checkpoints and classification
+  (`integrate_body`, `classify_body`);
+* `config`: the TOML config of `stickslip fem steady | cea | run`.
 """
 
 from .assembly import BodySystem, Material, assemble
 from .body import CELL_KINDS, Body, body_from_meshio, read_body
 from .cea import CeaModes, complex_eigenvalues
+from .run import BodyInitial, BodyRun, classify_body, integrate_body, perturbed_steady_body
 from .scheme import BodyScheme, ContactProblem
 from .static import SteadyContact, steady_contact
 from .surfaces import ContactFrames, RigidCylinder, RigidFlat, contact_frames
 
 __all__ = ["Body", "read_body", "body_from_meshio", "CELL_KINDS", "Material", "BodySystem", "assemble",
            "RigidCylinder", "RigidFlat", "ContactFrames", "contact_frames", "SteadyContact", "steady_contact",
-           "ContactProblem", "BodyScheme", "CeaModes", "complex_eigenvalues"]
+           "ContactProblem", "BodyScheme", "CeaModes", "complex_eigenvalues", "BodyInitial", "BodyRun",
+           "integrate_body", "classify_body", "perturbed_steady_body"]
