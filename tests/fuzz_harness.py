@@ -60,6 +60,7 @@ BASE = {
     "halfspace fields": ["--b", "11.358", "--c", "-0.7", "--v-star", "0.001", "--points", "101", "--out", "{tmp}/h.nc"],
     "reproduce": ["--only", "fig2", "--out", "{tmp}/r"],
     "fem run": ["{config}", "--transits", "2", "--out", "{tmp}/g.nc"],
+    "fem cea": ["{config}"],
 }
 _CONFIG: list[str] = []
 

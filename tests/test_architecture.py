@@ -28,7 +28,7 @@ ALLOWED = {
     "contact": BASE | {"files"},
     "sweep": BASE | {"files"},
     "oscillator": BASE | {"friction", "sweep"},
-    "brake": BASE | {"contact", "sweep"},
+    "brake": BASE | {"contact", "sweep", "files"},
     "halfspace": BASE,
     "fem": BASE | {"contact", "sweep", "files"},
     "plotting": set(),

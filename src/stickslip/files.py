@@ -33,7 +33,7 @@ try:
 except ImportError:  # pragma: no cover - not POSIX
     fcntl = None
 
-__all__ = ["exclusive", "die_with_parent", "content_digest"]
+__all__ = ["exclusive", "die_with_parent", "content_digest", "write_xdmf_series"]
 
 
 def content_digest(arrays: Mapping[str, object]) -> str:
@@ -95,3 +95,42 @@ def die_with_parent() -> None:
         libc.prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
     except (OSError, AttributeError):  # pragma: no cover - not Linux
         pass
+
+
+def write_xdmf_series(path, points: np.ndarray, cells: list, steps) -> Path:
+    """Write a mesh and a time series of fields for ParaView: ``path`` (``.xdmf``) and its
+    HDF5 data beside it (``path.with_suffix(".h5")``), with meshio's ``xdmf.TimeSeriesWriter``.
+
+    ``points`` ``(n, 3)``, ``cells`` ``[(meshio cell type, connectivity)]``, ``steps`` an
+    iterable of ``(time, point_data, cell_data)``. The files are written in a hidden folder
+    beside ``path`` and moved into place, the ``.h5`` first: an interrupted write leaves no
+    partial file under either name (a kill between the two moves would pair an older
+    ``.xdmf`` with the new ``.h5``). meshio 5.3 would put the HDF5 file in the working folder
+    (meshio issue 1442): the writer here puts it beside the XDMF file.
+    """
+    import shutil
+    import tempfile
+
+    import h5py
+    from meshio.xdmf import TimeSeriesWriter
+
+    class Writer(TimeSeriesWriter):
+        def __enter__(self):
+            self.h5_filename = str(self.filename.with_suffix(".h5"))
+            self.h5_file = h5py.File(self.h5_filename, "w")
+            return self
+
+    path = Path(path)
+    if path.suffix.lower() != ".xdmf" or not path.parent.is_dir():
+        raise ParameterError("path", str(path), "a file name ending in .xdmf in an existing folder")
+    tmp = Path(tempfile.mkdtemp(prefix=f".{path.stem}-", suffix=".tmp", dir=path.parent))
+    try:
+        with Writer(tmp / path.name) as writer:
+            writer.write_points_cells(points, cells)
+            for t, point_data, cell_data in steps:
+                writer.write_data(float(t), point_data=point_data, cell_data=cell_data)
+        os.replace(tmp / path.with_suffix(".h5").name, path.with_suffix(".h5"))
+        os.replace(tmp / path.name, path)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    return path

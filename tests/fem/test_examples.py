@@ -87,3 +87,21 @@ def test_the_annulus_example_runs_to_its_limit_regime_and_resumes(tmp_path, caps
     first = json.loads(capsys.readouterr().out)
     assert first["regime"] and file_problems(tmp_path / "run.nc") == []
     assert run(args) == 0 and json.loads(capsys.readouterr().out) == first
+
+
+def test_the_pad_example_writes_its_modes_and_its_run_for_paraview(tmp_path, capsys):
+    import meshio
+
+    path = _example("pad_on_disc", "pad.toml", "pad.msh", tmp_path)
+    assert run(["fem", "cea", str(path), "--xdmf", str(tmp_path / "modes.xdmf"), "--json"]) == 0
+    modes = json.loads(capsys.readouterr().out)["modes"]
+    with meshio.xdmf.TimeSeriesReader(tmp_path / "modes.xdmf") as reader:
+        reader.read_points_cells()
+        assert reader.num_steps == len(modes)
+        _, data, _ = reader.read_data(0)
+        assert data["growth_rate"][0] == pytest.approx(modes[0]["growth_rate"], rel=1e-12)
+    assert run(["fem", "run", str(path), "--transits", "2", "--xdmf", str(tmp_path / "run.xdmf"),
+                "--xdmf-every", "0.5"]) == 0
+    with meshio.xdmf.TimeSeriesReader(tmp_path / "run.xdmf") as reader:
+        points, cells = reader.read_points_cells()
+        assert reader.num_steps >= 4 and cells[0].type == "triangle"

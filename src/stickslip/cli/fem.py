@@ -9,6 +9,7 @@ from typing import Annotated, Optional
 import typer
 
 from .. import validation as check
+from ..errors import ParameterError
 from .common import Overwrite, emit, output_path, progress_bar
 
 _emit = functools.partial(emit, model="fem")  # SI units: growth rates in 1/s, frequencies in Hz
@@ -18,6 +19,14 @@ app = typer.Typer(no_args_is_help=True, rich_markup_mode=None,
 
 Config = Annotated[Path, typer.Argument(help="The TOML config (mesh, material, contact, surface; see the docs).")]
 Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
+
+
+def _xdmf(path):
+    """An XDMF output path and its .h5 companion, both checked before any work."""
+    path = output_path("--xdmf", path, ".xdmf")
+    if path is not None:
+        output_path("--xdmf", path.with_suffix(".h5"), ".h5")
+    return path
 
 
 def _problem(config: Path):
@@ -40,13 +49,21 @@ def steady(config: Config, json: Json = False):
 
 
 @app.command()
-def cea(config: Config, json: Json = False):
+def cea(config: Config, json: Json = False,
+        xdmf: Annotated[Optional[Path], typer.Option(help=(
+            "Write the mode shapes for ParaView to this XDMF file (.xdmf, data in the .h5 beside it): one step per "
+            "mode, most unstable first; lengths in m, growth rate [1/s], frequency [Hz]."))] = None):
     """Complex eigenvalue analysis of steady sliding over [cea] band: growth rate [1/s] and
     frequency [Hz] of every mode found, most unstable first."""
     from ..fem import complex_eigenvalues
+    from ..fem.paraview import write_modes_xdmf
 
+    xdmf = _xdmf(xdmf)
     cfg = _problem(config)
-    result = complex_eigenvalues(cfg.problem(), cfg.band, cfg.count)
+    problem = cfg.problem()
+    result = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=xdmf is not None)
+    if xdmf is not None:
+        write_modes_xdmf(problem, result, xdmf)
     data = result.to_dict()
     _emit({"modes": data["modes"], "unstable": data["unstable"], "complete_below": data["complete_below"],
            "shifts": len(data["shifts"])}, json, "complex eigenvalue analysis")
@@ -57,21 +74,34 @@ def run(config: Config,
         transits: Annotated[float, typer.Option(help="Run length in P-wave transits along the contact line (> 0).")] = 20.0,
         beta2: Annotated[float, typer.Option(help="Scheme parameter of [22] in [0.5, 1] (0.5: central differences).")] = 0.9,
         amplitude: Annotated[float, typer.Option(help="Start: steady sliding plus tangential noise of this RMS, "
-                                                      "relative to the steady displacement (>= 0).")] = 1e-3,
+                                                      "relative to the steady displacement, in [0, 100].")] = 1e-3,
         out: Annotated[Optional[Path], typer.Option(help=(
             "The run (.nc): written as it goes and at the end; a killed run resumes from it (--overwrite starts "
             "afresh)."))] = None,
+        xdmf: Annotated[Optional[Path], typer.Option(help=(
+            "Write volume snapshots for ParaView to this XDMF file (.xdmf, data in the .h5 beside it): "
+            "displacement [m], velocity [m/s], contact forces [N/m] and states; times [s]."))] = None,
+        xdmf_every: Annotated[Optional[float], typer.Option(help=(
+            "Interval of the --xdmf snapshots in transits (> 0; default 1), and the last one."))] = None,
         overwrite: Overwrite = False, json: Json = False):
     """Explicit dynamics from perturbed steady sliding, then the limit regime on the contact nodes."""
+    from ..fem.paraview import write_run_xdmf
     from ..fem.run import classify_body, integrate_body, perturbed_steady_body
     from ..fem.scheme import BodyScheme
 
     out = output_path("--out", out, ".nc")
-    check.nonnegative("--amplitude", amplitude)
+    xdmf = _xdmf(xdmf)
+    if xdmf_every is not None and xdmf is None:
+        raise ParameterError("--xdmf-every", xdmf_every, "given with --xdmf only (it sets the interval of the "
+                             "snapshots --xdmf writes)")
+    volume_every = None if xdmf is None else check.positive("--xdmf-every", 1.0 if xdmf_every is None else xdmf_every)
+    check.in_range("--amplitude", amplitude, 0.0, 100.0)
     cfg = _problem(config)
     problem = cfg.problem()
     initial = perturbed_steady_body(BodyScheme(problem, beta2), amplitude)
     with progress_bar("general body") as tick:
         result = integrate_body(problem, transits=transits, beta2=beta2, initial=initial, checkpoint=out,
-                                progress=tick, overwrite=overwrite)
+                                progress=tick, overwrite=overwrite, volume_every=volume_every)
+    if xdmf is not None:
+        write_run_xdmf(result, xdmf)
     _emit(classify_body(result).to_dict(), json, "limit regime")

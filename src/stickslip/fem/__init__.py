@@ -14,6 +14,7 @@
   Arnoldi (`complex_eigenvalues`);
 * `run`: explicit dynamics with the shared run books, checkpoints and classification
   (`integrate_body`, `classify_body`);
+* `paraview`: XDMF time series of a run's volume snapshots and of the CEA mode shapes;
 * `config`: the TOML config of `stickslip fem steady | cea | run`.
 """
 

@@ -43,11 +43,12 @@ class BodyInitial:
 def perturbed_steady_body(scheme: BodyScheme, amplitude: float = 1e-3, seed: int = 0) -> BodyInitial:
     """Steady sliding plus white noise on the contact nodes' tangential displacements, at rest.
 
-    The noise has RMS ``amplitude`` times the largest steady displacement of the contact line.
+    The noise has RMS ``amplitude`` (in [0, 100]) times the largest steady displacement of the
+    contact line.
     """
     if not isinstance(scheme, BodyScheme):
         raise ParameterError("scheme", scheme, "a BodyScheme")
-    amplitude = check.nonnegative("amplitude", amplitude)
+    amplitude = check.in_range("amplitude", amplitude, 0.0, 100.0)  # beyond, the start is no longer near steady sliding
     u_e, _, _ = scheme.steady_reference()
     normal, tangent = scheme.contact_dofs
     size = float(np.abs(u_e[np.concatenate([normal, tangent])]).max()) or 1.0
@@ -92,11 +93,12 @@ def integrate_body(problem: ContactProblem, t_end: float | None = None, *, trans
                    time_step: float | None = None, samples_per_transit: int = 32, snapshot_every: float = 1.0,
                    tail: float = 2.0, modes: int = 32, contact: bool = True, checkpoint=None,
                    every: float | None = None, progress: Callable[[float, float], None] | None = None,
-                   overwrite: bool = False) -> BodyRun:
+                   overwrite: bool = False, volume_every: float | None = None) -> BodyRun:
     """Integrate ``problem`` up to ``t_end`` [s] (or ``transits`` of a P-wave along the contact line).
 
     ``initial`` defaults to `perturbed_steady_body`; ``beta2``, ``courant``, ``time_step``
-    set `BodyScheme`; the books and ``checkpoint`` behave as in `stickslip.brake.fem.integrate_fem`.
+    set `BodyScheme`; the books and ``checkpoint`` behave as in `stickslip.brake.fem.integrate_fem`;
+    ``volume_every`` [transits] keeps volume snapshots for `stickslip.fem.paraview.write_run_xdmf`.
     """
     scheme = BodyScheme(problem, beta2, courant, time_step)
     initial = perturbed_steady_body(scheme) if initial is None else initial
@@ -104,7 +106,7 @@ def integrate_body(problem: ContactProblem, t_end: float | None = None, *, trans
         raise ParameterError("initial", initial, f"a BodyInitial with {scheme.free.size} dofs")
     t_end, settings = prepare(scheme, t_end=t_end, transits=transits, samples_per_transit=samples_per_transit,
                               snapshot_every=snapshot_every, tail=tail, modes=modes, contact=contact,
-                              initial=initial, progress=progress)
+                              initial=initial, progress=progress, volume_every=volume_every)
     return run_explicit(BodyRun, scheme, initial.u, initial.v, settings, t_end, checkpoint=checkpoint, every=every,
                         progress=progress, overwrite=overwrite)
 

@@ -35,9 +35,6 @@ the two moves would pair an older ``.xdmf`` with the new ``.h5``).
 
 from __future__ import annotations
 
-import os
-import shutil
-import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -45,26 +42,11 @@ from skfem import Basis, ElementQuad1, ElementVector
 from skfem.models.elasticity import lame_parameters
 
 from ...errors import ParameterError
+from ...files import write_xdmf_series
 from .mesh import FemSystem
 from .run import FemRun
 
 __all__ = ["write_xdmf"]
-
-
-def _writer(path: Path):
-    """meshio's time-series writer with the HDF5 file beside the XDMF file (meshio 5.3 puts it
-    in the working folder, meshio issue 1442); the rest is meshio's. (Imported here: meshio
-    takes a fifth of a second to import.)"""
-    import h5py
-    from meshio.xdmf import TimeSeriesWriter
-
-    class Writer(TimeSeriesWriter):
-        def __enter__(self):
-            self.h5_filename = str(self.filename.with_suffix(".h5"))
-            self.h5_file = h5py.File(self.h5_filename, "w")
-            return self
-
-    return Writer(path)
 
 
 class _Fields:
@@ -146,21 +128,9 @@ def write_xdmf(run: FemRun, path) -> Path:
     if not run.settings.get("volume_every") or len(run.snapshots.get("vol_t", ())) == 0:
         raise ParameterError("run", "a run without volume snapshots", "a FemRun integrated with volume_every=T "
                              "(volume snapshots every T transits), holding at least one")
-    path = Path(path)
-    if path.suffix.lower() != ".xdmf" or not path.parent.is_dir():
-        raise ParameterError("path", str(path), "a file name ending in .xdmf in an existing folder")
     fields, mesh = _Fields(run.scheme.system), run.scheme.system.mesh.mesh
     points = np.column_stack([mesh.p.T, np.zeros(mesh.p.shape[1])])
     snaps = run.snapshots
-    tmp = Path(tempfile.mkdtemp(prefix=f".{path.stem}-", suffix=".tmp", dir=path.parent))
-    try:
-        with _writer(tmp / path.name) as writer:
-            writer.write_points_cells(points, [("quad", mesh.t.T.astype(np.int64))])
-            for k, t in enumerate(snaps["vol_t"]):
-                point_data, cell_data = fields.snapshot(*(snaps[f"vol_{n}"][k] for n in ("u", "v", "P", "Q", "state")))
-                writer.write_data(float(t), point_data=point_data, cell_data=cell_data)
-        os.replace(tmp / path.with_suffix(".h5").name, path.with_suffix(".h5"))
-        os.replace(tmp / path.name, path)
-    finally:
-        shutil.rmtree(tmp, ignore_errors=True)
-    return path
+    steps = ((t, *fields.snapshot(*(snaps[f"vol_{n}"][k] for n in ("u", "v", "P", "Q", "state"))))
+             for k, t in enumerate(snaps["vol_t"]))
+    return write_xdmf_series(path, points, [("quad", mesh.t.T.astype(np.int64))], steps)

@@ -1,0 +1,93 @@
+"""ParaView output of a general body: run snapshots and CEA mode shapes as XDMF time series.
+
+Both write the body's mesh (points at ``z = 0``, in m) with `stickslip.files.write_xdmf_series`
+(the ``.xdmf`` and its ``.h5`` beside it; `meshio.xdmf.TimeSeriesReader` reads them back).
+
+* `write_run_xdmf(run, path)`: the volume snapshots of `integrate_body(..., volume_every=T)`;
+  per snapshot (time [s]) the point data ``displacement`` [m] (total, from the unstressed
+  body), ``velocity`` [m/s], and on the contact nodes ``contact_pressure`` and
+  ``contact_shear`` [N per unit thickness per node] and ``contact_state`` (0 stick, 1 slip,
+  2 reverse slip, 3 separation; -1 off the contact line).
+* `write_modes_xdmf(problem, modes, path)`: the shapes of the CEA modes
+  (`complex_eigenvalues(..., mode_shapes=True)`), one step per mode (the step's "time" is the
+  mode's index in ``modes``, most unstable first): ``mode_real``, ``mode_imag`` (the complex
+  shape, normalised to a largest displacement of 1), ``mode_amplitude`` and, constant over
+  the mesh, ``growth_rate`` [1/s] and ``frequency`` [Hz]. Vectors are Cartesian, padded with
+  ``z = 0``.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import ParameterError
+from ..files import write_xdmf_series
+from .cea import CeaModes, linearised
+from .run import BodyRun
+from .scheme import BodyScheme, ContactProblem
+
+__all__ = ["write_run_xdmf", "write_modes_xdmf"]
+
+
+def _mesh(body):
+    points = np.column_stack([body.points, np.zeros(len(body.points))])
+    return points, [(body.kind, body.cells.astype(np.int64))]
+
+
+def _vectors(xy: np.ndarray) -> np.ndarray:
+    """``(2 n,)`` Cartesian dof values -> ``(n, 3)`` vectors."""
+    xy = np.asarray(xy).reshape(-1, 2)
+    return np.column_stack([xy, np.zeros(len(xy), dtype=xy.dtype)])
+
+
+def write_run_xdmf(run: BodyRun, path) -> Path:
+    """Write the volume snapshots of ``run`` (see the module docstring); returns ``path``."""
+    if not isinstance(run, BodyRun):
+        raise ParameterError("run", type(run).__name__, "a BodyRun (from integrate_body)")
+    snaps = run.snapshots
+    if not run.settings.get("volume_every") or len(snaps.get("vol_t", ())) == 0:
+        raise ParameterError("run", "a run without volume snapshots", "a BodyRun integrated with volume_every=T")
+    scheme: BodyScheme = run.scheme
+    body, frames = scheme.params.system.body, scheme.params.frames
+    nodes = frames.nodes[scheme.contact_nodes]
+    n = len(body.points)
+
+    def on_line(values):
+        out = np.zeros(n)
+        out[nodes] = values
+        return out
+
+    def step(k):
+        state = np.full(n, -1, dtype=np.int32)
+        state[nodes] = snaps["vol_state"][k]
+        point_data = {"displacement": _vectors(scheme.cartesian(snaps["vol_u"][k])),
+                      "velocity": _vectors(scheme.cartesian(snaps["vol_v"][k])),
+                      "contact_pressure": on_line(snaps["vol_P"][k]), "contact_shear": on_line(snaps["vol_Q"][k]),
+                      "contact_state": state}
+        return float(snaps["vol_t"][k]), point_data, {}
+
+    return write_xdmf_series(path, *_mesh(body), (step(k) for k in range(len(snaps["vol_t"]))))
+
+
+def write_modes_xdmf(problem: ContactProblem, modes: CeaModes, path) -> Path:
+    """Write the shapes of ``modes`` of ``problem`` (see the module docstring); returns ``path``."""
+    if not isinstance(modes, CeaModes) or modes.shapes is None:
+        raise ParameterError("modes", type(modes).__name__, "CeaModes from complex_eigenvalues(..., mode_shapes=True)")
+    scheme = BodyScheme(problem)
+    _, _, _, kept = linearised(problem)
+    body = problem.system.body
+    n = len(body.points)
+
+    def step(k):
+        w = np.zeros(scheme.free.size, dtype=complex)
+        w[kept] = modes.shapes[:, k]
+        u = scheme.cartesian(w.real) + 1j * scheme.cartesian(w.imag)
+        u = u / np.abs(u).max()
+        amplitude = np.hypot(np.abs(u[0::2]), np.abs(u[1::2]))
+        return float(k), {"mode_real": _vectors(u.real), "mode_imag": _vectors(u.imag), "mode_amplitude": amplitude,
+                          "growth_rate": np.full(n, modes.growth_rate[k]),
+                          "frequency": np.full(n, modes.frequency[k])}, {}
+
+    return write_xdmf_series(path, *_mesh(body), (step(k) for k in range(len(modes.s))))
