@@ -105,3 +105,10 @@ def test_the_pad_example_writes_its_modes_and_its_run_for_paraview(tmp_path, cap
     with meshio.xdmf.TimeSeriesReader(tmp_path / "run.xdmf") as reader:
         points, cells = reader.read_points_cells()
         assert reader.num_steps >= 4 and cells[0].type == "triangle"
+
+
+def test_a_time_step_above_the_stable_one_is_one_line_naming_it(tmp_path, capsys):
+    path = _example("pad_on_disc", "pad.toml", "pad.msh", tmp_path)
+    assert run(["fem", "run", str(path), "--time-step", "1"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--time-step" in err and "stable step" in err

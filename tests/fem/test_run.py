@@ -46,3 +46,26 @@ def test_the_general_path_finds_the_annulus_regime(annulus):
     general = classify_body(integrate_body(annulus, transits=40.0))
     own = classify_fem(integrate_fem(PARAMS, 32, 2, transits=40.0))
     assert general.regime == own.regime and general.n == own.n
+
+
+def test_a_run_that_blows_up_stops_and_keeps_its_last_good_checkpoint(annulus, tmp_path):
+    """A scheme forced past its stable step (the constructor refuses it; set behind its back)
+    blows up: the run stops with a diagnostic, and the checkpoint holds finite values."""
+    from stickslip.errors import NoSolutionError
+    from stickslip.fem.run import BodyRun, perturbed_steady_body
+    from stickslip.fem.scheme import BodyScheme
+    from stickslip.contact.runs import prepare, run_explicit
+    import xarray as xr
+
+    scheme = BodyScheme(annulus)
+    object.__setattr__(scheme, "time_step", 1.5 * scheme.dt_max)
+    initial = perturbed_steady_body(scheme)
+    t_end, settings = prepare(scheme, t_end=None, transits=30.0, samples_per_transit=32, snapshot_every=1.0,
+                              tail=2.0, modes=8, contact=True, initial=initial, progress=None)
+    path = tmp_path / "run.nc"
+    with pytest.raises(NoSolutionError, match="blew up") as err:
+        run_explicit(BodyRun, scheme, initial.u, initial.v, settings, t_end, checkpoint=path)
+    assert "last good state" in str(err.value)
+    ds = xr.load_dataset(path)
+    assert 0 < ds.attrs["samples_done"] < settings["samples_total"]
+    assert all(np.all(np.isfinite(ds[name].values)) for name in ds.data_vars if ds[name].dtype.kind == "f")

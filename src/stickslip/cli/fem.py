@@ -73,6 +73,8 @@ def cea(config: Config, json: Json = False,
 def run(config: Config,
         transits: Annotated[float, typer.Option(help="Run length in P-wave transits along the contact line (> 0).")] = 20.0,
         beta2: Annotated[float, typer.Option(help="Scheme parameter of [22] in [0.5, 1] (0.5: central differences).")] = 0.9,
+        time_step: Annotated[Optional[float], typer.Option(help=(
+            "Time step [s] (> 0, at most the stable step of the mesh; default 0.9 of it)."))] = None,
         amplitude: Annotated[float, typer.Option(help="Start: steady sliding plus tangential noise of this RMS, "
                                                       "relative to the steady displacement, in [0, 100].")] = 1e-3,
         out: Annotated[Optional[Path], typer.Option(help=(
@@ -98,9 +100,10 @@ def run(config: Config,
     check.in_range("--amplitude", amplitude, 0.0, 100.0)
     cfg = _problem(config)
     problem = cfg.problem()
-    initial = perturbed_steady_body(BodyScheme(problem, beta2), amplitude)
+    initial = perturbed_steady_body(BodyScheme(problem, beta2, time_step=time_step), amplitude)
     with progress_bar("general body") as tick:
-        result = integrate_body(problem, transits=transits, beta2=beta2, initial=initial, checkpoint=out,
+        result = integrate_body(problem, transits=transits, beta2=beta2, time_step=time_step, initial=initial,
+                                checkpoint=out,
                                 progress=tick, overwrite=overwrite, volume_every=volume_every)
     if xdmf is not None:
         write_run_xdmf(result, xdmf)

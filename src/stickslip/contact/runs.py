@@ -32,7 +32,7 @@ import xarray as xr
 from ..results import Result
 from .. import validation as check
 from ..cf import SOURCE, finish, plain_attrs
-from ..errors import ParameterError
+from ..errors import NoSolutionError, ParameterError
 from ..files import content_digest, exclusive
 from .scheme import StepState
 from .states import STATE_ATTRS, STATE_NAMES, state_fractions
@@ -284,7 +284,7 @@ def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tai
             ("transits", transits, limit / scheme.transit_time)
         raise ParameterError(name, value, f"<= {most:.4g} on this mesh ({dofs} dofs, {scheme.dt:.3g} per step): "
                              f"at most {MAX_WORK:.0e} dof-steps per run (about 4 hours); continue a run from its "
-                             "checkpoint for more")
+                             "checkpoint for more", also=("time_step",) if getattr(scheme, "time_step", None) else ())
     spt = check.positive_int("samples_per_transit", samples_per_transit)
     if spt < 4:
         raise ParameterError("samples_per_transit", spt, "an integer >= 4")
@@ -356,9 +356,15 @@ def resume(cls, path, scheme, settings):
                old.series, old.snapshots, old.kernel, old.samples_done)
 
 
+#: A displacement this many times the largest of the start and of steady sliding is a blown-up
+#: run (no motion of an elastic body in contact grows by twelve orders of magnitude).
+BLOW_UP = 1e12
+
+
 def loop(run, checkpoint, every, progress, t_end, step: Callable, record: Callable):
     """Advance ``run`` to its last sample: ``step(kernel)`` advances one sample's steps,
-    ``record(done, kernel, series, snaps)`` books it."""
+    ``record(done, kernel, series, snaps)`` books it. A run that blows up (`BLOW_UP`) stops
+    with a `NoSolutionError`; its checkpoint keeps the last good sample."""
     cls, s, st, k = type(run), run.scheme, run.settings, run.kernel
     series = {key: list(v) for key, v in run.series.items()}
     snaps = {key: list(v) for key, v in run.snapshots.items()}
@@ -370,9 +376,19 @@ def loop(run, checkpoint, every, progress, t_end, step: Callable, record: Callab
         return cls(s, st, {key: np.asarray(v) for key, v in series.items()},
                    {key: np.asarray(v) for key, v in snaps.items()}, {key: v.copy() for key, v in k.items()}, done)
 
+    scale = max(float(np.abs(k["u"]).max()), float(np.abs(k["ref"]).max())) or 1.0
     try:
         while done < total:
+            good = {key: v.copy() for key, v in k.items()}
             step(k)
+            if not np.abs(k["u"]).max() < BLOW_UP * scale:  # blown up (or NaN): back to the last good state, kept
+                for key, value in good.items():
+                    k[key][...] = value
+                t0 = done * chunk * s.dt
+                raise NoSolutionError(
+                    f"the run blew up between t = {t0:.6g} and {t0 + chunk * s.dt:.6g} (non-finite displacements; is "
+                    f"the time step {s.dt:.3g} stable?)" + (f"; {checkpoint} keeps the last good state, at t = {t0:.6g}"
+                                                           if checkpoint is not None else ""))
             done += 1
             record(done, k, series, snaps)
             if progress is not None:
