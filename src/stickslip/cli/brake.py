@@ -11,7 +11,8 @@ import typer
 
 from .. import validation as check
 from ..errors import ParameterError
-from .common import AXIS_HELP, Overwrite, axis, emit, output_folder, output_path, progress_bar, write_netcdf
+from .common import (AXIS_HELP, Overwrite, RunOut, XdmfEvery, axis, emit, output_folder, output_path, progress_bar,
+                     write_netcdf, xdmf_snapshots)
 
 _emit = functools.partial(emit, model="brake")  # results are printed with the units of this model
 
@@ -30,6 +31,8 @@ Density = Annotated[Opt, typer.Option("--density", help="rho [kg/m^3] (default 7
 Omega = Annotated[Opt, typer.Option("--omega", help="Shaft speed Omega [rad/s] > 0, with rho R^2 Omega^2 / E in [1e-100, 1e100].")]
 Mismatch = Annotated[Opt, typer.Option("--mismatch", help="Mismatch d [m] in [0, 0.01 R] (small strain at the bore).")]
 Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
+SeedWave = Annotated[Optional[int], typer.Option("--seed-wave-number", help=(
+    "Start from steady sliding plus this Fourier mode (default: white noise)."))]
 
 _DEFAULTS = {"inner_radius": 0.1, "outer_radius": 0.15, "young": 2.1e11, "density": 7850.0}
 
@@ -182,12 +185,9 @@ def integrate_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta
                   nodes: Annotated[int, typer.Option(help="Nodes around the ring.")] = 512,
                   transits: Annotated[float, typer.Option(help="Duration in wave transits 2 pi / sqrt(a).")] = 100.0,
                   beta2: Annotated[float, typer.Option(help="Scheme parameter of [22] (1/2: central differences).")] = 0.5,
-                  mode: Annotated[Optional[int], typer.Option("--seed-wave-number", help="Start from steady sliding plus this "
-                                                 "Fourier mode (default: white noise).")] = None,
+                  mode: SeedWave = None,
                   amplitude: Annotated[float, typer.Option(help="Perturbation amplitude relative to delta, in [0, 100].")] = 1e-3,
-                  out: Annotated[Optional[Path], typer.Option(help=(
-                "The run (.nc): written as it goes and at the end; a killed run resumes from it (--overwrite starts "
-                "afresh)."))] = None,
+                  out: RunOut = None,
                   overwrite: Overwrite = False, json: Json = False):
     """Time integration of [12] on the ring from perturbed steady sliding; classifies the limit regime."""
     from ..brake import classify, integrate, perturbed_steady
@@ -308,29 +308,19 @@ def fem_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = Non
             n_r: Annotated[int, typer.Option(help="Element layers across the ring.")] = 16,
             transits: Annotated[float, typer.Option(help="Duration in P-wave transits 2 pi R / c_p.")] = 100.0,
             beta2: Annotated[float, typer.Option(help="Scheme parameter of [22] (paper: 0.9).")] = 0.9,
-            mode: Annotated[Optional[int], typer.Option("--seed-wave-number", help="Start from steady sliding plus this "
-                                                 "Fourier mode (default: white noise).")] = None,
-            out: Annotated[Optional[Path], typer.Option(help=(
-                "The run (.nc): written as it goes and at the end; a killed run resumes from it (--overwrite starts "
-                "afresh)."))] = None,
+            mode: SeedWave = None,
+            out: RunOut = None,
             xdmf: Annotated[Optional[Path], typer.Option(help=(
                 "Write volume snapshots for ParaView to this XDMF file (.xdmf, data in the .h5 of the same name): "
                 "displacement, velocity, stress; contact pressure, shear, traction, state. Lengths in R, stresses "
                 "in E, times Omega t."))] = None,
-            xdmf_every: Annotated[Optional[float], typer.Option(help=(
-                "Interval of the --xdmf snapshots in P-wave transits (> 0; default 1), and the last one."))] = None,
+            xdmf_every: XdmfEvery = None,
             overwrite: Overwrite = False, json: Json = False):
     """Finite element model of section 3.1 (scikit-fem): run to the limit regime and classify it."""
     from ..brake.fem import FemScheme, classify_fem, integrate_fem, perturbed_steady, write_xdmf
 
     out = output_path("--out", out, ".nc")
-    xdmf = output_path("--xdmf", xdmf, ".xdmf")
-    if xdmf is not None:
-        output_path("--xdmf", xdmf.with_suffix(".h5"), ".h5")  # its data file, written beside it
-    if xdmf_every is not None and xdmf is None:
-        raise ParameterError("--xdmf-every", xdmf_every, "given with --xdmf only (it sets the interval of the "
-                             "snapshots --xdmf writes)")
-    volume_every = None if xdmf is None else check.positive("--xdmf-every", 1.0 if xdmf_every is None else xdmf_every)
+    xdmf, volume_every = xdmf_snapshots(xdmf, xdmf_every)
     p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
     if p.delta == 0:  # checked before the run, not after it

@@ -10,7 +10,7 @@ import shlex
 import sys
 import tempfile
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, Optional
 
 import numpy as np
 import typer
@@ -18,6 +18,7 @@ from rich.console import Console
 from rich.table import Table
 
 from ..errors import NoSolutionError, ParameterError
+from ..validation import positive as check_positive
 from ..vocabulary import lookup
 
 #: ``--overwrite``: start a store or checkpoint afresh instead of resuming it.
@@ -117,6 +118,32 @@ def emit(data: dict, as_json: bool, title: str, model: str = "common") -> None:
         for item in items:
             sub.add_row(*(_number(item.get(c)) for c in columns))
         console.print(sub)
+
+
+#: The run file of a long computation, written as it goes and resumed (``brake integrate``, ``fem``).
+RunOut = Annotated[Optional[Path], typer.Option("--out", help=(
+    "The run (.nc): written as it goes and at the end; a killed run resumes from it (--overwrite starts afresh)."))]
+#: The interval of a run's ParaView snapshots (with ``--xdmf``).
+XdmfEvery = Annotated[Optional[float], typer.Option("--xdmf-every", help=(
+    "Interval of the --xdmf snapshots in transits (> 0; default 1), and the last one."))]
+
+
+def xdmf_path(path):
+    """An ``--xdmf`` output path and its ``.h5`` companion, both checked before any work (or None)."""
+    path = output_path("--xdmf", path, ".xdmf")
+    if path is not None:
+        output_path("--xdmf", path.with_suffix(".h5"), ".h5")
+    return path
+
+
+def xdmf_snapshots(xdmf, every) -> tuple:
+    """``(path, interval in transits)`` of a run's ``--xdmf``/``--xdmf-every``, checked before any
+    work; ``(None, None)`` without ``--xdmf`` (and ``--xdmf-every`` alone is refused)."""
+    xdmf = xdmf_path(xdmf)
+    if every is not None and xdmf is None:
+        raise ParameterError("--xdmf-every", every, "given with --xdmf only (it sets the interval of the "
+                             "snapshots --xdmf writes)")
+    return xdmf, (None if xdmf is None else check_positive("--xdmf-every", 1.0 if every is None else every))
 
 
 #: The help of a map axis option (``--x``, ``--y``), the same for every map.

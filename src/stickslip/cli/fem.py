@@ -9,8 +9,7 @@ from typing import Annotated, Optional
 import typer
 
 from .. import validation as check
-from ..errors import ParameterError
-from .common import Overwrite, emit, output_path, progress_bar
+from .common import Overwrite, RunOut, XdmfEvery, emit, output_path, progress_bar, xdmf_path, xdmf_snapshots
 
 _emit = functools.partial(emit, model="fem")  # SI units: growth rates in 1/s, frequencies in Hz
 
@@ -20,13 +19,6 @@ app = typer.Typer(no_args_is_help=True, rich_markup_mode=None,
 Config = Annotated[Path, typer.Argument(help="The TOML config (mesh, material, contact, surface; see the docs).")]
 Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
 
-
-def _xdmf(path):
-    """An XDMF output path and its .h5 companion, both checked before any work."""
-    path = output_path("--xdmf", path, ".xdmf")
-    if path is not None:
-        output_path("--xdmf", path.with_suffix(".h5"), ".h5")
-    return path
 
 
 def _problem(config: Path):
@@ -58,7 +50,7 @@ def cea(config: Config, json: Json = False,
     from ..fem import complex_eigenvalues
     from ..fem.paraview import write_modes_xdmf
 
-    xdmf = _xdmf(xdmf)
+    xdmf = xdmf_path(xdmf)
     cfg = _problem(config)
     problem = cfg.problem()
     result = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=xdmf is not None)
@@ -77,14 +69,11 @@ def run(config: Config,
             "Time step [s] (> 0, at most the stable step of the mesh; default 0.9 of it)."))] = None,
         amplitude: Annotated[float, typer.Option(help="Start: steady sliding plus tangential noise of this RMS, "
                                                       "relative to the steady displacement, in [0, 100].")] = 1e-3,
-        out: Annotated[Optional[Path], typer.Option(help=(
-            "The run (.nc): written as it goes and at the end; a killed run resumes from it (--overwrite starts "
-            "afresh)."))] = None,
+        out: RunOut = None,
         xdmf: Annotated[Optional[Path], typer.Option(help=(
             "Write volume snapshots for ParaView to this XDMF file (.xdmf, data in the .h5 beside it): "
             "displacement [m], velocity [m/s], contact forces [N/m] and states; times [s]."))] = None,
-        xdmf_every: Annotated[Optional[float], typer.Option(help=(
-            "Interval of the --xdmf snapshots in transits (> 0; default 1), and the last one."))] = None,
+        xdmf_every: XdmfEvery = None,
         overwrite: Overwrite = False, json: Json = False):
     """Explicit dynamics from perturbed steady sliding, then the limit regime on the contact nodes."""
     from ..fem.paraview import write_run_xdmf
@@ -92,11 +81,7 @@ def run(config: Config,
     from ..fem.scheme import BodyScheme
 
     out = output_path("--out", out, ".nc")
-    xdmf = _xdmf(xdmf)
-    if xdmf_every is not None and xdmf is None:
-        raise ParameterError("--xdmf-every", xdmf_every, "given with --xdmf only (it sets the interval of the "
-                             "snapshots --xdmf writes)")
-    volume_every = None if xdmf is None else check.positive("--xdmf-every", 1.0 if xdmf_every is None else xdmf_every)
+    xdmf, volume_every = xdmf_snapshots(xdmf, xdmf_every)
     check.in_range("--amplitude", amplitude, 0.0, 100.0)
     cfg = _problem(config)
     problem = cfg.problem()
