@@ -38,7 +38,7 @@ def linearised(problem: ContactProblem):
     """``(K_eff, C_eff or None, mass, kept)``: the linearised operators on the kept dofs
     (the free dofs of `BodyScheme` less the normal dofs of the contact nodes in contact)."""
     scheme = BodyScheme(problem)
-    K = (scheme.rotation.T @ problem.system.K @ scheme.rotation).tocsr()[scheme.free][:, scheme.free]
+    K = scheme.stiffness
     normal, tangent = scheme.contact_dofs
     touching = problem.steady.active[scheme.contact_nodes]
     normal, tangent = normal[touching], tangent[touching]
