@@ -69,3 +69,21 @@ def test_a_run_that_blows_up_stops_and_keeps_its_last_good_checkpoint(annulus, t
     ds = xr.load_dataset(path)
     assert 0 < ds.attrs["samples_done"] < settings["samples_total"]
     assert all(np.all(np.isfinite(ds[name].values)) for name in ds.data_vars if ds[name].dtype.kind == "f")
+
+
+def test_a_checkpoint_of_the_same_parameters_on_another_contact_is_refused(annulus, tmp_path):
+    """Friction, material and start equal, the shaft pushed in twice as far: only the problem's
+    digest (mesh, contact frames, clamps) tells the runs apart."""
+    from stickslip.fem import RigidCylinder, contact_frames
+    from stickslip.fem.run import perturbed_steady_body
+    from stickslip.fem.scheme import BodyScheme, ContactProblem
+
+    path = tmp_path / "run.nc"
+    start = perturbed_steady_body(BodyScheme(annulus))
+    integrate_body(annulus, transits=1.0, checkpoint=path, initial=start)
+    delta = -annulus.frames.gap[0]
+    frames = contact_frames(annulus.system.body, "bore", RigidCylinder(1.0 + 2 * delta, 1.0 / (1.0 + 2 * delta)))
+    other = ContactProblem(annulus.system, frames, annulus.friction, annulus.clamped)
+    with pytest.raises(ParameterError) as err:
+        integrate_body(other, transits=1.0, checkpoint=path, initial=start)
+    assert err.value.name == "checkpoint"
