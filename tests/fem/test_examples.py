@@ -112,3 +112,41 @@ def test_a_time_step_above_the_stable_one_is_one_line_naming_it(tmp_path, capsys
     assert run(["fem", "run", str(path), "--time-step", "1"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "--time-step" in err and "stable step" in err
+
+
+def test_the_block_on_a_belt_is_pressed_with_its_load_and_sticks_and_slips(tmp_path, capsys):
+    path = _example("block_on_belt", "block.toml", "block.msh", tmp_path)
+    assert run(["fem", "steady", str(path), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["normal_force"] == pytest.approx(1e6 * 0.1, rel=1e-9)  # pressure times the top's length
+    assert data["friction_force"] == pytest.approx(0.4 * data["normal_force"], rel=1e-12)
+    out = tmp_path / "run.nc"
+    assert run(["fem", "run", str(path), "--start", "stick", "--transits", "50", "--out", str(out), "--json"]) == 0
+    capsys.readouterr()
+    import xarray as xr
+
+    with xr.open_dataset(out) as ds:
+        stick = ds.fraction.sel(kind="stick").values
+        assert ds.attrs["static_friction"] == 0.6 and stick[0] == 1.0  # it starts moving with the belt
+    assert run(["fem", "run", str(path), "--start", "stick", "--amplitude", "0.1"]) == 2
+    assert "--amplitude" in capsys.readouterr().err
+
+
+def test_bad_springs_loads_and_static_friction_are_named_together(tmp_path, capsys):
+    path = _example("block_on_belt", "block.toml", "block.msh", tmp_path)
+    text = path.read_text().replace("static_friction = 0.6", "static_friction = 0.3")
+    text = text.replace("stiffness = [9.5e5, 0.0]", "stiffness = [-1.0, 0.0]\ncolour = 1")
+    text = text.replace("pressure = 1.0e6", "pressure = \"high\"")
+    path.write_text(text)
+    assert run(["fem", "steady", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "4 problems" in err
+    for words in ("contact.static_friction = 0.3", "spring[0].stiffness", "unknown key spring[0].colour",
+                  "load[0].pressure = 'high'"):
+        assert words in err
+    path.write_text(path.read_text().replace("static_friction = 0.3", "static_friction = 0.6")
+                    .replace("[-1.0, 0.0]\ncolour = 1", "[1.0, 0.0]").replace('"high"', "1.0")
+                    .replace('group = "top"\nstiffness', 'group = "side"\nstiffness'))
+    assert run(["fem", "steady", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert "spring.group" in err and "side" in err and "it has: bottom, left, right, top" in err

@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import functools
+from enum import Enum
 from pathlib import Path
 from typing import Annotated, Optional
 
 import typer
 
 from .. import validation as check
+from ..errors import ParameterError
 from .common import Overwrite, RunOut, XdmfEvery, emit, output_path, progress_bar, xdmf_path, xdmf_snapshots
 
 _emit = functools.partial(emit, model="fem")  # SI units: growth rates in 1/s, frequencies in Hz
@@ -19,6 +21,16 @@ app = typer.Typer(no_args_is_help=True, rich_markup_mode=None,
 Config = Annotated[Path, typer.Argument(help="The TOML config (mesh, material, contact, surface; see the docs).")]
 Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
 
+
+class Start(str, Enum):
+    steady = "steady"
+    rest = "rest"
+    stick = "stick"
+
+
+StartOpt = Annotated[Start, typer.Option("--start", help=(
+    "steady: steady sliding plus --amplitude noise; rest: the preload at rest (the surface drags the body); "
+    "stick: the preload moving with a flat surface (the 1-DOF oscillator's stick segment)."))]
 
 
 def _problem(config: Path):
@@ -67,25 +79,39 @@ def run(config: Config,
         beta2: Annotated[float, typer.Option(help="Scheme parameter of [22] in [0.5, 1] (0.5: central differences).")] = 0.9,
         time_step: Annotated[Optional[float], typer.Option(help=(
             "Time step [s] (> 0, at most the stable step of the mesh; default 0.9 of it)."))] = None,
-        amplitude: Annotated[float, typer.Option(help="Start: steady sliding plus tangential noise of this RMS, "
-                                                      "relative to the steady displacement, in [0, 100].")] = 1e-3,
+        start: StartOpt = Start.steady,
+        amplitude: Annotated[Optional[float], typer.Option(help=(
+            "With --start steady: tangential noise of this RMS, relative to the steady displacement, in [0, 100] "
+            "(default 1e-3)."))] = None,
         out: RunOut = None,
         xdmf: Annotated[Optional[Path], typer.Option(help=(
             "Write volume snapshots for ParaView to this XDMF file (.xdmf, data in the .h5 beside it): "
             "displacement [m], velocity [m/s], contact forces [N/m] and states; times [s]."))] = None,
         xdmf_every: XdmfEvery = None,
         overwrite: Overwrite = False, json: Json = False):
-    """Explicit dynamics from perturbed steady sliding, then the limit regime on the contact nodes."""
+    """Explicit dynamics from perturbed steady sliding (or the preload, --start), then the limit
+    regime on the contact nodes."""
     from ..fem.paraview import write_run_xdmf
-    from ..fem.run import classify_body, integrate_body, perturbed_steady_body
+    from ..fem.run import classify_body, integrate_body, perturbed_steady_body, preload_body
     from ..fem.scheme import BodyScheme
+    from ..fem.surfaces import RigidFlat
 
     out = output_path("--out", out, ".nc")
     xdmf, volume_every = xdmf_snapshots(xdmf, xdmf_every)
-    check.in_range("--amplitude", amplitude, 0.0, 100.0)
+    if amplitude is not None and start is not Start.steady:
+        raise ParameterError("--amplitude", amplitude, f"not given with --start {start.value} (it sets the noise "
+                             "of --start steady)")
+    amplitude = check.in_range("--amplitude", 1e-3 if amplitude is None else amplitude, 0.0, 100.0)
     cfg = _problem(config)
+    if start is Start.stick and not isinstance(cfg.surface, RigidFlat):
+        raise ParameterError("--start", start.value, "steady or rest with a rotating cylinder (stick moves the "
+                             "whole body with a flat surface)")
     problem = cfg.problem()
-    initial = perturbed_steady_body(BodyScheme(problem, beta2, time_step=time_step), amplitude)
+    scheme = BodyScheme(problem, beta2, time_step=time_step)
+    if start is Start.steady:
+        initial = perturbed_steady_body(scheme, amplitude)
+    else:
+        initial = preload_body(scheme, cfg.surface.velocity if start is Start.stick else (0.0, 0.0))
     with progress_bar("general body") as tick:
         result = integrate_body(problem, transits=transits, beta2=beta2, time_step=time_step, initial=initial,
                                 checkpoint=out,

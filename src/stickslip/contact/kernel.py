@@ -8,7 +8,8 @@ one step is (Carpenter, Taylor & Katona 1991; the paper's [22], [23]):
     predictor:  v*_m = v_{m-1} + dt ((1 - beta2) a_{m-1} + beta2 A_m),
                 u*_{m+1} = u_m + dt v*_m + dt^2/2 A_m,
     contact:    r_n = max(0, (g_j - u*_n) / (c dt^2)),                  c = beta2 + 1/2,
-                r_t = clip((u_t,m + dt s_j - u*_t) / (c dt^2), -f r_n, f r_n),
+                r* = (u_t,m + dt s_j - u*_t) / (c dt^2),
+                r_t = r* if |r*| <= f_s r_n (stick), else sign(r*) f r_n (slip),
     corrector:  u_{m+1} = u* + c dt^2 r,   a_m = A_m + r,   v_m = v*_m + beta2 dt r,
 
 ``r = M^{-1} lambda`` (reactions per unit mass), ``g_j`` the position of the rigid surface
@@ -17,8 +18,13 @@ along the normal of node ``j`` (``u_n >= g_j``) and ``s_j`` its tangential speed
 ``u*`` plus ``beta2 dt^2`` from ``v*``), the normal multiplier makes ``u_n = g_j`` where it is
 positive, and the tangential one makes a sticking node move with the surface; clipping
 it to ``[-f r_n, f r_n]`` solves the discrete Coulomb law, the slip velocity being affine
-and increasing in ``r_t``. The mass is diagonal and each multiplier acts on one dof, so
-this is exact node by node, with no iteration (``docs/theory/contact.md``).
+and increasing in ``r_t``. With a static coefficient ``f_s > f`` a node sticks while the
+reaction that holds it to the surface, ``r*``, stays within ``f_s r_n`` (the 1-DOF
+oscillator's stick condition, node by node), and slips with the kinetic ``f r_n`` otherwise;
+``f_s = f`` is plain Coulomb (the same numbers as the clipping). The mass is diagonal and
+each multiplier acts on one dof, so this is exact node by node, with no iteration
+(``docs/theory/contact.md``). A constant external load per unit mass ``b`` (pressure on a
+boundary) is added to ``A_m``.
 
 `explicit_step` does the predictor, the multipliers and the corrector once ``A_m`` is
 known. `advance` is the compiled loop: it computes ``A_m`` from one of two forms of the
@@ -58,12 +64,13 @@ def predictor(u, v, a, A, dt, beta2):
 
 
 @njit(cache=True)
-def explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, contact, lam_n, lam_t, state, ut_old):
+def explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, fs, contact, lam_n, lam_t, state, ut_old):
     """One step of the scheme in place, given ``A = -M^{-1} K u_m``.
 
     ``u, v, a`` hold ``u_m, v_{m-1}, a_{m-1}`` on entry and ``u_{m+1}, v_m, a_m`` on exit.
     Contact node ``j`` has its normal dof ``normal[j]`` and tangential dof ``tangent[j]``,
-    the rigid surface at ``gap0[j]`` along the normal and moving at ``speed[j]``.
+    the rigid surface at ``gap0[j]`` along the normal and moving at ``speed[j]``; ``f`` and
+    ``fs >= f`` are the kinetic and static friction coefficients.
     ``lam_n, lam_t, state`` receive the reactions per unit mass and the node states;
     ``ut_old`` is scratch of the size of ``normal``. ``contact=False``: no reactions.
     """
@@ -77,10 +84,11 @@ def explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, contac
         r, t = normal[j], tangent[j]
         p = on * max((gap0[j] - u[r]) / cdt2, 0.0)
         trial = (ut_old[j] + dt * speed[j] - u[t]) / cdt2
-        lim = f * p
-        q = min(max(trial, -lim), lim)
+        lim, held = f * p, fs * p
+        stick = abs(trial) <= held
+        q = stick * trial + (1 - stick) * min(max(trial, -lim), lim)
         touch = p > 0.0
-        state[j] = SEPARATION * (1 - touch) + touch * (SLIP_POS * (trial > lim) + SLIP_NEG * (trial < -lim))
+        state[j] = SEPARATION * (1 - touch) + touch * (SLIP_POS * (trial > held) + SLIP_NEG * (trial < -held))
         lam_n[j], lam_t[j] = p, q
         a[r] += p
         a[t] += q
@@ -156,9 +164,9 @@ def stencil_apply(C, u, out):
 
 
 @njit(cache=True)
-def advance(C, indptr, indices, data, u, v, a, normal, tangent, gap0, speed, nsteps, dt, beta2, f, contact, lam_n,
-            lam_t, state, work):
-    """``nsteps`` steps of the scheme in place, ``A_m = -(M^{-1} K) u_m``.
+def advance(C, indptr, indices, data, load, u, v, a, normal, tangent, gap0, speed, nsteps, dt, beta2, f, fs, contact,
+            lam_n, lam_t, state, work):
+    """``nsteps`` steps of the scheme in place, ``A_m = -(M^{-1} K) u_m + load`` (``load`` empty: none).
 
     ``M^{-1} K`` is the stencil ``C`` (`stencil_apply`) if ``C`` is not empty, else the CSR
     matrix ``(indptr, indices, data)`` (`csr_apply`). ``work`` receives ``u_m`` of the last
@@ -167,11 +175,14 @@ def advance(C, indptr, indices, data, u, v, a, normal, tangent, gap0, speed, nst
     A = np.empty(u.shape[0])
     ut_old = np.empty(normal.shape[0])
     stencil = C.shape[0] > 0
+    loaded = load.shape[0] > 0
     for step in range(nsteps):
         if stencil:
             stencil_apply(C, u, A)
         else:
             csr_apply(indptr, indices, data, u, A)
+        if loaded:
+            A += load
         if step == nsteps - 1:
             work[:] = u
-        explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, contact, lam_n, lam_t, state, ut_old)
+        explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, fs, contact, lam_n, lam_t, state, ut_old)

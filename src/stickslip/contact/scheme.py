@@ -63,6 +63,7 @@ def discrete_rates(lam, dt: float, beta2: float) -> np.ndarray:
 
 
 _NO_STENCIL = np.zeros((0, 3, 3, 2, 2))
+_NO_LOAD = np.zeros(0)
 
 
 def stencil_matrix(C: np.ndarray, n_theta: int) -> sp.csr_matrix:
@@ -155,6 +156,17 @@ class ExplicitScheme(ABC):
     def steady_reference(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Steady sliding: ``u_e`` and the reactions per unit mass ``(r_n, r_t)`` per contact node."""
 
+    @property
+    def static_friction(self) -> float:
+        """Static coefficient ``f_s >= f`` (a node sticks while its holding reaction is within
+        ``f_s r_n``); by default ``params.friction``: plain Coulomb."""
+        return float(self.params.friction)
+
+    @property
+    def load(self) -> np.ndarray | None:
+        """A constant external load per unit mass on every dof (added to ``-M^{-1} K u``), or None."""
+        return None
+
     # --- the operator: a stencil (fast path) or a sparse matrix (general path) ----------
     @property
     def stencil(self) -> np.ndarray | None:
@@ -240,7 +252,7 @@ class ExplicitScheme(ABC):
     def initial_state(self, u0: np.ndarray, v0: np.ndarray, contact: bool = True) -> StepState:
         """``u_0, v_{-1}, a_{-1}`` such that the first step starts from displacement ``u0`` and velocity ``v0``.
 
-        ``a_{-1}`` is the internal acceleration at ``u0`` plus the steady reactions at the
+        ``a_{-1}`` is the internal acceleration at ``u0`` (with the load) plus the steady reactions at the
         contact nodes touching the surface, and ``v_{-1} = v0 - dt a_{-1}``: exact for the free
         problem and for unperturbed steady sliding.
         """
@@ -249,6 +261,8 @@ class ExplicitScheme(ABC):
             raise ParameterError("initial", f"arrays of shape {u0.shape}, {v0.shape}",
                                  f"two arrays of shape {self.sparse_operator.shape[:1]}")
         a = self.apply(u0)
+        if self.load is not None:
+            a += self.load
         if contact:
             (normal, tangent), (gap0, _) = self.contact_dofs, self.surface
             _, r_n, r_t = self.steady_reference()
@@ -273,6 +287,8 @@ class ExplicitScheme(ABC):
         (normal, tangent), (gap0, speed) = self.contact_dofs, self.surface
         A = self.sparse_operator
         C = self.stencil if self.stencil is not None and not sparse else _NO_STENCIL
-        advance(C, A.indptr, A.indices, A.data, state.u, state.v, state.a, normal, tangent, gap0, speed, nsteps,
-                self.dt, self.beta2, self.params.friction, bool(contact), out.lam_n, out.lam_t, out.state, out.u_prev)
+        load = _NO_LOAD if self.load is None else np.ascontiguousarray(self.load, dtype=float)
+        advance(C, A.indptr, A.indices, A.data, load, state.u, state.v, state.a, normal, tangent, gap0, speed, nsteps,
+                self.dt, self.beta2, self.params.friction, self.static_friction, bool(contact), out.lam_n, out.lam_t,
+                out.state, out.u_prev)
         return out

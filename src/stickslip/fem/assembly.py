@@ -1,8 +1,9 @@
 """Stiffness, lumped mass and Rayleigh damping of a `Body` (scikit-fem), in SI units.
 
-`assemble(body, material)` returns a `BodySystem`: ``K`` (CSR, N/m per unit thickness),
-the row-sum lumped ``mass`` (kg per unit thickness) and the Rayleigh coefficients, on the
-Cartesian dofs ``2 i`` (x) and ``2 i + 1`` (y) of node ``i``. Plane strain uses the Lamé
+`assemble(body, material, springs, loads)` returns a `BodySystem`: ``K`` (CSR, N/m per unit
+thickness, with the boundary springs), the row-sum lumped ``mass`` (kg per unit thickness),
+the constant ``load`` (N per unit thickness, from `stickslip.fem.boundary`) and the Rayleigh
+coefficients, on the Cartesian dofs ``2 i`` (x) and ``2 i + 1`` (y) of node ``i``. Plane strain uses the Lamé
 parameters ``lambda = E nu / ((1 + nu)(1 - 2 nu))``, ``mu = E / (2 (1 + nu))``; plane stress
 replaces ``lambda`` by ``2 lambda mu / (lambda + 2 mu)``.
 """
@@ -21,6 +22,7 @@ from skfem.models.elasticity import lame_parameters, linear_elasticity
 from .. import validation as check
 from ..errors import ParameterError
 from .body import Body
+from .boundary import Load, Spring, boundary_load, boundary_springs
 
 __all__ = ["Material", "BodySystem", "assemble"]
 
@@ -69,12 +71,20 @@ def _mass(u, v, w):
 
 @dataclass(frozen=True, eq=False)
 class BodySystem:
-    """The assembled body: ``K`` and the lumped ``mass`` on all ``2 n`` Cartesian dofs."""
+    """The assembled body: ``K``, the lumped ``mass`` and the constant ``load`` on all ``2 n``
+    Cartesian dofs; ``springs`` and ``loads`` are what `assemble` added."""
 
     body: Body
     material: Material
     K: sp.csr_matrix
     mass: np.ndarray
+    load: np.ndarray | None = None
+    springs: tuple = ()
+    loads: tuple = ()
+
+    def __post_init__(self):
+        if self.load is None:
+            object.__setattr__(self, "load", np.zeros(self.K.shape[0]))
 
     @property
     def n_dofs(self) -> int:
@@ -91,12 +101,17 @@ class BodySystem:
         return np.stack([2 * nodes, 2 * nodes + 1], axis=1).ravel()
 
 
-def assemble(body: Body, material: Material) -> BodySystem:
-    """Assemble the stiffness and the row-sum lumped mass of ``body`` (see the module docstring)."""
+def assemble(body: Body, material: Material, springs=(), loads=()) -> BodySystem:
+    """Assemble the stiffness and the row-sum lumped mass of ``body`` with its boundary
+    ``springs`` (`Spring`) and ``loads`` (`Load`) (see the module docstring)."""
     if not isinstance(body, Body):
         raise ParameterError("body", body, "a Body (see read_body)")
     if not isinstance(material, Material):
         raise ParameterError("material", material, "a Material")
+    springs, loads = tuple(springs), tuple(loads)
+    for name, items, kind in (("springs", springs, Spring), ("loads", loads, Load)):
+        if not all(isinstance(x, kind) for x in items):
+            raise ParameterError(name, items, f"a sequence of {kind.__name__}")
     mesh_type, element = (MeshTri, ElementTriP1) if body.kind == "triangle" else (MeshQuad, ElementQuad1)
     mesh = mesh_type(np.ascontiguousarray(body.points.T), np.ascontiguousarray(body.cells.T))
     basis = Basis(mesh, ElementVector(element()))
@@ -107,4 +122,7 @@ def assemble(body: Body, material: Material) -> BodySystem:
     order = np.empty(2 * len(body.points), dtype=np.int64)
     order[0::2], order[1::2] = basis.nodal_dofs[0], basis.nodal_dofs[1]
     K = K[order][:, order].tocsr()
-    return BodySystem(body, material, K, lumped[order])
+    if springs:
+        K = (K + boundary_springs(body, springs)).tocsr()
+    load = boundary_load(body, loads) if loads else None
+    return BodySystem(body, material, K, lumped[order], load, springs, loads)

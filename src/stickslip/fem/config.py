@@ -13,7 +13,17 @@
 
     [contact]
     group = "bottom"                # the boundary group in contact
-    friction = 0.4                  # Coulomb coefficient
+    friction = 0.4                  # Coulomb coefficient (kinetic)
+    static_friction = 0.5           # static coefficient >= friction (optional; default: friction)
+
+    [[spring]]                      # springs from a group's nodes to the ground (optional, repeatable)
+    group = "left"
+    stiffness = [1e8, 0.0]          # total [kx, ky] of the group [N/m per metre of thickness]
+
+    [[load]]                        # a uniform load on a group (optional, repeatable)
+    group = "top"
+    pressure = 1e6                  # [Pa], positive pushes into the body
+    traction = [0.0, 0.0]           # [tx, ty] [Pa] (optional)
 
     [surface]                       # the rigid counter-surface, one of:
     kind = "cylinder"               # radius, omega [rad/s], center = [x, y], body_inside = false
@@ -37,14 +47,15 @@ from pathlib import Path
 from ..errors import ParameterError
 from .assembly import PLANES, Material, assemble
 from .body import read_body
+from .boundary import LIMIT, Load, Spring
 from .scheme import ContactProblem
 from .surfaces import RigidCylinder, RigidFlat, contact_frames
 
 __all__ = ["FemConfig", "load_config"]
 
-_KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "cea"},
+_KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "cea", "spring", "load"},
           "material": {"young", "poisson", "density", "plane", "alpha", "beta"},
-          "contact": {"group", "friction"},
+          "contact": {"group", "friction", "static_friction"},
           "surface": {"kind", "radius", "omega", "center", "body_inside", "point", "normal", "velocity",
                       "interference"},
           "cea": {"band", "count"}}
@@ -63,6 +74,9 @@ class FemConfig:
     surface: object
     band: tuple
     count: int
+    static_friction: float | None = None
+    springs: tuple = ()
+    loads: tuple = ()
 
     def problem(self) -> ContactProblem:
         """Read the mesh, assemble, and set the contact up (mesh errors name the mesh file)."""
@@ -70,7 +84,8 @@ class FemConfig:
         for name in (*self.clamped, self.group):
             body.group(name, "clamped" if name in self.clamped else "contact.group")
         frames = contact_frames(body, self.group, self.surface)
-        return ContactProblem(assemble(body, self.material), frames, self.friction, self.clamped)
+        system = assemble(body, self.material, self.springs, self.loads)
+        return ContactProblem(system, frames, self.friction, self.clamped, self.static_friction)
 
 
 def _number(problems, where, value, lo=None, hi=None, positive=False):
@@ -139,6 +154,11 @@ def load_config(path) -> FemConfig:
     if not isinstance(group, str):
         problems.append("contact.group must be the name of a boundary group")
     friction = _number(problems, "contact.friction", c.get("friction", 0.0), 0.0, 100.0)
+    static = c.get("static_friction")
+    if static is not None:
+        static = _number(problems, "contact.static_friction", static, friction or 0.0, 100.0)
+    springs = _springs(problems, data.get("spring", []))
+    loads = _loads(problems, data.get("load", []))
     surface = _surface(problems, data.get("surface", {}) if isinstance(data.get("surface", {}), dict) else {})
     e = data.get("cea", {}) if isinstance(data.get("cea", {}), dict) else {}
     band = e.get("band", [0.0, 1e4])
@@ -153,7 +173,42 @@ def load_config(path) -> FemConfig:
         raise ParameterError("config", str(path), f"a valid config; {len(problems)} problem"
                              f"{'s' if len(problems) > 1 else ''}: " + "; ".join(problems))
     material = Material(young, poisson, density, plane, alpha, beta)
-    return FemConfig(path, mesh_path, tuple(clamped), material, group, friction, surface, tuple(band), count)
+    return FemConfig(path, mesh_path, tuple(clamped), material, group, friction, surface, tuple(band), count,
+                     static, springs, loads)
+
+
+def _tables(problems, name, value, keys):
+    if not (isinstance(value, list) and all(isinstance(t, dict) for t in value)):
+        problems.append(f"{name} must be written [[{name}]] (a list of tables)")
+        return []
+    for i, table in enumerate(value):
+        problems += [f"unknown key {name}[{i}].{k}" for k in sorted(table) if k not in keys]
+        if not isinstance(table.get("group"), str):
+            problems.append(f"{name}[{i}].group must be the name of a boundary group")
+    return [(f"{name}[{i}]", t) for i, t in enumerate(value) if isinstance(t.get("group"), str)]
+
+
+def _springs(problems, value):
+    out = []
+    for where, t in _tables(problems, "spring", value, {"group", "stiffness"}):
+        k = _pair(problems, f"{where}.stiffness", t.get("stiffness"))
+        if k is not None and (min(k) < 0 or max(k) == 0 or max(k) > LIMIT):
+            problems.append(f"{where}.stiffness = {list(k)!r} must be two numbers in [0, {LIMIT:g}], not both zero")
+        elif k is not None:
+            out.append(Spring(t["group"], k))
+    return tuple(out)
+
+
+def _loads(problems, value):
+    out = []
+    for where, t in _tables(problems, "load", value, {"group", "pressure", "traction"}):
+        p = _number(problems, f"{where}.pressure", t.get("pressure", 0.0), -LIMIT, LIMIT)
+        q = _pair(problems, f"{where}.traction", t.get("traction", [0.0, 0.0]))
+        if q is not None and max(map(abs, q)) > LIMIT:
+            problems.append(f"{where}.traction = {list(q)!r} must be two numbers with |value| <= {LIMIT:g}")
+        elif None not in (p, q):
+            out.append(Load(t["group"], p, q))
+    return tuple(out)
 
 
 def _surface(problems, s):

@@ -24,8 +24,9 @@ from ..contact import classify
 from ..contact.runs import RunFormat, RunRecord, prepare, run_explicit
 from ..errors import ParameterError
 from .scheme import BodyScheme, ContactProblem
+from .static import steady_contact
 
-__all__ = ["BodyInitial", "BodyRun", "perturbed_steady_body", "integrate_body", "classify_body"]
+__all__ = ["BodyInitial", "BodyRun", "perturbed_steady_body", "preload_body", "integrate_body", "classify_body"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -57,6 +58,24 @@ def perturbed_steady_body(scheme: BodyScheme, amplitude: float = 1e-3, seed: int
     u = u_e.copy()
     u[tangent] += amplitude * size * white
     return BodyInitial(u, np.zeros_like(u), f"steady sliding + {amplitude:g} noise(seed={int(seed)})")
+
+
+def preload_body(scheme: BodyScheme, velocity=(0.0, 0.0)) -> BodyInitial:
+    """The static preload (frictionless contact, `stickslip.fem.static.steady_contact` with
+    ``friction = 0``) with every free node moving at the uniform ``velocity = (vx, vy)`` [m/s]:
+    at rest by default (the surface then drags the body), or moving with a flat surface
+    (``velocity`` its velocity: the body starts sticking, as the 1-DOF oscillator on its stick segment)."""
+    if not isinstance(scheme, BodyScheme):
+        raise ParameterError("scheme", scheme, "a BodyScheme")
+    vx, vy = (check.in_range("velocity", float(c), -1e6, 1e6) for c in velocity)
+    p = scheme.params
+    pre = steady_contact(p.system, p.frames, 0.0, p.clamped)
+    v = np.zeros(p.system.n_dofs)
+    v[0::2], v[1::2] = vx, vy
+    v[p.fixed] = 0.0
+    to_scheme = scheme.rotation.T
+    return BodyInitial((to_scheme @ pre.u)[scheme.free], (to_scheme @ v)[scheme.free],
+                       f"preload, moving at ({vx:g}, {vy:g}) m/s")
 
 
 _FORMAT = RunFormat(

@@ -38,13 +38,15 @@ __all__ = ["ContactProblem", "BodyScheme"]
 
 @dataclass(frozen=True, eq=False)
 class ContactProblem:
-    """A body (``system``), its contact ``frames``, the Coulomb coefficient ``friction`` and
-    the names of its ``clamped`` boundary groups."""
+    """A body (``system``), its contact ``frames``, the kinetic Coulomb coefficient
+    ``friction``, the names of its ``clamped`` boundary groups and the static coefficient
+    ``static_friction >= friction`` (None: the same, plain Coulomb)."""
 
     system: BodySystem
     frames: ContactFrames
     friction: float = 0.0
     clamped: tuple = ()
+    static_friction: float | None = None
 
     def __post_init__(self):
         if not isinstance(self.system, BodySystem):
@@ -52,6 +54,8 @@ class ContactProblem:
         if not isinstance(self.frames, ContactFrames):
             raise ParameterError("frames", self.frames, "ContactFrames (see contact_frames)")
         object.__setattr__(self, "friction", check.nonnegative("friction", self.friction))
+        fs = self.friction if self.static_friction is None else self.static_friction
+        object.__setattr__(self, "static_friction", check.at_least("static_friction", fs, self.friction, "friction"))
         object.__setattr__(self, "clamped", tuple(self.clamped))
         for name in self.clamped:
             self.system.body.nodes(name, "clamped")
@@ -81,10 +85,13 @@ class ContactProblem:
 
     @cached_property
     def digest(self) -> str:
-        """SHA-256 of the mesh, the contact frames and the clamped dofs: what a checkpoint must share."""
+        """SHA-256 of the mesh, the stiffness (with its springs), the load, the contact frames and
+        the clamped dofs: what a checkpoint must share."""
         h = hashlib.sha256()
         body, f = self.system.body, self.frames
-        for arr in (body.points, body.cells, f.nodes, f.normal, f.tangent, f.gap, f.speed, self.fixed):
+        K = self.system.K
+        for arr in (body.points, body.cells, f.nodes, f.normal, f.tangent, f.gap, f.speed, self.fixed, K.indptr,
+                    K.indices, K.data, self.system.load):
             h.update(np.ascontiguousarray(arr).tobytes())
         return h.hexdigest()
 
@@ -92,7 +99,11 @@ class ContactProblem:
         """The problem as netCDF attributes: material, friction, clamped groups and its digest."""
         m = self.system.material
         return {"young": m.young, "poisson": m.poisson, "density": m.density, "plane": m.plane, "alpha": m.alpha,
-                "beta": m.beta, "friction": self.friction, "clamped": ",".join(self.clamped),
+                "beta": m.beta, "friction": self.friction, "static_friction": self.static_friction,
+                "clamped": ",".join(self.clamped),
+                "springs": "; ".join(f"{k.group}: {k.stiffness[0]:g}, {k.stiffness[1]:g} Pa" for k in self.system.springs),
+                "loads": "; ".join(f"{x.group}: pressure {x.pressure:g} Pa, traction {x.traction[0]:g}, "
+                                   f"{x.traction[1]:g} Pa" for x in self.system.loads),
                 "contact_nodes": int(len(self.frames.nodes)), "problem_sha256": self.digest}
 
     def to_dict(self) -> dict:
@@ -152,6 +163,16 @@ class BodyScheme(ExplicitScheme):
 
     def operator_matrix(self):
         return (sp.diags(1.0 / self.mass) @ self.stiffness).tocsr()
+
+    @property
+    def static_friction(self) -> float:
+        return float(self.params.static_friction)
+
+    @cached_property
+    def load(self) -> np.ndarray | None:
+        """The boundary load per unit mass on the free dofs, in the scheme's frames (None: no load)."""
+        F = self.params.system.load
+        return None if not F.any() else (self.rotation.T @ F)[self.free] / self.mass
 
     @cached_property
     def contact_dofs(self) -> tuple[np.ndarray, np.ndarray]:

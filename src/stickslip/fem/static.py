@@ -7,9 +7,9 @@ the contact nodes (`stickslip.fem.surfaces.contact_frames`), with the normal dis
 the active nodes prescribed by the gap (``u . n = -g``) and the clamped dofs fixed, the
 remaining dofs solve the non-symmetric linear system
 
-    (K_FF - f S K_AF) w_F = (f S K_AP - K_FP) w_P,      p = K_A. w,
+    (K_FF - f S K_AF) w_F = (f S K_AP - K_FP) w_P + F_F - f S F_A,      p = K_A. w - F_A,
 
-where ``A`` are the normal dofs of the active nodes and ``S`` puts ``f p`` on their
+with ``F`` the constant boundary load (`stickslip.fem.boundary`), where ``A`` are the normal dofs of the active nodes and ``S`` puts ``f p`` on their
 tangential dofs. The active set starts with every node touching or penetrating and is
 updated (nodes in tension leave, penetrating ones join) until it settles. ``f = 0`` is the
 static preload (frictionless contact).
@@ -73,6 +73,7 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
     n_dofs = system.n_dofs
     T = frame_rotation(n_dofs, frames)
     Kw = (T.T @ system.K @ T).tocsr()
+    Fw = T.T @ system.load
     fixed = np.zeros(n_dofs, bool)
     for name in clamped:
         fixed[system.dofs(system.body.nodes(name, "clamped"))] = True
@@ -80,7 +81,7 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
     free = ~fixed[normal_dofs]  # a clamped contact node (a shared corner) is held by the clamp, not the contact
     active = (frames.gap <= 0.0) & free
     for iteration in range(1, max_iterations + 1):
-        w, p = _solve(Kw, fixed, normal_dofs[active], tangent_dofs[active], -frames.gap[active], friction, n_dofs)
+        w, p = _solve(Kw, Fw, fixed, normal_dofs[active], tangent_dofs[active], -frames.gap[active], friction, n_dofs)
         pressure = np.zeros(len(frames.nodes))
         pressure[active] = p
         penetrating = free & (~active) & (w[normal_dofs] < -frames.gap - 1e-12 * np.max(np.abs(frames.gap)))
@@ -91,7 +92,7 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
     raise NoSolutionError(f"the contact active set did not settle in {max_iterations} iterations")
 
 
-def _solve(Kw, fixed, normal, tangent, prescribed, friction, n_dofs):
+def _solve(Kw, Fw, fixed, normal, tangent, prescribed, friction, n_dofs):
     P = fixed.copy()
     P[normal] = True
     F = np.flatnonzero(~P)
@@ -104,7 +105,7 @@ def _solve(Kw, fixed, normal, tangent, prescribed, friction, n_dofs):
     K_F = Kw[F]
     K_A = Kw[normal]
     A = (K_F[:, F] - S @ K_A[:, F]).tocsc()
-    rhs = S @ (K_A @ wP) - K_F @ wP
+    rhs = S @ (K_A @ wP - Fw[normal]) - K_F @ wP + Fw[F]
     not_held = NoSolutionError("the body is not held (a rigid motion is free): clamp a boundary group or give it "
                                "more contact")
     try:
@@ -117,4 +118,4 @@ def _solve(Kw, fixed, normal, tangent, prescribed, friction, n_dofs):
     wF = lu.solve(rhs)
     w = wP.copy()
     w[F] = wF
-    return w, Kw[normal] @ w
+    return w, Kw[normal] @ w - Fw[normal]

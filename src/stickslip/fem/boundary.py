@@ -1,0 +1,114 @@
+"""Elastic supports and loads on the boundary groups of a general body (SI, per unit thickness).
+
+* `Spring(group, stiffness)`: the nodes of a boundary group tied to the ground by springs
+  along x and y. ``stiffness = (kx, ky)`` is the *total* stiffness of the group [N/m per
+  metre of thickness, i.e. Pa], shared between its nodes by their tributary length, so a
+  rigid motion of the group meets exactly ``(kx, ky)``: the spring of the 1-DOF oscillator
+  when the body is stiff.
+* `Load(group, pressure, traction)`: a uniform ``pressure`` [Pa] (positive pushes into the
+  body, along the inward normal) and a uniform ``traction = (tx, ty)`` [Pa] on a boundary
+  group. The nodal forces are the consistent ones of linear edges (half of each edge's
+  force to each end), exact for uniform loads.
+
+`boundary_springs` and `boundary_load` turn them into a sparse stiffness and a force vector
+on the dofs ``2 i + c`` of `stickslip.fem.assemble`, which adds them to the body's system.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+
+from .. import validation as check
+from ..errors import ParameterError
+from .body import Body
+
+__all__ = ["Spring", "Load", "boundary_springs", "boundary_load"]
+
+#: Largest stiffness or load accepted [Pa]: beyond it a double-precision step loses the motion.
+LIMIT = 1e20
+
+
+def _pair(name, value, limit=LIMIT):
+    try:
+        x, y = (float(v) for v in value)
+    except (TypeError, ValueError):
+        raise ParameterError(name, value, "two numbers (x, y)") from None
+    for v in (x, y):
+        if not (math.isfinite(v) and abs(v) <= limit):
+            raise ParameterError(name, value, f"two finite numbers with |value| <= {limit:g}")
+    return x, y
+
+
+@dataclass(frozen=True)
+class Spring:
+    """Springs along x and y from the nodes of boundary ``group`` to the ground, total
+    ``stiffness = (kx, ky)`` >= 0 [Pa = N/m per metre of thickness]."""
+
+    group: str
+    stiffness: tuple
+
+    def __post_init__(self):
+        if not isinstance(self.group, str):
+            raise ParameterError("spring.group", self.group, "the name of a boundary group")
+        k = _pair("spring.stiffness", self.stiffness)
+        if min(k) < 0 or max(k) == 0:
+            raise ParameterError("spring.stiffness", self.stiffness, "two numbers >= 0, not both zero")
+        object.__setattr__(self, "stiffness", k)
+
+
+@dataclass(frozen=True)
+class Load:
+    """A uniform ``pressure`` [Pa] (positive: into the body) and ``traction = (tx, ty)`` [Pa]
+    on boundary ``group``."""
+
+    group: str
+    pressure: float = 0.0
+    traction: tuple = (0.0, 0.0)
+
+    def __post_init__(self):
+        if not isinstance(self.group, str):
+            raise ParameterError("load.group", self.group, "the name of a boundary group")
+        p = check.finite("load.pressure", self.pressure)
+        if abs(p) > LIMIT:
+            raise ParameterError("load.pressure", self.pressure, f"a number with |pressure| <= {LIMIT:g} Pa")
+        object.__setattr__(self, "pressure", p)
+        object.__setattr__(self, "traction", _pair("load.traction", self.traction))
+
+
+def _oriented_edges(body: Body, group: str, option: str) -> np.ndarray:
+    """The edges of ``group`` oriented as in their cell (counter-clockwise: the body on the left)."""
+    edges = body.group(group, option)
+    cells = body.cells
+    directed = {tuple(e) for e in np.stack([cells, np.roll(cells, -1, axis=1)], axis=-1).reshape(-1, 2).tolist()}
+    forward = np.array([tuple(e) in directed for e in edges.tolist()], dtype=bool)
+    return np.where(forward[:, None], edges, edges[:, ::-1])
+
+
+def boundary_springs(body: Body, springs) -> sp.csr_matrix:
+    """The (diagonal) stiffness of ``springs`` on all ``2 n`` dofs of ``body``."""
+    diag = np.zeros(2 * len(body.points))
+    for spring in springs:
+        edges = body.group(spring.group, "spring.group")
+        length = np.hypot(*(body.points[edges[:, 1]] - body.points[edges[:, 0]]).T)
+        share = np.zeros(len(body.points))
+        np.add.at(share, edges.ravel(), np.repeat(0.5 * length / length.sum(), 2))
+        diag[0::2] += spring.stiffness[0] * share
+        diag[1::2] += spring.stiffness[1] * share
+    return sp.diags(diag).tocsr()
+
+
+def boundary_load(body: Body, loads) -> np.ndarray:
+    """Nodal forces [N per metre of thickness] of ``loads`` on all ``2 n`` dofs of ``body``."""
+    force = np.zeros((len(body.points), 2))
+    for load in loads:
+        edges = _oriented_edges(body, load.group, "load.group")
+        d = body.points[edges[:, 1]] - body.points[edges[:, 0]]
+        inward = np.stack([-d[:, 1], d[:, 0]], axis=1)  # length times the inward normal (body on the left)
+        per_edge = load.pressure * inward + np.hypot(d[:, 0], d[:, 1])[:, None] * np.asarray(load.traction)
+        for end in (0, 1):
+            np.add.at(force, edges[:, end], 0.5 * per_edge)
+    return force.ravel()

@@ -1,0 +1,105 @@
+"""Boundary springs and loads (`stickslip.fem.boundary`) against integrals done by hand, and a
+block pressed on a flat by a pressure against the exact uniform compression."""
+
+import numpy as np
+import pytest
+
+from stickslip.errors import NoSolutionError, ParameterError
+from stickslip.fem import Body, Material, assemble, body_from_meshio
+from stickslip.fem.boundary import Load, Spring, boundary_load, boundary_springs
+from stickslip.fem.static import steady_contact
+from stickslip.fem.surfaces import RigidFlat, contact_frames
+
+from .meshes import rectangle
+
+W, H = 0.04, 0.01
+
+
+@pytest.fixture(scope="module")
+def block(tmp_path_factory):
+    """A triangle mesh graded along both axes: boundary edges of unequal lengths."""
+    b = body_from_meshio(rectangle(tmp_path_factory.mktemp("b") / "b.msh", W, H, 0.0023), "block")
+    x, y = b.points.T
+    graded = np.stack([W * (x / W) ** 1.5, H * (y / H) ** 2], axis=1)  # monotone: the cells stay counter-clockwise
+    flipped = {name: e[:, ::-1] if name in ("top", "left") else e for name, e in b.groups.items()}  # any orientation
+    return Body(graded, b.cells, b.kind, flipped, "block")
+
+
+def test_a_spring_meets_a_linear_field_with_its_exact_integral(block):
+    kx, ky = 3e6, 5e5
+    S = boundary_springs(block, [Spring("left", (kx, ky))])
+    x, y = block.points.T
+    for field, exact in ((np.ones_like(y), 1.0), (y, H / 2), (y**0 + 2 * y / H, 2.0)):  # the mean over the face
+        u = np.zeros(2 * len(x))
+        u[0::2], u[1::2] = field, -field
+        f = S @ u
+        assert f[0::2].sum() == pytest.approx(kx * exact, rel=1e-12)
+        assert f[1::2].sum() == pytest.approx(-ky * exact, rel=1e-12)
+    off = np.zeros(2 * len(x))
+    off[0::2] = x != 0
+    assert not (S @ off).any()  # only the group's nodes
+
+
+def test_a_uniform_load_gives_its_resultant_and_moment(block):
+    P, (tx, ty) = 2e6, (3e5, -1e5)
+    x, y = block.points.T
+    cases = {"top": ((0.0, -P * W), (tx * W, ty * W)), "left": ((P * H, 0.0), (tx * H, ty * H)),
+             "right": ((-P * H, 0.0), (tx * H, ty * H)), "bottom": ((0.0, P * W), (tx * W, ty * W))}
+    for group, (pressure, traction) in cases.items():
+        f = boundary_load(block, [Load(group, P)]).reshape(-1, 2)
+        assert f.sum(axis=0) == pytest.approx(pressure, rel=1e-12, abs=1e-6)
+        f = boundary_load(block, [Load(group, 0.0, (tx, ty))]).reshape(-1, 2)
+        assert f.sum(axis=0) == pytest.approx(traction, rel=1e-12, abs=1e-6)
+    # the moment of the pressure on the top about the origin: -P W * W/2 (at its centre)
+    f = boundary_load(block, [Load("top", P)]).reshape(-1, 2)
+    assert np.sum(x * f[:, 1] - y * f[:, 0]) == pytest.approx(-P * W * W / 2, rel=1e-12)
+
+
+def test_a_block_pressed_on_a_flat_is_compressed_uniformly(block):
+    """Frictionless flat under the bottom, pressure on the top, a weak spring along x on the left:
+    the exact state is uniform compression, ``sigma_yy = -P`` (linear elements represent it)."""
+    E, nu, P = 2e9, 0.3, 1e6
+    system = assemble(block, Material(E, nu, 1000.0), [Spring("left", (1e3, 0.0))], [Load("top", P)])
+    frames = contact_frames(block, "bottom", RigidFlat((0.0, 0.0), (0.0, 1.0), (1.0, 0.0)))
+    st = steady_contact(system, frames, 0.0)
+    xs = block.points[frames.nodes, 0]
+    order = np.argsort(xs)
+    share = np.zeros(len(xs))  # the tributary length of every bottom node
+    half = 0.5 * np.diff(xs[order])
+    share[order[:-1]] += half
+    share[order[1:]] += half
+    assert st.active.all() and st.pressure == pytest.approx(P * share, rel=1e-9)
+    u = st.u.reshape(-1, 2)
+    top = np.isclose(block.points[:, 1], H)
+    assert u[top, 1] == pytest.approx(-P * H * (1 - nu**2) / E, rel=1e-9)  # plane strain, sigma_xx = 0
+
+
+def test_a_tethered_block_slides_where_its_spring_holds_the_friction(block):
+    """Springs on the contact nodes themselves balance the friction node by node: with nu = 0 (no
+    lateral expansion under the pressure) steady sliding is a rigid translation by ``f N / k``.
+    Part of the load sits on the contact face itself (a suction ``Pb`` onto the belt)."""
+    k, f, P, Pb = 2e7, 0.4, 1e6, 3e5
+    loads = [Load("top", P), Load("bottom", -Pb)]  # negative: along the outward normal, onto the belt
+    system = assemble(block, Material(2e9, 0.0, 1000.0), [Spring("bottom", (k, 0.0))], loads)
+    frames = contact_frames(block, "bottom", RigidFlat((0.0, 0.0), (0.0, 1.0), (1.0, 0.0)))
+    st = steady_contact(system, frames, f)
+    assert st.pressure.sum() == pytest.approx((P + Pb) * W, rel=1e-9)
+    assert st.u.reshape(-1, 2)[:, 0] == pytest.approx(f * (P + Pb) * W / k, rel=1e-9)
+
+
+def test_bad_springs_and_loads_name_their_option(block):
+    with pytest.raises(ParameterError, match="spring.stiffness"):
+        Spring("left", (-1.0, 0.0))
+    with pytest.raises(ParameterError, match="spring.stiffness"):
+        Spring("left", (0.0, 0.0))
+    with pytest.raises(ParameterError, match="load.pressure"):
+        Load("top", float("nan"))
+    with pytest.raises(ParameterError, match="load.traction"):
+        Load("top", 0.0, (1e300, 0.0))
+    with pytest.raises(ParameterError, match="spring.group.*it has: bottom, left, right, top"):
+        assemble(block, Material(1e9, 0.3, 1e3), [Spring("side", (1.0, 1.0))])
+    with pytest.raises(ParameterError, match="loads"):
+        assemble(block, Material(1e9, 0.3, 1e3), loads=[("top", 1.0)])
+    system = assemble(block, Material(1e9, 0.3, 1e3), loads=[Load("top", 1e6)])  # nothing holds it along x
+    with pytest.raises(NoSolutionError, match="not held"):
+        steady_contact(system, contact_frames(block, "bottom", RigidFlat((0, 0), (0, 1), (1, 0))), 0.0)
