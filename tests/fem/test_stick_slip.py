@@ -86,3 +86,19 @@ def test_steady_sliding_of_a_loaded_block_is_a_fixed_point_of_the_scheme(body):
     state = scheme.initial_state(u_e, np.zeros_like(u_e))
     scheme.advance(state, 200)
     assert np.max(np.abs(state.u - u_e)) < 1e-9 * np.max(np.abs(u_e))
+
+
+def test_the_complex_eigenvalue_analysis_finds_the_oscillators_mode_of_a_stiff_block(body):
+    """Steady sliding of the tethered block (ratio 100) has the 1-DOF mode ``sqrt(k / m)``,
+    neutral with constant friction. Thresholds set before the run: the frequency within 1e-3
+    (the block's compliance moves it by ~ratio^-2), the growth rate below 1e-6 ``sqrt(k / m)``."""
+    from stickslip.fem import complex_eigenvalues
+
+    m = RHO * W * H
+    omega = 0.5 * np.pi * np.sqrt(E / (2 * RHO)) / H / 100.0
+    system = assemble(body, Material(E, 0.0, RHO), [Spring("bottom", (m * omega**2, 0.0))], [Load("top", P)])
+    frames = contact_frames(body, "bottom", RigidFlat((0.0, 0.0), (0.0, 1.0), (V, 0.0)))
+    modes = complex_eigenvalues(ContactProblem(system, frames, FD, (), FS), (0.0, 2 * omega / (2 * np.pi)), 10)
+    lowest = np.argmin(modes.frequency)
+    assert modes.frequency[lowest] == pytest.approx(omega / (2 * np.pi), rel=1e-3)
+    assert abs(modes.growth_rate[lowest]) < 1e-6 * omega
