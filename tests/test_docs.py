@@ -50,11 +50,7 @@ def test_halfspace_tutorial_runs(tmp_path, monkeypatch):
 
 
 def test_fem_tutorial_runs(tmp_path, monkeypatch):
-    import subprocess
-    import sys
-
-    monkeypatch.chdir(tmp_path)  # section 7 reads the example's mesh, made as the tutorial says
-    subprocess.run([sys.executable, str(ROOT / "examples" / "pad_on_disc" / "mesh.py"), "pad.msh"], check=True)
+    monkeypatch.chdir(tmp_path)
     namespace = {}
     for block in _blocks("docs/tutorial-fem.md"):
         exec(block, namespace)
@@ -63,7 +59,20 @@ def test_fem_tutorial_runs(tmp_path, monkeypatch):
     assert not namespace["partial"].complete and namespace["resumed"].complete
     assert (namespace["resumed"].U == namespace["whole"].U).all() and round(namespace["longer"].transits) == 150
     assert "checkpoint" in str(namespace["refused"]) and (tmp_path / "fem.nc").exists()
-    assert namespace["modes"].growth_rate[0] > 0 and namespace["modes"].frequency.max() <= 4e4
+
+
+def test_your_body_tutorial_runs(tmp_path, monkeypatch):
+    import subprocess
+    import sys
+
+    monkeypatch.chdir(tmp_path)  # the tutorial reads the example's mesh, made as it says
+    subprocess.run([sys.executable, str(ROOT / "examples" / "block_on_belt" / "mesh.py"), "block.msh"], check=True)
+    namespace = {}
+    for block in _blocks("docs/tutorial-your-body.md"):
+        exec(block, namespace)
+    modes, run = namespace["modes"], namespace["run"]
+    assert modes.growth_rate[0] > 0 and modes.frequency.max() <= 4e4
+    assert run.to_xarray().fraction.sel(kind="stick").values[0] == 1.0  # it starts sticking on the belt
 
 
 def test_readme_command_lines_use_only_options_their_commands_have():

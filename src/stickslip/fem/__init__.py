@@ -1,9 +1,11 @@
-"""Frictional contact dynamics on any 2-D geometry (issue 11, in progress).
+"""Frictional contact dynamics on any 2-D geometry (`docs/tutorial-your-body.md`).
 
 * `body`: a 2-D elastic body from a mesh file or a `meshio.Mesh` (`read_body`,
   `body_from_meshio`), with named boundary groups, checked on the way in;
 * `assembly`: its stiffness, lumped mass and Rayleigh damping in SI units (`Material`,
   `assemble`), plane strain or plane stress;
+* `boundary`: springs to the ground and uniform pressure or traction loads on boundary
+  groups (`Spring`, `Load`), added by `assemble`;
 * `surfaces`: rigid counter-surfaces with prescribed motion (`RigidCylinder`: a shaft, a
   disc rim or a drum; `RigidFlat`: a belt) and the contact frames of a boundary group;
 * `static`: the static preload and steady sliding (``q = f p``) with the contact active set
@@ -13,15 +15,17 @@
 * `cea`: complex eigenvalue analysis of steady sliding over a frequency band, shift-invert
   Arnoldi (`complex_eigenvalues`);
 * `run`: explicit dynamics with the shared run books, checkpoints and classification
-  (`integrate_body`, `classify_body`);
+  (`integrate_body`, `classify_body`), from perturbed steady sliding or the preload
+  (`perturbed_steady_body`, `preload_body`);
 * `paraview`: XDMF time series of a run's volume snapshots and of the CEA mode shapes;
 * `config`: the TOML config of `stickslip fem steady | cea | run`.
 """
 
 from .assembly import BodySystem, Material, assemble
 from .body import CELL_KINDS, Body, body_from_meshio, read_body
+from .boundary import Load, Spring
 from .cea import CeaModes, complex_eigenvalues
-from .run import BodyInitial, BodyRun, classify_body, integrate_body, perturbed_steady_body
+from .run import BodyInitial, BodyRun, classify_body, integrate_body, perturbed_steady_body, preload_body
 from .scheme import BodyScheme, ContactProblem
 from .static import SteadyContact, steady_contact
 from .surfaces import ContactFrames, RigidCylinder, RigidFlat, contact_frames
@@ -29,4 +33,4 @@ from .surfaces import ContactFrames, RigidCylinder, RigidFlat, contact_frames
 __all__ = ["Body", "read_body", "body_from_meshio", "CELL_KINDS", "Material", "BodySystem", "assemble",
            "RigidCylinder", "RigidFlat", "ContactFrames", "contact_frames", "SteadyContact", "steady_contact",
            "ContactProblem", "BodyScheme", "CeaModes", "complex_eigenvalues", "BodyInitial", "BodyRun",
-           "integrate_body", "classify_body", "perturbed_steady_body"]
+           "integrate_body", "classify_body", "perturbed_steady_body", "preload_body", "Spring", "Load"]
