@@ -66,6 +66,9 @@ def test_helpers():
     mask = np.array([1, 1, 0, 0, 1, 0, 1, 1, 1, 0, 0, 1], bool)  # runs: [11, 0, 1], [4], [6, 7, 8]
     assert count_zones(mask) == 3 and count_zones(mask, min_run=2) == 2 and count_zones(mask, min_run=4) == 0
     assert count_zones(np.ones(5, bool)) == 1 and count_zones(np.zeros(5, bool)) == 0
+    # an open line does not wrap: [0, 1] and [11] are two runs, of 2 and 1 nodes
+    assert count_zones(mask, periodic=False) == 4 and count_zones(mask, min_run=2, periodic=False) == 2
+    assert count_zones(np.ones(3, bool), min_run=4, periodic=False) == 0
     theta = 2 * np.pi * np.arange(64) / 64
     x = np.exp(np.cos(theta))
     assert pattern_shift(x, np.exp(np.cos(theta - 0.3))) == pytest.approx(0.3, abs=5e-3)

@@ -1,7 +1,6 @@
 """Automatic classification of the limit regime of a contact run (paper [14], [17]-[20]).
 
-Works on any run of the books of `stickslip.contact.runs` whose contact nodes lie on a
-closed line (the ring, the FE annulus). Per node and step the scheme knows its state: stick [17], positive slip [18], reverse
+Works on any run of the books of `stickslip.contact.runs`. Per node and step the scheme knows its state: stick [17], positive slip [18], reverse
 slip [19] or separation [20]. Over the densely sampled tail of a run, `classify` gives
 
 * the zone fractions (time averages) and the regime name, the present zones joined in the
@@ -19,6 +18,11 @@ slip [19] or separation [20]. Over the densely sampled tail of a run, `classify`
   deviation from the mean) over all pairs of tail snapshots, the shift done by linear
   interpolation, and the state mismatch the largest fraction of nodes whose state differs
   from the shifted earlier state (shift rounded to a node).
+
+On an open contact line (a pad, a block: `ExplicitScheme.closed_line` false) nothing travels
+around the line: ``c = 0``, zones are counted without wrapping around its ends, and the
+stationarity test compares the snapshots unshifted (a steady state, not a wave); ``line``
+says which analysis was done.
 """
 
 from __future__ import annotations
@@ -81,6 +85,7 @@ class RegimeResult(Result):
     snapshots: int
     params: dict
     relative_speeds: dict = field(default_factory=dict)
+    line: str = "closed"
 
     def __getattr__(self, name):
         speeds = self.__dict__.get("relative_speeds", {})
@@ -91,7 +96,7 @@ class RegimeResult(Result):
     def to_dict(self) -> dict:
         out = {k: getattr(self, k) for k in ("regime", "n", "n_fft", "c")}
         out.update({f"c_over_{k}": v for k, v in self.relative_speeds.items()})
-        out.update({k: getattr(self, k) for k in ("stationary", "residual", "state_mismatch", "snapshots")})
+        out.update({k: getattr(self, k) for k in ("stationary", "residual", "state_mismatch", "snapshots", "line")})
         out.update({"fractions": dict(self.fractions), "window": list(self.window), "params": dict(self.params)})
         return {k: (float(v) if isinstance(v, np.floating) else v) for k, v in out.items()}
 
@@ -145,16 +150,17 @@ def classify(run, transits: float | None = None, min_fraction: float = 0.01, min
     state, U, V, ts = (run.snapshots[k][sel] for k in ("state", "U", "V", "snap_t"))
     power = np.mean(np.abs(run.series["modes_V"][ser]) ** 2, axis=0)
     n_fft = int(np.argmax(power[1:]) + 1)
-    c = pattern_speed(V, ts, n_fft)
+    closed = bool(s.closed_line)
+    c = pattern_speed(V, ts, n_fft) if closed else 0.0
     n = 0
     for mask, kind in ((state == STICK, "stick"), (state != SEPARATION, "slip")):
         if fr[kind] >= min_fraction and n == 0:
-            n = count_zones(_wave_frame(mask, c * (ts - ts[0]), s.dtheta), min_run)
+            n = count_zones(_wave_frame(mask, c * (ts - ts[0]), s.dtheta), min_run, periodic=closed)
     n = n_fft if n == 0 else n
     residual, mismatch = _stationarity(s.theta, U, V, state, ts, c)
     return RegimeResult(regime, fr, n, n_fft, c, bool(residual < tol and mismatch < tol), residual, mismatch,
                         (float(ts[0]), float(ts[-1])), int(sel.size), s.params.to_dict(),
-                        {k: c / v for k, v in s.speed_scales.items()})
+                        {k: c / v for k, v in s.speed_scales.items()}, "closed" if closed else "open")
 
 
 def pattern_speed(X: np.ndarray, ts: np.ndarray, n: int) -> float:

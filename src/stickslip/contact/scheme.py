@@ -157,6 +157,12 @@ class ExplicitScheme(ABC):
         """Steady sliding: ``u_e`` and the reactions per unit mass ``(r_n, r_t)`` per contact node."""
 
     @property
+    def closed_line(self) -> bool:
+        """Whether the contact line closes on itself (a ring, a bore): the classification then
+        looks for travelling waves around it; on an open line (a pad, a block) it does not."""
+        return True
+
+    @property
     def static_friction(self) -> float:
         """Static coefficient ``f_s >= f`` (a node sticks while its holding reaction is within
         ``f_s r_n``); by default ``params.friction``: plain Coulomb."""

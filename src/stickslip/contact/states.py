@@ -47,14 +47,15 @@ def regime_code(name: str) -> int:
     return REGIME_CODES.get(name, REGIME_CODES["other"])
 
 
-def count_zones(mask: np.ndarray, min_run: int = 1) -> int:
-    """Number of runs of ``True`` of length >= ``min_run`` in a periodic 1-D mask (a closed contact line)."""
+def count_zones(mask: np.ndarray, min_run: int = 1, periodic: bool = True) -> int:
+    """Number of runs of ``True`` of length >= ``min_run`` in a 1-D mask along a closed contact
+    line (``periodic``: a run may wrap around its end) or an open one."""
     mask = np.asarray(mask, dtype=bool)
     if mask.all():
-        return 1
+        return 1 if periodic or mask.size >= min_run else 0
     if not mask.any():
         return 0
-    start = int(np.argmin(mask))  # rotate so that the line starts outside a run
+    start = int(np.argmin(mask)) if periodic else 0  # rotate so that the line starts outside a run
     m = np.concatenate([[False], np.roll(mask, -start), [False]]).astype(np.int8)
     d = np.diff(m)
     lengths = np.flatnonzero(d == -1) - np.flatnonzero(d == 1)

@@ -12,7 +12,8 @@ start of a run from steady sliding (`stickslip.fem.static.steady_contact`).
 
 Units are SI: time in s, displacements in m, reactions per unit mass in m/s^2. The
 contact line's nodes are placed at ``theta = 2 pi s / L`` (``s`` the arclength, ``L`` the
-line's length) for the shared classification, which treats the line as closed.
+line's length) for the shared classification; an open line (``frames.closed`` false) is
+classified without travelling waves around it (`stickslip.contact.classify`).
 """
 
 from __future__ import annotations
@@ -167,6 +168,10 @@ class BodyScheme(ExplicitScheme):
     @property
     def static_friction(self) -> float:
         return float(self.params.static_friction)
+
+    @property
+    def closed_line(self) -> bool:
+        return bool(self.params.frames.closed)
 
     @cached_property
     def load(self) -> np.ndarray | None:
