@@ -11,6 +11,7 @@ import scipy.sparse.linalg as sla
 from stickslip.brake.fem.exact import annulus_frequencies
 from stickslip.errors import ParameterError
 from stickslip.fem import Material, assemble, body_from_meshio, read_body
+from stickslip.fem.assembly import cell_stress
 
 from .meshes import annulus, rectangle
 
@@ -87,3 +88,37 @@ def test_a_bad_material_names_its_parameter(options, name):
     with pytest.raises(ParameterError) as err:
         Material(**{"young": E, "poisson": NU, "density": RHO, **options})
     assert err.value.name == name
+
+
+def _hooke(eps, plane):
+    exx, eyy, gxy = eps
+    if plane == "stress":
+        c = E / (1 - NU**2)
+        return np.array([c * (exx + NU * eyy), c * (eyy + NU * exx), E / (2 * (1 + NU)) * gxy])
+    lam, mu = E * NU / ((1 + NU) * (1 - 2 * NU)), E / (2 * (1 + NU))
+    return np.array([lam * (exx + eyy) + 2 * mu * exx, lam * (exx + eyy) + 2 * mu * eyy, mu * gxy])
+
+
+@pytest.mark.parametrize("plane", ["strain", "stress"])
+def test_cell_stress_of_a_uniform_strain_is_hookes(rect, plane):
+    s = assemble(rect, Material(E, NU, RHO, plane=plane))
+    x, y = rect.points.T
+    eps = (1e-4, -3e-5, 2e-5)
+    u = np.ravel(np.column_stack([eps[0] * x + 0.5 * eps[2] * y + 1e-3, 0.5 * eps[2] * x + eps[1] * y - 2e-3]))
+    sigma = cell_stress(s, np.stack([u, 2 * u]))
+    assert sigma.shape == (2, len(rect.cells), 3)
+    assert np.allclose(sigma[0], _hooke(eps, plane), rtol=1e-10, atol=1e-10 * E * 1e-4)
+    assert np.allclose(sigma[1], 2 * sigma[0], rtol=1e-12)
+
+
+def test_cell_stress_stores_the_energy_of_the_stiffness_on_triangles(tmp_path):
+    """Linear triangles strain uniformly in each cell: sum of area * sigma : eps / 2 is u K u / 2."""
+    body = read_body(rectangle(tmp_path / "t.msh") and tmp_path / "t.msh")
+    s = assemble(body, Material(E, NU, RHO))
+    u = np.random.default_rng(1).standard_normal(s.n_dofs) * 1e-6
+    sigma = cell_stress(s, u)
+    # the cell strains from the stresses (plane strain compliance), then the energy
+    lam, mu = s.material.lame
+    exx_eyy = np.linalg.solve([[lam + 2 * mu, lam], [lam, lam + 2 * mu]], sigma[:, :2].T)
+    energy = 0.5 * np.sum(body.areas * (sigma[:, 0] * exx_eyy[0] + sigma[:, 1] * exx_eyy[1] + sigma[:, 2]**2 / mu))
+    assert energy == pytest.approx(0.5 * u @ (s.K @ u), rel=1e-10)

@@ -8,6 +8,7 @@ import pytest
 
 from stickslip.brake.fem import FemScheme
 from stickslip.errors import ParameterError
+from stickslip.fem.assembly import cell_stress
 from stickslip.fem.cea import complex_eigenvalues, linearised
 from stickslip.fem.paraview import write_modes_xdmf, write_run_xdmf
 from stickslip.fem.run import integrate_body
@@ -28,8 +29,12 @@ def test_run_snapshots_read_back_with_the_steady_contact(annulus, tmp_path):
         points, cells = reader.read_points_cells()
         assert points.shape == (len(body.points), 3) and cells[0].data.shape == body.cells.shape
         assert reader.num_steps == len(run.snapshots["vol_t"]) >= 3
-        t, data, _ = reader.read_data(0)
+        t, data, cell_data = reader.read_data(0)
     u = data["displacement"][:, :2]
+    sigma = cell_stress(annulus.system, u.ravel())  # the cell stresses are those of the displacement written
+    for k, name in enumerate(("stress_xx", "stress_yy", "stress_xy")):
+        assert np.allclose(cell_data[name][0], sigma[:, k], rtol=1e-12, atol=1e-12 * np.abs(sigma).max())
+    assert np.all(cell_data["von_mises"][0] >= np.abs(sigma[:, 2]) * np.sqrt(3) * (1 - 1e-12))
     bore = frames.nodes
     assert np.allclose(np.sum(u[bore] * frames.normal, axis=1), -frames.gap, rtol=2e-3)  # the interference
     assert np.all(u[body.nodes("rim")] == 0)

@@ -86,7 +86,7 @@ def run(config: Config,
         out: RunOut = None,
         xdmf: Annotated[Optional[Path], typer.Option(help=(
             "Write volume snapshots for ParaView to this XDMF file (.xdmf, data in the .h5 beside it): "
-            "displacement [m], velocity [m/s], contact forces [N/m] and states; times [s]."))] = None,
+            "displacement [m], velocity [m/s], contact forces [N/m] and states, cell stresses [Pa]; times [s]."))] = None,
         xdmf_every: XdmfEvery = None,
         overwrite: Overwrite = False, json: Json = False):
     """Explicit dynamics from perturbed steady sliding (or the preload, --start), then the limit

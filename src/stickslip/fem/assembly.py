@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import scipy.sparse as sp
@@ -24,7 +25,7 @@ from ..errors import ParameterError
 from .body import Body
 from .boundary import Load, Spring, boundary_load, boundary_springs
 
-__all__ = ["Material", "BodySystem", "assemble"]
+__all__ = ["Material", "BodySystem", "assemble", "cell_stress"]
 
 PLANES = ("strain", "stress")
 
@@ -95,10 +96,49 @@ class BodySystem:
         m = self.material
         return (sp.diags(m.alpha * self.mass) + m.beta * self.K).tocsr()
 
+    @cached_property
+    def basis(self) -> tuple:
+        """``(basis, order)``: the scikit-fem vector basis of the body and, for each dof ``2 i + c``,
+        its index in scikit-fem's numbering."""
+        basis = _basis(self.body)
+        order = np.empty(self.n_dofs, dtype=np.int64)
+        order[0::2], order[1::2] = basis.nodal_dofs[0], basis.nodal_dofs[1]
+        return basis, order
+
     def dofs(self, nodes) -> np.ndarray:
         """The x and y dofs of ``nodes``, interleaved."""
         nodes = np.asarray(nodes, dtype=np.int64)
         return np.stack([2 * nodes, 2 * nodes + 1], axis=1).ravel()
+
+
+def _basis(body: Body) -> Basis:
+    mesh_type, element = (MeshTri, ElementTriP1) if body.kind == "triangle" else (MeshQuad, ElementQuad1)
+    mesh = mesh_type(np.ascontiguousarray(body.points.T), np.ascontiguousarray(body.cells.T))
+    return Basis(mesh, ElementVector(element()))
+
+
+def cell_stress(system: BodySystem, u) -> np.ndarray:
+    """The in-plane stress ``(sigma_xx, sigma_yy, sigma_xy)`` [Pa] of the Cartesian displacement
+    ``u`` (``(2 n,)`` or ``(k, 2 n)``, in m) in every cell, its mean over the cell: shape
+    ``(n_cells, 3)`` or ``(k, n_cells, 3)``. Plane strain or plane stress as the material says
+    (in plane strain ``sigma_zz = nu (sigma_xx + sigma_yy)``)."""
+    if not isinstance(system, BodySystem):
+        raise ParameterError("system", system, "a BodySystem (see assemble)")
+    u = np.asarray(u, dtype=float)
+    if u.shape[-1] != system.n_dofs or u.ndim > 2:
+        raise ParameterError("u", f"an array of shape {u.shape}", f"(2 n,) or (k, 2 n) with 2 n = {system.n_dofs}")
+    basis, order = system.basis
+    lam, mu = system.material.lame
+    weights = basis.dx / basis.dx.sum(axis=1, keepdims=True)
+    out = []
+    for one in np.atleast_2d(u):
+        x = np.empty(system.n_dofs)
+        x[order] = one
+        g = np.sum(basis.interpolate(x).grad * weights, axis=-1)  # g[i, j] = d u_i / d x_j, cell means
+        trace = g[0, 0] + g[1, 1]
+        out.append(np.column_stack([lam * trace + 2 * mu * g[0, 0], lam * trace + 2 * mu * g[1, 1],
+                                    mu * (g[0, 1] + g[1, 0])]))
+    return np.array(out) if u.ndim == 2 else out[0]
 
 
 def assemble(body: Body, material: Material, springs=(), loads=()) -> BodySystem:
@@ -112,9 +152,7 @@ def assemble(body: Body, material: Material, springs=(), loads=()) -> BodySystem
     for name, items, kind in (("springs", springs, Spring), ("loads", loads, Load)):
         if not all(isinstance(x, kind) for x in items):
             raise ParameterError(name, items, f"a sequence of {kind.__name__}")
-    mesh_type, element = (MeshTri, ElementTriP1) if body.kind == "triangle" else (MeshQuad, ElementQuad1)
-    mesh = mesh_type(np.ascontiguousarray(body.points.T), np.ascontiguousarray(body.cells.T))
-    basis = Basis(mesh, ElementVector(element()))
+    basis = _basis(body)
     K = asm(linear_elasticity(*material.lame), basis)
     lumped = material.density * np.asarray(asm(_mass, basis).sum(axis=1)).ravel()
     # scikit-fem numbers the dofs by component blocks or interleaved depending on the element:

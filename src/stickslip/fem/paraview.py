@@ -7,7 +7,9 @@ Both write the body's mesh (points at ``z = 0``, in m) with `stickslip.files.wri
   per snapshot (time [s]) the point data ``displacement`` [m] (total, from the unstressed
   body), ``velocity`` [m/s], and on the contact nodes ``contact_pressure`` and
   ``contact_shear`` [N per unit thickness per node] and ``contact_state`` (0 stick, 1 slip,
-  2 reverse slip, 3 separation; -1 off the contact line).
+  2 reverse slip, 3 separation; -1 off the contact line); the cell data ``stress_xx``,
+  ``stress_yy``, ``stress_xy`` and ``von_mises`` [Pa] (cell means, `stickslip.fem.assembly.cell_stress`;
+  in plane strain with ``sigma_zz = nu (sigma_xx + sigma_yy)``).
 * `write_modes_xdmf(problem, modes, path)`: the shapes of the CEA modes
   (`complex_eigenvalues(..., mode_shapes=True)`), one step per mode (the step's "time" is the
   mode's index in ``modes``, most unstable first): ``mode_real``, ``mode_imag`` (the complex
@@ -24,6 +26,7 @@ import numpy as np
 
 from ..errors import ParameterError
 from ..files import write_xdmf_series
+from .assembly import cell_stress
 from .cea import CeaModes, linearised
 from .run import BodyRun
 from .scheme import BodyScheme, ContactProblem
@@ -59,14 +62,21 @@ def write_run_xdmf(run: BodyRun, path) -> Path:
         out[nodes] = values
         return out
 
+    system = scheme.params.system
+    nu = system.material.poisson if system.material.plane == "strain" else 0.0
+
     def step(k):
         state = np.full(n, -1, dtype=np.int32)
         state[nodes] = snaps["vol_state"][k]
-        point_data = {"displacement": _vectors(scheme.cartesian(snaps["vol_u"][k])),
-                      "velocity": _vectors(scheme.cartesian(snaps["vol_v"][k])),
+        u = scheme.cartesian(snaps["vol_u"][k])
+        point_data = {"displacement": _vectors(u), "velocity": _vectors(scheme.cartesian(snaps["vol_v"][k])),
                       "contact_pressure": on_line(snaps["vol_P"][k]), "contact_shear": on_line(snaps["vol_Q"][k]),
                       "contact_state": state}
-        return float(snaps["vol_t"][k]), point_data, {}
+        sxx, syy, sxy = cell_stress(system, u).T
+        szz = nu * (sxx + syy)
+        mises = np.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) + 3 * sxy**2)
+        cell_data = {"stress_xx": [sxx], "stress_yy": [syy], "stress_xy": [sxy], "von_mises": [mises]}
+        return float(snaps["vol_t"][k]), point_data, cell_data
 
     return write_xdmf_series(path, *_mesh(body), (step(k) for k in range(len(snaps["vol_t"]))))
 
