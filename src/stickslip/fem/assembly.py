@@ -28,6 +28,9 @@ from .boundary import Load, Spring, boundary_load, boundary_springs
 __all__ = ["Material", "BodySystem", "assemble", "cell_stress"]
 
 PLANES = ("strain", "stress")
+#: Largest Young's modulus [Pa] and density [kg/m^3] accepted: a thousand times diamond's and
+#: osmium's; beyond, springs and loads vanish against the stiffness in double precision.
+MAX_MODULUS, MAX_DENSITY = 1e15, 1e7
 
 
 @dataclass(frozen=True)
@@ -44,9 +47,9 @@ class Material:
     beta: float = 0.0
 
     def __post_init__(self):
-        object.__setattr__(self, "young", check.positive("young", self.young))
+        object.__setattr__(self, "young", check.in_range("young", self.young, 0.0, MAX_MODULUS, lo_open=True))
         object.__setattr__(self, "poisson", check.poisson_ratio("poisson", self.poisson))
-        object.__setattr__(self, "density", check.positive("density", self.density))
+        object.__setattr__(self, "density", check.in_range("density", self.density, 0.0, MAX_DENSITY, lo_open=True))
         object.__setattr__(self, "alpha", check.nonnegative("alpha", self.alpha))
         object.__setattr__(self, "beta", check.nonnegative("beta", self.beta))
         if self.plane not in PLANES:

@@ -45,7 +45,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import ParameterError
-from .assembly import PLANES, Material, assemble
+from .assembly import MAX_DENSITY, MAX_MODULUS, PLANES, Material, assemble
 from .body import read_body
 from .boundary import LIMIT, Load, Spring
 from .scheme import ContactProblem
@@ -97,7 +97,7 @@ def _number(problems, where, value, lo=None, hi=None, positive=False):
     if ok and hi is not None and value >= hi:
         ok = False
     if not ok:
-        rng = "> 0" if positive else f"in [{lo}, {hi})" if hi is not None else f">= {lo}" if lo is not None else "finite"
+        rng = f"in (0, {hi:g})" if positive and hi is not None else "> 0" if positive else f"in [{lo}, {hi})" if hi is not None else f">= {lo}" if lo is not None else "finite"
         problems.append(f"{where} = {value!r} must be a number {rng}")
         return None
     return float(value)
@@ -141,9 +141,9 @@ def load_config(path) -> FemConfig:
         problems.append(f"clamped = {clamped!r} must be a list of boundary group names")
         clamped = []
     m = data.get("material", {}) if isinstance(data.get("material", {}), dict) else {}
-    young = _number(problems, "material.young", m.get("young"), positive=True)
+    young = _number(problems, "material.young", m.get("young"), positive=True, hi=MAX_MODULUS)
     poisson = _number(problems, "material.poisson", m.get("poisson"), 0.0, 0.5)
-    density = _number(problems, "material.density", m.get("density"), positive=True)
+    density = _number(problems, "material.density", m.get("density"), positive=True, hi=MAX_DENSITY)
     alpha = _number(problems, "material.alpha", m.get("alpha", 0.0), 0.0)
     beta = _number(problems, "material.beta", m.get("beta", 0.0), 0.0)
     plane = m.get("plane", "strain")
