@@ -11,6 +11,6 @@ def free_run(scheme, u0, nsteps, dt):
     k = StepState(np.array(u0, dtype=float), np.zeros(len(u0)), np.zeros(len(u0)))
     out = scheme.new_output()
     A, (normal, tangent), (gap0, speed) = scheme.sparse_operator, scheme.contact_dofs, scheme.surface
-    kernel.advance(scheme.stencil, A.indptr, A.indices, A.data, np.zeros(0), k.u, k.v, k.a, normal, tangent, gap0, speed, nsteps,
+    kernel.advance(scheme.stencil, A.indptr, A.indices, A.data, np.zeros(0), np.zeros(2), k.u, k.v, k.a, normal, tangent, gap0, speed, nsteps,
                    dt, scheme.beta2, 0.0, 0.0, False, out.lam_n, out.lam_t, out.state, out.u_prev)
     return k.u

@@ -164,9 +164,10 @@ def stencil_apply(C, u, out):
 
 
 @njit(cache=True)
-def advance(C, indptr, indices, data, load, u, v, a, normal, tangent, gap0, speed, nsteps, dt, beta2, f, fs, contact,
-            lam_n, lam_t, state, work):
-    """``nsteps`` steps of the scheme in place, ``A_m = -(M^{-1} K) u_m + load`` (``load`` empty: none).
+def advance(C, indptr, indices, data, load, damping, u, v, a, normal, tangent, gap0, speed, nsteps, dt, beta2, f, fs,
+            contact, lam_n, lam_t, state, work):
+    """``nsteps`` steps of the scheme in place, ``A_m = -(M^{-1} K) u_m + load`` (``load`` empty: none),
+    with Rayleigh ``damping = (alpha, beta)`` on ``v_{m-1}`` if not both zero.
 
     ``M^{-1} K`` is the stencil ``C`` (`stencil_apply`) if ``C`` is not empty, else the CSR
     matrix ``(indptr, indices, data)`` (`csr_apply`). ``work`` receives ``u_m`` of the last
@@ -176,11 +177,20 @@ def advance(C, indptr, indices, data, load, u, v, a, normal, tangent, gap0, spee
     ut_old = np.empty(normal.shape[0])
     stencil = C.shape[0] > 0
     loaded = load.shape[0] > 0
+    alpha, beta = damping[0], damping[1]
+    damped = alpha != 0.0 or beta != 0.0
+    w = np.empty(u.shape[0]) if damped else u
     for step in range(nsteps):
+        if damped:
+            for k in range(u.shape[0]):
+                w[k] = u[k] + beta * v[k]
         if stencil:
-            stencil_apply(C, u, A)
+            stencil_apply(C, w, A)
         else:
-            csr_apply(indptr, indices, data, u, A)
+            csr_apply(indptr, indices, data, w, A)
+        if damped:
+            for k in range(u.shape[0]):
+                A[k] -= alpha * v[k]
         if loaded:
             A += load
         if step == nsteps - 1:

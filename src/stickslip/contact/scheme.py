@@ -40,10 +40,11 @@ from .kernel import advance, csr_apply, stencil_apply
 __all__ = ["ExplicitScheme", "StepState", "StepOutput", "amplification_matrix", "discrete_rates", "stencil_matrix"]
 
 
-def amplification_matrix(w2, beta2) -> np.ndarray:
-    """One step of the scheme for ``x'' = -lambda x``, ``w2 = lambda dt^2`` (complex allowed):
+def amplification_matrix(w2, beta2, cdt=0.0) -> np.ndarray:
+    """One step of the scheme for ``x'' = -lambda x - c x'``, ``w2 = lambda dt^2`` (complex
+    allowed), ``cdt = c dt`` (the damping acts on ``v_{m-1}``, as in the kernel):
     ``(u_m, v_{m-1} dt, a_{m-1} dt^2) -> (u_{m+1}, v_m dt, a_m dt^2)``."""
-    am = np.array([-w2, 0.0, 0.0], dtype=complex)
+    am = np.array([-w2, -cdt, 0.0], dtype=complex)
     vm = np.array([0.0, 1.0, 1.0 - beta2]) + beta2 * am
     um = np.array([1.0, 0.0, 0.0]) + vm + 0.5 * am
     return np.array([um, vm, am])
@@ -169,6 +170,11 @@ class ExplicitScheme(ABC):
         return float(self.params.friction)
 
     @property
+    def damping(self) -> tuple[float, float]:
+        """Rayleigh damping ``(alpha, beta)``, ``C = alpha M + beta K`` (default none)."""
+        return (0.0, 0.0)
+
+    @property
     def load(self) -> np.ndarray | None:
         """A constant external load per unit mass on every dof (added to ``-M^{-1} K u``), or None."""
         return None
@@ -205,10 +211,25 @@ class ExplicitScheme(ABC):
         return type(A)((A.data.astype(float), A.indices.astype(np.int64), A.indptr.astype(np.int64)),
                        shape=A.shape)
 
-    @property
+    @cached_property
     def dt_max(self) -> float:
-        """CFL limit ``sqrt(2/beta2) / omega_max`` of the free discrete problem."""
-        return float(np.sqrt(2.0 / self.beta2) / self.omega_max)
+        """CFL limit ``sqrt(2/beta2) / omega_max`` of the free discrete problem; with damping,
+        the largest step at which the highest mode (damped by ``alpha + beta omega_max^2``)
+        does not grow (bisection on the spectral radius of `amplification_matrix`)."""
+        undamped = float(np.sqrt(2.0 / self.beta2) / self.omega_max)
+        alpha, beta = self.damping
+        if alpha == 0.0 and beta == 0.0:
+            return undamped
+        w, c = self.omega_max, alpha + beta * self.omega_max**2
+
+        def stable(dt):
+            return np.abs(np.linalg.eigvals(amplification_matrix((w * dt) ** 2, self.beta2, c * dt))).max() <= 1 + 1e-12
+
+        lo, hi = 0.0, undamped
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if stable(mid) else (lo, mid)
+        return lo
 
     @property
     def dt(self) -> float:
@@ -266,7 +287,8 @@ class ExplicitScheme(ABC):
         if u0.shape != v0.shape or u0.shape != self.sparse_operator.shape[:1]:
             raise ParameterError("initial", f"arrays of shape {u0.shape}, {v0.shape}",
                                  f"two arrays of shape {self.sparse_operator.shape[:1]}")
-        a = self.apply(u0)
+        alpha, beta = self.damping
+        a = self.apply(u0 + beta * v0) - alpha * v0
         if self.load is not None:
             a += self.load
         if contact:
@@ -294,7 +316,7 @@ class ExplicitScheme(ABC):
         A = self.sparse_operator
         C = self.stencil if self.stencil is not None and not sparse else _NO_STENCIL
         load = _NO_LOAD if self.load is None else np.ascontiguousarray(self.load, dtype=float)
-        advance(C, A.indptr, A.indices, A.data, load, state.u, state.v, state.a, normal, tangent, gap0, speed, nsteps,
+        advance(C, A.indptr, A.indices, A.data, load, np.array(self.damping, dtype=float), state.u, state.v, state.a, normal, tangent, gap0, speed, nsteps,
                 self.dt, self.beta2, self.params.friction, self.static_friction, bool(contact), out.lam_n, out.lam_t,
                 out.state, out.u_prev)
         return out

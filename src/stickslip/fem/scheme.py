@@ -128,7 +128,7 @@ class BodyScheme(ExplicitScheme):
             step = check.positive("time_step", self.time_step)
             if step > self.dt_max:
                 raise ParameterError("time_step", step, f"<= the stable step {self.dt_max:.6g} s of this mesh "
-                                     f"(sqrt(2/beta2) / omega_max, omega_max = {self.omega_max:.6g} rad/s)")
+                                     f"(its highest mode: omega_max = {self.omega_max:.6g} rad/s, with its damping)")
 
     # --- dofs: the free ones, in nodal frames at the contact nodes --------------------
     @cached_property
@@ -172,6 +172,12 @@ class BodyScheme(ExplicitScheme):
     @property
     def closed_line(self) -> bool:
         return bool(self.params.frames.closed)
+
+    @property
+    def damping(self) -> tuple[float, float]:
+        """The material's Rayleigh damping ``(alpha [1/s], beta [s])``."""
+        m = self.params.system.material
+        return (float(m.alpha), float(m.beta))
 
     @cached_property
     def load(self) -> np.ndarray | None:
