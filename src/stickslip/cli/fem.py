@@ -69,7 +69,7 @@ def cea(config: Config, json: Json = False,
     if xdmf is not None:
         write_modes_xdmf(problem, result, xdmf)
     data = result.to_dict()
-    _emit({"modes": data["modes"], "unstable": data["unstable"], "complete_below": data["complete_below"],
+    _emit({"modes": data["modes"], "unstable": data["unstable"], "neutral": data["neutral"], "complete_below": data["complete_below"],
            "shifts": len(data["shifts"])}, json, "complex eigenvalue analysis")
 
 
