@@ -20,8 +20,10 @@ def _gmsh(name: str):
         gmsh.finalize()
 
 
-def rectangle(path, width: float = 0.04, height: float = 0.01, size: float = 0.004, quads: bool = False) -> meshio.Mesh:
-    """A ``width x height`` rectangle with boundary groups bottom, top, left, right."""
+def rectangle(path, width: float = 0.04, height: float = 0.01, size: float = 0.004, quads: bool = False,
+              order: int = 1) -> meshio.Mesh:
+    """A ``width x height`` rectangle with boundary groups bottom, top, left, right; ``order`` 2:
+    6-node triangles or 9-node quadrilaterals."""
     with _gmsh("rectangle") as gmsh:
         r = gmsh.model.occ.addRectangle(0, 0, 0, width, height)
         gmsh.model.occ.synchronize()
@@ -41,12 +43,14 @@ def rectangle(path, width: float = 0.04, height: float = 0.01, size: float = 0.0
             gmsh.model.mesh.setTransfiniteSurface(r)
             gmsh.model.mesh.setRecombine(2, r)
         gmsh.model.mesh.generate(2)
+        gmsh.model.mesh.setOrder(order)
         gmsh.write(str(path))
     return meshio.read(path)
 
 
-def annulus(path, inner: float = 1.0, outer: float = 1.5, size: float = 0.1) -> meshio.Mesh:
-    """An annulus ``inner < r < outer`` with boundary groups bore (r = inner) and rim (r = outer)."""
+def annulus(path, inner: float = 1.0, outer: float = 1.5, size: float = 0.1, order: int = 1) -> meshio.Mesh:
+    """An annulus ``inner < r < outer`` with boundary groups bore (r = inner) and rim (r = outer);
+    ``order`` 2: 6-node triangles with their middle nodes on the circles."""
     with _gmsh("annulus") as gmsh:
         a = gmsh.model.occ.addDisk(0, 0, 0, outer, outer)
         b = gmsh.model.occ.addDisk(0, 0, 0, inner, inner)
@@ -59,5 +63,6 @@ def annulus(path, inner: float = 1.0, outer: float = 1.5, size: float = 0.1) -> 
         gmsh.model.addPhysicalGroup(2, [ring[1]], name="body")
         gmsh.option.setNumber("Mesh.MeshSizeMax", size)
         gmsh.model.mesh.generate(2)
+        gmsh.model.mesh.setOrder(order)
         gmsh.write(str(path))
     return meshio.read(path)

@@ -52,7 +52,7 @@ def test_bad_meshes_are_refused_naming_the_problem(rect):
     _refused(meshio.Mesh(m.points, lines), "has none")
     _refused(meshio.Mesh(m.points, [meshio.CellBlock("triangle", tri), meshio.CellBlock("quad", [[0, 1, 2, 3]])]),
              "quad, triangle")
-    _refused(meshio.Mesh(m.points, [meshio.CellBlock("triangle6", np.zeros((1, 6), int))]), "triangle6")
+    _refused(meshio.Mesh(m.points, [meshio.CellBlock("quad8", np.zeros((1, 8), int))]), "quad8")  # serendipity: not taken
     inverted = tri.copy()
     inverted[3] = inverted[3, ::-1]
     _refused(meshio.Mesh(m.points, [meshio.CellBlock("triangle", inverted)]), "1 of 68 turn the other way")
@@ -81,3 +81,42 @@ def test_a_missing_or_unreadable_file_is_refused(tmp_path):
     bad.write_text("not a mesh")
     with pytest.raises(ParameterError, match="a mesh file meshio reads"):
         read_body(bad)
+
+
+@pytest.mark.parametrize("quads", [False, True], ids=["triangle6", "quad9"])
+def test_a_quadratic_mesh_is_read_turned_round_and_its_bad_middle_nodes_refused(quads, tmp_path):
+    from stickslip.fem import Material, assemble
+
+    path = tmp_path / "q.msh"
+    m = rectangle(path, quads=quads, order=2)
+    kind = "quad9" if quads else "triangle6"
+    body = read_body(path)
+    assert body.kind == kind and body.order == 2 and body.group("bottom").shape[1] == 3
+    assert np.sum(body.areas) == pytest.approx(0.04 * 0.01, rel=1e-12) and np.all(body.areas > 0)
+    mid = body.group("bottom")[:, 2]
+    ends = body.points[body.group("bottom")[:, :2]].mean(axis=1)
+    assert np.allclose(body.points[mid], ends)  # gmsh puts them in the middle of straight edges
+    seg = body.segments("bottom")
+    assert len(seg) == 2 * len(mid) and set(np.unique(seg)) == set(body.nodes("bottom"))
+    turn = [3, 2, 1, 0, 6, 5, 4, 7, 8] if quads else [2, 1, 0, 4, 3, 5]
+    cells = [meshio.CellBlock(c.type, c.data[:, turn] if c.type == kind else c.data) for c in m.cells]
+    turned = body_from_meshio(meshio.Mesh(m.points, cells, cell_sets=m.cell_sets))
+    assert np.all(turned.areas > 0)
+    s1, s2 = assemble(body, Material(1e9, 0.3, 1e3)), assemble(turned, Material(1e9, 0.3, 1e3))
+    assert np.allclose(s1.mass, s2.mass, rtol=1e-12) and abs(s1.K - s2.K).max() < 1e-9 * abs(s1.K).max()
+    # a middle node pushed across its cell turns the cell over inside: refused when assembled
+    points = m.points.copy()
+    c = [b for b in m.cells if b.type == kind][0].data[0]
+    k = 4 if quads else 3  # the middle node of the edge from corner 0 to corner 1
+    centre = points[c[:k]].mean(axis=0)
+    points[c[k]] = centre + 1.5 * (centre - points[c[k]])  # across the cell, beyond its far side
+    bad = body_from_meshio(meshio.Mesh(points, m.cells, cell_sets=m.cell_sets), "bad.msh")
+    with pytest.raises(ParameterError, match="turn over inside.*cell 0") as err:
+        assemble(bad, Material(1e9, 0.3, 1e3))
+    assert err.value.name == "mesh"
+    # boundary groups of 2-node lines on quadratic cells, or with another middle node
+    lines = [meshio.CellBlock("line" if b.type == "line3" else b.type, b.data[:, :2] if b.type == "line3" else b.data)
+             for b in m.cells]
+    _refused(meshio.Mesh(m.points, lines, cell_sets=m.cell_sets), "3-node lines (line3)")
+    wrong = [meshio.CellBlock(b.type, b.data[:, [0, 1, 0]] if b.type == "line3" else b.data) for b in m.cells]
+    _refused(meshio.Mesh(m.points, wrong, cell_sets=m.cell_sets), "with the middle nodes of its cells' edges")

@@ -15,14 +15,37 @@ from .meshes import rectangle
 W, H = 0.04, 0.01
 
 
-@pytest.fixture(scope="module")
-def block(tmp_path_factory):
-    """A triangle mesh graded along both axes: boundary edges of unequal lengths."""
-    b = body_from_meshio(rectangle(tmp_path_factory.mktemp("b") / "b.msh", W, H, 0.0023), "block")
+@pytest.fixture(scope="module", params=[1, 2], ids=["triangles", "triangle6"])
+def block(request, tmp_path_factory):
+    """A triangle mesh graded along both axes: boundary edges of unequal lengths (on 6-node
+    triangles the middle nodes then sit off the middle of their straight edges)."""
+    b = body_from_meshio(rectangle(tmp_path_factory.mktemp("b") / "b.msh", W, H, 0.0023, order=request.param), "block")
     x, y = b.points.T
     graded = np.stack([W * (x / W) ** 1.5, H * (y / H) ** 2], axis=1)  # monotone: the cells stay counter-clockwise
-    flipped = {name: e[:, ::-1] if name in ("top", "left") else e for name, e in b.groups.items()}  # any orientation
+    turn = [1, 0] + list(range(2, b.order + 1))  # the ends swapped, the middle node kept
+    flipped = {name: e[:, turn] if name in ("top", "left") else e for name, e in b.groups.items()}  # any orientation
     return Body(graded, b.cells, b.kind, flipped, "block")
+
+
+def _tributary(body, group):
+    """The nodal weights of a uniform load on a straight ``group``, by hand: on linear edges half
+    of each edge to each end; on quadratic ones the integrals of the shape functions of the
+    edge's parametrisation ``x(xi)``, ``|x'(xi)|`` linear in ``xi`` on a straight edge:
+    ``∫ N |x'| dxi`` with ``|x'| = (L/2)(1 + c xi)``, ``c = 2 (|b - m| - |m - a|) / L``
+    (ends ``a``, ``b``, middle ``m``)."""
+    share = np.zeros(len(body.points))
+    for e in body.group(group):
+        a, b = body.points[e[0]], body.points[e[1]]
+        L = np.hypot(*(b - a))
+        if len(e) == 2:
+            share[e] += L / 2
+            continue
+        m = body.points[e[2]]
+        c = 2 * (np.hypot(*(b - m)) - np.hypot(*(m - a))) / L
+        share[e[0]] += L / 2 * (1 / 3 - c / 3)  # ∫ xi (xi - 1) / 2 (1 + c xi) dxi
+        share[e[1]] += L / 2 * (1 / 3 + c / 3)  # ∫ xi (xi + 1) / 2 (1 + c xi) dxi
+        share[e[2]] += L / 2 * (4 / 3)          # ∫ (1 - xi^2) (1 + c xi) dxi
+    return share
 
 
 def test_a_spring_meets_a_linear_field_with_its_exact_integral(block):
@@ -62,12 +85,7 @@ def test_a_block_pressed_on_a_flat_is_compressed_uniformly(block):
     system = assemble(block, Material(E, nu, 1000.0), [Spring("left", (1e3, 0.0))], [Load("top", P)])
     frames = contact_frames(block, "bottom", RigidFlat((0.0, 0.0), (0.0, 1.0), (1.0, 0.0)))
     st = steady_contact(system, frames, 0.0)
-    xs = block.points[frames.nodes, 0]
-    order = np.argsort(xs)
-    share = np.zeros(len(xs))  # the tributary length of every bottom node
-    half = 0.5 * np.diff(xs[order])
-    share[order[:-1]] += half
-    share[order[1:]] += half
+    share = _tributary(block, "bottom")[frames.nodes]
     assert st.active.all() and st.pressure == pytest.approx(P * share, rel=1e-9)
     u = st.u.reshape(-1, 2)
     top = np.isclose(block.points[:, 1], H)

@@ -1,7 +1,9 @@
 """Stiffness, lumped mass and Rayleigh damping of a `Body` (scikit-fem), in SI units.
 
 `assemble(body, material, springs, loads)` returns a `BodySystem`: ``K`` (CSR, N/m per unit
-thickness, with the boundary springs), the row-sum lumped ``mass`` (kg per unit thickness),
+thickness, with the boundary springs), the lumped ``mass`` (kg per unit thickness: row sums
+on linear cells; on quadratic ones, where row sums give corners no mass, each cell's mass
+shared in proportion to the diagonal of its consistent mass matrix, Hinton-Rock-Zienkiewicz),
 the constant ``load`` (N per unit thickness, from `stickslip.fem.boundary`) and the Rayleigh
 coefficients, on the Cartesian dofs ``2 i`` (x) and ``2 i + 1`` (y) of node ``i``. Plane strain uses the Lamé
 parameters ``lambda = E nu / ((1 + nu)(1 - 2 nu))``, ``mu = E / (2 (1 + nu))``; plane stress
@@ -16,13 +18,14 @@ from functools import cached_property
 
 import numpy as np
 import scipy.sparse as sp
-from skfem import Basis, BilinearForm, ElementQuad1, ElementTriP1, ElementVector, MeshQuad, MeshTri, asm
+from skfem import (Basis, BilinearForm, ElementQuad1, ElementQuad2, ElementTriP1, ElementTriP2, ElementVector,
+                   MeshQuad, MeshQuad2, MeshTri, MeshTri2, asm)
 from skfem.helpers import dot
 from skfem.models.elasticity import lame_parameters, linear_elasticity
 
 from .. import validation as check
 from ..errors import ParameterError
-from .body import Body
+from .body import Body, edge_middles
 from .boundary import Load, Spring, boundary_load, boundary_springs
 
 __all__ = ["Material", "BodySystem", "assemble", "cell_stress"]
@@ -103,10 +106,8 @@ class BodySystem:
     def basis(self) -> tuple:
         """``(basis, order)``: the scikit-fem vector basis of the body and, for each dof ``2 i + c``,
         its index in scikit-fem's numbering."""
-        basis = _basis(self.body)
-        order = np.empty(self.n_dofs, dtype=np.int64)
-        order[0::2], order[1::2] = basis.nodal_dofs[0], basis.nodal_dofs[1]
-        return basis, order
+        basis, where = _basis(self.body)
+        return basis, _dof_order(basis, where)
 
     def dofs(self, nodes) -> np.ndarray:
         """The x and y dofs of ``nodes``, interleaved."""
@@ -114,10 +115,80 @@ class BodySystem:
         return np.stack([2 * nodes, 2 * nodes + 1], axis=1).ravel()
 
 
-def _basis(body: Body) -> Basis:
-    mesh_type, element = (MeshTri, ElementTriP1) if body.kind == "triangle" else (MeshQuad, ElementQuad1)
-    mesh = mesh_type(np.ascontiguousarray(body.points.T), np.ascontiguousarray(body.cells.T))
-    return Basis(mesh, ElementVector(element()))
+_ELEMENTS = {"triangle": (MeshTri, ElementTriP1), "quad": (MeshQuad, ElementQuad1),
+             "triangle6": (MeshTri2, ElementTriP2), "quad9": (MeshQuad2, ElementQuad2)}
+
+
+def _skfem_mesh(body: Body):
+    """``(mesh, where)``: the scikit-fem mesh of ``body`` (isoparametric on quadratic cells) and,
+    for each node, ``(kind, index)``: 0 for a vertex, 1 for an edge's middle, 2 for a centre,
+    with its index among scikit-fem's vertices, facets or elements."""
+    mesh_type = _ELEMENTS[body.kind][0]
+    if body.order == 1:
+        mesh = mesh_type(np.ascontiguousarray(body.points.T), np.ascontiguousarray(body.cells.T))
+        return mesh, (np.zeros(len(body.points), dtype=np.int64), np.arange(len(body.points)))
+    vertices, t = np.unique(body.corners, return_inverse=True)
+    t = t.reshape(body.corners.shape)
+    facets = (MeshTri if body.kind == "triangle6" else MeshQuad)(body.points[vertices].T, t.T).facets
+    middles = edge_middles(body.cells, body.kind)
+    mids = np.array([middles[(a, b) if a < b else (b, a)] for a, b in vertices[facets].T.tolist()], dtype=np.int64)
+    centres = body.cells[:, 8] if body.kind == "quad9" else np.zeros(0, dtype=np.int64)
+    doflocs = body.points[np.concatenate([vertices, mids, centres])].T
+    mesh = mesh_type(np.ascontiguousarray(doflocs), np.ascontiguousarray(t.T))
+    kind, index = np.full(len(body.points), -1), np.zeros(len(body.points), dtype=np.int64)
+    for k, nodes in enumerate((vertices, mids, centres)):
+        kind[nodes], index[nodes] = k, np.arange(len(nodes))
+    if np.any(kind < 0):
+        raise ParameterError("mesh", body.source, "cells whose every node is a corner, an edge's middle or a centre")
+    return mesh, (kind, index)
+
+
+def _basis(body: Body):
+    """``(basis, where)``: the scikit-fem vector basis and `_skfem_mesh`'s node map. A quadratic
+    cell whose mapping turns over somewhere inside (a misplaced middle node) is refused."""
+    mesh, where = _skfem_mesh(body)
+    try:
+        basis = Basis(mesh, ElementVector(_ELEMENTS[body.kind][1]()))
+    except Exception as err:  # noqa: BLE001 - scikit-fem raises a bare Exception on a zero Jacobian
+        if body.order == 1 or "Jacobian" not in str(err):
+            raise
+        raise ParameterError("mesh", body.source, "quadratic cells that do not turn over inside (one has a zero "
+                             "Jacobian: a middle node too far from its edge)") from None
+    if body.order == 1:
+        return basis, where
+    # the sign of the mapping's Jacobian at the quadrature points and the nodes of each cell
+    at = np.hstack([basis.X, basis.elem.doflocs[0::2].T])
+    bad = np.flatnonzero(np.any(basis.mapping.detDF(at) <= 0, axis=1))
+    if bad.size:
+        raise ParameterError("mesh", body.source, f"quadratic cells that do not turn over inside ({bad.size} do, "
+                             f"the first is cell {int(bad[0])}: a middle node too far from its edge)")
+    return basis, where
+
+
+def _dof_order(basis, where) -> np.ndarray:
+    """For each dof ``2 i + c``, its index in scikit-fem's numbering of ``basis``."""
+    kind, index = where
+    dofs = [basis.nodal_dofs, basis.facet_dofs, basis.interior_dofs]
+    order = np.empty(2 * len(kind), dtype=np.int64)
+    for k in range(3):
+        sel = np.flatnonzero(kind == k)
+        if sel.size:
+            order[2 * sel], order[2 * sel + 1] = dofs[k][0, index[sel]], dofs[k][1, index[sel]]
+    return order
+
+
+def _lumped_mass(basis, order: np.ndarray, density: float, quadratic: bool) -> np.ndarray:
+    """The lumped mass on the dofs ``2 i + c``: row sums, or on quadratic cells each cell's mass
+    shared by the diagonal of its consistent mass matrix."""
+    if not quadratic:
+        return density * np.asarray(asm(_mass, basis).sum(axis=1)).ravel()[order]
+    phi = np.array([np.asarray(b[0])[0] for b in basis.basis[0::2]])  # x-components: (local nodes, cells, points)
+    diag = np.sum(phi**2 * basis.dx, axis=-1)
+    share = diag / diag.sum(axis=0) * basis.dx.sum(axis=1)
+    out = np.zeros(basis.N)
+    np.add.at(out, basis.element_dofs[0::2], density * share)
+    np.add.at(out, basis.element_dofs[1::2], density * share)
+    return out[order]
 
 
 def cell_stress(system: BodySystem, u) -> np.ndarray:
@@ -155,15 +226,13 @@ def assemble(body: Body, material: Material, springs=(), loads=()) -> BodySystem
     for name, items, kind in (("springs", springs, Spring), ("loads", loads, Load)):
         if not all(isinstance(x, kind) for x in items):
             raise ParameterError(name, items, f"a sequence of {kind.__name__}")
-    basis = _basis(body)
+    basis, where = _basis(body)
     K = asm(linear_elasticity(*material.lame), basis)
-    lumped = material.density * np.asarray(asm(_mass, basis).sum(axis=1)).ravel()
-    # scikit-fem numbers the dofs by component blocks or interleaved depending on the element:
-    # reorder to 2 i + c, the convention of the contact machinery
-    order = np.empty(2 * len(body.points), dtype=np.int64)
-    order[0::2], order[1::2] = basis.nodal_dofs[0], basis.nodal_dofs[1]
+    # scikit-fem numbers the dofs its own way: reorder to 2 i + c, the contact machinery's
+    order = _dof_order(basis, where)
+    lumped = _lumped_mass(basis, order, material.density, body.order == 2)
     K = K[order][:, order].tocsr()
     if springs:
         K = (K + boundary_springs(body, springs)).tocsr()
     load = boundary_load(body, loads) if loads else None
-    return BodySystem(body, material, K, lumped[order], load, springs, loads)
+    return BodySystem(body, material, K, lumped, load, springs, loads)

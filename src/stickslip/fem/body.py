@@ -1,14 +1,17 @@
-"""A 2-D elastic body read from a mesh: nodes, linear cells and named boundary groups.
+"""A 2-D elastic body read from a mesh: nodes, cells and named boundary groups.
 
 `read_body(path)` reads any mesh meshio reads (gmsh ``.msh`` first); `body_from_meshio(mesh)`
-takes a `meshio.Mesh`. The body is one kind of linear cell (3-node triangles or 4-node
-quadrilaterals) in the plane; boundary groups are the named sets of edges (gmsh physical
-groups of dimension 1) on which contact, clamping or loads act.
+takes a `meshio.Mesh`. The body is one kind of cell in the plane: linear (3-node triangles,
+4-node quadrilaterals) or quadratic (6-node triangles, 9-node quadrilaterals, gmsh's
+``-order 2``; their edges may be curved). Boundary groups are the named sets of edges
+(gmsh physical groups of dimension 1) on which contact, clamping or loads act: 2-node lines
+on a linear mesh, 3-node lines on a quadratic one.
 
 Checked on the way in, each refused with a `ParameterError` naming the mesh and the
 problem: a mesh that is not planar, no cells or cells of another kind, mixed kinds,
 inverted elements (some cells turn the other way than the rest), degenerate elements
-(area below 1e-10 of the mean), and boundary groups whose edges are not on the boundary.
+(area below 1e-10 of the mean), and boundary groups whose edges are not on the boundary
+(on a quadratic mesh, also those whose middle node is not their cells').
 Unused points are dropped and the cells are oriented counter-clockwise.
 """
 
@@ -23,16 +26,23 @@ import numpy as np
 
 from ..errors import ParameterError
 
-__all__ = ["Body", "read_body", "body_from_meshio", "CELL_KINDS"]
+__all__ = ["Body", "read_body", "body_from_meshio", "edge_middles", "CELL_KINDS"]
 
-#: meshio cell types accepted for the body: linear triangles and quadrilaterals.
-CELL_KINDS = ("triangle", "quad")
+#: meshio cell types accepted for the body: linear and quadratic triangles and quadrilaterals.
+CELL_KINDS = ("triangle", "quad", "triangle6", "quad9")
+_CORNERS = {"triangle": 3, "quad": 4, "triangle6": 3, "quad9": 4}
+_SIZE = {"triangle": 3, "quad": 4, "triangle6": 6, "quad9": 9}
+#: the nodes of a cell turned round (clockwise <-> counter-clockwise), meshio's numbering: the
+#: corners, then the middle node of the edge from corner k to k + 1, then the centre
+_TURN = {"triangle": [2, 1, 0], "quad": [3, 2, 1, 0], "triangle6": [2, 1, 0, 4, 3, 5],
+         "quad9": [3, 2, 1, 0, 6, 5, 4, 7, 8]}
 
 
 @dataclass(frozen=True, eq=False)
 class Body:
-    """Nodes ``points`` (``(n, 2)``, the mesh's units), cells ``(m, 3 | 4)`` counter-clockwise,
-    ``kind`` (``triangle`` or ``quad``) and boundary ``groups``: name -> edges ``(e, 2)``."""
+    """Nodes ``points`` (``(n, 2)``, the mesh's units), cells ``(m, 3 | 4 | 6 | 9)``
+    counter-clockwise, ``kind`` (``triangle``, ``quad``, ``triangle6`` or ``quad9``) and boundary
+    ``groups``: name -> edges ``(e, 2)`` (ends) or, on a quadratic mesh, ``(e, 3)`` (ends, middle)."""
 
     points: np.ndarray
     cells: np.ndarray
@@ -41,9 +51,28 @@ class Body:
     source: str = "mesh"
 
     @property
+    def order(self) -> int:
+        """1 for linear cells, 2 for quadratic ones."""
+        return 2 if self.kind in ("triangle6", "quad9") else 1
+
+    @property
+    def corners(self) -> np.ndarray:
+        """The corner nodes of every cell ``(m, 3 | 4)``, counter-clockwise."""
+        return self.cells[:, :_CORNERS[self.kind]]
+
+    @property
     def areas(self) -> np.ndarray:
-        """Signed area of every cell (positive: counter-clockwise)."""
-        return _areas(self.points, self.cells)
+        """Signed area of every cell (positive: counter-clockwise); of the straight-sided cell
+        through its corners on a quadratic mesh."""
+        return _areas(self.points, self.corners)
+
+    def segments(self, name: str, option: str = "group") -> np.ndarray:
+        """The straight pieces ``(k, 2)`` of boundary group ``name``: its edges, each cut at its
+        middle node on a quadratic mesh (a chain through every node of the group)."""
+        edges = self.group(name, option)
+        if edges.shape[1] == 2:
+            return edges
+        return np.concatenate([edges[:, [0, 2]], edges[:, [2, 1]]])
 
     def group(self, name: str, option: str = "group") -> np.ndarray:
         """Edges of the boundary group ``name``; an unknown name is a `ParameterError` naming
@@ -73,6 +102,14 @@ def _boundary_edges(cells: np.ndarray) -> set:
     return {tuple(k) for k in keys[counts == 1]}
 
 
+def edge_middles(cells: np.ndarray, kind: str) -> dict:
+    """``{(a, b): m}``, ``a < b``: the middle node of every edge of quadratic ``cells``."""
+    k = _CORNERS[kind]
+    corners = cells[:, :k]
+    ends = np.sort(np.stack([corners, np.roll(corners, -1, axis=1)], axis=-1), axis=-1).reshape(-1, 2)
+    return dict(zip(map(tuple, ends.tolist()), cells[:, k:2 * k].ravel().tolist()))
+
+
 def body_from_meshio(mesh, source: str = "mesh") -> Body:
     """The `Body` of a `meshio.Mesh` (see the module docstring for what is checked)."""
     bad = lambda allowed: ParameterError("mesh", source, allowed)  # noqa: E731
@@ -87,15 +124,17 @@ def body_from_meshio(mesh, source: str = "mesh") -> Body:
     if not kinds:
         raise bad("a mesh with 2-D cells (triangles or quadrilaterals); it has none")
     if len(kinds) > 1 or not kinds <= set(CELL_KINDS):
-        raise bad(f"a mesh of one kind of linear cell, triangle or quad (it has {', '.join(sorted(kinds))})")
+        raise bad("a mesh of one kind of cell, triangle, quad, triangle6 or quad9 "
+                  f"(it has {', '.join(sorted(kinds))})")
     kind = kinds.pop()
+    quadratic = kind in ("triangle6", "quad9")
     cells = np.concatenate([d for t, d in blocks if t == kind]).astype(np.int64)
     used, cells = np.unique(cells, return_inverse=True)
-    cells = cells.reshape(-1, 3 if kind == "triangle" else 4)
+    cells = cells.reshape(-1, _SIZE[kind])
     points = points[used, :2]
-    areas = _areas(points, cells)
+    areas = _areas(points, cells[:, :_CORNERS[kind]])
     if np.all(areas < 0):
-        cells, areas = cells[:, ::-1], -areas  # a mesh oriented clockwise throughout: turned round
+        cells, areas = cells[:, _TURN[kind]], -areas  # a mesh oriented clockwise throughout: turned round
     tiny = np.abs(areas) <= 1e-10 * np.mean(np.abs(areas))
     if np.any(tiny):
         raise bad(f"a mesh without degenerate cells ({int(tiny.sum())} have no area, the first is cell "
@@ -106,23 +145,32 @@ def body_from_meshio(mesh, source: str = "mesh") -> Body:
                   f"the first is cell {int(np.argmax(flipped))})")
     renumber = np.full(int(used.max()) + 1, -1)
     renumber[used] = np.arange(used.size)
-    boundary = _boundary_edges(cells)
+    boundary = _boundary_edges(cells[:, :_CORNERS[kind]])
+    middles = edge_middles(cells, kind) if quadratic else {}
+    line = "line3" if quadratic else "line"
     groups = {}
     for name, per_block in getattr(mesh, "cell_sets", {}).items():
         if name.startswith("gmsh:"):
             continue
-        edges = [d[np.asarray(idx, dtype=np.int64)] for (t, d), idx in zip(blocks, per_block)
+        edges = [(t, d[np.asarray(idx, dtype=np.int64)]) for (t, d), idx in zip(blocks, per_block)
                  if t in ("line", "line3") and len(idx)]
         if not edges:
             continue  # a group of cells or points, not of edges
-        edges = np.concatenate(edges)[:, :2].astype(np.int64)
+        if quadratic and any(t != "line3" for t, _ in edges):
+            raise bad(f"boundary group {name!r} of 3-node lines (line3), as the quadratic cells have")
+        edges = np.concatenate([d for _, d in edges])[:, :3 if quadratic else 2].astype(np.int64)
         if np.any(edges >= renumber.size) or np.any(renumber[edges] < 0):
             raise bad(f"boundary group {name!r} on nodes of the body's cells")
         edges = renumber[edges]
-        inside = [e for e in map(tuple, np.sort(edges, axis=1)) if e not in boundary]
+        inside = [e for e in map(tuple, np.sort(edges[:, :2], axis=1)) if e not in boundary]
         if inside:
             raise bad(f"boundary group {name!r} on the boundary ({len(inside)} of its {len(edges)} edges are "
                       "inside the body)")
+        if quadratic:
+            wrong = [k for k, e in enumerate(edges.tolist()) if middles[tuple(sorted(e[:2]))] != e[2]]
+            if wrong:
+                raise bad(f"boundary group {name!r} with the middle nodes of its cells' edges ({len(wrong)} of "
+                          f"its {len(edges)} edges have another, the first is edge {wrong[0]})")
         groups[name] = edges
     return Body(points, cells, kind, groups, source)
 

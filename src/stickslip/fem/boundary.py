@@ -2,13 +2,16 @@
 
 * `Spring(group, stiffness)`: the nodes of a boundary group tied to the ground by springs
   along x and y. ``stiffness = (kx, ky)`` is the *total* stiffness of the group [N/m per
-  metre of thickness, i.e. Pa], shared between its nodes by their tributary length, so a
+  metre of thickness, i.e. Pa], shared between its nodes by their tributary length (the
+  integral of their shape function along the group: 1/6, 2/3, 1/6 of a straight quadratic
+  edge), so a
   rigid motion of the group meets exactly ``(kx, ky)``: the spring of the 1-DOF oscillator
   when the body is stiff.
 * `Load(group, pressure, traction)`: a uniform ``pressure`` [Pa] (positive pushes into the
   body, along the inward normal) and a uniform ``traction = (tx, ty)`` [Pa] on a boundary
-  group. The nodal forces are the consistent ones of linear edges (half of each edge's
-  force to each end), exact for uniform loads.
+  group. The nodal forces are the consistent ones of the edges (on a linear edge half of its
+  force to each end; on a quadratic one, curved or not, the integral of each node's shape
+  function along it, by Gauss quadrature), exact for uniform loads on straight edges.
 
 `boundary_springs` and `boundary_load` turn them into a sparse stiffness and a force vector
 on the dofs ``2 i + c`` of `stickslip.fem.assemble`, which adds them to the body's system.
@@ -82,10 +85,34 @@ class Load:
 def _oriented_edges(body: Body, group: str, option: str) -> np.ndarray:
     """The edges of ``group`` oriented as in their cell (counter-clockwise: the body on the left)."""
     edges = body.group(group, option)
-    cells = body.cells
+    cells = body.corners
     directed = {tuple(e) for e in np.stack([cells, np.roll(cells, -1, axis=1)], axis=-1).reshape(-1, 2).tolist()}
-    forward = np.array([tuple(e) in directed for e in edges.tolist()], dtype=bool)
-    return np.where(forward[:, None], edges, edges[:, ::-1])
+    forward = np.array([tuple(e) in directed for e in edges[:, :2].tolist()], dtype=bool)
+    turned = edges[:, [1, 0] + list(range(2, edges.shape[1]))]
+    return np.where(forward[:, None], edges, turned)
+
+
+#: 4-point Gauss rule on [-1, 1] for the quadratic edges
+_XI, _W = np.polynomial.legendre.leggauss(4)
+
+
+def _edge_integrals(body: Body, edges: np.ndarray):
+    """For each edge and each of its nodes: ``(length, inward)``, the integrals along the edge of
+    the node's shape function times 1 [m] and times the inward normal [m] (the body on the left
+    of the edge's direction)."""
+    p = body.points[edges]  # (e, 2 | 3, 2)
+    if edges.shape[1] == 2:
+        d = p[:, 1] - p[:, 0]
+        inward = 0.5 * np.stack([-d[:, 1], d[:, 0]], axis=1)
+        return np.repeat(0.5 * np.hypot(d[:, 0], d[:, 1])[:, None], 2, axis=1), np.stack([inward, inward], axis=1)
+    xi = _XI[:, None]
+    shape = np.concatenate([xi * (xi - 1) / 2, xi * (xi + 1) / 2, 1 - xi**2], axis=1)  # ends, middle
+    slope = np.concatenate([xi - 0.5, xi + 0.5, -2 * xi], axis=1)
+    tangent = np.einsum("qk,ekc->eqc", slope, p)  # dx/dxi at the Gauss points
+    weight = _W[None, :, None] * shape[None]  # (1, q, k)
+    length = np.einsum("eq,eqk->ek", np.hypot(tangent[..., 0], tangent[..., 1]), weight)
+    normal = np.stack([-tangent[..., 1], tangent[..., 0]], axis=-1)
+    return length, np.einsum("eqc,eqk->ekc", normal, weight)
 
 
 def boundary_springs(body: Body, springs) -> sp.csr_matrix:
@@ -93,9 +120,9 @@ def boundary_springs(body: Body, springs) -> sp.csr_matrix:
     diag = np.zeros(2 * len(body.points))
     for spring in springs:
         edges = body.group(spring.group, "spring.group")
-        length = np.hypot(*(body.points[edges[:, 1]] - body.points[edges[:, 0]]).T)
+        length, _ = _edge_integrals(body, edges)
         share = np.zeros(len(body.points))
-        np.add.at(share, edges.ravel(), np.repeat(0.5 * length / length.sum(), 2))
+        np.add.at(share, edges.ravel(), (length / length.sum()).ravel())
         diag[0::2] += spring.stiffness[0] * share
         diag[1::2] += spring.stiffness[1] * share
     return sp.diags(diag).tocsr()
@@ -106,9 +133,7 @@ def boundary_load(body: Body, loads) -> np.ndarray:
     force = np.zeros((len(body.points), 2))
     for load in loads:
         edges = _oriented_edges(body, load.group, "load.group")
-        d = body.points[edges[:, 1]] - body.points[edges[:, 0]]
-        inward = np.stack([-d[:, 1], d[:, 0]], axis=1)  # length times the inward normal (body on the left)
-        per_edge = load.pressure * inward + np.hypot(d[:, 0], d[:, 1])[:, None] * np.asarray(load.traction)
-        for end in (0, 1):
-            np.add.at(force, edges[:, end], 0.5 * per_edge)
+        length, inward = _edge_integrals(body, edges)
+        per_node = load.pressure * inward + length[..., None] * np.asarray(load.traction)
+        np.add.at(force, edges.ravel(), per_node.reshape(-1, 2))
     return force.ravel()

@@ -126,7 +126,7 @@ def contact_frames(body, group: str, surface, tolerance: float = 0.05) -> Contac
     The surface must touch the group: every node within ``tolerance`` times the group's
     length of it (a `ParameterError` naming ``surface`` otherwise).
     """
-    edges = body.group(group, "contact_group")
+    edges = body.segments(group, "contact_group")
     nodes = _order_along(body.points, edges, np.unique(edges))
     pts = body.points[nodes]
     n, t, g, speed = surface.geometry(pts)
