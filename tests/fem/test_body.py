@@ -114,6 +114,11 @@ def test_a_quadratic_mesh_is_read_turned_round_and_its_bad_middle_nodes_refused(
     with pytest.raises(ParameterError, match="turn over inside.*cell 0") as err:
         assemble(bad, Material(1e9, 0.3, 1e3))
     assert err.value.name == "mesh"
+    # a mapping with a zero Jacobian at a corner (a grading whose slope vanishes at x = y = 0)
+    graded = m.points.copy()
+    graded[:, 0], graded[:, 1] = 0.04 * (m.points[:, 0] / 0.04) ** 1.5, 0.01 * (m.points[:, 1] / 0.01) ** 2
+    with pytest.raises(ParameterError, match="turn over inside"):
+        assemble(body_from_meshio(meshio.Mesh(graded, m.cells, cell_sets=m.cell_sets), "bad.msh"), Material(1e9, 0.3, 1e3))
     # boundary groups of 2-node lines on quadratic cells, or with another middle node
     lines = [meshio.CellBlock("line" if b.type == "line3" else b.type, b.data[:, :2] if b.type == "line3" else b.data)
              for b in m.cells]

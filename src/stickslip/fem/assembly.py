@@ -147,18 +147,19 @@ def _basis(body: Body):
     """``(basis, where)``: the scikit-fem vector basis and `_skfem_mesh`'s node map. A quadratic
     cell whose mapping turns over somewhere inside (a misplaced middle node) is refused."""
     mesh, where = _skfem_mesh(body)
+    zero = ParameterError("mesh", body.source, "quadratic cells that do not turn over inside (one has a zero "
+                          "Jacobian: a middle node too far from its edge)")
     try:
         basis = Basis(mesh, ElementVector(_ELEMENTS[body.kind][1]()))
+        if body.order == 1:
+            return basis, where
+        # the sign of the mapping's Jacobian at the quadrature points and the nodes of each cell
+        det = basis.mapping.detDF(np.hstack([basis.X, basis.elem.doflocs[0::2].T]))
     except Exception as err:  # noqa: BLE001 - scikit-fem raises a bare Exception on a zero Jacobian
         if body.order == 1 or "Jacobian" not in str(err):
             raise
-        raise ParameterError("mesh", body.source, "quadratic cells that do not turn over inside (one has a zero "
-                             "Jacobian: a middle node too far from its edge)") from None
-    if body.order == 1:
-        return basis, where
-    # the sign of the mapping's Jacobian at the quadrature points and the nodes of each cell
-    at = np.hstack([basis.X, basis.elem.doflocs[0::2].T])
-    bad = np.flatnonzero(np.any(basis.mapping.detDF(at) <= 0, axis=1))
+        raise zero from None
+    bad = np.flatnonzero(np.any(det <= 0, axis=1))
     if bad.size:
         raise ParameterError("mesh", body.source, f"quadratic cells that do not turn over inside ({bad.size} do, "
                              f"the first is cell {int(bad[0])}: a middle node too far from its edge)")
