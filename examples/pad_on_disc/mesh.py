@@ -1,7 +1,8 @@
 """Mesh of a brake pad on a disc rim (gmsh): an annular sector R < r < R + h, |theta| < phi.
 
 Boundary groups: ``face`` (r = R, on the disc), ``back`` (r = R + h, held by the caliper),
-``ends`` (the two sides). Usage: ``python mesh.py [pad.msh] [size]`` (size in m).
+``ends`` (the two sides). Usage: ``python mesh.py [pad.msh] [size] [order]`` (size in m;
+order 2: 6-node triangles with their middle nodes on the arcs).
 """
 
 import math
@@ -12,7 +13,7 @@ import gmsh
 R, H, PHI = 0.15, 0.012, math.radians(12.0)  # disc radius, pad thickness, half angle
 
 
-def make(path="pad.msh", size=0.002):
+def make(path="pad.msh", size=0.002, order=1):
     gmsh.initialize(["-noenv"])
     gmsh.option.setNumber("General.Terminal", 0)
     try:
@@ -31,10 +32,11 @@ def make(path="pad.msh", size=0.002):
         gmsh.model.addPhysicalGroup(2, [surface], name="pad")
         gmsh.option.setNumber("Mesh.MeshSizeMax", size)
         gmsh.model.mesh.generate(2)
+        gmsh.model.mesh.setOrder(order)
         gmsh.write(str(path))
     finally:
         gmsh.finalize()
 
 
 if __name__ == "__main__":
-    make(*(sys.argv[1:2] or ["pad.msh"]), *(float(x) for x in sys.argv[2:3]))
+    make(*(sys.argv[1:2] or ["pad.msh"]), *(float(x) for x in sys.argv[2:3]), *(int(x) for x in sys.argv[3:4]))

@@ -20,9 +20,10 @@ from .meshes import rectangle
 E, NU, RHO = 2.1e11, 0.3, 7850.0
 
 
-@pytest.fixture(scope="module")
-def beam(tmp_path_factory):
-    body = body_from_meshio(rectangle(tmp_path_factory.mktemp("c") / "c.msh", 0.04, 0.004, 0.002, quads=True), "beam")
+@pytest.fixture(scope="module", params=[1, 2], ids=["quad", "quad9"])
+def beam(request, tmp_path_factory):
+    mesh = rectangle(tmp_path_factory.mktemp("c") / "c.msh", 0.04, 0.004, 0.002, quads=True, order=request.param)
+    body = body_from_meshio(mesh, "beam")
     undamped = assemble(body, Material(E, NU, RHO))
     free = np.setdiff1d(np.arange(undamped.n_dofs), undamped.dofs(body.nodes("left")))
     K, m = undamped.K.toarray()[np.ix_(free, free)], undamped.mass[free]
