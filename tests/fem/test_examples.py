@@ -228,7 +228,44 @@ def test_bad_springs_loads_and_static_friction_are_named_together(tmp_path, caps
                     .replace('group = "top"\nstiffness', 'group = "side"\nstiffness'))
     assert run(["fem", "steady", str(path)]) == 2
     err = capsys.readouterr().err
-    assert "spring.group" in err and "side" in err and "it has: bottom, left, right, top" in err
+    assert "spring[0].group = 'side'" in err and "it has: bottom, left, right, top" in err
+
+
+def test_problems_found_in_the_mesh_join_the_others_in_one_line(tmp_path, capsys):
+    """A material error, unknown groups, a surface at rest and one that does not touch the
+    contact group are all named at once, not one per attempt."""
+    path = _example("pad_on_disc", "pad.toml", "pad.msh", tmp_path)
+    text = path.read_text()
+    bad = (text.replace("young = 1.0e10", "young = -1.0").replace('clamped = ["back"]', 'clamped = ["back", "front"]')
+           .replace('group = "face"', 'group = "lining"').replace("omega = 30.0", "omega = 0.0")
+           .replace("density = 2500.0", ""))
+    path.write_text(bad)
+    assert run(["fem", "cea", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "5 problems" in err, err
+    for words in ("material.young = -1.0", "material.density is missing", "clamped = 'front' is not a boundary group",
+                  "contact.group = 'lining' is not a boundary group", "it has: back, ends, face", "surface.omega = 0.0"):
+        assert words in err, (words, err)
+    path.write_text(text.replace("young = 1.0e10", "young = -1.0").replace("radius = 0.15", "radius = 0.25"))
+    assert run(["fem", "cea", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert "2 problems" in err and "surface must be touching boundary group 'face'" in err, err
+
+
+def test_a_surface_at_rest_under_friction_is_refused_and_a_bad_start_is_named(tmp_path, capsys):
+    path = _example("block_on_belt", "block.toml", "block.msh", tmp_path)
+    text = path.read_text()
+    path.write_text(text.replace("velocity = [1.0, 0.0]", "velocity = [0.0, 0.0]"))
+    assert run(["fem", "steady", str(path)]) == 2
+    assert "surface.velocity = [0.0, 0.0] must be non-zero" in capsys.readouterr().err
+    path.write_text(text.replace("velocity = [1.0, 0.0]", "velocity = [0.0, 0.0]")
+                    .replace("friction = 0.4", "friction = 0.0").replace("static_friction = 0.6", ""))
+    assert run(["fem", "steady", str(path)]) == 0  # frictionless: a surface at rest is a plain obstacle
+    capsys.readouterr()
+    path.write_text(text)
+    assert run(["fem", "run", str(path), "--start", "foo"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "'foo' is not one of" in err and "Value error" not in err
 
 
 def test_the_pad_grows_from_steady_sliding_to_a_saturated_chatter(tmp_path, capsys):

@@ -7,7 +7,7 @@ import pytest
 
 from stickslip.brake.reduced.steady import steady_sliding
 from stickslip.errors import NoSolutionError, ParameterError
-from stickslip.fem import Material, assemble, body_from_meshio, read_body
+from stickslip.fem import ContactProblem, Material, assemble, body_from_meshio, read_body
 from stickslip.fem.static import steady_contact
 from stickslip.fem.surfaces import RigidCylinder, RigidFlat, contact_frames
 
@@ -91,3 +91,8 @@ def test_a_surface_that_does_not_touch_and_a_free_body_are_refused(tmp_path):
     with pytest.raises(ParameterError) as err:
         RigidFlat(point=(0.0, 0.0), normal=(0.0, 1.0), velocity=(1.0, 0.5))
     assert err.value.name == "velocity"
+    at_rest = contact_frames(body, "bottom", RigidFlat(point=(0.0, 1e-6), normal=(0.0, 1.0), velocity=(0.0, 0.0)))
+    with pytest.raises(ParameterError, match="surface at rest") as err:
+        ContactProblem(system, at_rest, 0.3)
+    assert err.value.also == ("friction",)
+    ContactProblem(system, at_rest, 0.0)  # frictionless: a surface at rest is a plain obstacle

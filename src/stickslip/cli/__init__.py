@@ -84,7 +84,7 @@ def run(argv: list[str] | None = None) -> int:
     except _USAGE as exc:  # parsing errors: missing or malformed options
         if type(exc).__name__ == "NoArgsIsHelpError":  # the help was printed: nothing went wrong
             return 0
-        return fail("error", exc.format_message(), 2)
+        return fail("error", exc.format_message().replace("Value error, ", ""), 2)  # typer's enum wording
     except ParameterError as exc:
         return fail("error", _as_typed(argv, exc), 2)
     except NoSolutionError as exc:

@@ -41,7 +41,7 @@ from __future__ import annotations
 
 import math
 import tomllib
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..errors import ParameterError
@@ -77,10 +77,11 @@ class FemConfig:
     static_friction: float | None = None
     springs: tuple = ()
     loads: tuple = ()
+    body: object = field(default=None, repr=False, compare=False)  # the mesh as read while checking
 
     def problem(self) -> ContactProblem:
-        """Read the mesh, assemble, and set the contact up (mesh errors name the mesh file)."""
-        body = read_body(self.mesh)
+        """Assemble the body and set the contact up (the mesh is read again if not kept)."""
+        body = self.body if self.body is not None else read_body(self.mesh)
         for name in (*self.clamped, self.group):
             body.group(name, "clamped" if name in self.clamped else "contact.group")
         frames = contact_frames(body, self.group, self.surface)
@@ -98,7 +99,8 @@ def _number(problems, where, value, lo=None, hi=None, positive=False):
         ok = False
     if not ok:
         rng = f"in (0, {hi:g})" if positive and hi is not None else "> 0" if positive else f"in [{lo}, {hi})" if hi is not None else f">= {lo}" if lo is not None else "finite"
-        problems.append(f"{where} = {value!r} must be a number {rng}")
+        problems.append(f"{where} is missing (a number {rng})" if value is None
+                        else f"{where} = {value!r} must be a number {rng}")
         return None
     return float(value)
 
@@ -159,7 +161,8 @@ def load_config(path) -> FemConfig:
         static = _number(problems, "contact.static_friction", static, friction or 0.0, 100.0)
     springs = _springs(problems, data.get("spring", []))
     loads = _loads(problems, data.get("load", []))
-    surface = _surface(problems, data.get("surface", {}) if isinstance(data.get("surface", {}), dict) else {})
+    surface = _surface(problems, data.get("surface", {}) if isinstance(data.get("surface", {}), dict) else {},
+                       friction)
     e = data.get("cea", {}) if isinstance(data.get("cea", {}), dict) else {}
     band = e.get("band", [0.0, 1e4])
     if not (isinstance(band, list) and len(band) == 2 and all(isinstance(b, (int, float)) and math.isfinite(b)
@@ -169,12 +172,40 @@ def load_config(path) -> FemConfig:
     count = e.get("count", 30)
     if not (isinstance(count, int) and not isinstance(count, bool) and 2 <= count <= 1000):
         problems.append(f"cea.count = {count!r} must be an integer in [2, 1000]")
+    body = _body(problems, mesh_path, clamped, group, springs, loads, data, surface)
     if problems:
         raise ParameterError("config", str(path), f"a valid config; {len(problems)} problem"
                              f"{'s' if len(problems) > 1 else ''}: " + "; ".join(problems))
     material = Material(young, poisson, density, plane, alpha, beta)
     return FemConfig(path, mesh_path, tuple(clamped), material, group, friction, surface, tuple(band), count,
-                     static, springs, loads)
+                     static, springs, loads, body)
+
+
+def _body(problems, mesh_path, clamped, group, springs, loads, data, surface):
+    """The mesh, read if it exists; every group name checked against it, and the surface against
+    the contact group (so that these problems join the others in one message)."""
+    if mesh_path is None or not mesh_path.is_file():
+        return None
+    try:
+        body = read_body(mesh_path)
+    except ParameterError as err:
+        problems.append(str(err))
+        return None
+    have = ", ".join(sorted(body.groups)) or "none"
+    named = [("clamped", name) for name in clamped] + [("contact.group", group)]
+    named += [(f"{kind}[{i}].group", t["group"]) for kind in ("spring", "load")
+              for i, t in enumerate(data.get(kind, []) if isinstance(data.get(kind, []), list) else [])
+              if isinstance(t, dict) and isinstance(t.get("group"), str)]
+    missing = [(where, name) for where, name in named if isinstance(name, str) and name not in body.groups]
+    problems += [f"{where} = {name!r} is not a boundary group of {mesh_path.name} (it has: {have})"
+                 for where, name in missing]
+    if surface is not None and isinstance(group, str) and group in body.groups:
+        try:
+            contact_frames(body, group, surface)
+        except ParameterError as err:
+            where = "surface" if err.name == "surface" else f"surface.{err.name}"
+            problems.append(f"{where} must be {err.allowed}")
+    return body
 
 
 def _tables(problems, name, value, keys):
@@ -211,8 +242,9 @@ def _loads(problems, value):
     return tuple(out)
 
 
-def _surface(problems, s):
+def _surface(problems, s, friction):
     kind = s.get("kind")
+    rubs = friction is not None and friction > 0  # a surface at rest gives friction no direction
     push = _number(problems, "surface.interference", s.get("interference", 0.0))
     if kind == "cylinder":
         radius = _number(problems, "surface.radius", s.get("radius"), positive=True)
@@ -221,6 +253,10 @@ def _surface(problems, s):
         inside = s.get("body_inside", False)
         if not isinstance(inside, bool):
             problems.append(f"surface.body_inside = {inside!r} must be true or false")
+        if rubs and omega == 0:
+            problems.append("surface.omega = 0.0 must be non-zero when contact.friction > 0 (a surface at rest "
+                            "gives friction no sliding direction)")
+            return None
         if None in (radius, omega, center, push) or not isinstance(inside, bool):
             return None
         radius = radius - push if inside else radius + push  # pushed into the body
@@ -233,6 +269,10 @@ def _surface(problems, s):
         normal = _pair(problems, "surface.normal", s.get("normal"))
         velocity = _pair(problems, "surface.velocity", s.get("velocity"))
         if None in (point, normal, velocity, push):
+            return None
+        if rubs and velocity == (0.0, 0.0):
+            problems.append("surface.velocity = [0.0, 0.0] must be non-zero when contact.friction > 0 (a surface "
+                            "at rest gives friction no sliding direction)")
             return None
         size = math.hypot(*normal)
         if size == 0:

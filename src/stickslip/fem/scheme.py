@@ -57,6 +57,9 @@ class ContactProblem:
         object.__setattr__(self, "friction", check.nonnegative("friction", self.friction))
         fs = self.friction if self.static_friction is None else self.static_friction
         object.__setattr__(self, "static_friction", check.at_least("static_friction", fs, self.friction, "friction"))
+        if self.friction > 0 and not np.all(self.frames.speed > 0):
+            raise ParameterError("frames", "of a surface at rest", "the frames of a moving surface when friction > 0 "
+                                 "(a surface at rest gives friction no sliding direction)", also=("friction",))
         object.__setattr__(self, "clamped", tuple(self.clamped))
         for name in self.clamped:
             self.system.body.nodes(name, "clamped")
