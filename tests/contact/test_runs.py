@@ -55,13 +55,14 @@ def test_a_checkpoint_can_be_extended_and_another_run_is_refused(model, tmp_path
     model.run(CASE2, 10, checkpoint=path)
     _same(model.run(CASE2, 20, checkpoint=path), model.run(CASE2, 20), parts=("series", "kernel"))
     other_start = model.perturbed(model.scheme(CASE2), seed=1)
-    for options in (dict(beta2=0.6), dict(initial=other_start), dict(courant=0.8)):
+    for options, says in ((dict(beta2=0.6), "beta2: stored"), (dict(initial=other_start), "initial: stored"),
+                          (dict(courant=0.8), "courant: stored 0.9, now 0.8")):
         with pytest.raises(ParameterError) as err:
             model.run(CASE2, 2, checkpoint=path, **options)
-        assert err.value.name == "checkpoint"
+        assert err.value.name == "checkpoint" and says in err.value.allowed and "--overwrite" in err.value.allowed
     with pytest.raises(ParameterError) as err:
         model.run(CASE2.replace(friction=0.5), 2, checkpoint=path)
-    assert err.value.name == "checkpoint"
+    assert err.value.name == "checkpoint" and "friction: stored" in err.value.allowed
 
 
 def test_a_file_that_is_not_a_run_of_this_model_is_refused(model, tmp_path):

@@ -278,7 +278,7 @@ def test_the_pad_grows_from_steady_sliding_to_a_saturated_chatter(tmp_path, caps
     out = tmp_path / "run.nc"
     assert run(["fem", "run", str(path), "--transits", "400", "--out", str(out), "--json"]) == 0
     regime = json.loads(capsys.readouterr().out)
-    assert regime["regime"] == "slip-separation" and regime["line"] == "open" and regime["c"] == 0.0
+    assert regime["regime"] == "slip-separation" and regime["line"] == "open" and "c" not in regime
     import xarray as xr
 
     with xr.open_dataset(out) as ds:

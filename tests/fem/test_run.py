@@ -40,6 +40,20 @@ def test_a_killed_run_resumes_bitwise_and_another_problem_is_refused(annulus, tm
     assert resumed.to_xarray()["t"].attrs["units"] == "s"
 
 
+def test_the_contact_line_is_stored_by_arclength_in_metres(annulus):
+    """The bore's nodes are a regular polygon of 32 sides on radius a: arclengths i 2 a sin(pi/32),
+    theta = 2 pi s / L with L the whole perimeter (the line is closed)."""
+    ds = integrate_body(annulus, transits=1.0).to_xarray()
+    pts = annulus.system.body.points[annulus.frames.nodes]
+    a = float(np.hypot(*pts.T).mean())
+    chord = 2 * a * np.sin(np.pi / 32)
+    assert ds["arclength"].attrs["units"] == "m" and ds["arclength"].dims == ("theta",)
+    assert np.allclose(ds["arclength"].values, chord * np.arange(32), rtol=1e-12, atol=1e-12 * a)
+    assert ds.attrs["line_length"] == pytest.approx(32 * chord, rel=1e-12)
+    assert np.allclose(ds["theta"].values, 2 * np.pi * np.arange(32) / 32, rtol=1e-12, atol=1e-12)
+    assert "2 pi s / L" in ds["theta"].attrs["long_name"]
+
+
 def test_the_general_path_finds_the_annulus_regime(annulus):
     """The same mesh and material through both paths, from different noise: the limit regime
     and its number of waves are a property of the problem, not of the start."""
@@ -86,4 +100,4 @@ def test_a_checkpoint_of_the_same_parameters_on_another_contact_is_refused(annul
     other = ContactProblem(annulus.system, frames, annulus.friction, annulus.clamped)
     with pytest.raises(ParameterError) as err:
         integrate_body(other, transits=1.0, checkpoint=path, initial=start)
-    assert err.value.name == "checkpoint"
+    assert err.value.name == "checkpoint" and "it differs in the problem (mesh" in err.value.allowed

@@ -20,7 +20,7 @@ slip [19] or separation [20]. Over the densely sampled tail of a run, `classify`
   from the shifted earlier state (shift rounded to a node).
 
 On an open contact line (a pad, a block: `ExplicitScheme.closed_line` false) nothing travels
-around the line: ``c = 0``, zones are counted without wrapping around its ends, and the
+around the line: ``c = 0`` (left out of ``to_dict``), zones are counted without wrapping around its ends, and the
 stationarity test compares the snapshots unshifted (a steady state, not a wave); ``line``
 says which analysis was done.
 """
@@ -94,8 +94,10 @@ class RegimeResult(Result):
         raise AttributeError(name)
 
     def to_dict(self) -> dict:
-        out = {k: getattr(self, k) for k in ("regime", "n", "n_fft", "c")}
-        out.update({f"c_over_{k}": v for k, v in self.relative_speeds.items()})
+        out = {k: getattr(self, k) for k in ("regime", "n", "n_fft")}
+        if self.line == "closed":  # nothing travels around an open line: it has no pattern speed
+            out["c"] = self.c
+            out.update({f"c_over_{k}": v for k, v in self.relative_speeds.items()})
         out.update({k: getattr(self, k) for k in ("stationary", "residual", "state_mismatch", "snapshots", "line")})
         out.update({"fractions": dict(self.fractions), "window": list(self.window), "params": dict(self.params)})
         return {k: (float(v) if isinstance(v, np.floating) else v) for k, v in out.items()}

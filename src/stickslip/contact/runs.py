@@ -84,6 +84,9 @@ class RunFormat:
     time_units: str = "1/Omega"
     time_note: str = "time Omega t"
     model: str = "brake"
+    position_note: str = ""  # what ``theta`` is, if not the angle of the node
+    mode_note: str = "circumferential Fourier mode"
+    extra_coords: Callable = staticmethod(lambda scheme: {})  # name -> (values, attrs) along the nodes
 
     @property
     def fields(self) -> dict:
@@ -195,9 +198,10 @@ def run_to_dataset(run) -> xr.Dataset:
                                                              "long_name": f"scheme state {name} for resuming"})
     coords = {T: (T, col(ser, "t", 0), {"units": fmt.time_units, "long_name": fmt.time_note}),
               S: (S, col(snp, "snap_t", 0), {"units": fmt.time_units, "long_name": f"{fmt.time_note} of the snapshot"}),
-              X: (X, s.theta, {"units": "rad", "long_name": f"angle of the {fmt.node_label}"}),
+              X: (X, s.theta, {"units": "rad", "long_name": fmt.position_note or f"angle of the {fmt.node_label}"}),
               "kind": ("kind", list(STATE_NAMES), {"long_name": "contact state"}),
-              "mode": ("mode", np.arange(K), {"units": "1", "long_name": "circumferential Fourier mode"})}
+              "mode": ("mode", np.arange(K), {"units": "1", "long_name": fmt.mode_note}),
+              **{name: (X, values, attrs) for name, (values, attrs) in fmt.extra_coords(s).items()}}
     attrs = {**s.params.to_attrs(), **dict(zip(fmt.key_attrs, _scheme_key(s, fmt))), **fmt.extra_attrs(s),
              "dt": s.dt, "transit_time": s.transit_time, "samples_done": run.samples_done,
              "complete": int(run.complete), **{k: (int(v) if isinstance(v, bool) else v) for k, v in st.items()},
@@ -319,13 +323,18 @@ def save(run, path) -> None:
     os.replace(tmp, path)
 
 
+#: How a difference in a key that is a digest is told (its value says nothing to a user).
+_DIFFER = {"problem_sha256": "the problem (mesh, stiffness and springs, load, contact frames or clamped dofs)",
+           "initial_hash": "the initial condition"}
+
+
 def resume(cls, path, scheme, settings):
     """The run stored at ``path`` if it is this run (else `ParameterError`), or None."""
     path = Path(path)
     if not path.exists():
         return None
     refused = ParameterError("checkpoint", str(path), "a checkpoint of the same run (parameters, scheme, schedule "
-                             "and initial condition must match; overwrite it to start afresh)")
+                             "and initial condition must match; overwrite=True, or --overwrite on the command line, starts afresh)")
     try:
         ds = xr.load_dataset(path)
     except (OSError, KeyError, ValueError, TypeError) as err:  # not netCDF, or damaged
@@ -348,9 +357,16 @@ def resume(cls, path, scheme, settings):
         raise refused from err
     expected = {**plain_attrs(scheme.params.to_attrs()),
                 **dict(zip(cls.FORMAT.key_attrs, _scheme_key(scheme, cls.FORMAT)))}
-    if any(not _same(stored[k], v) for k, v in expected.items()) or \
-            settings_key(old) != settings_key(cls(scheme, settings, {}, {}, {}, 0)):
-        raise refused
+    differ = [(k, stored[k], v) for k, v in expected.items() if not _same(stored[k], v)]
+    names = (*cls.FORMAT.key_attrs, *(k for k in _KEYS if k not in ("samples_total", "tail_samples")))
+    differ += [(k, a, b) for k, a, b in zip(names, settings_key(old), settings_key(cls(scheme, settings, {}, {}, {}, 0)))
+               if a != b and k not in dict((d[0], 0) for d in differ)]
+    if any(k == "initial" for k, _, _ in differ):  # its label says it; the digest adds nothing
+        differ = [d for d in differ if d[0] != "initial_hash"]
+    if differ:
+        raise ParameterError("checkpoint", str(path), "a checkpoint of the same run (it differs in " + "; ".join(
+            _DIFFER.get(k, f"{k}: stored {a!r}, now {b!r}") for k, a, b in differ) + "; overwrite=True, or "
+            "--overwrite on the command line, starts afresh)")
     return cls(scheme, {**old.settings, "samples_total": settings["samples_total"],
                         "tail_samples": settings["tail_samples"]},
                old.series, old.snapshots, old.kernel, old.samples_done)

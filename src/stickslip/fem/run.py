@@ -8,7 +8,9 @@ the mesh is not stored, so a checkpoint is resumed with its problem, whose diges
 match), and `classify_body` reads the limit regime on the contact nodes.
 
 Units: time [s]; displacements [m]; reactions ``P, Q`` [N per unit thickness] per node;
-energies [J per unit thickness]; ``theta = 2 pi s / L`` along the contact line.
+energies [J per unit thickness]; ``theta = 2 pi s / L`` along the contact line (``s`` the
+arclength, stored too as the coordinate ``arclength`` [m]; on an open line the modes ``modes_*``
+are the Fourier coefficients of a line that is not periodic: a description, not waves).
 """
 
 from __future__ import annotations
@@ -88,7 +90,13 @@ _FORMAT = RunFormat(
     key_attrs=("beta2", "courant", "step_given"), scheme=BodyScheme, params_type=ContactProblem,
     traction_scale=lambda s: s.mass[s.contact_dofs[0]],
     extra_attrs=lambda s: {"line_length": s.line_length, "p_wave_speed": s.params.system.material.p_wave_speed},
-    title="run of a general body on a rigid counter-surface", time_units="s", time_note="time", model="fem")
+    title="run of a general body on a rigid counter-surface", time_units="s", time_note="time", model="fem",
+    position_note="position of the contact node along the contact line as an angle, 2 pi s / L (s its arclength "
+                  "from the first node, L the line's length, attribute line_length)",
+    mode_note="Fourier mode in theta along the contact line (periodic only on a closed line)",
+    extra_coords=lambda s: {"arclength": (s.params.frames.arclength[s.contact_nodes],
+                                          {"units": "m", "long_name": "arclength of the contact node along the "
+                                                                      "contact line from its first node"})})
 
 
 @dataclass(frozen=True, eq=False, repr=False)

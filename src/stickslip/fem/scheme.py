@@ -105,7 +105,7 @@ class ContactProblem:
         return {"young": m.young, "poisson": m.poisson, "density": m.density, "plane": m.plane, "alpha": m.alpha,
                 "beta": m.beta, "friction": self.friction, "static_friction": self.static_friction,
                 "clamped": ",".join(self.clamped),
-                "springs": "; ".join(f"{k.group}: {k.stiffness[0]:g}, {k.stiffness[1]:g} Pa" for k in self.system.springs),
+                "springs": "; ".join(f"{k.group}: {k.stiffness[0]:g}, {k.stiffness[1]:g} N/m per m" for k in self.system.springs),
                 "loads": "; ".join(f"{x.group}: pressure {x.pressure:g} Pa, traction {x.traction[0]:g}, "
                                    f"{x.traction[1]:g} Pa" for x in self.system.loads),
                 "contact_nodes": int(len(self.frames.nodes)), "problem_sha256": self.digest}
