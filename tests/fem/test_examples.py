@@ -262,6 +262,10 @@ def test_a_surface_at_rest_under_friction_is_refused_and_a_bad_start_is_named(tm
                     .replace("friction = 0.4", "friction = 0.0").replace("static_friction = 0.6", ""))
     assert run(["fem", "steady", str(path)]) == 0  # frictionless: a surface at rest is a plain obstacle
     capsys.readouterr()
+    path.write_text(text.replace("pressure = 1.0e6", "pressure = -1.0e6"))  # pulls the block off the belt
+    assert run(["fem", "steady", str(path)]) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "contact nodes lifted off" in err and "pressure is positive into" in err
     path.write_text(text)
     assert run(["fem", "run", str(path), "--start", "foo"]) == 2
     err = capsys.readouterr().err

@@ -81,7 +81,15 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
     free = ~fixed[normal_dofs]  # a clamped contact node (a shared corner) is held by the clamp, not the contact
     active = (frames.gap <= 0.0) & free
     for iteration in range(1, max_iterations + 1):
-        w, p = _solve(Kw, Fw, fixed, normal_dofs[active], tangent_dofs[active], -frames.gap[active], friction, n_dofs)
+        try:
+            w, p = _solve(Kw, Fw, fixed, normal_dofs[active], tangent_dofs[active], -frames.gap[active], friction,
+                          n_dofs)
+        except NoSolutionError:
+            if iteration == 1:
+                raise
+            raise NoSolutionError(f"the body is not held: its contact nodes lifted off the surface until {active.sum()} "
+                                  f"of {active.size} were left, too few to hold it (do the loads pull it away? a load's "
+                                  "pressure is positive into the body, its traction along x, y)") from None
         pressure = np.zeros(len(frames.nodes))
         pressure[active] = p
         penetrating = free & (~active) & (w[normal_dofs] < -frames.gap - 1e-12 * np.max(np.abs(frames.gap)))
