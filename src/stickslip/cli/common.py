@@ -125,7 +125,8 @@ RunOut = Annotated[Optional[Path], typer.Option("--out", help=(
     "The run (.nc): written as it goes and at the end; a killed run resumes from it (--overwrite starts afresh)."))]
 #: The interval of a run's ParaView snapshots (with ``--xdmf``).
 XdmfEvery = Annotated[Optional[float], typer.Option("--xdmf-every", help=(
-    "Interval of the --xdmf snapshots in transits (> 0; default 1), and the last one."))]
+    "Interval of the --xdmf snapshots in transits (> 0; default 1; kept on the run's samples, a whole number "
+    "of time steps apart, so it may differ by a fraction of a sample), and the last one."))]
 
 
 def xdmf_path(path):
