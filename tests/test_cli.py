@@ -78,6 +78,7 @@ def test_output_paths_are_validated(tmp_path, capsys):
 
 OSC = ["--mass", "1", "--stiffness", "1", "--normal-force", "1", "--belt-speed", "0.2", "--fs", "0.6", "--fd", "0.4"]
 BRAKE = ["--omega", "50", "--mismatch", "1e-4", "--friction", "0.7"]
+BLOCK = Path(__file__).resolve().parents[1] / "examples" / "block_on_belt" / "block.toml"
 #: (command, the option, a suffix it needs, whether it is a folder, the library function it must not reach)
 OUTPUTS = [
     (["oscillator", "simulate", *OSC, "--t-end", "5"], "--out", ".nc", False, "stickslip.oscillator.simulate"),
@@ -90,6 +91,9 @@ OUTPUTS = [
     (["halfspace", "fields", "--b", "11.358", "--c", "-0.7", "--v-star", "0.001"], "--out", ".nc", False,
      "stickslip.halfspace.wave_from_inverse"),
     (["reproduce", "--only", "fig2"], "--out", "", True, "stickslip.report.reproduce"),
+    *[(["fem", command, str(BLOCK)], option, suffix, False, "stickslip.fem.config.load_config")
+      for command, option, suffix in (("steady", "--out", ".nc"), ("cea", "--out", ".nc"), ("cea", "--xdmf", ".xdmf"),
+                                      ("run", "--out", ".nc"), ("run", "--xdmf", ".xdmf"))],
 ]
 
 

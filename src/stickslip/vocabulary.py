@@ -303,13 +303,16 @@ _FEM = {
     "complete_below": ("1/s", "every mode of the band with |Re s| below this is found"),
     "unstable": ("1", "number of unstable modes (growth rate above 1e-7 |s|)"),
     "neutral": ("1", "number of neutral modes (|growth rate| within 1e-7 |s|)"),
-    "shifts": ("1", "shifts of the eigenvalue search"),
+    "shifts": ("Hz", "shifts of the eigenvalue search"),
     "normal_force": ("N/m", "total normal contact force per unit thickness"),
     "friction_force": ("N/m", "total friction force per unit thickness"),
     "max_node_force": ("N/m", "largest normal force on one contact node per unit thickness"),
     "contact_nodes": ("1", "nodes of the contact group"),
     "active_nodes": ("1", "contact nodes in contact"),
     "iterations": ("1", "active-set iterations"),
+    "band_lo": ("Hz", "lower end of the frequency band"),
+    "band_hi": ("Hz", "upper end of the frequency band"),
+    "friction": ("1", "Coulomb friction coefficient"),
 }
 
 #: Model -> {name: (units, long name)}; ``common`` serves every model.

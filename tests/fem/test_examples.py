@@ -13,6 +13,8 @@ import pytest
 from stickslip.brake.reduced.steady import steady_sliding
 from stickslip.cli import run
 
+from ..cf_rules import problems
+
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
@@ -58,10 +60,17 @@ def test_an_example_cea_finds_the_modes_of_a_dense_eigensolver(name, config, mes
     from stickslip.fem.cea import NEUTRAL, linearised
     from stickslip.fem.config import load_config
 
+    import xarray as xr
+
     path = _example(name, config, mesh, tmp_path)
-    assert run(["fem", "cea", str(path), "--json"]) == 0
+    assert run(["fem", "cea", str(path), "--json", "--out", str(tmp_path / "modes.nc")]) == 0
     data = json.loads(capsys.readouterr().out)
     s = np.array([m["growth_rate"] + 2j * np.pi * m["frequency"] for m in data["modes"]])
+    with xr.open_dataset(tmp_path / "modes.nc") as ds:  # the file the user keeps holds the same modes
+        stored = ds.growth_rate.values + 2j * np.pi * ds.frequency.values
+        assert np.array_equal(stored, s) and ds.frequency.attrs["units"] == "Hz"
+        assert int(ds.unstable.sum()) == data["unstable"] == ds.attrs["unstable_count"]
+        assert problems(ds, "modes") == []
     cfg = load_config(path)
     K, C, mass, _ = linearised(cfg.problem())
     n = K.shape[0]
@@ -199,11 +208,23 @@ def test_the_block_on_a_belt_is_pressed_with_its_load_and_sticks_and_slips(tmp_p
     data = json.loads(capsys.readouterr().out)
     assert data["normal_force"] == pytest.approx(1e6 * 0.1, rel=1e-9)  # pressure times the top's length
     assert data["friction_force"] == pytest.approx(0.4 * data["normal_force"], rel=1e-12)
-    out = tmp_path / "run.nc"
-    assert run(["fem", "run", str(path), "--start", "stick", "--transits", "50", "--out", str(out), "--json"]) == 0
+    steady = tmp_path / "steady.nc"
+    assert run(["fem", "steady", str(path), "--out", str(steady)]) == 0
     capsys.readouterr()
     import xarray as xr
 
+    with xr.open_dataset(steady) as ds:
+        # the moment about the origin: the belt's pressure (sum x p) balances the top load (P W^2 / 2)
+        # and the drive spring at y = H, which carries the whole friction force f N
+        assert float((ds.x * ds.pressure).sum()) == pytest.approx(1e6 * 0.1**2 / 2 - 0.01 * 0.4 * 1e5, rel=1e-9)
+        assert float(ds.pressure.sum()) == pytest.approx(1e5, rel=1e-9)
+        assert np.allclose(ds.arclength, ds.x - ds.x.min()) or np.allclose(ds.arclength, ds.x.max() - ds.x)
+        assert np.all((ds.pressure > 0) == (ds.active == 1)) and ds.attrs["active_nodes"] == int(ds.active.sum())
+        assert ds.pressure.attrs["units"] == "N/m" and ds.arclength.attrs["units"] == "m"
+        assert problems(ds, "steady sliding") == []
+    out = tmp_path / "run.nc"
+    assert run(["fem", "run", str(path), "--start", "stick", "--transits", "50", "--out", str(out), "--json"]) == 0
+    capsys.readouterr()
     with xr.open_dataset(out) as ds:
         stick = ds.fraction.sel(kind="stick").values
         assert ds.attrs["static_friction"] == 0.6 and stick[0] == 1.0  # it starts moving with the belt

@@ -11,7 +11,8 @@ import typer
 
 from .. import validation as check
 from ..errors import ParameterError
-from .common import Overwrite, RunOut, XdmfEvery, emit, output_path, progress_bar, xdmf_path, xdmf_snapshots
+from .common import (Overwrite, RunOut, XdmfEvery, emit, output_path, progress_bar, write_netcdf, xdmf_path,
+                     xdmf_snapshots)
 
 _emit = functools.partial(emit, model="fem")  # SI units: growth rates in 1/s, frequencies in Hz
 
@@ -40,20 +41,27 @@ def _problem(config: Path):
 
 
 @app.command()
-def steady(config: Config, json: Json = False):
-    """Steady sliding (or the preload, with friction 0): contact nodes, forces and active set."""
+def steady(config: Config, json: Json = False,
+           out: Annotated[Optional[Path], typer.Option(help=(
+               "Write the contact line node by node to this netCDF file (.nc): forces [N/m], displacements [m] "
+               "and contact state along the arclength [m]."))] = None):
+    """Steady sliding (or the preload, with friction 0): contact nodes, forces and nodes in contact."""
     from ..fem import steady_contact
 
+    out = output_path("--out", out, ".nc")
     cfg = _problem(config)
     problem = cfg.problem()
     st = steady_contact(problem.system, problem.frames, problem.friction, problem.clamped)
-    _emit({"contact_nodes": int(len(st.pressure)), "active_nodes": int(st.active.sum()),
-           "normal_force": float(st.pressure.sum()), "friction_force": float(st.shear.sum()),
-           "max_node_force": float(st.pressure.max()), "iterations": int(st.iterations)}, json, "steady sliding")
+    _emit(st.to_dict(), json, "steady sliding")
+    if out is not None:
+        write_netcdf(st.to_xarray(), out)
 
 
 @app.command()
 def cea(config: Config, json: Json = False,
+        out: Annotated[Optional[Path], typer.Option(help=(
+            "Write the modes to this netCDF file (.nc): growth rate [1/s], frequency [Hz], unstable and neutral "
+            "flags, and the shifts [Hz]."))] = None,
         xdmf: Annotated[Optional[Path], typer.Option(help=(
             "Write the mode shapes for ParaView to this XDMF file (.xdmf, data in the .h5 beside it): one step per "
             "mode, most unstable first; lengths in m, growth rate [1/s], frequency [Hz]."))] = None):
@@ -62,6 +70,7 @@ def cea(config: Config, json: Json = False,
     from ..fem import complex_eigenvalues
     from ..fem.paraview import write_modes_xdmf
 
+    out = output_path("--out", out, ".nc")
     xdmf = xdmf_path(xdmf)
     cfg = _problem(config)
     problem = cfg.problem()
@@ -71,6 +80,8 @@ def cea(config: Config, json: Json = False,
     data = result.to_dict()
     _emit({"modes": data["modes"], "unstable": data["unstable"], "neutral": data["neutral"], "complete_below": data["complete_below"],
            "shifts": len(data["shifts"])}, json, "complex eigenvalue analysis")
+    if out is not None:
+        write_netcdf(result.to_xarray(), out)
 
 
 @app.command()

@@ -26,8 +26,10 @@ from typing import ClassVar
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as sla
+import xarray as xr
 
 from .. import validation as check
+from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
 from ..results import Result
 from .scheme import BodyScheme, ContactProblem
@@ -73,7 +75,7 @@ class CeaModes(Result):
     radius of the shifts) is found; one farther from the frequency axis may be missed (raise
     ``count``)."""
 
-    MODEL: ClassVar[str] = "common"
+    MODEL: ClassVar[str] = "fem"
 
     s: np.ndarray
     shapes: np.ndarray | None
@@ -105,6 +107,23 @@ class CeaModes(Result):
                 "unstable": int(np.sum(self.unstable)), "neutral": int(np.sum(self.neutral)), "band_lo": float(self.band[0]), "band_hi": float(self.band[1]),
                 "complete_below": float(self.complete_below),
                 "shifts": [float(x) for x in self.shifts]}
+
+    def to_xarray(self) -> xr.Dataset:
+        """The modes along ``mode`` (most unstable first): growth rate [1/s], frequency [Hz],
+        flags ``unstable`` and ``neutral``; the shifts [Hz] along ``shift``; the band and
+        ``complete_below`` as attributes (the shapes go to ParaView: `stickslip.fem.paraview`)."""
+        ds = xr.Dataset({"growth_rate": ("mode", self.growth_rate), "frequency": ("mode", self.frequency),
+                         "unstable": ("mode", self.unstable.astype(np.int8), {"units": "1", "long_name":
+                                      "mode grows (growth rate above 1e-7 |s|)"}),
+                         "neutral": ("mode", self.neutral.astype(np.int8), {"units": "1", "long_name":
+                                     "mode neither grows nor decays within 1e-7 |s|"}),
+                         "shift": ("shift", self.shifts, {"units": "Hz", "long_name": "shift of the eigenvalue search"})},
+                        coords={"mode": ("mode", np.arange(self.s.size), {"units": "1", "long_name":
+                                         "index of the mode, most unstable first"})})
+        d = self.to_dict()
+        return finish(ds, "complex eigenvalue analysis of steady sliding", "fem",
+                      params={"unstable_count": d["unstable"], "neutral_count": d["neutral"],
+                              **{k: d[k] for k in ("band_lo", "band_hi", "complete_below")}})
 
 
 def eigenvalues_near(K_eff, C_eff, mass, shift_hz: float, count: int, vectors: bool):

@@ -18,13 +18,17 @@ static preload (frictionless contact).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as sla
+import xarray as xr
 
 from .. import validation as check
+from ..cf import finish
 from ..errors import NoSolutionError
+from ..results import Result
 from .assembly import BodySystem
 from .surfaces import ContactFrames
 
@@ -46,11 +50,16 @@ def frame_rotation(n_dofs: int, frames: ContactFrames) -> sp.csr_matrix:
                          shape=(n_dofs, n_dofs))
 
 
-@dataclass(frozen=True, eq=False)
-class SteadyContact:
+@dataclass(frozen=True, eq=False, repr=False)
+class SteadyContact(Result):
     """Steady sliding (or, with ``friction = 0``, the preload): Cartesian displacement ``u``
     of every dof [m], and per contact node (in the order of ``frames.nodes``) the normal
-    force ``pressure`` and the friction force ``shear`` [N per unit thickness], ``active``."""
+    force ``pressure`` and the friction force ``shear`` [N per unit thickness], ``active``.
+
+    ``to_dict()`` gives the totals; ``to_xarray()`` the contact line node by node (along
+    ``arclength`` [m]: mesh node, position, normal, forces, displacement, state)."""
+
+    MODEL: ClassVar[str] = "fem"
 
     frames: ContactFrames
     friction: float
@@ -59,6 +68,43 @@ class SteadyContact:
     shear: np.ndarray
     active: np.ndarray
     iterations: int
+    points: np.ndarray | None = None  # the contact nodes' reference positions [m] (for to_xarray)
+
+    def to_dict(self) -> dict:
+        return {"contact_nodes": int(len(self.pressure)), "active_nodes": int(self.active.sum()),
+                "normal_force": float(self.pressure.sum()), "friction_force": float(self.shear.sum()),
+                "max_node_force": float(self.pressure.max()), "friction": float(self.friction),
+                "iterations": int(self.iterations)}
+
+    def to_xarray(self) -> xr.Dataset:
+        f = self.frames
+        u = self.u.reshape(-1, 2)[f.nodes]
+        N = "arclength"
+        node = {"units": "N/m"}
+        data = {"node": (N, f.nodes, {"long_name": "index of the contact node in the mesh"}),
+                "pressure": (N, self.pressure, {**node, "long_name": "normal contact force on the node per unit "
+                                                                     "thickness"}),
+                "shear": (N, self.shear, {**node, "long_name": "friction force on the node per unit thickness, "
+                                                               "along the surface motion"}),
+                "active": (N, self.active.astype(np.int8), {"units": "1", "long_name": "node in contact (1) or "
+                                                                                         "lifted off (0)"}),
+                "u_n": (N, np.sum(u * f.normal, axis=1), {"units": "m", "long_name": "displacement along the "
+                                                                                       "surface normal (into the body)"}),
+                "u_t": (N, np.sum(u * f.tangent, axis=1), {"units": "m", "long_name": "displacement along the "
+                                                                                        "surface motion"}),
+                "gap": (N, f.gap, {"units": "m", "long_name": "signed distance from the surface in the reference "
+                                                               "configuration (negative: interference)"})}
+        for k, axis in enumerate("xy"):
+            if self.points is not None:
+                data[axis] = (N, self.points[:, k], {"units": "m", "long_name": f"{axis} of the contact node "
+                                                                                "(reference configuration)"})
+            data[f"normal_{axis}"] = (N, f.normal[:, k], {"units": "1", "long_name": f"{axis} of the surface normal "
+                                                                                      "into the body"})
+        ds = xr.Dataset(data, coords={N: (N, f.arclength, {"units": "m", "long_name": "arclength along the "
+                                                              "contact line from its first node"})})
+        kind = "steady sliding" if self.friction > 0 else "static preload (frictionless contact)"
+        return finish(ds, f"{kind} of a general body on a rigid counter-surface", "fem",
+                      params={**self.to_dict(), "closed_line": int(f.closed)})
 
 
 def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 0.0, clamped=(),
@@ -95,7 +141,8 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
         penetrating = free & (~active) & (w[normal_dofs] < -frames.gap - 1e-12 * np.max(np.abs(frames.gap)))
         new = (active & (pressure >= 0.0)) | penetrating
         if np.array_equal(new, active):
-            return SteadyContact(frames, friction, T @ w, pressure, friction * pressure, active.copy(), iteration)
+            return SteadyContact(frames, friction, T @ w, pressure, friction * pressure, active.copy(), iteration,
+                                 system.body.points[frames.nodes])
         active = new
     raise NoSolutionError(f"the contact active set did not settle in {max_iterations} iterations")
 
