@@ -61,6 +61,7 @@ BASE = {
     "reproduce": ["--only", "fig2", "--out", "{tmp}/r"],
     "fem run": ["{config}", "--transits", "2", "--out", "{tmp}/g.nc"],
     "fem cea": ["{config}"],
+    "fem steady": ["{config}"],
 }
 _CONFIG: list[str] = []
 
