@@ -218,6 +218,10 @@ def test_the_block_on_a_belt_is_pressed_with_its_load_and_sticks_and_slips(tmp_p
         # and the drive spring at y = H, which carries the whole friction force f N
         assert float((ds.x * ds.pressure).sum()) == pytest.approx(1e6 * 0.1**2 / 2 - 0.01 * 0.4 * 1e5, rel=1e-9)
         assert float(ds.pressure.sum()) == pytest.approx(1e5, rel=1e-9)
+        # the drive spring (9.5e5 N/m per m) stretches by f N / k; the block's shear adds
+        # tau H / G = 1e-5 m (2.5e-4 of it)
+        assert float(ds.u_t.mean()) == pytest.approx(0.4 * 1e5 / 9.5e5, rel=1e-3)
+        assert np.allclose(ds.u_n.where(ds.active == 1, 0.0), -ds.gap.where(ds.active == 1, 0.0), atol=1e-12)
         assert np.allclose(ds.arclength, ds.x - ds.x.min()) or np.allclose(ds.arclength, ds.x.max() - ds.x)
         assert np.all((ds.pressure > 0) == (ds.active == 1)) and ds.attrs["active_nodes"] == int(ds.active.sum())
         assert ds.pressure.attrs["units"] == "N/m" and ds.arclength.attrs["units"] == "m"

@@ -55,6 +55,36 @@ def test_on_quadratic_cells_the_annulus_pressure_converges_faster(friction, tmp_
     assert errors[1] < 1e-5 and errors[1] < errors[0] / 8, errors
 
 
+@pytest.mark.parametrize("friction, omega", [(0.0, 100.0), (0.5, 100.0), (0.5, -100.0)])
+def test_an_annulus_in_a_turning_drum_slides_as_lame_says(friction, omega, tmp_path):
+    """The annulus 1 < r < b = 1.5 with its bore clamped, inside a drum of radius b - delta
+    (``body_inside``). Plane strain, E = 1: the radial and the hoop problems separate. Radially
+    u = A (r - 1/r) with u(b) = -delta, and the drum presses with p = -2 (lambda + mu) A - 2 mu
+    A / b^2; the friction f p drags the rim along the drum's turn, u_theta = C (r - 1/r) with
+    2 mu C / b^2 = f p (sign of omega). Thresholds set before the run: pressure within 1e-3,
+    hoop displacement within 5e-3 at size 0.05, the pressure error falling with the size
+    (measured: pressure 5.6e-4 at 0.1, 1.7e-4 at 0.05; hoop 1.6e-3, 6.8e-4). A normal out of
+    the body, the drum's gap of a shaft or a tangent that ignores the sign of omega fail it."""
+    b, lam, mu = XI, NU / ((1 + NU) * (1 - 2 * NU)), 1 / (2 * (1 + NU))
+    A = -DELTA / (b - 1 / b)
+    p = -2 * (lam + mu) * A - 2 * mu * A / b**2
+    hoop = np.sign(omega) * friction * p * b**2 / (2 * mu) * (b - 1 / b)
+    errors = []
+    for size in (0.1, 0.05):
+        body = body_from_meshio(annulus(tmp_path / f"d{size}.msh", outer=b, size=size), "annulus")
+        system = assemble(body, Material(1.0, NU, 1.0))
+        frames = contact_frames(body, "rim", RigidCylinder(b - DELTA, omega, body_inside=True))
+        st = steady_contact(system, frames, friction, clamped=["bore"])
+        u = st.u.reshape(-1, 2)[frames.nodes]
+        x, y = body.points[frames.nodes].T
+        r = np.hypot(x, y)
+        assert st.active.all() and np.allclose((x * u[:, 0] + y * u[:, 1]) / r, -DELTA, rtol=1e-12)
+        errors.append(abs(st.pressure.sum() / (2 * np.pi * b) / p - 1))
+        v = np.mean((-y * u[:, 0] + x * u[:, 1]) / r)
+    assert errors[1] < 1e-3 and errors[1] < errors[0], errors
+    assert (v == pytest.approx(hoop, rel=5e-3)) if friction else abs(v) < 1e-3 * DELTA
+
+
 def _pad(tmp_path):
     body = read_body(rectangle(tmp_path / "pad.msh") and tmp_path / "pad.msh")
     return body, assemble(body, Material(2.1e11, 0.3, 7850.0))
