@@ -5,7 +5,8 @@ Baseline: ``K @ u`` with scipy's CSR kernel on the assembled stiffness (the one 
 explicit step cannot avoid). Measured in one run, on the same saturated state (case 2 of
 section 3.1: stick, slip and separation present):
 
-* scipy CSR ``K @ u`` (baseline) and the same product in a compiled CSR loop;
+* scipy CSR ``K @ u`` (baseline) and the same product in a compiled CSR loop and in compiled
+  2 x 2 node blocks (`stickslip.contact.kernel.block2_apply`, the general path's form);
 * the compiled block-circulant stencil product (`stickslip.contact.kernel.stencil_apply`,
   same matrix);
 * the compiled step with contact switched off (`FemScheme.advance(..., contact=False)`);
@@ -28,7 +29,7 @@ import numpy as np
 from stickslip.brake import BrakeParams
 from stickslip.brake.fem import integrate_fem
 from stickslip.contact import StepState
-from stickslip.contact.kernel import csr_apply, stencil_apply
+from stickslip.contact.kernel import block2_apply, csr_apply, stencil_apply
 from timing import best_of
 
 
@@ -64,6 +65,12 @@ def main():
         for _ in range(M):
             csr_apply(K.indptr, K.indices, K.data, u, out)  # compile
 
+    indptr, indices, data, _ = s.kernel_operator  # M^-1 K in 2 x 2 blocks: the pattern of K
+
+    def block_mv():
+        for _ in range(M):
+            block2_apply(indptr, indices, data, u, out)
+
     def stencil_mv():
         for _ in range(M):
             stencil_apply(s.stencil, u, out)
@@ -71,10 +78,11 @@ def main():
     step(1), step(1, sparse=True)  # compile
     err_paths = np.abs(step(50)["u"] - step(50, sparse=True)["u"]).max() / np.abs(step(50)["u"]).max()
     csr_apply(K.indptr, K.indices, K.data, u, out)  # compile
+    block2_apply(indptr, indices, data, u, out)
     stencil_apply(s.stencil, u, out)
     err = np.abs(-s.mass * out - K @ u).max() / np.abs(K @ u).max()
-    t_scipy, t_csr, t_sten, t_pred, t_full, t_sparse = (
-        best_of(fn)[0] / M for fn in (scipy_mv, csr_mv, stencil_mv, lambda: step(contact=False), step,
+    t_scipy, t_csr, t_block, t_sten, t_pred, t_full, t_sparse = (
+        best_of(fn)[0] / M for fn in (scipy_mv, csr_mv, block_mv, stencil_mv, lambda: step(contact=False), step,
                                       lambda: step(sparse=True)))
     T = 5 * M / s.steps_per_transit  # long enough that the setup (steady solve, CFL eigenvalues) is amortised
     t0 = time.perf_counter()
@@ -87,7 +95,8 @@ def main():
           f"stencil product = K u to {err:.1e}, stencil and sparse steps agree to {err_paths:.1e} after 50 steps "
           "(relative)")
     rows = [("bare sparse matvec K @ u (scipy CSR)", t_scipy, "baseline"),
-            ("same product, compiled CSR loop", t_csr, ""), ("same product, compiled stencil", t_sten, ""),
+            ("same product, compiled CSR loop", t_csr, ""), ("same product, compiled 2 x 2 blocks", t_block, ""),
+            ("same product, compiled stencil", t_sten, ""),
             ("compiled step, contact off", t_pred, ""),
             ("compiled step with contact + Coulomb (advance)", t_full, ""),
             ("the same step, general sparse path", t_sparse, ""),

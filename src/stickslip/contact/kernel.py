@@ -30,7 +30,10 @@ boundary) is added to ``A_m``.
 known. `advance` is the compiled loop: it computes ``A_m`` from one of two forms of the
 operator ``M^{-1} K`` and calls `explicit_step`:
 
-* a CSR matrix (`csr_apply`): any operator, the general path for any mesh;
+* a sparse matrix, the general path for any mesh: in 2 x 2 blocks (`block2_apply`: the two
+  dofs of a node against those of another, one column index per four entries) where the
+  operator has that structure, as every 2-D mesh with whole nodes kept does, else in CSR
+  (`csr_apply`): any operator;
 * a stencil (`stencil_apply`): a block-circulant operator on ``n_r`` closed rings of ``n_theta``
   nodes with two dofs each (``2 (i n_theta + j) + c``, couplings to the 3 x 3 neighbouring
   nodes, the same for every ``j``), read from ``n_r x 36`` numbers instead of ``nnz``:
@@ -44,7 +47,7 @@ from numba import njit
 
 from .states import SEPARATION, SLIP_NEG, SLIP_POS
 
-__all__ = ["explicit_step", "predictor", "csr_apply", "stencil_apply", "advance", "multiplier_factor"]
+__all__ = ["explicit_step", "predictor", "csr_apply", "block2_apply", "stencil_apply", "advance", "multiplier_factor"]
 
 
 @njit(cache=True)
@@ -109,6 +112,25 @@ def csr_apply(indptr, indices, data, u, out):
 
 
 @njit(cache=True)
+def block2_apply(indptr, indices, data, u, out):
+    """``out = -A u`` for ``A`` in 2 x 2 blocks (block sparse rows): block row ``I`` couples dofs
+    ``2I, 2I + 1`` with ``2J, 2J + 1``, ``J = indices[k]`` for ``k`` in ``indptr[I]:indptr[I + 1]``,
+    through ``data[4k:4k + 4]`` (row-major). The same product as `csr_apply` with a quarter of
+    the column indices to read."""
+    for i in range(indptr.shape[0] - 1):
+        a0 = 0.0
+        a1 = 0.0
+        for k in range(indptr[i], indptr[i + 1]):
+            j = 2 * indices[k]
+            x0, x1 = u[j], u[j + 1]
+            b = 4 * k
+            a0 += data[b] * x0 + data[b + 1] * x1
+            a1 += data[b + 2] * x0 + data[b + 3] * x1
+        out[2 * i] = -a0
+        out[2 * i + 1] = -a1
+
+
+@njit(cache=True)
 def _single_ring(C, u, out):
     """`stencil_apply` for one ring of nodes (``n_r = 1``): one pass, branch-free inside."""
     N = out.shape[0] // 2
@@ -164,13 +186,14 @@ def stencil_apply(C, u, out):
 
 
 @njit(cache=True)
-def advance(C, indptr, indices, data, load, damping, u, v, a, normal, tangent, gap0, speed, nsteps, dt, beta2, f, fs,
+def advance(C, indptr, indices, data, block, load, damping, u, v, a, normal, tangent, gap0, speed, nsteps, dt, beta2, f, fs,
             contact, lam_n, lam_t, state, work):
     """``nsteps`` steps of the scheme in place, ``A_m = -(M^{-1} K) u_m + load`` (``load`` empty: none),
     with Rayleigh ``damping = (alpha, beta)`` on ``v_{m-1}`` if not both zero.
 
-    ``M^{-1} K`` is the stencil ``C`` (`stencil_apply`) if ``C`` is not empty, else the CSR
-    matrix ``(indptr, indices, data)`` (`csr_apply`). ``work`` receives ``u_m`` of the last
+    ``M^{-1} K`` is the stencil ``C`` (`stencil_apply`) if ``C`` is not empty, else the sparse
+    matrix ``(indptr, indices, data)``: in 2 x 2 blocks if ``block == 2`` (`block2_apply`), in CSR
+    if ``block == 1`` (`csr_apply`). ``work`` receives ``u_m`` of the last
     step; the other arguments are those of `explicit_step`.
     """
     A = np.empty(u.shape[0])
@@ -186,6 +209,8 @@ def advance(C, indptr, indices, data, load, damping, u, v, a, normal, tangent, g
                 w[k] = u[k] + beta * v[k]
         if stencil:
             stencil_apply(C, w, A)
+        elif block == 2:
+            block2_apply(indptr, indices, data, w, A)
         else:
             csr_apply(indptr, indices, data, w, A)
         if damped:

@@ -35,7 +35,7 @@ import scipy.sparse as sp
 
 from .. import validation as check
 from ..errors import ParameterError
-from .kernel import advance, csr_apply, stencil_apply
+from .kernel import advance, block2_apply, csr_apply, stencil_apply
 
 __all__ = ["ExplicitScheme", "StepState", "StepOutput", "amplification_matrix", "discrete_rates", "stencil_matrix"]
 
@@ -198,8 +198,8 @@ class ExplicitScheme(ABC):
         if self.stencil is not None and not sparse:
             stencil_apply(self.stencil, u, out)
         else:
-            A = self.sparse_operator
-            csr_apply(A.indptr, A.indices, A.data, u, out)
+            indptr, indices, data, block = self.kernel_operator
+            (block2_apply if block == 2 else csr_apply)(indptr, indices, data, u, out)
         return out
 
     # --- what every scheme gets ---------------------------------------------------------
@@ -210,6 +210,24 @@ class ExplicitScheme(ABC):
         A.sort_indices()
         return type(A)((A.data.astype(float), A.indices.astype(np.int64), A.indptr.astype(np.int64)),
                        shape=A.shape)
+
+    @cached_property
+    def kernel_operator(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
+        """``(indptr, indices, data, block)``: `sparse_operator` as the compiled kernels read it.
+
+        In 2 x 2 blocks (``block = 2``, `kernel.block2_apply`) when the dofs pair up by node
+        (``2 i + c``) and the blocks store at most a quarter more entries than the matrix has;
+        in CSR (``block = 1``) otherwise. Blocks read one column index per four entries: on 2-D
+        meshes the product takes 0.7 of scipy's CSR ``K @ u`` (``benchmarks/fem_general.py``).
+        """
+        A = self.sparse_operator
+        if A.shape[0] % 2 == 0 and A.nnz > 0:
+            B = A.tobsr(blocksize=(2, 2))
+            B.sort_indices()
+            if 4 * B.indices.size <= 1.25 * A.nnz:
+                return (B.indptr.astype(np.int64), B.indices.astype(np.int64),
+                        np.ascontiguousarray(B.data, dtype=float).reshape(-1), 2)
+        return A.indptr, A.indices, A.data, 1
 
     @cached_property
     def dt_max(self) -> float:
@@ -313,10 +331,10 @@ class ExplicitScheme(ABC):
         nsteps = check.positive_int("nsteps", nsteps)
         out = self.new_output() if out is None else out
         (normal, tangent), (gap0, speed) = self.contact_dofs, self.surface
-        A = self.sparse_operator
+        indptr, indices, data, block = self.kernel_operator
         C = self.stencil if self.stencil is not None and not sparse else _NO_STENCIL
         load = _NO_LOAD if self.load is None else np.ascontiguousarray(self.load, dtype=float)
-        advance(C, A.indptr, A.indices, A.data, load, np.array(self.damping, dtype=float), state.u, state.v, state.a, normal, tangent, gap0, speed, nsteps,
+        advance(C, indptr, indices, data, block, load, np.array(self.damping, dtype=float), state.u, state.v, state.a, normal, tangent, gap0, speed, nsteps,
                 self.dt, self.beta2, self.params.friction, self.static_friction, bool(contact), out.lam_n, out.lam_t,
                 out.state, out.u_prev)
         return out
