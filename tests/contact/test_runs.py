@@ -55,11 +55,14 @@ def test_a_checkpoint_can_be_extended_and_another_run_is_refused(model, tmp_path
     model.run(CASE2, 10, checkpoint=path)
     _same(model.run(CASE2, 20, checkpoint=path), model.run(CASE2, 20), parts=("series", "kernel"))
     other_start = model.perturbed(model.scheme(CASE2), seed=1)
-    for options, says in ((dict(beta2=0.6), "beta2: stored"), (dict(initial=other_start), "initial: stored"),
+    for options, says in ((dict(beta2=0.6), "beta2: stored"), (dict(initial=other_start), "initial condition: stored"),
                           (dict(courant=0.8), "courant: stored 0.9, now 0.8")):
         with pytest.raises(ParameterError) as err:
             model.run(CASE2, 2, checkpoint=path, **options)
-        assert err.value.name == "checkpoint" and says in err.value.allowed and "--overwrite" in err.value.allowed
+        assert err.value.name == "checkpoint" and says in err.value.allowed and "overwrite it" in err.value.allowed
+    with pytest.raises(ParameterError) as err:  # a shorter run: not the longer one handed back as if it were
+        model.run(CASE2, 5, checkpoint=path)
+    assert err.value.name == "checkpoint" and "no longer than the one asked for" in err.value.allowed
     with pytest.raises(ParameterError) as err:
         model.run(CASE2.replace(friction=0.5), 2, checkpoint=path)
     assert err.value.name == "checkpoint" and "friction: stored" in err.value.allowed

@@ -8,7 +8,7 @@ from stickslip.errors import NoSolutionError, ParameterError
 from stickslip.fem import Body, Material, assemble, body_from_meshio
 from stickslip.fem.boundary import Load, Spring, boundary_load, boundary_springs
 from stickslip.fem.static import steady_contact
-from stickslip.fem.surfaces import RigidFlat, contact_frames
+from stickslip.fem.surfaces import RigidCylinder, RigidFlat, contact_frames
 
 from .meshes import rectangle
 
@@ -79,18 +79,36 @@ def test_a_uniform_load_gives_its_resultant_and_moment(block):
     assert np.sum(x * f[:, 1] - y * f[:, 0]) == pytest.approx(-P * W * W / 2, rel=1e-12)
 
 
-def test_a_block_pressed_on_a_flat_is_compressed_uniformly(block):
+@pytest.mark.parametrize("gap", [0.0, 3e-6], ids=["touching", "gap"])
+def test_a_block_pressed_on_a_flat_is_compressed_uniformly(block, gap):
     """Frictionless flat under the bottom, pressure on the top, a weak spring along x on the left:
-    the exact state is uniform compression, ``sigma_yy = -P`` (linear elements represent it)."""
+    the exact state is uniform compression, ``sigma_yy = -P`` (linear elements represent it).
+    With the flat ``gap`` below the block, the load first closes the gap (a rigid motion)."""
     E, nu, P = 2e9, 0.3, 1e6
     system = assemble(block, Material(E, nu, 1000.0), [Spring("left", (1e3, 0.0))], [Load("top", P)])
-    frames = contact_frames(block, "bottom", RigidFlat((0.0, 0.0), (0.0, 1.0), (1.0, 0.0)))
+    frames = contact_frames(block, "bottom", RigidFlat((0.0, -gap), (0.0, 1.0), (1.0, 0.0)))
     st = steady_contact(system, frames, 0.0)
     share = _tributary(block, "bottom")[frames.nodes]
     assert st.active.all() and st.pressure == pytest.approx(P * share, rel=1e-9)
     u = st.u.reshape(-1, 2)
     top = np.isclose(block.points[:, 1], H)
-    assert u[top, 1] == pytest.approx(-P * H * (1 - nu**2) / E, rel=1e-9)  # plane strain, sigma_xx = 0
+    assert u[top, 1] == pytest.approx(-gap - P * H * (1 - nu**2) / E, rel=1e-9)  # plane strain, sigma_xx = 0
+
+
+def test_a_surface_on_the_wrong_side_of_the_body_is_refused(block):
+    """The normal must point into the body at the contact group: a flat under the block pointing
+    down, or a cylinder under it with the body "inside", would pull; on the top, the flat's normal
+    points down."""
+    contact_frames(block, "bottom", RigidFlat((0.0, 0.0), (0.0, 1.0), (1.0, 0.0)))
+    contact_frames(block, "top", RigidFlat((0.0, H), (0.0, -1.0), (1.0, 0.0)))
+    with pytest.raises(ParameterError, match=r"invalid normal = \[0.0, -1.0\].*try normal = \[0, 1\]"):
+        contact_frames(block, "bottom", RigidFlat((0.0, 0.0), (0.0, -1.0), (1.0, 0.0)))
+    with pytest.raises(ParameterError, match=r"invalid normal.*try normal = \[0, -1\]"):
+        contact_frames(block, "top", RigidFlat((0.0, H), (0.0, 1.0), (1.0, 0.0)))
+    R = 1.0
+    contact_frames(block, "bottom", RigidCylinder(R, 1.0, (W / 2, -R)))
+    with pytest.raises(ParameterError, match="invalid body_inside = True.*try body_inside = false"):
+        contact_frames(block, "bottom", RigidCylinder(R, 1.0, (W / 2, -R), body_inside=True))
 
 
 def test_a_tethered_block_slides_where_its_spring_holds_the_friction(block):
@@ -122,3 +140,15 @@ def test_bad_springs_and_loads_name_their_option(block):
     system = assemble(block, Material(1e9, 0.3, 1e3), loads=[Load("top", 1e6)])  # nothing holds it along x
     with pytest.raises(NoSolutionError, match="not held"):
         steady_contact(system, contact_frames(block, "bottom", RigidFlat((0, 0), (0, 1), (1, 0))), 0.0)
+
+
+def test_a_contact_line_held_by_a_clamp_is_refused(block):
+    """A clamped node is held by the clamp, not the contact: clamping the contact group leaves no
+    contact; clamping a side that shares one corner with it is fine."""
+    from stickslip.fem.scheme import ContactProblem
+
+    system = assemble(block, Material(1e9, 0.3, 1e3), loads=[Load("top", 1e6)])
+    frames = contact_frames(block, "bottom", RigidFlat((0.0, 0.0), (0.0, 1.0), (1.0, 0.0)))
+    ContactProblem(system, frames, 0.0, ("left",))
+    with pytest.raises(ParameterError, match=r"invalid clamped = \['left', 'bottom'\].*they hold \d+ of its \d+ nodes"):
+        ContactProblem(system, frames, 0.0, ("left", "bottom"))

@@ -5,11 +5,13 @@ band is found, with or without Rayleigh damping (then against the damped blocks 
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from scipy.linalg import eigvals
 
 from stickslip.brake.fem import FemScheme, fem_growth_rates
 from stickslip.errors import ParameterError
-from stickslip.fem.cea import complex_eigenvalues
+from stickslip.fem.cea import complex_eigenvalues, covered
 
 from .test_scheme import PARAMS, general_annulus
 
@@ -25,13 +27,17 @@ def _reference(fem):
     return np.array(out)
 
 
-def test_cea_on_the_annulus_finds_exactly_the_fourier_block_modes():
+@pytest.mark.parametrize("count", [2, 8])
+def test_cea_on_the_annulus_finds_exactly_the_fourier_block_modes(count):
+    """With 2 eigenvalues per shift to start with, the sweep asks for more until its discs cover
+    the strip asked for."""
     fem = FemScheme(PARAMS, 32, 2, 0.9)
     ref = _reference(fem)
     f_ref = np.sort(ref.imag / (2 * np.pi))
     band = (0.0, 0.5 * (f_ref[14] + f_ref[15]))  # the band's edge between two modes
-    res = complex_eigenvalues(general_annulus(fem).params, band, count=8)
-    assert len(res.shifts) >= 2  # the band needs several shifts
+    res = complex_eigenvalues(general_annulus(fem).params, band, count=count)
+    assert len(res.shifts) >= 2 and res.complete  # the band needs several shifts
+    assert res.asked_below == pytest.approx(0.1 * 2 * np.pi * band[1], rel=1e-12)
     for z in res.s:
         assert np.min(np.abs(ref - z)) <= 1e-8 * abs(z)
     expected = ref[ref.imag / (2 * np.pi) <= band[1]]
@@ -90,7 +96,8 @@ def test_the_most_unstable_mode_travels_the_way_the_fourier_analysis_says():
     n_idx, b_idx = np.unravel_index(np.argmax(blocks.s.real), blocks.s.shape)
     s_ref, n_ref = blocks.s[n_idx, b_idx], int(blocks.n[n_idx])
     hi = abs(s_ref.imag) / (2 * np.pi) * 1.05
-    res = complex_eigenvalues(general.params, (0.0, hi), count=30, mode_shapes=True)
+    res = complex_eigenvalues(general.params, (0.0, hi), count=30, mode_shapes=True,
+                              complete_below=1.2 * s_ref.real)
     assert res.complete_below > s_ref.real and res.s[0].real == pytest.approx(s_ref.real, rel=1e-8)
     from stickslip.fem.cea import linearised
 
@@ -101,3 +108,49 @@ def test_the_most_unstable_mode_travels_the_way_the_fourier_analysis_says():
     peak = int(np.argmax(np.abs(spectrum)))
     wavenumber = peak if peak <= fem.n_theta // 2 else peak - fem.n_theta
     assert abs(wavenumber) == n_ref and np.sign(wavenumber) == np.sign(s_ref.imag)
+
+
+def _envelope_minimum(centres, radii, lo, hi, points=200001):
+    """The lowest point over ``[2 pi lo, 2 pi hi]`` of the upper envelope of the discs, sampled."""
+    w = np.linspace(2 * np.pi * lo, 2 * np.pi * hi, points)
+    h = np.sqrt(np.maximum(radii[:, None] ** 2 - (w[None, :] - centres[:, None]) ** 2, 0.0)).max(axis=0)
+    return h.min()
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.tuples(st.floats(0.01, 10.0), st.floats(0.1, 20.0)), min_size=1, max_size=6),
+       st.floats(0.1, 1.0))
+def test_the_covered_strip_is_never_wider_than_the_discs_cover(steps, end):
+    """Discs along the axis (each a step past the previous, the first at the band's bottom): the
+    strip reported lies under every point of the discs' envelope, sampled finely; for discs
+    that overlap only with their neighbours it is the envelope's lowest point."""
+    centres = np.cumsum([0.0] + [d for d, _ in steps[:-1]])
+    radii = np.array([r for _, r in steps])
+    hi = (centres[-1] + end * radii[-1]) / (2 * np.pi)
+    got = covered(centres, radii, 0.0, hi)
+    truth = _envelope_minimum(centres, radii, 0.0, hi)
+    assert got <= truth + 1e-6 * radii.max()
+
+
+def test_equal_discs_cover_the_height_where_they_cross():
+    r, d = 5.0, 6.0
+    centres = np.arange(4) * d
+    hi = centres[-1] / (2 * np.pi)
+    assert covered(centres, np.full(4, r), 0.0, hi) == pytest.approx(np.sqrt(r**2 - (d / 2) ** 2), rel=1e-12)
+    assert covered(centres, np.full(4, r), 0.0, hi) == pytest.approx(_envelope_minimum(centres, np.full(4, r), 0.0, hi),
+                                                                     rel=1e-6)
+    assert covered(centres, np.array([r, r, 0.1, r]), 0.0, hi) == 0.0  # a gap between two discs
+
+
+def test_a_sweep_held_to_few_eigenvalues_says_what_it_covered():
+    """Held to 4 eigenvalues per shift, the sweep cannot cover the strip asked for: it says so,
+    every reference mode inside the strip it reports is found, and some outside are not."""
+    fem = FemScheme(PARAMS, 32, 2, 0.9)
+    ref = _reference(fem)
+    band = (0.0, 900.0)
+    res = complex_eigenvalues(general_annulus(fem).params, band, count=4, max_count=4, complete_below=1e4)
+    assert not res.complete and 0 < res.complete_below < 1e4
+    in_band = ref[ref.imag / (2 * np.pi) <= band[1]]
+    expected = in_band[np.abs(in_band.real) < res.complete_below]
+    assert len(expected) >= 8 and all(np.min(np.abs(res.s - z)) <= 1e-8 * abs(z) for z in expected)
+    assert len(res.s) < len(in_band)  # the strip is what it says: a sweep this small misses modes

@@ -100,4 +100,5 @@ def test_a_checkpoint_of_the_same_parameters_on_another_contact_is_refused(annul
     other = ContactProblem(annulus.system, frames, annulus.friction, annulus.clamped)
     with pytest.raises(ParameterError) as err:
         integrate_body(other, transits=1.0, checkpoint=path, initial=start)
-    assert err.value.name == "checkpoint" and "it differs in the problem (mesh" in err.value.allowed
+    assert err.value.name == "checkpoint" and "the problem (mesh" in err.value.allowed
+    assert "surface: stored 'cylinder of radius 1" in err.value.allowed

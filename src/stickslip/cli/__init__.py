@@ -50,13 +50,15 @@ def _as_typed(argv: list[str] | None, exc: ParameterError) -> ParameterError:
     """The error with the library's parameter names (its own and those its bound depends on)
     replaced by the options of the command that was run (``transits`` -> ``--transits``),
     when the command has such options."""
-    command = typer.main.get_command(app)
+    command, path = typer.main.get_command(app), []
     for token in (sys.argv[1:] if argv is None else argv):
         sub = getattr(command, "commands", {}).get(token)
         if sub is None:
             break
         command = sub
-    options = {p.name: p.opts[0] for p in getattr(command, "params", []) if getattr(p, "opts", None)}
+        path.append(token)
+    options = dict(fem.CONFIG_NAMES) if path[:1] == ["fem"] else {}  # what the config file calls them
+    options.update({p.name: p.opts[0] for p in getattr(command, "params", []) if getattr(p, "opts", None)})
     if "checkpoint" not in options and "out" in options:  # the run file a command writes as it goes
         options["checkpoint"] = options["out"]
     typed = lambda name: name if name.startswith("-") else options.get(name, name)

@@ -197,9 +197,22 @@ def _writable_folder(name: str, path: Path, folder: Path) -> None:
                                                f"failed: {exc.strerror or type(exc).__name__})") from None
 
 
-def output_path(name: str, path: Path | None, suffix: str) -> Path | None:
+def _holds_a_run(path: Path) -> bool:
+    """``path`` is a run's checkpoint (a netCDF file with the ``run_format`` attribute)."""
+    try:
+        import xarray as xr
+
+        with xr.open_dataset(path) as ds:
+            return "run_format" in ds.attrs
+    except Exception:  # not netCDF: not a checkpoint
+        return False
+
+
+def output_path(name: str, path: Path | None, suffix: str, overwrite: bool | None = None) -> Path | None:
     """Check an output file before any work: its suffix, that it is not a folder, that its
-    folder exists and can be written to, and that an existing file can be replaced."""
+    folder exists and can be written to, and that an existing file can be replaced. With
+    ``overwrite`` given (a command that writes a result, not a run), an existing run's
+    checkpoint is replaced only if it is true."""
     if path is None:
         return None
     if path.suffix.lower() != suffix:
@@ -209,6 +222,9 @@ def output_path(name: str, path: Path | None, suffix: str) -> Path | None:
     _writable_folder(name, path, path.parent if str(path.parent) else Path("."))
     if path.exists() and not os.access(path, os.W_OK):
         raise ParameterError(name, str(path), "a file you can write to")
+    if overwrite is False and path.is_file() and _holds_a_run(path):
+        raise ParameterError(name, str(path), "a file that is not a run's checkpoint (this one holds a run, which "
+                             "this command would replace: give --overwrite to replace it)")
     return path
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import functools
+import sys
 from enum import Enum
 from pathlib import Path
 from typing import Annotated, Optional
@@ -19,7 +20,11 @@ _emit = functools.partial(emit, model="fem")  # SI units: growth rates in 1/s, f
 app = typer.Typer(no_args_is_help=True, rich_markup_mode=None,
                   help="A 2-D body of your own (a mesh file and a TOML config) on a rigid counter-surface.")
 
+#: The library's names of what a `fem` command reads from its config, as the config writes them.
+CONFIG_NAMES = {"alpha": "material.alpha", "beta": "material.beta"}
+
 Config = Annotated[Path, typer.Argument(help="The TOML config (mesh, material, contact, surface; see the docs).")]
+ReplaceRun = Annotated[bool, typer.Option("--overwrite", help="Replace --out even if it holds a run's checkpoint.")]
 Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
 
 
@@ -44,11 +49,12 @@ def _problem(config: Path):
 def steady(config: Config, json: Json = False,
            out: Annotated[Optional[Path], typer.Option(help=(
                "Write the contact line node by node to this netCDF file (.nc): forces [N/m], displacements [m] "
-               "and contact state along the arclength [m]."))] = None):
+               "and contact state along the arclength [m]."))] = None,
+           overwrite: ReplaceRun = False):
     """Steady sliding (or the preload, with friction 0): contact nodes, forces and nodes in contact."""
     from ..fem import steady_contact
 
-    out = output_path("--out", out, ".nc")
+    out = output_path("--out", out, ".nc", overwrite)
     cfg = _problem(config)
     problem = cfg.problem()
     st = steady_contact(problem.system, problem.frames, problem.friction, problem.clamped)
@@ -64,22 +70,28 @@ def cea(config: Config, json: Json = False,
             "flags, and the shifts [Hz]."))] = None,
         xdmf: Annotated[Optional[Path], typer.Option(help=(
             "Write the mode shapes for ParaView to this XDMF file (.xdmf, data in the .h5 beside it): one step per "
-            "mode, most unstable first; lengths in m, growth rate [1/s], frequency [Hz]."))] = None):
+            "mode, most unstable first; lengths in m, growth rate [1/s], frequency [Hz]."))] = None,
+        overwrite: ReplaceRun = False):
     """Complex eigenvalue analysis of steady sliding over [cea] band: growth rate [1/s] and
     frequency [Hz] of every mode found, most unstable first."""
     from ..fem import complex_eigenvalues
     from ..fem.paraview import write_modes_xdmf
 
-    out = output_path("--out", out, ".nc")
+    out = output_path("--out", out, ".nc", overwrite)
     xdmf = xdmf_path(xdmf)
     cfg = _problem(config)
     problem = cfg.problem()
-    result = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=xdmf is not None)
+    result = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=xdmf is not None,
+                                 complete_below=cfg.complete_below)
     if xdmf is not None:
         write_modes_xdmf(problem, result, xdmf)
     data = result.to_dict()
-    _emit({"modes": data["modes"], "unstable": data["unstable"], "neutral": data["neutral"], "complete_below": data["complete_below"],
-           "shifts": len(data["shifts"])}, json, "complex eigenvalue analysis")
+    if not result.complete:
+        print(f"warning: modes growing or decaying faster than {result.complete_below:.4g} 1/s may be missing "
+              f"(asked: {result.asked_below:.4g} 1/s); raise [cea] count", file=sys.stderr)
+    _emit({"modes": data["modes"], "unstable": data["unstable"], "neutral": data["neutral"],
+           "complete_below": data["complete_below"], "asked_below": data["asked_below"],
+           "shift_count": len(data["shifts"]), "params": data["params"]}, json, "complex eigenvalue analysis")
     if out is not None:
         write_netcdf(result.to_xarray(), out)
 

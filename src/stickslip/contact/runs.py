@@ -38,7 +38,7 @@ from .scheme import StepState
 from .states import STATE_ATTRS, STATE_NAMES, state_fractions
 
 __all__ = ["RunFormat", "RunRecord", "schedule", "prepare", "save", "resume", "loop", "run_explicit",
-           "run_to_dataset", "dataset_to_run", "settings_key", "snapshot_due", "volume_due"]
+           "run_to_dataset", "dataset_to_run", "settings_key", "snapshot_due", "window_snapshots", "volume_due"]
 
 _KEYS = ("chunk", "samples_total", "snap_every", "tail_samples", "samples_per_transit", "modes", "contact",
          "initial", "initial_hash", "volume_every")
@@ -282,13 +282,17 @@ def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tai
     t_end = check.positive("t_end", t_end) if transits is None else \
         check.positive("transits", transits) * scheme.transit_time
     dofs = scheme.sparse_operator.shape[0]
+    length = ("t_end", t_end) if transits is None else ("transits", transits)
     if t_end / scheme.dt * dofs > MAX_WORK:
         limit = MAX_WORK / dofs * scheme.dt
-        name, value, most = ("t_end", t_end, limit) if transits is None else \
-            ("transits", transits, limit / scheme.transit_time)
-        raise ParameterError(name, value, f"<= {most:.4g} on this mesh ({dofs} dofs, {scheme.dt:.3g} per step): "
+        if getattr(scheme, "time_step", None):  # the user's step is what makes the run too long
+            raise ParameterError("time_step", scheme.time_step, f">= {t_end * dofs / MAX_WORK:.4g} s for a run of "
+                                 f"{t_end:.4g} s on this mesh ({dofs} dofs): at most {MAX_WORK:.0e} dof-steps per "
+                                 "run (about 4 hours)", also=(length[0],))
+        most = limit if transits is None else limit / scheme.transit_time
+        raise ParameterError(*length, f"<= {most:.4g} on this mesh ({dofs} dofs, {scheme.dt:.3g} per step): "
                              f"at most {MAX_WORK:.0e} dof-steps per run (about 4 hours); continue a run from its "
-                             "checkpoint for more", also=("time_step",) if getattr(scheme, "time_step", None) else ())
+                             "checkpoint for more")
     spt = check.positive_int("samples_per_transit", samples_per_transit)
     if spt < 4:
         raise ParameterError("samples_per_transit", spt, "an integer >= 4")
@@ -299,6 +303,11 @@ def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tai
                            check.nonnegative("tail", tail)),
                 "samples_per_transit": spt, "modes": modes, "contact": bool(contact), "initial": initial.label,
                 "initial_hash": initial.digest()}
+    least = 3  # samples: with a tail of 3 samples or more, a run of 3 samples has 3 snapshots in it
+    if settings["tail_samples"] >= least and window_snapshots(settings) < 3:  # (a shorter tail: no length helps)
+        per = (t_end / length[1]) / (scheme.dt * settings["chunk"])  # samples per unit of the length typed
+        raise ParameterError(*length, f"> {(least - 1) / per:.3g} here: the limit regime is read from at least 3 "
+                             "snapshots at the end of the run")
     settings["volume_every"] = 0 if volume_every is None else max(1, int(round(min(  # in samples
         check.positive("volume_every", volume_every) * scheme.steps_per_transit / settings["chunk"], 2.0**53))))
     return t_end, settings
@@ -326,6 +335,12 @@ def save(run, path) -> None:
 #: How a difference in a key that is a digest is told (its value says nothing to a user).
 _DIFFER = {"problem_sha256": "the problem (mesh, stiffness and springs, load, contact frames or clamped dofs)",
            "initial_hash": "the initial condition"}
+#: How the schedule's internal keys are told.
+_LABELS = {"chunk": "time steps per sample (set by the time step)", "snap_every": "samples between snapshots",
+           "samples_per_transit": "samples per transit", "modes": "Fourier modes kept",
+           "contact": "contact (1) or free (0)", "volume_every": "samples between volume snapshots",
+           "initial": "initial condition", "step_given": "time step given [s] (0: none)"}
+_AFRESH = "overwrite it to start afresh"
 
 
 def resume(cls, path, scheme, settings):
@@ -334,22 +349,23 @@ def resume(cls, path, scheme, settings):
     if not path.exists():
         return None
     refused = ParameterError("checkpoint", str(path), "a checkpoint of the same run (parameters, scheme, schedule "
-                             "and initial condition must match; overwrite=True, or --overwrite on the command line, starts afresh)")
+                             "and initial condition must match; " + _AFRESH + ")")
     try:
         ds = xr.load_dataset(path)
     except (OSError, KeyError, ValueError, TypeError) as err:  # not netCDF, or damaged
-        raise refused from err
+        raise ParameterError("checkpoint", str(path), "a run's netCDF checkpoint (this file is not netCDF, or is "
+                             f"damaged or empty; {_AFRESH})") from err
     if ds.attrs.get("run_format") != RUN_FORMAT:
         raise ParameterError("checkpoint", str(path), f"a checkpoint in the run format {RUN_FORMAT} (this one: "
                              f"{ds.attrs.get('run_format', 'none')}, written by another version or another program; "
-                             "overwrite it to start afresh)")
+                             + _AFRESH + ")")
     if ds.attrs.get("source") != SOURCE or ds.attrs.get("record") != cls.__name__:
         raise ParameterError("checkpoint", str(path), f"a checkpoint of a {cls.__name__} written by {SOURCE} (this one: "
                              f"{ds.attrs.get('record', 'another record')} written by {ds.attrs.get('source', 'unknown')}; "
-                             "overwrite it to start afresh)")
+                             + _AFRESH + ")")
     if ds.attrs.get("content_sha256") != _digest(ds):
         raise ParameterError("checkpoint", str(path), "an intact checkpoint written by stickslip (its content does "
-                             "not match its checksum: the file was changed or damaged; overwrite it to start afresh)")
+                             "not match its checksum: the file was changed or damaged; " + _AFRESH + ")")
     try:
         old = dataset_to_run(cls, ds, scheme)
         stored = {k: _plain(ds.attrs[k]) for k in (*plain_attrs(scheme.params.to_attrs()), *cls.FORMAT.key_attrs)}
@@ -365,8 +381,14 @@ def resume(cls, path, scheme, settings):
         differ = [d for d in differ if d[0] != "initial_hash"]
     if differ:
         raise ParameterError("checkpoint", str(path), "a checkpoint of the same run (it differs in " + "; ".join(
-            _DIFFER.get(k, f"{k}: stored {a!r}, now {b!r}") for k, a, b in differ) + "; overwrite=True, or "
-            "--overwrite on the command line, starts afresh)")
+            _DIFFER.get(k, f"{_LABELS.get(k, k)}: stored {a!r}, now {b!r}") for k, a, b in differ) + "; " + _AFRESH
+            + ")")
+    if old.samples_done > settings["samples_total"]:
+        end = settings["samples_total"] * settings["chunk"] * scheme.dt
+        raise ParameterError("checkpoint", str(path), f"a checkpoint of a run no longer than the one asked for (it "
+                             f"holds {old.t_end:.6g} {cls.FORMAT.time_units} ({old.transits:.4g} transits) where this "
+                             f"run ends at {end:.6g} ({end / scheme.transit_time:.4g} transits): ask for at least as "
+                             f"much to continue it, or {_AFRESH})")
     return cls(scheme, {**old.settings, "samples_total": settings["samples_total"],
                         "tail_samples": settings["tail_samples"]},
                old.series, old.snapshots, old.kernel, old.samples_done)
@@ -419,6 +441,13 @@ def loop(run, checkpoint, every, progress, t_end, step: Callable, record: Callab
     if checkpoint is not None:
         save(out, checkpoint)
     return out
+
+
+def window_snapshots(st: dict) -> int:
+    """The snapshots a run of settings ``st`` keeps in the window `stickslip.contact.classify`
+    reads by default: its last ``tail_samples`` samples, every one of them a snapshot
+    (`snapshot_due`; a snapshot's time is one step before its sample's end)."""
+    return max(0, min(st["samples_total"], st["tail_samples"]))
 
 
 def snapshot_due(done: int, st: dict) -> bool:

@@ -34,13 +34,19 @@ PLANES = ("strain", "stress")
 #: Largest Young's modulus [Pa] and density [kg/m^3] accepted: a thousand times diamond's and
 #: osmium's; beyond, springs and loads vanish against the stiffness in double precision.
 MAX_MODULUS, MAX_DENSITY = 1e15, 1e7
+#: The largest load over Young's modulus (a strain scale): beyond, linear elasticity says nothing.
+MAX_STRAIN = 0.1
+#: Bounds of the Rayleigh coefficients on their own [1/s], [s]; a problem bounds them further
+#: by its mesh (`stickslip.fem.scheme.ContactProblem.check_damping`).
+MAX_ALPHA, MAX_BETA = 1e12, 1.0
 
 
 @dataclass(frozen=True)
 class Material:
     """Linear elastic material: Young's modulus ``young`` [Pa], Poisson's ratio ``poisson``,
     ``density`` [kg/m^3], ``plane`` ``"strain"`` (default) or ``"stress"``, and Rayleigh
-    damping ``C = alpha M + beta K`` (``alpha`` [1/s], ``beta`` [s], both >= 0)."""
+    damping ``C = alpha M + beta K`` (``alpha`` [1/s] in [0, 1e12], ``beta`` [s] in [0, 1]; on a
+    mesh, an explicit run bounds them further: `ContactProblem.check_damping`)."""
 
     young: float
     poisson: float
@@ -53,8 +59,8 @@ class Material:
         object.__setattr__(self, "young", check.in_range("young", self.young, 0.0, MAX_MODULUS, lo_open=True))
         object.__setattr__(self, "poisson", check.poisson_ratio("poisson", self.poisson))
         object.__setattr__(self, "density", check.in_range("density", self.density, 0.0, MAX_DENSITY, lo_open=True))
-        object.__setattr__(self, "alpha", check.nonnegative("alpha", self.alpha))
-        object.__setattr__(self, "beta", check.nonnegative("beta", self.beta))
+        object.__setattr__(self, "alpha", check.in_range("alpha", self.alpha, 0.0, MAX_ALPHA))
+        object.__setattr__(self, "beta", check.in_range("beta", self.beta, 0.0, MAX_BETA))
         if self.plane not in PLANES:
             raise ParameterError("plane", self.plane, "strain or stress")
 
@@ -227,6 +233,13 @@ def assemble(body: Body, material: Material, springs=(), loads=()) -> BodySystem
     for name, items, kind in (("springs", springs, Spring), ("loads", loads, Load)):
         if not all(isinstance(x, kind) for x in items):
             raise ParameterError(name, items, f"a sequence of {kind.__name__}")
+    for i, x in enumerate(loads):
+        size = max(abs(x.pressure), *map(abs, x.traction))
+        if size > MAX_STRAIN * material.young:
+            raise ParameterError("load.pressure" if abs(x.pressure) == size else "load.traction",
+                                 x.pressure if abs(x.pressure) == size else list(x.traction),
+                                 f"at most {MAX_STRAIN:g} x young = {MAX_STRAIN * material.young:.4g} Pa in size (load "
+                                 f"{i} on {x.group!r}: linear elasticity holds for small strains)", also=("young",))
     basis, where = _basis(body)
     K = asm(linear_elasticity(*material.lame), basis)
     # scikit-fem numbers the dofs its own way: reorder to 2 i + c, the contact machinery's

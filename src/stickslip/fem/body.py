@@ -82,6 +82,16 @@ class Body:
             raise ParameterError(option, name, f"a boundary group of {self.source} (it has: {have})")
         return self.groups[name]
 
+    def oriented(self, name: str, option: str = "group") -> np.ndarray:
+        """The edges of group ``name`` oriented as in their cell (counter-clockwise: the body on
+        the left of each edge's direction)."""
+        edges = self.group(name, option)
+        cells = self.corners
+        directed = {tuple(e) for e in np.stack([cells, np.roll(cells, -1, axis=1)], axis=-1).reshape(-1, 2).tolist()}
+        forward = np.array([tuple(e) in directed for e in edges[:, :2].tolist()], dtype=bool)
+        turned = edges[:, [1, 0] + list(range(2, edges.shape[1]))]
+        return np.where(forward[:, None], edges, turned)
+
     def nodes(self, name: str, option: str = "group") -> np.ndarray:
         """Sorted node indices of the boundary group ``name``."""
         return np.unique(self.group(name, option))

@@ -82,16 +82,6 @@ class Load:
         object.__setattr__(self, "traction", _pair("load.traction", self.traction))
 
 
-def _oriented_edges(body: Body, group: str, option: str) -> np.ndarray:
-    """The edges of ``group`` oriented as in their cell (counter-clockwise: the body on the left)."""
-    edges = body.group(group, option)
-    cells = body.corners
-    directed = {tuple(e) for e in np.stack([cells, np.roll(cells, -1, axis=1)], axis=-1).reshape(-1, 2).tolist()}
-    forward = np.array([tuple(e) in directed for e in edges[:, :2].tolist()], dtype=bool)
-    turned = edges[:, [1, 0] + list(range(2, edges.shape[1]))]
-    return np.where(forward[:, None], edges, turned)
-
-
 #: 4-point Gauss rule on [-1, 1] for the quadratic edges
 _XI, _W = np.polynomial.legendre.leggauss(4)
 
@@ -132,7 +122,7 @@ def boundary_load(body: Body, loads) -> np.ndarray:
     """Nodal forces [N per metre of thickness] of ``loads`` on all ``2 n`` dofs of ``body``."""
     force = np.zeros((len(body.points), 2))
     for load in loads:
-        edges = _oriented_edges(body, load.group, "load.group")
+        edges = body.oriented(load.group, "load.group")
         length, inward = _edge_integrals(body, edges)
         per_node = load.pressure * inward + length[..., None] * np.asarray(load.traction)
         np.add.at(force, edges.ravel(), per_node.reshape(-1, 2))

@@ -11,7 +11,9 @@ tangential rows therefore become ``K_t - f K_n`` and ``C_t - f C_n``: a non-symm
 As the linear pencil of ``(w, s w)`` (twice the size), the eigenvalues nearest a shift
 ``i 2 pi f`` in the complex ``s`` plane are found by shift-invert Arnoldi (a sparse LU of ``K + sigma C + sigma^2 M``, ARPACK
 through `scipy.sparse.linalg.eigs`); the shifts step up through the frequency band so that
-the discs of the eigenvalues found overlap, and eigenvalues found twice (within 1e-8) are merged.
+the discs of the eigenvalues found cover a strip ``|Re s| < complete_below`` along it (more
+eigenvalues are asked for where a disc is too small), and eigenvalues found twice (within
+1e-8) are merged.
 Reported: ``growth_rate = Re s`` [1/s] and ``frequency = Im s / 2 pi`` [Hz] >= 0, one mode per
 complex-conjugate pair; ``growth_rate > NEUTRAL |s|`` is flutter (squeal), within
 ``NEUTRAL |s|`` of zero the mode is neutral (its sign is round-off).
@@ -34,7 +36,7 @@ from ..errors import NoSolutionError, ParameterError
 from ..results import Result
 from .scheme import BodyScheme, ContactProblem
 
-__all__ = ["CeaModes", "linearised", "eigenvalues_near", "complex_eigenvalues", "NEUTRAL"]
+__all__ = ["CeaModes", "linearised", "eigenvalues_near", "covered", "complex_eigenvalues", "NEUTRAL"]
 
 #: Growth rates within ``NEUTRAL |s|`` of zero are neutral (neither flutter nor decay): an
 #: eigenvalue is found to about the Arnoldi tolerance (1e-12) times its condition number
@@ -71,9 +73,9 @@ class CeaModes(Result):
     """Modes of steady sliding in a band: ``s`` (complex, 1/s, ``Im s >= 0``), sorted by growth
     rate (largest first), their ``shapes`` on the kept dofs (if asked) and the ``shifts`` used [Hz].
 
-    Every mode of the band with ``|Re s| < complete_below`` [1/s] (the smallest trusted disc
-    radius of the shifts) is found; one farther from the frequency axis may be missed (raise
-    ``count``)."""
+    Every mode of the band with ``|Re s| < complete_below`` [1/s] (the strip the shifts' trusted
+    discs cover) is found; one farther from the frequency axis may be missed. ``asked_below``
+    is what was asked for; ``complete`` says whether the sweep covered it."""
 
     MODEL: ClassVar[str] = "fem"
 
@@ -82,6 +84,8 @@ class CeaModes(Result):
     shifts: np.ndarray
     band: tuple
     complete_below: float = math.inf
+    asked_below: float = 0.0  # the complete_below asked for [1/s]
+    params: dict | None = None  # the problem (`ContactProblem.to_attrs`)
 
     @property
     def growth_rate(self) -> np.ndarray:
@@ -90,6 +94,11 @@ class CeaModes(Result):
     @property
     def frequency(self) -> np.ndarray:
         return self.s.imag / (2.0 * np.pi)
+
+    @property
+    def complete(self) -> bool:
+        """The discs covered the strip asked for (``complete_below >= asked_below``)."""
+        return bool(self.complete_below >= self.asked_below)
 
     @property
     def neutral(self) -> np.ndarray:
@@ -105,8 +114,8 @@ class CeaModes(Result):
         return {"modes": [{"growth_rate": float(g), "frequency": float(f)}
                           for g, f in zip(self.growth_rate, self.frequency)],
                 "unstable": int(np.sum(self.unstable)), "neutral": int(np.sum(self.neutral)), "band_lo": float(self.band[0]), "band_hi": float(self.band[1]),
-                "complete_below": float(self.complete_below),
-                "shifts": [float(x) for x in self.shifts]}
+                "complete_below": float(self.complete_below), "asked_below": float(self.asked_below),
+                "shifts": [float(x) for x in self.shifts], **({"params": self.params} if self.params else {})}
 
     def to_xarray(self) -> xr.Dataset:
         """The modes along ``mode`` (most unstable first): growth rate [1/s], frequency [Hz],
@@ -122,8 +131,8 @@ class CeaModes(Result):
                                          "index of the mode, most unstable first"})})
         d = self.to_dict()
         return finish(ds, "complex eigenvalue analysis of steady sliding", "fem",
-                      params={"unstable_count": d["unstable"], "neutral_count": d["neutral"],
-                              **{k: d[k] for k in ("band_lo", "band_hi", "complete_below")}})
+                      params={**(self.params or {}), "unstable_count": d["unstable"], "neutral_count": d["neutral"],
+                              **{k: d[k] for k in ("band_lo", "band_hi", "complete_below", "asked_below")}})
 
 
 def eigenvalues_near(K_eff, C_eff, mass, shift_hz: float, count: int, vectors: bool):
@@ -165,11 +174,37 @@ def eigenvalues_near(K_eff, C_eff, mass, shift_hz: float, count: int, vectors: b
     return s, (vec if vectors else None), dist < radius, upper, radius
 
 
+def covered(centres, radii, lo: float, hi: float) -> float:
+    """The half-width [1/s] of the strip ``|Re s| < h`` over the frequencies ``[lo, hi]`` [Hz]
+    that the discs about ``i centres`` [rad/s] with ``radii`` [1/s] (sorted by centre, the first
+    at ``2 pi lo``) cover: the lowest of the heights where neighbouring circles cross and of
+    the envelope at ``2 pi hi`` (a lower bound where a third disc reaches over a crossing)."""
+    top = 2.0 * math.pi * hi
+    heights = [max(np.sqrt(np.maximum(radii**2 - (top - centres) ** 2, 0.0)).max(), 0.0), float(radii[0])]
+    for (wa, ra), (wb, rb) in zip(zip(centres, radii), zip(centres[1:], radii[1:])):
+        d = wb - wa
+        x = (d * d + ra * ra - rb * rb) / (2.0 * d)  # where the circles cross, from wa
+        if d >= ra + rb:  # apart: a stretch of the axis uncovered
+            heights.append(0.0)
+        elif rb >= ra + d or ra >= rb + d:  # one holds the other: the larger covers the stretch
+            heights.append(math.sqrt(max(ra, rb) ** 2 - d * d))
+        elif wa + x < top:
+            heights.append(math.sqrt(max(ra * ra - x * x, 0.0)))
+    return float(min(heights))
+
+
 def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], count: int = 30,
-                        mode_shapes: bool = False, max_shifts: int = 100) -> CeaModes:
+                        mode_shapes: bool = False, max_shifts: int = 100, complete_below: float | None = None,
+                        max_count: int | None = None) -> CeaModes:
     """The modes of steady sliding of ``problem`` with frequencies in ``band`` [Hz] (see the
-    module docstring); ``count`` eigenvalues per shift. Each shift is placed at the upper end
-    of the previous one's trusted disc, until a disc reaches past the band."""
+    module docstring), every one with ``|growth rate| < complete_below`` [1/s] found (default:
+    0.1 x 2 pi x the band's top, a mode that grows by a factor 1.9 per period there).
+
+    The first shift asks for ``count`` eigenvalues, doubled (up to ``max_count``, default 16 x
+    ``count``, at most 1000) until its trusted disc reaches 1.25 ``complete_below`` off the
+    axis, and the next shift starts with the number that sufficed; the next shift sits where that disc's edge crosses ``|Re s| = complete_below``.
+    Where ``max_count`` does not suffice the sweep goes on with what it has: the result's
+    ``complete_below`` is then what the discs cover (lower than asked)."""
     if not isinstance(problem, ContactProblem):
         raise ParameterError("problem", problem, "a ContactProblem")
     try:
@@ -178,27 +213,38 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
         raise ParameterError("band", band, "(lo, hi) in Hz") from None
     if not hi > lo:
         raise ParameterError("band", band, "(lo, hi) with hi > lo >= 0 [Hz]")
+    reach = 0.1 * 2.0 * math.pi * hi if complete_below is None else \
+        check.positive("complete_below", complete_below)
     K_eff, C_eff, mass, _ = linearised(problem)
-    count = min(check.positive_int("count", count), K_eff.shape[0] - 2)
+    most = K_eff.shape[0] - 2
+    count = min(check.positive_int("count", count), most)
+    max_count = min(1000, 16 * count) if max_count is None else check.positive_int("max_count", max_count)
+    max_count = max(count, min(max_count, most))
     max_shifts = check.positive_int("max_shifts", max_shifts)
-    found, shapes, shifts, shift, reach = [], [], [], lo, math.inf
+    found, shapes, shifts, radii, shift, k = [], [], [], [], lo, count
     while True:
         if len(shifts) >= max_shifts:
-            raise NoSolutionError(f"the band {lo:g}-{hi:g} Hz needs more than {max_shifts} shifts of {count} "
-                                  "eigenvalues: narrow it or raise count")
-        s, vec, trusted, upper, radius = eigenvalues_near(K_eff, C_eff, mass, shift, count, mode_shapes)
+            raise NoSolutionError(f"the band {lo:g}-{hi:g} Hz needs more than {max_shifts} shifts of up to "
+                                  f"{max_count} eigenvalues: narrow it or raise count")
+        while True:
+            s, vec, trusted, _, radius = eigenvalues_near(K_eff, C_eff, mass, shift, k, mode_shapes)
+            if radius >= 1.25 * reach or k >= max_count:
+                break
+            k = min(2 * k, max_count)
         shifts.append(shift)
-        reach = min(reach, radius)
-        for k in np.flatnonzero(trusted):
-            if not any(abs(s[k] - x) <= 1e-8 * abs(s[k]) for x in found):
-                found.append(s[k])
-                shapes.append(vec[:, k] if vec is not None else None)
-        if upper >= hi:
+        radii.append(radius)
+        for j in np.flatnonzero(trusted):
+            if not any(abs(s[j] - x) <= 1e-8 * abs(s[j]) for x in found):
+                found.append(s[j])
+                shapes.append(vec[:, j] if vec is not None else None)
+        step = math.sqrt(radius**2 - min(reach, 0.8 * radius) ** 2) / (2.0 * math.pi)  # [Hz]
+        if shift + step >= hi:
             break
-        shift = max(upper, shift * (1 + 1e-9) + 1e-9)
+        shift = max(shift + step, shift * (1 + 1e-9) + 1e-9)
     s = np.array(found)
     inside = (s.imag / (2 * math.pi) >= lo) & (s.imag / (2 * math.pi) <= hi)
     order = np.argsort(-s.real[inside], kind="stable")
     s = s[inside][order]
     vecs = np.array([shapes[i] for i in np.flatnonzero(inside)[order]]).T if mode_shapes and s.size else None
-    return CeaModes(s, vecs, np.array(shifts), (lo, hi), float(reach))
+    reached = covered(2.0 * math.pi * np.array(shifts), np.array(radii), lo, hi)
+    return CeaModes(s, vecs, np.array(shifts), (lo, hi), reached, reach, problem.to_attrs())

@@ -26,13 +26,17 @@
     traction = [0.0, 0.0]           # [tx, ty] [Pa] (optional)
 
     [surface]                       # the rigid counter-surface, one of:
-    kind = "cylinder"               # radius, omega [rad/s], center = [x, y], body_inside = false
-    # kind = "flat"                 # point = [x, y], normal = [nx, ny] (into the body), velocity = [vx, vy]
-    interference = 1e-5             # how far the surface is pushed into the body [m] (optional)
+    kind = "cylinder"               # radius [m], omega [rad/s] (> 0: counter-clockwise), center = [x, y] [m],
+                                    # body_inside = false (true: the body inside the cylinder, a drum)
+    # kind = "flat"                 # point = [x, y] [m], normal = [nx, ny] (into the body), velocity = [vx, vy] [m/s]
+    interference = 1e-5             # how far the surface is pushed into the body [m] (optional, either kind;
+                                    # a flat is moved along its normal, a cylinder's radius changed)
 
-    [cea]                           # for `stickslip fem cea`
-    band = [0.0, 20000.0]           # [Hz]
-    count = 30                      # eigenvalues per shift
+    [cea]                           # for `stickslip fem cea` (optional)
+    band = [0.0, 20000.0]           # [Hz] (default [0, 10000])
+    count = 30                      # eigenvalues per shift to start with (default 30)
+    complete_below = 5e3            # [1/s]: every mode with |growth rate| below it is found
+                                    # (default 0.1 x 2 pi x the band's top)
 
 `load_config(path)` returns a `FemConfig`; `FemConfig.problem()` builds the `ContactProblem`.
 """
@@ -45,11 +49,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..errors import ParameterError
-from .assembly import MAX_DENSITY, MAX_MODULUS, PLANES, Material, assemble
+from .assembly import MAX_ALPHA, MAX_BETA, MAX_DENSITY, MAX_MODULUS, MAX_STRAIN, PLANES, Material, assemble
 from .body import read_body
 from .boundary import LIMIT, Load, Spring
 from .scheme import ContactProblem
-from .surfaces import RigidCylinder, RigidFlat, contact_frames
+from .surfaces import MAX_SPEED, RigidCylinder, RigidFlat, contact_frames
 
 __all__ = ["FemConfig", "load_config"]
 
@@ -58,7 +62,7 @@ _KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "cea", "spri
           "contact": {"group", "friction", "static_friction"},
           "surface": {"kind", "radius", "omega", "center", "body_inside", "point", "normal", "velocity",
                       "interference"},
-          "cea": {"band", "count"}}
+          "cea": {"band", "count", "complete_below"}}
 
 
 @dataclass(frozen=True)
@@ -78,6 +82,7 @@ class FemConfig:
     springs: tuple = ()
     loads: tuple = ()
     body: object = field(default=None, repr=False, compare=False)  # the mesh as read while checking
+    complete_below: float | None = None  # [cea] complete_below [1/s] (None: the default of complex_eigenvalues)
 
     def problem(self) -> ContactProblem:
         """Assemble the body and set the contact up (the mesh is read again if not kept)."""
@@ -146,8 +151,8 @@ def load_config(path) -> FemConfig:
     young = _number(problems, "material.young", m.get("young"), positive=True, hi=MAX_MODULUS)
     poisson = _number(problems, "material.poisson", m.get("poisson"), 0.0, 0.5)
     density = _number(problems, "material.density", m.get("density"), positive=True, hi=MAX_DENSITY)
-    alpha = _number(problems, "material.alpha", m.get("alpha", 0.0), 0.0)
-    beta = _number(problems, "material.beta", m.get("beta", 0.0), 0.0)
+    alpha = _number(problems, "material.alpha", m.get("alpha", 0.0), 0.0, MAX_ALPHA)
+    beta = _number(problems, "material.beta", m.get("beta", 0.0), 0.0, MAX_BETA)
     plane = m.get("plane", "strain")
     if plane not in PLANES:
         problems.append(f"material.plane = {plane!r} must be one of {', '.join(PLANES)}")
@@ -162,7 +167,7 @@ def load_config(path) -> FemConfig:
     springs = _springs(problems, data.get("spring", []))
     loads = _loads(problems, data.get("load", []))
     surface = _surface(problems, data.get("surface", {}) if isinstance(data.get("surface", {}), dict) else {},
-                       friction)
+                       friction, "surface" in data)
     e = data.get("cea", {}) if isinstance(data.get("cea", {}), dict) else {}
     band = e.get("band", [0.0, 1e4])
     if not (isinstance(band, list) and len(band) == 2 and all(isinstance(b, (int, float)) and math.isfinite(b)
@@ -172,13 +177,20 @@ def load_config(path) -> FemConfig:
     count = e.get("count", 30)
     if not (isinstance(count, int) and not isinstance(count, bool) and 2 <= count <= 1000):
         problems.append(f"cea.count = {count!r} must be an integer in [2, 1000]")
+    below = e.get("complete_below")
+    if below is not None:
+        below = _number(problems, "cea.complete_below", below, positive=True, hi=1e12)
+    if young is not None:
+        problems += [f"load[{i}] = {max(abs(x.pressure), *map(abs, x.traction)):g} Pa must be at most {MAX_STRAIN:g} x "
+                     f"material.young = {MAX_STRAIN * young:.4g} Pa in size (linear elasticity holds for small strains)"
+                     for i, x in enumerate(loads) if max(abs(x.pressure), *map(abs, x.traction)) > MAX_STRAIN * young]
     body = _body(problems, mesh_path, clamped, group, springs, loads, data, surface)
     if problems:
         raise ParameterError("config", str(path), f"a valid config; {len(problems)} problem"
                              f"{'s' if len(problems) > 1 else ''}: " + "; ".join(problems))
     material = Material(young, poisson, density, plane, alpha, beta)
     return FemConfig(path, mesh_path, tuple(clamped), material, group, friction, surface, tuple(band), count,
-                     static, springs, loads, body)
+                     static, springs, loads, body, below)
 
 
 def _body(problems, mesh_path, clamped, group, springs, loads, data, surface):
@@ -196,6 +208,9 @@ def _body(problems, mesh_path, clamped, group, springs, loads, data, surface):
     named += [(f"{kind}[{i}].group", t["group"]) for kind in ("spring", "load")
               for i, t in enumerate(data.get(kind, []) if isinstance(data.get(kind, []), list) else [])
               if isinstance(t, dict) and isinstance(t.get("group"), str)]
+    if isinstance(group, str) and group in clamped:
+        problems.append(f"clamped = {clamped!r} must not hold the contact group {group!r} (a clamped node is held "
+                        "by the clamp, not the contact)")
     missing = [(where, name) for where, name in named if isinstance(name, str) and name not in body.groups]
     problems += [f"{where} = {name!r} is not a boundary group of {mesh_path.name} (it has: {have})"
                  for where, name in missing]
@@ -203,9 +218,14 @@ def _body(problems, mesh_path, clamped, group, springs, loads, data, surface):
         try:
             contact_frames(body, group, surface)
         except ParameterError as err:
-            where = "surface" if err.name == "surface" else f"surface.{err.name}"
+            where = "surface" if err.name == "surface" else f"surface.{err.name} = {_toml(err.value)}"
             problems.append(f"{where} must be {err.allowed}")
     return body
+
+
+def _toml(value) -> str:
+    """A value as it is written in the config."""
+    return str(value).lower() if isinstance(value, bool) else repr(value)
 
 
 def _tables(problems, name, value, keys):
@@ -242,8 +262,18 @@ def _loads(problems, value):
     return tuple(out)
 
 
-def _surface(problems, s, friction):
+_SURFACE_KEYS = {"cylinder": {"radius", "omega", "center", "body_inside"}, "flat": {"point", "normal", "velocity"}}
+
+
+def _surface(problems, s, friction, given=True):
     kind = s.get("kind")
+    if not given:
+        problems.append('[surface] is missing (the rigid counter-surface: kind = "cylinder" or "flat")')
+        return None
+    if kind in _SURFACE_KEYS:
+        other = "flat" if kind == "cylinder" else "cylinder"
+        problems += [f"surface.{k} does not apply to kind = {kind!r} (it belongs to {other!r})"
+                     for k in sorted(_SURFACE_KEYS[other] & set(s))]
     rubs = friction is not None and friction > 0  # a surface at rest gives friction no direction
     push = _number(problems, "surface.interference", s.get("interference", 0.0))
     if kind == "cylinder":
@@ -259,6 +289,10 @@ def _surface(problems, s, friction):
             return None
         if None in (radius, omega, center, push) or not isinstance(inside, bool):
             return None
+        if abs(omega) * radius > MAX_SPEED:
+            problems.append(f"surface.omega = {omega!r} must be at most {MAX_SPEED / radius:.4g} rad/s in size "
+                            f"(the surface at most {MAX_SPEED:g} m/s)")
+            return None
         radius = radius - push if inside else radius + push  # pushed into the body
         if radius <= 0:
             problems.append("surface.interference leaves the cylinder no radius")
@@ -269,6 +303,9 @@ def _surface(problems, s, friction):
         normal = _pair(problems, "surface.normal", s.get("normal"))
         velocity = _pair(problems, "surface.velocity", s.get("velocity"))
         if None in (point, normal, velocity, push):
+            return None
+        if math.hypot(*velocity) > MAX_SPEED:
+            problems.append(f"surface.velocity = {list(velocity)!r} must be at most {MAX_SPEED:g} m/s in size")
             return None
         if rubs and velocity == (0.0, 0.0):
             problems.append("surface.velocity = [0.0, 0.0] must be non-zero when contact.friction > 0 (a surface "

@@ -31,10 +31,13 @@ from .. import validation as check
 from ..contact import ExplicitScheme
 from ..errors import ParameterError
 from .assembly import BodySystem
-from .static import SteadyContact, frame_rotation, steady_contact
+from .static import SteadyContact, frame_rotation, problem_attrs, steady_contact
 from .surfaces import ContactFrames
 
-__all__ = ["ContactProblem", "BodyScheme"]
+__all__ = ["ContactProblem", "BodyScheme", "MAX_OVERDAMPING"]
+
+#: The most an explicit run lets Rayleigh damping overdamp the mesh's highest mode (times critical).
+MAX_OVERDAMPING = 100.0
 
 
 @dataclass(frozen=True, eq=False)
@@ -63,6 +66,11 @@ class ContactProblem:
         object.__setattr__(self, "clamped", tuple(self.clamped))
         for name in self.clamped:
             self.system.body.nodes(name, "clamped")
+        free = int(np.sum(~self.fixed[2 * self.frames.nodes]))
+        if free < 2:
+            raise ParameterError("clamped", list(self.clamped), f"groups that leave the contact line free (they hold "
+                                 f"{len(self.frames.nodes) - free} of its {len(self.frames.nodes)} nodes: a clamped "
+                                 "node is held by the clamp, not the contact)")
 
     @cached_property
     def fixed(self) -> np.ndarray:
@@ -87,6 +95,24 @@ class ContactProblem:
         lam = sla.eigsh(A, k=1, which="LA", return_eigenvectors=False, tol=1e-10, v0=start)
         return float(np.sqrt(lam[0]) * (1.0 + 1e-6))
 
+    def check_damping(self) -> None:
+        """Refuse Rayleigh damping that would make an explicit run crawl: the mesh's highest mode
+        damped more than ``MAX_OVERDAMPING`` times critically, ``alpha + beta omega_max^2 >
+        2 MAX_OVERDAMPING omega_max``. The stable step shrinks about in proportion (``beta
+        omega_max = 1e6`` asks for some 1e6 times more steps). The CEA has no step: any damping
+        within the material's ranges goes."""
+        m = self.system.material
+        if m.alpha == 0.0 and m.beta == 0.0:
+            return
+        w, top = self.omega_max, 2.0 * MAX_OVERDAMPING * self.omega_max
+        if m.alpha + m.beta * w * w > top * (1.0 + 1e-12):
+            name, value, most = ("beta", m.beta, (top - m.alpha) / (w * w)) if m.beta > 0 else ("alpha", m.alpha, top)
+            raise ParameterError(name, value, f"<= {max(most, 0.0):.4g} {'s' if name == 'beta' else '1/s'} on this "
+                                 f"mesh for an explicit run: alpha + beta omega_max^2 <= {2 * MAX_OVERDAMPING:g} "
+                                 f"omega_max, its highest mode (omega_max = {w:.4g} rad/s) at most {MAX_OVERDAMPING:g} "
+                                 "times critically damped (the stable step shrinks in proportion)",
+                                 also=("alpha" if name == "beta" else "beta",))
+
     @cached_property
     def digest(self) -> str:
         """SHA-256 of the mesh, the stiffness (with its springs), the load, the contact frames and
@@ -100,15 +126,9 @@ class ContactProblem:
         return h.hexdigest()
 
     def to_attrs(self) -> dict:
-        """The problem as netCDF attributes: material, friction, clamped groups and its digest."""
-        m = self.system.material
-        return {"young": m.young, "poisson": m.poisson, "density": m.density, "plane": m.plane, "alpha": m.alpha,
-                "beta": m.beta, "friction": self.friction, "static_friction": self.static_friction,
-                "clamped": ",".join(self.clamped),
-                "springs": "; ".join(f"{k.group}: {k.stiffness[0]:g}, {k.stiffness[1]:g} N/m per m" for k in self.system.springs),
-                "loads": "; ".join(f"{x.group}: pressure {x.pressure:g} Pa, traction {x.traction[0]:g}, "
-                                   f"{x.traction[1]:g} Pa" for x in self.system.loads),
-                "contact_nodes": int(len(self.frames.nodes)), "problem_sha256": self.digest}
+        """The problem as netCDF attributes (`stickslip.fem.static.problem_attrs`) and its digest."""
+        return {**problem_attrs(self.system, self.frames, self.friction, self.clamped, self.static_friction),
+                "problem_sha256": self.digest}
 
     def to_dict(self) -> dict:
         return self.to_attrs()
@@ -132,6 +152,13 @@ class BodyScheme(ExplicitScheme):
             if step > self.dt_max:
                 raise ParameterError("time_step", step, f"<= the stable step {self.dt_max:.6g} s of this mesh "
                                      f"(its highest mode: omega_max = {self.omega_max:.6g} rad/s, with its damping)")
+
+    @cached_property
+    def dt_max(self) -> float:
+        """The stable step (`ExplicitScheme.dt_max`), once the damping is checked
+        (`ContactProblem.check_damping`)."""
+        self.params.check_damping()
+        return ExplicitScheme.dt_max.func(self)
 
     # --- dofs: the free ones, in nodal frames at the contact nodes --------------------
     @cached_property

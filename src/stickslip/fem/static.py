@@ -11,13 +11,15 @@ remaining dofs solve the non-symmetric linear system
 
 with ``F`` the constant boundary load (`stickslip.fem.boundary`), where ``A`` are the normal dofs of the active nodes and ``S`` puts ``f p`` on their
 tangential dofs. The active set starts with every node touching or penetrating and is
-updated (nodes in tension leave, penetrating ones join) until it settles. ``f = 0`` is the
-static preload (frictionless contact).
+updated (nodes in tension leave, penetrating ones join) until it settles; if no node
+touches, it starts with the nearest ones (the load closes the gap). ``f = 0`` is the static
+preload (frictionless contact).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from pathlib import Path
 from typing import ClassVar
 
 import numpy as np
@@ -32,7 +34,24 @@ from ..results import Result
 from .assembly import BodySystem
 from .surfaces import ContactFrames
 
-__all__ = ["SteadyContact", "frame_rotation", "steady_contact"]
+__all__ = ["SteadyContact", "frame_rotation", "steady_contact", "problem_attrs"]
+
+
+def problem_attrs(system: BodySystem, frames: ContactFrames, friction: float, clamped=(),
+                  static_friction: float | None = None) -> dict:
+    """The problem as netCDF attributes: mesh, material, springs, loads, contact group, surface,
+    friction and clamped groups."""
+    m = system.material
+    surface = frames.surface.describe() if hasattr(frames.surface, "describe") else "not recorded"
+    # the mesh file's name only: a run moved with its mesh resumes
+    return {"mesh": Path(str(system.body.source)).name, "young": m.young, "poisson": m.poisson, "density": m.density,
+            "plane": m.plane, "alpha": m.alpha, "beta": m.beta, "friction": float(friction),
+            "static_friction": float(friction if static_friction is None else static_friction),
+            "clamped": ",".join(clamped), "contact_group": frames.group, "surface": surface,
+            "springs": "; ".join(f"{k.group}: {k.stiffness[0]:g}, {k.stiffness[1]:g} N/m per m" for k in system.springs),
+            "loads": "; ".join(f"{x.group}: pressure {x.pressure:g} Pa, traction {x.traction[0]:g}, "
+                               f"{x.traction[1]:g} Pa" for x in system.loads),
+            "contact_nodes": int(len(frames.nodes))}
 
 
 def frame_rotation(n_dofs: int, frames: ContactFrames) -> sp.csr_matrix:
@@ -69,12 +88,13 @@ class SteadyContact(Result):
     active: np.ndarray
     iterations: int
     points: np.ndarray | None = None  # the contact nodes' reference positions [m] (for to_xarray)
+    params: dict | None = None  # the problem (`problem_attrs`)
 
     def to_dict(self) -> dict:
         return {"contact_nodes": int(len(self.pressure)), "active_nodes": int(self.active.sum()),
                 "normal_force": float(self.pressure.sum()), "friction_force": float(self.shear.sum()),
                 "max_node_force": float(self.pressure.max()), "friction": float(self.friction),
-                "iterations": int(self.iterations)}
+                "iterations": int(self.iterations), **({"params": self.params} if self.params else {})}
 
     def to_xarray(self) -> xr.Dataset:
         f = self.frames
@@ -104,7 +124,8 @@ class SteadyContact(Result):
                                                               "contact line from its first node"})})
         kind = "steady sliding" if self.friction > 0 else "static preload (frictionless contact)"
         return finish(ds, f"{kind} of a general body on a rigid counter-surface", "fem",
-                      params={**self.to_dict(), "closed_line": int(f.closed)})
+                      params={**{k: v for k, v in self.to_dict().items() if k != "params"}, **(self.params or {}),
+                              "closed_line": int(f.closed)})
 
 
 def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 0.0, clamped=(),
@@ -125,7 +146,8 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
         fixed[system.dofs(system.body.nodes(name, "clamped"))] = True
     normal_dofs, tangent_dofs = 2 * frames.nodes, 2 * frames.nodes + 1
     free = ~fixed[normal_dofs]  # a clamped contact node (a shared corner) is held by the clamp, not the contact
-    active = (frames.gap <= 0.0) & free
+    nearest = max(0.0, float(frames.gap[free].min())) if free.any() else 0.0
+    active = (frames.gap <= nearest * (1.0 + 1e-9)) & free  # if nothing touches, the nearest nodes
     for iteration in range(1, max_iterations + 1):
         try:
             w, p = _solve(Kw, Fw, fixed, normal_dofs[active], tangent_dofs[active], -frames.gap[active], friction,
@@ -142,7 +164,7 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
         new = (active & (pressure >= 0.0)) | penetrating
         if np.array_equal(new, active):
             return SteadyContact(frames, friction, T @ w, pressure, friction * pressure, active.copy(), iteration,
-                                 system.body.points[frames.nodes])
+                                 system.body.points[frames.nodes], problem_attrs(system, frames, friction, clamped))
         active = new
     raise NoSolutionError(f"the contact active set did not settle in {max_iterations} iterations")
 

@@ -24,7 +24,10 @@ import numpy as np
 from .. import validation as check
 from ..errors import ParameterError
 
-__all__ = ["RigidCylinder", "RigidFlat", "ContactFrames", "contact_frames"]
+__all__ = ["RigidCylinder", "RigidFlat", "ContactFrames", "contact_frames", "MAX_SPEED"]
+
+#: The fastest surface [m/s] (a bound on the input, far above any sliding speed of interest).
+MAX_SPEED = 1e6
 
 
 @dataclass(frozen=True)
@@ -36,12 +39,23 @@ class RigidCylinder:
     center: tuple = (0.0, 0.0)
     body_inside: bool = False
 
+    #: the option that says which side of the surface the body is on
+    SIDE = "body_inside"
+
     def __post_init__(self):
         check.positive("radius", self.radius)
         check.finite("omega", self.omega)
         if len(self.center) != 2:
             raise ParameterError("center", self.center, "two coordinates (x, y) [m]")
         object.__setattr__(self, "center", tuple(check.finite("center", c) for c in self.center))
+        if abs(self.omega) * self.radius > MAX_SPEED:
+            raise ParameterError("omega", self.omega, f"at most {MAX_SPEED:g} m/s at the surface in size: "
+                                 f"|omega| <= {MAX_SPEED / self.radius:.4g} rad/s", also=("radius",))
+
+    def describe(self) -> str:
+        side = "the body inside it" if self.body_inside else "the body outside it"
+        return (f"cylinder of radius {self.radius:.9g} m about ({self.center[0]:.9g}, {self.center[1]:.9g}) m turning "
+                f"at {self.omega:.9g} rad/s, {side}")
 
     def geometry(self, points: np.ndarray):
         """``(n, t, g, speed)`` at ``points`` ``(k, 2)``."""
@@ -65,17 +79,25 @@ class RigidFlat:
     normal: tuple
     velocity: tuple
 
+    SIDE = "normal"
+
     def __post_init__(self):
         for name in ("point", "normal", "velocity"):
             value = getattr(self, name)
             if len(value) != 2:
                 raise ParameterError(name, value, "two components (x, y)")
             object.__setattr__(self, name, tuple(check.finite(name, c) for c in value))
+        if math.hypot(*self.velocity) > MAX_SPEED:
+            raise ParameterError("velocity", list(self.velocity), f"at most {MAX_SPEED:g} m/s in size")
         if math.hypot(*self.normal) == 0:
             raise ParameterError("normal", self.normal, "a non-zero vector")
         n = np.asarray(self.normal) / math.hypot(*self.normal)
         if abs(float(np.dot(n, self.velocity))) > 1e-12 * max(1.0, math.hypot(*self.velocity)):
             raise ParameterError("velocity", self.velocity, "along the flat (no component along its normal)")
+
+    def describe(self) -> str:
+        return (f"flat through ({self.point[0]:.9g}, {self.point[1]:.9g}) m with normal ({self.normal[0]:.9g}, "
+                f"{self.normal[1]:.9g}) into the body, moving at ({self.velocity[0]:.9g}, {self.velocity[1]:.9g}) m/s")
 
     def geometry(self, points: np.ndarray):
         n = np.asarray(self.normal, float) / math.hypot(*self.normal)
@@ -89,7 +111,8 @@ class RigidFlat:
 @dataclass(frozen=True, eq=False)
 class ContactFrames:
     """Contact nodes (sorted along the contact line), their frames, gaps, surface speeds and
-    arclengths [m]; ``closed``: the line closes on itself (a bore)."""
+    arclengths [m]; ``closed``: the line closes on itself (a bore); the ``surface`` and the
+    boundary ``group`` they were made from (for the record)."""
 
     nodes: np.ndarray
     normal: np.ndarray
@@ -98,6 +121,8 @@ class ContactFrames:
     speed: np.ndarray
     arclength: np.ndarray
     closed: bool = False
+    surface: object = None
+    group: str = ""
 
 
 def _order_along(points: np.ndarray, edges: np.ndarray, nodes: np.ndarray) -> np.ndarray:
@@ -124,7 +149,9 @@ def contact_frames(body, group: str, surface, tolerance: float = 0.05) -> Contac
     """The frames of the nodes of boundary ``group`` of ``body`` against ``surface``.
 
     The surface must touch the group: every node within ``tolerance`` times the group's
-    length of it (a `ParameterError` naming ``surface`` otherwise).
+    length of it (a `ParameterError` naming ``surface`` otherwise), and the body must lie on
+    the side the surface's normal points into at every edge of the group (a `ParameterError`
+    naming the surface's ``body_inside`` or ``normal`` otherwise: the surface would pull).
     """
     edges = body.segments(group, "contact_group")
     nodes = _order_along(body.points, edges, np.unique(edges))
@@ -138,4 +165,23 @@ def contact_frames(body, group: str, surface, tolerance: float = 0.05) -> Contac
         raise ParameterError("surface", surface, f"touching boundary group {group!r} (its node {int(nodes[worst])} "
                              f"is {g[worst]:.3g} m from it, more than {tolerance:g} x the group's length "
                              f"{length:.3g} m)")
-    return ContactFrames(nodes, n, t, g, speed, s, closed=len(edges) == len(nodes))
+    _check_side(body, group, surface)
+    return ContactFrames(nodes, n, t, g, speed, s, closed=len(edges) == len(nodes), surface=surface, group=group)
+
+
+def _check_side(body, group: str, surface) -> None:
+    """Refuse a surface whose normal points out of the body at some edge of ``group``."""
+    edges = body.oriented(group, "contact_group")[:, :2]
+    a, b = body.points[edges[:, 0]], body.points[edges[:, 1]]
+    d = b - a
+    inward = np.column_stack([-d[:, 1], d[:, 0]])  # the body is on the left of a counter-clockwise edge
+    n = surface.geometry(0.5 * (a + b))[0]
+    wrong = np.flatnonzero(np.sum(n * inward, axis=1) <= 0.0)
+    if wrong.size:
+        value = getattr(surface, surface.SIDE)
+        fix = (f"body_inside = {str(not value).lower()}" if surface.SIDE == "body_inside"
+               else f"normal = [{0.0 - value[0]:g}, {0.0 - value[1]:g}]")
+        raise ParameterError(surface.SIDE, list(value) if surface.SIDE == "normal" else value,
+                             f"such that the body lies on the side the surface's normal points into: at "
+                             f"{wrong.size} of the {len(edges)} edges of boundary group {group!r} it lies on the "
+                             f"other side, where the surface would pull it (try {fix})")
