@@ -154,3 +154,20 @@ def test_a_sweep_held_to_few_eigenvalues_says_what_it_covered():
     expected = in_band[np.abs(in_band.real) < res.complete_below]
     assert len(expected) >= 8 and all(np.min(np.abs(res.s - z)) <= 1e-8 * abs(z) for z in expected)
     assert len(res.s) < len(in_band)  # the strip is what it says: a sweep this small misses modes
+
+
+def test_an_eigenvalue_search_that_fails_is_a_no_solution_error(monkeypatch):
+    """ARPACK giving up (as it does where heavy damping crowds eigenvalues about a shift) is told
+    as a NoSolutionError naming the shift, not an internal error."""
+    import scipy.sparse.linalg as sla
+
+    from stickslip.errors import NoSolutionError
+
+    def give_up(*args, **kwargs):
+        raise sla.ArpackError(3)
+
+    fem = FemScheme(PARAMS, 32, 2, 0.9)
+    problem = general_annulus(fem).params
+    monkeypatch.setattr(sla, "eigs", give_up)
+    with pytest.raises(NoSolutionError, match="did not converge near 0 Hz"):
+        complex_eigenvalues(problem, (0.0, 100.0))

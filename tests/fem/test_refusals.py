@@ -88,14 +88,12 @@ def test_keys_of_the_other_surface_and_a_missing_surface_are_named(meshes, tmp_p
 def test_damping_that_overdamps_the_mesh_is_refused_before_any_step(meshes, tmp_path, capsys):
     """The block's highest mode is near 9.4e5 rad/s: beta = 0.1 s damps it 5e4 times critically,
     and the explicit step would shrink by as much (the run would crawl for hours): refused for
-    a run, with the bound (100 times critical: beta <= 200 / omega_max); the CEA has no step and
-    takes it. alpha = 1e300 is out of any range."""
+    a run, with the bound (100 times critical: beta <= 200 / omega_max). alpha = 1e300 is out of
+    any range."""
     heavy = _config(meshes, tmp_path, "block_on_belt", "block.toml", ("poisson = 0.3", "poisson = 0.3\nbeta = 0.1"))
     err = _refused(capsys, ["fem", "run", str(heavy)], "material.beta = 0.1", "100 times critically damped")
     bound = float(err.split("must be <= ")[1].split()[0])
     assert 200 / 1.1e6 < bound < 200 / 0.8e6
-    assert run(["fem", "cea", str(heavy), "--json"]) == 0
-    capsys.readouterr()
     huge = _config(meshes, tmp_path, "block_on_belt", "block.toml", ("poisson = 0.3", "poisson = 0.3\nalpha = 1e300"))
     _refused(capsys, ["fem", "cea", str(huge)], "material.alpha = 1e+300")
     light = _config(meshes, tmp_path, "block_on_belt", "block.toml",

@@ -43,6 +43,11 @@ __all__ = ["CeaModes", "linearised", "eigenvalues_near", "covered", "complex_eig
 #: (1e5 on the examples, from a dense eigensolver's left and right eigenvectors).
 NEUTRAL = 1e-7
 
+#: Arnoldi restarts allowed per shift: shift-invert converges in a few where the eigenvalues near
+#: the shift are apart; where they crowd (heavy damping) it would grind through ARPACK's default
+#: (10 n) for minutes before giving up.
+MAX_RESTARTS = 300
+
 
 def linearised(problem: ContactProblem):
     """``(K_eff, C_eff or None, mass, kept)``: the linearised operators on the kept dofs
@@ -163,7 +168,13 @@ def eigenvalues_near(K_eff, C_eff, mass, shift_hz: float, count: int, vectors: b
         return np.concatenate([y1, (b1 + sigma * y1) / om])
 
     op = sla.LinearOperator((2 * n, 2 * n), matvec=solve, dtype=complex)
-    nu, vec = sla.eigs(op, k=min(count, 2 * n - 2), return_eigenvectors=True, tol=1e-12)
+    try:
+        nu, vec = sla.eigs(op, k=min(count, 2 * n - 2), return_eigenvectors=True, tol=1e-12, maxiter=MAX_RESTARTS)
+    except (sla.ArpackError, sla.ArpackNoConvergence) as err:
+        raise NoSolutionError(f"the eigenvalue search did not converge near {shift_hz:.6g} Hz with {count} "
+                              f"eigenvalues ({' '.join(str(err).split()[:6])}...): eigenvalues crowd the shift (heavy "
+                              "damping puts many near -1/beta); narrow the band or lower [cea] count or "
+                              "complete_below") from None
     s = sigma + 1.0 / nu
     dist = np.abs(s - sigma)
     radius = 0.9 * dist.max()
@@ -202,7 +213,8 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
 
     The first shift asks for ``count`` eigenvalues, doubled (up to ``max_count``, default 16 x
     ``count``, at most 1000) until its trusted disc reaches 1.25 ``complete_below`` off the
-    axis, and the next shift starts with the number that sufficed; the next shift sits where that disc's edge crosses ``|Re s| = complete_below``.
+    axis (or until doubling widens the disc by less than 1.3: eigenvalues crowd the shift), and
+    the next shift starts with the number that sufficed (or afresh, if none did); the next shift sits where that disc's edge crosses ``|Re s| = complete_below``.
     Where ``max_count`` does not suffice the sweep goes on with what it has: the result's
     ``complete_below`` is then what the discs cover (lower than asked)."""
     if not isinstance(problem, ContactProblem):
@@ -218,7 +230,8 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
     K_eff, C_eff, mass, _ = linearised(problem)
     most = K_eff.shape[0] - 2
     count = min(check.positive_int("count", count), most)
-    max_count = min(1000, 16 * count) if max_count is None else check.positive_int("max_count", max_count)
+    max_count = min(1000, 16 * count, max(count, most // 2)) if max_count is None else \
+        check.positive_int("max_count", max_count)  # (beyond a quarter of the pencil Arnoldi gains nothing)
     max_count = max(count, min(max_count, most))
     max_shifts = check.positive_int("max_shifts", max_shifts)
     found, shapes, shifts, radii, shift, k = [], [], [], [], lo, count
@@ -226,11 +239,15 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
         if len(shifts) >= max_shifts:
             raise NoSolutionError(f"the band {lo:g}-{hi:g} Hz needs more than {max_shifts} shifts of up to "
                                   f"{max_count} eigenvalues: narrow it or raise count")
+        before = 0.0
         while True:
             s, vec, trusted, _, radius = eigenvalues_near(K_eff, C_eff, mass, shift, k, mode_shapes)
-            if radius >= 1.25 * reach or k >= max_count:
+            crowded = 0 < before and radius < 1.3 * before  # eigenvalues crowd the shift (heavy damping)
+            if radius >= 1.25 * reach or k >= max_count or crowded:
                 break
-            k = min(2 * k, max_count)
+            k, before = min(2 * k, max_count), radius
+        if radius < 1.25 * reach:
+            k = count  # doubling did not suffice here: the next shift starts afresh
         shifts.append(shift)
         radii.append(radius)
         for j in np.flatnonzero(trusted):
