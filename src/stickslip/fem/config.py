@@ -1,4 +1,4 @@
-"""A general-body problem from a small TOML config, validated with every problem listed at once.
+"""A general-body problem from a small TOML config, validated with every problem listed at once::
 
     mesh = "pad.msh"                # any mesh meshio reads; relative to the config file
     clamped = ["top"]               # boundary groups held fixed (optional)
