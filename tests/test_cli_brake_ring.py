@@ -42,3 +42,10 @@ def test_a_checkpoint_of_another_run_is_refused_and_overwrite_starts_afresh(tmp_
     assert fresh["params"]["friction"] == 0.5
     assert run(base + ["--friction", "0.5"]) == 0  # and now it resumes
     assert json.loads(capsys.readouterr().out) == fresh
+
+
+def test_overwrite_without_a_checkpoint_is_refused_not_ignored(capsys):
+    for command in ("integrate", "fem"):
+        assert run(["brake", command, "--omega", "50", "--mismatch", "1e-4", "--overwrite"]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "--overwrite" in err and "without --out" in err, err

@@ -312,6 +312,12 @@ _FEM = {
     "contact_nodes": ("1", "nodes of the contact group"),
     "active_nodes": ("1", "contact nodes in contact"),
     "iterations": ("1", "active-set iterations"),
+    "regime": ("", "limit regime: the contact states present, joined by '-'"),
+    "loaded": ("", "the contact carries a load (normal force above 1e-10 x young x the body's size)"),
+    "c": ("rad/s", "pattern speed along the contact line in theta = 2 pi s / L per second (s: arclength from "
+                   "the line's first node; c L / 2 pi in m/s)"),
+    "c_over_cp": ("1", "pattern speed over the P-wave speed"),
+    "c_over_surface": ("1", "pattern speed over the surface's mean speed"),
     "band_lo": ("Hz", "lower end of the frequency band"),
     "band_hi": ("Hz", "upper end of the frequency band"),
     "friction": ("1", "Coulomb friction coefficient"),

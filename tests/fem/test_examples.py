@@ -268,7 +268,7 @@ def test_problems_found_in_the_mesh_join_the_others_in_one_line(tmp_path, capsys
     assert run(["fem", "cea", str(path)]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "5 problems" in err, err
-    for words in ("material.young = -1.0", "material.density is missing", "clamped = 'front' is not a boundary group",
+    for words in ("material.young = -1.0", "material.density is missing", "clamped[1] = 'front' is not a boundary group",
                   "contact.group = 'lining' is not a boundary group", "it has: back, ends, face", "surface.omega = 0.0"):
         assert words in err, (words, err)
     path.write_text(text.replace("young = 1.0e10", "young = -1.0").replace("radius = 0.15", "radius = 0.25"))

@@ -101,3 +101,29 @@ def test_cycle_validation():
         limit_cycle(osc, x0=float("nan"))
     with pytest.raises(ParameterError, match="tol"):
         limit_cycle(osc, tol=0.0)
+
+
+@pytest.mark.parametrize("mass, stiffness, normal_force, option", [
+    (1e-320, 1.0, 1.0, "mass"),  # k / m overflows (was: `oscillator cycle` spun for ever)
+    (1e300, 1e-150, 1.0, "mass"),  # k / m underflows to 1e-450
+    (1e-250, 1e-100, 1e150, "normal_force"),  # N / k = 1e250
+])
+def test_scales_beyond_double_precision_are_refused(mass, stiffness, normal_force, option):
+    from stickslip.errors import ParameterError
+    from stickslip.friction import Coulomb
+    from stickslip.oscillator import Oscillator
+
+    with pytest.raises(ParameterError) as err:
+        Oscillator(mass, stiffness, normal_force, 0.2, Coulomb(0.6, 0.4))
+    assert err.value.name == option
+    Oscillator(1e-199, 1.0, 1.0, 0.2, Coulomb(0.6, 0.4))  # inside the range: accepted
+
+
+def test_a_subnormal_mass_on_the_command_line_is_one_line_exit_2(capsys):
+    from stickslip.cli import run
+
+    args = ["oscillator", "cycle", "--stiffness", "1", "--normal-force", "1", "--belt-speed", "0.2", "--fs", "0.6",
+            "--fd", "0.4", "--mass", "1e-320", "--json"]
+    assert run(args) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--mass = 1e-320" in err, err

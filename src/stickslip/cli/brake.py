@@ -11,8 +11,8 @@ import typer
 
 from .. import validation as check
 from ..errors import ParameterError
-from .common import (AXIS_HELP, Overwrite, RunOut, XdmfEvery, axis, emit, output_folder, output_path, progress_bar,
-                     write_netcdf, xdmf_snapshots)
+from .common import (AXIS_HELP, Overwrite, RunOut, XdmfEvery, axis, emit, output_folder, output_path, overwrite_needs,
+                     progress_bar, write_netcdf, xdmf_snapshots)
 
 _emit = functools.partial(emit, model="brake")  # results are printed with the units of this model
 
@@ -192,6 +192,7 @@ def integrate_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta
     """Time integration of [12] on the ring from perturbed steady sliding; classifies the limit regime."""
     from ..brake import classify, integrate, perturbed_steady
 
+    overwrite_needs(overwrite, "--out", out)
     out = output_path("--out", out, ".nc")
     p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
@@ -319,6 +320,7 @@ def fem_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = Non
     """Finite element model of section 3.1 (scikit-fem): run to the limit regime and classify it."""
     from ..brake.fem import FemScheme, classify_fem, integrate_fem, perturbed_steady, write_xdmf
 
+    overwrite_needs(overwrite, "--out", out)
     out = output_path("--out", out, ".nc")
     xdmf, volume_every = xdmf_snapshots(xdmf, xdmf_every)
     p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,

@@ -228,6 +228,12 @@ def output_path(name: str, path: Path | None, suffix: str, overwrite: bool | Non
     return path
 
 
+def overwrite_needs(overwrite: bool, name: str, path) -> None:
+    """``--overwrite`` without the output it would replace is refused, not ignored."""
+    if overwrite and path is None:
+        raise ParameterError("--overwrite", True, f"left out without {name} (there is no file to replace)")
+
+
 def output_folder(name: str, path: Path, suffix: str | None = None) -> Path:
     """Check an output folder (a store, a results folder) before any work: its suffix, that it is
     not a file, and that it or its nearest existing parent can be written to."""

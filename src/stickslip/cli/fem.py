@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import functools
+import math
 import sys
 from enum import Enum
 from pathlib import Path
@@ -12,8 +13,8 @@ import typer
 
 from .. import validation as check
 from ..errors import ParameterError
-from .common import (Overwrite, RunOut, XdmfEvery, emit, output_path, progress_bar, write_netcdf, xdmf_path,
-                     xdmf_snapshots)
+from .common import (Overwrite, RunOut, XdmfEvery, emit, output_path, overwrite_needs, progress_bar, write_netcdf,
+                     xdmf_path, xdmf_snapshots)
 
 _emit = functools.partial(emit, model="fem")  # SI units: growth rates in 1/s, frequencies in Hz
 
@@ -52,12 +53,15 @@ def steady(config: Config, json: Json = False,
                "and contact state along the arclength [m]."))] = None,
            overwrite: ReplaceRun = False):
     """Steady sliding (or the preload, with friction 0): contact nodes, forces and nodes in contact."""
-    from ..fem import steady_contact
-
+    overwrite_needs(overwrite, "--out", out)
     out = output_path("--out", out, ".nc", overwrite)
     cfg = _problem(config)
     problem = cfg.problem()
-    st = steady_contact(problem.system, problem.frames, problem.friction, problem.clamped)
+    st = problem.steady
+    if not st.loaded:
+        print(f"warning: the contact carries no load (normal force {st.pressure.sum():.3g} N/m, at most "
+              f"{st.load_floor:.3g}): the body only touches, and which nodes count as active is round-off",
+              file=sys.stderr)
     _emit(st.to_dict(), json, "steady sliding")
     if out is not None:
         write_netcdf(st.to_xarray(), out)
@@ -77,6 +81,7 @@ def cea(config: Config, json: Json = False,
     from ..fem import complex_eigenvalues
     from ..fem.paraview import write_modes_xdmf
 
+    overwrite_needs(overwrite, "--out", out)
     out = output_path("--out", out, ".nc", overwrite)
     xdmf = xdmf_path(xdmf)
     cfg = _problem(config)
@@ -111,6 +116,10 @@ def run(config: Config,
             "Write volume snapshots for ParaView to this XDMF file (.xdmf, data in the .h5 beside it): "
             "displacement [m], velocity [m/s], contact forces [N/m] and states, cell stresses [Pa]; times [s]."))] = None,
         xdmf_every: XdmfEvery = None,
+        window: Annotated[Optional[float], typer.Option(help=(
+            "Classify the limit regime over the last this many transits (> 0, at most --transits; default the "
+            "run's dense tail, 2 transits: the wave scale). A stick-slip cycle is often much longer: give a "
+            "window of several cycles."))] = None,
         overwrite: Overwrite = False, json: Json = False):
     """Explicit dynamics from perturbed steady sliding (or the preload, --start), then the limit
     regime on the contact nodes."""
@@ -119,12 +128,16 @@ def run(config: Config,
     from ..fem.scheme import BodyScheme
     from ..fem.surfaces import RigidFlat
 
+    overwrite_needs(overwrite, "--out", out)
     out = output_path("--out", out, ".nc")
     xdmf, volume_every = xdmf_snapshots(xdmf, xdmf_every)
     if amplitude is not None and start is not Start.steady:
         raise ParameterError("--amplitude", amplitude, f"not given with --start {start.value} (it sets the noise "
                              "of --start steady)")
     amplitude = check.in_range("--amplitude", 1e-3 if amplitude is None else amplitude, 0.0, 100.0)
+    if window is not None and not (math.isfinite(window) and 0.0 < window <= transits):
+        raise ParameterError("--window", window, f"in (0, {transits:g}] transits (at most --transits)",
+                             also=("--transits",))
     cfg = _problem(config)
     if start is Start.stick and not isinstance(cfg.surface, RigidFlat):
         raise ParameterError("--start", start.value, "steady or rest with a rotating cylinder (stick moves the "
@@ -141,4 +154,10 @@ def run(config: Config,
                                 progress=tick, overwrite=overwrite, volume_every=volume_every)
     if xdmf is not None:
         write_run_xdmf(result, xdmf)
-    _emit(classify_body(result).to_dict(), json, "limit regime")
+    try:
+        regime = classify_body(result, window)
+    except ParameterError as err:
+        if window is None or err.name != "transits":
+            raise
+        raise ParameterError("--window", window, err.allowed) from None
+    _emit(regime.to_dict(), json, "limit regime")

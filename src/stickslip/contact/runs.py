@@ -338,7 +338,8 @@ _DIFFER = {"problem_sha256": "the problem (mesh, stiffness and springs, load, co
 #: How the schedule's internal keys are told.
 _LABELS = {"chunk": "time steps per sample (set by the time step)", "snap_every": "samples between snapshots",
            "samples_per_transit": "samples per transit", "modes": "Fourier modes kept",
-           "contact": "contact (1) or free (0)", "volume_every": "samples between volume snapshots",
+           "contact": "contact (1) or free (0)", "volume_every": "samples between volume snapshots (0: none; set by volume_every, on the command "
+                           "line by --xdmf and --xdmf-every)",
            "initial": "initial condition", "step_given": "time step given [s] (0: none)"}
 _AFRESH = "overwrite it to start afresh"
 
@@ -355,6 +356,9 @@ def resume(cls, path, scheme, settings):
     except (OSError, KeyError, ValueError, TypeError) as err:  # not netCDF, or damaged
         raise ParameterError("checkpoint", str(path), "a run's netCDF checkpoint (this file is not netCDF, or is "
                              f"damaged or empty; {_AFRESH})") from err
+    if "run_format" not in ds.attrs and str(ds.attrs.get("source", "")).startswith("stickslip"):
+        raise ParameterError("checkpoint", str(path), "a run's checkpoint (this file is another stickslip result: "
+                             f"{ds.attrs.get('title', 'not a run')}; give another path, or {_AFRESH})")
     if ds.attrs.get("run_format") != RUN_FORMAT:
         raise ParameterError("checkpoint", str(path), f"a checkpoint in the run format {RUN_FORMAT} (this one: "
                              f"{ds.attrs.get('run_format', 'none')}, written by another version or another program; "
@@ -387,7 +391,7 @@ def resume(cls, path, scheme, settings):
         end = settings["samples_total"] * settings["chunk"] * scheme.dt
         raise ParameterError("checkpoint", str(path), f"a checkpoint of a run no longer than the one asked for (it "
                              f"holds {old.t_end:.6g} {cls.FORMAT.time_units} ({old.transits:.4g} transits) where this "
-                             f"run ends at {end:.6g} ({end / scheme.transit_time:.4g} transits): ask for at least as "
+                             f"run ends at {end:.6g} {cls.FORMAT.time_units} ({end / scheme.transit_time:.4g} transits): ask for at least as "
                              f"much to continue it, or {_AFRESH})")
     return cls(scheme, {**old.settings, "samples_total": settings["samples_total"],
                         "tail_samples": settings["tail_samples"]},

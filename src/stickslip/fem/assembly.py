@@ -36,6 +36,9 @@ PLANES = ("strain", "stress")
 MAX_MODULUS, MAX_DENSITY = 1e15, 1e7
 #: The largest load over Young's modulus (a strain scale): beyond, linear elasticity says nothing.
 MAX_STRAIN = 0.1
+#: The stiffest spring on a node, over the elastic stiffness of its own dof: a million times
+#: stiffer is a clamp (use one); beyond, the eigenvalues lose the body's digits to round-off.
+MAX_SPRING_RATIO = 1e6
 #: Bounds of the Rayleigh coefficients on their own [1/s], [s]; a problem bounds them further
 #: by its mesh (`stickslip.fem.scheme.ContactProblem.check_damping`).
 MAX_ALPHA, MAX_BETA = 1e12, 1.0
@@ -247,6 +250,21 @@ def assemble(body: Body, material: Material, springs=(), loads=()) -> BodySystem
     lumped = _lumped_mass(basis, order, material.density, body.order == 2)
     K = K[order][:, order].tocsr()
     if springs:
+        _check_springs(body, springs, K.diagonal())
         K = (K + boundary_springs(body, springs)).tocsr()
     load = boundary_load(body, loads) if loads else None
     return BodySystem(body, material, K, lumped, load, springs, loads)
+
+
+def _check_springs(body: Body, springs, elastic: np.ndarray) -> None:
+    """Refuse a spring stiffer on some dof than ``MAX_SPRING_RATIO`` times its elastic stiffness."""
+    for i, spring in enumerate(springs):
+        diag = boundary_springs(body, [spring]).diagonal()
+        on = diag > 0
+        ratio = np.max(diag[on] / elastic[on])
+        if ratio > MAX_SPRING_RATIO:
+            most = float(np.min(elastic[on] / diag[on])) * MAX_SPRING_RATIO * max(spring.stiffness)
+            raise ParameterError(f"spring[{i}].stiffness", list(spring.stiffness),
+                                 f"at most {most:.4g} N/m per metre on this mesh and material: on no node more than "
+                                 f"{MAX_SPRING_RATIO:g} times the body's own stiffness there (a stiffer spring is a "
+                                 "clamp: clamp the group instead)", also=("young",))

@@ -51,11 +51,19 @@ MAX_RESTARTS = 300
 
 def linearised(problem: ContactProblem):
     """``(K_eff, C_eff or None, mass, kept)``: the linearised operators on the kept dofs
-    (the free dofs of `BodyScheme` less the normal dofs of the contact nodes in contact)."""
+    (the free dofs of `BodyScheme` less the normal dofs of the contact nodes in contact).
+    A steady state that carries no load (`SteadyContact.loaded`) is a `NoSolutionError`: which
+    nodes touch it is round-off."""
     scheme = BodyScheme(problem)
     K = scheme.stiffness
     normal, tangent = scheme.contact_dofs
-    touching = problem.steady.active[scheme.contact_nodes]
+    steady = problem.steady
+    if not steady.loaded:
+        raise NoSolutionError(f"steady sliding carries no contact force (in total {steady.pressure.sum():.3g} N/m, "
+                              f"at most {steady.load_floor:.3g} N/m: 1e-10 x young x the body's size), so which nodes "
+                              "touch is round-off and there is nothing to linearise about: push the surface into the "
+                              "body (surface.interference > 0) or press the body on it with a load")
+    touching = steady.active[scheme.contact_nodes]
     normal, tangent = normal[touching], tangent[touching]
     keep = np.setdiff1d(np.arange(scheme.free.size), normal)
     mat = problem.system.material
@@ -172,9 +180,8 @@ def eigenvalues_near(K_eff, C_eff, mass, shift_hz: float, count: int, vectors: b
         nu, vec = sla.eigs(op, k=min(count, 2 * n - 2), return_eigenvectors=True, tol=1e-12, maxiter=MAX_RESTARTS)
     except (sla.ArpackError, sla.ArpackNoConvergence) as err:
         raise NoSolutionError(f"the eigenvalue search did not converge near {shift_hz:.6g} Hz with {count} "
-                              f"eigenvalues ({' '.join(str(err).split()[:6])}...): eigenvalues crowd the shift (heavy "
-                              "damping puts many near -1/beta); narrow the band or lower [cea] count or "
-                              "complete_below") from None
+                              f"eigenvalues ({' '.join(str(err).split()[:6])}...): eigenvalues crowd the "
+                              "shift") from None
     s = sigma + 1.0 / nu
     dist = np.abs(s - sigma)
     radius = 0.9 * dist.max()
@@ -241,7 +248,10 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
                                   f"{max_count} eigenvalues: narrow it or raise count")
         before = 0.0
         while True:
-            s, vec, trusted, _, radius = eigenvalues_near(K_eff, C_eff, mass, shift, k, mode_shapes)
+            try:
+                s, vec, trusted, _, radius = eigenvalues_near(K_eff, C_eff, mass, shift, k, mode_shapes)
+            except NoSolutionError as err:
+                raise NoSolutionError(f"{err}{_overdamped(problem.system.material)}") from None
             crowded = 0 < before and radius < 1.3 * before  # eigenvalues crowd the shift (heavy damping)
             if radius >= 1.25 * reach or k >= max_count or crowded:
                 break
@@ -265,3 +275,21 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
     vecs = np.array([shapes[i] for i in np.flatnonzero(inside)[order]]).T if mode_shapes and s.size else None
     reached = covered(2.0 * math.pi * np.array(shifts), np.array(radii), lo, hi)
     return CeaModes(s, vecs, np.array(shifts), (lo, hi), reached, reach, problem.to_attrs())
+
+
+def _overdamped(material) -> str:
+    """Where Rayleigh damping overdamps the modes (a mode of frequency ``w`` is overdamped when
+    ``alpha + beta w^2 > 2 w``), as advice for a search that failed."""
+    alpha, beta = material.alpha, material.beta
+    if alpha == 0 and beta == 0:
+        return ""
+    if alpha * beta >= 1:
+        return " (Rayleigh damping overdamps every mode here: alpha beta >= 1): damp less"
+    root = math.sqrt(1.0 - alpha * beta)
+    parts = []
+    if beta > 0:
+        parts.append(f"above {(1 + root) / beta / (2 * math.pi):.4g} Hz (beta puts their eigenvalues near -1/beta)")
+    if alpha > 0:
+        parts.append(f"below {alpha / (1 + root) / (2 * math.pi):.4g} Hz (alpha puts theirs near 0 and -alpha)")
+    return (f": Rayleigh damping overdamps every mode {' and '.join(parts)}, and a shift near them finds only that "
+            "crowd; keep the band well inside, or damp less")

@@ -103,9 +103,10 @@ def _number(problems, where, value, lo=None, hi=None, positive=False):
     if ok and hi is not None and value >= hi:
         ok = False
     if not ok:
-        rng = f"in (0, {hi:g})" if positive and hi is not None else "> 0" if positive else f"in [{lo}, {hi})" if hi is not None else f">= {lo}" if lo is not None else "finite"
-        problems.append(f"{where} is missing (a number {rng})" if value is None
-                        else f"{where} = {value!r} must be a number {rng}")
+        rng = (f"a number in (0, {hi:g})" if positive and hi is not None else "a number > 0" if positive
+               else f"a number in [{lo}, {hi})" if hi is not None else f"a number >= {lo}" if lo is not None
+               else "a finite number")
+        problems.append(f"{where} is missing ({rng})" if value is None else f"{where} = {value!r} must be {rng}")
         return None
     return float(value)
 
@@ -114,7 +115,8 @@ def _pair(problems, where, value):
     if isinstance(value, list) and len(value) == 2 and all(
             isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in value):
         return tuple(float(v) for v in value)
-    problems.append(f"{where} = {value!r} must be two numbers [x, y]")
+    problems.append(f"{where} is missing (two numbers [x, y])" if value is None
+                    else f"{where} = {value!r} must be two numbers [x, y]")
     return None
 
 
@@ -181,9 +183,13 @@ def load_config(path) -> FemConfig:
     if below is not None:
         below = _number(problems, "cea.complete_below", below, positive=True, hi=1e12)
     if young is not None:
-        problems += [f"load[{i}] = {max(abs(x.pressure), *map(abs, x.traction)):g} Pa must be at most {MAX_STRAIN:g} x "
-                     f"material.young = {MAX_STRAIN * young:.4g} Pa in size (linear elasticity holds for small strains)"
-                     for i, x in enumerate(loads) if max(abs(x.pressure), *map(abs, x.traction)) > MAX_STRAIN * young]
+        big = MAX_STRAIN * young
+        problems += [f"load[{i}].pressure = {x.pressure!r} must be at most {MAX_STRAIN:g} x material.young = {big:.4g} "
+                     "Pa in size (linear elasticity holds for small strains)" for i, x in enumerate(loads)
+                     if abs(x.pressure) > big]
+        problems += [f"load[{i}].traction = {list(x.traction)!r} must be at most {MAX_STRAIN:g} x material.young = "
+                     f"{big:.4g} Pa in size (linear elasticity holds for small strains)" for i, x in enumerate(loads)
+                     if max(map(abs, x.traction)) > big]
     body = _body(problems, mesh_path, clamped, group, springs, loads, data, surface)
     if problems:
         raise ParameterError("config", str(path), f"a valid config; {len(problems)} problem"
@@ -204,13 +210,17 @@ def _body(problems, mesh_path, clamped, group, springs, loads, data, surface):
         problems.append(str(err))
         return None
     have = ", ".join(sorted(body.groups)) or "none"
-    named = [("clamped", name) for name in clamped] + [("contact.group", group)]
+    named = [(f"clamped[{i}]", name) for i, name in enumerate(clamped)] + [("contact.group", group)]
     named += [(f"{kind}[{i}].group", t["group"]) for kind in ("spring", "load")
               for i, t in enumerate(data.get(kind, []) if isinstance(data.get(kind, []), list) else [])
               if isinstance(t, dict) and isinstance(t.get("group"), str)]
     if isinstance(group, str) and group in clamped:
         problems.append(f"clamped = {clamped!r} must not hold the contact group {group!r} (a clamped node is held "
                         "by the clamp, not the contact)")
+    held = {int(i) for name in clamped if name in body.groups for i in body.nodes(name)}
+    problems += [f"{where} = {name!r}: every node of it is clamped (clamped = {clamped!r}), so the "
+                 f"{where.split('[')[0]} would act on nothing" for where, name in named[len(clamped) + 1:]
+                 if name in body.groups and set(body.nodes(name).tolist()) <= held]
     missing = [(where, name) for where, name in named if isinstance(name, str) and name not in body.groups]
     problems += [f"{where} = {name!r} is not a boundary group of {mesh_path.name} (it has: {have})"
                  for where, name in missing]
@@ -320,5 +330,6 @@ def _surface(problems, s, friction, given=True):
             return None
         shifted = (point[0] + push * normal[0] / size, point[1] + push * normal[1] / size)
         return RigidFlat(shifted, normal, velocity)
-    problems.append(f"surface.kind = {kind!r} must be cylinder or flat")
+    problems.append('surface.kind is missing ("cylinder" or "flat")' if kind is None
+                    else f'surface.kind = {kind!r} must be "cylinder" or "flat"')
     return None

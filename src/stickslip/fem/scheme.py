@@ -66,6 +66,12 @@ class ContactProblem:
         object.__setattr__(self, "clamped", tuple(self.clamped))
         for name in self.clamped:
             self.system.body.nodes(name, "clamped")
+        body = self.system.body
+        for kind, items in (("spring", self.system.springs), ("load", self.system.loads)):
+            for i, item in enumerate(items):
+                if np.all(self.fixed[2 * body.nodes(item.group)]):
+                    raise ParameterError("clamped", list(self.clamped), f"groups that leave a node of {kind}[{i}] on "
+                                         f"{item.group!r} free (they hold all of them: the {kind} would act on nothing)")
         free = int(np.sum(~self.fixed[2 * self.frames.nodes]))
         if free < 2:
             raise ParameterError("clamped", list(self.clamped), f"groups that leave the contact line free (they hold "
@@ -82,7 +88,8 @@ class ContactProblem:
 
     @cached_property
     def steady(self) -> SteadyContact:
-        return steady_contact(self.system, self.frames, self.friction, self.clamped)
+        return steady_contact(self.system, self.frames, self.friction, self.clamped,
+                              static_friction=self.static_friction)
 
     @cached_property
     def omega_max(self) -> float:
@@ -260,6 +267,12 @@ class BodyScheme(ExplicitScheme):
     def transit_time(self) -> float:
         """The contact line's length over the P-wave speed [s]."""
         return self.line_length / self.params.system.material.p_wave_speed
+
+    @property
+    def speed_scales(self) -> dict:
+        """The P-wave speed and the surface's mean speed along the line, in ``theta`` per second."""
+        return {"cp": 2.0 * np.pi / self.transit_time,
+                "surface": 2.0 * np.pi * float(np.mean(self.params.frames.speed)) / self.line_length}
 
     @property
     def step_given(self) -> float:

@@ -34,7 +34,11 @@ from ..results import Result
 from .assembly import BodySystem
 from .surfaces import ContactFrames
 
-__all__ = ["SteadyContact", "frame_rotation", "steady_contact", "problem_attrs"]
+__all__ = ["SteadyContact", "frame_rotation", "steady_contact", "problem_attrs", "LOAD_FLOOR"]
+
+#: A total normal force below ``LOAD_FLOOR`` x Young's modulus x the body's size [N/m] is no load
+#: (a mean strain of 1e-10: round-off of the geometry gives some 1e-16, a preload 1e-6 or more).
+LOAD_FLOOR = 1e-10
 
 
 def problem_attrs(system: BodySystem, frames: ContactFrames, friction: float, clamped=(),
@@ -89,12 +93,21 @@ class SteadyContact(Result):
     iterations: int
     points: np.ndarray | None = None  # the contact nodes' reference positions [m] (for to_xarray)
     params: dict | None = None  # the problem (`problem_attrs`)
+    load_floor: float = 0.0  # [N/m]: a total normal force at most this is no load (see `loaded`)
+
+    @property
+    def loaded(self) -> bool:
+        """The contact carries a load: the total normal force exceeds ``load_floor`` (``LOAD_FLOOR``
+        times Young's modulus times the body's size, a strain far below any preload and far above
+        round-off). Otherwise the body merely touches and which nodes are active is round-off."""
+        return bool(self.pressure.sum() > self.load_floor)
 
     def to_dict(self) -> dict:
         return {"contact_nodes": int(len(self.pressure)), "active_nodes": int(self.active.sum()),
                 "normal_force": float(self.pressure.sum()), "friction_force": float(self.shear.sum()),
                 "max_node_force": float(self.pressure.max()), "friction": float(self.friction),
-                "iterations": int(self.iterations), **({"params": self.params} if self.params else {})}
+                "loaded": self.loaded, "iterations": int(self.iterations),
+                **({"params": self.params} if self.params else {})}
 
     def to_xarray(self) -> xr.Dataset:
         f = self.frames
@@ -125,18 +138,21 @@ class SteadyContact(Result):
         kind = "steady sliding" if self.friction > 0 else "static preload (frictionless contact)"
         return finish(ds, f"{kind} of a general body on a rigid counter-surface", "fem",
                       params={**{k: v for k, v in self.to_dict().items() if k != "params"}, **(self.params or {}),
-                              "closed_line": int(f.closed)})
+                              "closed_line": int(f.closed), "loaded": int(self.loaded)})
 
 
 def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 0.0, clamped=(),
-                   max_iterations: int = 50) -> SteadyContact:
+                   max_iterations: int = 50, static_friction: float | None = None) -> SteadyContact:
     """Steady sliding of ``system`` on the surface of ``frames`` (see the module docstring).
 
     ``clamped`` names boundary groups whose dofs are fixed (a contact node among them is held
     by the clamp, not by contact); without any, the contact and the friction must hold the
-    body (else the system is singular: `NoSolutionError`).
+    body (else the system is singular: `NoSolutionError`). ``static_friction`` is only
+    recorded in ``params`` (every node slips in steady sliding, at ``friction``).
     """
     friction = check.nonnegative("friction", friction)
+    if static_friction is not None:
+        static_friction = check.at_least("static_friction", static_friction, friction, "friction")
     n_dofs = system.n_dofs
     T = frame_rotation(n_dofs, frames)
     Kw = (T.T @ system.K @ T).tocsr()
@@ -163,8 +179,11 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
         penetrating = free & (~active) & (w[normal_dofs] < -frames.gap - 1e-12 * np.max(np.abs(frames.gap)))
         new = (active & (pressure >= 0.0)) | penetrating
         if np.array_equal(new, active):
+            points = system.body.points
+            size = float(np.hypot(*(points.max(axis=0) - points.min(axis=0))))
             return SteadyContact(frames, friction, T @ w, pressure, friction * pressure, active.copy(), iteration,
-                                 system.body.points[frames.nodes], problem_attrs(system, frames, friction, clamped))
+                                 points[frames.nodes], problem_attrs(system, frames, friction, clamped, static_friction),
+                                 LOAD_FLOOR * system.material.young * size)
         active = new
     raise NoSolutionError(f"the contact active set did not settle in {max_iterations} iterations")
 
