@@ -160,4 +160,24 @@ def run(config: Config,
         if window is None or err.name != "transits":
             raise
         raise ParameterError("--window", window, err.allowed) from None
+    warn_short_window(result, regime)
     _emit(regime.to_dict(), json, "limit regime")
+
+
+#: The largest difference of a state's node-time fraction between the classification window and
+#: the last half of the run before the window is said to miss a longer cycle.
+WINDOW_MISMATCH = 0.1
+
+
+def warn_short_window(run, regime) -> None:
+    """Warn on stderr when the window's state fractions differ from those of the run's last half
+    (the window sees one phase of a longer cycle, such as the stick of a stick-slip cycle)."""
+    half = run.t >= 0.5 * run.t_end
+    if regime.window[0] <= run.t_end * 0.5 or not half.any():
+        return
+    whole = dict(zip(regime.fractions, run.series["fractions"][half].mean(axis=0)))
+    worst = max(regime.fractions, key=lambda k: abs(regime.fractions[k] - whole[k]))
+    if abs(regime.fractions[worst] - whole[worst]) > WINDOW_MISMATCH:
+        print(f"warning: the classification window ({(regime.window[1] - regime.window[0]):.3g} s) differs from the "
+              f"run's last half ({worst} {regime.fractions[worst]:.3g} vs {whole[worst]:.3g}): it sees part of a "
+              "longer cycle; widen --window", file=sys.stderr)
