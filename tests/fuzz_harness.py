@@ -85,7 +85,7 @@ def example_config() -> str:
 SAME_QUANTITY = [("--xi", "--inner-radius", "--outer-radius"), ("--gamma", "--omega", "--young", "--density"),
                  ("--delta", "--mismatch")]
 NEVER_NUMBERS = ["nan", "inf", "-inf", "abc", ""]
-EXTREMES = ["0", "-1", "1e300", "-1e300", "1e-300"]
+EXTREMES = ["0", "-1", "1e300", "-1e300", "1e-300", "1e-320"]  # the last one subnormal
 
 
 def options_typed(*types) -> list[tuple[str, str]]:

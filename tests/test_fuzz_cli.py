@@ -3,12 +3,12 @@ extreme value at a time, on an otherwise valid and cheap invocation (`fuzz_harne
 
 * Values that are never a number (NaN, infinities, text, empty): exit 2 and one line on
   stderr naming the option as typed (``--t-end``, not ``t_end``). In-process, all options.
-* Extreme but finite values (0, -1, +-1e300, 1e-300): a finite result (stdout and every
+* Extreme but finite values (0, -1, +-1e300, 1e-300, the subnormal 1e-320): a finite result (stdout and every
   file written) with nothing on stderr, or exit 1/2 with one line, the option named for
   exit 2; never exit 3, a traceback or a hang. Each trial runs in a forked child with a
-  time limit (`fuzz_harness.trial`). `make test` runs two of the five values per option
-  (the pair rotates over the options, so each value meets two fifths of them); the slow
-  set (CI) runs the other three on every option, and a Hypothesis-generated battery of
+  time limit (`fuzz_harness.trial`). `make test` runs two of the six values per option
+  (the pair rotates over the options, so each value meets a third of them); the slow
+  set (CI) runs the other four on every option, and a Hypothesis-generated battery of
   values on options.
 """
 

@@ -48,7 +48,19 @@ def test_positive_and_finite_refuse_what_is_not_a_finite_real(value):
         out = _outcome(func, "x", value)
         if not isinstance(out, ParameterError):
             assert isinstance(out, float) and math.isfinite(out)
+            assert out == 0.0 or abs(out) >= 2.2250738585072014e-308  # zero or normal, never subnormal
 
 
 def test_numpy_integers_are_integers():
     assert check.positive_int("x", np.int64(3)) == 3 and check.count("x", np.float64(4.0), 5) == 4
+
+
+@pytest.mark.parametrize("value", [1e-320, -4.9e-324, 2.2e-308])
+def test_subnormal_numbers_are_refused_and_naming_the_option(value):
+    """1e-320 as a density or a mass reached divisions by zero and infinite frequencies (found
+    by the CLI fuzz test); zero and the smallest normal number pass."""
+    for func in (check.finite, check.nonnegative if value > 0 else check.finite):
+        with pytest.raises(ParameterError, match="subnormal") as err:
+            func("density", value)
+        assert err.value.name == "density"
+    assert check.finite("x", 0.0) == 0.0 and check.positive("x", 2.2250738585072014e-308) > 0

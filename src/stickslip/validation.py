@@ -3,18 +3,24 @@
 from __future__ import annotations
 
 import math
+import sys
 from numbers import Real
 
 from .errors import ParameterError
 
 
 def finite(name: str, value) -> float:
-    """Return ``value`` as float; it must be a finite real number."""
+    """Return ``value`` as float; it must be a finite real number, zero or normal (a subnormal
+    number, below 2.2e-308 in size, has lost digits: 1e-320 as a density or a mass made
+    divisions by zero and infinite frequencies further on)."""
     if isinstance(value, bool) or not isinstance(value, Real):
         raise ParameterError(name, value, "a finite real number")
     value = float(value)
     if not math.isfinite(value):
         raise ParameterError(name, value, "a finite real number")
+    if value != 0.0 and abs(value) < sys.float_info.min:
+        raise ParameterError(name, value, f"a finite real number, zero or at least {sys.float_info.min:.3g} in size "
+                             "(this one is subnormal)")
     return value
 
 

@@ -191,3 +191,10 @@ def test_a_window_that_sees_one_phase_of_a_longer_cycle_is_warned_about(capsys):
         warn_short_window(run_, SimpleNamespace(fractions=frac, window=window))
         err = capsys.readouterr().err
         assert (err.startswith("warning: the classification window") and "--window" in err) is warned, (window, err)
+
+
+def test_a_subnormal_number_in_a_config_is_named_as_such(meshes, tmp_path, capsys):
+    tiny = edited(meshes, tmp_path, "block_on_belt", "block.toml", ("density = 1000.0", "density = 1e-320"),
+                  ("velocity = [1.0, 0.0]", "velocity = [1e-320, 0.0]"))
+    refused(capsys, ["fem", "cea", str(tiny)], "material.density = 1e-320", "surface.velocity = [1e-320, 0.0]",
+            "subnormal")

@@ -44,6 +44,7 @@
 from __future__ import annotations
 
 import math
+import sys
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -94,8 +95,21 @@ class FemConfig:
         return ContactProblem(system, frames, self.friction, self.clamped, self.static_friction)
 
 
+def _plain_number(value) -> bool:
+    """A finite number, zero or normal (a subnormal one, below 2.2e-308 in size, has lost digits)."""
+    return (isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+            and (value == 0 or abs(value) >= sys.float_info.min))
+
+
+_SUBNORMAL = f", zero or at least {sys.float_info.min:.3g} in size (a subnormal number has lost digits)"
+
+
+def _subnormal(value) -> bool:
+    return isinstance(value, float) and value != 0 and abs(value) < sys.float_info.min
+
+
 def _number(problems, where, value, lo=None, hi=None, positive=False):
-    ok = isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+    ok = _plain_number(value)
     if ok and positive and value <= 0:
         ok = False
     if ok and lo is not None and value < lo:
@@ -106,17 +120,18 @@ def _number(problems, where, value, lo=None, hi=None, positive=False):
         rng = (f"a number in (0, {hi:g})" if positive and hi is not None else "a number > 0" if positive
                else f"a number in [{lo}, {hi})" if hi is not None else f"a number >= {lo}" if lo is not None
                else "a finite number")
-        problems.append(f"{where} is missing ({rng})" if value is None else f"{where} = {value!r} must be {rng}")
+        problems.append(f"{where} is missing ({rng})" if value is None else f"{where} = {value!r} must be {rng}"
+                        + _SUBNORMAL * _subnormal(value))
         return None
     return float(value)
 
 
 def _pair(problems, where, value):
-    if isinstance(value, list) and len(value) == 2 and all(
-            isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in value):
+    if isinstance(value, list) and len(value) == 2 and all(_plain_number(v) for v in value):
         return tuple(float(v) for v in value)
     problems.append(f"{where} is missing (two numbers [x, y])" if value is None
-                    else f"{where} = {value!r} must be two numbers [x, y]")
+                    else f"{where} = {value!r} must be two numbers [x, y]"
+                    + _SUBNORMAL * (isinstance(value, list) and any(map(_subnormal, value))))
     return None
 
 
