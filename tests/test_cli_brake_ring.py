@@ -49,3 +49,14 @@ def test_overwrite_without_a_checkpoint_is_refused_not_ignored(capsys):
         assert run(["brake", command, "--omega", "50", "--mismatch", "1e-4", "--overwrite"]) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and "--overwrite" in err and "without --out" in err, err
+
+
+def test_a_mesh_whose_step_outruns_the_classification_window_is_refused_up_front(capsys):
+    """xi = 1000 on one radial element: one stable step is 11.7 transits, longer than the 2-transit
+    window the limit regime is read from (was: refused after the run, naming --transits with a
+    value the user never typed)."""
+    args = ["brake", "fem", "--omega", "50", "--mismatch", "1e-4", "--friction", "0.7", "--n-theta", "16", "--n-r", "1",
+            "--transits", "1", "--xi", "1000"]
+    assert run(args) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "invalid mesh" in err and "refine it" in err and "--transits" not in err, err

@@ -64,6 +64,7 @@ def test_v_star_zero_has_no_wave():
     (dict(T=0.0, v=0.004, v_star=VS), "T"), (dict(T=-1.0, v=0.004, v_star=VS), "T"),
     (dict(T=0.01, v=0.0, v_star=VS), "v"), (dict(T=0.01, v=0.004, v_star=-VS), "v_star"),
     (dict(T=float("nan"), v=0.004, v_star=VS), "T"),
+    (dict(T=0.01, v=0.004, v_star=1e308), "v_star"),  # (1e308 made NaN fields: v* is at most 1)
 ])
 def test_direct_rejects_bad_input(kwargs, name):
     with pytest.raises(ParameterError) as err:

@@ -187,6 +187,7 @@ def test_contract_keys_and_xarray():
     (dict(b=2.0, cbar=-1.0, v_star=VS), "c"), (dict(b=2.0, cbar=0.1, v_star=VS), "c"),
     (dict(b=2.0, cbar=-0.5, v_star=-1e-3), "v_star"), (dict(b=2.0, cbar=-0.5, v_star=float("nan")), "v_star"),
     (dict(b=np.inf, cbar=-0.5, v_star=VS), "b"),
+    (dict(b=2.0, cbar=-0.5, v_star=1e308), "v_star"), (dict(b=2.0, cbar=-0.5, v_star=1.01), "v_star"),
 ])
 def test_inverse_rejects_bad_input(kwargs, name):
     with pytest.raises(ParameterError) as err:

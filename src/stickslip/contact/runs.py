@@ -304,7 +304,16 @@ def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tai
                 "samples_per_transit": spt, "modes": modes, "contact": bool(contact), "initial": initial.label,
                 "initial_hash": initial.digest()}
     least = 3  # samples: with a tail of 3 samples or more, a run of 3 samples has 3 snapshots in it
-    if settings["tail_samples"] >= least and window_snapshots(settings) < 3:  # (a shorter tail: no length helps)
+    if 0 < tail and settings["chunk"] == 1 and settings["tail_samples"] < least:  # the step itself is too long
+        step = scheme.dt / scheme.transit_time
+        most = tail / least
+        if getattr(scheme, "time_step", None):
+            raise ParameterError("time_step", scheme.time_step, f"<= {most * scheme.transit_time:.4g} for the limit "
+                                 f"regime's {least} snapshots in the last {tail:g} transits")
+        raise ParameterError("mesh", f"a stable step of {step:.3g} transits", f"fine enough for a step of at most "
+                             f"{most:.3g} transits (the limit regime is read from {least} snapshots in the last "
+                             f"{tail:g}): refine it")
+    if settings["tail_samples"] >= least and window_snapshots(settings) < 3:
         per = (t_end / length[1]) / (scheme.dt * settings["chunk"])  # samples per unit of the length typed
         raise ParameterError(*length, f"> {(least - 1) / per:.3g} here: the limit regime is read from at least 3 "
                              "snapshots at the end of the run")

@@ -47,6 +47,18 @@ MAX_B_ALGEBRA = 1e100
 #: checked up to 50.
 MAX_MU = 100.0
 
+#: Largest v* = V*/c2 accepted: by [26] v* = cbar nu (tau*_yy/G)/2, under a quarter of the remote
+#: strain, which linear elasticity keeps far below 1 (1e308 overflowed the fields to NaN).
+MAX_V_STAR = 1.0
+
+
+def v_star_at_most(vs: float) -> float:
+    """``vs`` if it is at most ``MAX_V_STAR``, else a `ParameterError` naming ``v_star``."""
+    if vs > MAX_V_STAR:
+        raise ParameterError("v_star", vs, f"at most {MAX_V_STAR:g} (v* = cbar nu (tau*_yy/G)/2 by [26]: under a "
+                             "quarter of the remote strain, far below 1 in linear elasticity)")
+    return vs
+
 
 def b_array(value, name: str = "b", most: float = MAX_B_ALGEBRA) -> np.ndarray:
     """Period ``b`` in units of the stick length ``a = 1``: in ``(1, most]``."""

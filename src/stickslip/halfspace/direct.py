@@ -31,6 +31,7 @@ from ..results import Result
 from ..cf import finish
 from .. import validation as check
 from ..errors import NoSolutionError, ParameterError
+from .arrays import v_star_at_most
 from .inverse import system_factor
 from .waves import radok
 
@@ -136,7 +137,7 @@ def _loading(T, v, v_star):
                               "so no stick-slip wave carries a loading with T > 0")
     if vs < 0:
         raise ParameterError("v_star", vs, "> 0 (V* = c nu (1 + nu) tau*_yy / E > 0 by eq. [26])")
-    return T, v, vs
+    return T, v, v_star_at_most(vs)
 
 
 def direct_problem(T, v, v_star, *, nu, mu, system: str = "printed", n_grid: int = 4001) -> DirectSolution:

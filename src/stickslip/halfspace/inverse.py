@@ -40,7 +40,7 @@ from ..results import Result
 from ..cf import finish
 from .. import validation as check
 from ..errors import NoSolutionError, ParameterError
-from .arrays import b_array
+from .arrays import b_array, v_star_at_most
 from .waves import Radok, radok
 
 __all__ = ["SYSTEMS", "InverseSolution", "inverse_problem", "system_matrix", "determinant",
@@ -66,7 +66,7 @@ def _v_star(v_star) -> float:
             "the only solution is the trivial one v = 0, T = 0 (no stick-slip wave)")
     if vs < 0.0:
         raise ParameterError("v_star", vs, "> 0 (V* = c nu (1 + nu) tau*_yy / E > 0 by eq. [26])")
-    return vs
+    return v_star_at_most(vs)
 
 
 def _entries(b, rd: Radok, v_star: float, k: float):

@@ -28,7 +28,7 @@ from dataclasses import dataclass
 
 from ..results import Result
 from .. import validation as check
-from .arrays import MAX_MU
+from .arrays import MAX_MU, v_star_at_most
 from ..errors import ParameterError
 
 __all__ = ["remote_strain", "v_star_from_stress", "stress_from_v_star", "driving_traction",
@@ -71,7 +71,7 @@ def v_star_from_stress(cbar, tau_yy_over_G, nu) -> float:
 def stress_from_v_star(cbar, v_star, nu) -> float:
     """``tau*_yy/G = 2 v*/(cbar nu)``: [26] solved for the remote normal stress (``nu > 0``)."""
     c = check.in_range("c", cbar, -1.0, 0.0, lo_open=True, hi_open=True)
-    vs = check.positive("v_star", v_star)
+    vs = v_star_at_most(check.positive("v_star", v_star))
     nu = check.poisson_ratio("nu", nu)
     if nu == 0.0:
         raise ParameterError("nu", nu, "> 0 here: with nu = 0, [26] gives V* = 0 for every tau*_yy")
