@@ -9,6 +9,11 @@ from numbers import Real
 from .errors import ParameterError
 
 
+def subnormal(value: float) -> bool:
+    """``value`` is a non-zero float below the smallest normal number (2.2e-308) in size."""
+    return isinstance(value, float) and value != 0.0 and abs(value) < sys.float_info.min
+
+
 def finite(name: str, value) -> float:
     """Return ``value`` as float; it must be a finite real number, zero or normal (a subnormal
     number, below 2.2e-308 in size, has lost digits: 1e-320 as a density or a mass made
@@ -18,7 +23,7 @@ def finite(name: str, value) -> float:
     value = float(value)
     if not math.isfinite(value):
         raise ParameterError(name, value, "a finite real number")
-    if value != 0.0 and abs(value) < sys.float_info.min:
+    if subnormal(value):
         raise ParameterError(name, value, f"a finite real number, zero or at least {sys.float_info.min:.3g} in size "
                              "(this one is subnormal)")
     return value

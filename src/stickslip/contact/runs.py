@@ -347,8 +347,9 @@ _DIFFER = {"problem_sha256": "the problem (mesh, stiffness and springs, load, co
 #: How the schedule's internal keys are told.
 _LABELS = {"chunk": "time steps per sample (set by the time step)", "snap_every": "samples between snapshots",
            "samples_per_transit": "samples per transit", "modes": "Fourier modes kept",
-           "contact": "contact (1) or free (0)", "volume_every": "samples between volume snapshots (0: none; set by volume_every, on the command "
-                           "line by --xdmf and --xdmf-every)",
+           "contact": "contact (1) or free (0)",
+           "volume_every": "samples between volume snapshots (0: none; set by volume_every, on the command line by "
+                           "--xdmf and --xdmf-every)",
            "initial": "initial condition", "step_given": "time step given [s] (0: none)"}
 _AFRESH = "overwrite it to start afresh"
 
@@ -400,8 +401,8 @@ def resume(cls, path, scheme, settings):
         end = settings["samples_total"] * settings["chunk"] * scheme.dt
         raise ParameterError("checkpoint", str(path), f"a checkpoint of a run no longer than the one asked for (it "
                              f"holds {old.t_end:.6g} {cls.FORMAT.time_units} ({old.transits:.4g} transits) where this "
-                             f"run ends at {end:.6g} {cls.FORMAT.time_units} ({end / scheme.transit_time:.4g} transits): ask for at least as "
-                             f"much to continue it, or {_AFRESH})")
+                             f"run ends at {end:.6g} {cls.FORMAT.time_units} ({end / scheme.transit_time:.4g} "
+                             f"transits): ask for at least as much to continue it, or {_AFRESH})")
     return cls(scheme, {**old.settings, "samples_total": settings["samples_total"],
                         "tail_samples": settings["tail_samples"]},
                old.series, old.snapshots, old.kernel, old.samples_done)

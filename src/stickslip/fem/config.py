@@ -49,6 +49,7 @@ import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from .. import validation as check
 from ..errors import ParameterError
 from .assembly import MAX_ALPHA, MAX_BETA, MAX_DENSITY, MAX_MODULUS, MAX_STRAIN, PLANES, Material, assemble
 from .body import read_body
@@ -98,14 +99,10 @@ class FemConfig:
 def _plain_number(value) -> bool:
     """A finite number, zero or normal (a subnormal one, below 2.2e-308 in size, has lost digits)."""
     return (isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
-            and (value == 0 or abs(value) >= sys.float_info.min))
+            and not check.subnormal(value))
 
 
 _SUBNORMAL = f", zero or at least {sys.float_info.min:.3g} in size (a subnormal number has lost digits)"
-
-
-def _subnormal(value) -> bool:
-    return isinstance(value, float) and value != 0 and abs(value) < sys.float_info.min
 
 
 def _number(problems, where, value, lo=None, hi=None, positive=False):
@@ -121,7 +118,7 @@ def _number(problems, where, value, lo=None, hi=None, positive=False):
                else f"a number in [{lo}, {hi})" if hi is not None else f"a number >= {lo}" if lo is not None
                else "a finite number")
         problems.append(f"{where} is missing ({rng})" if value is None else f"{where} = {value!r} must be {rng}"
-                        + _SUBNORMAL * _subnormal(value))
+                        + _SUBNORMAL * check.subnormal(value))
         return None
     return float(value)
 
@@ -131,7 +128,7 @@ def _pair(problems, where, value):
         return tuple(float(v) for v in value)
     problems.append(f"{where} is missing (two numbers [x, y])" if value is None
                     else f"{where} = {value!r} must be two numbers [x, y]"
-                    + _SUBNORMAL * (isinstance(value, list) and any(map(_subnormal, value))))
+                    + _SUBNORMAL * (isinstance(value, list) and any(map(check.subnormal, value))))
     return None
 
 

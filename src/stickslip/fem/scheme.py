@@ -71,7 +71,8 @@ class ContactProblem:
             for i, item in enumerate(items):
                 if np.all(self.fixed[2 * body.nodes(item.group)]):
                     raise ParameterError("clamped", list(self.clamped), f"groups that leave a node of {kind}[{i}] on "
-                                         f"{item.group!r} free (they hold all of them: the {kind} would act on nothing)")
+                                         f"{item.group!r} free (they hold all of them: the {kind} would act on "
+                                         "nothing)")
         free = int(np.sum(~self.fixed[2 * self.frames.nodes]))
         if free < 2:
             raise ParameterError("clamped", list(self.clamped), f"groups that leave the contact line free (they hold "

@@ -181,9 +181,9 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
         if np.array_equal(new, active):
             points = system.body.points
             size = float(np.hypot(*(points.max(axis=0) - points.min(axis=0))))
+            attrs = problem_attrs(system, frames, friction, clamped, static_friction)
             return SteadyContact(frames, friction, T @ w, pressure, friction * pressure, active.copy(), iteration,
-                                 points[frames.nodes], problem_attrs(system, frames, friction, clamped, static_friction),
-                                 LOAD_FLOOR * system.material.young * size)
+                                 points[frames.nodes], attrs, LOAD_FLOOR * system.material.young * size)
         active = new
     raise NoSolutionError(f"the contact active set did not settle in {max_iterations} iterations")
 
