@@ -25,7 +25,7 @@ class System(str, Enum):
 
 B = Annotated[float, typer.Option("--b", help="Period / stick length b in (1, 1e100] (fields: 1e6).")]
 C = Annotated[float, typer.Option("--c", help="Wave speed c/c2 in (-1, 0).")]
-VStar = Annotated[float, typer.Option("--v-star", help="v* = V*/c2 > 0 (longitudinal elongation, [26]).")]
+VStar = Annotated[float, typer.Option("--v-star", help="v* = V*/c2 in (0, 1] (longitudinal elongation, [26]).")]
 Nu = Annotated[float, typer.Option("--nu", help="Poisson's ratio in [0, 0.5).")]
 Mu = Annotated[float, typer.Option("--mu", help="Interface friction coefficient mu in (0, 100].")]
 SystemOpt = Annotated[System, typer.Option("--system", help="[54]-[55] as printed, or [52]-[53] of the text (errata H4).")]
