@@ -33,7 +33,7 @@ test-all: $(STAMP)
 bench: $(STAMP)
 	for b in $(filter-out benchmarks/timing.py,$(wildcard benchmarks/*.py)); do echo "== $$b"; $(BIN)/python $$b || exit 1; done
 
-# docs/errata.md regenerated from the package, then the HTML (Markdown docs and the API
+# docs/errata.md and docs/parameters.md regenerated from the package, then the HTML (Markdown docs and the API
 # reference from the docstrings) in build/docs/html; a warning fails the build
 DOCS_STAMP := $(VENV)/.stickslip-docs-installed
 
@@ -43,6 +43,7 @@ $(DOCS_STAMP): $(STAMP)
 
 docs: $(DOCS_STAMP)
 	$(BIN)/python -m stickslip.errata > docs/errata.md
+	$(BIN)/python -m stickslip.quantities > docs/parameters.md
 	$(BIN)/python -m sphinx -M html docs build/docs -W --keep-going -q
 
 clean:

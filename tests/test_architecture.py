@@ -15,14 +15,15 @@ SRC = ROOT / "src"
 PACKAGE = SRC / "stickslip"
 
 #: Top-level parts of the package and what each may import (besides itself).
-BASE = {"errors", "validation", "cf", "vocabulary", "results"}
+BASE = {"errors", "validation", "quantities", "cf", "results"}
 MODELS = {"oscillator", "brake", "halfspace", "fem"}
 ALLOWED = {
     "errors": set(),
     "validation": {"errors"},
-    "vocabulary": set(),
-    "cf": {"vocabulary", "__init__"},
-    "results": {"cf", "vocabulary"},
+    "quantities": {"errors"},
+    "vocabulary": {"quantities"},  # deprecated alias of quantities (0.2 only)
+    "cf": {"quantities", "__init__"},
+    "results": {"cf", "quantities"},
     "friction": BASE,
     "files": BASE,
     "contact": BASE | {"files"},

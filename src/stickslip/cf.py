@@ -4,7 +4,7 @@
 command line or the report writes. It
 
 * fills ``units`` and ``long_name`` of the variables and coordinates that do not state them,
-  from the vocabulary of the model (`stickslip.vocabulary`);
+  from the declarations of the model (`stickslip.quantities`);
 * turns a scaled unit (``R``, ``E/M``, ``1/Omega``: not a UDUNITS string) into ``units = "1"``
   with the scale in a ``scale`` attribute;
 * makes a one-dimensional, strictly monotone coordinate the index of its dimension;
@@ -25,7 +25,7 @@ import numpy as np
 import xarray as xr
 
 from . import __version__
-from .vocabulary import lookup
+from .quantities import declared
 
 __all__ = ["CONVENTIONS", "SOURCE", "REFERENCES", "finish", "is_udunits", "flag_attrs", "plain_attrs", "stamp"]
 
@@ -99,14 +99,16 @@ def _describe(name: str, var: xr.Variable, domain: str) -> None:
             attrs["flag_values"], str) else np.asarray(attrs["flag_values"].split(), dtype=np.int8)
         attrs.pop("units", None)  # a flag variable has no units (CF 3.5)
         if "long_name" not in attrs:
-            attrs["long_name"] = lookup(name, domain)[1] if lookup(name, domain) else name.replace("_", " ")
+            known = declared(name, domain)
+            attrs["long_name"] = known.meaning if known else name.replace("_", " ")
         return
-    known = lookup(name, domain)
+    known = declared(name, domain)
     if known is not None:
-        units, long_name = known
-        attrs.setdefault("long_name", long_name)
-        if var.dtype.kind in "iufcb":
-            attrs.setdefault("units", units)
+        attrs.setdefault("long_name", known.meaning)
+        if var.dtype.kind in "iufcb" and known.units:
+            attrs.setdefault("units", known.units)
+        if known.standard_name and attrs.get("units") == known.units:
+            attrs.setdefault("standard_name", known.standard_name)
     if var.dtype.kind in "US O":
         attrs.pop("units", None)  # labels are not measured
         return
@@ -154,7 +156,7 @@ def finish(ds: xr.Dataset, title: str, domain: str = "common", *, params: Mappin
            history: str | None = None) -> xr.Dataset:
     """``ds`` with CF-style metadata (a new dataset; the arrays are shared, not copied).
 
-    ``domain`` picks the vocabulary: ``oscillator`` (SI units), ``brake`` (the annulus,
+    ``domain`` picks the declarations: ``oscillator`` (SI units), ``brake`` (the annulus,
     dimensionless: time ``Omega t``, lengths in ``R``), ``halfspace`` (scaled by ``G``, ``c2``
     and the stick length) or ``common``. ``params`` are stored as attributes (numbers);
     ``history`` is appended to the ``history`` attribute with the time.

@@ -22,6 +22,7 @@ from typing import Callable, ClassVar
 import numpy as np
 
 from . import validation as check
+from .quantities import OSCILLATOR as Q
 from .errors import ParameterError
 
 __all__ = ["FrictionLaw", "Coulomb", "LinearWeakening", "Stribeck", "UserLaw", "law_names", "make_law"]
@@ -64,8 +65,8 @@ class FrictionLaw(ABC):
 
 
 def _check_pair(fs, fd):
-    fd = check.nonnegative("fd", fd)
-    fs = check.at_least("fs", fs, fd, "fd")
+    fd = Q.check("fd", fd)
+    fs = check.at_least("fs", Q.check("fs", fs), fd, "fd")
     return fs, fd
 
 
@@ -115,7 +116,7 @@ class LinearWeakening(FrictionLaw):
         fs, fd = _check_pair(self.fs, self.fd)
         object.__setattr__(self, "fs", fs)
         object.__setattr__(self, "fd", fd)
-        object.__setattr__(self, "tau", check.nonnegative("tau", self.tau))
+        object.__setattr__(self, "tau", Q.check("tau", self.tau))
 
     @property
     def static(self):
@@ -152,7 +153,7 @@ class Stribeck(FrictionLaw):
         fs, fd = _check_pair(self.fs, self.fd)
         object.__setattr__(self, "fs", fs)
         object.__setattr__(self, "fd", fd)
-        object.__setattr__(self, "vs", check.positive("vs", self.vs))
+        object.__setattr__(self, "vs", Q.check("vs", self.vs))
 
     @property
     def static(self):
@@ -181,8 +182,8 @@ class UserLaw(FrictionLaw):
     def __post_init__(self):
         if not callable(self.mu):
             raise ParameterError("mu", self.mu, "a callable mu(v_r) -> coefficient")
-        object.__setattr__(self, "fs", check.nonnegative("fs", self.fs))
-        object.__setattr__(self, "step", check.positive("step", self.step))
+        object.__setattr__(self, "fs", Q.check("fs", self.fs))
+        object.__setattr__(self, "step", Q.check("step", self.step))
 
     @property
     def static(self):

@@ -21,7 +21,7 @@ import numpy as np
 import xarray as xr
 
 from .cf import finish
-from .vocabulary import lookup
+from .quantities import lookup
 
 __all__ = ["Result", "scalars"]
 

@@ -28,15 +28,14 @@ import xarray as xr
 import zarr
 
 from . import validation as check
+from .quantities import COMMON as Q, MAX_POINTS
 from .cf import SOURCE, finish, flag_attrs, plain_attrs
 from .errors import ParameterError
-from .vocabulary import lookup
+from .quantities import lookup
 from .files import content_digest, die_with_parent, exclusive
 
 __all__ = ["run_sweep", "verify_store", "SWEEP_FORMAT", "NOT_COMPUTED"]
 
-#: The most worker processes a sweep starts.
-MAX_WORKERS = 64
 #: The layout of a sweep store; a store with another layout is refused, not misread.
 SWEEP_FORMAT = "stickslip-sweep-1"
 
@@ -191,6 +190,10 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
         raise ParameterError("axes", axes, "a mapping of names to lists of finite numbers") from None
     if not axes or any(len(v) == 0 for v in axes.values()):
         raise ParameterError("axes", axes, "a mapping of names to non-empty value lists")
+    points = math.prod(len(v) for v in axes.values())
+    if points > MAX_POINTS:
+        raise ParameterError("axes", {k: len(v) for k, v in axes.items()}, f"a grid of at most {MAX_POINTS:.0e} points "
+                             f"(this one has {points:.3g}: split the study, or run it on a cluster)")
     if not isinstance(outputs, Mapping) or not outputs or "done" in outputs or \
             not all(isinstance(k, str) and isinstance(u, (str, Mapping)) for k, u in outputs.items()):
         raise ParameterError("outputs", outputs, "a non-empty mapping of output names (not 'done') to units "
@@ -198,9 +201,9 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
     outputs = dict(outputs)
     if not isinstance(store, (str, os.PathLike)):
         raise ParameterError("store", store, "a path (str or os.PathLike) of a Zarr directory")
-    batch = check.positive_int("batch", batch)
+    batch = Q.check("batch", batch)
     if workers is not None:  # each worker process holds its own interpreter (about 200 MB)
-        workers = check.count("workers", workers, MAX_WORKERS, "worker processes, about 200 MB each")
+        workers = Q.check("workers", workers)
     if scheduler == "processes" and workers == 1:
         scheduler = "synchronous"  # a pool of one only adds the start-up of a process
     store = Path(store)

@@ -63,7 +63,7 @@ def test_the_lumped_mass_is_the_body_mass(rect):
 
 def _frequencies(path, size, count=5):
     body = body_from_meshio(annulus(path, size=size), "annulus")
-    s = assemble(body, Material(1.0, NU, 1.0))  # E = rho = R = 1: omega in units of sqrt(E/rho)/R
+    s = assemble(body, Material(1.0, NU, 1.0, scaled=True))  # E = rho = R = 1: omega in units of sqrt(E/rho)/R
     free = np.setdiff1d(np.arange(s.n_dofs), s.dofs(body.nodes("rim")))
     vals = sla.eigsh(s.K[free][:, free], k=count, M=sp.diags(s.mass[free]), sigma=0, which="LM",
                      return_eigenvectors=False)
@@ -162,7 +162,7 @@ def test_quadratic_annulus_frequencies_converge_at_order_four_with_the_consisten
     consistent, lumped = [], []
     for size in (0.2, 0.1, 0.05):
         body = body_from_meshio(annulus(tmp_path / f"q{size}.msh", size=size, order=2), "annulus")
-        s = assemble(body, Material(1.0, NU, 1.0))
+        s = assemble(body, Material(1.0, NU, 1.0, scaled=True))
         basis, order = s.basis
         M = asm(BilinearForm(lambda u, v, w: dot(u, v)), basis)[order][:, order].tocsr()
         free = np.setdiff1d(np.arange(s.n_dofs), s.dofs(body.nodes("rim")))

@@ -65,7 +65,7 @@ def test_cea_with_rayleigh_damping_matches_a_dense_solution_of_the_quadratic_pro
     fem = FemScheme(PARAMS, 32, 2, 0.9)
     base = general_annulus(fem).params
     w1 = 2 * np.pi * 400.0
-    material = Material(1.0, PARAMS.nu, PARAMS.gamma, alpha=0.02 * w1, beta=0.02 / w1)
+    material = Material(1.0, PARAMS.nu, PARAMS.gamma, alpha=0.02 * w1, beta=0.02 / w1, scaled=True)
     problem = ContactProblem(assemble(base.system.body, material), base.frames, base.friction, base.clamped)
     K, C, m, _ = linearised(problem)
     n = K.shape[0]

@@ -126,7 +126,7 @@ def test_the_pattern_speed_has_units_and_reference_speeds(meshes, tmp_path, caps
     cp = math.sqrt(1e9 * 0.7 / (1.3 * 0.4 * 1000.0))
     assert scheme.speed_scales["cp"] == pytest.approx(2 * math.pi * cp / scheme.line_length, rel=1e-12)
     assert scheme.speed_scales["surface"] == pytest.approx(2 * math.pi * 1.0 / scheme.line_length, rel=1e-12)
-    from stickslip.vocabulary import lookup
+    from stickslip.quantities import lookup
     assert lookup("c", "fem")[0] == "rad/s" and lookup("c_over_cp", "fem")[0] == "1"
 
 
@@ -150,7 +150,7 @@ def test_options_and_files_are_told_as_the_user_knows_them(meshes, tmp_path, cap
                      ("pressure = 1.0e6", "pressure = 1.0e6\ntraction = [1e12, 0.0]"),
                      ("poisson = 0.3", "poisson = nan"))
     refused(capsys, ["fem", "steady", str(worded)], "surface.kind is missing", "load[0].traction = [1000000000000.0",
-             "must be a number in [0.0, 0.5)")
+             "material.poisson = nan must be a finite real number, in [0, 0.5)")
 
 
 def test_heavy_damping_that_stalls_the_search_says_where_modes_are_overdamped(meshes, tmp_path, capsys, monkeypatch):

@@ -27,7 +27,7 @@ def general_annulus(fem: FemScheme, params: BrakeParams = PARAMS, **options) -> 
                        cell_sets={"bore": [np.array([], int), np.arange(n), np.array([], int)],
                                   "rim": [np.array([], int), np.array([], int), np.arange(n)]})
     body = body_from_meshio(mesh, "annulus")
-    system = assemble(body, Material(1.0, params.nu, params.gamma))
+    system = assemble(body, Material(1.0, params.nu, params.gamma, scaled=True))
     delta = params.delta
     frames = contact_frames(body, "bore", RigidCylinder(1.0 + delta, 1.0 / (1.0 + delta)))  # surface speed 1
     return BodyScheme(ContactProblem(system, frames, params.friction, ("rim",)), fem.beta2, **options)

@@ -22,7 +22,7 @@ def test_the_annulus_on_a_turning_shaft_slides_as_lame_says(friction, tmp_path):
     errors = []
     for size in (0.1, 0.05):
         body = body_from_meshio(annulus(tmp_path / f"a{size}.msh", outer=XI, size=size), "annulus")
-        system = assemble(body, Material(1.0, NU, 1.0))  # E = R = 1: lengths in R, forces in E R
+        system = assemble(body, Material(1.0, NU, 1.0, scaled=True))  # E = R = 1: lengths in R, forces in E R
         frames = contact_frames(body, "bore", RigidCylinder(1.0 + DELTA, 100.0))
         st = steady_contact(system, frames, friction, clamped=["rim"])
         u = st.u.reshape(-1, 2)[frames.nodes]
@@ -46,7 +46,7 @@ def test_on_quadratic_cells_the_annulus_pressure_converges_faster(friction, tmp_
     errors = []
     for size in (0.2, 0.1):
         body = body_from_meshio(annulus(tmp_path / f"q{size}.msh", outer=XI, size=size, order=2), "annulus")
-        system = assemble(body, Material(1.0, NU, 1.0))
+        system = assemble(body, Material(1.0, NU, 1.0, scaled=True))
         frames = contact_frames(body, "bore", RigidCylinder(1.0 + DELTA, 100.0))
         assert len(frames.nodes) == 2 * len(body.group("bore"))  # the middle nodes are contact nodes
         st = steady_contact(system, frames, friction, clamped=["rim"])
@@ -72,7 +72,7 @@ def test_an_annulus_in_a_turning_drum_slides_as_lame_says(friction, omega, tmp_p
     errors = []
     for size in (0.1, 0.05):
         body = body_from_meshio(annulus(tmp_path / f"d{size}.msh", outer=b, size=size), "annulus")
-        system = assemble(body, Material(1.0, NU, 1.0))
+        system = assemble(body, Material(1.0, NU, 1.0, scaled=True))
         frames = contact_frames(body, "rim", RigidCylinder(b - DELTA, omega, body_inside=True))
         st = steady_contact(system, frames, friction, clamped=["bore"])
         u = st.u.reshape(-1, 2)[frames.nodes]

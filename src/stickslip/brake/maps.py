@@ -17,7 +17,7 @@ import functools
 import math
 
 
-from .. import validation as check
+from ..quantities import BRAKE as Q
 from ..contact import REGIME_CODES, regime_code
 from ..errors import NoSolutionError
 from ..sweep import run_sweep
@@ -56,7 +56,7 @@ def _ring_point(material, omega, nodes, transits, friction, mismatch) -> dict:
 def wave_regime_map(frictions, mismatches, store, *, omega: float = 50.0, modes: int = 4,
                     material: dict | None = None, **options):
     """Regime of the principal ``modes``-wave at every ``(f, d)``; ``options`` go to `run_sweep`."""
-    omega, modes = check.positive("omega", omega), check.positive_int("modes", modes)
+    omega, modes = Q.check("omega", omega), Q.check("modes", modes)
     func = functools.partial(_wave_point, dict(material or {}), omega, modes)
     return run_sweep(func, {"friction": list(frictions), "mismatch": list(mismatches)}, store,
                      outputs={"wave_regime": REGIME_CODES, "waves": "1", "c_over_sqrt_a": "1"},
@@ -67,8 +67,8 @@ def wave_regime_map(frictions, mismatches, store, *, omega: float = 50.0, modes:
 def ring_regime_map(frictions, mismatches, store, *, omega: float = 50.0, nodes: int = 128,
                     transits: float = 150.0, material: dict | None = None, **options):
     """Limit regime of the ring integration at every ``(f, d)``; ``options`` go to `run_sweep`."""
-    omega, nodes = check.positive("omega", omega), check.positive_int("nodes", nodes)
-    transits = check.positive("transits", transits)
+    omega, nodes = Q.check("omega", omega), Q.check("nodes", nodes)
+    transits = Q.check("transits", transits)
     func = functools.partial(_ring_point, dict(material or {}), omega, nodes, transits)
     outputs = {"ring_regime": REGIME_CODES, "n_fft": "1", **{f"fraction_{k}": "1" for k in
                                                      ("stick", "slip", "reverse_slip", "separation")}}

@@ -9,9 +9,10 @@ from typing import Annotated, Optional
 
 import typer
 
-from .. import validation as check
+from ..brake.reduced.params import in_ratio, small_strain
+from ..quantities import BRAKE as Q, COMMON
 from ..errors import ParameterError
-from .common import (AXIS_HELP, Overwrite, RunOut, XdmfEvery, axis, emit, output_folder, output_path, overwrite_needs,
+from .common import (AXIS_HELP, Overwrite, RunOut, XdmfEvery, axis, checked_axis, declared, emit, output_folder, output_path, overwrite_needs,
                      progress_bar, write_netcdf, xdmf_snapshots)
 
 _emit = functools.partial(emit, model="brake")  # results are printed with the units of this model
@@ -19,19 +20,19 @@ _emit = functools.partial(emit, model="brake")  # results are printed with the u
 app = typer.Typer(no_args_is_help=True, rich_markup_mode=None, help="Elastic annulus on a rotating shaft: reduced model (paper section 3).")
 
 Opt = Optional[float]
-Xi = Annotated[Opt, typer.Option("--xi", help="Radius ratio R*/R in [1.0001, 1000].")]
-Nu = Annotated[float, typer.Option("--nu", help="Poisson's ratio in [0, 0.5).")]
-Gamma = Annotated[Opt, typer.Option("--gamma", help="Inertia number rho R^2 Omega^2 / E in [1e-100, 1e100].")]
-Delta = Annotated[Opt, typer.Option("--delta", help="Mismatch d/R >= 0 (scaled: the model is linear in it).")]
-Friction = Annotated[float, typer.Option("--friction", help="Coulomb coefficient f in [0, 10].")]
-Inner = Annotated[Opt, typer.Option("--inner-radius", help="R [m] (default 0.1 with physical input).")]
-Outer = Annotated[Opt, typer.Option("--outer-radius", help="R* [m] (default 0.15 with physical input).")]
-Young = Annotated[Opt, typer.Option("--young", help="E [Pa] (default 2.1e11).")]
-Density = Annotated[Opt, typer.Option("--density", help="rho [kg/m^3] (default 7850).")]
-Omega = Annotated[Opt, typer.Option("--omega", help="Shaft speed Omega [rad/s] > 0, with rho R^2 Omega^2 / E in [1e-100, 1e100].")]
-Mismatch = Annotated[Opt, typer.Option("--mismatch", help="Mismatch d [m] in [0, 0.01 R] (small strain at the bore).")]
+Xi = Annotated[Opt, declared(Q["xi"], "--xi")]
+Nu = Annotated[float, declared(Q["nu"], "--nu")]
+Gamma = Annotated[Opt, declared(Q["gamma"], "--gamma", "Or --omega with the material.")]
+Delta = Annotated[Opt, declared(Q["delta"], "--delta", "Or --mismatch (scaled: the model is linear in it).")]
+Friction = Annotated[float, declared(Q["friction"], "--friction")]
+Inner = Annotated[Opt, declared(Q["inner_radius"], "--inner-radius", "Default 0.1 with SI input.")]
+Outer = Annotated[Opt, declared(Q["outer_radius"], "--outer-radius", "Default 0.15 with SI input.")]
+Young = Annotated[Opt, declared(Q["young"], "--young", "Default 2.1e11, with --omega.")]
+Density = Annotated[Opt, declared(Q["density"], "--density", "Default 7850, with --omega.")]
+Omega = Annotated[Opt, declared(Q["omega"], "--omega", "Sets gamma = rho R^2 Omega^2 / E, in its range.")]
+Mismatch = Annotated[Opt, declared(Q["mismatch"], "--mismatch", "At most 0.01 R (small strain at the bore).")]
 Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
-SeedWave = Annotated[Optional[int], typer.Option("--seed-wave-number", help=(
+SeedWave = Annotated[Optional[int], declared(Q["mode"], "--seed-wave-number", (
     "Start from steady sliding plus this Fourier mode (default: white noise)."))]
 
 _DEFAULTS = {"inner_radius": 0.1, "outer_radius": 0.15, "young": 2.1e11, "density": 7850.0}
@@ -46,20 +47,11 @@ def _pick(name: str, given, physical_names: list[str]):
 
 
 def _check_options(options: dict) -> None:
-    """Every option given is a finite number in its range, named as typed, before any use."""
-    positive = ("xi", "gamma", "inner_radius", "outer_radius", "young", "density", "omega")
+    """Every option given is in its declared range, named as typed (the options check themselves
+    as they are parsed; a call from Python is checked here), and no option contradicts another."""
     for name, value in options.items():
-        if value is None or name in ("need",):
-            continue
-        option = "--" + name.replace("_", "-")
-        if name == "nu":
-            check.poisson_ratio(option, value)
-        elif name == "xi":
-            check.radius_ratio(option, value)
-        elif name in positive:
-            check.positive(option, value)
-        else:
-            check.nonnegative(option, value)
+        if value is not None and name != "need":
+            Q.check(name, value, "--" + name.replace("_", "-"))
     material = [n for n in ("young", "density") if options.get(n) is not None]
     if material and options.get("gamma") is not None:
         raise ParameterError("--" + material[0], options[material[0]], "left out with --gamma (the material only "
@@ -80,11 +72,8 @@ def resolve(*, xi=None, nu=0.3, gamma=None, delta=None, friction=0.0, inner_radi
         if out["xi"] is None:
             if m["inner_radius"] <= 0:
                 raise ParameterError("--inner-radius", m["inner_radius"], "> 0")
-            xi, (lo, hi) = m["outer_radius"] / m["inner_radius"], check.RADIUS_RATIO
-            if not lo <= xi <= hi:
-                raise ParameterError("--outer-radius", m["outer_radius"], f"in [{lo:.4f}, {hi:g}] x --inner-radius "
-                                     f"= {m['inner_radius']:g} (the radius ratio xi)", also=("--inner-radius",))
-            out["xi"] = xi
+            in_ratio("--outer-radius", m["outer_radius"], m["inner_radius"], "--inner-radius")
+            out["xi"] = m["outer_radius"] / m["inner_radius"]
     if "gamma" in need:
         out["gamma"] = _pick("gamma", gamma, [n for n in ("omega",) if n in phys])
         if out["gamma"] is None:
@@ -99,12 +88,7 @@ def resolve(*, xi=None, nu=0.3, gamma=None, delta=None, friction=0.0, inner_radi
         if out["delta"] is None:
             if "mismatch" not in phys:
                 raise ParameterError("--delta", None, "given, or --mismatch [m]")
-            from ..brake.reduced.params import MAX_STRAIN
-
-            if m["mismatch"] > MAX_STRAIN * m["inner_radius"]:
-                raise ParameterError("--mismatch", m["mismatch"], f"<= {MAX_STRAIN * m['inner_radius']:.6g} m "
-                                     f"({MAX_STRAIN:g} x --inner-radius: the interference is the hoop strain at the "
-                                     "bore, and linear elasticity holds for small strains only)")
+            small_strain("--mismatch", m["mismatch"], m["inner_radius"], "--inner-radius")
             out["delta"] = m["mismatch"] / m["inner_radius"]
     return out
 
@@ -182,11 +166,11 @@ def stability(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = N
 def integrate_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, friction: Friction = 0.0,
                   inner_radius: Inner = None, outer_radius: Outer = None, young: Young = None,
                   density: Density = None, omega: Omega = None, mismatch: Mismatch = None,
-                  nodes: Annotated[int, typer.Option(help="Nodes around the ring.")] = 512,
-                  transits: Annotated[float, typer.Option(help="Duration in wave transits 2 pi / sqrt(a).")] = 100.0,
-                  beta2: Annotated[float, typer.Option(help="Scheme parameter of [22] (1/2: central differences).")] = 0.5,
+                  nodes: Annotated[int, declared(Q["nodes"], "--nodes")] = 512,
+                  transits: Annotated[float, declared(Q["transits"], "--transits", "A transit: 2 pi / sqrt(a).")] = 100.0,
+                  beta2: Annotated[float, declared(COMMON["beta2"], "--beta2")] = 0.5,
                   mode: SeedWave = None,
-                  amplitude: Annotated[float, typer.Option(help="Perturbation amplitude relative to delta, in [0, 100].")] = 1e-3,
+                  amplitude: Annotated[float, declared(COMMON["amplitude"], "--amplitude", "Relative to delta.")] = 1e-3,
                   out: RunOut = None,
                   overwrite: Overwrite = False, json: Json = False):
     """Time integration of [12] on the ring from perturbed steady sliding; classifies the limit regime."""
@@ -215,8 +199,7 @@ def _regime(value: Optional[str]) -> Optional[str]:
 
 @app.command()
 def wave(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, friction: Friction = 0.0,
-         modes: Annotated[int, typer.Option("--wave-number", help="Wave number n: waves around the ring (period "
-                                                                   "2 pi / n).")] = 4,
+         modes: Annotated[int, declared(Q["modes"], "--wave-number", "The period is 2 pi / n.")] = 4,
          regime: Annotated[Optional[str], typer.Option(help="Wanted regime, e.g. stick-slip (default: any).")] = None,
          inner_radius: Inner = None, outer_radius: Outer = None, young: Young = None, density: Density = None,
          omega: Omega = None, mismatch: Mismatch = None, json: Json = False,
@@ -235,10 +218,10 @@ def wave(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, 
 
 @app.command("continue")
 def continue_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, friction: Friction = 0.0,
-                 modes: Annotated[int, typer.Option("--wave-number", help="Wave number n: waves around the ring.")] = 4,
+                 modes: Annotated[int, declared(Q["modes"], "--wave-number")] = 4,
                  parameter: Annotated[str, typer.Option(help="delta, gamma, omega (needs SI input) or friction.")] = "delta",
-                 stop: Annotated[float, typer.Option(help="Continue the parameter to this value.")] = 0.0,
-                 points: Annotated[int, typer.Option(help="Points along the branch.")] = 50,
+                 stop: Annotated[float, declared(Q["stop"], "--stop")] = 0.0,
+                 points: Annotated[int, declared(COMMON["points"], "--points")] = 50,
                  regime: Annotated[Optional[str], typer.Option(help="Regime of the starting wave.")] = None,
                  inner_radius: Inner = None, outer_radius: Outer = None, young: Young = None, density: Density = None,
                  omega: Omega = None, mismatch: Mismatch = None, json: Json = False,
@@ -249,7 +232,6 @@ def continue_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta 
     out = output_path("--out", out, ".nc")
     p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
-    check.finite("--stop", stop)
     branch = continue_waves(p, modes, parameter=parameter, stop=stop, num=points, regime=_regime(regime))
     data = branch.to_dict()
     if not json:
@@ -267,10 +249,10 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (directory ending
             "friction=0.1:2:16",
             y: Annotated[str, typer.Option("--y", help=f"Second axis: the other one, {AXIS_HELP}.")] =
             "mismatch=1e-7:1e-4:12:log",
-            omega: Annotated[float, typer.Option(help="Shaft speed [rad/s].")] = 50.0,
-            modes: Annotated[Optional[int], typer.Option("--wave-number", help="Wave number n of the waves "
-                                                         "(--kind waves only; default 4).")] = None,
-            workers: Annotated[Optional[int], typer.Option(help="Worker processes (default: all cores).")] = None,
+            omega: Annotated[float, declared(Q["omega"], "--omega")] = 50.0,
+            modes: Annotated[Optional[int], declared(Q["modes"], "--wave-number", "With --kind waves only; "
+                                                     "default 4.")] = None,
+            workers: Annotated[Optional[int], declared(COMMON["workers"], "--workers", "Default: all cores.")] = None,
             overwrite: Overwrite = False, json: Json = False):
     """Regime map over friction and mismatch (resumable, parallel): travelling waves or ring limit regimes."""
     from ..brake.maps import REGIME_CODES, ring_regime_map, wave_regime_map
@@ -281,15 +263,20 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (directory ending
     if kind == "ring" and modes is not None:
         raise ParameterError("--wave-number", modes, "left out with --kind ring (the ring finds its own waves)")
     modes = 4 if modes is None else modes
-    axes = dict(axis(option, text) for option, text in (("--x", x), ("--y", y)))
-    if set(axes) != {"friction", "mismatch"}:
+    named = [axis(option, text) for option, text in (("--x", x), ("--y", y))]
+    if {n for n, _ in named} != {"friction", "mismatch"}:
         raise ParameterError("--x", x, f"an axis of friction, with --y an axis of mismatch or the other way round "
-                             f"(got {', '.join(axes) or 'none'})", also=("--y",))
+                             f"(got {' and '.join(n for n, _ in named)})", also=("--y",))
+
+    def point(name, value):  # every point is a valid SI annulus of the default geometry (R = 0.1 m)
+        if name == "mismatch" and value <= 0:
+            raise ParameterError(name, value, "> 0 (without interference there is no contact)")
+        Q.check(name, value)
+        if name == "mismatch":
+            small_strain(name, value, 0.1, "the bore radius 0.1 m")
+
+    axes = dict(checked_axis(option, text, point) for option, text in (("--x", x), ("--y", y)))
     f, d = axes["friction"], axes["mismatch"]
-    for value in f:
-        check.in_range("--x" if x.startswith("friction") else "--y", value, 0.0, 10.0)
-    for value in d:
-        check.positive("--y" if y.startswith("mismatch") else "--x", value)
     with progress_bar(f"{kind} map") as tick:
         if kind == "waves":
             ds = wave_regime_map(f, d, out, omega=omega, modes=modes, workers=workers, progress=tick,
@@ -305,10 +292,10 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (directory ending
 def fem_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, friction: Friction = 0.0,
             inner_radius: Inner = None, outer_radius: Outer = None, young: Young = None, density: Density = None,
             omega: Omega = None, mismatch: Mismatch = None,
-            n_theta: Annotated[int, typer.Option(help="Nodes around the ring (multiple of 8).")] = 256,
-            n_r: Annotated[int, typer.Option(help="Element layers across the ring.")] = 16,
-            transits: Annotated[float, typer.Option(help="Duration in P-wave transits 2 pi R / c_p.")] = 100.0,
-            beta2: Annotated[float, typer.Option(help="Scheme parameter of [22] (paper: 0.9).")] = 0.9,
+            n_theta: Annotated[int, declared(Q["n_theta"], "--n-theta")] = 256,
+            n_r: Annotated[int, declared(Q["n_r"], "--n-r")] = 16,
+            transits: Annotated[float, declared(Q["transits"], "--transits", "A P-wave transit: 2 pi R / c_p.")] = 100.0,
+            beta2: Annotated[float, declared(COMMON["beta2"], "--beta2", "The paper's: 0.9.")] = 0.9,
             mode: SeedWave = None,
             out: RunOut = None,
             xdmf: Annotated[Optional[Path], typer.Option(help=(
@@ -347,9 +334,10 @@ def campaign_cmd(
         out: Annotated[Path, typer.Option(help="Folder of the campaign's stores (resumed if present).")] =
         Path("results/data/brake-fem-campaign"),
         part: Annotated[str, typer.Option(help="statistics, geometry or all.")] = "all",
-        seeds: Annotated[int, typer.Option(help="Unseeded runs per case and mesh (statistics).")] = 16,
-        geometry_seeds: Annotated[int, typer.Option(help="Unseeded runs per case, xi and beta2 (geometry).")] = 4,
-        workers: Annotated[Optional[int], typer.Option(help="Worker processes (default: all cores).")] = None,
+        seeds: Annotated[int, declared(COMMON["seeds"], "--seeds", "Per case and mesh (statistics).")] = 16,
+        geometry_seeds: Annotated[int, declared(COMMON["geometry_seeds"], "--geometry-seeds",
+                                                "Per case, xi and beta2 (geometry).")] = 4,
+        workers: Annotated[Optional[int], declared(COMMON["workers"], "--workers", "Default: all cores.")] = None,
         export: Annotated[Optional[Path], typer.Option(help="When done, also write fem_<part>.nc here.")] = None,
         overwrite: Overwrite = False, json: Json = False):
     """Section 3.1 by finite elements: limit regimes from unseeded starts (about an hour on 2 cores; resumable)."""
@@ -361,9 +349,6 @@ def campaign_cmd(
 
     if part not in ("statistics", "geometry", "all"):
         raise ParameterError("--part", part, "statistics, geometry or all")
-    for option, value in (("--seeds", seeds), ("--geometry-seeds", geometry_seeds), ("--workers", workers)):
-        if value is not None and value < 1:
-            raise ParameterError(option, value, ">= 1")
     out = output_folder("--out", out)
     export = None if export is None else output_folder("--export", export)
     out.mkdir(parents=True, exist_ok=True)

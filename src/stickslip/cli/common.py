@@ -18,8 +18,20 @@ from rich.console import Console
 from rich.table import Table
 
 from ..errors import NoSolutionError, ParameterError
-from ..validation import positive as check_positive
-from ..vocabulary import lookup
+from ..quantities import FEM, Quantity, lookup
+
+def declared(quantity: Quantity, flag: str, note: str = "", **options):
+    """A typer option that reads the declaration ``quantity``: its help is the declaration's
+    (meaning, symbol, units, range) plus ``note``, and a value given is checked against the
+    declared range while the command line is parsed, before any work, the error naming
+    ``flag``. The declaration is kept on the option (``.quantity``) for the tests."""
+    def check(value):
+        return value if value is None else quantity.check(value, flag)
+
+    info = typer.Option(flag, help=quantity.help(note), callback=check, **options)
+    info.quantity = quantity
+    return info
+
 
 #: ``--overwrite``: start a store or checkpoint afresh instead of resuming it.
 Overwrite = Annotated[bool, typer.Option("--overwrite", help="Start afresh, replacing the store or checkpoint, "
@@ -124,9 +136,9 @@ def emit(data: dict, as_json: bool, title: str, model: str = "common") -> None:
 RunOut = Annotated[Optional[Path], typer.Option("--out", help=(
     "The run (.nc): written as it goes and at the end; a killed run resumes from it (--overwrite starts afresh)."))]
 #: The interval of a run's ParaView snapshots (with ``--xdmf``).
-XdmfEvery = Annotated[Optional[float], typer.Option("--xdmf-every", help=(
-    "Interval of the --xdmf snapshots in transits (> 0; default 1; kept on the run's samples, a whole number "
-    "of time steps apart, so it may differ by a fraction of a sample), and the last one."))]
+XdmfEvery = Annotated[Optional[float], declared(FEM["xdmf_every"], "--xdmf-every", (
+    "Of the --xdmf snapshots (default 1), and the last one; kept on the run's samples, a whole number of time "
+    "steps apart, so it may differ by a fraction of a sample."))]
 
 
 def xdmf_path(path):
@@ -144,7 +156,7 @@ def xdmf_snapshots(xdmf, every) -> tuple:
     if every is not None and xdmf is None:
         raise ParameterError("--xdmf-every", every, "given with --xdmf only (it sets the interval of the "
                              "snapshots --xdmf writes)")
-    return xdmf, (None if xdmf is None else check_positive("--xdmf-every", 1.0 if every is None else every))
+    return xdmf, (None if xdmf is None else FEM.check("xdmf_every", 1.0 if every is None else every, "--xdmf-every"))
 
 
 #: The help of a map axis option (``--x``, ``--y``), the same for every map.
@@ -169,6 +181,21 @@ def axis(option: str, text: str) -> tuple[str, list[float]]:
         raise ParameterError(option, text, "lo, hi > 0 for a logarithmic axis (:log)")
     values = np.logspace(np.log10(lo), np.log10(hi), n) if log else np.linspace(lo, hi, n)
     return name.strip(), [float(v) for v in values]
+
+
+def checked_axis(option: str, text: str, check) -> tuple[str, list[float]]:
+    """`axis`, with ``check(name, value)`` run on every value: a value it refuses is named as the
+    axis option and its text (``--x = 'friction=0:20:3'``), with the range of the parameter."""
+    name, values = axis(option, text)
+    try:
+        for value in values:
+            check(name, value)
+    except ParameterError as exc:
+        if exc.name == "parameter":  # not a parameter of the model at all
+            raise ParameterError(option, text, exc.allowed) from None
+        raise ParameterError(option, text, f"an axis of {name} with every value {exc.allowed}",
+                             also=tuple(a for a in exc.also if a != option)) from None
+    return name, values
 
 
 def write_netcdf(ds, out: Path) -> None:

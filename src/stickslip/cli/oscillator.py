@@ -15,8 +15,8 @@ import typer
 from ..friction import make_law
 from ..oscillator import (Oscillator, continue_cycle, continue_from_hopf, equilibrium_stability, hopf_points,
                           limit_cycle, simulate)
-from .. import validation as check
-from .common import AXIS_HELP, Overwrite, axis, emit, output_folder, output_path, progress_bar, write_netcdf
+from ..quantities import COMMON, OSCILLATOR as Q
+from .common import AXIS_HELP, Overwrite, axis, declared, emit, output_folder, output_path, progress_bar, write_netcdf
 
 _emit = functools.partial(emit, model="oscillator")  # results are printed with the units of this model
 
@@ -29,16 +29,16 @@ class Law(str, Enum):
     stribeck = "stribeck"
 
 
-Mass = Annotated[float, typer.Option("--mass", help="Mass m [kg], > 0.")]
-Stiffness = Annotated[float, typer.Option("--stiffness", help="Spring stiffness k [N/m], > 0.")]
-Normal = Annotated[float, typer.Option("--normal-force", help="Normal force N [N], > 0.")]
-Belt = Annotated[float, typer.Option("--belt-speed", help="Belt speed V [m/s], > 0.")]
-Fs = Annotated[float, typer.Option("--fs", help="Static friction coefficient f_s >= f_d.")]
-Fd = Annotated[float, typer.Option("--fd", help="Kinetic friction coefficient f_d >= 0.")]
+Mass = Annotated[float, declared(Q["mass"], "--mass")]
+Stiffness = Annotated[float, declared(Q["stiffness"], "--stiffness")]
+Normal = Annotated[float, declared(Q["normal_force"], "--normal-force")]
+Belt = Annotated[float, declared(Q["belt_speed"], "--belt-speed")]
+Fs = Annotated[float, declared(Q["fs"], "--fs", "At least --fd.")]
+Fd = Annotated[float, declared(Q["fd"], "--fd")]
 LawOpt = Annotated[Law, typer.Option("--law", help="Friction law.")]
-Tau = Annotated[Optional[float], typer.Option("--tau", help="Weakening rate tau [s/m] of --law linear-weakening.")]
-Vs = Annotated[Optional[float], typer.Option("--vs", help="Stribeck speed v_s [m/s] of --law stribeck.")]
-Damping = Annotated[float, typer.Option("--damping", help="Viscous damping c [N s/m], >= 0, with c/(2 sqrt(k m)) <= 1e11.")]
+Tau = Annotated[Optional[float], declared(Q["tau"], "--tau", "With --law linear-weakening.")]
+Vs = Annotated[Optional[float], declared(Q["vs"], "--vs", "With --law stribeck.")]
+Damping = Annotated[float, declared(Q["damping"], "--damping", "With a damping ratio c/(2 sqrt(k m)) <= 1e11.")]
 Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
 Out = Annotated[Optional[Path], typer.Option("--out", help="Write the data to this netCDF file (.nc).")]
 Plot = Annotated[Optional[Path], typer.Option("--plot", help="Write a figure to this PNG file.")]
@@ -47,7 +47,9 @@ Plot = Annotated[Optional[Path], typer.Option("--plot", help="Write a figure to 
 def Given(option):
     """The option of ``Annotated[float, option]`` made optional (None when left out)."""
     info = option.__metadata__[0]
-    return typer.Option(None, *info.param_decls, help=info.help)
+    given = typer.Option(None, *info.param_decls, help=info.help, callback=info.callback)
+    given.quantity = info.quantity
+    return given
 
 
 def _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, damping) -> Oscillator:
@@ -69,8 +71,8 @@ def _write(ds, out, plot, draw: str) -> None:
 @app.command()
 def cycle(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Belt, fs: Fs, fd: Fd,
           law: LawOpt = Law.coulomb, tau: Tau = None, vs: Vs = None, damping: Damping = 0.0,
-          x0: Annotated[Optional[float], typer.Option(help="Start x [m] (default: end of the stick segment).")] = None,
-          v0: Annotated[Optional[float], typer.Option(help="Start velocity [m/s].")] = None,
+          x0: Annotated[Optional[float], declared(Q["x0"], "--x0", "Default: the end of the stick segment.")] = None,
+          v0: Annotated[Optional[float], declared(Q["v0"], "--v0", "Default: the belt speed.")] = None,
           json: Json = False, out: Out = None, plot: Plot = None):
     """Limit cycle: period, stick and slip times, amplitude, Floquet multipliers."""
     out, plot = output_path("--out", out, ".nc"), output_path("--plot", plot, ".png")
@@ -82,15 +84,14 @@ def cycle(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Be
 
 @app.command("simulate")
 def simulate_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Belt, fs: Fs, fd: Fd,
-                 t_end: Annotated[float, typer.Option("--t-end", help="Final time [s], > 0.")],
+                 t_end: Annotated[float, declared(Q["t_end"], "--t-end")],
                  law: LawOpt = Law.coulomb, tau: Tau = None, vs: Vs = None, damping: Damping = 0.0,
-                 x0: Annotated[Optional[float], typer.Option(help="Initial x [m] (default: equilibrium).")] = None,
-                 v0: Annotated[float, typer.Option(help="Initial velocity [m/s].")] = 0.0,
-                 samples: Annotated[int, typer.Option(help="Uniform samples in the output file.")] = 2001,
+                 x0: Annotated[Optional[float], declared(Q["x0"], "--x0", "Default: steady sliding.")] = None,
+                 v0: Annotated[float, declared(Q["v0"], "--v0")] = 0.0,
+                 samples: Annotated[int, declared(Q["samples"], "--samples")] = 2001,
                  json: Json = False, out: Out = None, plot: Plot = None):
     """Event-driven simulation with exact stick/slip switching."""
     out, plot = output_path("--out", out, ".nc"), output_path("--plot", plot, ".png")
-    check.count("--samples", samples, 10_000_000, "uniform samples of the trajectory")
     traj = simulate(_osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, damping), t_end, x0, v0)
     counts = {name: int((traj.modes == m).sum()) for name, m in (("stick_segments", 0), ("slip_segments", 1),
                                                                   ("reverse_slip_segments", -1))}
@@ -104,8 +105,8 @@ def simulate_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_sp
 def stability(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Belt, fs: Fs, fd: Fd,
               law: LawOpt = Law.coulomb, tau: Tau = None, vs: Vs = None, damping: Damping = 0.0,
               parameter: Annotated[str, typer.Option(help="Parameter scanned for Hopf points.")] = "belt_speed",
-              lo: Annotated[Optional[float], typer.Option(help="Scan from (default: value / 100).")] = None,
-              hi: Annotated[Optional[float], typer.Option(help="Scan to (default: value * 100).")] = None,
+              lo: Annotated[Optional[float], declared(Q["lo"], "--lo", "Default: the value / 100.")] = None,
+              hi: Annotated[Optional[float], declared(Q["hi"], "--hi", "Default: the value x 100.")] = None,
               json: Json = False):
     """Stability of steady sliding and its Hopf (flutter) points."""
     osc = _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, damping)
@@ -119,12 +120,12 @@ def stability(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed
 
 @app.command("continue")
 def continue_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Belt, fs: Fs, fd: Fd,
-                 stop: Annotated[float, typer.Option(help="Continue the parameter towards this value.")],
+                 stop: Annotated[float, declared(Q["stop"], "--stop")],
                  law: LawOpt = Law.coulomb, tau: Tau = None, vs: Vs = None, damping: Damping = 0.0,
                  parameter: Annotated[str, typer.Option(help="Continuation parameter.")] = "belt_speed",
                  from_hopf: Annotated[bool, typer.Option(help="Start from the nearest Hopf point instead.")] = False,
-                 step: Annotated[float, typer.Option(help="Initial arclength step (scaled).")] = 0.02,
-                 max_step: Annotated[float, typer.Option(help="Largest arclength step (scaled).")] = 0.05,
+                 step: Annotated[float, declared(Q["initial_step"], "--step")] = 0.02,
+                 max_step: Annotated[float, declared(Q["max_step"], "--max-step")] = 0.05,
                  json: Json = False, out: Out = None, plot: Plot = None):
     """Continuation of the limit cycle in a parameter (amplitude, period, grazing, Hopf)."""
     out, plot = output_path("--out", out, ".nc"), output_path("--plot", plot, ".png")
@@ -157,7 +158,7 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (a directory endi
             "belt_speed=0.05:1.5:30",
             y: Annotated[str, typer.Option("--y", help=f"Second axis, {AXIS_HELP}.")] = "damping=0.01:0.3:20",
             law: LawOpt = Law.coulomb, tau: Tau = None, vs: Vs = None, damping: Optional[float] = Given(Damping),
-            workers: Annotated[Optional[int], typer.Option(help="Worker processes (default: all cores).")] = None,
+            workers: Annotated[Optional[int], declared(COMMON["workers"], "--workers", "Default: all cores.")] = None,
             overwrite: Overwrite = False, json: Json = False, plot: Plot = None):
     """Regime map over two parameters (steady sliding, stick-slip, bistable, pure slip): resumable, parallel."""
     from ..errors import ParameterError

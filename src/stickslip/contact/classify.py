@@ -35,7 +35,7 @@ import numpy as np
 import xarray as xr
 
 from ..results import Result
-from .. import validation as check
+from ..quantities import COMMON as Q
 from ..cf import finish
 from ..errors import ParameterError
 from .states import SEPARATION, STATE_NAMES, STICK, count_zones, regime_code, regime_name
@@ -45,6 +45,7 @@ __all__ = ["RegimeResult", "classify", "pattern_shift", "pattern_speed"]
 
 def pattern_shift(x1: np.ndarray, x2: np.ndarray, max_shift: float = np.pi) -> float:
     """Shift ``s`` (radians, ``|s| <= max_shift``) with ``x2(theta) ~ x1(theta - s)``."""
+    max_shift = Q.check("max_shift", max_shift)
     N = x1.size
     a, b = x1 - x1.mean(), x2 - x2.mean()
     corr = np.real(np.fft.ifft(np.conj(np.fft.fft(a)) * np.fft.fft(b)))  # corr[k] = sum a[j] b[j + k]
@@ -134,12 +135,12 @@ def classify(run, transits: float | None = None, min_fraction: float = 0.01, min
         Stationarity threshold on the relative residual (and on the state mismatch).
     """
     s = run.scheme
-    min_fraction = check.in_range("min_fraction", min_fraction, 0.0, 1.0, hi_open=True)
-    min_run, tol = check.positive_int("min_run", min_run), check.positive("tol", tol)
+    min_fraction = Q.check("min_fraction", min_fraction)
+    min_run, tol = Q.check("min_run", min_run), Q.check("stationarity_tol", tol, "tol")
     if transits is None:
         span = run.settings["tail_samples"] * run.settings["chunk"] * s.dt
     else:
-        span = check.positive("transits", transits) * s.transit_time
+        span = Q.check("transits", transits) * s.transit_time
     t1 = run.t_end
     snap_t = np.asarray(run.snapshots.get("snap_t", []))
     sel = np.flatnonzero(snap_t >= t1 - span - 1e-12 * t1)
@@ -168,6 +169,7 @@ def classify(run, transits: float | None = None, min_fraction: float = 0.01, min
 def pattern_speed(X: np.ndarray, ts: np.ndarray, n: int) -> float:
     """Speed of the pattern of the snapshots ``X[i]`` (rows at times ``ts``): shifts of at
     most ``pi / n`` between consecutive snapshots, accumulated and fitted against time."""
+    n = Q.check("n", n)
     steps = [pattern_shift(X[i], X[i + 1], np.pi / n) for i in range(len(ts) - 1)]
     return float(np.polyfit(ts, np.concatenate([[0.0], np.cumsum(steps)]), 1)[0])
 

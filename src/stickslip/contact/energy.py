@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import validation as check
+from ..quantities import COMMON as Q
 from .scheme import ExplicitScheme, StepState
 
 __all__ = ["Trace", "trace", "EnergyBooks", "energy_books"]
@@ -59,7 +59,7 @@ class Trace:
 
 def trace(scheme: ExplicitScheme, state: StepState, nsteps: int, contact: bool = True) -> Trace:
     """Advance a copy of ``state`` by ``nsteps`` single steps and record each of them."""
-    nsteps = check.positive_int("nsteps", nsteps)
+    nsteps = Q.check("nsteps", nsteps)
     k = state.copy()
     n, nc = k.u.size, scheme.nodes
     u, a = np.empty((nsteps + 1, n)), np.empty((nsteps, n))

@@ -30,7 +30,7 @@ import numpy as np
 import xarray as xr
 
 from ..results import Result
-from .. import validation as check
+from ..quantities import COMMON as Q
 from ..cf import SOURCE, finish, plain_attrs
 from ..errors import NoSolutionError, ParameterError
 from ..files import content_digest, exclusive
@@ -279,8 +279,8 @@ def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tai
     free dof's displacement and velocity, the contact nodes' reactions and states."""
     if (t_end is None) == (transits is None):
         raise ParameterError("t_end", t_end, "given (> 0), or else transits, but not both")
-    t_end = check.positive("t_end", t_end) if transits is None else \
-        check.positive("transits", transits) * scheme.transit_time
+    t_end = Q.check("t_end", t_end) if transits is None else \
+        Q.check("transits", transits) * scheme.transit_time
     dofs = scheme.sparse_operator.shape[0]
     length = ("t_end", t_end) if transits is None else ("transits", transits)
     if t_end / scheme.dt * dofs > MAX_WORK:
@@ -293,14 +293,14 @@ def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tai
         raise ParameterError(*length, f"<= {most:.4g} on this mesh ({dofs} dofs, {scheme.dt:.3g} per step): "
                              f"at most {MAX_WORK:.0e} dof-steps per run (about 4 hours); continue a run from its "
                              "checkpoint for more")
-    spt = check.positive_int("samples_per_transit", samples_per_transit)
+    spt = Q.check("samples_per_transit", samples_per_transit)
     if spt < 4:
         raise ParameterError("samples_per_transit", spt, "an integer >= 4")
     if progress is not None and not callable(progress):
         raise ParameterError("progress", progress, "a callable progress(t, t_end) or None")
-    modes = min(check.positive_int("modes", modes), scheme.theta.size // 2)
-    settings = {**schedule(scheme, t_end, spt, check.positive("snapshot_every", snapshot_every),
-                           check.nonnegative("tail", tail)),
+    modes = min(Q.check("modes", modes), scheme.theta.size // 2)
+    settings = {**schedule(scheme, t_end, spt, Q.check("snapshot_every", snapshot_every),
+                           Q.check("tail", tail)),
                 "samples_per_transit": spt, "modes": modes, "contact": bool(contact), "initial": initial.label,
                 "initial_hash": initial.digest()}
     least = 3  # samples: with a tail of 3 samples or more, a run of 3 samples has 3 snapshots in it
@@ -318,7 +318,7 @@ def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tai
         raise ParameterError(*length, f"> {(least - 1) / per:.3g} here: the limit regime is read from at least 3 "
                              "snapshots at the end of the run")
     settings["volume_every"] = 0 if volume_every is None else max(1, int(round(min(  # in samples
-        check.positive("volume_every", volume_every) * scheme.steps_per_transit / settings["chunk"], 2.0**53))))
+        Q.check("volume_every", volume_every) * scheme.steps_per_transit / settings["chunk"], 2.0**53))))
     return t_end, settings
 
 
@@ -421,7 +421,7 @@ def loop(run, checkpoint, every, progress, t_end, step: Callable, record: Callab
     series = {key: list(v) for key, v in run.series.items()}
     snaps = {key: list(v) for key, v in run.snapshots.items()}
     done, total, chunk = run.samples_done, st["samples_total"], st["chunk"]
-    every = t_end / 10.0 if every is None else check.positive("every", every)
+    every = t_end / 10.0 if every is None else Q.check("every", every)
     per_checkpoint = max(1, int(every / (chunk * s.dt)))
 
     def result():

@@ -33,7 +33,7 @@ from typing import ClassVar
 import numpy as np
 import scipy.sparse as sp
 
-from .. import validation as check
+from ..quantities import COMMON as Q
 from ..errors import ParameterError
 from .kernel import advance, block2_apply, csr_apply, stencil_apply
 
@@ -44,6 +44,7 @@ def amplification_matrix(w2, beta2, cdt=0.0) -> np.ndarray:
     """One step of the scheme for ``x'' = -lambda x - c x'``, ``w2 = lambda dt^2`` (complex
     allowed), ``cdt = c dt`` (the damping acts on ``v_{m-1}``, as in the kernel):
     ``(u_m, v_{m-1} dt, a_{m-1} dt^2) -> (u_{m+1}, v_m dt, a_m dt^2)``."""
+    beta2, cdt = Q.check("beta2", beta2), Q.check("cdt", cdt)
     am = np.array([-w2, -cdt, 0.0], dtype=complex)
     vm = np.array([0.0, 1.0, 1.0 - beta2]) + beta2 * am
     um = np.array([1.0, 0.0, 0.0]) + vm + 0.5 * am
@@ -55,6 +56,7 @@ def discrete_rates(lam, dt: float, beta2: float) -> np.ndarray:
 
     The fully discrete counterpart of ``s = sqrt(-lambda)`` (vectorised over ``lam``).
     """
+    dt, beta2 = Q.check("dt", dt), Q.check("beta2", beta2)
     lam = np.asarray(lam, dtype=complex)
     out = np.empty(lam.shape, dtype=complex)
     for idx, value in np.ndenumerate(lam):
@@ -70,6 +72,7 @@ _NO_LOAD = np.zeros(0)
 def stencil_matrix(C: np.ndarray, n_theta: int) -> sp.csr_matrix:
     """The sparse matrix of the stencil ``C[i, di + 1, dj + 1, c, c']`` on ``n_r = len(C)`` rings of
     ``n_theta`` nodes (`kernel.stencil_apply` applies minus it without forming it)."""
+    n_theta = Q.check("n_theta", n_theta)
     n_r = C.shape[0]
     i, di, dj, c, c2 = (a.ravel() for a in np.meshgrid(*map(np.arange, C.shape), indexing="ij"))
     val = C.ravel()
@@ -119,8 +122,8 @@ class ExplicitScheme(ABC):
         """Check ``params`` (a ``PARAMS``) and normalise ``beta2`` in [1/2, 1] and ``courant`` in (0, 1]."""
         if not isinstance(self.params, self.PARAMS):
             raise ParameterError("params", self.params, f"a {self.PARAMS.__name__}")
-        object.__setattr__(self, "beta2", check.in_range("beta2", self.beta2, 0.5, 1.0))
-        object.__setattr__(self, "courant", check.in_range("courant", self.courant, 0.0, 1.0, lo_open=True))
+        object.__setattr__(self, "beta2", Q.check("beta2", self.beta2))
+        object.__setattr__(self, "courant", Q.check("courant", self.courant))
 
     # --- what a model defines -----------------------------------------------------------
     @property
@@ -328,7 +331,7 @@ class ExplicitScheme(ABC):
         ``contact=False`` switches contact and friction off; ``sparse=True`` takes the general
         sparse-matrix path even where the scheme has a stencil (the same operator).
         """
-        nsteps = check.positive_int("nsteps", nsteps)
+        nsteps = Q.check("nsteps", nsteps)
         out = self.new_output() if out is None else out
         (normal, tangent), (gap0, speed) = self.contact_dofs, self.surface
         indptr, indices, data, block = self.kernel_operator

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import validation as check
+from ..quantities import COMMON as Q
 from .energy import Trace
 
 __all__ = ["implied_reactions", "contact_law_residuals"]
@@ -41,7 +41,7 @@ def implied_reactions(tr: Trace, mass, stiffness, settle: int = 40) -> tuple[np.
 
     Returns the array ``r[step, dof]`` and the slice of the trace's steps it covers.
     """
-    settle = check.nonnegative("settle", settle)
+    settle = Q.check("settle", settle)
     s = tr.scheme
     dt, b2 = s.dt, s.beta2
     mass = np.broadcast_to(np.asarray(mass, dtype=float), tr.u.shape[1:])

@@ -23,33 +23,37 @@ from skfem import (Basis, BilinearForm, ElementQuad1, ElementQuad2, ElementTriP1
 from skfem.helpers import dot
 from skfem.models.elasticity import lame_parameters, linear_elasticity
 
-from .. import validation as check
+from ..quantities import COMMON, FEM as Q
 from ..errors import ParameterError
 from .body import Body, edge_middles
 from .boundary import Load, Spring, boundary_load, boundary_springs
 
 __all__ = ["Material", "BodySystem", "assemble", "cell_stress"]
 
-PLANES = ("strain", "stress")
-#: Largest Young's modulus [Pa] and density [kg/m^3] accepted: a thousand times diamond's and
-#: osmium's; beyond, springs and loads vanish against the stiffness in double precision.
-MAX_MODULUS, MAX_DENSITY = 1e15, 1e7
+PLANES = Q["plane"].choices
+#: Largest Young's modulus [Pa] and density [kg/m^3] accepted (declared in `stickslip.quantities.FEM`).
+MAX_MODULUS, MAX_DENSITY = Q["young"].range.hi, Q["density"].range.hi
 #: The largest load over Young's modulus (a strain scale): beyond, linear elasticity says nothing.
 MAX_STRAIN = 0.1
 #: The stiffest spring on a node, over the elastic stiffness of its own dof: a million times
 #: stiffer is a clamp (use one); beyond, the eigenvalues lose the body's digits to round-off.
 MAX_SPRING_RATIO = 1e6
-#: Bounds of the Rayleigh coefficients on their own [1/s], [s]; a problem bounds them further
-#: by its mesh (`stickslip.fem.scheme.ContactProblem.check_damping`).
-MAX_ALPHA, MAX_BETA = 1e12, 1.0
+#: Bounds of the Rayleigh coefficients on their own [1/s], [s] (declared); a problem bounds them
+#: further by its mesh (`stickslip.fem.scheme.ContactProblem.check_damping`).
+MAX_ALPHA, MAX_BETA = Q["alpha"].range.hi, Q["beta"].range.hi
 
 
 @dataclass(frozen=True)
 class Material:
     """Linear elastic material: Young's modulus ``young`` [Pa], Poisson's ratio ``poisson``,
     ``density`` [kg/m^3], ``plane`` ``"strain"`` (default) or ``"stress"``, and Rayleigh
-    damping ``C = alpha M + beta K`` (``alpha`` [1/s] in [0, 1e12], ``beta`` [s] in [0, 1]; on a
-    mesh, an explicit run bounds them further: `ContactProblem.check_damping`)."""
+    damping ``C = alpha M + beta K`` (``alpha`` [1/s], ``beta`` [s]; on a mesh, an explicit run
+    bounds them further: `ContactProblem.check_damping`). Ranges: `stickslip.quantities.FEM`.
+
+    ``scaled=True`` says the numbers are in the units of a scaled model (the paper's annulus:
+    ``E = 1``, lengths in ``R``, density ``gamma``), not SI: ``young`` and ``density`` are then
+    checked as ``young_scaled`` and ``density_scaled`` instead of against the physical ranges
+    in Pa and kg/m^3 (and the damping coefficients are in the scaled units of time)."""
 
     young: float
     poisson: float
@@ -57,15 +61,18 @@ class Material:
     plane: str = "strain"
     alpha: float = 0.0
     beta: float = 0.0
+    scaled: bool = False
 
     def __post_init__(self):
-        object.__setattr__(self, "young", check.in_range("young", self.young, 0.0, MAX_MODULUS, lo_open=True))
-        object.__setattr__(self, "poisson", check.poisson_ratio("poisson", self.poisson))
-        object.__setattr__(self, "density", check.in_range("density", self.density, 0.0, MAX_DENSITY, lo_open=True))
-        object.__setattr__(self, "alpha", check.in_range("alpha", self.alpha, 0.0, MAX_ALPHA))
-        object.__setattr__(self, "beta", check.in_range("beta", self.beta, 0.0, MAX_BETA))
-        if self.plane not in PLANES:
-            raise ParameterError("plane", self.plane, "strain or stress")
+        if not isinstance(self.scaled, bool):
+            raise ParameterError("scaled", self.scaled, "true or false")
+        suffix = "_scaled" if self.scaled else ""
+        for name in ("young", "density"):
+            object.__setattr__(self, name, Q.check(name + suffix, getattr(self, name), name))
+        for name in ("poisson", "plane") + (() if self.scaled else ("alpha", "beta")):
+            object.__setattr__(self, name, Q.check(name, getattr(self, name)))
+        for name in ("alpha", "beta") if self.scaled else ():
+            object.__setattr__(self, name, COMMON.check("scaled_damping", getattr(self, name), name))
 
     @property
     def lame(self) -> tuple[float, float]:

@@ -157,7 +157,6 @@ def body_from_meshio(mesh, source: str = "mesh") -> Body:
     renumber[used] = np.arange(used.size)
     boundary = _boundary_edges(cells[:, :_CORNERS[kind]])
     middles = edge_middles(cells, kind) if quadratic else {}
-    line = "line3" if quadratic else "line"
     groups = {}
     for name, per_block in getattr(mesh, "cell_sets", {}).items():
         if name.startswith("gmsh:"):

@@ -19,31 +19,19 @@ on the dofs ``2 i + c`` of `stickslip.fem.assemble`, which adds them to the body
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
 
-from .. import validation as check
+from ..quantities import FEM as Q
 from ..errors import ParameterError
 from .body import Body
 
 __all__ = ["Spring", "Load", "boundary_springs", "boundary_load"]
 
-#: Largest stiffness or load accepted [Pa]: beyond it a double-precision step loses the motion.
-LIMIT = 1e20
-
-
-def _pair(name, value, limit=LIMIT):
-    try:
-        x, y = (float(v) for v in value)
-    except (TypeError, ValueError):
-        raise ParameterError(name, value, "two numbers (x, y)") from None
-    for v in (x, y):
-        if not (math.isfinite(v) and abs(v) <= limit):
-            raise ParameterError(name, value, f"two finite numbers with |value| <= {limit:g}")
-    return x, y
+#: Largest spring stiffness accepted [N/m per m] (declared in `stickslip.quantities.FEM`).
+LIMIT = Q["stiffness"].range.hi
 
 
 @dataclass(frozen=True)
@@ -57,8 +45,8 @@ class Spring:
     def __post_init__(self):
         if not isinstance(self.group, str):
             raise ParameterError("spring.group", self.group, "the name of a boundary group")
-        k = _pair("spring.stiffness", self.stiffness)
-        if min(k) < 0 or max(k) == 0:
+        k = Q["stiffness"].check_pair(self.stiffness, "spring.stiffness")
+        if max(k) == 0:
             raise ParameterError("spring.stiffness", self.stiffness, "two numbers >= 0, not both zero")
         object.__setattr__(self, "stiffness", k)
 
@@ -75,11 +63,8 @@ class Load:
     def __post_init__(self):
         if not isinstance(self.group, str):
             raise ParameterError("load.group", self.group, "the name of a boundary group")
-        p = check.finite("load.pressure", self.pressure)
-        if abs(p) > LIMIT:
-            raise ParameterError("load.pressure", self.pressure, f"a number with |pressure| <= {LIMIT:g} Pa")
-        object.__setattr__(self, "pressure", p)
-        object.__setattr__(self, "traction", _pair("load.traction", self.traction))
+        object.__setattr__(self, "pressure", Q.check("pressure", self.pressure, "load.pressure"))
+        object.__setattr__(self, "traction", Q["traction"].check_pair(self.traction, "load.traction"))
 
 
 #: 4-point Gauss rule on [-1, 1] for the quadratic edges

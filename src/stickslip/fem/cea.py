@@ -30,7 +30,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as sla
 import xarray as xr
 
-from .. import validation as check
+from ..quantities import FEM as Q
 from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
 from ..results import Result
@@ -194,21 +194,32 @@ def eigenvalues_near(K_eff, C_eff, mass, shift_hz: float, count: int, vectors: b
 
 def covered(centres, radii, lo: float, hi: float) -> float:
     """The half-width [1/s] of the strip ``|Re s| < h`` over the frequencies ``[lo, hi]`` [Hz]
-    that the discs about ``i centres`` [rad/s] with ``radii`` [1/s] (sorted by centre, the first
-    at ``2 pi lo``) cover: the lowest of the heights where neighbouring circles cross and of
-    the envelope at ``2 pi hi`` (a lower bound where a third disc reaches over a crossing)."""
-    top = 2.0 * math.pi * hi
-    heights = [max(np.sqrt(np.maximum(radii**2 - (top - centres) ** 2, 0.0)).max(), 0.0), float(radii[0])]
-    for (wa, ra), (wb, rb) in zip(zip(centres, radii), zip(centres[1:], radii[1:])):
-        d = wb - wa
-        x = (d * d + ra * ra - rb * rb) / (2.0 * d)  # where the circles cross, from wa
-        if d >= ra + rb:  # apart: a stretch of the axis uncovered
-            heights.append(0.0)
-        elif rb >= ra + d or ra >= rb + d:  # one holds the other: the larger covers the stretch
-            heights.append(math.sqrt(max(ra, rb) ** 2 - d * d))
-        elif wa + x < top:
-            heights.append(math.sqrt(max(ra * ra - x * x, 0.0)))
-    return float(min(heights))
+    that the discs about ``i centres`` [rad/s] with ``radii`` [1/s] cover: the lowest point over
+    ``[2 pi lo, 2 pi hi]`` of the upper envelope of their circles. Each circle is concave, so
+    that lowest point is at an end of the stretch or where two circles cross (any two: a third
+    may reach over a neighbour), unless the discs leave part of the stretch uncovered (0)."""
+    centres, radii = np.asarray(centres, float), np.asarray(radii, float)
+    bottom, top = 2.0 * math.pi * lo, 2.0 * math.pi * hi
+    reach = sorted(zip(centres - radii, centres + radii))
+    end = bottom
+    for a, b in reach:  # the union of the discs' diameters must hold the whole stretch
+        if a > end:
+            break
+        end = max(end, b)
+    if end < top:
+        return 0.0
+    points = [bottom, top]
+    for i in range(len(centres)):
+        for j in range(i + 1, len(centres)):
+            d = centres[j] - centres[i]
+            if d == 0:
+                continue
+            x = centres[i] + (d * d + radii[i] ** 2 - radii[j] ** 2) / (2.0 * d)  # where the circles cross
+            if bottom < x < top:
+                points.append(x)
+    w = np.asarray(points)
+    envelope = np.sqrt(np.maximum(radii[:, None] ** 2 - (w[None, :] - centres[:, None]) ** 2, 0.0)).max(axis=0)
+    return float(envelope.min())
 
 
 def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], count: int = 30,
@@ -226,21 +237,18 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
     ``complete_below`` is then what the discs cover (lower than asked)."""
     if not isinstance(problem, ContactProblem):
         raise ParameterError("problem", problem, "a ContactProblem")
-    try:
-        lo, hi = (check.nonnegative("band", float(b)) for b in band)
-    except (TypeError, ValueError):
-        raise ParameterError("band", band, "(lo, hi) in Hz") from None
+    lo, hi = Q["band"].check_pair(band)
     if not hi > lo:
         raise ParameterError("band", band, "(lo, hi) with hi > lo >= 0 [Hz]")
     reach = 0.1 * 2.0 * math.pi * hi if complete_below is None else \
-        check.positive("complete_below", complete_below)
+        Q.check("complete_below", complete_below)
     K_eff, C_eff, mass, _ = linearised(problem)
     most = K_eff.shape[0] - 2
-    count = min(check.positive_int("count", count), most)
+    count = min(Q.check("count", count), most)
     max_count = min(1000, 16 * count, max(count, most // 2)) if max_count is None else \
-        check.positive_int("max_count", max_count)  # (beyond a quarter of the pencil Arnoldi gains nothing)
+        Q.check("max_count", max_count)  # (beyond a quarter of the pencil Arnoldi gains nothing)
     max_count = max(count, min(max_count, most))
-    max_shifts = check.positive_int("max_shifts", max_shifts)
+    max_shifts = Q.check("max_shifts", max_shifts)
     found, shapes, shifts, radii, shift, k = [], [], [], [], lo, count
     while True:
         if len(shifts) >= max_shifts:

@@ -44,14 +44,13 @@
 from __future__ import annotations
 
 import math
-import sys
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .. import validation as check
+from ..quantities import FEM as Q
 from ..errors import ParameterError
-from .assembly import MAX_ALPHA, MAX_BETA, MAX_DENSITY, MAX_MODULUS, MAX_STRAIN, PLANES, Material, assemble
+from .assembly import MAX_STRAIN, PLANES, Material, assemble
 from .body import read_body
 from .boundary import LIMIT, Load, Spring
 from .scheme import ContactProblem
@@ -96,40 +95,34 @@ class FemConfig:
         return ContactProblem(system, frames, self.friction, self.clamped, self.static_friction)
 
 
-def _plain_number(value) -> bool:
-    """A finite number, zero or normal (a subnormal one, below 2.2e-308 in size, has lost digits)."""
-    return (isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
-            and not check.subnormal(value))
+def _problem(err: ParameterError) -> str:
+    """A `ParameterError` as one problem of the list: ``where = value must be ...``."""
+    return f"{err.name} = {_toml(err.value)} must be {err.allowed}"
 
 
-_SUBNORMAL = f", zero or at least {sys.float_info.min:.3g} in size (a subnormal number has lost digits)"
-
-
-def _number(problems, where, value, lo=None, hi=None, positive=False):
-    ok = _plain_number(value)
-    if ok and positive and value <= 0:
-        ok = False
-    if ok and lo is not None and value < lo:
-        ok = False
-    if ok and hi is not None and value >= hi:
-        ok = False
-    if not ok:
-        rng = (f"a number in (0, {hi:g})" if positive and hi is not None else "a number > 0" if positive
-               else f"a number in [{lo}, {hi})" if hi is not None else f"a number >= {lo}" if lo is not None
-               else "a finite number")
-        problems.append(f"{where} is missing ({rng})" if value is None else f"{where} = {value!r} must be {rng}"
-                        + _SUBNORMAL * check.subnormal(value))
+def _number(problems, where, value, name=None):
+    """The declared quantity ``name`` (default: the key after the last dot) at ``where``."""
+    q = Q[name or where.rsplit(".", 1)[-1]]
+    if value is None:
+        problems.append(f"{where} is missing ({q.allowed})")
         return None
-    return float(value)
+    try:
+        return q.check(value, where)
+    except ParameterError as err:
+        problems.append(_problem(err))
+        return None
 
 
-def _pair(problems, where, value):
-    if isinstance(value, list) and len(value) == 2 and all(_plain_number(v) for v in value):
-        return tuple(float(v) for v in value)
-    problems.append(f"{where} is missing (two numbers [x, y])" if value is None
-                    else f"{where} = {value!r} must be two numbers [x, y]"
-                    + _SUBNORMAL * (isinstance(value, list) and any(map(check.subnormal, value))))
-    return None
+def _pair(problems, where, value, name=None):
+    q = Q[name or where.rsplit(".", 1)[-1]]
+    if value is None:
+        problems.append(f"{where} is missing (two numbers [x, y], each {q.allowed})")
+        return None
+    try:
+        return q.check_pair(value, where)
+    except ParameterError as err:
+        problems.append(_problem(err))
+        return None
 
 
 def load_config(path) -> FemConfig:
@@ -162,11 +155,11 @@ def load_config(path) -> FemConfig:
         problems.append(f"clamped = {clamped!r} must be a list of boundary group names")
         clamped = []
     m = data.get("material", {}) if isinstance(data.get("material", {}), dict) else {}
-    young = _number(problems, "material.young", m.get("young"), positive=True, hi=MAX_MODULUS)
-    poisson = _number(problems, "material.poisson", m.get("poisson"), 0.0, 0.5)
-    density = _number(problems, "material.density", m.get("density"), positive=True, hi=MAX_DENSITY)
-    alpha = _number(problems, "material.alpha", m.get("alpha", 0.0), 0.0, MAX_ALPHA)
-    beta = _number(problems, "material.beta", m.get("beta", 0.0), 0.0, MAX_BETA)
+    young = _number(problems, "material.young", m.get("young"))
+    poisson = _number(problems, "material.poisson", m.get("poisson"))
+    density = _number(problems, "material.density", m.get("density"))
+    alpha = _number(problems, "material.alpha", m.get("alpha", 0.0))
+    beta = _number(problems, "material.beta", m.get("beta", 0.0))
     plane = m.get("plane", "strain")
     if plane not in PLANES:
         problems.append(f"material.plane = {plane!r} must be one of {', '.join(PLANES)}")
@@ -174,26 +167,30 @@ def load_config(path) -> FemConfig:
     group = c.get("group")
     if not isinstance(group, str):
         problems.append("contact.group must be the name of a boundary group")
-    friction = _number(problems, "contact.friction", c.get("friction", 0.0), 0.0, 100.0)
+    friction = _number(problems, "contact.friction", c.get("friction", 0.0))
     static = c.get("static_friction")
     if static is not None:
-        static = _number(problems, "contact.static_friction", static, friction or 0.0, 100.0)
+        static = _number(problems, "contact.static_friction", static)
+        if None not in (static, friction) and static < friction:
+            problems.append(f"contact.static_friction = {static!r} must be >= contact.friction = {friction!r}")
+            static = None
     springs = _springs(problems, data.get("spring", []))
     loads = _loads(problems, data.get("load", []))
     surface = _surface(problems, data.get("surface", {}) if isinstance(data.get("surface", {}), dict) else {},
                        friction, "surface" in data)
     e = data.get("cea", {}) if isinstance(data.get("cea", {}), dict) else {}
-    band = e.get("band", [0.0, 1e4])
-    if not (isinstance(band, list) and len(band) == 2 and all(isinstance(b, (int, float)) and math.isfinite(b)
-                                                              for b in band) and 0 <= band[0] < band[1]):
-        problems.append(f"cea.band = {band!r} must be [lo, hi] in Hz with 0 <= lo < hi")
-        band = [0.0, 1.0]
+    band = _pair(problems, "cea.band", e.get("band", [0.0, 1e4]))
+    if band is not None and not band[0] < band[1]:
+        problems.append(f"cea.band = {list(band)!r} must be [lo, hi] in Hz with lo < hi")
+    band = band if band is not None and band[0] < band[1] else (0.0, 1.0)
     count = e.get("count", 30)
-    if not (isinstance(count, int) and not isinstance(count, bool) and 2 <= count <= 1000):
-        problems.append(f"cea.count = {count!r} must be an integer in [2, 1000]")
+    if not isinstance(count, int):  # 30.0 is not a count in TOML
+        problems.append(f"cea.count = {_toml(count)} must be {Q['count'].allowed}")
+    else:
+        count = _number(problems, "cea.count", count)
     below = e.get("complete_below")
     if below is not None:
-        below = _number(problems, "cea.complete_below", below, positive=True, hi=1e12)
+        below = _number(problems, "cea.complete_below", below)
     if young is not None:
         big = MAX_STRAIN * young
         problems += [f"load[{i}].pressure = {x.pressure!r} must be at most {MAX_STRAIN:g} x material.young = {big:.4g} "
@@ -265,7 +262,7 @@ def _springs(problems, value):
     out = []
     for where, t in _tables(problems, "spring", value, {"group", "stiffness"}):
         k = _pair(problems, f"{where}.stiffness", t.get("stiffness"))
-        if k is not None and (min(k) < 0 or max(k) == 0 or max(k) > LIMIT):
+        if k is not None and max(k) == 0:
             problems.append(f"{where}.stiffness = {list(k)!r} must be two numbers in [0, {LIMIT:g}], not both zero")
         elif k is not None:
             out.append(Spring(t["group"], k))
@@ -275,11 +272,9 @@ def _springs(problems, value):
 def _loads(problems, value):
     out = []
     for where, t in _tables(problems, "load", value, {"group", "pressure", "traction"}):
-        p = _number(problems, f"{where}.pressure", t.get("pressure", 0.0), -LIMIT, LIMIT)
+        p = _number(problems, f"{where}.pressure", t.get("pressure", 0.0))
         q = _pair(problems, f"{where}.traction", t.get("traction", [0.0, 0.0]))
-        if q is not None and max(map(abs, q)) > LIMIT:
-            problems.append(f"{where}.traction = {list(q)!r} must be two numbers with |value| <= {LIMIT:g}")
-        elif None not in (p, q):
+        if None not in (p, q):
             out.append(Load(t["group"], p, q))
     return tuple(out)
 
@@ -299,7 +294,7 @@ def _surface(problems, s, friction, given=True):
     rubs = friction is not None and friction > 0  # a surface at rest gives friction no direction
     push = _number(problems, "surface.interference", s.get("interference", 0.0))
     if kind == "cylinder":
-        radius = _number(problems, "surface.radius", s.get("radius"), positive=True)
+        radius = _number(problems, "surface.radius", s.get("radius"))
         omega = _number(problems, "surface.omega", s.get("omega"))
         center = _pair(problems, "surface.center", s.get("center", [0.0, 0.0]))
         inside = s.get("body_inside", False)
@@ -326,7 +321,7 @@ def _surface(problems, s, friction, given=True):
         velocity = _pair(problems, "surface.velocity", s.get("velocity"))
         if None in (point, normal, velocity, push):
             return None
-        if math.hypot(*velocity) > MAX_SPEED:
+        if math.hypot(*velocity) > MAX_SPEED:  # each component is declared, the speed too
             problems.append(f"surface.velocity = {list(velocity)!r} must be at most {MAX_SPEED:g} m/s in size")
             return None
         if rubs and velocity == (0.0, 0.0):

@@ -21,7 +21,7 @@ from typing import Callable, ClassVar
 
 import numpy as np
 
-from .. import validation as check
+from ..quantities import COMMON, FEM as Q
 from ..contact import classify
 from ..contact.runs import RunFormat, RunRecord, prepare, run_explicit
 from ..errors import ParameterError
@@ -51,7 +51,7 @@ def perturbed_steady_body(scheme: BodyScheme, amplitude: float = 1e-3, seed: int
     """
     if not isinstance(scheme, BodyScheme):
         raise ParameterError("scheme", scheme, "a BodyScheme")
-    amplitude = check.in_range("amplitude", amplitude, 0.0, 100.0)  # beyond, the start is no longer near steady sliding
+    amplitude = COMMON.check("amplitude", amplitude)  # beyond, the start is no longer near steady sliding
     u_e, _, _ = scheme.steady_reference()
     normal, tangent = scheme.contact_dofs
     size = float(np.abs(u_e[np.concatenate([normal, tangent])]).max()) or 1.0
@@ -69,7 +69,7 @@ def preload_body(scheme: BodyScheme, velocity=(0.0, 0.0)) -> BodyInitial:
     (``velocity`` its velocity: the body starts sticking, as the 1-DOF oscillator on its stick segment)."""
     if not isinstance(scheme, BodyScheme):
         raise ParameterError("scheme", scheme, "a BodyScheme")
-    vx, vy = (check.in_range("velocity", float(c), -1e6, 1e6) for c in velocity)
+    vx, vy = Q["velocity"].check_pair(velocity)
     p = scheme.params
     pre = steady_contact(p.system, p.frames, 0.0, p.clamped)
     v = np.zeros(p.system.n_dofs)

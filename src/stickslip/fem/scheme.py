@@ -28,6 +28,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as sla
 
 from .. import validation as check
+from ..quantities import FEM as Q
 from ..contact import ExplicitScheme
 from ..errors import ParameterError
 from .assembly import BodySystem
@@ -57,9 +58,9 @@ class ContactProblem:
             raise ParameterError("system", self.system, "a BodySystem (see assemble)")
         if not isinstance(self.frames, ContactFrames):
             raise ParameterError("frames", self.frames, "ContactFrames (see contact_frames)")
-        object.__setattr__(self, "friction", check.nonnegative("friction", self.friction))
+        object.__setattr__(self, "friction", Q.check("friction", self.friction))
         fs = self.friction if self.static_friction is None else self.static_friction
-        object.__setattr__(self, "static_friction", check.at_least("static_friction", fs, self.friction, "friction"))
+        object.__setattr__(self, "static_friction", check.at_least("static_friction", Q.check("static_friction", fs), self.friction, "friction"))
         if self.friction > 0 and not np.all(self.frames.speed > 0):
             raise ParameterError("frames", "of a surface at rest", "the frames of a moving surface when friction > 0 "
                                  "(a surface at rest gives friction no sliding direction)", also=("friction",))
@@ -156,7 +157,7 @@ class BodyScheme(ExplicitScheme):
     def __post_init__(self):
         self.validate_common()
         if self.time_step is not None:
-            step = check.positive("time_step", self.time_step)
+            step = Q.check("time_step", self.time_step)
             if step > self.dt_max:
                 raise ParameterError("time_step", step, f"<= the stable step {self.dt_max:.6g} s of this mesh "
                                      f"(its highest mode: omega_max = {self.omega_max:.6g} rad/s, with its damping)")

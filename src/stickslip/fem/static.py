@@ -28,6 +28,7 @@ import scipy.sparse.linalg as sla
 import xarray as xr
 
 from .. import validation as check
+from ..quantities import FEM as Q
 from ..cf import finish
 from ..errors import NoSolutionError
 from ..results import Result
@@ -150,9 +151,9 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
     body (else the system is singular: `NoSolutionError`). ``static_friction`` is only
     recorded in ``params`` (every node slips in steady sliding, at ``friction``).
     """
-    friction = check.nonnegative("friction", friction)
+    friction = Q.check("friction", friction)
     if static_friction is not None:
-        static_friction = check.at_least("static_friction", static_friction, friction, "friction")
+        static_friction = check.at_least("static_friction", Q.check("static_friction", static_friction), friction, "friction")
     n_dofs = system.n_dofs
     T = frame_rotation(n_dofs, frames)
     Kw = (T.T @ system.K @ T).tocsr()

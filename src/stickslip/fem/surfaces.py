@@ -21,13 +21,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import validation as check
+from ..quantities import FEM as Q
 from ..errors import ParameterError
 
 __all__ = ["RigidCylinder", "RigidFlat", "ContactFrames", "contact_frames", "MAX_SPEED"]
 
-#: The fastest surface [m/s] (a bound on the input, far above any sliding speed of interest).
-MAX_SPEED = 1e6
+#: The fastest surface [m/s] (declared: the range of a flat's velocity).
+MAX_SPEED = Q["velocity"].range.hi
 
 
 @dataclass(frozen=True)
@@ -43,11 +43,11 @@ class RigidCylinder:
     SIDE = "body_inside"
 
     def __post_init__(self):
-        check.positive("radius", self.radius)
-        check.finite("omega", self.omega)
-        if len(self.center) != 2:
-            raise ParameterError("center", self.center, "two coordinates (x, y) [m]")
-        object.__setattr__(self, "center", tuple(check.finite("center", c) for c in self.center))
+        object.__setattr__(self, "radius", Q.check("radius", self.radius))
+        object.__setattr__(self, "omega", Q.check("omega", self.omega))
+        object.__setattr__(self, "center", Q["center"].check_pair(self.center, "center"))
+        if not isinstance(self.body_inside, bool):
+            raise ParameterError("body_inside", self.body_inside, "true or false")
         if abs(self.omega) * self.radius > MAX_SPEED:
             raise ParameterError("omega", self.omega, f"at most {MAX_SPEED:g} m/s at the surface in size: "
                                  f"|omega| <= {MAX_SPEED / self.radius:.4g} rad/s", also=("radius",))
@@ -83,10 +83,7 @@ class RigidFlat:
 
     def __post_init__(self):
         for name in ("point", "normal", "velocity"):
-            value = getattr(self, name)
-            if len(value) != 2:
-                raise ParameterError(name, value, "two components (x, y)")
-            object.__setattr__(self, name, tuple(check.finite(name, c) for c in value))
+            object.__setattr__(self, name, Q[name].check_pair(getattr(self, name)))
         if math.hypot(*self.velocity) > MAX_SPEED:
             raise ParameterError("velocity", list(self.velocity), f"at most {MAX_SPEED:g} m/s in size")
         if math.hypot(*self.normal) == 0:

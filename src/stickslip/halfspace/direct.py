@@ -29,9 +29,8 @@ from scipy.optimize import brentq
 
 from ..results import Result
 from ..cf import finish
-from .. import validation as check
+from ..quantities import HALFSPACE as Q
 from ..errors import NoSolutionError, ParameterError
-from .arrays import v_star_at_most
 from .inverse import system_factor
 from .waves import radok
 
@@ -127,17 +126,11 @@ class DirectSolution(Result):
 
 
 def _loading(T, v, v_star):
-    T = check.finite("T", T)
-    if T <= 0:
-        raise ParameterError("T", T, "> 0 (T = (mu - mu*)(-tau*_yy)/G with mu* < mu, tau*_yy < 0)")
-    v = check.positive("v", v)
-    vs = check.finite("v_star", v_star)
+    T, v, vs = Q.check("T", T), Q.check("v", v), Q.check("v_star", v_star)
     if vs == 0.0:
         raise NoSolutionError("v_star = 0: [54]-[55] only have the trivial solution v = 0, T = 0, "
                               "so no stick-slip wave carries a loading with T > 0")
-    if vs < 0:
-        raise ParameterError("v_star", vs, "> 0 (V* = c nu (1 + nu) tau*_yy / E > 0 by eq. [26])")
-    return T, v, v_star_at_most(vs)
+    return T, v, vs
 
 
 def direct_problem(T, v, v_star, *, nu, mu, system: str = "printed", n_grid: int = 4001) -> DirectSolution:
@@ -163,7 +156,7 @@ def direct_problem(T, v, v_star, *, nu, mu, system: str = "printed", n_grid: int
     """
     T, v, vs = _loading(T, v, v_star)
     k = system_factor(system)
-    n_grid = check.positive_int("n_grid", n_grid)
+    n_grid = Q.check("n_grid", n_grid)
     grid = cbar_grid(n_grid)
     rd = radok(grid, nu, mu)
     b, F = _residual(rd, T, v, vs, k)
@@ -218,12 +211,12 @@ def direct_map(v_ratio, T_ratio, *, nu, mu, system: str = "printed", n_grid: int
     by vectorised bisection.
     """
     k = system_factor(system)
-    v_ratio = np.atleast_1d(np.asarray(v_ratio, dtype=float))
-    T_ratio = np.atleast_1d(np.asarray(T_ratio, dtype=float))
+    v_ratio = np.atleast_1d(Q["v_ratio"].check_array(v_ratio))
+    T_ratio = np.atleast_1d(Q["T_ratio"].check_array(T_ratio))
     for name, arr in (("v_ratio", v_ratio), ("T_ratio", T_ratio)):
-        bad = ~np.isfinite(arr) | (arr <= 0)
-        if bad.any():
-            raise ParameterError(name, float(arr[bad][0]), "> 0 and finite")
+        if arr.size == 0 or arr.ndim != 1:
+            raise ParameterError(name, arr.tolist(), "a number or a non-empty list of numbers")
+    n_grid, max_solutions = Q.check("n_grid", n_grid), Q.check("max_solutions", max_solutions)
     grid = cbar_grid(n_grid)
     rd = radok(grid, nu, mu)
     V, TT = np.meshgrid(v_ratio, T_ratio, indexing="ij")

@@ -43,9 +43,9 @@ from scipy.special import roots_jacobi
 
 from ..results import Result
 from ..cf import finish
-from .. import validation as check
+from ..quantities import HALFSPACE as Q
 from ..errors import ParameterError
-from .arrays import MAX_B, b_array, real_array
+from .arrays import MAX_B, b_array
 from .inverse import inverse_problem
 from .waves import Radok, radok
 
@@ -82,7 +82,8 @@ def decaying_velocity(b, cbar, T, v_star, *, nu, mu):
     """
     rd = radok(cbar, nu, mu)
     b = b_array(b)
-    T = real_array("T", T)  # physical loadings have T > 0; the formula is linear in T
+    # T of a computed solution, any real: the formula is linear in T (physical loadings have T > 0)
+    T, v_star = Q["T_result"].check_array(T, "T"), Q.check("v_star", v_star)
     lam = rd.lam
     R = -(T / rd.gamma_mod) * np.sin(np.pi * lam * (b - 1.0) / b) / np.sin(np.pi * lam / b)
     return v_star + R * rd.cbar * rd.one_minus_b1b2
@@ -190,9 +191,9 @@ class StickSlipWave(Result):
 
     def __post_init__(self):
         object.__setattr__(self, "b", float(b_array(self.b, most=MAX_B)))
-        object.__setattr__(self, "T", check.positive("T", self.T))
-        object.__setattr__(self, "v", check.finite("v", self.v))
-        object.__setattr__(self, "v_star", check.finite("v_star", self.v_star))
+        object.__setattr__(self, "T", Q.check("T", self.T))
+        object.__setattr__(self, "v", Q.check("v", self.v))
+        object.__setattr__(self, "v_star", Q.check("v_star", self.v_star))
         if self.v == self.v_star:
             raise ParameterError("v", self.v, f"!= v_star = {self.v_star:g} (no slip, no wave)")
         rd = radok(self.cbar, self.nu, self.mu)
@@ -204,9 +205,7 @@ class StickSlipWave(Result):
             physical = self.nu > 0 and self.v_star > 0
             tau = 2.0 * self.v_star / (self.cbar * self.nu) if physical else float("nan")
         else:
-            tau = check.finite("tau_yy", self.tau_yy)
-            if tau >= 0:
-                raise ParameterError("tau_yy", tau, "< 0 (remote compression)")
+            tau = Q.check("tau_yy", self.tau_yy)
         object.__setattr__(self, "tau_yy", float(tau))
 
     # --- constants of the closed form -------------------------------------------
@@ -311,7 +310,7 @@ class StickSlipWave(Result):
         z = np.asarray(z, dtype=complex)
         if np.any(z.imag >= 0):
             raise ParameterError("z", z[z.imag >= 0].flat[0], "in the lower half-plane (Im z < 0)")
-        n = check.positive_int("n", n)
+        n = Q.check("n", n)
         b, lam = self.b, self.lam
         d = float(np.min(-z.imag))
         xl, wl = np.polynomial.legendre.leggauss(n)
@@ -359,7 +358,7 @@ class StickSlipWave(Result):
         """Interface fields at ``x`` (default: ``n`` points over one period, clustered at
         the transitions ``0 (= b), 1``)."""
         if x is None:
-            n = check.count("points", n, 10_000_000, "interface points per period")
+            n = Q.check("points", n)
             n_st = max(n // 4, 2)
             s_st = (np.arange(n_st) + 0.5) / n_st
             s_sl = (np.arange(max(n - n_st, 2)) + 0.5) / max(n - n_st, 2)

@@ -32,15 +32,17 @@ from typing import ClassVar
 
 from dataclasses import dataclass
 
+import math
+
 import numpy as np
 import xarray as xr
 from scipy.optimize import brentq
 
 from ..results import Result
 from ..cf import finish
-from .. import validation as check
+from ..quantities import HALFSPACE as Q
 from ..errors import NoSolutionError, ParameterError
-from .arrays import b_array, v_star_at_most
+from .arrays import MAX_B_ALGEBRA, b_array
 from .waves import Radok, radok
 
 __all__ = ["SYSTEMS", "InverseSolution", "inverse_problem", "system_matrix", "determinant",
@@ -59,14 +61,12 @@ def system_factor(system: str) -> float:
 
 def _v_star(v_star) -> float:
     """``v* = V*/c2``: > 0 by [26] (``c < 0``, ``tau*_yy < 0``); 0 has no wave."""
-    vs = check.finite("v_star", v_star)
+    vs = Q.check("v_star", v_star)
     if vs == 0.0:
         raise NoSolutionError(
             "v_star = 0: equations [54]-[55] are homogeneous with a non-zero determinant, so "
             "the only solution is the trivial one v = 0, T = 0 (no stick-slip wave)")
-    if vs < 0.0:
-        raise ParameterError("v_star", vs, "> 0 (V* = c nu (1 + nu) tau*_yy / E > 0 by eq. [26])")
-    return v_star_at_most(vs)
+    return vs
 
 
 def _entries(b, rd: Radok, v_star: float, k: float):
@@ -93,7 +93,7 @@ def system_matrix(b, cbar, v_star, nu, mu, system: str = "printed"):
     b = b_array(b)
     rd = radok(cbar, nu, mu)
     b, _ = np.broadcast_arrays(b, rd.cbar)
-    a11, a12, a21, a22, r1, r2 = np.broadcast_arrays(*_entries(b, rd, check.finite("v_star", v_star), k))
+    a11, a12, a21, a22, r1, r2 = np.broadcast_arrays(*_entries(b, rd, Q.check("v_star", v_star), k))
     M = np.stack([np.stack([a11, a12], -1), np.stack([a21, a22], -1)], -2)
     return M, np.stack([r1, r2], -1)
 
@@ -295,5 +295,8 @@ def b_for_loading(cbar, T, v_star, *, nu, mu, system: str = "printed") -> float:
         sol = inverse_problem(1.0 + np.exp(u), cbar, v_star, nu=nu, mu=mu, system=system)
         return float(np.log(sol.T / T))
 
-    u = brentq(g, -30.0, 30.0, xtol=1e-14)
+    lo, hi = -30.0, math.log(MAX_B_ALGEBRA - 1.0) - 1e-9  # b from 1 + 1e-13 to (just under) the largest declared
+    if g(lo) * g(hi) > 0:
+        raise NoSolutionError(f"no period b in (1, {MAX_B_ALGEBRA:g}] gives the traction T = {T:g} at c = {cbar:g}")
+    u = brentq(g, lo, hi, xtol=1e-14)
     return 1.0 + float(np.exp(u))

@@ -27,8 +27,7 @@ from typing import ClassVar
 from dataclasses import dataclass
 
 from ..results import Result
-from .. import validation as check
-from .arrays import MAX_MU, v_star_at_most
+from ..quantities import HALFSPACE as Q
 from ..errors import ParameterError
 
 __all__ = ["remote_strain", "v_star_from_stress", "stress_from_v_star", "driving_traction",
@@ -36,15 +35,13 @@ __all__ = ["remote_strain", "v_star_from_stress", "stress_from_v_star", "driving
 
 
 def _tau_yy(tau_yy) -> float:
-    t = check.finite("tau_yy", tau_yy)
-    if t >= 0:
-        raise ParameterError("tau_yy", t, "< 0 (remote compression)")
+    t = Q.check("tau_yy", tau_yy)
     return t
 
 
 def _mu_pair(mu, mu_star) -> tuple[float, float]:
-    mu = check.in_range("mu", mu, 0.0, MAX_MU, lo_open=True)
-    mu_star = check.nonnegative("mu_star", mu_star)
+    mu = Q.check("mu", mu)
+    mu_star = Q.check("mu_star", mu_star)
     if mu_star >= mu:
         raise ParameterError("mu_star", mu_star, f"< mu = {mu:g} (apparent friction below the local one)")
     return mu, mu_star
@@ -53,26 +50,22 @@ def _mu_pair(mu, mu_star) -> tuple[float, float]:
 def remote_strain(tau_yy, young, nu, *, plane: str = "strain") -> float:
     """``eps*_xx`` under ``tau*_yy`` alone: [25] in plane strain, ``-nu tau/E`` in plane stress."""
     t = _tau_yy(tau_yy)
-    E = check.positive("young", young)
-    nu = check.poisson_ratio("nu", nu)
-    if plane == "strain":
-        return -nu * (1.0 + nu) * t / E
-    if plane == "stress":
-        return -nu * t / E
-    raise ParameterError("plane", plane, "'strain' or 'stress'")
+    E = Q.check("young", young)
+    nu = Q.check("nu", nu)
+    return (-nu * (1.0 + nu) if Q.check("plane", plane) == "strain" else -nu) * t / E
 
 
 def v_star_from_stress(cbar, tau_yy_over_G, nu) -> float:
     """``v* = V*/c2 = cbar nu (tau*_yy/G)/2`` ([26] scaled); > 0 for ``cbar, tau < 0``."""
-    c = check.in_range("c", cbar, -1.0, 0.0, lo_open=True, hi_open=True)
-    return c * check.poisson_ratio("nu", nu) * _tau_yy(tau_yy_over_G) / 2.0
+    c = Q.check("cbar", cbar, "c")
+    return c * Q.check("nu", nu) * _tau_yy(tau_yy_over_G) / 2.0
 
 
 def stress_from_v_star(cbar, v_star, nu) -> float:
     """``tau*_yy/G = 2 v*/(cbar nu)``: [26] solved for the remote normal stress (``nu > 0``)."""
-    c = check.in_range("c", cbar, -1.0, 0.0, lo_open=True, hi_open=True)
-    vs = v_star_at_most(check.positive("v_star", v_star))
-    nu = check.poisson_ratio("nu", nu)
+    c = Q.check("cbar", cbar, "c")
+    vs = Q.check("v_star", v_star)
+    nu = Q.check("nu", nu)
     if nu == 0.0:
         raise ParameterError("nu", nu, "> 0 here: with nu = 0, [26] gives V* = 0 for every tau*_yy")
     return 2.0 * vs / (c * nu)
@@ -80,14 +73,14 @@ def stress_from_v_star(cbar, v_star, nu) -> float:
 
 def driving_traction(tau_yy, tau_xy, mu) -> float:
     """``T* = -tau*_xy - mu tau*_yy`` ([40]); any consistent unit (or scaled by ``G``)."""
-    mu = check.in_range("mu", mu, 0.0, MAX_MU, lo_open=True)
-    return -check.finite("tau_xy", tau_xy) - mu * _tau_yy(tau_yy)
+    mu = Q.check("mu", mu)
+    return -Q.check("tau_xy", tau_xy) - mu * _tau_yy(tau_yy)
 
 
 def stresses_from_T(T, mu, mu_star) -> tuple[float, float]:
     """``(tau*_yy, tau*_xy)`` (same scaling as ``T``) from ``T = (mu - mu*)(-tau*_yy)``
     and ``tau*_xy = -mu* tau*_yy``."""
-    T = check.positive("T", T)
+    T = Q.check("T", T)
     mu, mu_star = _mu_pair(mu, mu_star)
     tau_yy = -T / (mu - mu_star)
     return tau_yy, -mu_star * tau_yy

@@ -26,15 +26,15 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..results import Result
-from .. import validation as check
-from .arrays import MAX_MU, cbar_array
+from ..quantities import HALFSPACE as Q
+from .arrays import cbar_array
 
 __all__ = ["Material", "wave_speed_ratio", "rayleigh_speed_ratio", "rayleigh_function", "Radok", "radok"]
 
 
 def wave_speed_ratio(nu) -> float:
     """``c1/c2 = sqrt(2 (1 - nu) / (1 - 2 nu))`` in plane strain (``0 <= nu < 1/2``)."""
-    nu = check.poisson_ratio("nu", nu)
+    nu = Q.check("nu", nu)
     return math.sqrt(2.0 * (1.0 - nu) / (1.0 - 2.0 * nu))
 
 
@@ -74,9 +74,9 @@ class Material(Result):
     density: float = 7850.0
 
     def __post_init__(self):
-        object.__setattr__(self, "young", check.positive("young", self.young))
-        object.__setattr__(self, "poisson", check.poisson_ratio("poisson", self.poisson))
-        object.__setattr__(self, "density", check.positive("density", self.density))
+        object.__setattr__(self, "young", Q.check("young", self.young))
+        object.__setattr__(self, "poisson", Q.check("poisson", self.poisson))
+        object.__setattr__(self, "density", Q.check("density", self.density))
 
     @property
     def shear_modulus(self) -> float:
@@ -180,8 +180,8 @@ def radok(cbar, nu, mu) -> Radok:
         Local friction coefficient > 0.
     """
     c = cbar_array(cbar)
-    nu = check.poisson_ratio("nu", nu)
-    mu = check.in_range("mu", mu, 0.0, MAX_MU, lo_open=True)
+    nu = Q.check("nu", nu)
+    mu = Q.check("mu", mu)
     c1bar = wave_speed_ratio(nu)
     c2sq, r = c * c, 1.0 / c1bar**2
     beta1 = np.sqrt(1.0 - c2sq * r)

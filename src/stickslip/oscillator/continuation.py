@@ -24,9 +24,9 @@ import xarray as xr
 
 from ..results import Result
 from ..cf import finish
-from ..vocabulary import lookup
 from .. import validation as check
-from ..errors import NoSolutionError
+from ..quantities import OSCILLATOR as Q, lookup
+from ..errors import NoSolutionError, ParameterError
 from .cycle import LimitCycle, characterise, limit_cycle, return_map, solve_section
 from .model import Oscillator
 from .simulate import Engine, params_attrs
@@ -120,7 +120,7 @@ def _correct(problem: _Problem, u_pred, tangent, tol, max_iter=12):
     for it in range(max_iter):
         try:
             g, dg, engine, rm = problem.residual(u)
-        except (NoSolutionError, check.ParameterError):  # no cycle, or an iterate past the valid range
+        except (NoSolutionError, ParameterError):  # no cycle, or an iterate past the valid range
             return None
         if it >= 3 and abs(g) > 0.5 * previous:  # not converging: let the caller shrink the step
             return None
@@ -160,17 +160,17 @@ def continue_cycle(osc: Oscillator, stop: float, *, parameter: str = "belt_speed
         section coordinate relative to ``f_s N / k``).
     """
     start = osc.parameter(parameter)
-    stop = check.finite("stop", stop)
+    stop = Q.check("stop", stop)
     if stop == start:
-        raise check.ParameterError("stop", stop, f"different from the start value {start:g}")
+        raise ParameterError("stop", stop, f"different from the start value {start:g}")
     try:  # the branch may run up to stop: it must be a valid value of the parameter
         osc.with_parameter(parameter, stop)
-    except check.ParameterError as err:
-        raise check.ParameterError("stop", stop, f"a valid {parameter}, {err.allowed}", also=err.also) from None
-    min_step = check.positive("min_step", min_step)
-    step = check.at_least("step", step, min_step, "min_step")
-    max_step = check.at_least("max_step", max_step, step, "step")
-    check.positive_int("max_points", max_points)
+    except ParameterError as err:
+        raise ParameterError("stop", stop, f"a valid {parameter}, {err.allowed}", also=err.also) from None
+    min_step = Q.check("min_step", min_step)
+    step = check.at_least("step", Q.check("initial_step", step, "step"), min_step, "min_step")
+    max_step = check.at_least("max_step", Q.check("max_step", max_step), step, "step")
+    Q.check("max_points", max_points)
     problem = _Problem(osc, parameter, method, rtol)
     problem.set_range(stop)
     lo, hi = sorted((start / problem.Lp, stop / problem.Lp))
@@ -260,7 +260,7 @@ def _locate_grazing(problem: _Problem, ua, ub, tol, iterations: int = 40) -> flo
             return solve(np.array([a[0] + slope * (p - a[1]), p]))
         except NoSolutionError:
             return np.array([math.nan, p]), None
-        except check.ParameterError:  # past the parameter's valid range: no grazing there
+        except ParameterError:  # past the parameter's valid range: no grazing there
             return np.array([math.nan, p]), OUTSIDE
 
     OUTSIDE = "outside"
@@ -303,7 +303,7 @@ def continue_from_hopf(osc: Oscillator, hopf, stop: float, *, offset: float = 1e
     """
     from .stability import damping_coefficients
 
-    offset = check.in_range("offset", offset, 0.0, 0.5, lo_open=True)
+    offset = Q.check("offset", offset)
     for sign in (1.0, -1.0):
         p = hopf.value * (1 + sign * offset)
         at = osc.with_parameter(hopf.parameter, p)

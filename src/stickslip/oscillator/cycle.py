@@ -21,7 +21,7 @@ from scipy.optimize import minimize_scalar
 
 from ..results import Result
 from ..cf import finish
-from .. import validation as check
+from ..quantities import OSCILLATOR as Q
 from ..errors import NoSolutionError
 from .model import Mode, Oscillator
 from .simulate import Engine, Trajectory
@@ -227,10 +227,10 @@ def limit_cycle(osc: Oscillator, x0: float | None = None, v0: float | None = Non
     NoSolutionError
         If the orbit settles on the equilibrium or shooting fails.
     """
-    x0 = osc.stick_limits[1] if x0 is None else check.finite("x0", x0)
-    v0 = osc.belt_speed if v0 is None else check.finite("v0", v0)
-    rtol = check.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
-    tol = check.in_range("tol", tol, 0.0, 1e-3, lo_open=True)
+    x0 = osc.stick_limits[1] if x0 is None else Q.check("x0", x0)
+    v0 = osc.belt_speed if v0 is None else Q.check("v0", v0)
+    rtol = Q.check("rtol", rtol)
+    tol = Q.check("tol", tol)
     engine = Engine(osc, method, rtol, variational=True)
     if v0 == 0.0 and x0 < osc.equilibrium:  # already on the section: shoot from here
         start = x0

@@ -21,7 +21,7 @@ import xarray as xr
 
 from ..results import Result
 from ..cf import finish
-from .. import validation as check
+from ..quantities import OSCILLATOR as Q
 from ..errors import ParameterError
 from .kernel import run_affine
 from .flows import AffineSlip, NumericSlip
@@ -129,7 +129,7 @@ class Trajectory(Result):
 
     def sample(self, num: int = 2001):
         """Uniform samples plus every switching instant: ``t, x, v, mode`` arrays."""
-        check.positive_int("num", num)
+        Q.check("samples", num, "num")
         grid = np.linspace(0.0, self.t_end, num)
         ts, xs, vs, ms = [], [], [], []
         for seg in self.segments:
@@ -145,7 +145,7 @@ class Trajectory(Result):
         ``t`` is a uniform grid of ``num`` times plus every switching instant, each time once:
         a switching instant belongs to the segment it starts (``mode`` there is the new mode).
         """
-        t, x, v, mode = self.sample(check.count("samples", num, 10_000_000, "uniform samples of the trajectory"))
+        t, x, v, mode = self.sample(Q.check("samples", num))
         first = np.append(np.diff(t) > 0, True)  # of equal times keep the last: the start of the next segment
         t, x, v, mode = t[first], x[first], v[first], mode[first]
         ev = self.events
@@ -342,14 +342,14 @@ def simulate(osc: Oscillator, t_end: float, x0: float | None = None, v0: float =
     Trajectory
         Check ``status``: negative means the run stopped early (``message`` says why).
     """
-    t_end = check.positive("t_end", t_end)
+    t_end = Q.check("t_end", t_end)
     longest = MAX_PERIODS * 2 * np.pi / osc.omega
     if t_end > longest:
         raise ParameterError("t_end", t_end, f"<= {longest:.4g} s ({MAX_PERIODS:.0e} natural periods "
                              "2 pi sqrt(m/k); simulate in pieces from the last state for more)",
                              also=("mass", "stiffness"))
-    x0 = osc.equilibrium if x0 is None else check.finite("x0", x0)
-    v0 = check.finite("v0", v0)
-    rtol = check.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
-    check.positive_int("max_events", max_events)
+    x0 = osc.equilibrium if x0 is None else Q.check("x0", x0)
+    v0 = Q.check("v0", v0)
+    rtol = Q.check("rtol", rtol)
+    Q.check("max_events", max_events)
     return Engine(osc, method, rtol).run(x0, v0, t_end, max_events=max_events)

@@ -23,8 +23,8 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..results import Result
-from ..vocabulary import lookup
-from .. import validation as check
+from ..errors import ParameterError
+from ..quantities import OSCILLATOR as Q, lookup
 from .model import Oscillator
 
 __all__ = ["EquilibriumStability", "HopfPoint", "equilibrium_stability", "hopf_points", "damping_coefficients"]
@@ -111,15 +111,15 @@ def hopf_points(osc: Oscillator, parameter: str, lo: float, hi: float, num: int 
     Hopf point is in the damping, ``c_H = f_d tau N`` (or in ``tau``, ``N``).
     """
     osc.parameter(parameter)
-    lo, hi = check.finite("lo", lo), check.finite("hi", hi)
+    lo, hi = Q.check("lo", lo), Q.check("hi", hi)
     if not lo < hi:
-        raise check.ParameterError("hi", hi, f"> lo = {lo:g}", also=("lo",))
+        raise ParameterError("hi", hi, f"> lo = {lo:g}", also=("lo",))
     for name, end in (("lo", lo), ("hi", hi)):  # the scan stays where the parameter is valid
         try:
             osc.with_parameter(parameter, end)
-        except check.ParameterError as err:
-            raise check.ParameterError(name, end, f"a valid {parameter}, {err.allowed}") from None
-    num = check.count("num", num, 1_000_000, "scan intervals")
+        except ParameterError as err:
+            raise ParameterError(name, end, f"a valid {parameter}, {err.allowed}") from None
+    num = Q.check("num", num)
 
     def d1(p):
         return osc.with_parameter(parameter, p).effective_damping

@@ -217,8 +217,8 @@ def test_the_command_writes_a_readable_file(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("extra, option, words", [
-    (["--xdmf-every", "0"], "--xdmf-every", "> 0"),
-    (["--xdmf-every", "-1"], "--xdmf-every", "> 0"),
+    (["--xdmf-every", "0"], "--xdmf-every", "in (0, "),
+    (["--xdmf-every", "-1"], "--xdmf-every", "in (0, "),
     (["--xdmf-every", "nan"], "--xdmf-every", "finite"),
     (["--xdmf-every", "inf"], "--xdmf-every", "finite"),
     (["--xdmf-every", "1e-9", "--transits", "1e6"], "--xdmf-every", "transits"),

@@ -34,6 +34,7 @@ from pathlib import Path
 
 
 from ... import validation as check
+from ...quantities import BRAKE as Q
 from ...contact import REGIME_CODES, regime_code
 from ...errors import ParameterError
 from ...sweep import run_sweep
@@ -58,8 +59,8 @@ def limit_regime(params: BrakeParams, n_theta: int, n_r: int, seed: int, *, beta
     `stickslip.contact.REGIME_CODES`). With ``checkpoint`` (a netCDF path) the run resumes
     from it; it is left in place.
     """
-    chunk, min_transits = check.positive("chunk", chunk), check.positive("min_transits", min_transits)
-    max_transits = check.at_least("max_transits", max_transits, min_transits, "min_transits")
+    chunk, min_transits = Q.check("chunk", chunk), Q.check("min_transits", min_transits)
+    max_transits = check.at_least("max_transits", Q.check("max_transits", max_transits), min_transits, "min_transits")
     scheme = FemScheme(params, n_theta, n_r, beta2)
     initial = perturbed_steady(scheme, amplitude, seed=int(seed))
     start, T = time.perf_counter(), min_transits
@@ -113,8 +114,8 @@ def statistics(store, cases, meshes=((256, 16), (512, 32)), seeds: int = 16, *,
     Returns the dataset over ``(case, mesh, seed)``.
     """
     cases = _check_cases(cases)
-    meshes = tuple((check.positive_int("n_theta", a), check.positive_int("n_r", b)) for a, b in meshes)
-    seeds = check.positive_int("seeds", seeds)
+    meshes = tuple((Q.check("n_theta", a), Q.check("n_r", b)) for a, b in meshes)
+    seeds = Q.check("seeds", seeds)
     if len(budgets) != len(meshes):
         raise ParameterError("budgets", budgets, f"one dict per mesh ({len(meshes)})")
     store = Path(store)
@@ -133,7 +134,7 @@ def statistics(store, cases, meshes=((256, 16), (512, 32)), seeds: int = 16, *,
 
 def geometry_mesh(xi: float, n_theta: int = 256) -> tuple[int, int]:
     """``(n_theta, n_r)`` with the radial spacing of ``256 x 16`` at ``xi = 1.5``."""
-    return n_theta, max(2, int(round(32 * (check.radius_ratio("xi", xi) - 1.0))))
+    return n_theta, max(2, int(round(32 * (Q.check("xi", xi) - 1.0))))
 
 
 def _geometry_point(cases, n_theta, budget, runs_dir, case, xi, beta2, seed) -> dict:
@@ -147,9 +148,9 @@ def geometry(store, cases, xis=(1.25, 1.5, 2.0, 3.0), beta2s=(0.6, 0.75, 0.9), s
              n_theta: int = 256, budget=None, **options):
     """Limit regimes of each case over the ring's thickness ``xi`` and ``beta2`` (resumable)."""
     cases = _check_cases(cases)
-    xis = [check.radius_ratio("xi", x) for x in xis]
-    beta2s = [check.in_range("beta2", b, 0.5, 1.0) for b in beta2s]
-    seeds, n_theta = check.positive_int("seeds", seeds), check.positive_int("n_theta", n_theta)
+    xis = [Q.check("xi", x) for x in xis]
+    beta2s = [Q.check("beta2", b) for b in beta2s]
+    seeds, n_theta = Q.check("seeds", seeds), Q.check("n_theta", n_theta)
     budget = dict(budget or {"max_transits": 300.0})
     store = Path(store)
     func = functools.partial(_geometry_point, cases, n_theta, budget, str(store.with_suffix(".runs")))

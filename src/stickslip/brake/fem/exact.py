@@ -27,7 +27,7 @@ import numpy as np
 from scipy.optimize import brentq
 from scipy.special import jv, jvp, yv, yvp
 
-from ... import validation as check
+from ...quantities import BRAKE as Q
 from ...errors import ParameterError
 from ..reduced.coefficients import elastic_moduli
 
@@ -48,7 +48,7 @@ def characteristic_matrix(w, n: int, xi: float, nu: float) -> np.ndarray:
     """The 4x4 boundary matrix at ``w = omega sqrt(gamma) > 0`` (vectorised: shape ``w.shape + (4, 4)``);
     rows ``u_r(xi), u_theta(xi), sigma_rr(1), sigma_rtheta(1)``, columns ``J_n, Y_n`` of ``phi``
     then of ``psi``; each column scaled by its largest entry (the roots are unchanged)."""
-    xi, nu = check.radius_ratio("xi", xi), check.poisson_ratio("nu", nu)
+    xi, nu = Q.check("xi", xi), Q.check("nu", nu)
     if isinstance(n, bool) or int(n) != n or n < 0:
         raise ParameterError("n", n, "an integer >= 0")
     w = np.asarray(w, dtype=float)
@@ -96,12 +96,12 @@ def annulus_frequencies(xi: float, nu: float, n: int, count: int = 2, w_max: flo
         Scan step for sign changes of the determinant, relative to ``sqrt(b̃)``;
         each bracket is then refined by Brent's method to 1e-14.
     """
-    xi, nu = check.radius_ratio("xi", xi), check.poisson_ratio("nu", nu)
+    xi, nu = Q.check("xi", xi), Q.check("nu", nu)
     if isinstance(n, bool) or int(n) != n or n < 0:
         raise ParameterError("n", n, "an integer >= 0")
-    n, count = int(n), check.positive_int("count", count)
-    step = check.positive("step", step) * np.sqrt(float(elastic_moduli(nu)[1]))
-    w_max = 40.0 + 4.0 * n if w_max is None else check.positive("w_max", w_max)
+    n, count = int(n), Q.check("count", count)
+    step = Q.check("step", step) * np.sqrt(float(elastic_moduli(nu)[1]))
+    w_max = 40.0 + 4.0 * n if w_max is None else Q.check("w_max", w_max)
     roots, lo = [], step
     while lo < w_max and len(roots) < count:  # scan in blocks until enough roots are bracketed
         grid = np.arange(lo, min(lo + 1000 * step, w_max + step), step)

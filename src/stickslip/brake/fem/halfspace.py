@@ -25,7 +25,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.optimize import root
 
-from ... import validation as check
+from ...quantities import BRAKE as Q
 from ..reduced.coefficients import elastic_moduli
 
 __all__ = ["slip_wave_rate", "dispersion"]
@@ -55,7 +55,7 @@ def slip_wave_rate(friction: float, nu: float = 0.3) -> complex:
         ``s`` for ``k = c_s = 1`` (multiply by ``k c_s``); ``nan`` if no admissible root with
         ``Re s > 1e-9`` exists (``f <= 1``). For ``eps = -1`` the root is the conjugate.
     """
-    f, nu = check.nonnegative("friction", friction), check.poisson_ratio("nu", nu)
+    f, nu = Q.check("friction", friction), Q.check("nu", nu)
     found = []
     for re in (0.02, 0.1, 0.3, 0.6, 1.0):
         for im in (1.0, 1.3, 1.42, 1.6, 2.0):

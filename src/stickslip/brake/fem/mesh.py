@@ -24,7 +24,7 @@ from skfem import Basis, BilinearForm, ElementQuad1, ElementVector, MeshQuad, as
 from skfem.helpers import dot
 from skfem.models.elasticity import lame_parameters, linear_elasticity
 
-from ... import validation as check
+from ...quantities import BRAKE as Q
 from ...contact import stencil_matrix
 from ...errors import ParameterError
 
@@ -75,8 +75,7 @@ def annulus_mesh(n_theta: int = 256, n_r: int = 16, xi: float = 1.5) -> AnnulusM
     xi : float
         ``R*/R`` > 1.
     """
-    n_theta, n_r, xi = check.count("n_theta", n_theta, 65536, "nodes around"), \
-        check.count("n_r", n_r, 4096, "layers across"), check.radius_ratio("xi", xi)
+    n_theta, n_r, xi = Q.check("n_theta", n_theta), Q.check("n_r", n_r), Q.check("xi", xi)
     if n_theta < 16 or n_theta % 8:
         raise ParameterError("n_theta", n_theta, "a multiple of 8, >= 16")
     r = np.linspace(1.0, xi, n_r + 1)
@@ -167,7 +166,7 @@ def assemble(mesh: AnnulusMesh, nu: float = 0.3) -> FemSystem:
     """
     if not isinstance(mesh, AnnulusMesh):
         raise ParameterError("mesh", mesh, "an AnnulusMesh (see annulus_mesh)")
-    nu = check.poisson_ratio("nu", nu)
+    nu = Q.check("nu", nu)
     basis = Basis(mesh.mesh, ElementVector(ElementQuad1()))
     K_cart = asm(linear_elasticity(*lame_parameters(1.0, nu)), basis)
     lumped = np.asarray(asm(_mass, basis).sum(axis=1)).ravel()

@@ -29,7 +29,7 @@ from typing import Callable, ClassVar
 
 import numpy as np
 
-from ... import validation as check
+from ...quantities import BRAKE as Q
 from ...contact import RunFormat, RunRecord, prepare, run_explicit
 from ...errors import ParameterError
 from ..reduced import BrakeParams
@@ -71,7 +71,7 @@ def perturbed_steady(scheme: FemScheme, amplitude: float = 1e-3, mode: int | Non
     """
     if not isinstance(scheme, FemScheme):
         raise ParameterError("scheme", scheme, "a FemScheme")
-    amplitude, noise = check.nonnegative("amplitude", amplitude), check.nonnegative("noise", noise)
+    amplitude, noise = Q.check("amplitude", amplitude), Q.check("noise", noise)
     N = scheme.n_theta
     white = np.random.default_rng(seed).standard_normal(N)
     white /= np.sqrt(np.mean(white**2))
@@ -80,7 +80,7 @@ def perturbed_steady(scheme: FemScheme, amplitude: float = 1e-3, mode: int | Non
     else:
         if isinstance(mode, bool) or int(mode) != mode or not 0 <= mode <= N // 2:
             raise ParameterError("mode", mode, f"an integer in [0, {N // 2}]")
-        pattern = amplitude * np.cos(mode * scheme.theta + check.finite("phase", phase)) + noise * white
+        pattern = amplitude * np.cos(mode * scheme.theta + Q.check("phase", phase)) + noise * white
         label = f"{amplitude:g} delta mode {mode}" + (f" + {noise:g} delta noise(seed={seed})" if noise else "")
     xi, r = scheme.params.xi, scheme.system.mesh.radii[:-1, None]
     X = (xi**2 / r - r) / (xi**2 - 1.0)

@@ -32,7 +32,7 @@ from scipy.optimize import brentq
 
 from ...results import Result
 from ...cf import finish
-from ... import validation as check
+from ...quantities import BRAKE as Q
 
 __all__ = ["ReducedCoefficients", "coefficients", "shape_integrals", "coupling", "neutral_radius_ratio"]
 
@@ -107,7 +107,7 @@ def coefficients(xi: float, nu: float, gamma: float) -> ReducedCoefficients:
     gamma : float
         ``rho R^2 Omega^2 / E`` > 0.
     """
-    xi, nu, gamma = check.radius_ratio("xi", xi), check.poisson_ratio("nu", nu), check.positive("gamma", gamma)
+    xi, nu, gamma = Q.check("xi", xi), Q.check("nu", nu), Q.check("gamma", gamma)
     A, B, C1, C2 = (float(v) for v in shape_integrals(xi))
     at, bt = (float(v) for v in elastic_moduli(nu))
     gB = gamma * B
@@ -123,7 +123,7 @@ def neutral_radius_ratio(nu: float) -> float | None:
     ``ã/b̃ = 2(1-nu)/(1-2nu)``. So ``xi*`` exists iff ``nu > 1/4``; then ``D > 0`` for
     ``1 < xi < xi*`` and ``D < 0`` beyond. For ``nu <= 1/4``, ``D < 0`` for every ``xi``.
     """
-    nu = check.poisson_ratio("nu", nu)
+    nu = Q.check("nu", nu)
     if nu <= 0.25:
         return None
     f = lambda x: float(coupling(x, nu))  # noqa: E731

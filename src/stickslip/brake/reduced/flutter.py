@@ -36,7 +36,7 @@ import xarray as xr
 
 from ...results import Result
 from ...cf import finish
-from ... import validation as check
+from ...quantities import BRAKE as Q
 from ...errors import ParameterError
 from .coefficients import ReducedCoefficients
 from .params import BrakeParams
@@ -200,7 +200,7 @@ def grid_growth_rates(params: BrakeParams, modes, nodes: int = 33, penalty: floa
     by ``1/sqrt(gamma)`` (every coefficient is proportional to ``1/gamma``) for conditioning.
     """
     modes = mode_numbers(modes)
-    nodes, penalty = check.positive_int("nodes", nodes), check.positive("penalty", penalty)
+    nodes, penalty = Q.check("nodes", nodes), Q.check("penalty", penalty)
     if nodes % 2 == 0 or nodes <= 2 * modes.max():
         raise ParameterError("nodes", nodes, f"odd and > 2 max(modes) = {2 * modes.max()}")
     c, f = params.replace(gamma=1.0).coefficients(), params.friction

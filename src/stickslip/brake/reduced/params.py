@@ -16,8 +16,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ... import validation as check
 from ...errors import ParameterError
+from ...quantities import BRAKE as Q
 from .coefficients import ReducedCoefficients, coefficients
 from .steady import SteadySliding, steady_sliding
 
@@ -28,13 +28,28 @@ STEEL = {"young": 2.1e11, "density": 7850.0, "poisson": 0.3}
 #: The interference ``d/R`` is the hoop strain at the bore: linear (small-strain)
 #: elasticity, the paper's model, does not hold beyond about 1 %.
 MAX_STRAIN = 0.01
-#: The range of the dimensionless ``gamma`` and ``delta``: the reduced coefficients scale
-#: like ``1/gamma`` and the energies like ``gamma delta^2``; beyond these they leave the
-#: range of double precision on the way.
-SCALE_RANGE = (1e-100, 1e100)
-#: The largest Coulomb coefficient accepted: measured ones stay below about 2 (clean
-#: metals in vacuum); past 10 the model describes no contact there is.
-MAX_FRICTION = 10.0
+#: The range of the dimensionless ``gamma`` (declared in `stickslip.quantities.BRAKE`).
+SCALE_RANGE = (Q["gamma"].range.lo, Q["gamma"].range.hi)
+#: The largest Coulomb coefficient accepted (declared in `stickslip.quantities.BRAKE`).
+MAX_FRICTION = Q["friction"].range.hi
+
+
+def in_ratio(name: str, value: float, inner: float, inner_name: str = "inner_radius") -> float:
+    """An outer radius whose ratio to ``inner`` is a valid radius ratio ``xi``."""
+    xi = Q["xi"].range
+    if not (xi.lo * inner <= value <= xi.hi * inner):
+        raise ParameterError(name, value, f"in [{xi.lo:.4f}, {xi.hi:g}] x {inner_name} = {inner:g} m (the radius "
+                             f"ratio xi: {Q['xi'].why})", also=(inner_name,))
+    return value
+
+
+def small_strain(name: str, mismatch: float, inner: float, inner_name: str = "inner_radius") -> float:
+    """An interference ``d`` of at most `MAX_STRAIN` times the bore radius."""
+    if mismatch > MAX_STRAIN * inner:
+        raise ParameterError(name, mismatch, f"<= {MAX_STRAIN * inner:.6g} m ({MAX_STRAIN:g} x {inner_name}: the "
+                             "interference is the hoop strain at the bore, and linear elasticity holds for small "
+                             "strains only)", also=(inner_name,))
+    return mismatch
 
 
 @dataclass(frozen=True)
@@ -44,20 +59,20 @@ class PhysicalParams:
     Parameters
     ----------
     omega : float
-        Shaft angular speed ``Omega`` [rad/s] > 0.
+        Shaft angular speed ``Omega`` [rad/s].
     mismatch : float
-        Radial interference ``d`` [m] >= 0 (shaft radius ``R + d``).
+        Radial interference ``d`` [m] (shaft radius ``R + d``), at most `MAX_STRAIN` ``R``.
     friction : float
-        Coulomb coefficient ``f`` >= 0.
+        Coulomb coefficient ``f``.
     inner_radius, outer_radius : float
-        ``R`` and ``R*`` [m], ``0 < R < R*``. Defaults 0.1 m and 0.15 m (``xi = 1.5``).
+        ``R`` and ``R*`` [m], ``R*/R`` a radius ratio ``xi``. Defaults 0.1 m and 0.15 m (``xi = 1.5``).
     young, density : float
-        ``E`` [Pa] > 0 and ``rho`` [kg/m^3] > 0. Defaults: steel.
+        ``E`` [Pa] and ``rho`` [kg/m^3]. Defaults: steel.
     poisson : float
-        ``nu`` in [0, 0.5). Default 0.3.
+        ``nu``. Default 0.3.
 
-    The interference is at most `MAX_STRAIN` ``R`` (small strain), the radius ratio in
-    `stickslip.validation.RADIUS_RATIO`, and ``gamma`` in `SCALE_RANGE`.
+    Every range is declared in `stickslip.quantities.BRAKE`; ``gamma = rho R^2 Omega^2 / E``
+    must lie in the range of ``gamma``.
     """
 
     omega: float
@@ -70,31 +85,16 @@ class PhysicalParams:
     poisson: float = STEEL["poisson"]
 
     def __post_init__(self):
-        for name in ("omega", "inner_radius", "young", "density"):
-            object.__setattr__(self, name, check.positive(name, getattr(self, name)))
-        object.__setattr__(self, "mismatch", check.nonnegative("mismatch", self.mismatch))
-        object.__setattr__(self, "friction", check.in_range("friction", self.friction, 0.0, MAX_FRICTION))
-        outer = check.finite("outer_radius", self.outer_radius)
-        if outer <= self.inner_radius:
-            raise ParameterError("outer_radius", outer, f"> inner_radius = {self.inner_radius:g}",
-                                 also=("inner_radius",))
-        object.__setattr__(self, "outer_radius", outer)
-        object.__setattr__(self, "poisson", check.poisson_ratio("poisson", self.poisson))
-        lo, hi = check.RADIUS_RATIO
-        if not lo * self.inner_radius <= outer <= hi * self.inner_radius:
-            raise ParameterError("outer_radius", outer, f"in [{lo:.4f}, {hi:g}] x inner_radius "
-                                 "(see the radius ratio xi)", also=("inner_radius",))
-        if self.mismatch > MAX_STRAIN * self.inner_radius:
-            raise ParameterError("mismatch", self.mismatch, f"<= {MAX_STRAIN * self.inner_radius:.6g} m "
-                                 f"({MAX_STRAIN:g} inner_radius: the interference is the hoop strain at the bore, "
-                                 "and linear elasticity holds for small strains only)", also=("inner_radius",))
-        lo, hi = SCALE_RANGE
-        speed = self.inner_radius * self.omega  # gamma = (rho / E) (R Omega)^2, without overflow on the way
-        if not lo <= (self.density / self.young) * speed * speed <= hi:
+        for name in ("omega", "mismatch", "friction", "inner_radius", "outer_radius", "young", "density", "poisson"):
+            object.__setattr__(self, name, Q.check(name, getattr(self, name)))
+        in_ratio("outer_radius", self.outer_radius, self.inner_radius)
+        small_strain("mismatch", self.mismatch, self.inner_radius)
+        gamma = Q["gamma"]
+        if self.gamma not in gamma.range:
             scale = self.inner_radius * math.sqrt(self.density / self.young)
-            raise ParameterError("omega", self.omega, f"in [{math.sqrt(lo) / scale:.3g}, {math.sqrt(hi) / scale:.3g}] "
-                                 f"rad/s (gamma = rho R^2 Omega^2 / E in [{lo:g}, {hi:g}])",
-                                 also=("density", "young", "inner_radius"))
+            lo, hi = math.sqrt(gamma.range.lo) / scale, math.sqrt(gamma.range.hi) / scale
+            raise ParameterError("omega", self.omega, f"in [{lo:.3g}, {hi:.3g}] rad/s (gamma = rho R^2 Omega^2 / E "
+                                 f"{gamma.range.text()}: {gamma.why})", also=("density", "young", "inner_radius"))
 
     @property
     def xi(self) -> float:
@@ -120,18 +120,20 @@ class BrakeParams:
     Parameters
     ----------
     xi : float
-        Radius ratio ``R*/R`` in [1.0001, 1000] (`stickslip.validation.RADIUS_RATIO`).
+        Radius ratio ``R*/R``.
     nu : float
-        Poisson's ratio in [0, 0.5).
+        Poisson's ratio.
     gamma : float
-        Inertia number ``rho R^2 Omega^2 / E`` in [1e-100, 1e100] (`SCALE_RANGE`).
+        Inertia number ``rho R^2 Omega^2 / E``.
     delta : float
-        Mismatch ``d/R`` in [0, 1e100]. The model is linear: in these scaled units any
-        ``delta`` is one problem rescaled; the small-strain bound is on the SI set.
+        Mismatch ``d/R``. The model is linear: in these scaled units any ``delta`` is one
+        problem rescaled; the small-strain bound is on the SI set.
     friction : float
-        Coulomb coefficient ``f`` in [0, 10] (`MAX_FRICTION`).
+        Coulomb coefficient ``f``.
     physical : PhysicalParams, optional
         The SI set these numbers come from, if any (for converting rates to 1/s).
+
+    Every range is declared in `stickslip.quantities.BRAKE`.
     """
 
     xi: float
@@ -142,14 +144,8 @@ class BrakeParams:
     physical: PhysicalParams | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self):
-        object.__setattr__(self, "xi", check.radius_ratio("xi", self.xi))
-        object.__setattr__(self, "nu", check.poisson_ratio("nu", self.nu))
-        lo, hi = SCALE_RANGE
-        object.__setattr__(self, "gamma", check.in_range("gamma", self.gamma, lo, hi))
-        object.__setattr__(self, "delta", check.nonnegative("delta", self.delta))
-        if self.delta > hi:
-            raise ParameterError("delta", self.delta, f"<= {hi:g}")
-        object.__setattr__(self, "friction", check.in_range("friction", self.friction, 0.0, MAX_FRICTION))
+        for name in ("xi", "nu", "gamma", "delta", "friction"):
+            object.__setattr__(self, name, Q.check(name, getattr(self, name)))
         if self.physical is not None and not isinstance(self.physical, PhysicalParams):
             raise ParameterError("physical", self.physical, "a PhysicalParams or None")
 

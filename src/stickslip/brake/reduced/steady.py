@@ -29,7 +29,7 @@ import xarray as xr
 
 from ...results import Result
 from ...cf import finish
-from ... import validation as check
+from ...quantities import BRAKE as Q
 from .coefficients import coefficients, elastic_moduli
 
 __all__ = ["SteadySliding", "steady_sliding"]
@@ -85,7 +85,7 @@ class SteadySliding(Result):
 
     def to_xarray(self, num: int = 101) -> xr.Dataset:
         """Radial profiles of displacements and stresses, scalars in ``attrs``."""
-        r = np.linspace(1.0, self.xi, check.positive_int("num", num))
+        r = np.linspace(1.0, self.xi, Q.check("points", num, "num"))
         s_rr, s_tt, s_rt, s_zz = self.stress(r)
         unit_l, unit_s = {"units": "R"}, {"units": "E"}
         ds = xr.Dataset(
@@ -117,8 +117,8 @@ def steady_sliding(xi: float, nu: float, delta: float, friction: float,
         ``rho R^2 Omega^2/E > 0``; if given, the reduced pressures ``P_e, Q_e`` of [16]
         are filled in (``p_e, q_e, U_e, V_e`` do not depend on it).
     """
-    xi, nu = check.radius_ratio("xi", xi), check.poisson_ratio("nu", nu)
-    delta, f = check.nonnegative("delta", delta), check.nonnegative("friction", friction)
+    xi, nu = Q.check("xi", xi), Q.check("nu", nu)
+    delta, f = Q.check("delta", delta), Q.check("friction", friction)
     p_e = delta * (xi**2 + 1.0 / (1.0 - 2.0 * nu)) / ((1.0 + nu) * (xi**2 - 1.0))
     V_e = f * delta * (1.0 + 1.0 / (xi**2 * (1.0 - 2.0 * nu)))
     extra = {}

@@ -26,7 +26,7 @@ from typing import Callable, ClassVar
 
 import numpy as np
 
-from ... import validation as check
+from ...quantities import BRAKE as Q
 from ...contact import RunFormat, RunRecord, prepare, run_explicit
 from ...errors import ParameterError
 from ..reduced import BrakeParams
@@ -76,7 +76,7 @@ def perturbed_steady(params: BrakeParams, nodes: int = 512, amplitude: float = 1
     """
     scheme = RingScheme(params, nodes)
     # relative to the interference delta; 100 delta is far from any steady sliding already
-    amplitude, noise = check.in_range("amplitude", amplitude, 0.0, 100.0), check.in_range("noise", noise, 0.0, 100.0)
+    amplitude, noise = Q.check("amplitude", amplitude), Q.check("noise", noise)
     if not isinstance(seed, Integral) or isinstance(seed, bool) or seed < 0:
         raise ParameterError("seed", seed, "an integer >= 0")
     white = np.random.default_rng(seed).standard_normal(scheme.nodes)
@@ -86,7 +86,7 @@ def perturbed_steady(params: BrakeParams, nodes: int = 512, amplitude: float = 1
     else:
         if not isinstance(mode, Integral) or isinstance(mode, bool) or not 0 <= mode <= scheme.nodes // 2:
             raise ParameterError("mode", mode, f"an integer in [0, {scheme.nodes // 2}]")
-        pattern = amplitude * np.cos(mode * scheme.theta + check.finite("phase", phase)) + noise * white
+        pattern = amplitude * np.cos(mode * scheme.theta + Q.check("phase", phase)) + noise * white
         label = f"{amplitude:g} delta mode {mode}" + (f" + {noise:g} delta noise(seed={seed})" if noise else "")
     U_e, V_e = scheme.fields(scheme.steady_reference()[0])
     zero = np.zeros(scheme.nodes)

@@ -25,7 +25,7 @@ from typing import ClassVar
 
 import numpy as np
 
-from ... import validation as check
+from ...quantities import BRAKE as Q
 from ...contact import ExplicitScheme, discrete_rates
 from ...errors import ParameterError
 from ..reduced import BrakeParams, ReducedCoefficients
@@ -60,7 +60,7 @@ class RingScheme(ExplicitScheme):
 
     def __post_init__(self):
         self.validate_common()
-        nodes = check.count("nodes", self.nodes, 1 << 22, "nodes around the ring")
+        nodes = Q.check("nodes", self.nodes)
         if nodes < 8:
             raise ParameterError("nodes", nodes, "an integer >= 8")
         object.__setattr__(self, "nodes", nodes)

@@ -23,6 +23,8 @@
 from __future__ import annotations
 
 import numpy as np
+
+from ...quantities import BRAKE as Q
 from scipy.integrate import solve_ivp
 
 from .zones import CONTACT, SEPARATION, STICK, slip_sign
@@ -112,6 +114,7 @@ def integrate_wave(wave, rtol: float = 1e-11, atol: float = 1e-13, num: int = 50
     ``switching`` (the worst mismatch of a switching condition on the numerical state),
     ``periodicity`` (``|y(after one period) - y(start)|``) and ``zones`` (time order).
     """
+    rtol, atol, num = Q.check("rtol", rtol), Q.check("atol", atol), Q.check("points", num, "num")
     fl, starts, m = wave._flows(), wave._starts, len(wave.zones)
     direction = wave.layout.direction
     order = [0] + (list(range(1, m)) if direction > 0 else list(range(m - 1, 0, -1)))

@@ -31,7 +31,7 @@ import xarray as xr
 
 from ...results import Result
 from ...cf import finish
-from ... import validation as check
+from ...quantities import BRAKE as Q
 from ...errors import NoSolutionError, ParameterError
 from ..reduced.params import BrakeParams, PhysicalParams
 from .zones import KINDS, Scaling
@@ -223,7 +223,7 @@ def continue_waves(params: BrakeParams, modes: int, parameter: str = "delta", st
         raise ParameterError("parameter", parameter, f"one of {PARAMETERS}")
     if stop is None:
         raise ParameterError("stop", stop, "the end value of the continued parameter")
-    num = check.count("points", num, 100_000, "points along the branch")
+    num = Q.check("points", num)
     if num < 2:
         raise ParameterError("points", num, "an integer >= 2")
     if spacing not in ("linear", "log"):

@@ -30,6 +30,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
+from ...quantities import BRAKE as Q
+
 from .zones import REVERSE, SEPARATION, SLIP, STICK, ZoneFlows, slip_sign
 
 __all__ = ["Orbit", "stick_exit_orbit"]
@@ -138,6 +140,7 @@ def stick_exit_orbit(flows: ZoneFlows, horizon: float, max_zones: int = 12) -> O
     max_zones : int
         Give up after this many zones.
     """
+    horizon, max_zones = Q.check("horizon", horizon), Q.check("max_zones", max_zones)
     c, f, h = flows.c, flows.f, flows.h
     orbit = Orbit(c, "closed")
     if flows.ca <= 0.0:

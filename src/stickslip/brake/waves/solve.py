@@ -24,7 +24,7 @@ from numbers import Integral
 import numpy as np
 from scipy.optimize import brentq
 
-from ... import validation as check
+from ...quantities import BRAKE as Q
 from ...errors import NoSolutionError, ParameterError
 from ..reduced.params import BrakeParams
 from .boundsco import Layout, layout_from_orbit, residual, solve, verify
@@ -142,7 +142,7 @@ def find_waves(params: BrakeParams, modes: int, c_range=None, num: int = 150) ->
     sc = Scaling(params)
     coef, f, delta = sc.coefficients, params.friction, sc.delta
     period = 2.0 * math.pi / n
-    num = check.count("num", num, 100_000, "wave speeds scanned")
+    num = Q.check("num", num)
     speeds = _speed_grid(coef, None if c_range is None else sc.internal_speed(np.asarray(c_range)), num)
     orbits, _ = _roots(_period_function(coef, f, delta, period), speeds, period)
     waves = []

@@ -32,7 +32,7 @@ import xarray as xr
 
 from ...results import Result
 from ...cf import finish
-from ... import validation as check
+from ...quantities import BRAKE as Q
 from ...errors import ParameterError
 from .zones import Scaling
 
@@ -140,10 +140,10 @@ def wave_persistence(wave, nodes: int = 512, periods: int = 30, perturbation: fl
     cfl : float
         ``dt sqrt(a) / dtheta`` (``<= 0.5``).
     """
-    nodes, periods = check.positive_int("nodes", nodes), check.positive_int("periods", periods)
+    nodes, periods = Q.check("nodes", nodes), Q.check("periods", periods)
     if nodes % wave.n:
         raise ParameterError("nodes", nodes, f"a multiple of the mode number n = {wave.n}")
-    cfl = check.in_range("cfl", cfl, 0.0, 0.5, lo_open=True)
+    cfl = Q.check("cfl", cfl)
     sc = Scaling(wave.params)
     coef, delta, f, c = sc.coefficients, sc.delta, wave.params.friction, wave.x[0]
     r = sc.root_gamma
