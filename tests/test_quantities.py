@@ -168,3 +168,14 @@ def test_no_module_checks_a_range_of_its_own():
              for i, line in enumerate(p.read_text().splitlines(), 1)
              if _OWN_RANGES.search(line) and "validation.py" not in p.name and "sweep.py" not in p.name]
     assert not found, found
+
+
+def test_the_old_vocabulary_still_answers_with_one_line_on_stderr():
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-c", "from stickslip.vocabulary import lookup, VOCABULARY; "
+                           "print(lookup('mass', 'oscillator'), VOCABULARY['oscillator']['mass'])"],
+                          capture_output=True, text=True, check=True)
+    assert done.stdout.strip() == "('kg', 'mass') ('kg', 'mass')"
+    assert done.stderr.count("\n") == 1 and "deprecated" in done.stderr and "stickslip.quantities" in done.stderr

@@ -7,6 +7,20 @@ the command line turns it into one line and exit code 1.
 """
 
 
+class _Missing:
+    """The value of a parameter that was not given (`ParameterError` then says "missing")."""
+
+    def __repr__(self):
+        return "MISSING"
+
+    def __reduce__(self):
+        return "MISSING"
+
+
+#: The value of a `ParameterError` for a required parameter left out.
+MISSING = _Missing()
+
+
 class ParameterError(ValueError):
     """A public parameter is outside its allowed range.
 
@@ -16,7 +30,8 @@ class ParameterError(ValueError):
 
     def __init__(self, name: str, value, allowed: str, also: tuple[str, ...] = ()):
         self.name, self.value, self.allowed, self.also = name, value, allowed, tuple(also)
-        text = f"invalid {name} = {value!r}: must be {allowed}"
+        text = f"missing {name}: it must be {allowed}" if value is MISSING else \
+            f"invalid {name} = {value!r}: must be {allowed}"
         if self.also:
             text += f" (the bound depends on {', '.join(self.also)})"
         super().__init__(text)

@@ -67,7 +67,7 @@ def exclusive(path, option: str):
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except BlockingIOError:
             os.close(fd)
-            raise ParameterError(option, str(path), "a file no other run is writing (another stickslip process "
+            raise ParameterError(option, str(path), "a path no other run is writing (another stickslip process "
                                                    "holds it now; wait for it, or use another path)") from None
         try:  # the lock file may have been removed by its previous holder meanwhile: take the new one
             same = os.stat(lock).st_ino == os.fstat(fd).st_ino

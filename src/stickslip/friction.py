@@ -23,7 +23,7 @@ import numpy as np
 
 from . import validation as check
 from .quantities import OSCILLATOR as Q
-from .errors import ParameterError
+from .errors import MISSING, ParameterError
 
 __all__ = ["FrictionLaw", "Coulomb", "LinearWeakening", "Stribeck", "UserLaw", "law_names", "make_law"]
 
@@ -225,7 +225,7 @@ def make_law(name: str, *, fs: float, fd: float, tau: float | None = None, vs: f
             raise ParameterError(given, value, f"left out with law {name!r} (it sets "
                                  f"{'linear-weakening' if given == 'tau' else 'stribeck'})")
     if needs is not None and {"tau": tau, "vs": vs}[needs] is None:
-        raise ParameterError(needs, None, f"given for law {name!r}")
+        raise ParameterError(needs, MISSING, f"given for law {name!r}")
     if name == "coulomb":
         return Coulomb(fs, fd)
     if name == "linear-weakening":

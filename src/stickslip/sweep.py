@@ -128,7 +128,7 @@ def _matches(store: Path, axes: dict, outputs: dict, attrs: dict) -> bool:
     """The store holds this sweep: the same axes, outputs and fixed parameters (``attrs``)."""
     try:
         ds = xr.open_zarr(store, consolidated=False)
-    except (OSError, ValueError, KeyError):
+    except Exception:  # noqa: BLE001 - not a readable store of this layout: not this sweep
         return False
     attrs = plain_attrs(attrs)
     if set(str(ds.attrs.get("parameters", "")).split()) != set(attrs):
@@ -220,11 +220,11 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
 def _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attrs, title, model):
     attrs = {**dict(attrs or {}), "producer": _producer(func)}
     if store.exists():
+        verify_store(store)  # first: a damaged store is said to be damaged, whatever it holds
         if not _matches(store, axes, outputs, attrs):
             raise ParameterError("store", str(store), "a new path, or a sweep store of the same computation (the same "
                                  f"producer, axes, outputs and fixed parameters, written by {SOURCE}; overwrite it "
                                  "to start afresh)")
-        verify_store(store)
     else:
         _create(store, axes, outputs, attrs, title, model)
     group = _group(store, "r+")

@@ -6,14 +6,14 @@ one-line notice on stderr; use `stickslip.quantities.lookup` and `stickslip.quan
 
 from __future__ import annotations
 
-import warnings
+import sys
 
 from .quantities import DOMAINS, lookup as _lookup
 
 __all__ = ["lookup", "VOCABULARY"]
 
-warnings.warn("stickslip.vocabulary is deprecated and goes in 0.3: use stickslip.quantities (lookup, DOMAINS)",
-              FutureWarning, stacklevel=2)
+print("stickslip: stickslip.vocabulary is deprecated and goes in 0.3; use stickslip.quantities (lookup, DOMAINS)",
+      file=sys.stderr)
 
 #: Model -> {name: (units, long name)} (deprecated: `stickslip.quantities.DOMAINS`).
 VOCABULARY = {name: {q.name: (q.units, q.meaning) for q in domain} for name, domain in DOMAINS.items()}

@@ -145,7 +145,7 @@ def test_options_and_files_are_told_as_the_user_knows_them(meshes, tmp_path, cap
     capsys.readouterr()
     refused(capsys, ["fem", "run", str(block), "--transits", "0.5", "--out", str(out)], "--xdmf")
     refused(capsys, ["fem", "run", str(block), "--transits", "0.25", "--out", str(out), "--xdmf",
-                      str(tmp_path / "v.xdmf")], " s (")
+                      str(tmp_path / "v2.xdmf")], " s (")
     worded = edited(meshes, tmp_path, "block_on_belt", "block.toml", ('kind = "flat"', ""),
                      ("pressure = 1.0e6", "pressure = 1.0e6\ntraction = [1e12, 0.0]"),
                      ("poisson = 0.3", "poisson = nan"))

@@ -59,8 +59,9 @@ def _as_typed(argv: list[str] | None, exc: ParameterError) -> ParameterError:
         path.append(token)
     options = dict(fem.CONFIG_NAMES) if path[:1] == ["fem"] else {}  # what the config file calls them
     options.update({p.name: p.opts[0] for p in getattr(command, "params", []) if getattr(p, "opts", None)})
-    if "checkpoint" not in options and "out" in options:  # the run file a command writes as it goes
-        options["checkpoint"] = options["out"]
+    if "out" in options:  # the run file a command writes as it goes, the store of a map
+        options.setdefault("checkpoint", options["out"])
+        options.setdefault("store", options["out"])
     typed = lambda name: name if name.startswith("-") else options.get(name, name)
     return ParameterError(typed(exc.name), exc.value, exc.allowed, tuple(typed(n) for n in exc.also))
 

@@ -11,8 +11,8 @@ import typer
 
 from ..brake.reduced.params import in_ratio, small_strain
 from ..quantities import BRAKE as Q, COMMON
-from ..errors import ParameterError
-from .common import (AXIS_HELP, Overwrite, RunOut, XdmfEvery, axis, checked_axis, declared, emit, output_folder, output_path, overwrite_needs,
+from ..errors import MISSING, ParameterError
+from .common import (AXIS_HELP, Overwrite, Replace, RunOut, XdmfEvery, axis, checked_axis, declared, emit, map_size, output_folder, output_path, overwrite_needs,
                      progress_bar, write_netcdf, xdmf_snapshots)
 
 _emit = functools.partial(emit, model="brake")  # results are printed with the units of this model
@@ -78,7 +78,11 @@ def resolve(*, xi=None, nu=0.3, gamma=None, delta=None, friction=0.0, inner_radi
         out["gamma"] = _pick("gamma", gamma, [n for n in ("omega",) if n in phys])
         if out["gamma"] is None:
             if "omega" not in phys:
-                raise ParameterError("--gamma", None, "given, or --omega [rad/s] with the material")
+                given = [f"--{n}" for n in ("young", "density") if n in phys]
+                if given:  # the material alone sets no gamma: the shaft speed is missing
+                    raise ParameterError("--omega", MISSING, f"given with {' and '.join(given)} (gamma = rho R^2 "
+                                         "Omega^2 / E needs the shaft speed), or --gamma alone")
+                raise ParameterError("--gamma", MISSING, "given, or --omega [rad/s] (with the material)")
             from ..brake import PhysicalParams
 
             out["gamma"] = PhysicalParams(m["omega"], 0.0, 0.0, m["inner_radius"], m["outer_radius"], m["young"],
@@ -87,7 +91,7 @@ def resolve(*, xi=None, nu=0.3, gamma=None, delta=None, friction=0.0, inner_radi
         out["delta"] = _pick("delta", delta, [n for n in ("mismatch",) if n in phys])
         if out["delta"] is None:
             if "mismatch" not in phys:
-                raise ParameterError("--delta", None, "given, or --mismatch [m]")
+                raise ParameterError("--delta", MISSING, "given, or --mismatch [m]")
             small_strain("--mismatch", m["mismatch"], m["inner_radius"], "--inner-radius")
             out["delta"] = m["mismatch"] / m["inner_radius"]
     return out
@@ -203,11 +207,13 @@ def wave(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, 
          regime: Annotated[Optional[str], typer.Option(help="Wanted regime, e.g. stick-slip (default: any).")] = None,
          inner_radius: Inner = None, outer_radius: Outer = None, young: Young = None, density: Density = None,
          omega: Omega = None, mismatch: Mismatch = None, json: Json = False,
-         out: Annotated[Optional[Path], typer.Option(help="Write the wave profiles to this netCDF file (.nc).")] = None):
+         out: Annotated[Optional[Path], typer.Option(help="Write the wave profiles to this netCDF file (.nc).")] = None,
+         overwrite: Replace = False):
     """Travelling wave of [14]-[20] by multiple shooting: speed c, regime and zones."""
     from ..brake import travelling_wave
 
-    out = output_path("--out", out, ".nc")
+    overwrite_needs(overwrite, "--out", out)
+    out = output_path("--out", out, ".nc", overwrite)
     p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
     result = travelling_wave(p, modes, regime=_regime(regime))
@@ -225,11 +231,13 @@ def continue_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta 
                  regime: Annotated[Optional[str], typer.Option(help="Regime of the starting wave.")] = None,
                  inner_radius: Inner = None, outer_radius: Outer = None, young: Young = None, density: Density = None,
                  omega: Omega = None, mismatch: Mismatch = None, json: Json = False,
-                 out: Annotated[Optional[Path], typer.Option(help="Write the branch to this netCDF file (.nc).")] = None):
+                 out: Annotated[Optional[Path], typer.Option(help="Write the branch to this netCDF file (.nc).")] = None,
+                 overwrite: Replace = False):
     """Continuation of a wave family in delta, gamma, Omega or f, with births and deaths of zones."""
     from ..brake import continue_waves
 
-    out = output_path("--out", out, ".nc")
+    overwrite_needs(overwrite, "--out", out)
+    out = output_path("--out", out, ".nc", overwrite)
     p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
     branch = continue_waves(p, modes, parameter=parameter, stop=stop, num=points, regime=_regime(regime))
@@ -271,11 +279,14 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (directory ending
     def point(name, value):  # every point is a valid SI annulus of the default geometry (R = 0.1 m)
         if name == "mismatch" and value <= 0:
             raise ParameterError(name, value, "> 0 (without interference there is no contact)")
+        if name == "friction" and kind == "waves" and value <= 0:
+            raise ParameterError(name, value, "> 0 with --kind waves (no stick zone without friction)")
         Q.check(name, value)
         if name == "mismatch":
             small_strain(name, value, 0.1, "the bore radius 0.1 m")
 
     axes = dict(checked_axis(option, text, point) for option, text in (("--x", x), ("--y", y)))
+    map_size("--y", y, *(len(v) for v in axes.values()))
     f, d = axes["friction"], axes["mismatch"]
     with progress_bar(f"{kind} map") as tick:
         if kind == "waves":
@@ -307,9 +318,9 @@ def fem_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = Non
     """Finite element model of section 3.1 (scikit-fem): run to the limit regime and classify it."""
     from ..brake.fem import FemScheme, classify_fem, integrate_fem, perturbed_steady, write_xdmf
 
-    overwrite_needs(overwrite, "--out", out)
+    overwrite_needs(overwrite, "--out or --xdmf", out, xdmf)
     out = output_path("--out", out, ".nc")
-    xdmf, volume_every = xdmf_snapshots(xdmf, xdmf_every)
+    xdmf, volume_every = xdmf_snapshots(xdmf, xdmf_every, overwrite)
     p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
     if p.delta == 0:  # checked before the run, not after it

@@ -18,7 +18,7 @@ from rich.console import Console
 from rich.table import Table
 
 from ..errors import NoSolutionError, ParameterError
-from ..quantities import FEM, Quantity, lookup
+from ..quantities import FEM, MAX_POINTS, Quantity, lookup
 
 def declared(quantity: Quantity, flag: str, note: str = "", **options):
     """A typer option that reads the declaration ``quantity``: its help is the declaration's
@@ -35,7 +35,11 @@ def declared(quantity: Quantity, flag: str, note: str = "", **options):
 
 #: ``--overwrite``: start a store or checkpoint afresh instead of resuming it.
 Overwrite = Annotated[bool, typer.Option("--overwrite", help="Start afresh, replacing the store or checkpoint, "
-                                         "instead of resuming it (one from another run is refused without it).")]
+                                         "instead of resuming it (one from another run is refused without it), "
+                                         "and replace the other outputs given if they exist.")]
+#: ``--overwrite`` of a command that writes results: without it an existing file is refused.
+Replace = Annotated[bool, typer.Option("--overwrite", help="Replace the output files given if they exist (without "
+                                       "it, an existing file is refused, whatever wrote it).")]
 
 
 def _clean(value):
@@ -141,18 +145,19 @@ XdmfEvery = Annotated[Optional[float], declared(FEM["xdmf_every"], "--xdmf-every
     "steps apart, so it may differ by a fraction of a sample."))]
 
 
-def xdmf_path(path):
-    """An ``--xdmf`` output path and its ``.h5`` companion, both checked before any work (or None)."""
-    path = output_path("--xdmf", path, ".xdmf")
+def xdmf_path(path, overwrite: bool = False):
+    """An ``--xdmf`` output path and its ``.h5`` companion, both checked before any work (or None);
+    existing ones are replaced with ``--overwrite`` only."""
+    path = output_path("--xdmf", path, ".xdmf", overwrite)
     if path is not None:
-        output_path("--xdmf", path.with_suffix(".h5"), ".h5")
+        output_path("--xdmf", path.with_suffix(".h5"), ".h5", overwrite)
     return path
 
 
-def xdmf_snapshots(xdmf, every) -> tuple:
+def xdmf_snapshots(xdmf, every, overwrite: bool = False) -> tuple:
     """``(path, interval in transits)`` of a run's ``--xdmf``/``--xdmf-every``, checked before any
     work; ``(None, None)`` without ``--xdmf`` (and ``--xdmf-every`` alone is refused)."""
-    xdmf = xdmf_path(xdmf)
+    xdmf = xdmf_path(xdmf, overwrite)
     if every is not None and xdmf is None:
         raise ParameterError("--xdmf-every", every, "given with --xdmf only (it sets the interval of the "
                              "snapshots --xdmf writes)")
@@ -181,6 +186,15 @@ def axis(option: str, text: str) -> tuple[str, list[float]]:
         raise ParameterError(option, text, "lo, hi > 0 for a logarithmic axis (:log)")
     values = np.logspace(np.log10(lo), np.log10(hi), n) if log else np.linspace(lo, hi, n)
     return name.strip(), [float(v) for v in values]
+
+
+def map_size(option: str, text: str, *sizes: int) -> None:
+    """A map of at most `MAX_POINTS` points (the product of its axes' sizes), refused up front."""
+    points = math.prod(sizes)
+    if points > MAX_POINTS:
+        raise ParameterError(option, text, f"an axis that keeps the map within {MAX_POINTS:.0e} points (this one makes "
+                             f"{' x '.join(map(str, sizes))} = {points:.3g}: split the study, or run it on a cluster)",
+                             also=("--x",))
 
 
 def checked_axis(option: str, text: str, check) -> tuple[str, list[float]]:
@@ -235,29 +249,48 @@ def _holds_a_run(path: Path) -> bool:
         return False
 
 
+def _name_fits(name: str, path: Path) -> None:
+    """Every part of ``path`` is a name the file system takes (255 bytes on most), and the whole
+    path is not beyond its limit (4096 bytes): checked before any work, not when writing."""
+    limit = os.pathconf("/", "PC_NAME_MAX") if hasattr(os, "pathconf") else 255
+    longest = max((len(os.fsencode(part)) for part in path.parts), default=0)
+    if longest > limit:
+        raise ParameterError(name, str(path)[:60] + "...", f"a path whose every name is at most {limit} bytes long "
+                             f"(one is {longest})")
+    if len(os.fsencode(str(path.resolve()))) >= 4096:
+        raise ParameterError(name, str(path)[:60] + "...", "a path shorter than 4096 bytes")
+
+
 def output_path(name: str, path: Path | None, suffix: str, overwrite: bool | None = None) -> Path | None:
-    """Check an output file before any work: its suffix, that it is not a folder, that its
-    folder exists and can be written to, and that an existing file can be replaced. With
-    ``overwrite`` given (a command that writes a result, not a run), an existing run's
-    checkpoint is replaced only if it is true."""
+    """Check an output file before any work: its suffix, that its name fits the file system, that
+    it is not a folder, that its folder exists and can be written to, and that an existing file
+    can be replaced. ``overwrite`` is the command's ``--overwrite``: an existing file (whatever
+    wrote it) is replaced only if it is true. None is for a run's checkpoint, which the run
+    itself resumes or refuses (`stickslip.contact.runs`)."""
     if path is None:
         return None
     if path.suffix.lower() != suffix:
         raise ParameterError(name, str(path), f"a file name ending in {suffix}")
-    if path.is_dir():
-        raise ParameterError(name, str(path), "a file name, not a folder")
-    _writable_folder(name, path, path.parent if str(path.parent) else Path("."))
-    if path.exists() and not os.access(path, os.W_OK):
+    _name_fits(name, path)
+    try:
+        if path.is_dir():
+            raise ParameterError(name, str(path), "a file name, not a folder")
+        _writable_folder(name, path, path.parent if str(path.parent) else Path("."))
+        exists = path.exists()
+    except OSError as exc:  # a path the system refuses to look at (a loop of links, a name too long)
+        raise ParameterError(name, str(path), f"a path the file system can use ({exc.strerror})") from None
+    if exists and not os.access(path, os.W_OK):
         raise ParameterError(name, str(path), "a file you can write to")
-    if overwrite is False and path.is_file() and _holds_a_run(path):
-        raise ParameterError(name, str(path), "a file that is not a run's checkpoint (this one holds a run, which "
-                             "this command would replace: give --overwrite to replace it)")
+    if overwrite is False and exists:
+        what = "holds a run's checkpoint" if _holds_a_run(path) else "exists"
+        raise ParameterError(name, str(path), f"a new file (this one {what}, and this command would replace it: "
+                             "give --overwrite to replace it)")
     return path
 
 
-def overwrite_needs(overwrite: bool, name: str, path) -> None:
-    """``--overwrite`` without the output it would replace is refused, not ignored."""
-    if overwrite and path is None:
+def overwrite_needs(overwrite: bool, name: str, *paths) -> None:
+    """``--overwrite`` without any output it would replace is refused, not ignored."""
+    if overwrite and all(p is None for p in paths):
         raise ParameterError("--overwrite", True, f"left out without {name} (there is no file to replace)")
 
 
@@ -266,11 +299,15 @@ def output_folder(name: str, path: Path, suffix: str | None = None) -> Path:
     not a file, and that it or its nearest existing parent can be written to."""
     if suffix is not None and path.suffix.lower() != suffix:
         raise ParameterError(name, str(path), f"a folder name ending in {suffix}")
-    if path.exists() and not path.is_dir():
-        raise ParameterError(name, str(path), "a folder (created if absent), not a file")
-    existing = path.resolve()
-    while not existing.exists():
-        existing = existing.parent
+    _name_fits(name, path)
+    try:
+        if path.exists() and not path.is_dir():
+            raise ParameterError(name, str(path), "a folder (created if absent), not a file")
+        existing = path.resolve()
+        while not existing.exists():
+            existing = existing.parent
+    except OSError as exc:
+        raise ParameterError(name, str(path), f"a path the file system can use ({exc.strerror})") from None
     if not existing.is_dir():
         raise ParameterError(name, str(path), f"a folder whose parents are folders ({existing} is a file)")
     _writable_folder(name, path, existing)

@@ -13,7 +13,7 @@ import typer
 
 from ..quantities import COMMON, FEM as Q
 from ..errors import ParameterError
-from .common import (Overwrite, RunOut, XdmfEvery, declared, emit, output_path, overwrite_needs, progress_bar, write_netcdf,
+from .common import (Overwrite, Replace, RunOut, XdmfEvery, declared, emit, output_path, overwrite_needs, progress_bar, write_netcdf,
                      xdmf_path, xdmf_snapshots)
 
 _emit = functools.partial(emit, model="fem")  # SI units: growth rates in 1/s, frequencies in Hz
@@ -25,7 +25,6 @@ app = typer.Typer(no_args_is_help=True, rich_markup_mode=None,
 CONFIG_NAMES = {"alpha": "material.alpha", "beta": "material.beta"}
 
 Config = Annotated[Path, typer.Argument(help="The TOML config (mesh, material, contact, surface; see the docs).")]
-ReplaceRun = Annotated[bool, typer.Option("--overwrite", help="Replace --out even if it holds a run's checkpoint.")]
 Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
 
 
@@ -51,7 +50,7 @@ def steady(config: Config, json: Json = False,
            out: Annotated[Optional[Path], typer.Option(help=(
                "Write the contact line node by node to this netCDF file (.nc): forces [N/m], displacements [m] "
                "and contact state along the arclength [m]."))] = None,
-           overwrite: ReplaceRun = False):
+           overwrite: Replace = False):
     """Steady sliding (or the preload, with friction 0): contact nodes, forces and nodes in contact."""
     overwrite_needs(overwrite, "--out", out)
     out = output_path("--out", out, ".nc", overwrite)
@@ -75,15 +74,15 @@ def cea(config: Config, json: Json = False,
         xdmf: Annotated[Optional[Path], typer.Option(help=(
             "Write the mode shapes for ParaView to this XDMF file (.xdmf, data in the .h5 beside it): one step per "
             "mode, most unstable first; lengths in m, growth rate [1/s], frequency [Hz]."))] = None,
-        overwrite: ReplaceRun = False):
+        overwrite: Replace = False):
     """Complex eigenvalue analysis of steady sliding over [cea] band: growth rate [1/s] and
     frequency [Hz] of every mode found, most unstable first."""
     from ..fem import complex_eigenvalues
     from ..fem.paraview import write_modes_xdmf
 
-    overwrite_needs(overwrite, "--out", out)
+    overwrite_needs(overwrite, "--out or --xdmf", out, xdmf)
     out = output_path("--out", out, ".nc", overwrite)
-    xdmf = xdmf_path(xdmf)
+    xdmf = xdmf_path(xdmf, overwrite)
     cfg = _problem(config)
     problem = cfg.problem()
     result = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=xdmf is not None,
@@ -128,9 +127,9 @@ def run(config: Config,
     from ..fem.scheme import BodyScheme
     from ..fem.surfaces import RigidFlat
 
-    overwrite_needs(overwrite, "--out", out)
+    overwrite_needs(overwrite, "--out or --xdmf", out, xdmf)
     out = output_path("--out", out, ".nc")
-    xdmf, volume_every = xdmf_snapshots(xdmf, xdmf_every)
+    xdmf, volume_every = xdmf_snapshots(xdmf, xdmf_every, overwrite)
     if amplitude is not None and start is not Start.steady:
         raise ParameterError("--amplitude", amplitude, f"not given with --start {start.value} (it sets the noise "
                              "of --start steady)")

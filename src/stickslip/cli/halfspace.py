@@ -11,7 +11,7 @@ from typing import Annotated, Optional
 import typer
 
 from ..quantities import HALFSPACE as Q
-from .common import declared, emit, output_path, write_netcdf
+from .common import Replace, declared, emit, output_path, overwrite_needs, write_netcdf
 
 _emit = functools.partial(emit, model="halfspace")  # results are printed with the units of this model
 
@@ -57,11 +57,13 @@ def fields(b: B, c: C, v_star: VStar, nu: Nu = 0.3, mu: Mu = 0.5, system: System
            points: Annotated[int, declared(Q["points"], "--points")] = 2001,
            json: Json = False,
            out: Annotated[Optional[Path], typer.Option(help="Write the fields to this netCDF file (.nc).")] = None,
-           plot: Annotated[Optional[Path], typer.Option(help="Write a figure to this PNG file.")] = None):
+           plot: Annotated[Optional[Path], typer.Option(help="Write a figure to this PNG file.")] = None,
+           overwrite: Replace = False):
     """Interface fields of the wave: stresses, u_x,x, slip velocity, residuals, singularities."""
     from ..halfspace import decaying_wave, inverse_problem, wave_from_inverse
 
-    out, plot = output_path("--out", out, ".nc"), output_path("--plot", plot, ".png")
+    overwrite_needs(overwrite, "--out or --plot", out, plot)
+    out, plot = output_path("--out", out, ".nc", overwrite), output_path("--plot", plot, ".png", overwrite)
     if decaying:
         T = float(inverse_problem(b, c, v_star, nu=nu, mu=mu, system=system.value).T)
         wave = decaying_wave(b, c, T, v_star, nu=nu, mu=mu)

@@ -16,7 +16,8 @@ from ..friction import make_law
 from ..oscillator import (Oscillator, continue_cycle, continue_from_hopf, equilibrium_stability, hopf_points,
                           limit_cycle, simulate)
 from ..quantities import COMMON, OSCILLATOR as Q
-from .common import AXIS_HELP, Overwrite, axis, declared, emit, output_folder, output_path, progress_bar, write_netcdf
+from .common import (AXIS_HELP, Overwrite, Replace, axis, declared, map_size, emit, output_folder, output_path, overwrite_needs,
+                     progress_bar, write_netcdf)
 
 _emit = functools.partial(emit, model="oscillator")  # results are printed with the units of this model
 
@@ -58,6 +59,12 @@ def _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, dampin
     return Oscillator(mass, stiffness, normal_force, belt_speed, friction, damping)
 
 
+def _outputs(out, plot, overwrite):
+    """``--out`` and ``--plot`` checked before any work (an existing one only with ``--overwrite``)."""
+    overwrite_needs(overwrite, "--out or --plot", out, plot)
+    return output_path("--out", out, ".nc", overwrite), output_path("--plot", plot, ".png", overwrite)
+
+
 def _write(ds, out, plot, draw: str) -> None:
     """Write ``ds`` to ``out`` and its plot ``stickslip.plotting.<draw>`` to ``plot`` (either may be None)."""
     if out is not None:
@@ -73,9 +80,9 @@ def cycle(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Be
           law: LawOpt = Law.coulomb, tau: Tau = None, vs: Vs = None, damping: Damping = 0.0,
           x0: Annotated[Optional[float], declared(Q["x0"], "--x0", "Default: the end of the stick segment.")] = None,
           v0: Annotated[Optional[float], declared(Q["v0"], "--v0", "Default: the belt speed.")] = None,
-          json: Json = False, out: Out = None, plot: Plot = None):
+          json: Json = False, out: Out = None, plot: Plot = None, overwrite: Replace = False):
     """Limit cycle: period, stick and slip times, amplitude, Floquet multipliers."""
-    out, plot = output_path("--out", out, ".nc"), output_path("--plot", plot, ".png")
+    out, plot = _outputs(out, plot, overwrite)
     result = limit_cycle(_osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, damping), x0, v0)
     _emit(result.to_dict(), json, "limit cycle")
 
@@ -89,9 +96,9 @@ def simulate_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_sp
                  x0: Annotated[Optional[float], declared(Q["x0"], "--x0", "Default: steady sliding.")] = None,
                  v0: Annotated[float, declared(Q["v0"], "--v0")] = 0.0,
                  samples: Annotated[int, declared(Q["samples"], "--samples")] = 2001,
-                 json: Json = False, out: Out = None, plot: Plot = None):
+                 json: Json = False, out: Out = None, plot: Plot = None, overwrite: Replace = False):
     """Event-driven simulation with exact stick/slip switching."""
-    out, plot = output_path("--out", out, ".nc"), output_path("--plot", plot, ".png")
+    out, plot = _outputs(out, plot, overwrite)
     traj = simulate(_osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, damping), t_end, x0, v0)
     counts = {name: int((traj.modes == m).sum()) for name, m in (("stick_segments", 0), ("slip_segments", 1),
                                                                   ("reverse_slip_segments", -1))}
@@ -126,9 +133,9 @@ def continue_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_sp
                  from_hopf: Annotated[bool, typer.Option(help="Start from the nearest Hopf point instead.")] = False,
                  step: Annotated[float, declared(Q["initial_step"], "--step")] = 0.02,
                  max_step: Annotated[float, declared(Q["max_step"], "--max-step")] = 0.05,
-                 json: Json = False, out: Out = None, plot: Plot = None):
+                 json: Json = False, out: Out = None, plot: Plot = None, overwrite: Replace = False):
     """Continuation of the limit cycle in a parameter (amplitude, period, grazing, Hopf)."""
-    out, plot = output_path("--out", out, ".nc"), output_path("--plot", plot, ".png")
+    out, plot = _outputs(out, plot, overwrite)
     osc = _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, damping)
     if from_hopf:
         start = osc.parameter(parameter)
@@ -161,12 +168,16 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (a directory endi
             workers: Annotated[Optional[int], declared(COMMON["workers"], "--workers", "Default: all cores.")] = None,
             overwrite: Overwrite = False, json: Json = False, plot: Plot = None):
     """Regime map over two parameters (steady sliding, stick-slip, bistable, pure slip): resumable, parallel."""
-    from ..errors import ParameterError
+    from ..errors import MISSING, ParameterError
     from ..oscillator.regimes import REGIMES, regime_map
 
     out = output_folder("--out", out, ".zarr")
-    plot = output_path("--plot", plot, ".png")
-    named = dict(axis(option, text) for option, text in (("--x", x), ("--y", y)))
+    plot = output_path("--plot", plot, ".png", overwrite)
+    pair = [axis(option, text) for option, text in (("--x", x), ("--y", y))]
+    if pair[0][0] == pair[1][0]:
+        raise ParameterError("--y", y, f"an axis of another parameter than --x (both are {pair[0][0]}: a map needs two)")
+    map_size("--y", y, *(len(values) for _, values in pair))
+    named = dict(pair)
     base = {"mass": mass, "stiffness": stiffness, "normal_force": normal_force, "belt_speed": belt_speed, "fs": fs,
             "fd": fd, "damping": damping, "tau": tau, "vs": vs}
     for name, value in base.items():  # a swept parameter takes its values from the axis, not from its option
@@ -176,7 +187,7 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (a directory endi
         if name in named:
             base[name] = named[name][0]
         elif value is None and name not in ("tau", "vs", "damping"):
-            raise ParameterError(option, None, f"given (or made an axis with --x/--y {name}=lo:hi:n)")
+            raise ParameterError(option, MISSING, f"given (or made an axis with --x/--y {name}=lo:hi:n)")
     base["damping"] = 0.0 if base["damping"] is None else base["damping"]
     try:
         osc = _osc(*(base[k] for k in ("mass", "stiffness", "normal_force", "belt_speed", "fs", "fd")), law,

@@ -45,6 +45,8 @@ from __future__ import annotations
 
 import math
 import tomllib
+
+import numpy as np
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -129,11 +131,17 @@ def load_config(path) -> FemConfig:
     """Read and check a config; every problem found goes into one `ParameterError`."""
     path = Path(path)
     try:
-        data = tomllib.loads(path.read_text())
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
     except OSError as err:
         raise ParameterError("config", str(path), f"a readable TOML file ({err.strerror})") from None
+    except UnicodeDecodeError as err:
+        raise ParameterError("config", str(path), f"a TOML file in UTF-8 (byte {err.start} is not: {err.reason})") \
+            from None
     except tomllib.TOMLDecodeError as err:
         raise ParameterError("config", str(path), f"a valid TOML file ({err})") from None
+    except RecursionError:
+        raise ParameterError("config", str(path), "a TOML file without deeply nested arrays or tables (a config "
+                             "nests two levels)") from None
     problems: list[str] = []
     for section, keys in _KNOWN.items():
         table = data if not section else data.get(section, {})
@@ -233,6 +241,9 @@ def _body(problems, mesh_path, clamped, group, springs, loads, data, surface):
     missing = [(where, name) for where, name in named if isinstance(name, str) and name not in body.groups]
     problems += [f"{where} = {name!r} is not a boundary group of {mesh_path.name} (it has: {have})"
                  for where, name in missing]
+    push = data.get("surface", {}).get("interference", 0.0) if isinstance(data.get("surface"), dict) else 0.0
+    if isinstance(group, str) and group in body.groups and not _interference(problems, body, group, push):
+        return body
     if surface is not None and isinstance(group, str) and group in body.groups:
         try:
             contact_frames(body, group, surface)
@@ -240,6 +251,34 @@ def _body(problems, mesh_path, clamped, group, springs, loads, data, surface):
             where = "surface" if err.name == "surface" else f"surface.{err.name} = {_toml(err.value)}"
             problems.append(f"{where} must be {err.allowed}")
     return body
+
+
+def _made(problems, kind, *args):
+    """The surface, or None with its refusal among the problems (named as the config names it)."""
+    try:
+        return kind(*args)
+    except ParameterError as err:
+        problems.append(f"surface.{err.name} = {_toml(err.value)} must be {err.allowed} (with the interference "
+                        "applied)")
+        return None
+
+
+#: The largest interference over the contact group's length: a strain scale, as for the loads.
+MAX_INTERFERENCE = 0.1
+
+
+def _interference(problems, body, group, push) -> bool:
+    """An interference of at most `MAX_INTERFERENCE` times the contact group's length in size."""
+    if not isinstance(push, (int, float)) or isinstance(push, bool) or not math.isfinite(push) \
+            or push not in Q["interference"].range:
+        return True  # (refused as a number already)
+    points = body.points[body.nodes(group)]
+    length = float(np.ptp(points, axis=0).max()) if len(points) > 1 else 0.0
+    if abs(push) > MAX_INTERFERENCE * length:
+        problems.append(f"surface.interference = {push!r} must be at most {MAX_INTERFERENCE:g} x the length of the "
+                        f"contact group {group!r} ({length:.4g} m) in size: {Q['interference'].why}")
+        return False
+    return True
 
 
 def _toml(value) -> str:
@@ -314,7 +353,7 @@ def _surface(problems, s, friction, given=True):
         if radius <= 0:
             problems.append("surface.interference leaves the cylinder no radius")
             return None
-        return RigidCylinder(radius, omega, center, inside)
+        return _made(problems, RigidCylinder, radius, omega, center, inside)
     if kind == "flat":
         point = _pair(problems, "surface.point", s.get("point"))
         normal = _pair(problems, "surface.normal", s.get("normal"))
@@ -336,7 +375,7 @@ def _surface(problems, s, friction, given=True):
             problems.append("surface.velocity must lie along the flat (no component along its normal)")
             return None
         shifted = (point[0] + push * normal[0] / size, point[1] + push * normal[1] / size)
-        return RigidFlat(shifted, normal, velocity)
+        return _made(problems, RigidFlat, shifted, normal, velocity)
     problems.append('surface.kind is missing ("cylinder" or "flat")' if kind is None
                     else f'surface.kind = {kind!r} must be "cylinder" or "flat"')
     return None

@@ -34,7 +34,7 @@ FEM = Domain("fem", units="SI", quantities=[
     Q("velocity", "m/s", "velocity [vx, vy] of the rigid flat", "[-1e4, 1e4]",
       why="from creep to ballistic speeds"),
     Q("interference", "m", "how far the surface is pushed into the body", "[-1000, 1000]",
-      why="at most a tenth of the contact group's length in size: linear elasticity holds for small strains"),
+      why="linear elasticity holds for small strains"),
     Q("tolerance", "1", "how near the surface must come to the contact group, relative to its length", "(0, 1]"),
     Q("stiffness", "N/m", "total spring stiffness [kx, ky] of a group, per metre of thickness", "[0, 1e20]",
       why="at most 1e6 times the body's own stiffness at a node"),
