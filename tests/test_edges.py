@@ -129,3 +129,36 @@ def test_an_absurd_interference_is_named_as_such_not_as_the_speed(tmp_path, caps
             'mesh = "pad.msh"', f'mesh = "{example_config().replace("pad.toml", "pad.msh")}"'))
         err = refused(capsys, ["fem", "steady", str(config)], "surface.interference", words)
         assert "omega" not in err
+
+
+def _pad_config(tmp_path, old, new):
+    text = Path(example_config()).read_text()
+    assert old in text, old
+    config = tmp_path / "p.toml"
+    config.write_text(text.replace(old, new).replace('mesh = "pad.msh"',
+                                                     f'mesh = "{example_config().replace("pad.toml", "pad.msh")}"'))
+    return config
+
+
+def test_a_cea_band_beyond_the_mesh_and_too_many_eigenvalues_are_refused_up_front(tmp_path, capsys):
+    """A band to 1e9 Hz on a mesh whose highest mode is near 280 kHz ran for minutes (to 1e300
+    it never ended); 1000 eigenvalues per shift on a fine mesh likewise."""
+    config = _pad_config(tmp_path, "band = [0.0, 150000.0]", "band = [0.0, 1e9]")
+    refused(capsys, ["fem", "cea", str(config)], "cea.band", "the mesh's highest frequency")
+    config = _pad_config(tmp_path, "count = 30", "count = 1000")
+    refused(capsys, ["fem", "cea", str(config)], "cea.count = 1000", "[2, 200]")
+
+
+def test_damping_that_overdamps_the_whole_band_is_no_solution_at_once(tmp_path, capsys):
+    """alpha = 1e9 1/s overdamps every mode below 80 MHz: no mode oscillates, exit 1 in a second
+    (the search ground for 2.5 minutes before giving up)."""
+    config = _pad_config(tmp_path, "poisson = 0.25", "poisson = 0.25\nalpha = 1e9")
+    assert run(["fem", "cea", str(config)]) == 1
+    out, err = capsys.readouterr()
+    assert out == "" and err.count("\n") == 1 and "overdamps every mode of the band" in err
+
+
+def test_an_annulus_mesh_beyond_the_memory_budget_is_refused_before_it_is_built(capsys):
+    refused(capsys, ["brake", "fem", "--xi", "1.5", "--gamma", "0.01", "--delta", "0.001", "--friction", "0.3",
+                     "--n-theta", "65536", "--n-r", "4096", "--transits", "1"], "--n-r = 4096", "at most 15 ",
+            "1048576 nodes")

@@ -27,7 +27,8 @@ def _fresh_store():
     return tempfile.mkdtemp(prefix="fuzz-") + "/s.zarr"
 
 
-BAD = [float("nan"), float("inf"), -float("inf"), -1.0, 0.0, 1e300, 1e-300, "x", None, True, [1.0], 1j]
+BAD = [float("nan"), float("inf"), -float("inf"), -1.0, 0.0, 1e300, 1e-300, 1e-320, "x", None, True, [1.0], 1j, [],
+       ["a"], 10**20]
 OSC = dict(mass=1.0, stiffness=1.0, normal_force=1.0, belt_speed=0.2, friction=Coulomb(0.6, 0.4))
 BRAKE = dict(xi=1.5, nu=0.3, gamma=1e-6, delta=0.004, friction=0.2)
 P = BrakeParams(**BRAKE)
@@ -61,7 +62,7 @@ CALLS = {
     "growth_rates": (lambda **k: growth_rates(**{"params": P, "modes": [1, 2], **k}), ["params", "modes"]),
     "travelling_wave": (lambda **k: travelling_wave(**{"params": P, "modes": 8, **k}), ["modes", "num"]),
     "continue_waves": (lambda **k: continue_waves(**{"params": P, "modes": 8, "stop": 0.0039, "num": 2, **k}),
-                       ["modes", "stop", "num"]),
+                       ["modes", "stop", "num", "tol"]),
     "perturbed_steady": (lambda **k: perturbed_steady(**{"params": P, "nodes": 32, **k}),
                          ["nodes", "amplitude", "mode", "seed", "phase", "noise"]),
     "integrate": (lambda **k: integrate(**{"params": P, "nodes": 32, "transits": 0.5, **k}),
@@ -72,6 +73,82 @@ CALLS = {
                                            "outputs": {"y": "1"}, "scheduler": "synchronous", **k}),
                   ["axes", "store", "outputs", "batch", "workers"]),
 }
+def _example_problem():
+    """The pad on a disc (coarse mesh) as a body, its frames and a problem, made once."""
+    if not _PAD:
+        from stickslip.fem.config import load_config
+
+        from .fuzz_harness import example_config
+
+        cfg = load_config(example_config())
+        _PAD.update(cfg=cfg, body=cfg.body, surface=cfg.surface, problem=cfg.problem())
+    return _PAD
+
+
+_PAD: dict = {}
+
+
+def _frames(**k):
+    from stickslip.fem import contact_frames
+
+    p = _example_problem()
+    return contact_frames(**{"body": p["body"], "group": p["cfg"].group, "surface": p["surface"], **k})
+
+
+def _contact_problem(**k):
+    from stickslip.fem import ContactProblem
+
+    p = _example_problem()["problem"]
+    return ContactProblem(**{"system": p.system, "frames": p.frames, "friction": 0.5, "clamped": p.clamped, **k})
+
+
+def _user_law(**k):
+    from stickslip.friction import UserLaw
+
+    value = k.get("returns")
+    law = UserLaw(lambda v: value, fs=0.6)
+    return limit_cycle(Oscillator(**{**OSC, "friction": law}))
+
+
+def _fields(**k):
+    from stickslip.halfspace import wave_from_inverse
+
+    return wave_from_inverse(11.358, -0.7, 1e-3, nu=0.3, mu=0.5).fields(**{"n": 101, **k})
+
+
+def _from_hopf(**k):
+    from stickslip.friction import LinearWeakening
+    from stickslip.oscillator import continue_from_hopf
+
+    osc = Oscillator(**{**OSC, "friction": LinearWeakening(0.6, 0.4, 0.5), "damping": 0.1})
+    hopf = hopf_points(osc, "damping", 0.01, 1.0)[0]
+    return continue_from_hopf(**{"osc": osc, "hopf": hopf, "stop": 0.15, "max_points": 2, **k})
+
+
+def _ring_classify(**k):
+    from stickslip.brake import classify
+
+    return classify(**{"run": None, **k})
+
+
+CALLS.update({
+    "annulus_frequencies": (lambda **k: __import__("stickslip.brake.fem", fromlist=["x"]).annulus_frequencies(
+        **{"xi": 1.5, "nu": 0.3, "n": 2, **k}), ["xi", "nu", "n", "count", "w_max", "step"]),
+    "fem perturbed_steady": (lambda **k: __import__("stickslip.brake.fem", fromlist=["x"]).perturbed_steady(
+        **{"scheme": FemScheme(P, 16, 1), "mode": 2, **k}), ["scheme", "amplitude", "mode", "seed", "phase", "noise"]),
+    "inverse_map": (lambda **k: __import__("stickslip.halfspace", fromlist=["x"]).inverse_map(
+        **{"b_values": [2.0, 3.0], "c_values": [-0.5], "v_star": 1e-3, "nu": 0.3, "mu": 0.5, **k}),
+        ["b_values", "c_values", "v_star", "nu", "mu", "systems"]),
+    "direct_map": (lambda **k: __import__("stickslip.halfspace", fromlist=["x"]).direct_map(
+        **{"v_ratio": [3.5], "T_ratio": [0.95], "nu": 0.3, "mu": 0.5, "n_grid": 201, **k}),
+        ["v_ratio", "T_ratio", "nu", "mu", "system", "n_grid", "max_solutions"]),
+    "fields": (_fields, ["x", "n"]),
+    "UserLaw": (_user_law, ["returns"]),
+    "continue_from_hopf": (_from_hopf, ["osc", "hopf", "stop", "offset"]),
+    "classify": (_ring_classify, ["run"]),
+    "contact_frames": (_frames, ["body", "group", "surface", "tolerance"]),
+    "ContactProblem": (_contact_problem, ["system", "frames", "friction", "static_friction", "clamped"]),
+})
 CASES = [(name, param) for name, (_, params) in CALLS.items() for param in params]
 
 

@@ -66,7 +66,7 @@ def test_map_command(tmp_path, capsys):
     assert run(args[:-6] + ["--x", "belt_speed=0.2:1.3", "--out", str(tmp_path / "n.zarr")]) == 2
 
 
-@pytest.mark.parametrize("axis, words", [("belt_speed=0:1:3", "every value in [1e-12, 10000] m/s"), ("fs=0.1:0.2:2", ">= fd"),
+@pytest.mark.parametrize("axis, words", [("belt_speed=0:1:3", "every value in [1e-12, 1e4] m/s"), ("fs=0.1:0.2:2", ">= fd"),
                                          ("foo=1:2:3", "one of mass")])
 def test_map_command_checks_every_point_before_starting(axis, words, tmp_path, capsys):
     """An axis that leaves the valid range is one line naming --x, in the main process (it used to

@@ -190,10 +190,15 @@ class UserLaw(FrictionLaw):
         return self.fs
 
     def kinetic(self, v_r):
-        value = np.asarray(np.vectorize(self.mu, otypes=[float])(v_r), dtype=float)
-        if not np.all(np.isfinite(value)) or np.any(value < 0):
-            bad = value[~(np.isfinite(value) & (value >= 0))].flat[0]
-            raise ParameterError("mu(v_r)", float(bad), "a finite coefficient >= 0")
+        try:
+            value = np.asarray(np.vectorize(self.mu, otypes=[float])(v_r), dtype=float)
+        except Exception as err:  # noqa: BLE001 - the user's function: whatever it raises or returns
+            raise ParameterError("mu(v_r)", f"{type(err).__name__}: {err}", "a function returning one number for each "
+                                 "slip speed") from None
+        q = Q["fd"]
+        ok = np.isfinite(value) & (value >= q.range.lo) & (value <= q.range.hi)
+        if not np.all(ok):
+            raise ParameterError("mu(v_r)", float(value[~ok].flat[0]), f"a friction coefficient {q.allowed}")
         return value if value.ndim else float(value)
 
     def slope(self, v_r):

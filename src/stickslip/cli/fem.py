@@ -22,7 +22,8 @@ app = typer.Typer(no_args_is_help=True, rich_markup_mode=None,
                   help="A 2-D body of your own (a mesh file and a TOML config) on a rigid counter-surface.")
 
 #: The library's names of what a `fem` command reads from its config, as the config writes them.
-CONFIG_NAMES = {"alpha": "material.alpha", "beta": "material.beta"}
+CONFIG_NAMES = {"alpha": "material.alpha", "beta": "material.beta", "band": "cea.band", "count": "cea.count",
+                "complete_below": "cea.complete_below"}
 
 Config = Annotated[Path, typer.Argument(help="The TOML config (mesh, material, contact, surface; see the docs).")]
 Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]

@@ -134,6 +134,10 @@ def classify(run, transits: float | None = None, min_fraction: float = 0.01, min
     tol : float
         Stationarity threshold on the relative residual (and on the state mismatch).
     """
+    from .runs import RunRecord
+
+    if not isinstance(run, RunRecord):
+        raise ParameterError("run", run, "a run (a RunRecord: RingRun, FemRun, BodyRun)")
     s = run.scheme
     min_fraction = Q.check("min_fraction", min_fraction)
     min_run, tol = Q.check("min_run", min_run), Q.check("stationarity_tol", tol, "tol")

@@ -25,6 +25,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import ParameterError
+from ..quantities import FEM as Q, MAX_MESH_NODES
 
 __all__ = ["Body", "read_body", "body_from_meshio", "edge_middles", "CELL_KINDS"]
 
@@ -77,7 +78,7 @@ class Body:
     def group(self, name: str, option: str = "group") -> np.ndarray:
         """Edges of the boundary group ``name``; an unknown name is a `ParameterError` naming
         ``option`` and listing the groups the mesh has."""
-        if name not in self.groups:
+        if not isinstance(name, str) or name not in self.groups:
             have = ", ".join(sorted(self.groups)) or "none"
             raise ParameterError(option, name, f"a boundary group of {self.source} (it has: {have})")
         return self.groups[name]
@@ -126,6 +127,12 @@ def body_from_meshio(mesh, source: str = "mesh") -> Body:
     points = np.asarray(getattr(mesh, "points", None), dtype=float)
     if points.ndim != 2 or points.shape[0] == 0 or points.shape[1] not in (2, 3) or not np.all(np.isfinite(points)):
         raise bad("a mesh with finite 2-D points")
+    if points.shape[0] > MAX_MESH_NODES:
+        raise bad(f"a mesh of at most {MAX_MESH_NODES} nodes (this one has {points.shape[0]}: about 2 GB and a minute "
+                  "to assemble at the bound)")
+    coordinates = Q["coordinates"]
+    if not np.all((points >= coordinates.range.lo) & (points <= coordinates.range.hi)):
+        raise bad(f"a mesh with coordinates {coordinates.allowed} (this one reaches {np.abs(points).max():.3g})")
     extent = float(np.ptp(points[:, :2], axis=0).max()) or 1.0
     if points.shape[1] == 3 and np.ptp(points[:, 2]) > 1e-12 * extent:
         raise bad("a planar mesh (all z equal): this one is 3-D")
@@ -145,7 +152,7 @@ def body_from_meshio(mesh, source: str = "mesh") -> Body:
     areas = _areas(points, cells[:, :_CORNERS[kind]])
     if np.all(areas < 0):
         cells, areas = cells[:, _TURN[kind]], -areas  # a mesh oriented clockwise throughout: turned round
-    tiny = np.abs(areas) <= 1e-10 * np.mean(np.abs(areas))
+    tiny = ~(np.abs(areas) > 1e-10 * np.mean(np.abs(areas)))  # (NaN counts as no area)
     if np.any(tiny):
         raise bad(f"a mesh without degenerate cells ({int(tiny.sum())} have no area, the first is cell "
                   f"{int(np.argmax(tiny))})")

@@ -47,6 +47,11 @@ NEUTRAL = 1e-7
 #: the shift are apart; where they crowd (heavy damping) it would grind through ARPACK's default
 #: (10 n) for minutes before giving up.
 MAX_RESTARTS = 300
+#: The band's top at most this times the mesh's highest frequency (no mode lies beyond it).
+BAND_MARGIN = 1.5
+#: The most eigenvalues a shift asks for by default (a shift costs its pencil's size times the
+#: count squared: 1000 on a pad of 6k dofs took minutes).
+MAX_COUNT = 400
 
 
 def linearised(problem: ContactProblem):
@@ -240,15 +245,24 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
     lo, hi = Q["band"].check_pair(band)
     if not hi > lo:
         raise ParameterError("band", band, "(lo, hi) with hi > lo >= 0 [Hz]")
+    top = BAND_MARGIN * problem.omega_max / (2.0 * math.pi)
+    if hi > top:
+        raise ParameterError("band", [lo, hi], f"[lo, hi] with hi at most {top:.6g} Hz, {BAND_MARGIN:g} x the mesh's "
+                             f"highest frequency (beyond it the mesh has no modes; a finer mesh has higher ones)")
+    overdamped = _overdamped_band(problem.system.material, lo, hi)
+    if overdamped:
+        raise NoSolutionError(overdamped)
     reach = 0.1 * 2.0 * math.pi * hi if complete_below is None else \
         Q.check("complete_below", complete_below)
+    count = Q.check("count", count)
+    max_count = None if max_count is None else Q.check("max_count", max_count)
+    max_shifts = Q.check("max_shifts", max_shifts)
     K_eff, C_eff, mass, _ = linearised(problem)
     most = K_eff.shape[0] - 2
-    count = min(Q.check("count", count), most)
-    max_count = min(1000, 16 * count, max(count, most // 2)) if max_count is None else \
-        Q.check("max_count", max_count)  # (beyond a quarter of the pencil Arnoldi gains nothing)
+    count = min(count, most)
+    max_count = min(MAX_COUNT, 16 * count, max(count, most // 2)) if max_count is None else \
+        max_count  # (beyond a quarter of the pencil Arnoldi gains nothing)
     max_count = max(count, min(max_count, most))
-    max_shifts = Q.check("max_shifts", max_shifts)
     found, shapes, shifts, radii, shift, k = [], [], [], [], lo, count
     while True:
         if len(shifts) >= max_shifts:
@@ -283,6 +297,29 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
     vecs = np.array([shapes[i] for i in np.flatnonzero(inside)[order]]).T if mode_shapes and s.size else None
     reached = covered(2.0 * math.pi * np.array(shifts), np.array(radii), lo, hi)
     return CeaModes(s, vecs, np.array(shifts), (lo, hi), reached, reach, problem.to_attrs())
+
+
+def _overdamped_band(material, lo: float, hi: float) -> str:
+    """Why no mode of the band ``[lo, hi]`` [Hz] can oscillate, or "": Rayleigh damping gives a
+    mode of angular frequency ``w`` the damping ratio ``alpha / (2 w) + beta w / 2``, convex in
+    ``w`` (least, ``sqrt(alpha beta)``, at ``w = sqrt(alpha / beta)``). Where it is at least 1
+    over the whole band every mode there is overdamped, and the eigenvalues crowd the real axis,
+    where a shift-invert search only grinds (it took minutes to give up)."""
+    alpha, beta = material.alpha, material.beta
+
+    def ratio(w):
+        if w == 0:
+            return math.inf if alpha > 0 else 0.0
+        return alpha / (2.0 * w) + beta * w / 2.0
+
+    w_lo, w_hi = 2.0 * math.pi * lo, 2.0 * math.pi * hi
+    least = min(ratio(w_lo), ratio(w_hi))
+    if alpha > 0 and beta > 0 and w_lo < math.sqrt(alpha / beta) < w_hi:
+        least = math.sqrt(alpha * beta)
+    if least < 1.0:
+        return ""
+    return (f"Rayleigh damping (alpha = {alpha:g} 1/s, beta = {beta:g} s) overdamps every mode of the band {lo:g}-{hi:g} "
+            f"Hz (least damping ratio {least:.3g}): no mode there oscillates{_overdamped(material)}")
 
 
 def _overdamped(material) -> str:

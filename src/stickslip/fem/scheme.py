@@ -64,6 +64,9 @@ class ContactProblem:
         if self.friction > 0 and not np.all(self.frames.speed > 0):
             raise ParameterError("frames", "of a surface at rest", "the frames of a moving surface when friction > 0 "
                                  "(a surface at rest gives friction no sliding direction)", also=("friction",))
+        if isinstance(self.clamped, str) or not isinstance(self.clamped, (list, tuple)) or \
+                not all(isinstance(c, str) for c in self.clamped):
+            raise ParameterError("clamped", self.clamped, "a list of boundary group names")
         object.__setattr__(self, "clamped", tuple(self.clamped))
         for name in self.clamped:
             self.system.body.nodes(name, "clamped")

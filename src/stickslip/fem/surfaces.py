@@ -150,6 +150,13 @@ def contact_frames(body, group: str, surface, tolerance: float = 0.05) -> Contac
     the side the surface's normal points into at every edge of the group (a `ParameterError`
     naming the surface's ``body_inside`` or ``normal`` otherwise: the surface would pull).
     """
+    from .body import Body
+
+    if not isinstance(body, Body):
+        raise ParameterError("body", body, "a Body (see read_body)")
+    if not isinstance(surface, (RigidCylinder, RigidFlat)):
+        raise ParameterError("surface", surface, "a RigidCylinder or a RigidFlat")
+    tolerance = Q.check("tolerance", tolerance)
     edges = body.segments(group, "contact_group")
     nodes = _order_along(body.points, edges, np.unique(edges))
     pts = body.points[nodes]

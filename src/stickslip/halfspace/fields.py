@@ -190,7 +190,8 @@ class StickSlipWave(Result):
     rd: Radok = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
-        object.__setattr__(self, "b", float(b_array(self.b, most=MAX_B)))
+        object.__setattr__(self, "b", float(b_array(Q.check("b", self.b), most=MAX_B)))
+        object.__setattr__(self, "cbar", Q.check("cbar", self.cbar, "c"))
         object.__setattr__(self, "T", Q.check("T", self.T))
         object.__setattr__(self, "v", Q.check("v", self.v))
         object.__setattr__(self, "v_star", Q.check("v_star", self.v_star))
@@ -365,7 +366,7 @@ class StickSlipWave(Result):
             st = 0.5 * (1.0 - np.cos(np.pi * s_st))
             sl = 1.0 + (self.b - 1.0) * 0.5 * (1.0 - np.cos(np.pi * s_sl))
             x = np.concatenate([st, sl])
-        x = np.asarray(x, dtype=float)
+        x = Q["x"].check_array(x)
         rd = self.rd
         ph = self.phi_boundary(x)
         re, im = ph.real, ph.imag

@@ -54,7 +54,7 @@ SYSTEMS = {"printed": 2.0, "text": 1.0}
 
 def system_factor(system: str) -> float:
     """The factor of the v-terms of the chosen system: 2 for the printed [54]-[55], 1 for [52]-[53]."""
-    if system not in SYSTEMS:
+    if not isinstance(system, str) or system not in SYSTEMS:
         raise ParameterError("system", system, "one of " + ", ".join(repr(s) for s in SYSTEMS))
     return SYSTEMS[system]
 
@@ -251,8 +251,13 @@ def printed_closed_form(b, cbar, v_star, *, nu, mu, as_printed: bool = False):
 
 def inverse_map(b_values, c_values, v_star, *, nu, mu, systems=("printed", "text")) -> xr.Dataset:
     """``v``, ``T``, ``D``, ``H`` over the ``(b, c)`` grid for each system (an xarray Dataset)."""
-    b_values = b_array(b_values).ravel()
-    c_values = np.asarray(c_values, dtype=float).ravel()
+    b_values = b_array(b_values, "b_values").ravel()
+    c_values = Q["cbar"].check_array(c_values, "c_values").ravel()
+    if not (b_values.size and c_values.size):
+        raise ParameterError("b_values" if not b_values.size else "c_values", [], "a non-empty list of numbers")
+    if isinstance(systems, str) or not (isinstance(systems, (list, tuple)) and systems):
+        raise ParameterError("systems", systems, "a non-empty list of " + ", ".join(Q["system"].choices))
+    systems = [Q.check("system", s, "systems") for s in systems]
     B, C = np.meshgrid(b_values, c_values, indexing="ij")
     rd = radok(c_values, nu, mu)
     out = {name: [] for name in ("v", "T", "D", "H")}

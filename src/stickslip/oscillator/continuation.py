@@ -303,6 +303,12 @@ def continue_from_hopf(osc: Oscillator, hopf, stop: float, *, offset: float = 1e
     """
     from .stability import damping_coefficients
 
+    from .stability import HopfPoint
+
+    if not isinstance(osc, Oscillator):
+        raise ParameterError("osc", osc, "an Oscillator")
+    if not isinstance(hopf, HopfPoint):
+        raise ParameterError("hopf", hopf, "a HopfPoint (see hopf_points)")
     offset = Q.check("offset", offset)
     for sign in (1.0, -1.0):
         p = hopf.value * (1 + sign * offset)

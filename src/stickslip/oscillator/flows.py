@@ -20,6 +20,7 @@ import numpy as np
 from scipy.integrate import DOP853
 from scipy.optimize import brentq
 
+from ..errors import NoSolutionError
 from . import kernel
 from .model import Mode, Oscillator
 
@@ -146,7 +147,8 @@ class NumericSlip:
             t_old, y_old, a_old = solver.t, solver.y.copy(), solver.f[1]
             message = solver.step()
             if solver.status == "failed":
-                raise RuntimeError(f"DOP853 failed: {message}")
+                raise NoSolutionError(f"the slip flow could not be integrated (DOP853: {message}): the friction law "
+                                      "changes faster than double precision resolves")
             dense = solver.dense_output()
             self._pieces.append((t_old, solver.t, dense))
             times = [t_old, solver.t]

@@ -31,6 +31,9 @@ class Mode(IntEnum):
     SLIP_POS = 1
 
 
+#: The steepest Stribeck drop ``(f_s - f_d) N / v_s`` accepted, over ``sqrt(k m)``: within it a cycle
+#: takes seconds (1e6: 2 s with m = k = N = 1; 2e7: 40 s; 2e8: the integrator fails).
+MAX_STRIBECK_STIFFNESS = 1e6
 #: The largest damping ratio ``c / (2 sqrt(k m))`` (see `Oscillator`).
 MAX_DAMPING_RATIO = 1e11
 
@@ -68,6 +71,15 @@ class Oscillator:
                                  "is below the event loop's resolution of 1e-12/w)", also=("mass", "stiffness"))
         if not isinstance(self.friction, FrictionLaw):
             raise ParameterError("friction", self.friction, "a stickslip.friction.FrictionLaw")
+        vs = getattr(self.friction, "vs", None)
+        if vs is not None:  # the Stribeck law's drop, as a negative damping over the oscillator's own scale
+            least = (self.friction.fs - self.friction.fd) * self.normal_force / (
+                MAX_STRIBECK_STIFFNESS * math.sqrt(self.stiffness) * math.sqrt(self.mass))
+            if vs < least:
+                raise ParameterError("vs", vs, f">= {least:.4g} m/s here: the law's drop (f_s - f_d) N / v_s may be at "
+                                     f"most {MAX_STRIBECK_STIFFNESS:g} sqrt(k m), or the slip transition is too fast "
+                                     "for the integrator (vs = 1e-8 with m = k = N = 1 took 40 s; use coulomb there)",
+                                     also=("fs", "fd", "normal_force", "mass", "stiffness"))
 
     def replace(self, **changes) -> "Oscillator":
         """A copy with some parameters changed (validated again)."""

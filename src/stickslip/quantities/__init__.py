@@ -20,14 +20,14 @@ own declaration of a name takes precedence.
 from __future__ import annotations
 
 from .brake import BRAKE
-from .common import COMMON, MAX_POINTS, MAX_WORKERS
+from .common import COMMON, MAX_MESH_NODES, MAX_POINTS, MAX_WORKERS
 from .core import Domain, Quantity, Range, number
 from .fem import FEM
 from .halfspace import HALFSPACE
 from .oscillator import OSCILLATOR
 
 __all__ = ["Quantity", "Range", "Domain", "DOMAINS", "COMMON", "OSCILLATOR", "BRAKE", "HALFSPACE", "FEM",
-           "declared", "lookup", "number", "MAX_POINTS", "MAX_WORKERS"]
+           "declared", "lookup", "number", "MAX_MESH_NODES", "MAX_POINTS", "MAX_WORKERS"]
 
 #: Model -> its declarations; ``common`` serves every model.
 DOMAINS = {"common": COMMON, "oscillator": OSCILLATOR, "brake": BRAKE, "halfspace": HALFSPACE, "fem": FEM}

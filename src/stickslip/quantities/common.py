@@ -12,6 +12,10 @@ MAX_WORKERS = 64
 #: seconds: 1e6 points are hours to days of computing; split a larger study or use a cluster).
 MAX_POINTS = 1_000_000
 
+#: The most nodes of a finite-element mesh on this machine (2 x 2^20 degrees of freedom: about
+#: 2 GB and a minute to assemble; a run of it costs 2e6 dof-steps a step).
+MAX_MESH_NODES = 1 << 20
+
 COMMON = Domain("common", [
     # counters, labels and codes of results
     Q("done", "1", "point computed (1) or not yet (0)"),

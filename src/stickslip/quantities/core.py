@@ -25,11 +25,14 @@ _INTERVAL = re.compile(r"^\s*([\[(])\s*([^,]+?)\s*,\s*([^,]+?)\s*([\])])\s*$")
 
 
 def number(value: float) -> str:
-    """A bound or a value for people: ``1e15`` not ``1e+15``, ``0.5``, ``1.0001``, ``64``."""
+    """A bound or a value for people: ``1e15`` not ``1e+15``, ``0.5``, ``1.0001``, ``2097152``."""
     if isinstance(value, bool):
         return str(value).lower()
-    if isinstance(value, int) or (isinstance(value, float) and value.is_integer() and abs(value) < 1e6):
-        return str(int(value))
+    if isinstance(value, int) or (isinstance(value, float) and value.is_integer() and abs(value) < 1e16):
+        digits = str(int(value))
+        mantissa = digits.rstrip("0")
+        zeros = len(digits) - len(mantissa)
+        return f"{mantissa}e{zeros}" if zeros >= 4 and len(mantissa.lstrip("-")) == 1 else digits
     text = f"{value:.6g}"
     mantissa, _, exponent = text.partition("e")
     return mantissa + (f"e{int(exponent)}" if exponent else "")

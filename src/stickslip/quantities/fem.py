@@ -35,7 +35,8 @@ FEM = Domain("fem", units="SI", quantities=[
       why="from creep to ballistic speeds"),
     Q("interference", "m", "how far the surface is pushed into the body", "[-1000, 1000]",
       why="linear elasticity holds for small strains"),
-    Q("tolerance", "1", "how near the surface must come to the contact group, relative to its length", "(0, 1]"),
+    Q("tolerance", "1", "how near the surface must come to the contact group, relative to its length", "(0, 1e6]",
+      why="a surface farther away than a million times the group is in no contact a run could reach"),
     Q("stiffness", "N/m", "total spring stiffness [kx, ky] of a group, per metre of thickness", "[0, 1e20]",
       why="at most 1e6 times the body's own stiffness at a node"),
     Q("pressure", "Pa", "uniform pressure on a group (> 0 pushes into the body)", "[-1e12, 1e12]",
@@ -49,7 +50,7 @@ FEM = Domain("fem", units="SI", quantities=[
       why="the band's top at most the mesh's highest frequency"),
     Q("count", "1", "eigenvalues per shift to start with", "[2, 200]", integer=True,
       why="a shift costs the pencil's size times count squared; the sweep raises it where needed"),
-    Q("max_count", "1", "most eigenvalues per shift", "[2, 2000]", integer=True),
+    Q("max_count", "1", "most eigenvalues per shift", "[2, 1000]", integer=True),
     Q("max_shifts", "1", "most shifts of the eigenvalue search", "[1, 10000]", integer=True),
     Q("complete_below", "1/s", "every mode of the band with |growth rate| below this is found", "(0, 1e12]"),
     # runs

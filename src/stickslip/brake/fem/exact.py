@@ -78,6 +78,10 @@ def _det(w, n, xi, nu):
     return np.linalg.det(_matrix(np.asarray(w, dtype=float), n, xi, nu))
 
 
+#: The most points of the determinant's scan (a second or so of work each 1e6).
+MAX_SCAN = 1e8
+
+
 def annulus_frequencies(xi: float, nu: float, n: int, count: int = 2, w_max: float | None = None,
                         step: float = 2e-3) -> np.ndarray:
     """The ``count`` lowest natural frequencies ``omega sqrt(gamma)`` of mode ``n`` (exact).
@@ -97,11 +101,12 @@ def annulus_frequencies(xi: float, nu: float, n: int, count: int = 2, w_max: flo
         each bracket is then refined by Brent's method to 1e-14.
     """
     xi, nu = Q.check("xi", xi), Q.check("nu", nu)
-    if isinstance(n, bool) or int(n) != n or n < 0:
-        raise ParameterError("n", n, "an integer >= 0")
-    n, count = int(n), Q.check("count", count)
+    n, count = Q.check("n", n), Q.check("count", count)
     step = Q.check("step", step) * np.sqrt(float(elastic_moduli(nu)[1]))
     w_max = 40.0 + 4.0 * n if w_max is None else Q.check("w_max", w_max)
+    if w_max / step > MAX_SCAN:
+        raise ParameterError("step", step / np.sqrt(float(elastic_moduli(nu)[1])), f">= {w_max / MAX_SCAN:.3g} "
+                             f"with w_max = {w_max:g} (a scan of at most {MAX_SCAN:.0e} points)", also=("w_max", "n"))
     roots, lo = [], step
     while lo < w_max and len(roots) < count:  # scan in blocks until enough roots are bracketed
         grid = np.arange(lo, min(lo + 1000 * step, w_max + step), step)

@@ -24,7 +24,7 @@ from skfem import Basis, BilinearForm, ElementQuad1, ElementVector, MeshQuad, as
 from skfem.helpers import dot
 from skfem.models.elasticity import lame_parameters, linear_elasticity
 
-from ...quantities import BRAKE as Q
+from ...quantities import BRAKE as Q, MAX_MESH_NODES
 from ...contact import stencil_matrix
 from ...errors import ParameterError
 
@@ -78,6 +78,10 @@ def annulus_mesh(n_theta: int = 256, n_r: int = 16, xi: float = 1.5) -> AnnulusM
     n_theta, n_r, xi = Q.check("n_theta", n_theta), Q.check("n_r", n_r), Q.check("xi", xi)
     if n_theta < 16 or n_theta % 8:
         raise ParameterError("n_theta", n_theta, "a multiple of 8, >= 16")
+    if n_theta * (n_r + 1) > MAX_MESH_NODES:
+        raise ParameterError("n_r", n_r, f"at most {MAX_MESH_NODES // n_theta - 1} with n_theta = {n_theta} (a mesh of "
+                             f"at most {MAX_MESH_NODES} nodes, about 2 GB and a minute to assemble)",
+                             also=("n_theta",))
     r = np.linspace(1.0, xi, n_r + 1)
     th = 2.0 * np.pi * np.arange(n_theta) / n_theta
     R, T = np.meshgrid(r, th, indexing="ij")

@@ -72,15 +72,17 @@ def perturbed_steady(scheme: FemScheme, amplitude: float = 1e-3, mode: int | Non
     if not isinstance(scheme, FemScheme):
         raise ParameterError("scheme", scheme, "a FemScheme")
     amplitude, noise = Q.check("amplitude", amplitude), Q.check("noise", noise)
+    seed, phase = Q.check("seed", seed), Q.check("phase", phase)
     N = scheme.n_theta
     white = np.random.default_rng(seed).standard_normal(N)
     white /= np.sqrt(np.mean(white**2))
     if mode is None:
         pattern, label = amplitude * white, f"{amplitude:g} delta noise(seed={seed})"
     else:
-        if isinstance(mode, bool) or int(mode) != mode or not 0 <= mode <= N // 2:
-            raise ParameterError("mode", mode, f"an integer in [0, {N // 2}]")
-        pattern = amplitude * np.cos(mode * scheme.theta + Q.check("phase", phase)) + noise * white
+        if Q.check("mode", mode) > N // 2:
+            raise ParameterError("mode", mode, f"an integer in [0, {N // 2}] (half the nodes around, n_theta = {N})",
+                                 also=("n_theta",))
+        pattern = amplitude * np.cos(mode * scheme.theta + phase) + noise * white
         label = f"{amplitude:g} delta mode {mode}" + (f" + {noise:g} delta noise(seed={seed})" if noise else "")
     xi, r = scheme.params.xi, scheme.system.mesh.radii[:-1, None]
     X = (xi**2 / r - r) / (xi**2 - 1.0)

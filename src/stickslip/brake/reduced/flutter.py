@@ -66,8 +66,13 @@ def mode_numbers(modes) -> np.ndarray:
         items = list(items)
     except TypeError:
         raise ParameterError("modes", modes, "an integer >= 0 or a list of them") from None
-    if not items or any(isinstance(n, bool) or not isinstance(n, Integral) or n < 0 for n in items):
+    if not items:
         raise ParameterError("modes", modes, "a non-empty list of integers >= 0")
+    if len(items) > Q["modes"].range.hi:
+        raise ParameterError("modes", f"{len(items)} modes", f"at most {Q['modes'].range.hi:g} modes")
+    if any(isinstance(n, bool) or not isinstance(n, Integral) for n in items):
+        raise ParameterError("modes", modes, "a non-empty list of integers >= 0")
+    items = [Q["n"].check(n, "modes") for n in items]
     return np.unique(np.asarray(items, dtype=int))
 
 

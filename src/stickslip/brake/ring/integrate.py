@@ -20,7 +20,6 @@ result as an uninterrupted run).
 from __future__ import annotations
 
 import hashlib
-from numbers import Integral
 from dataclasses import dataclass
 from typing import Callable, ClassVar
 
@@ -77,16 +76,16 @@ def perturbed_steady(params: BrakeParams, nodes: int = 512, amplitude: float = 1
     scheme = RingScheme(params, nodes)
     # relative to the interference delta; 100 delta is far from any steady sliding already
     amplitude, noise = Q.check("amplitude", amplitude), Q.check("noise", noise)
-    if not isinstance(seed, Integral) or isinstance(seed, bool) or seed < 0:
-        raise ParameterError("seed", seed, "an integer >= 0")
+    seed, phase = Q.check("seed", seed), Q.check("phase", phase)
     white = np.random.default_rng(seed).standard_normal(scheme.nodes)
     white /= np.sqrt(np.mean(white**2))
     if mode is None:
         pattern, label = amplitude * white, f"{amplitude:g} delta noise(seed={seed})"
     else:
-        if not isinstance(mode, Integral) or isinstance(mode, bool) or not 0 <= mode <= scheme.nodes // 2:
-            raise ParameterError("mode", mode, f"an integer in [0, {scheme.nodes // 2}]")
-        pattern = amplitude * np.cos(mode * scheme.theta + Q.check("phase", phase)) + noise * white
+        if Q.check("mode", mode) > scheme.nodes // 2:
+            raise ParameterError("mode", mode, f"an integer in [0, {scheme.nodes // 2}] (half the nodes around)",
+                                 also=("nodes",))
+        pattern = amplitude * np.cos(mode * scheme.theta + phase) + noise * white
         label = f"{amplitude:g} delta mode {mode}" + (f" + {noise:g} delta noise(seed={seed})" if noise else "")
     U_e, V_e = scheme.fields(scheme.steady_reference()[0])
     zero = np.zeros(scheme.nodes)

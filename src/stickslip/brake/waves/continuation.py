@@ -223,7 +223,7 @@ def continue_waves(params: BrakeParams, modes: int, parameter: str = "delta", st
         raise ParameterError("parameter", parameter, f"one of {PARAMETERS}")
     if stop is None:
         raise ParameterError("stop", stop, "the end value of the continued parameter")
-    num = Q.check("points", num)
+    num, tol = Q.check("points", num), Q.check("tol", tol)
     if num < 2:
         raise ParameterError("points", num, "an integer >= 2")
     if spacing not in ("linear", "log"):
