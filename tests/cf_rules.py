@@ -85,3 +85,28 @@ def file_problems(path) -> list[str]:
             return out + problems(ds, path.name)
     with xr.open_dataset(path) as ds:
         return problems(ds, path.name)
+
+
+def compliance_errors(path) -> list[str]:
+    """What compliance-checker (the IOOS checker, CF 1.10; not ours) reports of a netCDF file at
+    high and medium priority (errors and warnings; low-priority suggestions are left out), or
+    its own crash on the file."""
+    import subprocess
+    import sys
+
+    checker = Path(sys.executable).with_name("compliance-checker")
+    done = subprocess.run([str(checker), "--test", "cf:1.10", "-f", "json_new", "-o", "-", str(path)],
+                          capture_output=True, text=True, timeout=300)
+    try:
+        report = json.loads(done.stdout)
+    except json.JSONDecodeError:
+        return [f"compliance-checker failed on {path}: {done.stderr.strip()[-300:]}"]
+    out = []
+    for result in report.values():
+        for checks in result.values():
+            if checks.get("errors"):
+                out += [f"checker error: {e}" for e in checks["errors"].values()]
+            for level in ("high_priorities", "medium_priorities"):
+                for item in checks.get(level, []):
+                    out += [f"{item['name']}: {m}" for m in item.get("msgs", [])]
+    return out

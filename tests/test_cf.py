@@ -2,6 +2,8 @@
 ``to_xarray`` and for every file the command line writes; the checker itself catches each
 broken rule. The files of ``reproduce --quick`` are checked in `tests/test_report.py`."""
 
+import json
+
 import numpy as np
 import pytest
 import xarray as xr
@@ -16,7 +18,8 @@ from stickslip.halfspace import direct_problem, inverse_problem, wave_from_inver
 from stickslip.oscillator import Oscillator, continue_cycle, limit_cycle, simulate
 from stickslip.sweep import run_sweep
 
-from .cf_rules import file_problems, problems
+from .cf_rules import compliance_errors, file_problems, problems
+from .fuzz_harness import example_config
 
 CASE = BrakeParams.from_physical(50.0, 1e-4, 0.7)
 
@@ -132,13 +135,36 @@ WRITERS = [
       "--xdmf", "{tmp}/f.xdmf"], ["f.nc"]),
     (["halfspace", "fields", "--b", "11.358", "--c", "-0.7", "--v-star", "0.001", "--points", "101", "--out",
       "{tmp}/h.nc"], ["h.nc"]),
+    (["fem", "steady", "{config}", "--out", "{tmp}/fs.nc"], ["fs.nc"]),
+    (["fem", "cea", "{config}", "--out", "{tmp}/fc.nc"], ["fc.nc"]),
+    (["fem", "run", "{config}", "--transits", "2", "--out", "{tmp}/fr.nc"], ["fr.nc"]),
 ]
+
+
+def _leaves(data: dict, prefix: str = ""):
+    """The dotted keys of a JSON result (a list of records counts its records' keys)."""
+    for key, value in data.items():
+        path = f"{prefix}{key}"
+        if isinstance(value, dict):
+            yield from _leaves(value, path + ".")
+        elif isinstance(value, list) and value and all(isinstance(x, dict) for x in value):
+            yield from {f"{path}.{k}" for x in value for k in x}
+        else:
+            yield path
 
 
 @pytest.mark.parametrize("args, files", WRITERS, ids=[" ".join(a[:2]) for a, _ in WRITERS])
 def test_every_file_the_command_line_writes_follows_the_rules(args, files, tmp_path, capsys):
-    assert run([a.replace("{tmp}", str(tmp_path)) for a in args]) == 0, capsys.readouterr().err
+    """Our own rules (cf_rules), compliance-checker's CF 1.10 (high and medium priority: none),
+    and units and a meaning for every key of the command's JSON."""
+    args = [example_config() if a == "{config}" else a.replace("{tmp}", str(tmp_path)) for a in args]
+    assert run(args + ["--json"]) == 0, capsys.readouterr().err
+    result = json.loads(capsys.readouterr().out)
+    units = result.pop("units")
+    assert sorted(k for k in set(_leaves(result)) if k not in units) == []
+    assert all(u["long_name"] for u in units.values())
     bad = [p for name in files for p in file_problems(tmp_path / name)]
+    bad += [p for name in files if name.endswith(".nc") for p in compliance_errors(tmp_path / name)]
     assert bad == []
     for name in files:
         if name.endswith(".nc"):

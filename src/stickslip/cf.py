@@ -27,7 +27,8 @@ import xarray as xr
 from . import __version__
 from .quantities import declared
 
-__all__ = ["CONVENTIONS", "SOURCE", "REFERENCES", "finish", "is_udunits", "flag_attrs", "plain_attrs", "stamp"]
+__all__ = ["CONVENTIONS", "SOURCE", "REFERENCES", "finish", "for_file", "from_file", "load_result", "is_udunits", "flag_attrs", "plain_attrs",
+           "stamp"]
 
 CONVENTIONS = "CF-1.10"
 SOURCE = f"stickslip {__version__}"
@@ -55,10 +56,17 @@ def is_udunits(units: str) -> bool:
     return True
 
 
+def _flag_word(meaning) -> str:
+    """A flag meaning as CF spells one: letters, digits and ``_ - . + @`` only, no blanks
+    ("bistable: steady sliding or stick-slip" -> ``bistable_steady_sliding_or_stick_slip``)."""
+    word = re.sub(r"[^A-Za-z0-9_.+@-]+", "_", str(meaning)).replace("-", "_")
+    return re.sub(r"_+", "_", word).strip("_")
+
+
 def flag_attrs(codes: Mapping[str, int]) -> dict:
     """``flag_values`` (integers) and ``flag_meanings`` of a code variable, from ``{name: code}``."""
     return {"flag_values": np.asarray(list(codes.values()), dtype=np.int8),
-            "flag_meanings": " ".join(str(k).replace("-", "_").replace(" ", "_") for k in codes)}
+            "flag_meanings": " ".join(_flag_word(k) for k in codes)}
 
 
 def plain_attrs(params: Mapping, prefix: str = "") -> dict:
@@ -150,6 +158,43 @@ def _index_dimensions(ds: xr.Dataset) -> xr.Dataset:
                 ds = ds.swap_dims({dim: name})
                 break
     return ds
+
+
+def for_file(ds: xr.Dataset) -> xr.Dataset:
+    """``ds`` as it is written to a netCDF file (CF 1.10, as compliance-checker reads it): a
+    coordinate variable gets no ``_FillValue`` (CF 2.5.1), and a dimension indexed by labels
+    (``kind``: stick, slip, ...) is indexed by their numbers instead, the labels kept beside them
+    as an auxiliary coordinate ``<dim>_name`` (a coordinate variable must be numeric and monotone).
+    The arrays are shared, not copied."""
+    ds = ds.copy()
+    for dim in list(ds.dims):
+        if dim in ds.coords and ds[dim].dtype.kind in "USO":
+            labels = ds[dim]
+            ds = ds.assign_coords({f"{dim}_name": (dim, labels.values.astype(str), {
+                "long_name": labels.attrs.get("long_name", dim)})})
+            ds = ds.drop_vars(dim).assign_coords({dim: (dim, np.arange(labels.size, dtype=np.int32), {
+                "long_name": f"{labels.attrs.get('long_name', dim)} number (its name in {dim}_name)", "units": "1"})})
+    for name in ds.coords:
+        if ds[name].dims == (name,) or name.endswith("_name"):
+            ds[name].encoding["_FillValue"] = None
+    return ds
+
+
+def from_file(ds: xr.Dataset) -> xr.Dataset:
+    """The dataset `for_file` wrote, as it was: dimensions indexed by their labels again."""
+    for name in [n for n in ds.coords if str(n).endswith("_name") and str(n)[:-5] in ds.dims]:
+        dim = str(name)[:-5]
+        labels = ds[name]
+        ds = ds.drop_vars([name, dim]).assign_coords({dim: (dim, labels.values.astype(str),
+                                                            {"long_name": labels.attrs.get("long_name", dim)})})
+    return ds
+
+
+def load_result(path, group: str | None = None) -> xr.Dataset:
+    """A netCDF file stickslip wrote, loaded as its producer made it: ``kind`` and the other
+    dimensions the file indexes by number are indexed by their labels again
+    (``ds.fraction.sel(kind="stick")``). ``group="checkpoint"`` reads a run's state."""
+    return from_file(xr.load_dataset(path, group=group))
 
 
 def finish(ds: xr.Dataset, title: str, domain: str = "common", *, params: Mapping | None = None,

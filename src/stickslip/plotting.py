@@ -253,7 +253,7 @@ def plot_interface_fields(ds, fig: Figure | None = None) -> Figure:
     x = ds.x.values
     order = np.argsort(x)
     stick = ds.zone.values[order] == 0
-    for ax, names, label in ((axes[0], ("Sigma_yy", "Sigma_xy"), "stress / G [1]"), (axes[1], ("u_xx",), "u_x,x [1]"),
+    for ax, names, label in ((axes[0], ("stress_yy", "stress_xy"), "stress / G [1]"), (axes[1], ("u_xx",), "u_x,x [1]"),
                              (axes[2], ("slip_velocity", "material_velocity"), "velocity / c2 [1]")):
         finite = np.concatenate([ds[n].values[np.isfinite(ds[n].values)] for n in names])
         lo, hi = np.percentile(finite, [1, 99])

@@ -19,7 +19,7 @@ from pathlib import Path
 
 import xarray as xr
 
-from .cf import finish
+from .cf import finish, for_file, from_file
 from . import __version__, plotting
 from .errata import ERRATA, to_markdown
 from .errors import ParameterError
@@ -98,7 +98,7 @@ def _load_or_compute(spec: FigureSpec, data_dir: Path, quick: bool, fingerprint:
         fingerprint = f"{fingerprint}+{spec.inputs(data_dir)}"
     if path.exists() and not force:
         try:
-            ds = xr.load_dataset(path)
+            ds = from_file(xr.load_dataset(path))
             if ds.attrs.get("fingerprint") == fingerprint and bool(ds.attrs.get("quick")) == quick:
                 return ds, True
         except (OSError, ValueError):
@@ -121,7 +121,7 @@ def _load_or_compute(spec: FigureSpec, data_dir: Path, quick: bool, fingerprint:
     ds.attrs.update({"fingerprint": fingerprint, "quick": int(quick), "figure": spec.key})
     ds = finish(ds, spec.title, domain, history=f"stickslip reproduce{' --quick' if quick else ''} (figure {spec.key})")
     tmp = path.with_suffix(".nc.partial")
-    ds.to_netcdf(tmp)
+    for_file(ds).to_netcdf(tmp)
     os.replace(tmp, path)
     shutil.rmtree(cache, ignore_errors=True)
     return ds, False

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from stickslip.brake.reduced.steady import steady_sliding
+from stickslip.cf import load_result
 from stickslip.cli import run
 
 from ..cf_rules import problems
@@ -229,9 +230,9 @@ def test_the_block_on_a_belt_is_pressed_with_its_load_and_sticks_and_slips(tmp_p
     out = tmp_path / "run.nc"
     assert run(["fem", "run", str(path), "--start", "stick", "--transits", "50", "--out", str(out), "--json"]) == 0
     capsys.readouterr()
-    with xr.open_dataset(out) as ds:
-        stick = ds.fraction.sel(kind="stick").values
-        assert ds.attrs["static_friction"] == 0.6 and stick[0] == 1.0  # it starts moving with the belt
+    ds = load_result(out)
+    stick = ds.fraction.sel(kind="stick").values
+    assert ds.attrs["static_friction"] == 0.6 and stick[0] == 1.0  # it starts moving with the belt
     assert run(["fem", "run", str(path), "--start", "stick", "--amplitude", "0.1"]) == 2
     assert "--amplitude" in capsys.readouterr().err
 

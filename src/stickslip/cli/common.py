@@ -16,6 +16,7 @@ import numpy as np
 import typer
 from rich.console import Console
 from rich.table import Table
+from rich.text import Text
 
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import FEM, MAX_POINTS, Quantity, lookup
@@ -83,8 +84,13 @@ def _number(value) -> str:
 
 
 def _units(key: str, model: str) -> tuple[str, str]:
-    found = lookup(key.split(".")[-1], model)
-    return found if found is not None else ("", "")
+    """Units and meaning of a result's key ``a.b.c``: of its own name, else of the nearest part
+    of its path that is declared (``counts.stick-slip``: a count; ``checks.pressure``: a check)."""
+    for part in reversed(key.split(".")):
+        found = lookup(part, model)
+        if found is not None:
+            return found
+    return "", ""
 
 
 def _rows(data: dict, prefix: str = ""):
@@ -117,22 +123,24 @@ def emit(data: dict, as_json: bool, title: str, model: str = "common") -> None:
         print(json.dumps({**data, "units": units} if units and "units" not in data else data))
         return
     console = Console()
-    table = Table(title=title, show_header=True, header_style="bold")
+    plain = Text  # every cell is text as it is: "[re, im]" or "[rad]" are not markup
+    table = Table(title=plain(title), show_header=True, header_style="bold")
     for column in ("quantity", "value", "units", "meaning"):
-        table.add_column(column)
+        table.add_column(plain(column))
     for key, value in rows:
         if key not in records:
-            table.add_row(key, _number(value), *_units(key, model))
+            table.add_row(*map(plain, (key, _number(value), *_units(key, model))))
     console.print(table)
     for key, items in records.items():
         columns = list(items[0])
         notes = [f"{c}: {_units(c, model)[1]}" for c in columns if _units(c, model)[1]]
-        sub = Table(title=f"{title}: {key}", header_style="bold", caption="; ".join(notes) or None)
+        sub = Table(title=plain(f"{title}: {key}"), header_style="bold", caption=plain("; ".join(notes)) if notes
+                    else None)
         for c in columns:
             unit = _units(c, model)[0]
-            sub.add_column(f"{c} [{unit}]" if unit and unit != "1" else c)
+            sub.add_column(plain(f"{c} [{unit}]" if unit and unit != "1" else c))
         for item in items:
-            sub.add_row(*(_number(item.get(c)) for c in columns))
+            sub.add_row(*(plain(_number(item.get(c))) for c in columns))
         console.print(sub)
 
 
@@ -215,9 +223,9 @@ def checked_axis(option: str, text: str, check) -> tuple[str, list[float]]:
 def write_netcdf(ds, out: Path) -> None:
     """Write a result dataset to ``out`` (through a temporary file, so a kill leaves no half
     file), with the command line in its ``history``."""
-    from ..cf import stamp
+    from ..cf import for_file, stamp
 
-    ds = stamp(ds.copy(), "stickslip " + " ".join(shlex.quote(a) for a in sys.argv[1:]))
+    ds = for_file(stamp(ds.copy(), "stickslip " + " ".join(shlex.quote(a) for a in sys.argv[1:])))
     tmp = Path(out).with_name(Path(out).name + ".partial")
     try:
         ds.to_netcdf(tmp)

@@ -31,14 +31,14 @@ import xarray as xr
 
 from ..results import Result
 from ..quantities import COMMON as Q
-from ..cf import SOURCE, finish, plain_attrs
+from ..cf import SOURCE, finish, for_file, from_file, plain_attrs
 from ..errors import NoSolutionError, ParameterError
 from ..files import content_digest, exclusive
 from .scheme import StepState
 from .states import STATE_ATTRS, STATE_NAMES, state_fractions
 
 __all__ = ["RunFormat", "RunRecord", "schedule", "prepare", "save", "resume", "loop", "run_explicit",
-           "run_to_dataset", "dataset_to_run", "settings_key", "snapshot_due", "window_snapshots", "volume_due"]
+           "run_to_dataset", "results_view", "dataset_to_run", "settings_key", "snapshot_due", "window_snapshots", "volume_due"]
 
 _KEYS = ("chunk", "samples_total", "snap_every", "tail_samples", "samples_per_transit", "modes", "contact",
          "initial", "initial_hash", "volume_every")
@@ -87,6 +87,10 @@ class RunFormat:
     position_note: str = ""  # what ``theta`` is, if not the angle of the node
     mode_note: str = "circumferential Fourier mode"
     extra_coords: Callable = staticmethod(lambda scheme: {})  # name -> (values, attrs) along the nodes
+    #: The SI values of the symbols of the model's scaled units (``R`` [m], ``Omega`` [rad/s],
+    #: ``E`` [Pa], ``M`` [1]) when the run was set up in SI, else {}: the run's file then holds its
+    #: results in SI (`results_view`).
+    scales: Callable = staticmethod(lambda scheme: {})
 
     @property
     def fields(self) -> dict:
@@ -323,21 +327,88 @@ def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tai
 
 
 #: The layout of a checkpoint; a file written with another layout is refused, not misread.
-RUN_FORMAT = "stickslip-run-2"
+RUN_FORMAT = "stickslip-run-3"
 
 
 def _digest(ds: xr.Dataset) -> str:
     return content_digest({name: ds[name].values for name in ds.variables})
 
 
+#: The SI units of the symbols of the scaled models' units (the symbol ``M``, a modal mass, is a number).
+_SI_SYMBOLS = {"R": {"m": 1}, "Omega": {"s": -1}, "E": {"Pa": 1}, "M": {}, "rad": {"rad": 1}}
+_FACTOR = __import__("re").compile(r"^([A-Za-z]+)(?:\^(-?\d+))?$")
+
+
+def _si(scale: str, values: dict):
+    """``(factor, SI units)`` of a scaled unit (``"E R^2 / M"``, ``"R Omega"``, ``"1/Omega"``)
+    given the symbols' SI ``values``, or None if a symbol is unknown."""
+    factor, dims = 1.0, {}
+    top, _, bottom = scale.partition("/")
+    for sign, part in ((1, top), (-1, bottom)):
+        for token in part.split():
+            if token == "1":
+                continue
+            m = _FACTOR.match(token)
+            if m is None or m.group(1) not in _SI_SYMBOLS or (m.group(1) not in values and m.group(1) != "rad"):
+                return None
+            power = sign * int(m.group(2) or 1)
+            factor *= values.get(m.group(1), 1.0) ** power
+            for unit, p in _SI_SYMBOLS[m.group(1)].items():
+                dims[unit] = dims.get(unit, 0) + p * power
+    dims = {u: p for u, p in dims.items() if p}
+    if dims == {"Pa": 1, "m": 2}:  # an energy per unit thickness
+        return factor, "J/m"
+    up = " ".join(u + (str(p) if p != 1 else "") for u, p in dims.items() if p > 0) or "1"
+    down = " ".join(u + (str(-p) if p != -1 else "") for u, p in dims.items() if p < 0)
+    return factor, (f"{up}/{down}" if down else up)
+
+
+def results_view(run) -> xr.Dataset:
+    """The run as its file shows it: the series and snapshots (not the scheme's state, which the
+    file keeps apart for resuming), in SI units when the run was set up in SI (the model's
+    ``scales``): each scaled variable converted, its ``scale`` attribute replaced by SI units, the
+    times in the model's scaled unit kept beside them as ``<time>_scaled``."""
+    ds = run.to_xarray()
+    ds = ds.drop_vars([f"kernel_{name}" for name in _KERNEL])
+    values = run.FORMAT.scales(run.scheme)
+    if not values:
+        return ds
+    for name in list(ds.variables):
+        var = ds[name]
+        scale = var.attrs.get("scale")
+        found = None if scale is None else _si(str(scale), values)
+        if found is None:
+            continue
+        factor, units = found
+        attrs = {k: v for k, v in var.attrs.items() if k != "scale"}
+        attrs.update(units=units, long_name=str(attrs.get("long_name", name)).replace(f" (in units of {scale})", ""))
+        if name in ds.coords and var.dims == (name,):  # a time axis: its scaled values kept beside it
+            ds = ds.assign_coords({f"{name}_scaled": (name, var.values, dict(var.attrs))})
+            attrs["long_name"] = attrs["long_name"].replace("time Omega t", "time")
+        ds[name] = (var.dims, var.values * factor, attrs)
+    ds.attrs.update({f"si_{k}": v for k, v in values.items()})
+    ds.attrs["units_note"] = ("SI units (converted from the model's scaled ones with si_R [m], si_Omega [rad/s], si_E "
+                              "[Pa], si_M [1]; the times in the scaled unit are the *_scaled coordinates)")
+    return ds
+
+
 def save(run, path) -> None:
-    """Write the run atomically (a kill during the write leaves the previous file), with a
-    checksum of its content that `resume` verifies."""
+    """Write the run atomically (a kill during the write leaves the previous file): its results
+    (`results_view`) at the root, and in the group ``checkpoint`` everything a resume needs,
+    exactly, with a checksum of its content that `resume` verifies."""
     path = Path(path)
     tmp = path.with_name(path.name + ".tmp")
-    ds = run.to_xarray()
-    ds.attrs.update({"run_format": RUN_FORMAT, "content_sha256": _digest(ds)})
-    ds.to_netcdf(tmp)
+    state = run.to_xarray()
+    digest = _digest(state)
+    stamp = {"run_format": RUN_FORMAT, "content_sha256": digest}
+    state.attrs.update(stamp)
+    state = state.assign_coords(dof=("dof", np.arange(state.sizes.get("dof", 0), dtype=np.int64),
+                                     {"units": "1", "long_name": "free degree of freedom number"}))
+    results = results_view(run)
+    results.attrs.update({**stamp, "results_sha256": _digest(results)})
+    results.attrs["checkpoint"] = "the group checkpoint holds the scheme's state for resuming this run"
+    for_file(results).to_netcdf(tmp, mode="w")
+    for_file(state).to_netcdf(tmp, mode="a", group="checkpoint")
     os.replace(tmp, path)
 
 
@@ -362,22 +433,31 @@ def resume(cls, path, scheme, settings):
     refused = ParameterError("checkpoint", str(path), "a checkpoint of the same run (parameters, scheme, schedule "
                              "and initial condition must match; " + _AFRESH + ")")
     try:
-        ds = xr.load_dataset(path)
+        root = from_file(xr.load_dataset(path))  # the results, whose attributes say what the file is
+        attrs = dict(root.attrs)
     except (OSError, KeyError, ValueError, TypeError) as err:  # not netCDF, or damaged
         raise ParameterError("checkpoint", str(path), "a run's netCDF checkpoint (this file is not netCDF, or is "
                              f"damaged or empty; {_AFRESH})") from err
-    if "run_format" not in ds.attrs and str(ds.attrs.get("source", "")).startswith("stickslip"):
+    if "run_format" not in attrs and str(attrs.get("source", "")).startswith("stickslip"):
         raise ParameterError("checkpoint", str(path), "a run's checkpoint (this file is another stickslip result: "
-                             f"{ds.attrs.get('title', 'not a run')}; give another path, or {_AFRESH})")
-    if ds.attrs.get("run_format") != RUN_FORMAT:
+                             f"{attrs.get('title', 'not a run')}; give another path, or {_AFRESH})")
+    if attrs.get("run_format") != RUN_FORMAT:
         raise ParameterError("checkpoint", str(path), f"a checkpoint in the run format {RUN_FORMAT} (this one: "
-                             f"{ds.attrs.get('run_format', 'none')}, written by another version or another program; "
+                             f"{attrs.get('run_format', 'none')}, written by another version or another program; "
                              + _AFRESH + ")")
+    try:
+        ds = from_file(xr.load_dataset(path, group="checkpoint")).drop_vars("dof", errors="ignore")
+    except (OSError, KeyError, ValueError, TypeError) as err:  # no state to resume from, or a damaged one
+        raise ParameterError("checkpoint", str(path), "a run's netCDF checkpoint with its group checkpoint (this "
+                             f"file has none, or it is damaged; {_AFRESH})") from err
+    if ds.attrs.get("run_format") != RUN_FORMAT:
+        raise ParameterError("checkpoint", str(path), f"a checkpoint in the run format {RUN_FORMAT} (its state: "
+                             f"{ds.attrs.get('run_format', 'none')}; " + _AFRESH + ")")
     if ds.attrs.get("source") != SOURCE or ds.attrs.get("record") != cls.__name__:
         raise ParameterError("checkpoint", str(path), f"a checkpoint of a {cls.__name__} written by {SOURCE} (this one: "
                              f"{ds.attrs.get('record', 'another record')} written by {ds.attrs.get('source', 'unknown')}; "
                              + _AFRESH + ")")
-    if ds.attrs.get("content_sha256") != _digest(ds):
+    if ds.attrs.get("content_sha256") != _digest(ds) or attrs.get("results_sha256") != _digest(root):
         raise ParameterError("checkpoint", str(path), "an intact checkpoint written by stickslip (its content does "
                              "not match its checksum: the file was changed or damaged; " + _AFRESH + ")")
     try:

@@ -49,6 +49,10 @@ from .arrays import MAX_B, b_array
 from .inverse import inverse_problem
 from .waves import Radok, radok
 
+#: The totals ``Sigma_*`` are ``stress_*`` in datasets and files: a netCDF name may not differ from
+#: another (``sigma_*``, the perturbation) by case alone (CF 2.3).
+FILE_NAMES = {"Sigma_yy": "stress_yy", "Sigma_xy": "stress_xy"}
+
 __all__ = ["StickSlipWave", "InterfaceFields", "wave_from_inverse", "decaying_wave", "decaying_velocity",
            "periodic_X"]
 
@@ -138,8 +142,8 @@ class InterfaceFields(Result):
             "sigma_yy": (self.sigma_yy, {"long_name": "perturbation normal stress sigma_yy/G"}),
             "sigma_xy": (self.sigma_xy, {"long_name": "perturbation shear stress sigma_xy/G"}),
             "sigma_xx": (self.sigma_xx, {"long_name": "perturbation stress sigma_xx/G"}),
-            "Sigma_yy": (self.Sigma_yy, {"long_name": "total normal stress (tau*_yy + sigma_yy)/G"}),
-            "Sigma_xy": (self.Sigma_xy, {"long_name": "total shear stress (tau*_xy + sigma_xy)/G"}),
+            FILE_NAMES["Sigma_yy"]: (self.Sigma_yy, {"long_name": "total normal stress Sigma_yy = (tau*_yy + sigma_yy)/G"}),
+            FILE_NAMES["Sigma_xy"]: (self.Sigma_xy, {"long_name": "total shear stress Sigma_xy = (tau*_xy + sigma_xy)/G"}),
             "u_xx": (self.u_xx, {"long_name": "perturbation strain u_x,x"}),
             "material_velocity": (self.material_velocity, {"long_name": "material velocity (V* - c u_x,x)/c2"}),
             "slip_velocity": (self.slip_velocity, {"long_name": "slip velocity (V - U_dot)/c2"}),

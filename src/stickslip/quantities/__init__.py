@@ -12,6 +12,12 @@ Everything else reads these declarations:
 * the parameter tables of the documentation (``python -m stickslip.quantities``);
 * the fuzzing strategies of the tests, which reach each range's edges and beyond.
 
+The CF standard-name table (earth sciences) names none of these quantities but time, and CF's
+``time`` needs units since an epoch (compliance-checker: ``s since <epoch>`` and a calendar),
+which a simulated time has not (and xarray would decode it into dates): an elapsed time is a
+plain coordinate ``t`` in s (or in the model's scaled unit). ``standard_name`` is there for the
+quantities that have one.
+
 The quantities of a model are in its `Domain` (`OSCILLATOR`, `BRAKE`, `HALFSPACE`, `FEM`);
 `COMMON` serves every model (counters, labels, the shared scheme's settings), and a model's
 own declaration of a name takes precedence.

@@ -46,7 +46,7 @@ OSCILLATOR = Domain("oscillator", units="SI", quantities=[
     Q("offset", "1", "offset of the start from the Hopf point, relative to the branch", "(0, 0.5]"),
     Q("law", "", "friction law", choices=("coulomb", "linear-weakening", "stribeck")),
     # results
-    Q("t", "s", "time", standard_name="time"),
+    Q("t", "s", "time since the start"),
     Q("x", "m", "displacement of the mass"),
     Q("v", "m/s", "velocity of the mass"),
     Q("x_min", "m", "least displacement on the cycle"),
@@ -105,4 +105,7 @@ OSCILLATOR = Domain("oscillator", units="SI", quantities=[
     Q("end_reason", "", "why the branch ended"),
     Q("hopf_points", "", "Hopf points of steady sliding"),
     Q("omega", "rad/s", "natural angular frequency sqrt(k/m)"),
+    Q("eigenvalues", "1/s", "eigenvalues of steady sliding, each as [re, im]"),
+    Q("criticality", "", "the Hopf bifurcation is supercritical or subcritical"),
+    Q("events", "", "grazing, stick onset and Hopf points met along the branch"),
 ])

@@ -26,7 +26,7 @@ def test_figure14_b_follows_from_the_loading(fig14):
     a = fig14.attrs
     assert a["T"] == pytest.approx((0.5 - 0.4) * 2 * 1e-3 / (0.7 * 0.3), rel=1e-14)
     assert a["b"] == pytest.approx(11.358175, rel=1e-6)
-    assert fig14.Sigma_yy.attrs["units"] == "1"
+    assert fig14.stress_yy.attrs["units"] == "1"
 
 
 def test_figure14_plot(fig14, tmp_path):

@@ -99,7 +99,9 @@ _FORMAT = RunFormat(
     key_attrs=("n_theta", "n_r", "beta2", "courant"), scheme=FemScheme, params_type=BrakeParams,
     traction_scale=lambda s: s.traction_scale,
     extra_attrs=lambda s: {"p_wave_speed": s.p_wave_speed, "mesh": s.system.mesh.describe()},
-    title="run of the FE annulus on the rotating shaft")
+    title="run of the FE annulus on the rotating shaft",
+    scales=lambda s: {} if s.params.physical is None else {
+        "R": s.params.physical.inner_radius, "Omega": s.params.physical.omega, "E": s.params.physical.young})
 
 
 @dataclass(frozen=True, eq=False, repr=False)

@@ -105,7 +105,9 @@ _FORMAT = RunFormat(
     energy_units="E R^2 / M", energy_note="energy of the scheme", node_label="node",
     source="reduced model [12] (corrected), explicit scheme of docs/theory/brake-ring.md",
     key_attrs=("nodes", "beta2", "courant"), scheme=RingScheme, params_type=BrakeParams,
-    title="run of the ring (reduced model) on the rotating shaft")
+    title="run of the ring (reduced model) on the rotating shaft",
+    scales=lambda s: {} if s.params.physical is None else {
+        "R": s.params.physical.inner_radius, "Omega": s.params.physical.omega, "E": s.params.physical.young, "M": s.coefficients.modal_mass})
 
 
 @dataclass(frozen=True, eq=False, repr=False)

@@ -28,7 +28,7 @@ import numpy as np
 import xarray as xr
 
 from ...brake import BrakeParams
-from ...cf import stamp
+from ...cf import for_file, from_file, stamp
 from ...brake.fem import FemScheme, classify_fem, integrate_fem, perturbed_steady
 from ...brake.fem.campaign import limit_regime
 from ...contact import REGIME_ATTRS, REGIME_CODES
@@ -87,7 +87,7 @@ def find(kind: str, data_dir: Path | None) -> tuple[xr.Dataset | None, str]:
             return ds, f"the campaign in {store} ({int(ds['done'].size)} runs)"
     stored = STORED_DIR / f"fem_{kind}.nc"
     if stored.exists():
-        ds = _tidy(xr.load_dataset(stored))
+        ds = _tidy(from_file(xr.load_dataset(stored)))
         if ds.attrs.get("model_fingerprint") == model_fingerprint():
             return ds, (f"the campaign stored with the package ({int(ds['regime'].size)} runs, computed "
                         f"{ds.attrs.get('computed', '?')}, {ds.attrs.get('compute_seconds', float('nan')) / 3600:.1f} h "
@@ -143,7 +143,7 @@ def export(ds: xr.Dataset, kind: str, folder: Path, computed: str) -> Path:
     out.attrs.update({"model_fingerprint": model_fingerprint(), "computed": computed,
                       "compute_seconds": float(np.nansum(ds["seconds"].values))})
     path = folder / f"fem_{kind}.nc"
-    stamp(out, f"exported by stickslip brake campaign ({kind})").to_netcdf(path)
+    for_file(stamp(out, f"exported by stickslip brake campaign ({kind})")).to_netcdf(path)
     return path
 
 

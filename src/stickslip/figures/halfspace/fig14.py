@@ -12,6 +12,7 @@ from ... import plotting
 from ...halfspace import (Material, StickSlipWave, b_for_loading, decaying_velocity, direct_problem,
                           inverse_problem, loading_from_wave, rayleigh_speed_ratio)
 from .. import Check, FigureSpec
+from ...halfspace.fields import FILE_NAMES
 from .common import FIGURE14, checks
 
 
@@ -19,8 +20,9 @@ def _wave_vars(waves: list[StickSlipWave], x: np.ndarray) -> dict:
     fields = [w.fields(x) for w in waves]
     out = {}
     for name in ("Sigma_yy", "Sigma_xy", "sigma_yy", "sigma_xy", "u_xx", "slip_velocity", "material_velocity"):
-        out[name] = (("variant", "x"), np.stack([getattr(f, name) for f in fields]), {"units": "1"})
-    out["Sigma_yy"][2]["long_name"] = "total normal stress Sigma_yy/G"
+        out[FILE_NAMES.get(name, name)] = (("variant", "x"), np.stack([getattr(f, name) for f in fields]),
+                                           {"units": "1"})
+    out["stress_yy"][2]["long_name"] = "total normal stress Sigma_yy/G"
     out["slip_velocity"][2]["long_name"] = "slip velocity (V - U_dot)/c2"
     scal = {}
     summaries = [w.summary() for w in waves]
@@ -100,7 +102,7 @@ def check(ds: xr.Dataset) -> list[Check]:
         d = ds.sel(variant=variant)
         k = float(d.stress_intensity)
         first_slip = (ds.zone.values == 1) & (ds.x.values < b)
-        near = d.Sigma_yy.values[first_slip][-5:]
+        near = d.stress_yy.values[first_slip][-5:]
         gap = b - ds.x.values[first_slip][-1]
         out.append((f"{variant}: positive singularity of Sigma_yy at SL->ST",
                     k > 0 and bool(np.all(np.diff(near) > 0)) and near[-1] > 0, k, "> 0",
@@ -138,11 +140,11 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
     for k in range(0, 2):
         ax.axvspan(k * b, k * b + 1.0, color="0.9", lw=0)
     for variant, style in (("paper", "-"), ("decaying", "--")):
-        y = ds.Sigma_yy.sel(variant=variant).values
+        y = ds.stress_yy.sel(variant=variant).values
         # the stresses are singular at the zone edges: the curves are clipped there, on purpose
         ax.plot(x, y, style, lw=1.2, label=f"{variant} (v = {ds.attrs['v_' + variant]:.4g})", gid=plotting.CLIPPED)
     ax.axhline(0, color="k", lw=0.6)
-    yr = ds.Sigma_yy.sel(variant="paper").values
+    yr = ds.stress_yy.sel(variant="paper").values
     lo = np.nanmin(yr)
     ax.set_ylim(1.6 * lo, -1.2 * lo)
     ax.set_xlabel("x / a [1]   (grey: stick, white: slip)")
