@@ -88,6 +88,57 @@ NEVER_NUMBERS = ["nan", "inf", "-inf", "abc", ""]
 EXTREMES = ["0", "-1", "1e300", "-1e300", "1e-300", "1e-320"]  # the last one subnormal
 
 
+def special_numbers(q) -> list:
+    """The values a declaration's range makes special: each finite end, just beyond it (or, for an
+    end left out, the end itself and just inside), zero, +-1, the far ends of the doubles
+    (+-1e300, 1e-300), a subnormal (1e-320) and, for a count, a huge one (10**20)."""
+    out = [0.0, -1.0, 1.0, 1e300, -1e300, 1e-300, 1e-320]
+    r = q.range
+    if r is not None:
+        for end, open_, outward in ((r.lo, r.lo_open, -math.inf), (r.hi, r.hi_open, math.inf)):
+            if not math.isfinite(end):
+                continue
+            if q.integer:
+                out += [end, end + math.copysign(1, outward)]
+            else:
+                out += [end, math.nextafter(end, outward), math.nextafter(end, -outward)]
+    if q.integer:
+        out += [10**20, 2**63]
+    return list(dict.fromkeys(out))
+
+
+def typed(value, integer: bool) -> str:
+    """A value as a user types it on the command line."""
+    if integer and isinstance(value, (int, float)) and math.isfinite(value) and float(value).is_integer():
+        return str(int(value))
+    return repr(float(value)) if isinstance(value, float) else str(value)
+
+
+def declared_options() -> list[tuple[str, str, object]]:
+    """``(command, option, declaration)`` of every numeric option that reads a declaration."""
+    import typer.main
+
+    from stickslip.cli import app
+
+    out = []
+
+    def walk(cmd, path):
+        if hasattr(cmd, "commands"):
+            for name, sub in cmd.commands.items():
+                walk(sub, path + [name])
+            return
+        hints = typing.get_type_hints(cmd.callback, include_extras=True)
+        for param in cmd.params:
+            hint = hints.get(param.name)
+            if typing.get_origin(hint) is typing.Annotated:
+                q = getattr(hint.__metadata__[0], "quantity", None)
+                if q is not None and q.range is not None:
+                    out.append((" ".join(path), param.opts[0], q))
+
+    walk(typer.main.get_command(app), [])
+    return out
+
+
 def options_typed(*types) -> list[tuple[str, str]]:
     """``(command, option)`` for every option whose type (first of an Optional) is one of ``types``."""
     import typer.main
@@ -121,7 +172,8 @@ PATH_OPTIONS = options_typed(pathlib.Path)
 #: Bad places to write: ``{tmp}`` is a fresh folder holding a file ``file``; /proc is a
 #: place nobody can create files in, root included (a read-only folder is writable by root).
 BAD_PATHS = {"a folder": "{tmp}", "a missing folder": "{tmp}/missing/x{suffix}", "an unwritable place": "/proc/x{suffix}",
-             "under a file": "{tmp}/file/x{suffix}", "another suffix": "{tmp}/x.txt"}
+             "under a file": "{tmp}/file/x{suffix}", "another suffix": "{tmp}/x.txt",
+             "a name too long": "{tmp}/" + "n" * 300 + "{suffix}"}
 _SUFFIX = {"--plot": ".png", "--checkpoint": ".nc", "--out": ".nc", "--export": "", "--xdmf": ".xdmf"}
 #: Options that name a folder to create (any name, parents made): only unwritable places are bad.
 FOLDERS = {("brake campaign", "--out"), ("brake campaign", "--export"), ("reproduce", "--out")}
@@ -130,7 +182,7 @@ FOLDERS = {("brake campaign", "--out"), ("brake campaign", "--export"), ("reprod
 def bad_places(command: str, option: str) -> list[str]:
     """The kinds of `BAD_PATHS` that are wrong for this option."""
     if (command, option) in FOLDERS:
-        return ["an unwritable place", "under a file"]
+        return ["an unwritable place", "under a file", "a name too long"]
     if any(a == option and b.endswith(".zarr") for a, b in zip(BASE[command], BASE[command][1:])):
         return [k for k in BAD_PATHS if k != "a missing folder"]  # a store is made with its parents
     return list(BAD_PATHS)
@@ -340,10 +392,172 @@ def path_battery(log=None, timeout: float = 120.0):
     return out
 
 
+#: Computations of hours by design (the FE campaign runs for an hour or more, resumable and with
+#: its progress shown; a map's workers only change how fast it goes): their options are tried
+#: with the values their declarations refuse only, which must be refused at once.
+LONG_BY_DESIGN = {"brake campaign", ("oscillator map", "--workers"), ("brake map", "--workers")}
+#: Sizes whose upper end is a run the work budget allows (1e13 dof-steps, about 4 hours: 16 x 4096
+#: elements make a step a thousand times shorter): tried up to half their upper end.
+LONG_AT_THE_TOP = {("brake fem", "--n-r"), ("brake fem", "--n-theta"), ("brake integrate", "--nodes")}
+
+
+def declared_cases() -> list[tuple[str, str, str]]:
+    """``(command, option, value as typed)``: every special value of every declared option."""
+    out = []
+    for command, option, q in declared_options():
+        if command not in BASE:
+            continue
+        for value in special_numbers(q):
+            long = command in LONG_BY_DESIGN or (command, option) in LONG_BY_DESIGN
+            inside = value in q.range and (not q.integer or float(value).is_integer())
+            if long and inside or (command, option) in LONG_AT_THE_TOP and inside and value > q.range.hi / 2:
+                continue
+            out.append((command, option, typed(value, q.integer)))
+    return out
+
+
+def declared_battery(cases=None, timeout: float = 300.0, log=None):
+    """The trials of `declared_cases`: a list of ``(args, trial, problems)``."""
+    out = []
+    for command, option, value in (declared_cases() if cases is None else cases):
+        with tempfile.TemporaryDirectory() as tmp:
+            args = args_for(command, option, value, tmp)
+            t = trial(args, timeout)
+            found = problems(t, option, tmp)
+        out.append((args, t, found))
+        if log:
+            print(f"{t.code!s:>4} {t.seconds:6.1f}s {' '.join(args)}  {found or ''}  {t.err.strip()[:200]}",
+                  file=log, flush=True)
+    return out
+
+
+@dataclasses.dataclass(frozen=True)
+class Call:
+    """What one call of the Python API did: ``outcome`` is ``ok``, an exception's type name, or
+    ``hang``."""
+    outcome: str
+    message: str
+    seconds: float
+
+
+#: The exceptions a public function may raise on bad input or a problem without answer.
+ALLOWED = {"ok", "ParameterError", "NoSolutionError"}
+
+
+def api_call(func, kwargs: dict, timeout: float = 120.0) -> Call:
+    """``func(**kwargs)`` in a forked child with a time limit: what it returned or raised."""
+    import warnings
+
+    read, write = os.pipe()
+    start = time.perf_counter()
+    pid = os.fork()
+    if pid == 0:
+        os.close(read)
+        outcome, message = "ok", ""
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                func(**kwargs)
+        except BaseException as err:  # noqa: BLE001 - what the parent judges
+            outcome, message = type(err).__name__, str(err)[:300]
+        os.write(write, json.dumps([outcome, message]).encode())
+        os._exit(0)
+    os.close(write)
+    outcome, message = "hang", ""
+    while time.perf_counter() - start < timeout:
+        done, _ = os.waitpid(pid, os.WNOHANG)
+        if done:
+            data = b""
+            while chunk := os.read(read, 65536):
+                data += chunk
+            outcome, message = json.loads(data) if data else ("killed", "")
+            break
+        time.sleep(0.002)
+    else:
+        os.kill(pid, signal.SIGKILL)
+        os.waitpid(pid, 0)
+    os.close(read)
+    return Call(outcome, message, time.perf_counter() - start)
+
+
+def api_values(name: str, param: str) -> list:
+    """The bad values of the API battery (`tests.test_fuzz_api.BAD`) and the special values of the
+    parameter's declaration (in its model's domain), if it has one."""
+    from stickslip.quantities import declared
+
+    from .test_fuzz_api import BAD, DOMAIN
+
+    q = declared(param, DOMAIN.get(name, "common"))
+    specials = special_numbers(q) if q is not None and q.range is not None else []
+    if (name, param) in API_LONG_AT_THE_TOP:  # legal computations of an hour or more at the top of the range
+        specials = [v for v in specials if not (v in q.range and v > q.range.hi / 2)]
+    return BAD + [v for v in specials if v not in BAD]
+
+
+#: Parameters whose upper end is a computation the budgets allow but that takes an hour or more
+#: (a branch of 1e5 waves, an annulus of 16 x 4096 elements): tried up to half their upper end.
+API_LONG_AT_THE_TOP = {("continue_waves", "num"), ("integrate_fem", "n_r"), ("integrate_fem", "n_theta"),
+                       ("integrate", "nodes"), ("FemScheme", "n_r"), ("FemScheme", "n_theta"), ("RingScheme", "nodes"),
+                       ("perturbed_steady", "nodes")}
+
+
+def api_battery(timeout: float = 120.0, log=None):
+    """Every parameter of every call of `tests.test_fuzz_api.CALLS` with `api_values`."""
+    from .test_fuzz_api import CALLS
+
+    out = []
+    for name, (func, params) in CALLS.items():
+        for param in params:
+            for value in api_values(name, param):
+                with tempfile.TemporaryDirectory() as tmp:
+                    cwd = os.getcwd()
+                    os.chdir(tmp)  # a value such as "x" is a valid relative store path: kept out of the tree
+                    try:
+                        c = api_call(func, {param: value}, timeout)
+                    finally:
+                        os.chdir(cwd)
+                out.append(((name, param, repr(value)[:40]), c))
+                if log:
+                    print(f"{c.outcome:>16} {c.seconds:6.1f}s {name}({param}={value!r:.40})  {c.message[:160]}",
+                          file=log, flush=True)
+    return out
+
+
+def drawn_cases(per_option: int = 8, seed: int = 20261125) -> list[tuple[str, str, str]]:
+    """``per_option`` values drawn (seeded, for the record) inside and around each declared range
+    of the options whose large values are not sizes: uniform in the value and in its logarithm,
+    and beyond the range."""
+    import random
+
+    rng = random.Random(seed)
+    out = []
+    for command, option, q in declared_options():
+        if command not in BASE or q.integer or command in LONG_BY_DESIGN or option in DRAWN_LEFT_OUT:
+            continue
+        lo = q.range.lo if math.isfinite(q.range.lo) else -1e300
+        hi = q.range.hi if math.isfinite(q.range.hi) else 1e300
+        for k in range(per_option):
+            if k % 3 == 0:
+                value = rng.uniform(lo, hi)
+            elif k % 3 == 1 and lo > 0:
+                value = 10 ** rng.uniform(math.log10(lo), math.log10(hi))
+            else:
+                value = rng.choice([lo - abs(lo) * rng.random() - rng.random(), hi + abs(hi) * rng.random() + rng.random()])
+            out.append((command, option, repr(value)))
+    return out
+
+
+#: Run lengths: a large valid value is a legal run of minutes or hours (their ends are in the
+#: declared cases, where the work budgets refuse what exceeds them).
+DRAWN_LEFT_OUT = {"--transits", "--t-end", "--window", "--xdmf-every"}
+
+
 def main() -> None:
     values = EXTREMES + NEVER_NUMBERS
     log = sys.stderr if "-v" in sys.argv else None
-    results = battery(values, log=log) + path_battery(log=log)
+    results = battery(values, log=log) + path_battery(log=log) + declared_battery(log=log) + \
+        declared_battery(drawn_cases(), log=log)
+    calls = api_battery(log=log)
     counts = collections.Counter(p for _, _, found in results for p in found)
     slowest = max(results, key=lambda r: r[1].seconds)
     print(json.dumps({"trials": len(results), "values": values, "options": len(OPTIONS),
@@ -354,7 +568,11 @@ def main() -> None:
                       "stderr_on_success": counts["stderr on success"], "tracebacks": counts["traceback"],
                       "exits": dict(collections.Counter(str(t.code) for _, t, _ in results)),
                       "slowest": [" ".join(slowest[0]), round(slowest[1].seconds, 1)],
-                      "failures": [[" ".join(a), f] for a, _, f in results if f]}, indent=1))
+                      "failures": [[" ".join(a), f] for a, _, f in results if f],
+                      "api_calls": len(calls),
+                      "api_outcomes": dict(collections.Counter(c.outcome for _, c in calls)),
+                      "api_failures": [[list(k), c.outcome, c.message[:200]] for k, c in calls
+                                       if c.outcome not in ALLOWED]}, indent=1))
 
 
 if __name__ == "__main__":

@@ -162,3 +162,22 @@ def test_an_annulus_mesh_beyond_the_memory_budget_is_refused_before_it_is_built(
     refused(capsys, ["brake", "fem", "--xi", "1.5", "--gamma", "0.01", "--delta", "0.001", "--friction", "0.3",
                      "--n-theta", "65536", "--n-r", "4096", "--transits", "1"], "--n-r = 4096", "at most 15 ",
             "1048576 nodes")
+
+
+def test_a_group_clamped_twice_is_named(tmp_path, capsys):
+    config = _pad_config(tmp_path, 'clamped = ["back"]', 'clamped = ["back", "back"]')
+    refused(capsys, ["fem", "steady", str(config)], "clamped = ['back', 'back']", "'back' twice")
+
+
+@pytest.mark.parametrize("c, v_star, words", [("-0.7", "1", "T = 2.466, outside (0, 1]"),
+                                              ("-0.7", "0.5", "T = 1.233, outside (0, 1]")])
+def test_a_wave_whose_traction_leaves_the_elastic_range_is_no_solution(c, v_star, words, tmp_path, capsys):
+    """b = 5 with a slip speed near the shear wave speed asks a traction over the shear modulus of
+    the inverse problem: no wave (exit 1, one line naming T and its range), no file written — it
+    used to print T = 2.5 as a result."""
+    out_file = tmp_path / "w.nc"
+    assert run(["halfspace", "fields", "--b", "5", "--c", c, "--v-star", v_star, "--points", "11",
+                "--out", str(out_file)]) == 1
+    out, err = capsys.readouterr()
+    assert out == "" and err.count("\n") == 1 and words in err, err
+    assert not out_file.exists()

@@ -150,6 +150,15 @@ CALLS.update({
     "ContactProblem": (_contact_problem, ["system", "frames", "friction", "static_friction", "clamped"]),
 })
 CASES = [(name, param) for name, (_, params) in CALLS.items() for param in params]
+#: The model whose declarations the parameters of a call read (default: the shared ones).
+DOMAIN = {**{n: "oscillator" for n in ("Oscillator", "Coulomb", "Stribeck", "simulate", "limit_cycle", "hopf_points",
+                                       "continue_cycle", "UserLaw", "continue_from_hopf")},
+          **{n: "brake" for n in ("BrakeParams", "FemScheme", "RingScheme", "PhysicalParams", "steady_sliding",
+                                  "growth_rates", "travelling_wave", "continue_waves", "perturbed_steady", "integrate",
+                                  "integrate_fem", "annulus_frequencies", "fem perturbed_steady", "classify")},
+          **{n: "halfspace" for n in ("inverse_problem", "direct_problem", "StickSlipWave", "inverse_map",
+                                      "direct_map", "fields")},
+          **{n: "fem" for n in ("contact_frames", "ContactProblem")}}
 
 
 @pytest.mark.parametrize("name, param", CASES, ids=[f"{n} {p}" for n, p in CASES])

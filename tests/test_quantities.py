@@ -21,7 +21,7 @@ from stickslip.errors import ParameterError
 from stickslip.quantities import DOMAINS, Quantity, Range, declared
 from stickslip.quantities.tables import markdown
 
-from .fuzz_harness import BASE, OPTIONS, args_for
+from .fuzz_harness import BASE, args_for
 
 ROOT = Path(__file__).resolve().parents[1]
 ALL = [(d, q) for d, domain in DOMAINS.items() for q in domain._q.values()]

@@ -153,6 +153,7 @@ def test_options_and_files_are_told_as_the_user_knows_them(meshes, tmp_path, cap
              "material.poisson = nan must be a finite real number, in [0, 0.5)")
 
 
+@pytest.mark.slow  # a minute: the search runs until it stalls
 def test_heavy_damping_that_stalls_the_search_says_where_modes_are_overdamped(meshes, tmp_path, capsys, monkeypatch):
     """beta = 4e-5 overdamps every mode above 1 / (pi beta) = 7958 Hz (alpha + beta w^2 > 2 w);
     the search of 0-40 kHz stalls there and says so."""

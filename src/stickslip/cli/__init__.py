@@ -63,7 +63,8 @@ def _as_typed(argv: list[str] | None, exc: ParameterError) -> ParameterError:
         options.setdefault("checkpoint", options["out"])
         options.setdefault("store", options["out"])
     typed = lambda name: name if name.startswith("-") else options.get(name, name)
-    return ParameterError(typed(exc.name), exc.value, exc.allowed, tuple(typed(n) for n in exc.also))
+    also = tuple(typed(n) for n in exc.also if n.startswith("-") or n in options)  # what this command can set
+    return ParameterError(typed(exc.name), exc.value, exc.allowed, also)
 
 
 def run(argv: list[str] | None = None) -> int:

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import functools
 
-import sys
 
 from enum import Enum
 from pathlib import Path
@@ -118,8 +117,11 @@ def stability(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed
     """Stability of steady sliding and its Hopf (flutter) points."""
     osc = _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, damping)
     value = osc.parameter(parameter)
-    lo = value / 100 if lo is None else lo
-    hi = min(value * 100, sys.float_info.max) if hi is None else hi  # the default stays finite
+    span = Q[parameter].range  # the defaults stay where the parameter is declared
+    lo = max(value / 100, span.lo) if lo is None else lo
+    hi = min(value * 100, span.hi) if hi is None else hi
+    if lo == hi:  # a parameter at zero (damping 0): scanned over its declared range
+        lo, hi = span.lo, min(span.hi, 1.0)
     data = equilibrium_stability(osc).to_dict()
     data["hopf_points"] = [h.to_dict() for h in hopf_points(osc, parameter, lo, hi)]
     _emit(data, json, "steady sliding")

@@ -295,8 +295,10 @@ def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tai
                                  "run (about 4 hours)", also=(length[0],))
         most = limit if transits is None else limit / scheme.transit_time
         raise ParameterError(*length, f"<= {most:.4g} on this mesh ({dofs} dofs, {scheme.dt:.3g} per step): "
-                             f"at most {MAX_WORK:.0e} dof-steps per run (about 4 hours); continue a run from its "
-                             "checkpoint for more")
+                             f"at most {MAX_WORK:.0e} dof-steps per run (about 4 hours): a shorter run, or a "
+                             "coarser mesh",
+                             also=tuple(k for k in getattr(scheme, "MESH_KEYS", ("nodes", "n_theta", "n_r"))
+                                        if hasattr(scheme, k)))
     spt = Q.check("samples_per_transit", samples_per_transit)
     if spt < 4:
         raise ParameterError("samples_per_transit", spt, "an integer >= 4")
@@ -316,7 +318,9 @@ def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tai
                                  f"regime's {least} snapshots in the last {tail:g} transits")
         raise ParameterError("mesh", f"a stable step of {step:.3g} transits", f"fine enough for a step of at most "
                              f"{most:.3g} transits (the limit regime is read from {least} snapshots in the last "
-                             f"{tail:g}): refine it")
+                             f"{tail:g}): refine it",
+                             also=tuple(k for k in ("nodes", "n_theta", "n_r", "xi") if hasattr(scheme, k)
+                                        or hasattr(getattr(scheme, "params", None), k)))
     if settings["tail_samples"] >= least and window_snapshots(settings) < 3:
         per = (t_end / length[1]) / (scheme.dt * settings["chunk"])  # samples per unit of the length typed
         raise ParameterError(*length, f"> {(least - 1) / per:.3g} here: the limit regime is read from at least 3 "

@@ -162,6 +162,10 @@ def load_config(path) -> FemConfig:
     if not (isinstance(clamped, list) and all(isinstance(c, str) for c in clamped)):
         problems.append(f"clamped = {clamped!r} must be a list of boundary group names")
         clamped = []
+    twice = sorted({c for c in clamped if clamped.count(c) > 1})
+    if twice:
+        problems.append(f"clamped = {clamped!r} must name each group once ({', '.join(map(repr, twice))} twice)")
+        clamped = list(dict.fromkeys(clamped))
     m = data.get("material", {}) if isinstance(data.get("material", {}), dict) else {}
     young = _number(problems, "material.young", m.get("young"))
     poisson = _number(problems, "material.poisson", m.get("poisson"))

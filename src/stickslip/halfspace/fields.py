@@ -37,6 +37,8 @@ from typing import ClassVar
 
 from dataclasses import dataclass, field
 
+import math
+
 import numpy as np
 import xarray as xr
 from scipy.special import roots_jacobi
@@ -44,7 +46,7 @@ from scipy.special import roots_jacobi
 from ..results import Result
 from ..cf import finish
 from ..quantities import HALFSPACE as Q
-from ..errors import ParameterError
+from ..errors import NoSolutionError, ParameterError
 from .arrays import MAX_B, b_array
 from .inverse import inverse_problem
 from .waves import Radok, radok
@@ -457,12 +459,25 @@ class StickSlipWave(Result):
 def wave_from_inverse(b, cbar, v_star, *, nu, mu, system: str = "printed", tau_yy=None) -> StickSlipWave:
     """The wave with ``(v, T)`` from the paper's inverse problem [54]-[55]."""
     sol = inverse_problem(b, cbar, v_star, nu=nu, mu=mu, system=system)
+    _physical(sol.T, sol.v, "T and v from the inverse problem", dict(b=b, cbar=cbar, v_star=v_star))
     return StickSlipWave(b=float(b), cbar=float(cbar), T=float(sol.T), v=float(sol.v), v_star=float(v_star),
                          nu=nu, mu=mu, tau_yy=tau_yy)
+
+
+def _physical(T, v, what: str, given: dict) -> None:
+    """A wave whose computed ``T`` or ``v`` leaves its declared range is no answer (a traction
+    beyond the shear modulus, a supersonic slider): a `NoSolutionError` saying which and why."""
+    for name, value in (("T", float(T)), ("v", float(v))):
+        q = Q[name]
+        if not (math.isfinite(value) and value in q.range):
+            args = ", ".join(f"{k} = {float(x):.6g}" for k, x in given.items())
+            raise NoSolutionError(f"no wave for {args}: {what} give {name} = {value:.4g}, outside {q.range.interval} "
+                                  f"({q.why})")
 
 
 def decaying_wave(b, cbar, T, v_star, *, nu, mu, tau_yy=None) -> StickSlipWave:
     """The wave with ``v`` from the exact decay condition (`decaying_velocity`)."""
     v = float(decaying_velocity(b, cbar, T, v_star, nu=nu, mu=mu))
+    _physical(T, v, "the decay condition's v", dict(b=b, cbar=cbar, T=T, v_star=v_star))
     return StickSlipWave(b=float(b), cbar=float(cbar), T=float(T), v=v, v_star=float(v_star), nu=nu, mu=mu,
                          tau_yy=tau_yy)

@@ -227,8 +227,7 @@ def limit_cycle(osc: Oscillator, x0: float | None = None, v0: float | None = Non
     NoSolutionError
         If the orbit settles on the equilibrium or shooting fails.
     """
-    x0 = osc.stick_limits[1] if x0 is None else Q.check("x0", x0)
-    v0 = osc.belt_speed if v0 is None else Q.check("v0", v0)
+    x0, v0 = osc.start(osc.stick_limits[1] if x0 is None else x0, osc.belt_speed if v0 is None else v0)
     rtol = Q.check("rtol", rtol)
     tol = Q.check("tol", tol)
     engine = Engine(osc, method, rtol, variational=True)

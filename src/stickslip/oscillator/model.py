@@ -34,6 +34,8 @@ class Mode(IntEnum):
 #: The steepest Stribeck drop ``(f_s - f_d) N / v_s`` accepted, over ``sqrt(k m)``: within it a cycle
 #: takes seconds (1e6: 2 s with m = k = N = 1; 2e7: 40 s; 2e8: the integrator fails).
 MAX_STRIBECK_STIFFNESS = 1e6
+#: How far from steady sliding a start may be, in the oscillator's own scales (`Oscillator.start`).
+MAX_START = 1e6
 #: The largest damping ratio ``c / (2 sqrt(k m))`` (see `Oscillator`).
 MAX_DAMPING_RATIO = 1e11
 
@@ -118,6 +120,23 @@ class Oscillator:
     def omega(self) -> float:
         """Natural angular frequency ``w = sqrt(k/m)``."""
         return math.sqrt(self.stiffness / self.mass)
+
+    def start(self, x0: float, v0: float) -> tuple[float, float]:
+        """A starting state ``(x0, v0)`` within `MAX_START` of this oscillator's own scales: the
+        displacement from steady sliding at most that many times ``L = max(f_s N / k, V / w)``,
+        the velocity from the belt's at most that many times ``w L`` (farther starts are no
+        friction problem: the spring alone carries them for a time beyond any event loop)."""
+        x0, v0 = Q.check("x0", x0), Q.check("v0", v0)
+        length = max(self.friction.static * self.normal_force / self.stiffness, self.belt_speed / self.omega)
+        if abs(x0 - self.equilibrium) > MAX_START * length:
+            raise ParameterError("x0", x0, f"within {MAX_START:g} x {length:.4g} m of steady sliding at "
+                                 f"{self.equilibrium:.6g} m (the oscillator's length scale max(f_s N/k, V/w))",
+                                 also=("mass", "stiffness", "normal_force", "belt_speed", "fs"))
+        if abs(v0 - self.belt_speed) > MAX_START * self.omega * length:
+            raise ParameterError("v0", v0, f"within {MAX_START:g} x {self.omega * length:.4g} m/s of the belt speed "
+                                 f"{self.belt_speed:g} m/s (w times the oscillator's length scale)",
+                                 also=("mass", "stiffness", "normal_force", "belt_speed", "fs"))
+        return x0, v0
 
     @property
     def stick_limits(self) -> tuple[float, float]:

@@ -348,8 +348,7 @@ def simulate(osc: Oscillator, t_end: float, x0: float | None = None, v0: float =
         raise ParameterError("t_end", t_end, f"<= {longest:.4g} s ({MAX_PERIODS:.0e} natural periods "
                              "2 pi sqrt(m/k); simulate in pieces from the last state for more)",
                              also=("mass", "stiffness"))
-    x0 = osc.equilibrium if x0 is None else Q.check("x0", x0)
-    v0 = Q.check("v0", v0)
+    x0, v0 = osc.start(osc.equilibrium if x0 is None else x0, v0)
     rtol = Q.check("rtol", rtol)
     Q.check("max_events", max_events)
     return Engine(osc, method, rtol).run(x0, v0, t_end, max_events=max_events)

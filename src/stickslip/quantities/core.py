@@ -145,7 +145,7 @@ class Quantity:
         if self.integer and not v.is_integer():
             raise ParameterError(name, value, self.allowed)
         if self.range is not None and v not in self.range:
-            raise ParameterError(name, int(v) if self.integer else v, self.allowed)
+            raise ParameterError(name, int(v) if self.integer and abs(v) < 1e16 else v, self.allowed)
         return int(v) if self.integer else v
 
     def check_array(self, value, name: str | None = None):
