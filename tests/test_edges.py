@@ -181,3 +181,22 @@ def test_a_wave_whose_traction_leaves_the_elastic_range_is_no_solution(c, v_star
     out, err = capsys.readouterr()
     assert out == "" and err.count("\n") == 1 and words in err, err
     assert not out_file.exists()
+
+
+def test_a_tiny_mass_costs_no_more_memory_than_its_cycle_needs(tmp_path):
+    """A 5e-12 kg block (angular frequency 4.5e5 rad/s) on a stick-slip cycle of a handful of
+    segments: the closed-form integrator allocated segments for t_end x omega (1e7 of them,
+    6.4 GB, 45 s; found by the drawn fuzz battery as a hang) instead of growing to what a run
+    uses. Peak memory of the child under 1 GB (about 0.27 GB now)."""
+    import subprocess
+    import sys
+
+    command = ["oscillator", "continue", "--stiffness", "1", "--normal-force", "1", "--belt-speed", "0.2", "--fs",
+               "0.6", "--fd", "0.4", "--stop", "0.3", "--mass", "4.97e-12", "--json"]
+    # a wrapper of its own measures its one child (this process's other children do not count)
+    wrapper = ("import resource, subprocess, sys; done = subprocess.run([sys.executable, '-m', 'stickslip', "
+               f"*{command!r}], capture_output=True); "
+               "print(done.returncode, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)")
+    done = subprocess.run([sys.executable, "-c", wrapper], cwd=tmp_path, capture_output=True, text=True, timeout=600)
+    code, peak_kb = map(int, done.stdout.split())
+    assert code == 0 and peak_kb < 1_000_000, (code, peak_kb, done.stderr)

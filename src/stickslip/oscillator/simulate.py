@@ -231,7 +231,9 @@ class Engine:
         mu0, mu1 = osc.friction.affine
         p = np.array([osc.mass, osc.stiffness, osc.damping, osc.normal_force, osc.belt_speed, mu0, mu1,
                       osc.friction.static])
-        limit = int(min(max_events, 64 + 4 * max(1.0, t_end * osc.omega)))
+        # segments allocated for: a first guess, grown four-fold while a run needs more (a guess from
+        # t_end * omega took 1e7 segments, 6 GB, for a 5e-12 kg block whose cycle has a handful)
+        limit = int(min(max_events, 4096, 64 + 4 * max(1.0, t_end * osc.omega)))
         while True:
             modes, t, x, v, n, status = run_affine(p, x0, v0, int(osc.initial_mode(x0, v0)), float(t_end), limit,
                                                    0.0 if section is None else float(section), section is not None)
