@@ -9,7 +9,7 @@ contract (`fuzz_harness.problems`): exit 0 with finite numbers only and nothing 
 exit 1/2 with one line (naming the option as typed for 2); never exit 3, a signal, a traceback
 or a hang; a function raises only `ParameterError` or `NoSolutionError`. `make test` runs a
 fixed twelfth of the declared values (without the large valid sizes, runs of minutes); the slow
-set (CI) half of the others and the generated ones.
+set (CI) a quarter of the others and the generated ones.
 ``python -m tests.fuzz_harness`` prints the counts of the whole battery.
 """
 
@@ -21,8 +21,8 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from .fuzz_harness import (ALLOWED, BASE, DRAWN_LEFT_OUT, EXTREMES, LONG_BY_DESIGN, OPTIONS, api_call,
-                           api_values, args_for, declared_cases, declared_options, problems, trial, typed)
+from .fuzz_harness import (BASE, DRAWN_LEFT_OUT, EXTREMES, LONG_BY_DESIGN, OPTIONS, args_for, declared_cases,
+                           declared_options, problems, trial, typed)
 from .test_fuzz_api import CALLS
 
 CASES = declared_cases()
@@ -36,10 +36,11 @@ def _large_and_valid(case) -> bool:
 
 
 FAST = [c for c in CASES[::12] if not _large_and_valid(c)]
-#: Half of the others (alternate ones), leaving out the values test_fuzz_cli tries on every option
-#: already (0, -1, +-1e300, ...): all of them would add half an hour to CI; the whole battery is
-#: ``python -m tests.fuzz_harness``.
-SLOW = [c for c in CASES if c not in FAST and not (c[2] in EXTREMES and c[:2] in OPTIONS)][::2]
+#: A quarter of the others (every fourth), leaving out the values test_fuzz_cli tries on every
+#: option already (0, -1, +-1e300, ...) and the large valid sizes (legal runs of minutes): all of
+#: them would add an hour to CI; the whole battery is ``python -m tests.fuzz_harness``.
+SLOW = [c for c in CASES if c not in FAST and not _large_and_valid(c)
+        and not (c[2] in EXTREMES and c[:2] in OPTIONS)][::4]
 
 
 def _check(command, option, value, folder):
@@ -59,7 +60,7 @@ def test_a_twelfth_of_the_declared_values(command, option, value, tmp_path):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("command, option, value", SLOW, ids=[f"{c} {o} {v}" for c, o, v in SLOW])
-def test_half_of_the_other_declared_values(command, option, value, tmp_path):
+def test_a_quarter_of_the_other_declared_values(command, option, value, tmp_path):
     _check(command, option, value, tmp_path)
 
 
@@ -81,7 +82,7 @@ def _inside_and_around(q):
 
 
 @pytest.mark.slow
-@settings(max_examples=300, deadline=None, derandomize=True,  # the same examples in every CI run
+@settings(max_examples=100, deadline=None, derandomize=True,  # the same examples in every CI run
           suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(data=st.data())
 def test_values_drawn_from_each_declared_range(data, tmp_path_factory):
@@ -93,15 +94,18 @@ def test_values_drawn_from_each_declared_range(data, tmp_path_factory):
 API = [(name, param) for name, (_, params) in CALLS.items() for param in params]
 
 
-def _api(name, param, values):
-    func = CALLS[name][0]
-    for value in values:
-        c = api_call(func, {param: value}, timeout=120)
-        assert c.outcome in ALLOWED, (name, param, value, c)
-
-
 @pytest.mark.slow
 @pytest.mark.parametrize("name, param", API, ids=[f"{n} {p}" for n, p in API])
-def test_every_public_parameter_with_its_declared_and_bad_values(name, param, tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    _api(name, param, api_values(name, param))
+def test_every_public_parameter_with_its_declared_and_bad_values(name, param, tmp_path):
+    """From a fresh interpreter (`fuzz_harness.api_one`: forks from this test process, which may
+    hold threads of Dask or Zarr, can deadlock), each call forked with a time limit."""
+    import json
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    done = subprocess.run([sys.executable, "-m", "tests.fuzz_harness", "--api", name, param], cwd=root,
+                          capture_output=True, text=True, timeout=3600)
+    assert done.returncode == 0, done.stderr[-2000:]
+    assert json.loads(done.stdout.strip().splitlines()[-1]) == []
