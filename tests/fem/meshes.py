@@ -66,3 +66,31 @@ def annulus(path, inner: float = 1.0, outer: float = 1.5, size: float = 0.1, ord
         gmsh.model.mesh.setOrder(order)
         gmsh.write(str(path))
     return meshio.read(path)
+
+
+def two_layers(path, first: float = 0.02, second: float = 0.03, height: float = 0.01, size: float = 0.003,
+               order: int = 1, names=("a", "b")) -> meshio.Mesh:
+    """A rectangle ``(first + second) x height`` of two cell groups, ``names[0]`` for ``x < first``
+    and ``names[1]`` beyond, meshed together (their interface is a mesh line); boundary groups
+    left (x = 0), right, bottom and top (both layers)."""
+    with _gmsh("two_layers") as gmsh:
+        occ = gmsh.model.occ
+        a = occ.addRectangle(0, 0, 0, first, height)
+        b = occ.addRectangle(first, 0, 0, second, height)
+        occ.fragment([(2, a)], [(2, b)])
+        occ.synchronize()
+        width = first + second
+        curves = [c for _, c in gmsh.model.getEntities(1)]
+        box = {c: occ.getBoundingBox(1, c) for c in curves}
+        pick = {"left": lambda b: b[3] < 1e-6, "right": lambda b: b[0] > width - 1e-6,
+                "bottom": lambda b: b[4] < 1e-6, "top": lambda b: b[1] > height - 1e-6}
+        for name, test in pick.items():
+            gmsh.model.addPhysicalGroup(1, [c for c in curves if test(box[c])], name=name)
+        surfaces = sorted(gmsh.model.getEntities(2), key=lambda e: occ.getCenterOfMass(2, e[1])[0])
+        for (_, tag), name in zip(surfaces, names):
+            gmsh.model.addPhysicalGroup(2, [tag], name=name)
+        gmsh.option.setNumber("Mesh.MeshSizeMax", size)
+        gmsh.model.mesh.generate(2)
+        gmsh.model.mesh.setOrder(order)
+        gmsh.write(str(path))
+    return meshio.read(path)

@@ -20,10 +20,11 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def _example(name: str, config: str, mesh: str, tmp_path: Path) -> Path:
+    """The example's config beside its mesh, made by its script (``mesh``: the script's arguments)."""
     folder = tmp_path / name
     folder.mkdir()
     shutil.copy(EXAMPLES / name / config, folder)
-    subprocess.run([sys.executable, str(EXAMPLES / name / "mesh.py"), mesh], cwd=folder, check=True)
+    subprocess.run([sys.executable, str(EXAMPLES / name / "mesh.py"), *mesh.split()], cwd=folder, check=True)
     return folder / config
 
 
@@ -49,6 +50,7 @@ def test_an_example_runs_its_complex_eigenvalue_analysis(name, config, mesh, tmp
 
 
 @pytest.mark.parametrize("name, config, mesh", [("pad_on_disc", "pad.toml", "pad.msh"),
+                                                ("pad_on_disc", "pad_layers.toml", "pad_layers.msh 0.002 1 0.004"),
                                                 ("block_on_belt", "block.toml", "block.msh")])
 def test_an_example_cea_finds_the_modes_of_a_dense_eigensolver(name, config, mesh, tmp_path, capsys):
     """An independent solver of the same linearised problem (`linearised`; scipy's dense

@@ -1,11 +1,16 @@
 """Stiffness, lumped mass and Rayleigh damping of a `Body` (scikit-fem), in SI units.
 
-`assemble(body, material, springs, loads)` returns a `BodySystem`: ``K`` (CSR, N/m per unit
+`assemble(body, material, springs, loads)` returns a `BodySystem`. ``material`` is one
+`Material` for the whole body or ``{cell group: Material}``, one for each cell group of the mesh
+(a pad's lining and steel backplate): every cell then has its group's Lamé parameters,
+density and Rayleigh damping. The system has ``K`` (CSR, N/m per unit
 thickness, with the boundary springs), the lumped ``mass`` (kg per unit thickness: row sums
 on linear cells; on quadratic ones, where row sums give corners no mass, each cell's mass
 shared in proportion to the diagonal of its consistent mass matrix, Hinton-Rock-Zienkiewicz),
 the constant ``load`` (N per unit thickness, from `stickslip.fem.boundary`) and the Rayleigh
-coefficients, on the Cartesian dofs ``2 i`` (x) and ``2 i + 1`` (y) of node ``i``. Plane strain uses the Lamé
+damping ``C = sum over materials of (alpha M + beta K)`` of each material's cells (a boundary
+spring damped with the beta of the cells along its group), on the
+Cartesian dofs ``2 i`` (x) and ``2 i + 1`` (y) of node ``i``. Plane strain uses the Lamé
 parameters ``lambda = E nu / ((1 + nu)(1 - 2 nu))``, ``mu = E / (2 (1 + nu))``; plane stress
 replaces ``lambda`` by ``2 lambda mu / (lambda + 2 mu)``.
 """
@@ -20,15 +25,15 @@ import numpy as np
 import scipy.sparse as sp
 from skfem import (Basis, BilinearForm, ElementQuad1, ElementQuad2, ElementTriP1, ElementTriP2, ElementVector,
                    MeshQuad, MeshQuad2, MeshTri, MeshTri2, asm)
-from skfem.helpers import dot
-from skfem.models.elasticity import lame_parameters, linear_elasticity
+from skfem.helpers import ddot, div, dot, sym_grad
+from skfem.models.elasticity import lame_parameters
 
 from ..quantities import COMMON, FEM as Q
 from ..errors import ParameterError
 from .body import Body, edge_middles
 from .boundary import Load, Spring, boundary_load, boundary_springs
 
-__all__ = ["Material", "BodySystem", "assemble", "cell_stress"]
+__all__ = ["Material", "BodySystem", "assemble", "cell_stress", "materials_of"]
 
 PLANES = Q["plane"].choices
 #: Largest Young's modulus [Pa] and density [kg/m^3] accepted (declared in `stickslip.quantities.FEM`).
@@ -95,15 +100,18 @@ def _mass(u, v, w):
 @dataclass(frozen=True, eq=False)
 class BodySystem:
     """The assembled body: ``K``, the lumped ``mass`` and the constant ``load`` on all ``2 n``
-    Cartesian dofs; ``springs`` and ``loads`` are what `assemble` added."""
+    Cartesian dofs; ``springs`` and ``loads`` are what `assemble` added; ``material`` as given
+    to it (one `Material` or ``{cell group: Material}``); ``C`` the Rayleigh damping of the
+    materials' cells (None: undamped)."""
 
     body: Body
-    material: Material
+    material: Material | dict
     K: sp.csr_matrix
     mass: np.ndarray
     load: np.ndarray | None = None
     springs: tuple = ()
     loads: tuple = ()
+    C: sp.csr_matrix | None = None
 
     def __post_init__(self):
         if self.load is None:
@@ -113,10 +121,29 @@ class BodySystem:
     def n_dofs(self) -> int:
         return self.K.shape[0]
 
+    @property
+    def materials(self) -> dict:
+        """``{cell group: Material}``; ``{"": material}`` for one material on the whole body."""
+        return materials_of(self.material)
+
+    @property
+    def cell_material(self) -> np.ndarray:
+        """For every cell, the position of its material in `materials`."""
+        return _cell_material(self.body, self.materials)
+
+    def cell_values(self, name: str) -> np.ndarray:
+        """A material constant (``young``, ``poisson``, ``density``, ``alpha``, ``beta``) of every cell."""
+        return np.array([getattr(m, name) for m in self.materials.values()])[self.cell_material]
+
     def damping(self) -> sp.csr_matrix:
-        """Rayleigh damping ``alpha M + beta K``."""
-        m = self.material
-        return (sp.diags(m.alpha * self.mass) + m.beta * self.K).tocsr()
+        """Rayleigh damping: ``alpha M + beta K`` of each material's cells (zero if undamped)."""
+        return sp.csr_matrix(self.K.shape) if self.C is None else self.C
+
+    def p_wave_speed(self, cells=None) -> float:
+        """The fastest ``sqrt((lambda + 2 mu) / rho)`` [m/s] of the materials of ``cells`` (default all)."""
+        which = np.unique(self.cell_material if cells is None else self.cell_material[np.asarray(cells)])
+        speeds = [m.p_wave_speed for m in self.materials.values()]
+        return max(speeds[int(i)] for i in which)
 
     @cached_property
     def basis(self) -> tuple:
@@ -194,11 +221,27 @@ def _dof_order(basis, where) -> np.ndarray:
     return order
 
 
-def _lumped_mass(basis, order: np.ndarray, density: float, quadratic: bool) -> np.ndarray:
-    """The lumped mass on the dofs ``2 i + c``: row sums, or on quadratic cells each cell's mass
-    shared by the diagonal of its consistent mass matrix."""
+@BilinearForm
+def _weighted_mass(u, v, w):
+    return w.rho * dot(u, v)
+
+
+@BilinearForm
+def _elasticity(u, v, w):
+    """Isotropic linear elasticity with Lamé parameters that vary from cell to cell."""
+    return 2.0 * w.mu * ddot(sym_grad(u), sym_grad(v)) + w.lam * div(u) * div(v)
+
+
+def _on_points(basis, per_cell: np.ndarray) -> np.ndarray:
+    """A value per cell at every quadrature point of its cell (scikit-fem's field shape)."""
+    return np.repeat(np.asarray(per_cell, dtype=float)[:, None], basis.X.shape[1], axis=1)
+
+
+def _lumped_mass(basis, order: np.ndarray, density: np.ndarray, quadratic: bool) -> np.ndarray:
+    """The lumped mass on the dofs ``2 i + c`` of cells of ``density`` (one per cell): row sums,
+    or on quadratic cells each cell's mass shared by the diagonal of its consistent mass matrix."""
     if not quadratic:
-        return density * np.asarray(asm(_mass, basis).sum(axis=1)).ravel()[order]
+        return np.asarray(asm(_weighted_mass, basis, rho=_on_points(basis, density)).sum(axis=1)).ravel()[order]
     phi = np.array([np.asarray(b[0])[0] for b in basis.basis[0::2]])  # x-components: (local nodes, cells, points)
     diag = np.sum(phi**2 * basis.dx, axis=-1)
     share = diag / diag.sum(axis=0) * basis.dx.sum(axis=1)
@@ -206,6 +249,52 @@ def _lumped_mass(basis, order: np.ndarray, density: float, quadratic: bool) -> n
     np.add.at(out, basis.element_dofs[0::2], density * share)
     np.add.at(out, basis.element_dofs[1::2], density * share)
     return out[order]
+
+
+def _stiffness(basis, order: np.ndarray, lam: np.ndarray, mu: np.ndarray) -> sp.csr_matrix:
+    """``K`` of cells with Lamé parameters ``lam``, ``mu`` (one per cell), on the dofs ``2 i + c``."""
+    K = asm(_elasticity, basis, lam=_on_points(basis, lam), mu=_on_points(basis, mu))
+    return K[order][:, order].tocsr()
+
+
+def materials_of(material) -> dict:
+    """``{cell group: Material}`` of what `assemble` takes: one `Material` (``{"": material}``)
+    or a mapping from cell group names to materials."""
+    if isinstance(material, Material):
+        return {"": material}
+    if isinstance(material, dict) and material and all(isinstance(k, str) and k and isinstance(m, Material)
+                                                       for k, m in material.items()):
+        return dict(material)
+    raise ParameterError("material", material, "a Material, or {cell group name: Material} for every cell group")
+
+
+def _cell_material(body: Body, materials: dict) -> np.ndarray:
+    """For every cell, the position of its material in ``materials``; a cell group without a
+    material, a material for no cell group, a cell in none or in two of them is refused."""
+    if list(materials) == [""]:
+        return np.zeros(len(body.cells), dtype=np.int64)
+    have = ", ".join(sorted(body.cell_groups)) or "none"
+    unknown = [k for k in materials if k not in body.cell_groups]
+    if unknown:
+        raise ParameterError("material.group", unknown[0], f"a cell group of {body.source} (it has: {have})")
+    missing = [k for k in body.cell_groups if k not in materials]
+    if missing:
+        raise ParameterError("material", f"none for cell group {missing[0]!r}",
+                             f"a material for every cell group of {body.source} ({have}), or one for the whole body")
+    owner = np.full(len(body.cells), -1, dtype=np.int64)
+    for i, name in enumerate(materials):
+        cells = body.cell_groups[name]
+        twice = cells[owner[cells] >= 0]
+        if twice.size:
+            other = list(materials)[int(owner[twice[0]])]
+            raise ParameterError("material.group", name, f"cell groups that do not overlap ({twice.size} of its "
+                                 f"cells are also in {other!r}, the first is cell {int(twice[0])})")
+        owner[cells] = i
+    if np.any(owner < 0):
+        raise ParameterError("material", f"none for {int(np.sum(owner < 0))} cells",
+                             f"a material for every cell: cell {int(np.argmax(owner < 0))} of {body.source} is in "
+                             f"no cell group with one ({have})")
+    return owner
 
 
 def cell_stress(system: BodySystem, u) -> np.ndarray:
@@ -219,7 +308,8 @@ def cell_stress(system: BodySystem, u) -> np.ndarray:
     if u.shape[-1] != system.n_dofs or u.ndim > 2:
         raise ParameterError("u", f"an array of shape {u.shape}", f"(2 n,) or (k, 2 n) with 2 n = {system.n_dofs}")
     basis, order = system.basis
-    lam, mu = system.material.lame
+    pairs = np.array([m.lame for m in system.materials.values()])[system.cell_material]
+    lam, mu = pairs[:, 0], pairs[:, 1]
     weights = basis.dx / basis.dx.sum(axis=1, keepdims=True)
     out = []
     for one in np.atleast_2d(u):
@@ -232,35 +322,55 @@ def cell_stress(system: BodySystem, u) -> np.ndarray:
     return np.array(out) if u.ndim == 2 else out[0]
 
 
-def assemble(body: Body, material: Material, springs=(), loads=()) -> BodySystem:
-    """Assemble the stiffness and the row-sum lumped mass of ``body`` with its boundary
-    ``springs`` (`Spring`) and ``loads`` (`Load`) (see the module docstring)."""
+def assemble(body: Body, material, springs=(), loads=()) -> BodySystem:
+    """Assemble the stiffness, the lumped mass and the Rayleigh damping of ``body`` with its
+    boundary ``springs`` (`Spring`) and ``loads`` (`Load`) (see the module docstring).
+    ``material``: one `Material`, or ``{cell group: Material}`` for every cell group of the mesh."""
     if not isinstance(body, Body):
         raise ParameterError("body", body, "a Body (see read_body)")
-    if not isinstance(material, Material):
-        raise ParameterError("material", material, "a Material")
+    materials = materials_of(material)
+    if len({m.scaled for m in materials.values()}) > 1 or len({m.plane for m in materials.values()}) > 1:
+        raise ParameterError("material.plane", [m.plane for m in materials.values()],
+                             "one plane (strain or stress) and one system of units (SI or scaled) for every material")
+    owner = _cell_material(body, materials)
     springs, loads = tuple(springs), tuple(loads)
     for name, items, kind in (("springs", springs, Spring), ("loads", loads, Load)):
         if not all(isinstance(x, kind) for x in items):
             raise ParameterError(name, items, f"a sequence of {kind.__name__}")
+    stiffest = max(m.young for m in materials.values())
     for i, x in enumerate(loads):
         size = max(abs(x.pressure), *map(abs, x.traction))
-        if size > MAX_STRAIN * material.young:
+        if size > MAX_STRAIN * stiffest:
             raise ParameterError("load.pressure" if abs(x.pressure) == size else "load.traction",
                                  x.pressure if abs(x.pressure) == size else list(x.traction),
-                                 f"at most {MAX_STRAIN:g} x young = {MAX_STRAIN * material.young:.4g} Pa in size (load "
+                                 f"at most {MAX_STRAIN:g} x young = {MAX_STRAIN * stiffest:.4g} Pa in size (load "
                                  f"{i} on {x.group!r}: linear elasticity holds for small strains)", also=("young",))
     basis, where = _basis(body)
-    K = asm(linear_elasticity(*material.lame), basis)
     # scikit-fem numbers the dofs its own way: reorder to 2 i + c, the contact machinery's
     order = _dof_order(basis, where)
-    lumped = _lumped_mass(basis, order, material.density, body.order == 2)
-    K = K[order][:, order].tocsr()
+    mats = list(materials.values())
+    lame = np.array([m.lame for m in mats])[owner]
+    value = lambda name: np.array([getattr(m, name) for m in mats], dtype=float)[owner]  # noqa: E731
+    K = _stiffness(basis, order, lame[:, 0], lame[:, 1])
+    quadratic = body.order == 2
+    lumped = _lumped_mass(basis, order, value("density"), quadratic)
+    C = None
+    if any(m.alpha > 0 or m.beta > 0 for m in mats):
+        beta, alpha_rho = value("beta"), value("alpha") * value("density")
+        C = sp.diags(_lumped_mass(basis, order, alpha_rho, quadratic))
+        if np.any(beta > 0):
+            C = C + _stiffness(basis, order, beta * lame[:, 0], beta * lame[:, 1])
+        C = sp.csr_matrix(C)
     if springs:
         _check_springs(body, springs, K.diagonal())
         K = (K + boundary_springs(body, springs)).tocsr()
+        if C is not None:  # a spring is damped with the (largest) beta of the cells along its group
+            betas = value("beta")
+            for spring in springs:
+                b = float(betas[body.cells_along(spring.group)].max())
+                C = (C + b * boundary_springs(body, [spring])).tocsr() if b > 0 else C
     load = boundary_load(body, loads) if loads else None
-    return BodySystem(body, material, K, lumped, load, springs, loads)
+    return BodySystem(body, material, K, lumped, load, springs, loads, C)
 
 
 def _check_springs(body: Body, springs, elastic: np.ndarray) -> None:

@@ -5,7 +5,9 @@ takes a `meshio.Mesh`. The body is one kind of cell in the plane: linear (3-node
 4-node quadrilaterals) or quadratic (6-node triangles, 9-node quadrilaterals, gmsh's
 ``-order 2``; their edges may be curved). Boundary groups are the named sets of edges
 (gmsh physical groups of dimension 1) on which contact, clamping or loads act: 2-node lines
-on a linear mesh, 3-node lines on a quadratic one.
+on a linear mesh, 3-node lines on a quadratic one. Cell groups are the named sets of cells
+(gmsh physical groups of dimension 2: a pad's lining and backplate), each of which may have
+its own material (`stickslip.fem.assembly.assemble`).
 
 Checked on the way in, each refused with a `ParameterError` naming the mesh and the
 problem: a mesh that is not planar, no cells or cells of another kind, mixed kinds,
@@ -43,13 +45,15 @@ _TURN = {"triangle": [2, 1, 0], "quad": [3, 2, 1, 0], "triangle6": [2, 1, 0, 4, 
 class Body:
     """Nodes ``points`` (``(n, 2)``, the mesh's units), cells ``(m, 3 | 4 | 6 | 9)``
     counter-clockwise, ``kind`` (``triangle``, ``quad``, ``triangle6`` or ``quad9``) and boundary
-    ``groups``: name -> edges ``(e, 2)`` (ends) or, on a quadratic mesh, ``(e, 3)`` (ends, middle)."""
+    ``groups``: name -> edges ``(e, 2)`` (ends) or, on a quadratic mesh, ``(e, 3)`` (ends, middle);
+    ``cell_groups``: name -> the sorted indices of its cells."""
 
     points: np.ndarray
     cells: np.ndarray
     kind: str
     groups: dict = field(default_factory=dict)
     source: str = "mesh"
+    cell_groups: dict = field(default_factory=dict)
 
     @property
     def order(self) -> int:
@@ -93,13 +97,23 @@ class Body:
         turned = edges[:, [1, 0] + list(range(2, edges.shape[1]))]
         return np.where(forward[:, None], edges, turned)
 
+    def cells_along(self, name: str, option: str = "group") -> np.ndarray:
+        """Sorted indices of the cells with an edge in boundary group ``name``."""
+        edges = {tuple(e) for e in np.sort(self.group(name, option)[:, :2], axis=1).tolist()}
+        corners = self.corners
+        sides = np.sort(np.stack([corners, np.roll(corners, -1, axis=1)], axis=-1), axis=-1)
+        hit = [i for i, cell in enumerate(sides.tolist()) if any(tuple(e) in edges for e in cell)]
+        return np.array(hit, dtype=np.int64)
+
     def nodes(self, name: str, option: str = "group") -> np.ndarray:
         """Sorted node indices of the boundary group ``name``."""
         return np.unique(self.group(name, option))
 
     def describe(self) -> str:
         groups = ", ".join(f"{k} ({len(v)} edges)" for k, v in sorted(self.groups.items()))
-        return f"{len(self.cells)} {self.kind}s, {len(self.points)} nodes; boundary groups: {groups or 'none'}"
+        cells = ", ".join(f"{k} ({len(v)} cells)" for k, v in sorted(self.cell_groups.items()))
+        return (f"{len(self.cells)} {self.kind}s, {len(self.points)} nodes; boundary groups: {groups or 'none'}"
+                + (f"; cell groups: {cells}" if cells else ""))
 
 
 def _areas(points: np.ndarray, cells: np.ndarray) -> np.ndarray:
@@ -164,7 +178,7 @@ def body_from_meshio(mesh, source: str = "mesh") -> Body:
     renumber[used] = np.arange(used.size)
     boundary = _boundary_edges(cells[:, :_CORNERS[kind]])
     middles = edge_middles(cells, kind) if quadratic else {}
-    groups = {}
+    groups, cell_groups = {}, _cell_groups(mesh, blocks, kind)
     for name, per_block in getattr(mesh, "cell_sets", {}).items():
         if name.startswith("gmsh:"):
             continue
@@ -188,7 +202,25 @@ def body_from_meshio(mesh, source: str = "mesh") -> Body:
                 raise bad(f"boundary group {name!r} with the middle nodes of its cells' edges ({len(wrong)} of "
                           f"its {len(edges)} edges have another, the first is edge {wrong[0]})")
         groups[name] = edges
-    return Body(points, cells, kind, groups, source)
+    return Body(points, cells, kind, groups, source, cell_groups)
+
+
+def _cell_groups(mesh, blocks, kind: str) -> dict:
+    """``{name: sorted cell indices}`` of the named sets of 2-D cells (gmsh's physical surfaces),
+    the cells numbered as the body's: the blocks of ``kind`` one after another."""
+    offsets, at = [], 0
+    for t, d in blocks:
+        offsets.append(at if t == kind else -1)
+        at += len(d) if t == kind else 0
+    out = {}
+    for name, per_block in getattr(mesh, "cell_sets", {}).items():
+        if name.startswith("gmsh:"):
+            continue
+        found = [start + np.asarray(idx, dtype=np.int64) for start, idx in zip(offsets, per_block)
+                 if start >= 0 and len(idx)]
+        if found:
+            out[name] = np.unique(np.concatenate(found))
+    return out
 
 
 def read_body(path) -> Body:

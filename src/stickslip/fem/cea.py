@@ -71,18 +71,19 @@ def linearised(problem: ContactProblem):
     touching = steady.active[scheme.contact_nodes]
     normal, tangent = normal[touching], tangent[touching]
     keep = np.setdiff1d(np.arange(scheme.free.size), normal)
-    mat = problem.system.material
     f = problem.friction
+    # each tangential row less f times its node's normal row: (I - f P) A with P[t, n] = 1
+    rows = sp.identity(K.shape[0], format="csr") - f * sp.csr_matrix(
+        (np.ones(len(normal)), (tangent, normal)), shape=K.shape)
 
     def effective(A):
-        A = A.tolil(copy=True)
-        for n, t in zip(normal, tangent):
-            A[t] = A[t] - f * A[n]
-        return A.tocsr()[keep][:, keep]
+        return (rows @ A).tocsr()[keep][:, keep]
 
     K_eff = effective(K)
-    damping = mat.alpha > 0 or mat.beta > 0
-    C_eff = (mat.alpha * sp.diags(scheme.mass[keep]) + mat.beta * K_eff).tocsr() if damping else None
+    C = problem.system.C
+    C_eff = None
+    if C is not None:  # in the scheme's frames on the free dofs, as K
+        C_eff = effective((scheme.rotation.T @ C @ scheme.rotation).tocsr()[scheme.free][:, scheme.free])
     return K_eff, C_eff, scheme.mass[keep], keep
 
 
@@ -249,7 +250,7 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
     if hi > top:
         raise ParameterError("band", [lo, hi], f"[lo, hi] with hi at most {top:.6g} Hz, {BAND_MARGIN:g} x the mesh's "
                              f"highest frequency (beyond it the mesh has no modes; a finer mesh has higher ones)")
-    overdamped = _overdamped_band(problem.system.material, lo, hi)
+    overdamped = _overdamped_band(problem.system.materials, lo, hi)
     if overdamped:
         raise NoSolutionError(overdamped)
     reach = 0.1 * 2.0 * math.pi * hi if complete_below is None else \
@@ -273,7 +274,7 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
             try:
                 s, vec, trusted, _, radius = eigenvalues_near(K_eff, C_eff, mass, shift, k, mode_shapes)
             except NoSolutionError as err:
-                raise NoSolutionError(f"{err}{_overdamped(problem.system.material)}") from None
+                raise NoSolutionError(f"{err}{_overdamped(problem.system.materials)}") from None
             crowded = 0 < before and radius < 1.3 * before  # eigenvalues crowd the shift (heavy damping)
             if radius >= 1.25 * reach or k >= max_count or crowded:
                 break
@@ -299,42 +300,56 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
     return CeaModes(s, vecs, np.array(shifts), (lo, hi), reached, reach, problem.to_attrs())
 
 
-def _overdamped_band(material, lo: float, hi: float) -> str:
+def _overdamped_band(materials: dict, lo: float, hi: float) -> str:
     """Why no mode of the band ``[lo, hi]`` [Hz] can oscillate, or "": Rayleigh damping gives a
     mode of angular frequency ``w`` the damping ratio ``alpha / (2 w) + beta w / 2``, convex in
     ``w`` (least, ``sqrt(alpha beta)``, at ``w = sqrt(alpha / beta)``). Where it is at least 1
-    over the whole band every mode there is overdamped, and the eigenvalues crowd the real axis,
-    where a shift-invert search only grinds (it took minutes to give up)."""
-    alpha, beta = material.alpha, material.beta
-
-    def ratio(w):
-        if w == 0:
-            return math.inf if alpha > 0 else 0.0
-        return alpha / (2.0 * w) + beta * w / 2.0
-
+    over the whole band, for every material of the body, every mode there is overdamped, and the
+    eigenvalues crowd the real axis, where a shift-invert search only grinds (it took minutes to
+    give up). (A body of several materials: each material's least ratio; the band is called
+    overdamped only if all of them are at least 1.)"""
     w_lo, w_hi = 2.0 * math.pi * lo, 2.0 * math.pi * hi
-    least = min(ratio(w_lo), ratio(w_hi))
-    if alpha > 0 and beta > 0 and w_lo < math.sqrt(alpha / beta) < w_hi:
-        least = math.sqrt(alpha * beta)
+    least = math.inf
+    for m in materials.values():
+        alpha, beta = m.alpha, m.beta
+
+        def ratio(w):
+            if w == 0:
+                return math.inf if alpha > 0 else 0.0
+            return alpha / (2.0 * w) + beta * w / 2.0
+
+        one = min(ratio(w_lo), ratio(w_hi))
+        if alpha > 0 and beta > 0 and w_lo < math.sqrt(alpha / beta) < w_hi:
+            one = math.sqrt(alpha * beta)
+        least = min(least, one)
     if least < 1.0:
         return ""
-    return (f"Rayleigh damping (alpha = {alpha:g} 1/s, beta = {beta:g} s) overdamps every mode of the band {lo:g}-{hi:g} "
-            f"Hz (least damping ratio {least:.3g}): no mode there oscillates{_overdamped(material)}")
+    said = "; ".join(f"alpha = {m.alpha:g} 1/s, beta = {m.beta:g} s" for m in materials.values())
+    return (f"Rayleigh damping ({said}) overdamps every mode of the band {lo:g}-{hi:g} "
+            f"Hz (least damping ratio {least:.3g}): no mode there oscillates{_overdamped(materials)}")
 
 
-def _overdamped(material) -> str:
+def _overdamped(materials: dict) -> str:
     """Where Rayleigh damping overdamps the modes (a mode of frequency ``w`` is overdamped when
-    ``alpha + beta w^2 > 2 w``), as advice for a search that failed."""
+    ``alpha + beta w^2 > 2 w``), as advice for a search that failed; of each material."""
+    said = [x for x in (_overdamped_one(name, m) for name, m in materials.items()) if x]
+    if not said:
+        return ""
+    return (f": Rayleigh damping overdamps every mode {'; '.join(said)}, and a shift near them finds only that "
+            "crowd; keep the band well inside, or damp less")
+
+
+def _overdamped_one(name: str, material) -> str:
     alpha, beta = material.alpha, material.beta
     if alpha == 0 and beta == 0:
         return ""
+    where = f" of {name}" if name else ""
     if alpha * beta >= 1:
-        return " (Rayleigh damping overdamps every mode here: alpha beta >= 1): damp less"
+        return f"at every frequency{where} (alpha beta >= 1)"
     root = math.sqrt(1.0 - alpha * beta)
     parts = []
     if beta > 0:
         parts.append(f"above {(1 + root) / beta / (2 * math.pi):.4g} Hz (beta puts their eigenvalues near -1/beta)")
     if alpha > 0:
         parts.append(f"below {alpha / (1 + root) / (2 * math.pi):.4g} Hz (alpha puts theirs near 0 and -alpha)")
-    return (f": Rayleigh damping overdamps every mode {' and '.join(parts)}, and a shift near them finds only that "
-            "crowd; keep the band well inside, or damp less")
+    return " and ".join(parts) + where

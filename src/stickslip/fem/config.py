@@ -3,13 +3,21 @@
     mesh = "pad.msh"                # any mesh meshio reads; relative to the config file
     clamped = ["top"]               # boundary groups held fixed (optional)
 
-    [material]                      # SI units
+    [material]                      # SI units; the whole body
     young = 2.1e11
     poisson = 0.3
     density = 7850.0
     plane = "strain"                # or "stress"
     alpha = 0.0                     # Rayleigh damping C = alpha M + beta K (optional)
     beta = 0.0
+
+    # or one material per cell group of the mesh (gmsh physical surfaces), every group one:
+    # [[material]]
+    # group = "lining"              # a cell group
+    # young = 1.0e10                # ... and the keys above (plane the same for all)
+    # [[material]]
+    # group = "backplate"
+    # young = 2.1e11
 
     [contact]
     group = "bottom"                # the boundary group in contact
@@ -61,11 +69,11 @@ from .surfaces import MAX_SPEED, RigidCylinder, RigidFlat, contact_frames
 __all__ = ["FemConfig", "load_config"]
 
 _KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "cea", "spring", "load"},
-          "material": {"young", "poisson", "density", "plane", "alpha", "beta"},
           "contact": {"group", "friction", "static_friction"},
           "surface": {"kind", "radius", "omega", "center", "body_inside", "point", "normal", "velocity",
                       "interference"},
           "cea": {"band", "count", "complete_below"}}
+_MATERIAL = {"young", "poisson", "density", "plane", "alpha", "beta"}
 
 
 @dataclass(frozen=True)
@@ -75,7 +83,7 @@ class FemConfig:
     path: Path
     mesh: Path
     clamped: tuple
-    material: Material
+    material: Material | dict  # one for the whole body, or {cell group: Material}
     group: str
     friction: float
     surface: object
@@ -166,15 +174,8 @@ def load_config(path) -> FemConfig:
     if twice:
         problems.append(f"clamped = {clamped!r} must name each group once ({', '.join(map(repr, twice))} twice)")
         clamped = list(dict.fromkeys(clamped))
-    m = data.get("material", {}) if isinstance(data.get("material", {}), dict) else {}
-    young = _number(problems, "material.young", m.get("young"))
-    poisson = _number(problems, "material.poisson", m.get("poisson"))
-    density = _number(problems, "material.density", m.get("density"))
-    alpha = _number(problems, "material.alpha", m.get("alpha", 0.0))
-    beta = _number(problems, "material.beta", m.get("beta", 0.0))
-    plane = m.get("plane", "strain")
-    if plane not in PLANES:
-        problems.append(f"material.plane = {plane!r} must be one of {', '.join(PLANES)}")
+    materials = _materials(problems, data.get("material"))
+    young = max((m[0] for m in materials.values() if m[0] is not None), default=None)
     c = data.get("contact", {}) if isinstance(data.get("contact", {}), dict) else {}
     group = c.get("group")
     if not isinstance(group, str):
@@ -212,12 +213,84 @@ def load_config(path) -> FemConfig:
                      f"{big:.4g} Pa in size (linear elasticity holds for small strains)" for i, x in enumerate(loads)
                      if max(map(abs, x.traction)) > big]
     body = _body(problems, mesh_path, clamped, group, springs, loads, data, surface)
+    if body is not None:
+        _cell_groups(problems, body, materials)
     if problems:
         raise ParameterError("config", str(path), f"a valid config; {len(problems)} problem"
                              f"{'s' if len(problems) > 1 else ''}: " + "; ".join(problems))
-    material = Material(young, poisson, density, plane, alpha, beta)
+    made = {name: Material(e, nu, rho, plane, a, b) for name, (e, nu, rho, plane, a, b) in materials.items()}
+    material = made[""] if list(made) == [""] else made
     return FemConfig(path, mesh_path, tuple(clamped), material, group, friction, surface, tuple(band), count,
                      static, springs, loads, body, below)
+
+
+def _materials(problems, raw) -> dict:
+    """``{cell group: (young, poisson, density, plane, alpha, beta)}`` of ``[material]`` (the whole
+    body, group "") or of ``[[material]]`` tables, each with its ``group``; problems named as
+    written (``material.young``, ``material[1].young``)."""
+    if raw is None:
+        raw = {}
+    if isinstance(raw, dict):
+        tables = [("material", raw)]
+        if "group" in raw:
+            problems.append("material.group: a single [material] is the whole body; one per cell group is written "
+                            "[[material]], a table for each group")
+    elif isinstance(raw, list) and raw and all(isinstance(t, dict) for t in raw):
+        tables = [(f"material[{i}]", t) for i, t in enumerate(raw)]
+    else:
+        problems.append("material must be a table [material] (the whole body) or tables [[material]] with a group "
+                        "each")
+        return {}
+    out = {}
+    for where, m in tables:
+        problems += [f"unknown key {where}.{k}" for k in sorted(m) if k not in _MATERIAL | ({"group"} if "[" in where
+                                                                                             else set())]
+        name = ""
+        if "[" in where:
+            name = m.get("group")
+            if not isinstance(name, str) or not name:
+                problems.append(f"{where}.group must be the name of a cell group of the mesh")
+                continue
+            if name in out:
+                problems.append(f"{where}.group = {name!r} must name each cell group once ({name!r} has a material "
+                                "already)")
+                continue
+        plane = m.get("plane", "strain")
+        if plane not in PLANES:
+            problems.append(f"{where}.plane = {_toml(plane)} must be one of {', '.join(PLANES)}")
+        out[name] = (_number(problems, f"{where}.young", m.get("young")),
+                     _number(problems, f"{where}.poisson", m.get("poisson")),
+                     _number(problems, f"{where}.density", m.get("density")), plane,
+                     _number(problems, f"{where}.alpha", m.get("alpha", 0.0)),
+                     _number(problems, f"{where}.beta", m.get("beta", 0.0)))
+    planes = {v[3] for v in out.values()}
+    if len(planes) > 1:
+        problems.append(f"material.plane must be the same for every material (they have {', '.join(sorted(planes))})")
+    return out
+
+
+def _cell_groups(problems, body, materials: dict) -> None:
+    """Every cell group of the mesh with a material and every material on a cell group of it."""
+    names = [k for k in materials if k]
+    if not names:
+        return
+    have = ", ".join(sorted(body.cell_groups)) or "none"
+    problems += [f"material[{i}].group = {name!r} is not a cell group of {Path(str(body.source)).name} (it has: "
+                 f"{have})" for i, name in enumerate(names) if name not in body.cell_groups]
+    problems += [f"material: the cell group {name!r} of {Path(str(body.source)).name} has none (every cell group "
+                 "needs its [[material]], or one [material] for the whole body)" for name in sorted(body.cell_groups)
+                 if name not in materials]
+    owner = np.full(len(body.cells), -1)
+    for i, name in enumerate(names):
+        cells = body.cell_groups.get(name, np.zeros(0, dtype=np.int64))
+        twice = cells[owner[cells] >= 0]
+        if twice.size:
+            problems.append(f"material[{i}].group = {name!r} shares {twice.size} cells with "
+                            f"{names[int(owner[twice[0]])]!r}: a cell has one material")
+        owner[cells] = i
+    if all(name in body.cell_groups for name in names) and np.any(owner < 0):
+        problems.append(f"material: {int(np.sum(owner < 0))} cells of {Path(str(body.source)).name} are in no cell "
+                        f"group with a material ({have})")
 
 
 def _body(problems, mesh_path, clamped, group, springs, loads, data, surface):

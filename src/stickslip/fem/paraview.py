@@ -9,7 +9,8 @@ Both write the body's mesh (points at ``z = 0``, in m) with `stickslip.files.wri
   ``contact_shear`` [N per unit thickness per node] and ``contact_state`` (0 stick, 1 slip,
   2 reverse slip, 3 separation; -1 off the contact line); the cell data ``stress_xx``,
   ``stress_yy``, ``stress_xy`` and ``von_mises`` [Pa] (cell means, `stickslip.fem.assembly.cell_stress`;
-  in plane strain with ``sigma_zz = nu (sigma_xx + sigma_yy)``).
+  in plane strain with ``sigma_zz = nu (sigma_xx + sigma_yy)``, each cell's own ``nu``) and
+  ``material`` (each cell's material, its position in the problem's ``material_groups``).
 * `write_modes_xdmf(problem, modes, path)`: the shapes of the CEA modes
   (`complex_eigenvalues(..., mode_shapes=True)`), one step per mode (the step's "time" is the
   mode's index in ``modes``, most unstable first): ``mode_real``, ``mode_imag`` (the complex
@@ -63,7 +64,10 @@ def write_run_xdmf(run: BodyRun, path) -> Path:
         return out
 
     system = scheme.params.system
-    nu = system.material.poisson if system.material.plane == "strain" else 0.0
+    plane = next(iter(system.materials.values())).plane
+    nu = system.cell_values("poisson") if plane == "strain" else 0.0  # of each cell's material
+
+    material = system.cell_material.astype(np.int32)  # the position of each cell's material in material_groups
 
     def step(k):
         state = np.full(n, -1, dtype=np.int32)
@@ -75,7 +79,8 @@ def write_run_xdmf(run: BodyRun, path) -> Path:
         sxx, syy, sxy = cell_stress(system, u).T
         szz = nu * (sxx + syy)
         mises = np.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) + 3 * sxy**2)
-        cell_data = {"stress_xx": [sxx], "stress_yy": [syy], "stress_xy": [sxy], "von_mises": [mises]}
+        cell_data = {"stress_xx": [sxx], "stress_yy": [syy], "stress_xy": [sxy], "von_mises": [mises],
+                     "material": [material]}
         return float(snaps["vol_t"][k]), point_data, cell_data
 
     return write_xdmf_series(path, *_mesh(body), (step(k) for k in range(len(snaps["vol_t"]))))

@@ -89,7 +89,7 @@ _FORMAT = RunFormat(
     source="general 2-D body, explicit beta2 scheme [22] with multipliers [23] on sparse matrices (stickslip.fem)",
     key_attrs=("beta2", "courant", "step_given"), scheme=BodyScheme, params_type=ContactProblem,
     traction_scale=lambda s: s.mass[s.contact_dofs[0]],
-    extra_attrs=lambda s: {"line_length": s.line_length, "p_wave_speed": s.params.system.material.p_wave_speed},
+    extra_attrs=lambda s: {"line_length": s.line_length, "p_wave_speed": s.p_wave_speed},
     title="run of a general body on a rigid counter-surface", time_units="s", time_note="time", model="fem",
     position_note="position of the contact node along the contact line as an angle, 2 pi s / L (s its arclength "
                   "from the first node, L the line's length, attribute line_length)",

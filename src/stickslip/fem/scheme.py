@@ -112,13 +112,21 @@ class ContactProblem:
         damped more than ``MAX_OVERDAMPING`` times critically, ``alpha + beta omega_max^2 >
         2 MAX_OVERDAMPING omega_max``. The stable step shrinks about in proportion (``beta
         omega_max = 1e6`` asks for some 1e6 times more steps). The CEA has no step: any damping
-        within the material's ranges goes."""
-        m = self.system.material
-        if m.alpha == 0.0 and m.beta == 0.0:
+        within the material's ranges goes. The explicit scheme damps with one ``(alpha, beta)``:
+        materials of the body with different ones are refused here (steady sliding and the CEA
+        take them)."""
+        pairs = {(m.alpha, m.beta) for m in self.system.materials.values()}
+        if len(pairs) > 1:
+            names = ", ".join(f"{k}: alpha = {m.alpha:g}, beta = {m.beta:g}" for k, m in self.system.materials.items())
+            raise ParameterError("material.alpha", names, "one Rayleigh damping (alpha, beta) for every material of an "
+                                 "explicit run (its scheme damps the whole body with one pair; steady sliding and the "
+                                 "CEA take one per material)", also=("material.beta",))
+        alpha, beta = pairs.pop()
+        if alpha == 0.0 and beta == 0.0:
             return
         w, top = self.omega_max, 2.0 * MAX_OVERDAMPING * self.omega_max
-        if m.alpha + m.beta * w * w > top * (1.0 + 1e-12):
-            name, value, most = ("beta", m.beta, (top - m.alpha) / (w * w)) if m.beta > 0 else ("alpha", m.alpha, top)
+        if alpha + beta * w * w > top * (1.0 + 1e-12):
+            name, value, most = ("beta", beta, (top - alpha) / (w * w)) if beta > 0 else ("alpha", alpha, top)
             raise ParameterError(name, value, f"<= {max(most, 0.0):.4g} {'s' if name == 'beta' else '1/s'} on this "
                                  f"mesh for an explicit run: alpha + beta omega_max^2 <= {2 * MAX_OVERDAMPING:g} "
                                  f"omega_max, its highest mode (omega_max = {w:.4g} rad/s) at most {MAX_OVERDAMPING:g} "
@@ -217,9 +225,10 @@ class BodyScheme(ExplicitScheme):
 
     @property
     def damping(self) -> tuple[float, float]:
-        """The material's Rayleigh damping ``(alpha [1/s], beta [s])``."""
-        m = self.params.system.material
-        return (float(m.alpha), float(m.beta))
+        """The Rayleigh damping ``(alpha [1/s], beta [s])`` of the body's materials (one pair:
+        `ContactProblem.check_damping`)."""
+        alpha, beta = max((m.alpha, m.beta) for m in self.params.system.materials.values())
+        return (float(alpha), float(beta))
 
     @cached_property
     def load(self) -> np.ndarray | None:
@@ -270,8 +279,14 @@ class BodyScheme(ExplicitScheme):
 
     @property
     def transit_time(self) -> float:
-        """The contact line's length over the P-wave speed [s]."""
-        return self.line_length / self.params.system.material.p_wave_speed
+        """The contact line's length over the P-wave speed [s] (the fastest of the materials along it)."""
+        return self.line_length / self.p_wave_speed
+
+    @cached_property
+    def p_wave_speed(self) -> float:
+        """The P-wave speed [m/s] of the material along the contact line (the fastest, if several)."""
+        system = self.params.system
+        return system.p_wave_speed(system.body.cells_along(self.params.frames.group))
 
     @property
     def speed_scales(self) -> dict:

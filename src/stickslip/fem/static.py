@@ -37,7 +37,8 @@ from .surfaces import ContactFrames
 
 __all__ = ["SteadyContact", "frame_rotation", "steady_contact", "problem_attrs", "LOAD_FLOOR"]
 
-#: A total normal force below ``LOAD_FLOOR`` x Young's modulus x the body's size [N/m] is no load
+#: A total normal force below ``LOAD_FLOOR`` x Young's modulus (the largest of the materials) x the
+#: body's size [N/m] is no load
 #: (a mean strain of 1e-10: round-off of the geometry gives some 1e-16, a preload 1e-6 or more).
 LOAD_FLOOR = 1e-10
 
@@ -45,12 +46,19 @@ LOAD_FLOOR = 1e-10
 def problem_attrs(system: BodySystem, frames: ContactFrames, friction: float, clamped=(),
                   static_friction: float | None = None) -> dict:
     """The problem as netCDF attributes: mesh, material, springs, loads, contact group, surface,
-    friction and clamped groups."""
-    m = system.material
+    friction and clamped groups. Several materials: each constant a list, one number per
+    material, in the order of ``material_groups`` (their cell groups)."""
+    materials = system.materials
+    per = {name: [float(getattr(m, name)) for m in materials.values()]
+           for name in ("young", "poisson", "density", "alpha", "beta")}
+    if list(materials) == [""]:
+        per = {k: v[0] for k, v in per.items()}
+    else:
+        per["material_groups"] = " ".join(materials)
     surface = frames.surface.describe() if hasattr(frames.surface, "describe") else "not recorded"
     # the mesh file's name only: a run moved with its mesh resumes
-    return {"mesh": Path(str(system.body.source)).name, "young": m.young, "poisson": m.poisson, "density": m.density,
-            "plane": m.plane, "alpha": m.alpha, "beta": m.beta, "friction": float(friction),
+    return {"mesh": Path(str(system.body.source)).name, **per,
+            "plane": next(iter(materials.values())).plane, "friction": float(friction),
             "static_friction": float(friction if static_friction is None else static_friction),
             "clamped": ",".join(clamped), "contact_group": frames.group, "surface": surface,
             "springs": "; ".join(f"{k.group}: {k.stiffness[0]:g}, {k.stiffness[1]:g} N/m per m" for k in system.springs),
@@ -184,7 +192,8 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
             size = float(np.hypot(*(points.max(axis=0) - points.min(axis=0))))
             attrs = problem_attrs(system, frames, friction, clamped, static_friction)
             return SteadyContact(frames, friction, T @ w, pressure, friction * pressure, active.copy(), iteration,
-                                 points[frames.nodes], attrs, LOAD_FLOOR * system.material.young * size)
+                                 points[frames.nodes], attrs,
+                                 LOAD_FLOOR * max(m.young for m in system.materials.values()) * size)
         active = new
     raise NoSolutionError(f"the contact active set did not settle in {max_iterations} iterations")
 

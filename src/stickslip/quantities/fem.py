@@ -87,6 +87,8 @@ FEM = Domain("fem", units="SI", quantities=[
     Q('mesh', '', 'mesh file'),
     Q('clamped', '', 'clamped boundary groups'),
     Q('contact_group', '', 'boundary group in contact'),
+    Q('material_groups', '', "the cell groups of the materials, in the order of the material constants' lists"),
+    Q('material', '', "each cell's material: its position in material_groups"),
     Q('surface', '', 'the rigid counter-surface (after the interference)'),
     Q('springs', '', 'springs to the ground: group, total stiffness'),
     Q('loads', '', 'loads: group, pressure, traction'),
