@@ -94,3 +94,20 @@ def two_layers(path, first: float = 0.02, second: float = 0.03, height: float = 
         gmsh.model.mesh.setOrder(order)
         gmsh.write(str(path))
     return meshio.read(path)
+
+
+def ring(n_theta: int = 32, n_r: int = 3, inner: float = 0.1, outer: float = 0.15) -> meshio.Mesh:
+    """A structured ring of ``n_theta x n_r`` quadrilaterals, exactly symmetric under turns by
+    ``2 pi / n_theta`` (to round-off), with boundary groups bore (r = inner) and rim."""
+    import numpy as np
+
+    theta = 2 * np.pi * np.arange(n_theta) / n_theta
+    r = np.linspace(inner, outer, n_r + 1)
+    points = np.array([(ri * np.cos(t), ri * np.sin(t)) for ri in r for t in theta])
+    node = lambda i, j: j * n_theta + i % n_theta  # noqa: E731
+    quads = [[node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)] for j in range(n_r) for i in range(n_theta)]
+    bore = [[node(i, 0), node(i + 1, 0)] for i in range(n_theta)]
+    rim = [[node(i, n_r), node(i + 1, n_r)] for i in range(n_theta)]
+    cells = [meshio.CellBlock("quad", np.array(quads)), meshio.CellBlock("line", np.array(bore + rim))]
+    return meshio.Mesh(points, cells, cell_sets={"bore": [np.array([], int), np.arange(n_theta)],
+                                                 "rim": [np.array([], int), np.arange(n_theta, 2 * n_theta)]})

@@ -12,8 +12,9 @@ As the linear pencil of ``(w, s w)`` (twice the size), the eigenvalues nearest a
 ``i 2 pi f`` in the complex ``s`` plane are found by shift-invert Arnoldi (a sparse LU of ``K + sigma C + sigma^2 M``, ARPACK
 through `scipy.sparse.linalg.eigs`); the shifts step up through the frequency band so that
 the discs of the eigenvalues found cover a strip ``|Re s| < complete_below`` along it (more
-eigenvalues are asked for where a disc is too small), and eigenvalues found twice (within
-1e-8) are merged.
+eigenvalues are asked for where a disc is too small). An eigenvalue found twice is merged
+by its eigenvector, never by its value alone (`ModeSet`): a repeated eigenvalue (the
+doublets of a symmetric body) is reported once per independent mode.
 Reported: ``growth_rate = Re s`` [1/s] and ``frequency = Im s / 2 pi`` [Hz] >= 0, one mode per
 complex-conjugate pair; ``growth_rate > NEUTRAL |s|`` is flutter (squeal), within
 ``NEUTRAL |s|`` of zero the mode is neutral (its sign is round-off).
@@ -198,6 +199,47 @@ def eigenvalues_near(K_eff, C_eff, mass, shift_hz: float, count: int, vectors: b
     return s, (vec if vectors else None), dist < radius, upper, radius
 
 
+class ModeSet:
+    """The modes found so far, each eigenvalue with its multiplicity. An eigenvalue found again
+    (by an overlapping shift, or as the conjugate of one found) is the same mode only if its
+    eigenvector lies in the span of the vectors already found for eigenvalues within
+    ``SAME`` of it; otherwise it is one more member of a repeated eigenvalue (the doublets of a
+    symmetric body, which friction splits). The spans are compared in a fixed count sketch
+    of ``SKETCH`` rows (each dof added, with a sign, to one row: distances kept to some 5 %,
+    memory that does not grow with the mesh)."""
+
+    #: Eigenvalues within this of each other (relative) may be one mode found twice.
+    SAME = 1e-8
+    #: A vector whose part outside the span of its cluster is below this (relative) is in it.
+    IN_SPAN = 1e-6
+    SKETCH = 512
+
+    def __init__(self, n: int):
+        rng = np.random.default_rng(20261125)  # a fixed sketch: the same result every time
+        self.row = rng.integers(0, min(self.SKETCH, n), size=n)
+        self.sign = rng.choice([-1.0, 1.0], size=n)
+        self.size = min(self.SKETCH, n)
+        self.s: list = []
+        self.sketches: list = []
+
+    def _sketch(self, v) -> np.ndarray:
+        x = np.zeros(self.size, dtype=complex)
+        np.add.at(x, self.row, self.sign * v)
+        return x / np.linalg.norm(x)
+
+    def add(self, s, v) -> bool:
+        """Add the eigenpair ``(s, v)`` unless it is a mode already found; True if added."""
+        x = self._sketch(v)
+        near = [i for i, z in enumerate(self.s) if abs(s - z) <= self.SAME * abs(s)]
+        if near:
+            q, _ = np.linalg.qr(np.column_stack([self.sketches[i] for i in near]))
+            if np.linalg.norm(x - q @ (q.conj().T @ x)) <= self.IN_SPAN:
+                return False
+        self.s.append(s)
+        self.sketches.append(x)
+        return True
+
+
 def covered(centres, radii, lo: float, hi: float) -> float:
     """The half-width [1/s] of the strip ``|Re s| < h`` over the frequencies ``[lo, hi]`` [Hz]
     that the discs about ``i centres`` [rad/s] with ``radii`` [1/s] cover: the lowest point over
@@ -264,7 +306,7 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
     max_count = min(MAX_COUNT, 16 * count, max(count, most // 2)) if max_count is None else \
         max_count  # (beyond a quarter of the pencil Arnoldi gains nothing)
     max_count = max(count, min(max_count, most))
-    found, shapes, shifts, radii, shift, k = [], [], [], [], lo, count
+    modes, shapes, shifts, radii, shift, k = ModeSet(K_eff.shape[0]), [], [], [], lo, count
     while True:
         if len(shifts) >= max_shifts:
             raise NoSolutionError(f"the band {lo:g}-{hi:g} Hz needs more than {max_shifts} shifts of up to "
@@ -272,7 +314,7 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
         before = 0.0
         while True:
             try:
-                s, vec, trusted, _, radius = eigenvalues_near(K_eff, C_eff, mass, shift, k, mode_shapes)
+                s, vec, trusted, _, radius = eigenvalues_near(K_eff, C_eff, mass, shift, k, True)
             except NoSolutionError as err:
                 raise NoSolutionError(f"{err}{_overdamped(problem.system.materials)}") from None
             crowded = 0 < before and radius < 1.3 * before  # eigenvalues crowd the shift (heavy damping)
@@ -284,14 +326,13 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
         shifts.append(shift)
         radii.append(radius)
         for j in np.flatnonzero(trusted):
-            if not any(abs(s[j] - x) <= 1e-8 * abs(s[j]) for x in found):
-                found.append(s[j])
-                shapes.append(vec[:, j] if vec is not None else None)
+            if modes.add(s[j], vec[:, j]):
+                shapes.append(vec[:, j] if mode_shapes else None)
         step = math.sqrt(radius**2 - min(reach, 0.8 * radius) ** 2) / (2.0 * math.pi)  # [Hz]
         if shift + step >= hi:
             break
         shift = max(shift + step, shift * (1 + 1e-9) + 1e-9)
-    s = np.array(found)
+    s = np.array(modes.s, dtype=complex)
     inside = (s.imag / (2 * math.pi) >= lo) & (s.imag / (2 * math.pi) <= hi)
     order = np.argsort(-s.real[inside], kind="stable")
     s = s[inside][order]
