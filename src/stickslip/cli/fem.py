@@ -12,7 +12,7 @@ from typing import Annotated, Optional
 import typer
 
 from ..quantities import COMMON, FEM as Q
-from ..errors import ParameterError
+from ..errors import NoSolutionError, ParameterError
 from .common import (Overwrite, Replace, RunOut, XdmfEvery, declared, emit, output_path, overwrite_needs, progress_bar, write_netcdf,
                      xdmf_path, xdmf_snapshots)
 
@@ -62,9 +62,9 @@ def steady(config: Config, json: Json = False,
         print(f"warning: the contact carries no load (normal force {st.pressure.sum():.3g} N/m, at most "
               f"{st.load_floor:.3g}): the body only touches, and which nodes count as active is round-off",
               file=sys.stderr)
-    _emit(st.to_dict(), json, "steady sliding")
-    if out is not None:
+    if out is not None:  # the file first: what is printed is what was kept
         write_netcdf(st.to_xarray(), out)
+    _emit(st.to_dict(), json, "steady sliding")
 
 
 @app.command()
@@ -88,8 +88,14 @@ def cea(config: Config, json: Json = False,
     problem = cfg.problem()
     result = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=xdmf is not None,
                                  complete_below=cfg.complete_below)
+    if not result.s.size:  # nothing to report or write: said, not an empty success
+        raise NoSolutionError(f"no mode of steady sliding has its frequency in cea.band = {list(cfg.band)} Hz (every "
+                              f"mode there with |growth rate| below {result.complete_below:.4g} 1/s would have been "
+                              "found): widen the band")
     if xdmf is not None:
         write_modes_xdmf(problem, result, xdmf)
+    if out is not None:  # the files first: what is printed is what was kept
+        write_netcdf(result.to_xarray(), out)
     data = result.to_dict()
     if not result.complete:
         print(f"warning: modes growing or decaying faster than {result.complete_below:.4g} 1/s may be missing "
@@ -97,8 +103,6 @@ def cea(config: Config, json: Json = False,
     _emit({"modes": data["modes"], "unstable": data["unstable"], "neutral": data["neutral"],
            "complete_below": data["complete_below"], "asked_below": data["asked_below"],
            "shift_count": len(data["shifts"]), "params": data["params"]}, json, "complex eigenvalue analysis")
-    if out is not None:
-        write_netcdf(result.to_xarray(), out)
 
 
 @app.command()

@@ -173,6 +173,7 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
     free = ~fixed[normal_dofs]  # a clamped contact node (a shared corner) is held by the clamp, not the contact
     nearest = max(0.0, float(frames.gap[free].min())) if free.any() else 0.0
     active = (frames.gap <= nearest * (1.0 + 1e-9)) & free  # if nothing touches, the nearest nodes
+    seen = [active.copy()]
     for iteration in range(1, max_iterations + 1):
         try:
             w, p = _solve(Kw, Fw, fixed, normal_dofs[active], tangent_dofs[active], -frames.gap[active], friction,
@@ -194,8 +195,24 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
             return SteadyContact(frames, friction, T @ w, pressure, friction * pressure, active.copy(), iteration,
                                  points[frames.nodes], attrs,
                                  LOAD_FLOOR * max(m.young for m in system.materials.values()) * size)
+        back = [k for k, old in enumerate(seen[:-1]) if np.array_equal(old, new)]
+        if back:
+            raise NoSolutionError(_cycling(seen[back[0]:], friction))
+        seen.append(new.copy())
         active = new
-    raise NoSolutionError(f"the contact active set did not settle in {max_iterations} iterations")
+    raise NoSolutionError(f"the contact active set did not settle in {max_iterations} iterations (at friction "
+                          f"{friction:g}: a lower friction, or a run from the preload, --start rest, shows what the "
+                          "contact does instead)")
+
+
+def _cycling(cycle: list, friction: float) -> str:
+    """Why steady sliding was not found when the active sets come round again."""
+    changing = int(np.sum(np.any(np.array(cycle) != cycle[0], axis=0)))
+    return (f"no steady sliding at friction {friction:g}: the contact's active set cycles through {len(cycle)} sets "
+            f"({changing} contact nodes lift off and come back in turn): the iteration finds no set of nodes "
+            "that both press on the surface and leave the others clear of it. Steady sliding need not exist at "
+            "such friction (it can lift the contact off the surface ahead of the sliding): lower "
+            "contact.friction, or run from the preload (fem run --start rest) to see what the contact does")
 
 
 def _solve(Kw, Fw, fixed, normal, tangent, prescribed, friction, n_dofs):
