@@ -63,7 +63,8 @@ class RunFormat:
     """How one model's run is stored.
 
     ``units`` gives the units of ``length``, ``velocity`` and ``traction`` for the snapshot
-    fields (``U, V, Ud, Vd, P, Q, gap``), ``notes`` long names that replace the generic ones;
+    fields (``U, V, Ud, Vd, P, Q, gap``, and the volume snapshots ``vol_*``), ``notes`` long names that
+    replace the generic ones;
     ``traction_scale(scheme)`` turns reactions per unit mass into the stored ``P, Q``;
     ``params_type`` has ``to_attrs()`` and ``from_attrs(attrs)``; ``scheme(params, *key)``
     rebuilds the scheme from the ``key_attrs`` stored in attrs.
@@ -214,7 +215,8 @@ def run_to_dataset(run) -> xr.Dataset:
         W = "vol_t"  # the volume snapshots' dimension, indexed by time
         for name, (where, kind, long) in _VOLUME.items():
             dim, size = ("dof", run.kernel["u"].size) if where == "dof" else (X, N)
-            data[name] = ((W, dim), col(snp, name, (0, size)), {"units": fmt.units[kind], "long_name": long})
+            data[name] = ((W, dim), col(snp, name, (0, size)), {"units": fmt.units[kind],
+                                                                "long_name": fmt.notes.get(name, long)})
         data["vol_state"] = ((W, X), col(snp, "vol_state", (0, N), np.int8),
                              {"long_name": f"{fmt.node_label} state at the volume snapshot", **STATE_ATTRS})
         coords[W] = (W, col(snp, "vol_t", 0), {"units": fmt.time_units,

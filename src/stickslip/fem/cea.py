@@ -4,7 +4,9 @@ Linearised about steady sliding, every contact node in contact is held normally 
 normal dof is removed) and its friction ``f lambda_n`` acts on its tangential dof, with
 ``lambda_n`` the normal row of ``K w + C w'`` (the lumped mass has no coupling there). The
 tangential rows therefore become ``K_t - f K_n`` and ``C_t - f C_n``: a non-symmetric
-(circulatory) stiffness. Modes ``w e^{s t}`` solve
+(circulatory) stiffness. A friction law that depends on the slip speed adds
+``N_i mu'(V)`` to the damping of each tangential dof in contact (``N_i`` the node's steady
+normal force): a falling law is negative damping. Modes ``w e^{s t}`` solve
 
     (s^2 M + s C_eff + K_eff) w = 0.
 
@@ -85,6 +87,12 @@ def linearised(problem: ContactProblem):
     C_eff = None
     if C is not None:  # in the scheme's frames on the free dofs, as K
         C_eff = effective((scheme.rotation.T @ C @ scheme.rotation).tocsr()[scheme.free][:, scheme.free])
+    slope = problem.friction_slope
+    if slope != 0.0:  # F = N mu(V - w_t'): d F / d w_t' = -N mu'(V), damping N mu'(V) on the tangential dof
+        force = steady.pressure[scheme.contact_nodes][touching]
+        extra = sp.csr_matrix((force * slope, (np.searchsorted(keep, tangent), np.searchsorted(keep, tangent))),
+                              shape=K_eff.shape)
+        C_eff = extra if C_eff is None else (C_eff + extra).tocsr()
     return K_eff, C_eff, scheme.mass[keep], keep
 
 
@@ -203,13 +211,13 @@ class ModeSet:
     """The modes found so far, each eigenvalue with its multiplicity. An eigenvalue found again
     (by an overlapping shift, or as the conjugate of one found) is the same mode only if its
     eigenvector lies in the span of the vectors already found for eigenvalues within
-    ``SAME`` of it; otherwise it is one more member of a repeated eigenvalue (the doublets of a
+    ``SAME`` (relative) of it; otherwise it is one more member of a repeated eigenvalue (the doublets of a
     symmetric body, which friction splits). The spans are compared in a fixed count sketch
     of ``SKETCH`` rows (each dof added, with a sign, to one row: distances kept to some 5 %,
     memory that does not grow with the mesh)."""
 
     #: Eigenvalues within this of each other (relative) may be one mode found twice.
-    SAME = 1e-8
+    SAME = 1e-6
     #: A vector whose part outside the span of its cluster is below this (relative) is in it.
     IN_SPAN = 1e-6
     SKETCH = 512

@@ -23,6 +23,10 @@
     group = "bottom"                # the boundary group in contact
     friction = 0.4                  # Coulomb coefficient (kinetic)
     static_friction = 0.5           # static coefficient >= friction (optional; default: friction)
+    law = "stribeck"                # optional: friction falling with the slip speed v_r, from
+    stribeck_speed = 0.1            # static_friction to friction, mu = f_d + (f_s - f_d) exp(-v_r / v_s) [m/s];
+                                    # or law = "linear-weakening", weakening = tau [s/m]: mu = f_d (1 - tau v_r)
+                                    # (steady sliding and the CEA; an explicit run takes Coulomb friction)
 
     [[spring]]                      # springs from a group's nodes to the ground (optional, repeatable)
     group = "left"
@@ -69,7 +73,7 @@ from .surfaces import MAX_SPEED, RigidCylinder, RigidFlat, contact_frames
 __all__ = ["FemConfig", "load_config"]
 
 _KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "cea", "spring", "load"},
-          "contact": {"group", "friction", "static_friction"},
+          "contact": {"group", "friction", "static_friction", "law", "stribeck_speed", "weakening"},
           "surface": {"kind", "radius", "omega", "center", "body_inside", "point", "normal", "velocity",
                       "interference"},
           "cea": {"band", "count", "complete_below"}}
@@ -94,6 +98,7 @@ class FemConfig:
     loads: tuple = ()
     body: object = field(default=None, repr=False, compare=False)  # the mesh as read while checking
     complete_below: float | None = None  # [cea] complete_below [1/s] (None: the default of complex_eigenvalues)
+    law: object = None  # a friction law of stickslip.friction ([contact] law), or None: Coulomb
 
     def problem(self) -> ContactProblem:
         """Assemble the body and set the contact up (the mesh is read again if not kept)."""
@@ -102,6 +107,8 @@ class FemConfig:
             body.group(name, "clamped" if name in self.clamped else "contact.group")
         frames = contact_frames(body, self.group, self.surface)
         system = assemble(body, self.material, self.springs, self.loads)
+        if self.law is not None:
+            return ContactProblem(system, frames, clamped=self.clamped, law=self.law)
         return ContactProblem(system, frames, self.friction, self.clamped, self.static_friction)
 
 
@@ -187,6 +194,7 @@ def load_config(path) -> FemConfig:
         if None not in (static, friction) and static < friction:
             problems.append(f"contact.static_friction = {static!r} must be >= contact.friction = {friction!r}")
             static = None
+    law = _law(problems, c, friction, static)
     springs = _springs(problems, data.get("spring", []))
     loads = _loads(problems, data.get("load", []))
     surface = _surface(problems, data.get("surface", {}) if isinstance(data.get("surface", {}), dict) else {},
@@ -221,7 +229,35 @@ def load_config(path) -> FemConfig:
     made = {name: Material(e, nu, rho, plane, a, b) for name, (e, nu, rho, plane, a, b) in materials.items()}
     material = made[""] if list(made) == [""] else made
     return FemConfig(path, mesh_path, tuple(clamped), material, group, friction, surface, tuple(band), count,
-                     static, springs, loads, body, below)
+                     static, springs, loads, body, below, law)
+
+
+def _law(problems, c: dict, friction, static):
+    """The friction law of ``[contact] law`` (None without one): ``friction`` is its kinetic
+    coefficient f_d, ``static_friction`` its static one f_s (required), ``stribeck_speed`` or
+    ``weakening`` its own parameter."""
+    from ..friction import make_law
+
+    name = c.get("law")
+    extra = [k for k in ("stribeck_speed", "weakening") if k in c]
+    if name is None:
+        problems += [f"contact.{k} needs contact.law (stribeck or linear-weakening)" for k in extra]
+        return None
+    choices = Q["law"].choices
+    if name not in choices:
+        problems.append(f"contact.law = {_toml(name)} must be one of {', '.join(choices)}")
+        return None
+    needs = {"coulomb": None, "linear-weakening": "weakening", "stribeck": "stribeck_speed"}[name]
+    problems += [f"contact.{k} must be left out with contact.law = {name!r}" for k in extra if k != needs]
+    if static is None:
+        problems.append(f"contact.static_friction is missing (the static coefficient f_s of contact.law = {name!r})")
+    value = None
+    if needs is not None:
+        value = _number(problems, f"contact.{needs}", c.get(needs))
+    if None in (friction, static) or (needs is not None and value is None):
+        return None
+    return make_law(name, fs=static, fd=friction, **({"vs": value} if needs == "stribeck_speed" else
+                                                     {"tau": value} if needs == "weakening" else {}))
 
 
 def _materials(problems, raw) -> dict:

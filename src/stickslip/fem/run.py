@@ -83,7 +83,10 @@ def preload_body(scheme: BodyScheme, velocity=(0.0, 0.0)) -> BodyInitial:
 _FORMAT = RunFormat(
     units={"length": "m", "velocity": "m/s", "traction": "N/m"},
     notes={"P": "normal contact force on the node per unit thickness",
-           "Q": "friction force on the node per unit thickness, along the surface motion"},
+           "Q": "friction force on the node per unit thickness, along the surface motion",
+           **{f"vol_{x}": f"{what} of every free dof (volume snapshot) in the scheme's frames: normal and tangent "
+                          "at the contact nodes, x and y elsewhere (BodyScheme.cartesian gives x and y everywhere)"
+              for x, what in (("u", "displacement"), ("v", "velocity"))}},
     energy_units="J/m", energy_note="energy of the deviation from steady sliding (per unit thickness)",
     node_label="contact node",
     source="general 2-D body, explicit beta2 scheme [22] with multipliers [23] on sparse matrices (stickslip.fem)",
@@ -127,6 +130,10 @@ def integrate_body(problem: ContactProblem, t_end: float | None = None, *, trans
     set `BodyScheme`; the books and ``checkpoint`` behave as in `stickslip.brake.fem.integrate_fem`;
     ``volume_every`` [transits] keeps volume snapshots for `stickslip.fem.paraview.write_run_xdmf`.
     """
+    if getattr(problem, "law", None) is not None and problem.law.name != "coulomb":
+        raise ParameterError("contact.law", problem.law.name, "coulomb in an explicit run (a law that depends on the "
+                             "slip speed is taken by steady sliding and the CEA; the explicit scheme's nodes stick "
+                             "and slip with Coulomb's static and kinetic coefficients)")
     scheme = BodyScheme(problem, beta2, courant, time_step)
     initial = perturbed_steady_body(scheme) if initial is None else initial
     if not isinstance(initial, BodyInitial) or initial.u.shape != (scheme.free.size,):

@@ -31,6 +31,7 @@ from .. import validation as check
 from ..quantities import FEM as Q
 from ..contact import ExplicitScheme
 from ..errors import ParameterError
+from ..friction import FrictionLaw
 from .assembly import BodySystem
 from .static import SteadyContact, frame_rotation, problem_attrs, steady_contact
 from .surfaces import ContactFrames
@@ -45,19 +46,29 @@ MAX_OVERDAMPING = 100.0
 class ContactProblem:
     """A body (``system``), its contact ``frames``, the kinetic Coulomb coefficient
     ``friction``, the names of its ``clamped`` boundary groups and the static coefficient
-    ``static_friction >= friction`` (None: the same, plain Coulomb)."""
+    ``static_friction >= friction`` (None: the same, plain Coulomb).
+
+    Or a friction ``law`` that depends on the slip speed (`stickslip.friction`: Stribeck,
+    linear weakening, a user's law), instead of ``friction`` and ``static_friction``: steady
+    sliding slips at the surface's speed ``V`` (the same at every contact node of a rigid
+    surface), so ``friction`` becomes ``law.kinetic(V)`` and ``static_friction``
+    ``law.static``; the CEA adds the slope ``law.slope(V)`` (a falling law is negative damping,
+    `stickslip.fem.cea.linearised`). An explicit run takes Coulomb friction only, for now."""
 
     system: BodySystem
     frames: ContactFrames
     friction: float = 0.0
     clamped: tuple = ()
     static_friction: float | None = None
+    law: FrictionLaw | None = None
 
     def __post_init__(self):
         if not isinstance(self.system, BodySystem):
             raise ParameterError("system", self.system, "a BodySystem (see assemble)")
         if not isinstance(self.frames, ContactFrames):
             raise ParameterError("frames", self.frames, "ContactFrames (see contact_frames)")
+        if self.law is not None:
+            self._from_law()
         object.__setattr__(self, "friction", Q.check("friction", self.friction))
         fs = self.friction if self.static_friction is None else self.static_friction
         object.__setattr__(self, "static_friction", check.at_least("static_friction", Q.check("static_friction", fs), self.friction, "friction"))
@@ -82,6 +93,32 @@ class ContactProblem:
             raise ParameterError("clamped", list(self.clamped), f"groups that leave the contact line free (they hold "
                                  f"{len(self.frames.nodes) - free} of its {len(self.frames.nodes)} nodes: a clamped "
                                  "node is held by the clamp, not the contact)")
+
+    def _from_law(self) -> None:
+        """``friction`` and ``static_friction`` from ``law`` at the surface's speed."""
+        law = self.law
+        if not isinstance(law, FrictionLaw):
+            raise ParameterError("law", law, "a friction law of stickslip.friction (Stribeck, LinearWeakening, "
+                                 "UserLaw, Coulomb) or None")
+        if self.friction != 0.0 or self.static_friction is not None:
+            raise ParameterError("friction", self.friction, "left out with a law (the law gives the kinetic "
+                                 "coefficient at the sliding speed, and the static one)", also=("law",))
+        speed = np.asarray(self.frames.speed, dtype=float)
+        if speed.size == 0 or np.ptp(speed) > 1e-9 * np.abs(speed).max() or not speed.max() > 0:
+            raise ParameterError("frames", "of a surface at rest or of uneven speed", "a surface moving at one "
+                                 "speed along the contact line (the law is taken at it)", also=("law",))
+        if speed.max() >= law.max_speed:
+            raise ParameterError("law", law, f"a law valid at the sliding speed {speed.max():.6g} m/s (this one up "
+                                 f"to {law.max_speed:.6g} m/s)")
+        object.__setattr__(self, "friction", float(law.kinetic(float(speed.max()))))
+        object.__setattr__(self, "static_friction", float(law.static))
+
+    @property
+    def friction_slope(self) -> float:
+        """``d mu / d v_r`` [s/m] at the sliding speed (0 without a law: Coulomb)."""
+        if self.law is None:
+            return 0.0
+        return float(self.law.slope(float(np.max(self.frames.speed))))
 
     @cached_property
     def fixed(self) -> np.ndarray:
@@ -146,9 +183,11 @@ class ContactProblem:
         return h.hexdigest()
 
     def to_attrs(self) -> dict:
-        """The problem as netCDF attributes (`stickslip.fem.static.problem_attrs`) and its digest."""
+        """The problem as netCDF attributes (`stickslip.fem.static.problem_attrs`) and its digest;
+        with a law, its description and slope."""
+        law = {} if self.law is None else {"friction_law": repr(self.law), "friction_slope": self.friction_slope}
         return {**problem_attrs(self.system, self.frames, self.friction, self.clamped, self.static_friction),
-                "problem_sha256": self.digest}
+                **law, "problem_sha256": self.digest}
 
     def to_dict(self) -> dict:
         return self.to_attrs()

@@ -25,6 +25,16 @@ FEM = Domain("fem", units="SI", quantities=[
     Q("friction", "1", "Coulomb friction coefficient (kinetic)", "[0, 10]", symbol="f", why=FRICTION_WHY),
     Q("static_friction", "1", "static Coulomb coefficient (at least the kinetic one)", "[0, 10]", symbol="f_s",
       why=FRICTION_WHY),
+    Q("law", "", "friction law of the contact (friction and static_friction are its f_d and f_s)",
+      choices=("coulomb", "linear-weakening", "stribeck")),
+    Q("stribeck_speed", "m/s", "Stribeck speed v_s of the stribeck law", "[1e-9, 1e4]", symbol="v_s",
+      why="of mu = f_d + (f_s - f_d) exp(-|v_r|/v_s): measured Stribeck speeds lie between micrometres and "
+          "decimetres per second"),
+    Q("weakening", "s/m", "weakening rate tau of the linear-weakening law", "[0, 1e9]", symbol="tau",
+      why="mu = f_d (1 - tau |v_r|) loses all its friction at the slip speed 1/tau: 1e9 s/m is a nanometre per "
+          "second"),
+    Q("friction_law", "", "the friction law of the contact and its parameters"),
+    Q("friction_slope", "s/m", "slope d mu / d v_r of the friction law at the sliding speed"),
     Q("radius", "m", "radius of the rigid cylinder", "[1e-6, 1e6]"),
     Q("omega", "rad/s", "angular speed of the rigid cylinder (> 0: counter-clockwise)", "[-1e7, 1e7]",
       why="the surface speed, |omega| radius, at most 1e4 m/s"),

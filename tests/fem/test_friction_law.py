@@ -1,0 +1,106 @@
+"""Friction that depends on the slip speed on a body (issue 24): steady sliding at the law's
+kinetic coefficient at the belt speed, and the CEA's slope term (a falling law is negative
+damping) against the 1-DOF oscillator's linear analysis: a stiff block (E = 1e12 Pa, its
+rigid mode on the drive spring far below its elastic ones) on a belt with Rayleigh damping
+alpha has the eigenvalue of m x'' + (alpha m + N mu'(V)) x' + k x = 0, and loses stability
+where alpha m + N mu'(V) = 0. Config keys and refusals."""
+
+import json
+import math
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from stickslip.cli import run
+from stickslip.errors import ParameterError
+from stickslip.fem import ContactProblem, Material, RigidFlat, assemble, contact_frames, read_body
+from stickslip.fem.cea import complex_eigenvalues
+from stickslip.fem.config import load_config
+from stickslip.friction import Stribeck
+
+from .test_examples import EXAMPLES
+
+M, K, N, ALPHA = 1.0, 9.5e5, 1.0e5, 100.0  # the block example's mass, drive, load per metre; damping [1/s]
+LAW = Stribeck(0.6, 0.4, 0.2)
+
+
+@pytest.fixture(scope="module")
+def block(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("block")
+    shutil.copy(EXAMPLES / "block_on_belt" / "block.toml", folder)
+    subprocess.run([sys.executable, str(EXAMPLES / "block_on_belt" / "mesh.py"), "block.msh"], cwd=folder, check=True)
+    return folder
+
+
+def _problem(block, speed):
+    cfg = load_config(block / "block.toml")
+    body = read_body(block / "block.msh")
+    system = assemble(body, Material(1e12, 0.3, 1000.0, alpha=ALPHA), cfg.springs, cfg.loads)
+    surface = RigidFlat((0.0, 0.0), (0.0, 1.0), (speed, 0.0))
+    return ContactProblem(system, contact_frames(body, "bottom", surface), law=LAW)
+
+
+def _oscillator(speed):
+    """The eigenvalue (Im > 0) of m x'' + (alpha m + N mu'(V)) x' + k x = 0."""
+    c = ALPHA * M + N * LAW.slope(speed)
+    return complex(-c / (2 * M), math.sqrt(K / M - (c / (2 * M)) ** 2))
+
+
+@pytest.mark.parametrize("speed", [0.8, 1.2, 1.6])
+def test_a_stiff_block_on_a_falling_law_has_the_oscillators_eigenvalue(block, speed):
+    s = complex_eigenvalues(_problem(block, speed), (0.0, 400.0), count=10).s
+    exact = _oscillator(speed)
+    assert len(s) == 1 and abs(s[0] - exact) <= 1e-4 * abs(exact), (s, exact)
+
+
+def test_the_block_loses_stability_where_the_oscillators_linear_analysis_says(block):
+    """alpha m + N mu'(V*) = 0: V* = v_s ln(N (f_s - f_d) / (v_s alpha m)) = 1.3816 m/s; growing
+    1 % below it, decaying 1 % above."""
+    critical = LAW.vs * math.log(N * (LAW.fs - LAW.fd) / (LAW.vs * ALPHA * M))
+    below, above = (complex_eigenvalues(_problem(block, v), (0.0, 400.0), count=10).s[0].real
+                    for v in (0.99 * critical, 1.01 * critical))
+    assert below > 0 > above
+
+
+def test_steady_sliding_slips_at_the_laws_kinetic_coefficient(block, capsys):
+    config = block / "block.toml"
+    text = config.read_text()
+    config.write_text(text.replace("static_friction = 0.6", 'static_friction = 0.6\nlaw = "stribeck"\n'
+                                   "stribeck_speed = 0.2"))
+    try:
+        assert run(["fem", "steady", str(config), "--json"]) == 0
+        data = json.loads(capsys.readouterr().out)
+        assert data["friction_force"] == pytest.approx(LAW.kinetic(1.0) * data["normal_force"], rel=1e-12)
+        assert run(["fem", "run", str(config), "--transits", "1"]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "contact.law" in err and "coulomb in an explicit run" in err
+    finally:
+        config.write_text(text)
+
+
+@pytest.mark.parametrize("edit, words", [
+    ('law = "stribeck"', ["contact.stribeck_speed is missing"]),
+    ('law = "sliding"', ["contact.law = 'sliding' must be one of coulomb, linear-weakening, stribeck"]),
+    ("stribeck_speed = 0.2", ["contact.stribeck_speed needs contact.law"]),
+    ('law = "stribeck"\nstribeck_speed = 0.2\nweakening = 1.0', ["contact.weakening must be left out"]),
+    ('law = "stribeck"\nstribeck_speed = -1.0', ["contact.stribeck_speed = -1.0 must be"]),
+])
+def test_a_law_written_wrong_is_named_in_the_configs_one_error(block, edit, words):
+    config = block / "bad.toml"
+    config.write_text((block / "block.toml").read_text().replace("static_friction = 0.6",
+                                                                 "static_friction = 0.6\n" + edit))
+    with pytest.raises(ParameterError) as err:
+        load_config(config)
+    for w in words:
+        assert w in str(err.value), str(err.value)
+
+
+def test_a_law_with_a_coefficient_beside_it_is_refused(block):
+    problem = _problem(block, 1.0)
+    with pytest.raises(ParameterError) as err:
+        ContactProblem(problem.system, problem.frames, 0.4, law=LAW)
+    assert err.value.name == "friction"
+    assert np.isclose(problem.friction, LAW.kinetic(1.0)) and problem.static_friction == 0.6
