@@ -35,6 +35,30 @@ def test_sweep_resumes_after_a_kill(tmp_path):
         run_sweep(_square, {"x": [1, 2]}, store, outputs={"sum": "1"}, scheduler="synchronous")
 
 
+def _powers(x, y):
+    CALLS.append((x, y))
+    if (x, y) == (2, 20) and CALLS.count((2, 20)) == 1:
+        raise KeyboardInterrupt  # killed in its second batch
+    return {"powers": [x, x * x, x * y], "sum": x + y}
+
+
+def test_an_output_of_several_numbers_per_point_is_stored_and_resumed(tmp_path):
+    """``(units, size)``: a row per point along ``<name>_index``, resumed like the others."""
+    store, outputs = tmp_path / "v.zarr", {"powers": ("1", 3), "sum": "1"}
+    CALLS.clear()
+    with pytest.raises(KeyboardInterrupt):
+        run_sweep(_powers, {"x": [1, 2], "y": [10, 20]}, store, outputs=outputs, batch=2, scheduler="synchronous")
+    before = len(CALLS)
+    ds = run_sweep(_powers, {"x": [1, 2], "y": [10, 20]}, store, outputs=outputs, batch=2, scheduler="synchronous")
+    assert ds["powers"].dims == ("x", "y", "powers_index") and ds["done"].all()
+    expected = [[[x, x * x, x * y] for y in (10, 20)] for x in (1, 2)]
+    assert np.array_equal(ds["powers"].values, expected) and np.array_equal(ds["sum"].values, [[11, 21], [12, 22]])
+    assert len(CALLS) - before == 2  # the killed batch again, not the first
+    with pytest.raises(ParameterError, match="3 numbers"):
+        run_sweep(lambda x: {"powers": [x], "sum": x}, {"x": [1.0]}, tmp_path / "w.zarr", outputs=outputs,
+                  scheduler="synchronous")
+
+
 def test_a_store_computed_with_other_fixed_parameters_is_refused(tmp_path):
     store = tmp_path / "s.zarr"
     axes, outputs = {"x": [1, 2], "y": [10]}, {"sum": "1", "product": "1"}

@@ -220,6 +220,31 @@ def plot_branch(ds, fig: Figure | None = None) -> Figure:
     return fig
 
 
+def plot_stability_map(ds, fig: Figure | None = None) -> Figure:
+    """A CEA sweep with tracked modes (`stickslip.fem.tracking.Tracked.to_xarray`): growth rate
+    and frequency of every branch against the swept value, its unstable stretches in red and
+    thick, each critical value a circle."""
+    fig, (ax1, ax2) = new_figure(fig, 2, size=(5.5, 5.6))
+    x = ds["value"].values
+    key = str(ds.attrs.get("swept_key", "value"))
+    units = ds["value"].attrs.get("units", "1")
+    for b in range(ds.sizes["branch"]):
+        g, f = ds["growth_rate"].values[b], ds["frequency"].values[b] / 1e3
+        up = ds["growing"].values[b].astype(bool)
+        for ax, y in ((ax1, g), (ax2, f)):
+            ax.plot(x, y, color="0.6", lw=0.8)
+            ax.plot(x, np.where(up, y, np.nan), color="tab:red", lw=2.2)
+        c = float(ds["critical"].values[b])
+        if np.isfinite(c):
+            ax1.plot([c], [0.0], "o", mfc="none", mec="k", ms=5)
+            ax2.plot([c], [float(ds["critical_frequency"].values[b]) / 1e3], "o", mfc="none", mec="k", ms=5)
+    ax1.axhline(0.0, color="k", lw=0.5)
+    label = f"{key} [{units}]" if units not in ("", "1") else key
+    ax1.set(ylabel="growth rate [1/s]", title="tracked modes: unstable in red, critical values circled")
+    ax2.set(xlabel=label, ylabel="frequency [kHz]")
+    return fig
+
+
 def plot_oscillator_map(ds, regimes: dict, fig: Figure | None = None) -> Figure:
     """A regime map of the oscillator over its two sweep axes (``regime`` codes named by ``regimes``)."""
     from matplotlib.colors import BoundaryNorm, ListedColormap

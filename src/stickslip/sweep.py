@@ -44,27 +44,47 @@ SWEEP_FORMAT = "stickslip-sweep-1"
 NOT_COMPUTED = -1
 
 
-def _call(func, point: dict, names: Sequence[str]) -> list[float]:
+def _call(func, point: dict, names: Sequence[str], sizes: Mapping[str, int] | None = None) -> list:
     result = func(**point)
     missing = [n for n in names if n not in result]
     if missing:
         raise ParameterError("func", getattr(func, "__name__", func), f"a function returning the outputs {missing}")
-    return [float(result[n]) for n in names]
+    sizes = sizes or {}
+    out = []
+    for n in names:
+        if n not in sizes:
+            out.append(float(result[n]))
+            continue
+        value = np.asarray(result[n], dtype=float).ravel()
+        if value.size != sizes[n]:
+            raise ParameterError("func", getattr(func, "__name__", func), f"a function returning {sizes[n]} numbers "
+                                 f"for the output {n!r} (it returned {value.size})")
+        out.append(value)
+    return out
 
 
-def _variable(dims: tuple, shape: tuple, spec) -> tuple:
-    """An output's empty array: NaN floats with ``units``, or integer codes (``{meaning: code}``)."""
+def _vector(spec) -> bool:
+    """An output of ``size`` numbers per point: ``(units, size)``."""
+    return isinstance(spec, tuple) and len(spec) == 2 and isinstance(spec[0], str) and \
+        isinstance(spec[1], (int, np.integer)) and not isinstance(spec[1], bool) and spec[1] >= 1
+
+
+def _variable(dims: tuple, shape: tuple, spec, name: str = "") -> tuple:
+    """An output's empty array: NaN floats with ``units``, integer codes (``{meaning: code}``), or
+    ``(units, size)``: NaN floats along one more dimension ``<name>_index`` of ``size``."""
     if isinstance(spec, Mapping):
         codes = {"not_computed": NOT_COMPUTED, **spec}
         return dims, np.full(shape, NOT_COMPUTED, np.int8), {**flag_attrs(codes), "comment": (
             f"{NOT_COMPUTED} where the point is not computed yet (done is 0)")}
     note = "NaN where the point is not computed yet (done is 0) or the output does not apply to it"
+    if _vector(spec):
+        return (*dims, f"{name}_index"), np.full((*shape, int(spec[1])), np.nan), {"units": spec[0], "comment": note}
     return dims, np.full(shape, np.nan), {"units": spec, "comment": note}
 
 
 def _create(store: Path, axes: dict, outputs: dict, attrs: dict, title: str, model: str) -> None:
     shape = tuple(len(v) for v in axes.values())
-    data = {name: _variable(tuple(axes), shape, spec) for name, spec in outputs.items()}
+    data = {name: _variable(tuple(axes), shape, spec, name) for name, spec in outputs.items()}
     for name, (_, _, var_attrs) in data.items():  # named by the vocabulary of the model, else by the output's name
         var_attrs.setdefault("long_name", (lookup(name, model) or (None, name))[1])
     data["done"] = (tuple(axes), np.zeros(shape, np.int8), {"units": "1", "long_name": "point computed (1) or not (0)"})
@@ -160,7 +180,8 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
     outputs : mapping
         Output name -> units (floats, NaN until computed), or -> ``{meaning: code}`` for an
         output of integer codes (stored as ``int8`` with ``flag_values``/``flag_meanings``;
-        `NOT_COMPUTED` until computed).
+        `NOT_COMPUTED` until computed), or -> ``(units, size)`` for ``size`` floats per point
+        (one more dimension, ``<name>_index``; the function returns an array).
     batch : int
         Points per checkpoint.
     scheduler : str or callable
@@ -195,9 +216,9 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
         raise ParameterError("axes", {k: len(v) for k, v in axes.items()}, f"a grid of at most {MAX_POINTS:.0e} points "
                              f"(this one has {points:.3g}: split the study, or run it on a cluster)")
     if not isinstance(outputs, Mapping) or not outputs or "done" in outputs or \
-            not all(isinstance(k, str) and isinstance(u, (str, Mapping)) for k, u in outputs.items()):
-        raise ParameterError("outputs", outputs, "a non-empty mapping of output names (not 'done') to units "
-                             "or to {meaning: code}")
+            not all(isinstance(k, str) and (isinstance(u, (str, Mapping)) or _vector(u)) for k, u in outputs.items()):
+        raise ParameterError("outputs", outputs, "a non-empty mapping of output names (not 'done') to units, "
+                             "to {meaning: code} or to (units, size)")
     outputs = dict(outputs)
     if not isinstance(store, (str, os.PathLike)):
         raise ParameterError("store", store, "a path (str or os.PathLike) of a Zarr directory")
@@ -229,6 +250,7 @@ def _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attr
         _create(store, axes, outputs, attrs, title, model)
     group = _group(store, "r+")
     names = list(outputs)
+    sizes = {name: int(spec[1]) for name, spec in outputs.items() if _vector(spec)}
     shape = tuple(len(v) for v in axes.values())
     todo = [idx for idx in itertools.product(*(range(n) for n in shape)) if not group["done"][idx]]
     total, finished = math.prod(shape), math.prod(shape) - len(todo)
@@ -243,16 +265,20 @@ def _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attr
         for start in range(0, len(todo), batch):
             chunk = todo[start:start + batch]
             points = [{k: axes[k][i] for k, i in zip(axes, idx)} for idx in chunk]
-            values = dask.compute(*[dask.delayed(_call)(func, p, names) for p in points], scheduler=scheduler,
-                                  **extra)
+            values = dask.compute(*[dask.delayed(_call)(func, p, names, sizes) for p in points],
+                                  scheduler=scheduler, **extra)
             where = tuple(np.array(c) for c in zip(*chunk))
             new = {name: group[name][...] for name in [*names, "done"]}
             for j, name in enumerate(names):
-                new[name][where] = [v[j] for v in values]
+                new[name][where] = np.array([v[j] for v in values])
             new["done"][where] = True
             group.attrs["pending_sha256"] = _digest(group, new)
             for name in names:
-                group[name].vindex[where] = new[name][where]
+                if name in sizes:  # a row per point
+                    for idx in chunk:
+                        group[name][idx] = new[name][idx]
+                else:
+                    group[name].vindex[where] = new[name][where]
             group["done"].vindex[where] = True  # last: a batch counts only once all outputs are in
             group.attrs["content_sha256"] = group.attrs["pending_sha256"]
             zarr.consolidate_metadata(str(store))

@@ -75,12 +75,26 @@ def cea(config: Config, json: Json = False,
         xdmf: Annotated[Optional[Path], typer.Option(help=(
             "Write the mode shapes for ParaView to this XDMF file (.xdmf, data in the .h5 beside it): one step per "
             "mode, most unstable first; lengths in m, growth rate [1/s], frequency [Hz]."))] = None,
-        overwrite: Replace = False):
+        overwrite: Replace = False,
+        sweep: Annotated[Optional[str], typer.Option(help=(
+            "Sweep a number of the config, KEY=LO:HI:N (e.g. friction=0:0.8:41, material[1].young=1e9:1e10:10): the "
+            "CEA at every value, each mode tracked along the sweep by its shape (MAC), the critical value where "
+            "it turns unstable or stable located by bisection, its coupling partner. --out gets the tracked "
+            "branches (.nc); needs --store."))] = None,
+        store: Annotated[Optional[Path], typer.Option(help=(
+            "With --sweep: the sweep's checkpoint, a Zarr store (.zarr); resumed if it holds this sweep."))] = None,
+        workers: Annotated[Optional[int], declared(COMMON["workers"], "--workers", "With --sweep; default: all "
+                                                                                   "cores.")] = None,
+        plot: Annotated[Optional[Path], typer.Option(help=(
+            "With --sweep: write the stability map (growth rate and frequency of every branch against the swept "
+            "value, unstable stretches marked) to this PNG file."))] = None):
     """Complex eigenvalue analysis of steady sliding over [cea] band: growth rate [1/s] and
     frequency [Hz] of every mode found, most unstable first."""
     from ..fem import complex_eigenvalues
     from ..fem.paraview import write_modes_xdmf
 
+    if sweep is not None or store is not None or plot is not None or workers is not None:
+        return _cea_sweep(config, json, out, xdmf, overwrite, sweep, store, workers, plot)
     overwrite_needs(overwrite, "--out or --xdmf", out, xdmf)
     out = output_path("--out", out, ".nc", overwrite)
     xdmf = xdmf_path(xdmf, overwrite)
@@ -103,6 +117,52 @@ def cea(config: Config, json: Json = False,
     _emit({"modes": data["modes"], "unstable": data["unstable"], "neutral": data["neutral"],
            "complete_below": data["complete_below"], "asked_below": data["asked_below"],
            "shift_count": len(data["shifts"]), "params": data["params"]}, json, "complex eigenvalue analysis")
+
+
+def _cea_sweep(config, json, out, xdmf, overwrite, sweep, store, workers, plot):
+    """`fem cea --sweep`: the tracked sweep (`stickslip.fem.tracking.cea_sweep`)."""
+    import numpy as np
+
+    from ..errors import MISSING
+    from ..fem.config import load_config, read_toml, resolve_key
+    from ..fem.tracking import cea_sweep
+    from .common import axis, output_folder
+
+    if sweep is None:
+        raise ParameterError("--sweep", MISSING, "given with --store, --workers or --plot (KEY=LO:HI:N)")
+    if xdmf is not None:
+        raise ParameterError("--xdmf", str(xdmf), "left out with --sweep (the mode shapes of one CEA)")
+    if store is None:
+        raise ParameterError("--store", MISSING, "given with --sweep: the sweep's checkpoint (a .zarr folder)")
+    overwrite_needs(overwrite, "--out, --store or --plot", out, store, plot)
+    out = output_path("--out", out, ".nc", overwrite)
+    plot = output_path("--plot", plot, ".png", overwrite)
+    store = output_folder("--store", store, ".zarr")
+    name, values = axis("--sweep", sweep)
+    key = resolve_key(read_toml(config), name, "--sweep")
+    try:  # every value a valid config, checked before any work
+        for value in values:
+            load_config(config, {key: value})
+    except ParameterError as err:
+        raise ParameterError("--sweep", sweep, f"values of {key} each valid in the config: at {value:g}, "
+                             f"{err.allowed}") from None
+    if any(b <= a for a, b in zip(values, values[1:])):
+        raise ParameterError("--sweep", sweep, "LO < HI (the values increase)")
+    with progress_bar("CEA sweep") as tick:
+        tracked = cea_sweep(config, key, values, store, workers=workers, progress=tick, overwrite=overwrite)
+    ds = tracked.to_xarray()
+    if out is not None:
+        write_netcdf(ds, out)
+    if plot is not None:
+        from .. import plotting
+
+        plotting.save(plotting.plot_stability_map(ds), plot)
+    critical = [{"branch": int(b), "critical": float(tracked.critical[b]),
+                 "critical_frequency": float(tracked.critical_frequency[b]), "turn": int(tracked.turn[b]),
+                 "partner": int(tracked.partner[b])} for b in np.flatnonzero(np.isfinite(tracked.critical))]
+    critical.sort(key=lambda c: c["critical"])
+    _emit({"swept_key": key, "sweep_points": len(values), "branches": len(tracked.s), "critical": critical,
+           "store": str(store)}, json, "CEA sweep")
 
 
 @app.command()

@@ -56,6 +56,7 @@
 from __future__ import annotations
 
 import math
+import re
 import tomllib
 
 import numpy as np
@@ -70,7 +71,7 @@ from .boundary import LIMIT, Load, Spring
 from .scheme import ContactProblem
 from .surfaces import MAX_SPEED, RigidCylinder, RigidFlat, contact_frames
 
-__all__ = ["FemConfig", "load_config"]
+__all__ = ["FemConfig", "load_config", "numeric_keys", "read_toml", "resolve_key"]
 
 _KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "cea", "spring", "load"},
           "contact": {"group", "friction", "static_friction", "law", "stribeck_speed", "weakening"},
@@ -142,11 +143,22 @@ def _pair(problems, where, value, name=None):
         return None
 
 
-def load_config(path) -> FemConfig:
-    """Read and check a config; every problem found goes into one `ParameterError`."""
+def load_config(path, overrides=None) -> FemConfig:
+    """Read and check a config; every problem found goes into one `ParameterError`.
+    ``overrides``: ``{key: number}`` replacing numbers of the file before the checks, keys as
+    `numeric_keys` names them (``contact.friction``, ``material[1].young``, ``load[0].pressure``)."""
+    path = Path(path)
+    data = read_toml(path)
+    if overrides:
+        data = _with(data, overrides)
+    return _checked(path, data)
+
+
+def read_toml(path) -> dict:
+    """The TOML of a config file, or one `ParameterError` naming it."""
     path = Path(path)
     try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        return tomllib.loads(path.read_text(encoding="utf-8"))
     except OSError as err:
         raise ParameterError("config", str(path), f"a readable TOML file ({err.strerror})") from None
     except UnicodeDecodeError as err:
@@ -157,6 +169,62 @@ def load_config(path) -> FemConfig:
     except RecursionError:
         raise ParameterError("config", str(path), "a TOML file without deeply nested arrays or tables (a config "
                              "nests two levels)") from None
+
+
+_KEY = re.compile(r"^([a-z_]+)(?:\[(\d+)\])?\.([a-z_]+)$")
+
+
+def numeric_keys(data: dict) -> list[str]:
+    """The keys of a config (its TOML ``data``) that hold one number and may be swept: those
+    written, and the contact's coefficients (default 0)."""
+    out = ["contact.friction", "contact.static_friction"]
+    for section, value in data.items():
+        if section == "cea":  # how the modes are searched for, not the problem
+            continue
+        tables = [(section, value)] if isinstance(value, dict) else \
+            [(f"{section}[{i}]", t) for i, t in enumerate(value)] if isinstance(value, list) else []
+        for where, table in tables:
+            if not isinstance(table, dict):
+                continue
+            for key, x in table.items():
+                q = Q.get(key)
+                if q is not None and q.range is not None and not q.choices and isinstance(x, (int, float)) and \
+                        not isinstance(x, bool) and f"{where}.{key}" not in out:
+                    out.append(f"{where}.{key}")
+    return out
+
+
+def resolve_key(data: dict, name: str, option: str = "key") -> str:
+    """The full key (`numeric_keys`) that ``name`` means: itself, or the one key it ends
+    (``friction`` -> ``contact.friction``, ``young`` -> ``material.young`` on one material)."""
+    keys = numeric_keys(data)
+    if name in keys:
+        return name
+    found = [k for k in keys if k.split(".")[-1] == name]
+    if len(found) == 1:
+        return found[0]
+    raise ParameterError(option, name, f"a key of the config holding one number ({', '.join(keys)})"
+                         + (f"; {name!r} is more than one of them: name it in full" if found else ""))
+
+
+def _with(data: dict, overrides) -> dict:
+    """``data`` with the numbers of ``overrides`` in place (a copy)."""
+    import copy
+
+    data = copy.deepcopy(data)
+    keys = numeric_keys(data)
+    for key, value in dict(overrides).items():
+        match = _KEY.match(str(key))
+        if key not in keys or match is None:
+            raise ParameterError("key", key, f"a key of the config holding one number ({', '.join(keys)})")
+        section, index, name = match.groups()
+        table = data.setdefault(section, {})
+        table = table[int(index)] if index is not None else table
+        table[name] = value
+    return data
+
+
+def _checked(path: Path, data: dict) -> FemConfig:
     problems: list[str] = []
     for section, keys in _KNOWN.items():
         table = data if not section else data.get(section, {})
@@ -249,7 +317,7 @@ def _law(problems, c: dict, friction, static):
         return None
     needs = {"coulomb": None, "linear-weakening": "weakening", "stribeck": "stribeck_speed"}[name]
     problems += [f"contact.{k} must be left out with contact.law = {name!r}" for k in extra if k != needs]
-    if static is None:
+    if c.get("static_friction") is None:
         problems.append(f"contact.static_friction is missing (the static coefficient f_s of contact.law = {name!r})")
     value = None
     if needs is not None:

@@ -1,0 +1,97 @@
+"""CEA sweeps with tracked modes (issue 24): the critical value located by the sweep against
+the 1-DOF oscillator's closed form, tracking by shape through a frequency crossing (where
+sorting by frequency swaps the modes), and the command line's refusals."""
+
+import json
+import math
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from stickslip.cli import run
+from stickslip.fem.tracking import cea_sweep, track
+
+from .test_examples import EXAMPLES
+
+N, M, FS, FD, VS, V = 1.0e5, 1.0, 0.6, 0.4, 0.2, 1.0
+
+
+@pytest.fixture(scope="module")
+def stiff_block(tmp_path_factory):
+    """The block example made stiff (E = 1e12 Pa), on a Stribeck law, damped by alpha."""
+    folder = tmp_path_factory.mktemp("block")
+    subprocess.run([sys.executable, str(EXAMPLES / "block_on_belt" / "mesh.py"), "block.msh"], cwd=folder, check=True)
+    text = (EXAMPLES / "block_on_belt" / "block.toml").read_text()
+    text = text.replace("young = 1.0e9", "young = 1.0e12").replace("density = 1000.0", "density = 1000.0\nalpha = 100.0")
+    text = text.replace("static_friction = 0.6", f'static_friction = {FS}\nlaw = "stribeck"\nstribeck_speed = {VS}')
+    text = text.replace("band = [0.0, 40000.0]", "band = [0.0, 400.0]").replace("count = 30", "count = 10")
+    (folder / "stiff.toml").write_text(text)
+    return folder / "stiff.toml"
+
+
+def test_the_sweep_locates_the_critical_damping_of_the_oscillators_closed_form(stiff_block, tmp_path):
+    """m x'' + (alpha m + N mu'(V)) x' + k x = 0 turns stable at alpha* = N (f_s - f_d) e^(-V/v_s) / (v_s m)
+    = 673.79 1/s. Swept over 0-1000 in 6 points (step 200), the bisection brackets it to 1 % of
+    the step: within 2 1/s."""
+    exact = N * (FS - FD) * math.exp(-V / VS) / (VS * M)
+    tracked = cea_sweep(stiff_block, "alpha", np.linspace(0.0, 1000.0, 6), tmp_path / "s.zarr", workers=1)
+    assert tracked.key == "material.alpha" and len(tracked.s) == 1
+    assert abs(tracked.critical[0] - exact) <= 2.0 and tracked.turn[0] == -1
+    again = cea_sweep(stiff_block, "alpha", np.linspace(0.0, 1000.0, 6), tmp_path / "s.zarr", workers=1)
+    assert np.array_equal(again.s, tracked.s)  # resumed from the store: nothing recomputed differs
+
+
+def test_tracking_by_shape_follows_two_modes_through_a_frequency_crossing():
+    """Two modes of fixed, different shapes whose frequencies cross between points 4 and 5:
+    each branch keeps its shape (and its frequency trend); sorting by frequency would swap them
+    at the crossing."""
+    rng = np.random.default_rng(1)
+    a, b = rng.standard_normal(64) + 0j, rng.standard_normal(64) + 0j
+    s_points, sketches = [], []
+    for p in range(10):
+        fa, fb = 100.0 + 10 * p, 145.0 - 5 * p  # cross between p = 3 and p = 4
+        order = np.argsort([fa, fb])  # the modes come sorted by frequency, as a CEA lists them
+        s = np.array([1j * fa, 1j * fb])[order]
+        x = np.array([a, b])[order]
+        s_points.append(s)
+        sketches.append(x + 0.05 * rng.standard_normal(x.shape))
+    branches, _ = track(s_points, sketches)
+    assert len(branches) == 2
+    slopes = sorted(float(np.mean(np.diff(br.imag))) for br in branches)
+    assert slopes == pytest.approx([-5.0, 10.0])
+
+
+@pytest.mark.parametrize("args, words", [
+    (["--sweep", "colour=0:1:3", "--store", "s.zarr"], ["--sweep = 'colour'", "contact.friction"]),
+    (["--sweep", "friction=0:20:3", "--store", "s.zarr"], ["--sweep = 'friction=0:20:3'", "at 10", "contact.static_friction = 0.6 must be >="]),
+    (["--sweep", "friction=0:0.5:3"], ["missing --store"]),
+    (["--sweep", "friction=0:0.5:3", "--store", "s.zarr", "--xdmf", "m.xdmf"], ["--xdmf"]),
+    (["--store", "s.zarr"], ["missing --sweep"]),
+])
+def test_a_sweep_asked_wrong_is_one_line_naming_the_option(stiff_block, tmp_path, args, words, capsys):
+    args = [str(tmp_path / a) if a.endswith((".zarr", ".xdmf")) else a for a in args]
+    assert run(["fem", "cea", str(stiff_block), *args]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and err.count("\n") == 1, err
+    for w in words:
+        assert w in err, err
+    assert not (tmp_path / "s.zarr").exists()
+
+
+def test_the_command_writes_the_tracked_branches_and_the_map(stiff_block, tmp_path, capsys):
+    from stickslip.cf import load_result
+
+    from ..cf_rules import problems
+
+    args = ["fem", "cea", str(stiff_block), "--sweep", "alpha=0:1000:3", "--store", str(tmp_path / "s.zarr"),
+            "--out", str(tmp_path / "t.nc"), "--plot", str(tmp_path / "t.png"), "--workers", "1", "--json"]
+    assert run(args) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["swept_key"] == "material.alpha" and data["branches"] == 1 and len(data["critical"]) == 1
+    ds = load_result(tmp_path / "t.nc")
+    assert problems(ds, "tracked") == [] and ds.sizes["value"] == 3
+    assert (tmp_path / "t.png").stat().st_size > 1000
+    shutil.rmtree(tmp_path / "s.zarr")
