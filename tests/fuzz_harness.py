@@ -174,7 +174,7 @@ PATH_OPTIONS = options_typed(pathlib.Path)
 BAD_PATHS = {"a folder": "{tmp}", "a missing folder": "{tmp}/missing/x{suffix}", "an unwritable place": "/proc/x{suffix}",
              "under a file": "{tmp}/file/x{suffix}", "another suffix": "{tmp}/x.txt",
              "a name too long": "{tmp}/" + "n" * 300 + "{suffix}"}
-_SUFFIX = {"--plot": ".png", "--checkpoint": ".nc", "--out": ".nc", "--export": "", "--xdmf": ".xdmf"}
+_SUFFIX = {"--plot": ".png", "--checkpoint": ".nc", "--out": ".nc", "--export": "", "--xdmf": ".xdmf", "--store": ".zarr"}
 #: Options that name a folder to create (any name, parents made): only unwritable places are bad.
 FOLDERS = {("brake campaign", "--out"), ("brake campaign", "--export"), ("reproduce", "--out")}
 
@@ -183,7 +183,7 @@ def bad_places(command: str, option: str) -> list[str]:
     """The kinds of `BAD_PATHS` that are wrong for this option."""
     if (command, option) in FOLDERS:
         return ["an unwritable place", "under a file", "a name too long"]
-    if any(a == option and b.endswith(".zarr") for a, b in zip(BASE[command], BASE[command][1:])):
+    if option == "--store" or any(a == option and b.endswith(".zarr") for a, b in zip(BASE[command], BASE[command][1:])):
         return [k for k in BAD_PATHS if k != "a missing folder"]  # a store is made with its parents
     return list(BAD_PATHS)
 

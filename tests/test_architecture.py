@@ -31,7 +31,7 @@ ALLOWED = {
     "oscillator": BASE | {"friction", "sweep"},
     "brake": BASE | {"contact", "sweep", "files"},
     "halfspace": BASE,
-    "fem": BASE | {"contact", "sweep", "files"},
+    "fem": BASE | {"contact", "friction", "sweep", "files"},
     "plotting": set(),
     "errata": set(),
     "figures": BASE | MODELS | {"contact", "friction", "sweep", "plotting"},

@@ -128,8 +128,10 @@ def _cea_sweep(config, json, out, xdmf, overwrite, sweep, store, workers, plot):
     from ..fem.tracking import cea_sweep
     from .common import axis, output_folder
 
-    if sweep is None:
-        raise ParameterError("--sweep", MISSING, "given with --store, --workers or --plot (KEY=LO:HI:N)")
+    if sweep is None:  # the first option that belongs to a sweep is named
+        option, value = next((o, v) for o, v in (("--store", store), ("--workers", workers), ("--plot", plot))
+                             if v is not None)
+        raise ParameterError(option, str(value), "left out without --sweep KEY=LO:HI:N (it belongs to a sweep)")
     if xdmf is not None:
         raise ParameterError("--xdmf", str(xdmf), "left out with --sweep (the mode shapes of one CEA)")
     if store is None:
