@@ -114,56 +114,47 @@ def typed(value, integer: bool) -> str:
     return repr(float(value)) if isinstance(value, float) else str(value)
 
 
-def declared_options() -> list[tuple[str, str, object]]:
-    """``(command, option, declaration)`` of every numeric option that reads a declaration."""
+def cli_params():
+    """``(command, param, hint)`` of every parameter of every command of the command line, with its
+    type hint (``Annotated[...]`` where the option reads a declaration)."""
     import typer.main
 
     from stickslip.cli import app
 
-    out = []
-
     def walk(cmd, path):
         if hasattr(cmd, "commands"):
             for name, sub in cmd.commands.items():
-                walk(sub, path + [name])
+                yield from walk(sub, path + [name])
             return
         hints = typing.get_type_hints(cmd.callback, include_extras=True)
         for param in cmd.params:
-            hint = hints.get(param.name)
-            if typing.get_origin(hint) is typing.Annotated:
-                q = getattr(hint.__metadata__[0], "quantity", None)
-                if q is not None and q.range is not None:
-                    out.append((" ".join(path), param.opts[0], q))
+            yield " ".join(path), param, hints.get(param.name)
 
-    walk(typer.main.get_command(app), [])
+    yield from walk(typer.main.get_command(app), [])
+
+
+def base_type(hint):
+    """The type of an option's hint: the first of an ``Optional``, under ``Annotated``."""
+    base = typing.get_args(hint)[0] if typing.get_origin(hint) is typing.Annotated else hint
+    return ([a for a in typing.get_args(base) if a is not type(None)] or [base])[0]
+
+
+def declared_options() -> list[tuple[str, str, object]]:
+    """``(command, option, declaration)`` of every numeric option that reads a declaration."""
+    out = []
+    for command, param, hint in cli_params():
+        if typing.get_origin(hint) is typing.Annotated:
+            q = getattr(hint.__metadata__[0], "quantity", None)
+            if q is not None and q.range is not None:
+                out.append((command, param.opts[0], q))
     return out
 
 
 def options_typed(*types) -> list[tuple[str, str]]:
-    """``(command, option)`` for every option whose type (first of an Optional) is one of ``types``."""
-    import typer.main
-
-    from stickslip.cli import app
-
-    out = []
-
-    def walk(cmd, path):
-        if hasattr(cmd, "commands"):
-            for name, sub in cmd.commands.items():
-                walk(sub, path + [name])
-            return
-        hints = typing.get_type_hints(cmd.callback, include_extras=True)
-        for param in cmd.params:
-            if getattr(param, "param_type_name", "option") != "option":
-                continue  # an argument is an input (a config file), not an option to fuzz here
-            hint = hints.get(param.name)
-            base = typing.get_args(hint)[0] if typing.get_origin(hint) is typing.Annotated else hint
-            args = [a for a in typing.get_args(base) if a is not type(None)] or [base]
-            if args[0] in types:
-                out.append((" ".join(path), param.opts[0]))
-
-    walk(typer.main.get_command(app), [])
-    return out
+    """``(command, option)`` for every option whose type (first of an Optional) is one of ``types``
+    (an argument is an input, a config file, not an option to fuzz here)."""
+    return [(command, param.opts[0]) for command, param, hint in cli_params()
+            if getattr(param, "param_type_name", "option") == "option" and base_type(hint) in types]
 
 
 #: Every numeric option, and every option that is a path (outputs, checkpoints, stores).

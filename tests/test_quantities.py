@@ -21,7 +21,7 @@ from stickslip.errors import ParameterError
 from stickslip.quantities import DOMAINS, Quantity, Range, declared
 from stickslip.quantities.tables import markdown
 
-from .fuzz_harness import BASE, args_for
+from .fuzz_harness import BASE, args_for, base_type, cli_params
 
 ROOT = Path(__file__).resolve().parents[1]
 ALL = [(d, q) for d, domain in DOMAINS.items() for q in domain._q.values()]
@@ -57,29 +57,11 @@ def test_ranges_read_as_written_and_check_both_ends():
 
 
 def _numeric_options():
-    """``(command, option, declaration or None)`` of every int/float option of the command line."""
-    import typer.main
-
-    from stickslip.cli import app
-
-    out = []
-
-    def walk(cmd, path):
-        if hasattr(cmd, "commands"):
-            for name, sub in cmd.commands.items():
-                walk(sub, path + [name])
-            return
-        hints = typing.get_type_hints(cmd.callback, include_extras=True)
-        for param in cmd.params:
-            hint = hints.get(param.name)
-            if getattr(param, "param_type_name", "") != "option" or typing.get_origin(hint) is not typing.Annotated:
-                continue
-            args = [a for a in typing.get_args(typing.get_args(hint)[0]) if a is not type(None)] or \
-                [typing.get_args(hint)[0]]
-            if args[0] in (int, float):
-                out.append((" ".join(path), param.opts[0], getattr(hint.__metadata__[0], "quantity", None), param))
-    walk(typer.main.get_command(app), [])
-    return out
+    """``(command, option, declaration or None, param)`` of every int/float option of the command line."""
+    return [(command, param.opts[0], getattr(hint.__metadata__[0], "quantity", None), param)
+            for command, param, hint in cli_params()
+            if getattr(param, "param_type_name", "") == "option" and typing.get_origin(hint) is typing.Annotated
+            and base_type(hint) in (int, float)]
 
 
 NUMERIC = _numeric_options()
