@@ -3,7 +3,10 @@ thickness in N/m, stresses in Pa, frequencies in Hz, growth rates in 1/s."""
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from .core import Domain, declare as Q
+from .oscillator import OSCILLATOR
 from .materials import DENSITY_WHY, FRICTION_WHY, YOUNG_WHY
 
 FEM = Domain("fem", units="SI", quantities=[
@@ -27,12 +30,9 @@ FEM = Domain("fem", units="SI", quantities=[
       why=FRICTION_WHY),
     Q("law", "", "friction law of the contact (friction and static_friction are its f_d and f_s)",
       choices=("coulomb", "linear-weakening", "stribeck")),
-    Q("stribeck_speed", "m/s", "Stribeck speed v_s of the stribeck law", "[1e-9, 1e4]", symbol="v_s",
-      why="of mu = f_d + (f_s - f_d) exp(-|v_r|/v_s): measured Stribeck speeds lie between micrometres and "
-          "decimetres per second"),
-    Q("weakening", "s/m", "weakening rate tau of the linear-weakening law", "[0, 1e9]", symbol="tau",
-      why="mu = f_d (1 - tau |v_r|) loses all its friction at the slip speed 1/tau: 1e9 s/m is a nanometre per "
-          "second"),
+    # the laws' own parameters, as stickslip.friction declares them, under the config's names
+    replace(OSCILLATOR["vs"], name="stribeck_speed", meaning="Stribeck speed v_s of the stribeck law"),
+    replace(OSCILLATOR["tau"], name="weakening", meaning="weakening rate tau of the linear-weakening law"),
     Q("friction_law", "", "the friction law of the contact and its parameters"),
     Q("friction_slope", "s/m", "slope d mu / d v_r of the friction law at the sliding speed"),
     Q("radius", "m", "radius of the rigid cylinder", "[1e-6, 1e6]"),
