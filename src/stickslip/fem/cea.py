@@ -39,7 +39,7 @@ from ..errors import NoSolutionError, ParameterError
 from ..results import Result
 from .scheme import BodyScheme, ContactProblem
 
-__all__ = ["CeaModes", "linearised", "eigenvalues_near", "covered", "complex_eigenvalues", "NEUTRAL"]
+__all__ = ["CeaModes", "linearised", "count_sketch", "eigenvalues_near", "covered", "complex_eigenvalues", "NEUTRAL"]
 
 #: Growth rates within ``NEUTRAL |s|`` of zero are neutral (neither flutter nor decay): an
 #: eigenvalue is found to about the Arnoldi tolerance (1e-12) times its condition number
@@ -207,6 +207,21 @@ def eigenvalues_near(K_eff, C_eff, mass, shift_hz: float, count: int, vectors: b
     return s, (vec if vectors else None), dist < radius, upper, radius
 
 
+def count_sketch(n: int, size: int):
+    """A fixed count sketch of vectors of ``n`` entries into ``size`` rows: each entry added, with
+    a random sign, to one row (rows ``min(size, n)`` and up stay 0); returns the function giving a
+    vector's sketch of unit length. Seeded: the same sketch in every process and every run."""
+    rng = np.random.default_rng(20261125)
+    row, sign = rng.integers(0, min(size, n), size=n), rng.choice([-1.0, 1.0], size=n)
+
+    def sketch(v) -> np.ndarray:
+        x = np.zeros(size, dtype=complex)
+        np.add.at(x, row, sign * v)
+        return x / np.linalg.norm(x)
+
+    return sketch
+
+
 class ModeSet:
     """The modes found so far, each eigenvalue with its multiplicity. An eigenvalue found again
     (by an overlapping shift, or as the conjugate of one found) is the same mode only if its
@@ -223,17 +238,9 @@ class ModeSet:
     SKETCH = 512
 
     def __init__(self, n: int):
-        rng = np.random.default_rng(20261125)  # a fixed sketch: the same result every time
-        self.row = rng.integers(0, min(self.SKETCH, n), size=n)
-        self.sign = rng.choice([-1.0, 1.0], size=n)
-        self.size = min(self.SKETCH, n)
+        self._sketch = count_sketch(n, self.SKETCH)
         self.s: list = []
         self.sketches: list = []
-
-    def _sketch(self, v) -> np.ndarray:
-        x = np.zeros(self.size, dtype=complex)
-        np.add.at(x, self.row, self.sign * v)
-        return x / np.linalg.norm(x)
 
     def add(self, s, v) -> bool:
         """Add the eigenpair ``(s, v)`` unless it is a mode already found; True if added."""

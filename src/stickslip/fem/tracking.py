@@ -37,7 +37,7 @@ from ..cf import finish
 from ..errors import ParameterError
 from ..quantities import FEM as Q
 from ..sweep import run_sweep
-from .cea import NEUTRAL, complex_eigenvalues, linearised
+from .cea import NEUTRAL, complex_eigenvalues, count_sketch, linearised
 from .config import load_config, read_toml, resolve_key
 from .scheme import BodyScheme
 
@@ -53,11 +53,6 @@ COUPLING = 0.05
 MAX_MODES = 200
 
 
-def _sketch(n: int):
-    rng = np.random.default_rng(20261125)  # the same sketch in every process and every run
-    return rng.integers(0, min(SKETCH, n), size=n), rng.choice([-1.0, 1.0], size=n)
-
-
 def _solve(config, key, value, modes_kept):
     """``(s, sketches)`` of the CEA of ``config`` with ``key = value``: eigenvalues and the
     sketched shapes on the free dofs (unit length), at most ``modes_kept``."""
@@ -66,13 +61,12 @@ def _solve(config, key, value, modes_kept):
     modes = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=True, complete_below=cfg.complete_below)
     n = BodyScheme(problem).free.size
     _, _, _, kept = linearised(problem)
-    row, sign = _sketch(n)
+    sketch = count_sketch(n, SKETCH)
     out = np.zeros((min(len(modes.s), modes_kept), SKETCH), dtype=complex)
     for k in range(out.shape[0]):
         full = np.zeros(n, dtype=complex)
         full[kept] = modes.shapes[:, k]
-        np.add.at(out[k], row, sign * full)
-        out[k] /= np.linalg.norm(out[k])
+        out[k] = sketch(full)
     return modes.s[:out.shape[0]], out
 
 
