@@ -173,3 +173,26 @@ def test_quadratic_annulus_frequencies_converge_at_order_four_with_the_consisten
     assert np.all(orders > 3), (consistent, orders)
     linear = abs(_frequencies(tmp_path / "l.msh", 0.05, count=1)[0] - exact) / exact
     assert lumped[-1] < 0.1 * linear, (lumped, linear)
+
+
+@pytest.mark.parametrize("plane", ["strain", "stress"])
+def test_von_mises_of_a_uniform_in_plane_pressure_is_the_closed_form(rect, plane):
+    """A rectangle under a uniform pressure p on its four sides (the loads as assembled), held
+    only against rigid motion at three dofs that the exact field leaves at rest, is in the
+    uniform state sigma_xx = sigma_yy = -p, sigma_xy = 0: von Mises (1 - 2 nu) p in plane
+    strain (sigma_zz = -2 nu p), p in plane stress. Tolerance 1e-9 p, set before the run."""
+    from stickslip.fem import Load
+    from stickslip.fem.assembly import von_mises
+
+    p = 3e6
+    s = assemble(rect, Material(E, NU, RHO, plane=plane), loads=[Load(g, p) for g in ("bottom", "top", "left", "right")])
+    x, y = rect.points.T
+    origin, along = np.argmin(x**2 + y**2), np.argmin((x - x.max()) ** 2 + y**2)  # corners (0, 0) and (w, 0)
+    held = np.array([2 * origin, 2 * origin + 1, 2 * along + 1])
+    free = np.setdiff1d(np.arange(s.n_dofs), held)
+    u = np.zeros(s.n_dofs)
+    u[free] = sla.spsolve(s.K.tocsc()[free][:, free], s.load[free])
+    sigma = cell_stress(s, u)
+    assert np.abs(sigma - [-p, -p, 0.0]).max() < 1e-9 * p
+    exact = (1 - 2 * NU) * p if plane == "strain" else p
+    assert np.abs(von_mises(s, sigma) - exact).max() < 1e-9 * p

@@ -11,7 +11,8 @@ from stickslip.errors import ParameterError
 from stickslip.fem.assembly import cell_stress
 from stickslip.fem.cea import complex_eigenvalues, linearised
 from stickslip.fem.paraview import write_modes_xdmf, write_run_xdmf
-from stickslip.fem.run import integrate_body
+from stickslip.fem.run import integrate_body, perturbed_steady_body
+from stickslip.fem.scheme import BodyScheme
 
 from .test_scheme import PARAMS, general_annulus
 
@@ -28,8 +29,11 @@ def test_run_snapshots_read_back_with_the_steady_contact(annulus, tmp_path):
     with meshio.xdmf.TimeSeriesReader(path) as reader:
         points, cells = reader.read_points_cells()
         assert points.shape == (len(body.points), 3) and cells[0].data.shape == body.cells.shape
-        assert reader.num_steps == len(run.snapshots["vol_t"]) >= 3
-        t, data, cell_data = reader.read_data(0)
+        assert reader.num_steps == len(run.snapshots["vol_t"]) >= 4
+        t0, start, _ = reader.read_data(0)  # the start: the perturbed steady state the run began from
+        t, data, cell_data = reader.read_data(1)  # a transit later
+    initial = perturbed_steady_body(BodyScheme(annulus))
+    assert t0 == 0.0 < t and np.array_equal(start["displacement"][:, :2].ravel(), BodyScheme(annulus).cartesian(initial.u))
     u = data["displacement"][:, :2]
     sigma = cell_stress(annulus.system, u.ravel())  # the cell stresses are those of the displacement written
     for k, name in enumerate(("stress_xx", "stress_yy", "stress_xy")):
@@ -47,8 +51,6 @@ def test_mode_shapes_read_back_and_solve_their_eigenproblem(annulus, tmp_path):
     modes = complex_eigenvalues(annulus, (0.0, 800.0), count=10, mode_shapes=True)
     path = write_modes_xdmf(annulus, modes, tmp_path / "modes.xdmf")
     K, _, m, kept = linearised(annulus)
-    from stickslip.fem.scheme import BodyScheme
-
     scheme = BodyScheme(annulus)
     with meshio.xdmf.TimeSeriesReader(path) as reader:
         reader.read_points_cells()

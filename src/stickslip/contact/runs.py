@@ -35,10 +35,10 @@ from ..cf import SOURCE, finish, for_file, from_file, plain_attrs
 from ..errors import NoSolutionError, ParameterError
 from ..files import content_digest, exclusive
 from .scheme import StepState
-from .states import STATE_ATTRS, STATE_NAMES, state_fractions
+from .states import SEPARATION, SLIP_POS, STATE_ATTRS, STATE_NAMES, state_fractions
 
 __all__ = ["RunFormat", "RunRecord", "schedule", "prepare", "save", "resume", "loop", "run_explicit",
-           "run_to_dataset", "results_view", "dataset_to_run", "settings_key", "snapshot_due", "window_snapshots", "volume_due"]
+           "run_to_dataset", "results_view", "dataset_to_run", "settings_key", "snapshot_due", "window_snapshots", "volume_due", "volume_at_start"]
 
 _KEYS = ("chunk", "samples_total", "snap_every", "tail_samples", "samples_per_transit", "modes", "contact",
          "initial", "initial_hash", "volume_every")
@@ -557,9 +557,25 @@ def snapshot_due(done: int, st: dict) -> bool:
 
 
 def volume_due(done: int, st: dict) -> bool:
-    """Volume snapshots (if the run has them) every ``volume_every`` samples and at the last one."""
+    """Volume snapshots (if the run has them) every ``volume_every`` samples and at the last one (and
+    one at ``t = 0``, `volume_at_start`)."""
     every = st.get("volume_every", 0)
     return bool(every) and (done % every == 0 or done == st["samples_total"])
+
+
+def volume_at_start(scheme, u0, v0, st: dict, run_format) -> dict:
+    """The volume snapshot at ``t = 0`` (if the run keeps volume snapshots): the start's
+    displacement and velocity, and the reactions the scheme starts from (`ExplicitScheme.initial_state`:
+    the steady ones at the contact nodes that touch, in forward slip; the others separated)."""
+    if not st.get("volume_every"):
+        return {}
+    (normal, _), (gap0, _) = scheme.contact_dofs, scheme.surface
+    u0, v0 = np.asarray(u0, float), np.asarray(v0, float)
+    touching = (u0[normal] <= gap0) if st["contact"] else np.zeros(len(normal), bool)
+    _, r_n, r_t = scheme.steady_reference() if st["contact"] else (None, 0.0, 0.0)
+    scale = run_format.traction_scale(scheme)
+    return {"vol_t": [0.0], "vol_u": [u0.copy()], "vol_v": [v0.copy()], "vol_P": [scale * touching * r_n],
+            "vol_Q": [scale * touching * r_t], "vol_state": [np.where(touching, SLIP_POS, SEPARATION).astype(np.int8)]}
 
 
 def run_explicit(cls, scheme, u0, v0, settings: dict, t_end: float, *, checkpoint=None, every=None, progress=None,
@@ -583,7 +599,8 @@ def _run_explicit(cls, scheme, u0, v0, settings, t_end, checkpoint, every, progr
     if run is None:
         start = scheme.initial_state(u0, v0, settings["contact"])
         ref = scheme.steady_reference()[0] if settings["contact"] else np.zeros_like(start.u)
-        run = cls(scheme, settings, {}, {}, {"u": start.u, "v": start.v, "a": start.a, "ref": ref.copy()}, 0)
+        run = cls(scheme, settings, {}, volume_at_start(scheme, u0, v0, settings, run_format=cls.FORMAT),
+                  {"u": start.u, "v": start.v, "a": start.a, "ref": ref.copy()}, 0)
     out = scheme.new_output()
     (normal, tangent), (gap0, _) = scheme.contact_dofs, scheme.surface
     scale = run.FORMAT.traction_scale(scheme)

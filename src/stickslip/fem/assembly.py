@@ -33,7 +33,7 @@ from ..errors import ParameterError
 from .body import Body, edge_middles
 from .boundary import Load, Spring, boundary_load, boundary_springs
 
-__all__ = ["Material", "BodySystem", "assemble", "cell_stress", "materials_of"]
+__all__ = ["Material", "BodySystem", "assemble", "cell_stress", "von_mises", "materials_of"]
 
 PLANES = Q["plane"].choices
 #: Largest Young's modulus [Pa] and density [kg/m^3] accepted (declared in `stickslip.quantities.FEM`).
@@ -320,6 +320,17 @@ def cell_stress(system: BodySystem, u) -> np.ndarray:
         out.append(np.column_stack([lam * trace + 2 * mu * g[0, 0], lam * trace + 2 * mu * g[1, 1],
                                     mu * (g[0, 1] + g[1, 0])]))
     return np.array(out) if u.ndim == 2 else out[0]
+
+
+def von_mises(system: BodySystem, sigma) -> np.ndarray:
+    """The von Mises stress [Pa] of the cell stresses ``sigma`` (`cell_stress`: ``(..., n_cells, 3)``)
+    with the out-of-plane stress of the material's plane: ``sigma_zz = nu (sigma_xx + sigma_yy)``
+    in plane strain (each cell's own ``nu``), 0 in plane stress."""
+    sigma = np.asarray(sigma, dtype=float)
+    sxx, syy, sxy = sigma[..., 0], sigma[..., 1], sigma[..., 2]
+    strain = next(iter(system.materials.values())).plane == "strain"
+    szz = system.cell_values("poisson") * (sxx + syy) if strain else np.zeros_like(sxx)
+    return np.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) + 3.0 * sxy**2)
 
 
 def assemble(body: Body, material, springs=(), loads=()) -> BodySystem:

@@ -8,8 +8,8 @@ Both write the body's mesh (points at ``z = 0``, in m) with `stickslip.files.wri
   body), ``velocity`` [m/s], and on the contact nodes ``contact_pressure`` and
   ``contact_shear`` [N per unit thickness per node] and ``contact_state`` (0 stick, 1 slip,
   2 reverse slip, 3 separation; -1 off the contact line); the cell data ``stress_xx``,
-  ``stress_yy``, ``stress_xy`` and ``von_mises`` [Pa] (cell means, `stickslip.fem.assembly.cell_stress`;
-  in plane strain with ``sigma_zz = nu (sigma_xx + sigma_yy)``, each cell's own ``nu``) and
+  ``stress_yy``, ``stress_xy`` and ``von_mises`` [Pa] (cell means, `stickslip.fem.assembly.cell_stress` and
+  `stickslip.fem.assembly.von_mises`: in plane strain with ``sigma_zz = nu (sigma_xx + sigma_yy)``) and
   ``material`` (each cell's material, its position in the problem's ``material_groups``).
 * `write_modes_xdmf(problem, modes, path)`: the shapes of the CEA modes
   (`complex_eigenvalues(..., mode_shapes=True)`), one step per mode (the step's "time" is the
@@ -27,7 +27,7 @@ import numpy as np
 
 from ..errors import ParameterError
 from ..files import write_xdmf_series
-from .assembly import cell_stress
+from .assembly import cell_stress, von_mises
 from .cea import CeaModes, linearised
 from .run import BodyRun
 from .scheme import BodyScheme, ContactProblem
@@ -64,9 +64,6 @@ def write_run_xdmf(run: BodyRun, path) -> Path:
         return out
 
     system = scheme.params.system
-    plane = next(iter(system.materials.values())).plane
-    nu = system.cell_values("poisson") if plane == "strain" else 0.0  # of each cell's material
-
     material = system.cell_material.astype(np.int32)  # the position of each cell's material in material_groups
 
     def step(k):
@@ -76,10 +73,9 @@ def write_run_xdmf(run: BodyRun, path) -> Path:
         point_data = {"displacement": _vectors(u), "velocity": _vectors(scheme.cartesian(snaps["vol_v"][k])),
                       "contact_pressure": on_line(snaps["vol_P"][k]), "contact_shear": on_line(snaps["vol_Q"][k]),
                       "contact_state": state}
-        sxx, syy, sxy = cell_stress(system, u).T
-        szz = nu * (sxx + syy)
-        mises = np.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) + 3 * sxy**2)
-        cell_data = {"stress_xx": [sxx], "stress_yy": [syy], "stress_xy": [sxy], "von_mises": [mises],
+        sigma = cell_stress(system, u)
+        sxx, syy, sxy = sigma.T
+        cell_data = {"stress_xx": [sxx], "stress_yy": [syy], "stress_xy": [sxy], "von_mises": [von_mises(system, sigma)],
                      "material": [material]}
         return float(snaps["vol_t"][k]), point_data, cell_data
 

@@ -128,7 +128,7 @@ def integrate_body(problem: ContactProblem, t_end: float | None = None, *, trans
 
     ``initial`` defaults to `perturbed_steady_body`; ``beta2``, ``courant``, ``time_step``
     set `BodyScheme`; the books and ``checkpoint`` behave as in `stickslip.brake.fem.integrate_fem`;
-    ``volume_every`` [transits] keeps volume snapshots for `stickslip.fem.paraview.write_run_xdmf`.
+    ``volume_every`` [transits] keeps volume snapshots (one at ``t = 0`` too) for `stickslip.fem.paraview.write_run_xdmf`.
     """
     if getattr(problem, "law", None) is not None and problem.law.name != "coulomb":
         raise ParameterError("contact.law", problem.law.name, "coulomb in an explicit run (a law that depends on the "

@@ -11,8 +11,8 @@ checkpoint guarantees):
   ``P = p`` and shear ``Q = q`` in units of ``E``, states) every ``snapshot_every`` transits
   and at every sample of the last ``tail`` transits (for `classify_fem`);
 * with ``volume_every``: volume snapshots (displacement and velocity of every free dof,
-  reactions and states of the contact nodes) every ``volume_every`` transits and at the
-  end, kept in the run (and its checkpoint) for `write_xdmf` (ParaView).
+  reactions and states of the contact nodes) at the start, every ``volume_every`` transits
+  and at the end, kept in the run (and its checkpoint) for `write_xdmf` (ParaView).
 
 A run is budgeted in transits ``2 pi R / c_p`` (the step is set by the CFL limit, so a
 transit costs about ``1.4 n_theta`` steps for the default mesh shape and ``beta2 = 0.9``). With
@@ -172,11 +172,11 @@ def integrate_fem(params: BrakeParams, n_theta: int = 256, n_r: int = 16, t_end:
                               snapshot_every=snapshot_every, tail=tail, modes=modes, contact=contact,
                               initial=initial, progress=progress, volume_every=volume_every)
     if settings["volume_every"]:
-        count = -(-settings["samples_total"] // settings["volume_every"])
+        count = -(-settings["samples_total"] // settings["volume_every"]) + 1  # and one at t = 0
         size = scheme.system.n_free * 2 + scheme.n_theta * 3
         if count * size > MAX_VOLUME:
             sample = settings["chunk"] * scheme.dt / scheme.transit_time  # in transits
-            least = (settings["samples_total"] * size / MAX_VOLUME + 1) * sample
+            least = (settings["samples_total"] * size / max(MAX_VOLUME - 2 * size, size) + 1) * sample
             raise ParameterError("volume_every", volume_every, f">= {least:.3g} transits for this run ({count} volume "
                                  f"snapshots of {size} numbers; at most {MAX_VOLUME:.3g} numbers, 1 GB, in all)")
     return run_explicit(FemRun, scheme, initial.u, initial.v, settings, t_end, checkpoint=checkpoint, every=every,
