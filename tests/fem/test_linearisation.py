@@ -1,0 +1,147 @@
+"""The CEA's linearised operators against finite differences of the nonlinear equations of
+motion, written out here from the physics and not from the package's operators (issue 24).
+
+About steady sliding, a contact node in contact is held on the surface (its displacement
+along the normal ``n`` fixed) and slides along the surface's motion ``t``; every other free
+dof moves. With ``r = K u + C u' - F`` (the assembled Cartesian stiffness, Rayleigh damping
+and load) and the lumped nodal mass ``m``, the equations are, per free dof off the contact,
+``m u'' + r = 0``, and per contact node in contact (coordinate ``a`` along ``t``):
+
+    m a'' + t . r  =  mu(V - a') n . r,
+
+the normal reaction ``n . r`` (the mass has no normal acceleration) times the friction law at
+the slip speed. Their Jacobians in ``(z, z', z'')`` by central differences must equal the
+``K_eff``, ``C_eff`` and mass of `stickslip.fem.cea.linearised` entry by entry: a wrong
+damping row, a missing or wrong-signed slope term, or a friction row on the wrong dof fails.
+Tolerances (set before the first run): 1e-7 of each matrix's largest entry.
+"""
+
+import numpy as np
+import pytest
+import scipy.sparse as sp
+
+from stickslip.brake.fem import FemScheme
+from stickslip.fem import ContactProblem, Material, RigidFlat, assemble, contact_frames, read_body
+from stickslip.fem.cea import linearised
+from stickslip.fem.config import load_config
+from stickslip.fem.scheme import BodyScheme
+from stickslip.friction import LinearWeakening, Stribeck
+
+from .test_scheme import PARAMS, general_annulus
+from .test_friction_law import block  # noqa: F401 - the block example, meshed (a fixture)
+
+
+def _coordinates(problem):
+    """The generalised coordinates: ``(dof, node, direction)``, ``u[node's pair] += z direction``.
+    Off the contact a Cartesian dof (unit vector); a contact node in contact: one coordinate
+    along ``t``; a contact node off the surface: two, along ``n`` and ``t``. Sorted as the
+    node's dofs (normal or x first)."""
+    system, frames, steady = problem.system, problem.frames, problem.steady
+    fixed = np.zeros(system.n_dofs, bool)
+    for name in problem.clamped:
+        fixed[system.dofs(system.body.nodes(name, "clamped"))] = True
+    line = {int(node): k for k, node in enumerate(frames.nodes)}
+    out = []
+    for node in range(len(system.body.points)):
+        for comp in (0, 1):
+            dof = 2 * node + comp
+            if fixed[dof]:
+                continue
+            if node not in line:
+                out.append((dof, node, np.eye(2)[comp]))
+                continue
+            k = line[node]
+            if comp == 0 and steady.active[k]:
+                continue  # held on the surface
+            out.append((dof, node, (frames.normal, frames.tangent)[comp][k]))
+    return out
+
+
+def _equations(problem):
+    """``R(z, zd, zdd)``: the equations of motion above, about steady sliding."""
+    system, frames, steady = problem.system, problem.frames, problem.steady
+    coords = _coordinates(problem)
+    n_dofs = system.n_dofs
+    P = np.zeros((n_dofs, len(coords)))
+    for j, (_, node, direction) in enumerate(coords):
+        P[2 * node: 2 * node + 2, j] = direction
+    K = system.K.toarray()
+    C = np.zeros_like(K) if system.C is None else system.C.toarray()
+    m = system.mass
+    u0 = steady.u
+    held = {int(frames.nodes[k]): k for k in np.flatnonzero(steady.active)}
+    law = problem.law
+    speed = float(np.max(frames.speed))
+    mu = (lambda v: law.kinetic(v)) if law is not None else (lambda v: problem.friction)
+
+    def R(z, zd, zdd):
+        u, v, acc = u0 + P @ z, P @ zd, P @ zdd
+        r = K @ u + C @ v - system.load
+        out = np.empty(len(coords))
+        for j, (_, node, direction) in enumerate(coords):
+            pair = slice(2 * node, 2 * node + 2)
+            row = m[2 * node] * acc[pair] + r[pair]
+            if node in held:
+                k = held[node]
+                n, t = frames.normal[k], frames.tangent[k]
+                out[j] = t @ row - mu(speed - t @ v[pair]) * (n @ r[pair])
+            else:
+                out[j] = direction @ row
+        return out
+
+    return R, coords
+
+
+def _jacobians(problem, h_u, h_v):
+    R, coords = _equations(problem)
+    n = len(coords)
+    zero = np.zeros(n)
+    J = []
+    for which, h in ((0, h_u), (1, h_v), (2, 1.0)):
+        cols = []
+        for j in range(n):
+            e = np.zeros(n)
+            e[j] = h
+            args_p, args_m = [zero, zero, zero], [zero, zero, zero]
+            args_p[which], args_m[which] = e, -e
+            cols.append((R(*args_p) - R(*args_m)) / (2 * h))
+        J.append(np.column_stack(cols))
+    return J, coords
+
+
+def _check(problem, h_u, h_v):
+    (JK, JC, JM), coords = _jacobians(problem, h_u, h_v)
+    K_eff, C_eff, mass, kept = linearised(problem)
+    scheme = BodyScheme(problem)
+    # the same coordinates in the same order as the package's kept dofs (of its nodal frames)
+    assert np.array_equal(np.asarray(scheme.free)[kept], [dof for dof, _, _ in coords])
+    C_eff = sp.csr_matrix(K_eff.shape) if C_eff is None else C_eff
+    for mine, theirs, name in ((JK, K_eff.toarray(), "K"), (JC, C_eff.toarray(), "C"), (JM, np.diag(mass), "M")):
+        scale = np.abs(mine).max()
+        assert scale > 0 and np.abs(mine - theirs).max() <= 1e-7 * scale, (name, np.abs(mine - theirs).max() / scale)
+    return JC
+
+
+def _block(folder, law, friction, alpha, beta, speed):
+    cfg = load_config(folder / "block.toml")
+    body = read_body(folder / "block.msh")
+    system = assemble(body, Material(1e9, 0.3, 1000.0, alpha=alpha, beta=beta), cfg.springs, cfg.loads)
+    surface = RigidFlat((0.0, 0.0), (0.0, 1.0), (speed, 0.0))
+    return ContactProblem(system, contact_frames(body, "bottom", surface), friction, law=law)
+
+
+@pytest.mark.parametrize("law, friction", [(None, 0.4), (Stribeck(0.6, 0.4, 0.2), 0.0),
+                                           (LinearWeakening(0.5, 0.3, 0.1), 0.0)],
+                         ids=["coulomb", "stribeck", "linear-weakening"])
+def test_the_block_on_a_belt_linearises_as_its_equations_of_motion(block, law, friction):  # noqa: F811
+    problem = _block(block, law, friction, alpha=40.0, beta=2e-6, speed=0.3)
+    JC = _check(problem, h_u=1e-9, h_v=1e-5)
+    assert np.abs(JC).max() > 0
+
+
+def test_a_clamped_annulus_on_a_turning_shaft_with_damping_linearises_as_its_equations_of_motion():
+    """Curved contact (every node its own frame), a clamped rim, Rayleigh damping."""
+    plain = general_annulus(FemScheme(PARAMS, 24, 2, 0.9)).params
+    system = assemble(plain.system.body, Material(1.0, PARAMS.nu, PARAMS.gamma, alpha=0.3, beta=1e-3, scaled=True))
+    problem = ContactProblem(system, plain.frames, plain.friction, plain.clamped)
+    _check(problem, h_u=1e-6 * PARAMS.delta, h_v=1e-6)
