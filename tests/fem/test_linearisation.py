@@ -21,14 +21,21 @@ import pytest
 import scipy.sparse as sp
 
 from stickslip.brake.fem import FemScheme
-from stickslip.fem import ContactProblem, Material, RigidFlat, assemble, contact_frames, read_body
+from stickslip.fem import (
+    ContactProblem,
+    Material,
+    RigidFlat,
+    assemble,
+    contact_frames,
+    read_body,
+)
 from stickslip.fem.cea import linearised
 from stickslip.fem.config import load_config
 from stickslip.fem.scheme import BodyScheme
 from stickslip.friction import LinearWeakening, Stribeck
 
-from .test_scheme import PARAMS, general_annulus
 from .test_friction_law import block  # noqa: F401 - the block example, meshed (a fixture)
+from .test_scheme import PARAMS, general_annulus
 
 
 def _coordinates(problem):

@@ -35,12 +35,14 @@ from ..results import Result
 from .assembly import BodySystem
 from .surfaces import ContactFrames
 
-__all__ = ["SteadyContact", "frame_rotation", "steady_contact", "problem_attrs", "LOAD_FLOOR"]
+__all__ = ["SteadyContact", "frame_rotation", "steady_contact", "problem_attrs", "LOAD_FLOOR", "ITERATIONS"]
 
 #: A total normal force below ``LOAD_FLOOR`` x Young's modulus (the largest of the materials) x the
 #: body's size [N/m] is no load
 #: (a mean strain of 1e-10: round-off of the geometry gives some 1e-16, a preload 1e-6 or more).
 LOAD_FLOOR = 1e-10
+#: The fewest active-set iterations allowed by default (`steady_contact`).
+ITERATIONS = 50
 
 
 def problem_attrs(system: BodySystem, frames: ContactFrames, friction: float, clamped=(),
@@ -151,15 +153,20 @@ class SteadyContact(Result):
 
 
 def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 0.0, clamped=(),
-                   max_iterations: int = 50, static_friction: float | None = None) -> SteadyContact:
+                   max_iterations: int | None = None, static_friction: float | None = None) -> SteadyContact:
     """Steady sliding of ``system`` on the surface of ``frames`` (see the module docstring).
 
     ``clamped`` names boundary groups whose dofs are fixed (a contact node among them is held
     by the clamp, not by contact); without any, the contact and the friction must hold the
     body (else the system is singular: `NoSolutionError`). ``static_friction`` is only
     recorded in ``params`` (every node slips in steady sliding, at ``friction``).
+    ``max_iterations``: by default ``ITERATIONS`` or twice the contact nodes, whichever is more
+    (a lift-off zone grows by a node or two per iteration: a strip pulled off the surface at one
+    end needs about as many iterations as the nodes that lift).
     """
     friction = Q.check("friction", friction)
+    max_iterations = max(ITERATIONS, 2 * len(frames.nodes)) if max_iterations is None else \
+        Q.check("max_iterations", max_iterations)
     if static_friction is not None:
         static_friction = check.at_least("static_friction", Q.check("static_friction", static_friction), friction, "friction")
     n_dofs = system.n_dofs
