@@ -12,8 +12,10 @@
   (`steady_contact`);
 * `scheme`: the shared explicit contact scheme on the body's sparse matrices
   (`ContactProblem`, `BodyScheme`);
+* `pair`: two deformable bodies in frictional contact (a pad on a disc turning at Omega):
+  dual mortar coupling of non-matching meshes, steady sliding and the CEA (`PairProblem`);
 * `cea`: complex eigenvalue analysis of steady sliding over a frequency band, shift-invert
-  Arnoldi (`complex_eigenvalues`);
+  Arnoldi (`complex_eigenvalues`), of a body on a rigid surface or of a pair;
 * `run`: explicit dynamics with the shared run books, checkpoints and classification
   (`integrate_body`, `classify_body`), from perturbed steady sliding or the preload
   (`perturbed_steady_body`, `preload_body`);
@@ -25,6 +27,7 @@ from .assembly import BodySystem, Material, assemble
 from .body import CELL_KINDS, Body, body_from_meshio, read_body
 from .boundary import Load, Spring
 from .cea import CeaModes, complex_eigenvalues
+from .pair import PairProblem, PairSteady, Rotation, Translation, steady_pair
 from .run import BodyInitial, BodyRun, classify_body, integrate_body, perturbed_steady_body, preload_body
 from .scheme import BodyScheme, ContactProblem
 from .static import SteadyContact, steady_contact
@@ -33,4 +36,5 @@ from .surfaces import ContactFrames, RigidCylinder, RigidFlat, contact_frames
 __all__ = ["Body", "read_body", "body_from_meshio", "CELL_KINDS", "Material", "BodySystem", "assemble",
            "RigidCylinder", "RigidFlat", "ContactFrames", "contact_frames", "SteadyContact", "steady_contact",
            "ContactProblem", "BodyScheme", "CeaModes", "complex_eigenvalues", "BodyInitial", "BodyRun",
-           "integrate_body", "classify_body", "perturbed_steady_body", "preload_body", "Spring", "Load"]
+           "integrate_body", "classify_body", "perturbed_steady_body", "preload_body", "Spring", "Load",
+           "PairProblem", "PairSteady", "Rotation", "Translation", "steady_pair"]

@@ -298,8 +298,9 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
     the next shift starts with the number that sufficed (or afresh, if none did); the next shift sits where that disc's edge crosses ``|Re s| = complete_below``.
     Where ``max_count`` does not suffice the sweep goes on with what it has: the result's
     ``complete_below`` is then what the discs cover (lower than asked)."""
-    if not isinstance(problem, ContactProblem):
-        raise ParameterError("problem", problem, "a ContactProblem")
+    if not isinstance(problem, ContactProblem) and not callable(getattr(problem, "linearised", None)):
+        raise ParameterError("problem", problem, "a ContactProblem or a PairProblem")
+    materials = problem.system.materials if isinstance(problem, ContactProblem) else problem.materials
     lo, hi = Q["band"].check_pair(band)
     if not hi > lo:
         raise ParameterError("band", band, "(lo, hi) with hi > lo >= 0 [Hz]")
@@ -307,7 +308,7 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
     if hi > top:
         raise ParameterError("band", [lo, hi], f"[lo, hi] with hi at most {top:.6g} Hz, {BAND_MARGIN:g} x the mesh's "
                              f"highest frequency (beyond it the mesh has no modes; a finer mesh has higher ones)")
-    overdamped = _overdamped_band(problem.system.materials, lo, hi)
+    overdamped = _overdamped_band(materials, lo, hi)
     if overdamped:
         raise NoSolutionError(overdamped)
     reach = 0.1 * 2.0 * math.pi * hi if complete_below is None else \
@@ -315,7 +316,7 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
     count = Q.check("count", count)
     max_count = None if max_count is None else Q.check("max_count", max_count)
     max_shifts = Q.check("max_shifts", max_shifts)
-    K_eff, C_eff, mass, _ = linearised(problem)
+    K_eff, C_eff, mass, _ = linearised(problem) if isinstance(problem, ContactProblem) else problem.linearised()
     most = K_eff.shape[0] - 2
     count = min(count, most)
     max_count = min(MAX_COUNT, 16 * count, max(count, most // 2)) if max_count is None else \
@@ -331,7 +332,7 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
             try:
                 s, vec, trusted, _, radius = eigenvalues_near(K_eff, C_eff, mass, shift, k, True)
             except NoSolutionError as err:
-                raise NoSolutionError(f"{err}{_overdamped(problem.system.materials)}") from None
+                raise NoSolutionError(f"{err}{_overdamped(materials)}") from None
             crowded = 0 < before and radius < 1.3 * before  # eigenvalues crowd the shift (heavy damping)
             if radius >= 1.25 * reach or k >= max_count or crowded:
                 break

@@ -1,0 +1,423 @@
+"""Two deformable bodies in frictional contact: a pad on a disc (issue 24, first increment:
+steady sliding and the CEA; explicit runs of a pair are not written yet).
+
+**Mortar coupling.** The contact is discretised segment to segment (mortar), with one
+Lagrange multiplier ``lambda_j`` [Pa] per node ``j`` of the *slave* group (the pad's face),
+interpolated along the slave segments by the dual shape functions ``phi_j`` (on a segment
+``phi_a = 2 - 3 eta``, ``phi_b = 3 eta - 1``: ``int phi_j N_k = delta_jk int N_j``). With ``N_k``
+the slave's and ``N_l`` the master's linear shape functions on their boundary, the master's
+mapped onto each slave segment by projection along the segment's normal,
+
+    D_jk = int phi_j N_k ds = delta_jk int N_j ds,     M_jl = int phi_j N_l ds     (slave line),
+
+computed exactly (the overlap of every pair of segments, 2-point Gauss: the integrands are
+quadratic). Why mortar and not node-to-segment: a uniform pressure passes a non-matching
+interface exactly (the contact patch test), which one-pass node-to-segment fails. Why dual
+multipliers: ``D`` is diagonal, so the contact conditions are node by node (``D_jj lambda_j``
+is the node's normal force) as the rigid-surface contact's are, and a stiff partner gives
+exactly its active sets (standard multipliers oscillate at the line's ends and lift a
+corner the rigid surface holds).
+
+At slave node ``j`` with the nodal normal ``n_j`` (pointing from the master into the slave)
+and the tangent ``t_j`` along which the master's surface moves there, the weighted normal gap
+and slip are
+
+    g_j(u) = sum_k D_jk n_j . (x_k + u_k) - sum_l M_jl n_j . (x_l + u_l),    (G u)_j, (T u)_j alike,
+
+Signorini reads ``lambda_j >= 0``, ``g_j >= 0``, ``lambda_j g_j = 0``, and in sliding the
+slave is dragged along ``t_j`` by ``f lambda_j``: the contact force on both bodies is
+``(G + f T)^T lambda`` (slave nodes ``D^T``, master nodes ``-M^T``: action equals reaction).
+
+**Steady sliding** solves ``K u - F = (G + f T)_A^T lambda_A``, ``G_A u = -g_A(0)`` for the active
+slave nodes ``A``, the set updated as in `stickslip.fem.static` (tension leaves, penetration
+joins). **The CEA** keeps the active constraints (``G_A u = 0`` for the perturbation) and the
+multipliers as unknowns without mass: ``(s^2 M + s C + K) u = B^T lambda``, ``G_A u = 0``,
+``B = (G + f T)_A``. The master's motion enters only through the sliding direction (the
+usual engineering treatment of a turning disc): no transport, gyroscopic or centrifugal terms.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import ClassVar
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as sla
+
+from ..errors import NoSolutionError, ParameterError
+from ..quantities import FEM as Q
+from ..results import Result
+from .assembly import BodySystem
+from .static import ITERATIONS
+
+__all__ = ["Mortar", "PairProblem", "PairSteady", "Rotation", "Translation", "mortar", "steady_pair"]
+
+GAUSS = (0.5 - 0.5 / math.sqrt(3.0), 0.5 + 0.5 / math.sqrt(3.0))
+#: Master segments farther than this times the slave line's length (either side) are not its
+#: partners; a body farther inside the other is refused (as a rigid surface's, `contact_frames`).
+REACH = 0.05
+
+
+@dataclass(frozen=True)
+class Rotation:
+    """The master turns at ``omega`` [rad/s] about ``center`` (a disc; counter-clockwise for > 0)."""
+
+    omega: float
+    center: tuple = (0.0, 0.0)
+
+    def velocity(self, points: np.ndarray) -> np.ndarray:
+        r = np.asarray(points, float) - np.asarray(self.center, float)
+        return self.omega * np.column_stack([-r[:, 1], r[:, 0]])
+
+
+@dataclass(frozen=True)
+class Translation:
+    """The master translates at ``velocity`` [m/s] (a belt, a sliding block)."""
+
+    velocity: tuple
+
+    def velocity_at(self, points):
+        return np.tile(np.asarray(self.velocity, float), (len(points), 1))
+
+
+def _velocity(motion, points):
+    return motion.velocity(points) if isinstance(motion, Rotation) else motion.velocity_at(points)
+
+
+@dataclass(frozen=True)
+class Mortar:
+    """The mortar matrices of a slave and a master group: ``D`` (slave nodes x slave mesh
+    nodes, diagonal in the slave nodes) and ``M`` (slave nodes x master mesh nodes), sparse; the
+    slave nodes (mesh indices), their normals ``n`` (from the master into the slave) and the
+    slave line's length per node ``weight = sum_k D_jk`` [m]."""
+
+    slave_nodes: np.ndarray
+    normal: np.ndarray
+    D: sp.csr_matrix
+    M: sp.csr_matrix
+
+    @property
+    def weight(self) -> np.ndarray:
+        return np.asarray(self.D.sum(axis=1)).ravel()
+
+
+def _inward(points, edges):
+    d = points[edges[:, 1]] - points[edges[:, 0]]
+    n = np.column_stack([-d[:, 1], d[:, 0]])
+    return n / np.hypot(n[:, 0], n[:, 1])[:, None]
+
+
+def _linear(body, group, option):
+    if body.order != 1:
+        raise ParameterError(option, group, "a boundary group of a mesh of linear cells (a pair of bodies takes "
+                             "linear triangles or quadrilaterals, for now)")
+    return body.oriented(group, option)[:, :2]
+
+
+def mortar(slave_body, slave_group: str, master_body, master_group: str) -> Mortar:
+    """The mortar coupling of ``slave_group`` of ``slave_body`` with ``master_group`` of
+    ``master_body`` (see the module docstring); a slave segment that overlaps no master segment
+    contributes to ``D`` only (its nodes cannot touch: their ``M`` row sums fall short)."""
+    s_edges = _linear(slave_body, slave_group, "slave_group")
+    m_edges = _linear(master_body, master_group, "master_group")
+    xs, xm = slave_body.points, master_body.points
+    seg_n = _inward(xs, s_edges)  # into the slave: from the master towards the slave
+    nodes = np.unique(s_edges)
+    where = {int(v): k for k, v in enumerate(nodes)}
+    lengths = np.hypot(*(xs[s_edges[:, 1]] - xs[s_edges[:, 0]]).T)
+    normal = np.zeros((len(nodes), 2))
+    for e, (a, b) in enumerate(s_edges):
+        normal[where[int(a)]] += lengths[e] * seg_n[e]
+        normal[where[int(b)]] += lengths[e] * seg_n[e]
+    normal /= np.hypot(normal[:, 0], normal[:, 1])[:, None]
+    m_n = _inward(xm, m_edges)  # into the master
+    window = REACH * lengths.sum()
+    Dr, Dc, Dv, Mr, Mc, Mv = [], [], [], [], [], []
+    deep, away, found = 0.0, 0, 0
+    for e, (a, b) in enumerate(s_edges):
+        pa, pb, n, L = xs[a], xs[b], seg_n[e], lengths[e]
+        t = (pb - pa) / L
+        for j in (a, b):  # D = int phi_j N_k = delta_jk int N_j: diagonal, half the segment to each end
+            Dr.append(where[int(j)])
+            Dc.append(int(j))
+            Dv.append(L / 2.0)
+        for f, (c, d) in enumerate(m_edges):
+            pc, pd = xm[c], xm[d]
+            # where the master's ends fall along the slave segment, projected along n
+            ec, ed = (np.dot(pc - pa, t) / L, np.dot(pd - pa, t) / L)
+            lo, hi = max(0.0, min(ec, ed)), min(1.0, max(ec, ed))
+            if hi - lo <= 1e-12 or ec == ed:
+                continue
+            mid = pa + 0.5 * (lo + hi) * (pb - pa)
+            m_dir = pd - pc
+            xi, alpha = np.linalg.solve(np.column_stack([m_dir, -n]), mid - pc)
+            gap = -alpha  # from the master's segment to the slave's, along n
+            if abs(gap) > window or not 0.0 <= xi <= 1.0:
+                if gap < -window and np.dot(m_n[f], n) < 0.0 and 0.0 <= xi <= 1.0:
+                    deep = min(deep, gap)
+                continue
+            if np.dot(m_n[f], n) >= 0.0:  # a master segment facing away (the far side of a disc, say)
+                away += 1
+                continue
+            found += 1
+            for g in GAUSS:
+                eta = lo + g * (hi - lo)
+                x = pa + eta * (pb - pa)
+                # x + alpha n = pc + xi m_dir
+                A = np.column_stack([m_dir, -n])
+                xi, _ = np.linalg.solve(A, x - pc)
+                weight = 0.5 * (hi - lo) * L
+                Ns = (2.0 - 3.0 * eta, 3.0 * eta - 1.0)  # the dual shape functions phi_a, phi_b
+                Nm = (1.0 - xi, xi)
+                for j, nj in zip((a, b), Ns):
+                    for l, nl in zip((c, d), Nm):
+                        Mr.append(where[int(j)])
+                        Mc.append(int(l))
+                        Mv.append(weight * nj * nl)
+    if deep < 0.0:
+        raise ParameterError("slave_group", slave_group, f"a group that does not interpenetrate the master's group "
+                             f"{master_group!r} (it lies {-deep:.3g} m inside it, more than {REACH:g} x the slave "
+                             f"line's length {lengths.sum():.3g} m)", also=("master_group",))
+    if not found:
+        why = ("faces away from it (the bodies must lie on either side of the contact)" if away else
+               f"is farther than {REACH:g} x its length from it everywhere")
+        raise ParameterError("master_group", master_group, f"a boundary group that faces the slave group "
+                             f"{slave_group!r} (it {why})", also=("slave_group",))
+    D = sp.csr_matrix((Dv, (Dr, Dc)), shape=(len(nodes), len(xs)))
+    M = sp.csr_matrix((Mv, (Mr, Mc)), shape=(len(nodes), len(xm)))
+    return Mortar(nodes, normal, D, M)
+
+
+@dataclass(frozen=True, eq=False)
+class PairProblem:
+    """A ``slave`` body (the pad) on a ``master`` body (the disc), both `BodySystem`: their
+    contact groups, the master's ``motion`` (`Rotation` or `Translation`), the Coulomb
+    ``friction`` and each body's clamped boundary groups."""
+
+    slave: BodySystem
+    slave_group: str
+    master: BodySystem
+    master_group: str
+    motion: Rotation | Translation
+    friction: float = 0.0
+    clamped_slave: tuple = ()
+    clamped_master: tuple = ()
+
+    def __post_init__(self):
+        for name in ("slave", "master"):
+            if not isinstance(getattr(self, name), BodySystem):
+                raise ParameterError(name, getattr(self, name), "a BodySystem (see assemble)")
+        object.__setattr__(self, "friction", Q.check("friction", self.friction))
+        if not isinstance(self.motion, (Rotation, Translation)):
+            raise ParameterError("motion", self.motion, "a Rotation or a Translation of the master")
+        _ = self.tangent  # the coupling and the sliding direction: a pair that cannot touch is refused here
+
+    @cached_property
+    def coupling(self) -> Mortar:
+        return mortar(self.slave.body, self.slave_group, self.master.body, self.master_group)
+
+    @property
+    def n_slave(self) -> int:
+        return self.slave.n_dofs
+
+    @cached_property
+    def fixed(self) -> np.ndarray:
+        mask = np.zeros(self.slave.n_dofs + self.master.n_dofs, bool)
+        for system, groups, offset, option in ((self.slave, self.clamped_slave, 0, "clamped_slave"),
+                                               (self.master, self.clamped_master, self.n_slave, "clamped_master")):
+            for name in groups:
+                mask[offset + system.dofs(system.body.nodes(name, option))] = True
+        return mask
+
+    @cached_property
+    def tangent(self) -> tuple[np.ndarray, np.ndarray]:
+        """``(t, speed)``: the unit tangent at each slave node along the master's sliding there,
+        and that sliding speed [m/s]."""
+        c = self.coupling
+        n = c.normal
+        t0 = np.column_stack([n[:, 1], -n[:, 0]])
+        v = _velocity(self.motion, self.slave.body.points[c.slave_nodes])
+        along = np.sum(v * t0, axis=1)
+        if not np.all(np.abs(along) > 0):
+            raise ParameterError("motion", self.motion, "a motion that slides the master along the contact at "
+                                 "every slave node")
+        return t0 * np.sign(along)[:, None], np.abs(along)
+
+    def _rows(self, direction: np.ndarray) -> sp.csr_matrix:
+        """``(sum_k D_jk d_j . u_k - sum_l M_jl d_j . u_l)_j`` as a matrix on all dofs."""
+        c = self.coupling
+        blocks = []
+        for A, sign in ((c.D, 1.0), (c.M, -1.0)):
+            A = A.tocoo()
+            d = direction[A.row]
+            rows = np.concatenate([A.row, A.row])
+            cols = np.concatenate([2 * A.col, 2 * A.col + 1])
+            vals = sign * np.concatenate([A.data * d[:, 0], A.data * d[:, 1]])
+            blocks.append(sp.csr_matrix((vals, (rows, cols)), shape=(A.shape[0], 2 * A.shape[1])))
+        return sp.hstack(blocks).tocsr()
+
+    @cached_property
+    def G(self) -> sp.csr_matrix:
+        return self._rows(self.coupling.normal)
+
+    @cached_property
+    def T(self) -> sp.csr_matrix:
+        return self._rows(self.tangent[0])
+
+    @cached_property
+    def gap(self) -> np.ndarray:
+        """The weighted normal gap of each slave node in the reference configuration [m^2]."""
+        x = np.concatenate([self.slave.body.points.ravel(), self.master.body.points.ravel()])
+        return self.G @ x
+
+    @cached_property
+    def K(self) -> sp.csr_matrix:
+        return sp.block_diag([self.slave.K, self.master.K], format="csr")
+
+    @cached_property
+    def C(self):
+        if self.slave.C is None and self.master.C is None:
+            return None
+        return sp.block_diag([self.slave.damping(), self.master.damping()], format="csr")
+
+    @property
+    def mass(self) -> np.ndarray:
+        return np.concatenate([self.slave.mass, self.master.mass])
+
+    @property
+    def load(self) -> np.ndarray:
+        return np.concatenate([self.slave.load, self.master.load])
+
+    @property
+    def materials(self) -> dict:
+        """Both bodies' materials, ``slave:GROUP`` and ``master:GROUP``."""
+        return {f"{who}:{k}" if k else who: m for who, system in (("slave", self.slave), ("master", self.master))
+                for k, m in system.materials.items()}
+
+    @cached_property
+    def omega_max(self) -> float:
+        """Largest free angular frequency [rad/s] of either body (Lanczos)."""
+        free = ~self.fixed
+        scale = sp.diags(1.0 / np.sqrt(self.mass[free]))
+        A = (scale @ self.K[free][:, free] @ scale).tocsc()
+        start = np.random.default_rng(0).standard_normal(A.shape[0])
+        lam = sla.eigsh(A, k=1, which="LA", return_eigenvectors=False, tol=1e-10, v0=start)
+        return float(np.sqrt(lam[0]) * (1.0 + 1e-6))
+
+    @cached_property
+    def steady(self) -> PairSteady:
+        return steady_pair(self)
+
+    @cached_property
+    def constraint_scale(self) -> float:
+        """The constraint rows are scaled by this (and the multipliers by its inverse) to the size
+        of the stiffness' entries, so that a pivot's size says whether the pair is held."""
+        return float(np.mean(np.abs(self.K.diagonal())) / np.max(self.coupling.weight))
+
+    def linearised(self):
+        """``(K_aug, C_aug or None, mass_aug, kept)`` of the CEA about steady sliding: the free dofs
+        and the multipliers of the active slave nodes (mass 0), see the module docstring."""
+        st = self.steady
+        if not st.loaded:
+            raise NoSolutionError("steady sliding of the pair carries no contact force: press the bodies together")
+        free = np.flatnonzero(~self.fixed)
+        A = np.flatnonzero(st.active)
+        c = self.constraint_scale
+        B = c * (self.G + self.friction * self.T)[A][:, free]
+        G = c * self.G[A][:, free]
+        K = sp.bmat([[self.K[free][:, free], -B.T], [G, None]], format="csr")
+        C = None
+        if self.C is not None:
+            C = sp.block_diag([self.C[free][:, free], sp.csr_matrix((len(A), len(A)))], format="csr")
+        mass = np.concatenate([self.mass[free], np.zeros(len(A))])
+        return K, C, mass, free
+
+    def to_attrs(self) -> dict:
+        return {"slave_mesh": str(self.slave.body.source), "master_mesh": str(self.master.body.source),
+                "slave_group": self.slave_group, "master_group": self.master_group, "friction": self.friction,
+                "motion": repr(self.motion), "clamped_slave": ",".join(self.clamped_slave),
+                "clamped_master": ",".join(self.clamped_master), "slave_nodes": len(self.coupling.slave_nodes)}
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class PairSteady(Result):
+    """Steady sliding of a pair: the displacements of both bodies ``u`` [m] (slave dofs first),
+    per slave node the contact ``pressure`` [Pa] (the multiplier), ``active``, and the forces
+    on the slave's mesh nodes ``slave_force`` [N/m]."""
+
+    MODEL: ClassVar[str] = "fem"
+
+    u: np.ndarray
+    pressure: np.ndarray
+    active: np.ndarray
+    iterations: int
+    normal_force: float
+    friction_force: float
+    load_floor: float = 0.0
+    params: dict = field(default_factory=dict)
+
+    @property
+    def loaded(self) -> bool:
+        return bool(self.normal_force > self.load_floor)
+
+    def to_dict(self) -> dict:
+        return {"contact_nodes": len(self.pressure), "active_nodes": int(self.active.sum()),
+                "normal_force": self.normal_force, "friction_force": self.friction_force,
+                "max_pressure": float(self.pressure.max()), "iterations": int(self.iterations),
+                "loaded": self.loaded, "params": self.params}
+
+
+def steady_pair(problem: PairProblem, max_iterations: int | None = None) -> PairSteady:
+    """Steady sliding of ``problem`` (see the module docstring)."""
+    if not isinstance(problem, PairProblem):
+        raise ParameterError("problem", problem, "a PairProblem")
+    c = problem.coupling
+    weight = c.weight
+    max_iterations = max(ITERATIONS, 2 * len(weight)) if max_iterations is None else \
+        Q.check("max_iterations", max_iterations)
+    free = np.flatnonzero(~problem.fixed)
+    K, F, G, B = problem.K[free][:, free], problem.load[free], problem.G[:, free], \
+        (problem.G + problem.friction * problem.T)[:, free]
+    g0 = problem.gap
+    reach = np.asarray(c.M.sum(axis=1)).ravel()  # a slave node whose line overlaps no master cannot touch
+    can = reach > 0.5 * weight
+    size = max(float(np.ptp(problem.slave.body.points)), float(np.ptp(problem.master.body.points)))
+    tol = 1e-12 * size * weight  # a gap of 1e-12 of the bodies' size is touching [m^2]
+    nearest = max(0.0, float(np.min(g0[can] / weight[can]))) if can.any() else 0.0
+    active = can & (g0 <= nearest * (1 + 1e-9) * weight + tol)
+    seen = []
+    young = max(m.young for m in problem.materials.values())
+    scale = problem.constraint_scale
+    for iteration in range(1, max_iterations + 1):
+        A = np.flatnonzero(active)
+        S = sp.bmat([[K, -scale * B[A].T], [scale * G[A], None]], format="csc")
+        try:
+            lu = sla.splu(S)
+        except RuntimeError:
+            raise NoSolutionError("the pair is not held (a rigid motion is free): clamp a group of each body or "
+                                  "press them together") from None
+        piv = np.abs(lu.U.diagonal())
+        if piv.min() < 1e-12 * piv.max():
+            raise NoSolutionError("the pair is not held (a rigid motion is free): clamp a group of each body or press "
+                                  "them together")
+        x = lu.solve(np.concatenate([F, -scale * g0[A]]))
+        u = np.zeros(problem.K.shape[0])
+        u[free] = x[: free.size]
+        lam = np.zeros(len(weight))
+        lam[A] = scale * x[free.size:]
+        gap = g0 + problem.G @ u
+        penetrating = can & ~active & (gap < -tol)
+        new = (active & (lam >= 0.0)) | penetrating
+        if np.array_equal(new, active):
+            normal = float(weight @ lam)  # the multiplier is the pressure, interpolated along the slave line
+            return PairSteady(u, lam, active.copy(), iteration, normal, problem.friction * normal,
+                              1e-10 * young * size, problem.to_attrs())
+        if any(np.array_equal(old, new) for old in seen):
+            raise NoSolutionError(f"no steady sliding of the pair at friction {problem.friction:g}: the active set "
+                                  "cycles")
+        seen.append(active.copy())
+        active = new
+    raise NoSolutionError(f"the pair's active set did not settle in {max_iterations} iterations")
