@@ -34,7 +34,7 @@ from stickslip.fem import (
 )
 from stickslip.fem.assembly import cell_stress
 from stickslip.fem.cea import complex_eigenvalues
-from stickslip.fem.pair import PairProblem, Translation, steady_pair
+from stickslip.fem.pair import PairProblem, Rotation, Translation, steady_pair
 
 from .meshes import rectangle
 
@@ -123,3 +123,25 @@ def test_bad_pairs_are_refused(stack, tmp_path):
         PairProblem(assemble(sunk, Material(1e9, 0.3, 1000.0)), "bottom", master, "top",
                     Translation((1.0, 0.0)))
     assert err.value.name == "slave_group" and "interpenetrate" in str(err.value)
+
+
+@pytest.mark.parametrize("make, name", [
+    (lambda: Translation((float("nan"), 0.0)), "velocity"), (lambda: Translation((1e300, 0.0)), "velocity"),
+    (lambda: Translation("fast"), "velocity"), (lambda: Rotation(float("inf")), "omega"),
+    (lambda: Rotation(1.0, (0.0, "x")), "center")])
+def test_bad_motions_name_their_parameter(make, name):
+    with pytest.raises(ParameterError) as err:
+        make()
+    assert err.value.name == name
+
+
+def test_a_motion_that_does_not_slide_or_too_fast_is_refused(stack):
+    upper, lower = stack
+    slave, master = assemble(upper, Material(1e9, 0.3, 1000.0)), assemble(lower, Material(1e9, 0.3, 1000.0))
+    for motion in (Translation((0.0, 0.0)), Rotation(1e6, (0.02, -10.0))):
+        with pytest.raises(ParameterError) as err:
+            PairProblem(slave, "bottom", master, "top", motion, 0.3)
+        assert err.value.name == "motion"
+    with pytest.raises(ParameterError) as err:
+        PairProblem(slave, "bottom", master, "top", Translation((1.0, 0.0)), -0.1)
+    assert err.value.name == "friction"

@@ -52,6 +52,7 @@ from ..quantities import FEM as Q
 from ..results import Result
 from .assembly import BodySystem
 from .static import ITERATIONS
+from .surfaces import MAX_SPEED
 
 __all__ = ["Mortar", "PairProblem", "PairSteady", "Rotation", "Translation", "mortar", "steady_pair"]
 
@@ -68,6 +69,10 @@ class Rotation:
     omega: float
     center: tuple = (0.0, 0.0)
 
+    def __post_init__(self):
+        object.__setattr__(self, "omega", Q.check("omega", self.omega))
+        object.__setattr__(self, "center", Q["center"].check_pair(self.center, "center"))
+
     def velocity(self, points: np.ndarray) -> np.ndarray:
         r = np.asarray(points, float) - np.asarray(self.center, float)
         return self.omega * np.column_stack([-r[:, 1], r[:, 0]])
@@ -78,6 +83,11 @@ class Translation:
     """The master translates at ``velocity`` [m/s] (a belt, a sliding block)."""
 
     velocity: tuple
+
+    def __post_init__(self):
+        object.__setattr__(self, "velocity", Q["velocity"].check_pair(self.velocity))
+        if math.hypot(*self.velocity) > MAX_SPEED:
+            raise ParameterError("velocity", list(self.velocity), f"at most {MAX_SPEED:g} m/s in size")
 
     def velocity_at(self, points):
         return np.tile(np.asarray(self.velocity, float), (len(points), 1))
@@ -241,6 +251,8 @@ class PairProblem:
         t0 = np.column_stack([n[:, 1], -n[:, 0]])
         v = _velocity(self.motion, self.slave.body.points[c.slave_nodes])
         along = np.sum(v * t0, axis=1)
+        if np.abs(along).max() > MAX_SPEED:
+            raise ParameterError("motion", self.motion, f"at most {MAX_SPEED:g} m/s of sliding at the contact")
         if not np.all(np.abs(along) > 0):
             raise ParameterError("motion", self.motion, "a motion that slides the master along the contact at "
                                  "every slave node")
