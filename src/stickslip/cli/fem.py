@@ -59,7 +59,7 @@ def steady(config: Config, json: Json = False,
     problem = cfg.problem()
     st = problem.steady
     if not st.loaded:
-        print(f"warning: the contact carries no load (normal force {st.pressure.sum():.3g} N/m, at most "
+        print(f"warning: the contact carries no load (normal force {st.to_dict()['normal_force']:.3g} N/m, at most "
               f"{st.load_floor:.3g}): the body only touches, and which nodes count as active is round-off",
               file=sys.stderr)
     if out is not None:  # the file first: what is printed is what was kept
@@ -99,6 +99,9 @@ def cea(config: Config, json: Json = False,
     out = output_path("--out", out, ".nc", overwrite)
     xdmf = xdmf_path(xdmf, overwrite)
     cfg = _problem(config)
+    if xdmf is not None and cfg.partner is not None:
+        raise ParameterError("--xdmf", str(xdmf), "left out with a [partner] (the mode shapes of two bodies are not "
+                             "written yet)")
     problem = cfg.problem()
     result = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=xdmf is not None,
                                  complete_below=cfg.complete_below)
@@ -205,6 +208,9 @@ def run(config: Config,
         raise ParameterError("--window", window, f"in (0, {transits:g}] transits (at most --transits)",
                              also=("--transits",))
     cfg = _problem(config)
+    if cfg.partner is not None:
+        raise ParameterError("config", str(config), "a config with a rigid [surface] for fem run (explicit runs of "
+                             "two bodies, [partner], are not written yet: fem steady and fem cea take it)")
     if start is Start.stick and not isinstance(cfg.surface, RigidFlat):
         raise ParameterError("--start", start.value, "steady or rest with a rotating cylinder (stick moves the "
                              "whole body with a flat surface)")

@@ -44,13 +44,25 @@
     interference = 1e-5             # how far the surface is pushed into the body [m] (optional, either kind;
                                     # a flat is moved along its normal, a cylinder's radius changed)
 
+    # or, instead of [surface], an elastic counter-body (`stickslip.fem.pair`: steady sliding and
+    # the CEA of two bodies; the mesh's group above is the slave, the partner's the master):
+    # [partner]
+    # mesh = "disc.msh"             # relative to the config file
+    # group = "rim"                 # its boundary group facing contact.group
+    # clamped = ["hub"]             # its groups held fixed (optional)
+    # omega = 30.0                  # it turns at omega [rad/s] about center = [x, y] [m] (a disc),
+    # center = [0.0, 0.0]           # or translates at velocity = [vx, vy] [m/s] (a slider)
+    # [partner.material]            # its material(s): as [material] (or [[partner.material]] per cell group)
+    # young = 1.25e11
+
     [cea]                           # for `stickslip fem cea` (optional)
     band = [0.0, 20000.0]           # [Hz] (default [0, 10000])
     count = 30                      # eigenvalues per shift to start with (default 30)
     complete_below = 5e3            # [1/s]: every mode with |growth rate| below it is found
                                     # (default 0.1 x 2 pi x the band's top)
 
-`load_config(path)` returns a `FemConfig`; `FemConfig.problem()` builds the `ContactProblem`.
+`load_config(path)` returns a `FemConfig`; `FemConfig.problem()` builds the `ContactProblem` (with a
+``[partner]``: the `stickslip.fem.pair.PairProblem`).
 """
 
 from __future__ import annotations
@@ -67,18 +79,32 @@ from ..quantities import FEM as Q
 from ..errors import ParameterError
 from .assembly import MAX_STRAIN, PLANES, Material, assemble
 from .body import read_body
+from .pair import PairProblem, Rotation, Translation, mortar, sliding
 from .boundary import LIMIT, Load, Spring
 from .scheme import ContactProblem
 from .surfaces import MAX_SPEED, RigidCylinder, RigidFlat, contact_frames
 
-__all__ = ["FemConfig", "load_config", "numeric_keys", "read_toml", "resolve_key"]
+__all__ = ["FemConfig", "Partner", "load_config", "numeric_keys", "read_toml", "resolve_key"]
 
-_KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "cea", "spring", "load"},
+_KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "partner", "cea", "spring", "load"},
+          "partner": {"mesh", "group", "clamped", "omega", "center", "velocity", "material"},
           "contact": {"group", "friction", "static_friction", "law", "stribeck_speed", "weakening"},
           "surface": {"kind", "radius", "omega", "center", "body_inside", "point", "normal", "velocity",
                       "interference"},
           "cea": {"band", "count", "complete_below"}}
 _MATERIAL = {"young", "poisson", "density", "plane", "alpha", "beta"}
+
+
+@dataclass(frozen=True)
+class Partner:
+    """The ``[partner]`` of a config: an elastic counter-body and its motion."""
+
+    mesh: Path
+    group: str
+    clamped: tuple
+    motion: object
+    material: Material | dict
+    body: object = field(default=None, repr=False, compare=False)
 
 
 @dataclass(frozen=True)
@@ -100,10 +126,17 @@ class FemConfig:
     body: object = field(default=None, repr=False, compare=False)  # the mesh as read while checking
     complete_below: float | None = None  # [cea] complete_below [1/s] (None: the default of complex_eigenvalues)
     law: object = None  # a friction law of stickslip.friction ([contact] law), or None: Coulomb
+    partner: Partner | None = None  # an elastic counter-body ([partner]) instead of the surface
 
-    def problem(self) -> ContactProblem:
-        """Assemble the body and set the contact up (the mesh is read again if not kept)."""
+    def problem(self) -> ContactProblem | PairProblem:
+        """Assemble the body and set the contact up (the mesh is read again if not kept); with a
+        ``[partner]``, both bodies and their mortar contact."""
         body = self.body if self.body is not None else read_body(self.mesh)
+        if self.partner is not None:
+            p = self.partner
+            other = p.body if p.body is not None else read_body(p.mesh)
+            return PairProblem(assemble(body, self.material, self.springs, self.loads), self.group,
+                               assemble(other, p.material), p.group, p.motion, self.friction, self.clamped, p.clamped)
         for name in (*self.clamped, self.group):
             body.group(name, "clamped" if name in self.clamped else "contact.group")
         frames = contact_frames(body, self.group, self.surface)
@@ -265,8 +298,19 @@ def _checked(path: Path, data: dict) -> FemConfig:
     law = _law(problems, c, friction, static)
     springs = _springs(problems, data.get("spring", []))
     loads = _loads(problems, data.get("load", []))
-    surface = _surface(problems, data.get("surface", {}) if isinstance(data.get("surface", {}), dict) else {},
-                       friction, "surface" in data)
+    partner = None
+    if "partner" in data:
+        if "surface" in data:
+            problems.append("[surface] and [partner] exclude each other (a rigid counter-surface or an elastic "
+                            "counter-body)")
+        if law is not None or static is not None:
+            problems.append("contact.law and contact.static_friction do not apply with a [partner] (two bodies slide "
+                            "with Coulomb friction at contact.friction, for now)")
+        partner = _partner(problems, path, data["partner"] if isinstance(data["partner"], dict) else {})
+        surface = None
+    else:
+        surface = _surface(problems, data.get("surface", {}) if isinstance(data.get("surface", {}), dict) else {},
+                           friction, "surface" in data)
     e = data.get("cea", {}) if isinstance(data.get("cea", {}), dict) else {}
     band = _pair(problems, "cea.band", e.get("band", [0.0, 1e4]))
     if band is not None and not band[0] < band[1]:
@@ -291,13 +335,75 @@ def _checked(path: Path, data: dict) -> FemConfig:
     body = _body(problems, mesh_path, clamped, group, springs, loads, data, surface)
     if body is not None:
         _cell_groups(problems, body, materials)
+    if partner is not None and body is not None and partner.body is not None and isinstance(group, str) \
+            and group in body.groups:
+        _facing(problems, body, group, partner)
     if problems:
         raise ParameterError("config", str(path), f"a valid config; {len(problems)} problem"
                              f"{'s' if len(problems) > 1 else ''}: " + "; ".join(problems))
     made = {name: Material(e, nu, rho, plane, a, b) for name, (e, nu, rho, plane, a, b) in materials.items()}
     material = made[""] if list(made) == [""] else made
     return FemConfig(path, mesh_path, tuple(clamped), material, group, friction, surface, tuple(band), count,
-                     static, springs, loads, body, below, law)
+                     static, springs, loads, body, below, law, partner)
+
+
+def _partner(problems, path: Path, p: dict) -> Partner | None:
+    """The ``[partner]`` table: its mesh (read), group, clamps, motion and materials."""
+    mesh, group, clamped = p.get("mesh"), p.get("group"), p.get("clamped", [])
+    mesh_path = None
+    if not isinstance(mesh, str):
+        problems.append("partner.mesh must be the path of a mesh file")
+    else:
+        mesh_path = (path.parent / mesh) if not Path(mesh).is_absolute() else Path(mesh)
+        if not mesh_path.is_file():
+            problems.append(f"partner.mesh = {mesh!r}: no such file ({mesh_path})")
+            mesh_path = None
+    if not isinstance(group, str):
+        problems.append("partner.group must be the name of a boundary group of partner.mesh")
+    if not (isinstance(clamped, list) and all(isinstance(c, str) for c in clamped)):
+        problems.append(f"partner.clamped = {clamped!r} must be a list of boundary group names")
+        clamped = []
+    motion = None
+    if ("omega" in p) == ("velocity" in p):
+        problems.append("partner: give omega (it turns about center) or velocity (it translates), one of them")
+    elif "omega" in p:
+        omega, center = _number(problems, "partner.omega", p["omega"]), _pair(problems, "partner.center",
+                                                                              p.get("center", [0.0, 0.0]))
+        motion = None if None in (omega, center) else Rotation(omega, center)
+    else:
+        velocity = _pair(problems, "partner.velocity", p["velocity"])
+        motion = None if velocity is None else Translation(velocity)
+    materials = _materials(problems, p.get("material"), "partner.material")
+    body = None
+    if mesh_path is not None:
+        try:
+            body = read_body(mesh_path)
+        except ParameterError as err:
+            problems.append(f"partner.mesh: {err}")
+    if body is not None:
+        have = ", ".join(sorted(body.groups)) or "none"
+        problems += [f"{where} = {name!r} is not a boundary group of {mesh_path.name} (it has: {have})"
+                     for where, name in [("partner.group", group)] + [(f"partner.clamped[{i}]", c)
+                                                                      for i, c in enumerate(clamped)]
+                     if isinstance(name, str) and name not in body.groups]
+        _cell_groups(problems, body, materials, "partner.material")
+    if None in (motion, body) or not materials or not isinstance(group, str) or group not in body.groups \
+            or any(v is None for m in materials.values() for v in m):
+        return None
+    made = {name: Material(*m) for name, m in materials.items()}
+    return Partner(mesh_path, group, tuple(clamped), motion, made[""] if list(made) == [""] else made, body)
+
+
+def _facing(problems, body, group: str, partner: Partner) -> None:
+    """The contact group and the partner's group face each other within reach, and the partner's
+    motion slides along the contact."""
+    try:
+        coupling = mortar(body, group, partner.body, partner.group)
+        sliding(coupling, partner.motion, body.points)
+    except ParameterError as err:
+        where = {"slave_group": "contact.group", "master_group": "partner.group", "motion": "partner motion"}
+        problems.append(f"{where.get(err.name, err.name)} = {_toml(err.value) if err.name != 'motion' else ''} must "
+                        f"be {err.allowed}".replace(" =  must", " must"))
 
 
 def _law(problems, c: dict, friction, static):
@@ -328,21 +434,21 @@ def _law(problems, c: dict, friction, static):
                                                      {"tau": value} if needs == "weakening" else {}))
 
 
-def _materials(problems, raw) -> dict:
+def _materials(problems, raw, key: str = "material") -> dict:
     """``{cell group: (young, poisson, density, plane, alpha, beta)}`` of ``[material]`` (the whole
     body, group "") or of ``[[material]]`` tables, each with its ``group``; problems named as
     written (``material.young``, ``material[1].young``)."""
     if raw is None:
         raw = {}
     if isinstance(raw, dict):
-        tables = [("material", raw)]
+        tables = [(key, raw)]
         if "group" in raw:
-            problems.append("material.group: a single [material] is the whole body; one per cell group is written "
-                            "[[material]], a table for each group")
+            problems.append(f"{key}.group: a single [{key}] is the whole body; one per cell group is written "
+                            f"[[{key}]], a table for each group")
     elif isinstance(raw, list) and raw and all(isinstance(t, dict) for t in raw):
-        tables = [(f"material[{i}]", t) for i, t in enumerate(raw)]
+        tables = [(f"{key}[{i}]", t) for i, t in enumerate(raw)]
     else:
-        problems.append("material must be a table [material] (the whole body) or tables [[material]] with a group "
+        problems.append(f"{key} must be a table [{key}] (the whole body) or tables [[{key}]] with a group "
                         "each")
         return {}
     out = {}
@@ -369,31 +475,31 @@ def _materials(problems, raw) -> dict:
                      _number(problems, f"{where}.beta", m.get("beta", 0.0)))
     planes = {v[3] for v in out.values()}
     if len(planes) > 1:
-        problems.append(f"material.plane must be the same for every material (they have {', '.join(sorted(planes))})")
+        problems.append(f"{key}.plane must be the same for every material (they have {', '.join(sorted(planes))})")
     return out
 
 
-def _cell_groups(problems, body, materials: dict) -> None:
+def _cell_groups(problems, body, materials: dict, key: str = "material") -> None:
     """Every cell group of the mesh with a material and every material on a cell group of it."""
     names = [k for k in materials if k]
     if not names:
         return
     have = ", ".join(sorted(body.cell_groups)) or "none"
-    problems += [f"material[{i}].group = {name!r} is not a cell group of {Path(str(body.source)).name} (it has: "
+    problems += [f"{key}[{i}].group = {name!r} is not a cell group of {Path(str(body.source)).name} (it has: "
                  f"{have})" for i, name in enumerate(names) if name not in body.cell_groups]
-    problems += [f"material: the cell group {name!r} of {Path(str(body.source)).name} has none (every cell group "
-                 "needs its [[material]], or one [material] for the whole body)" for name in sorted(body.cell_groups)
+    problems += [f"{key}: the cell group {name!r} of {Path(str(body.source)).name} has none (every cell group "
+                 f"needs its [[{key}]], or one [{key}] for the whole body)" for name in sorted(body.cell_groups)
                  if name not in materials]
     owner = np.full(len(body.cells), -1)
     for i, name in enumerate(names):
         cells = body.cell_groups.get(name, np.zeros(0, dtype=np.int64))
         twice = cells[owner[cells] >= 0]
         if twice.size:
-            problems.append(f"material[{i}].group = {name!r} shares {twice.size} cells with "
+            problems.append(f"{key}[{i}].group = {name!r} shares {twice.size} cells with "
                             f"{names[int(owner[twice[0]])]!r}: a cell has one material")
         owner[cells] = i
     if all(name in body.cell_groups for name in names) and np.any(owner < 0):
-        problems.append(f"material: {int(np.sum(owner < 0))} cells of {Path(str(body.source)).name} are in no cell "
+        problems.append(f"{key}: {int(np.sum(owner < 0))} cells of {Path(str(body.source)).name} are in no cell "
                         f"group with a material ({have})")
 
 

@@ -41,12 +41,15 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
+from pathlib import Path
 from typing import ClassVar
 
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as sla
+import xarray as xr
 
+from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import FEM as Q
 from ..results import Result
@@ -54,7 +57,7 @@ from .assembly import BodySystem
 from .static import ITERATIONS
 from .surfaces import MAX_SPEED
 
-__all__ = ["Mortar", "PairProblem", "PairSteady", "Rotation", "Translation", "mortar", "steady_pair"]
+__all__ = ["Mortar", "PairProblem", "PairSteady", "Rotation", "Translation", "mortar", "sliding", "steady_pair"]
 
 GAUSS = (0.5 - 0.5 / math.sqrt(3.0), 0.5 + 0.5 / math.sqrt(3.0))
 #: Master segments farther than this times the slave line's length (either side) are not its
@@ -201,6 +204,21 @@ def mortar(slave_body, slave_group: str, master_body, master_group: str) -> Mort
     return Mortar(nodes, normal, D, M)
 
 
+def sliding(coupling: Mortar, motion, points) -> tuple[np.ndarray, np.ndarray]:
+    """``(t, speed)`` at the slave nodes of ``coupling`` (mesh ``points``): the unit tangent along
+    the master's ``motion`` there and its speed [m/s]; a motion that does not slide the master
+    along the contact at every slave node, or faster than the fastest surface, is refused."""
+    n = coupling.normal
+    t0 = np.column_stack([n[:, 1], -n[:, 0]])
+    along = np.sum(_velocity(motion, np.asarray(points)[coupling.slave_nodes]) * t0, axis=1)
+    if np.abs(along).max() > MAX_SPEED:
+        raise ParameterError("motion", motion, f"at most {MAX_SPEED:g} m/s of sliding at the contact")
+    if not np.all(np.abs(along) > 0):
+        raise ParameterError("motion", motion, "a motion that slides the master along the contact at every slave "
+                             "node")
+    return t0 * np.sign(along)[:, None], np.abs(along)
+
+
 @dataclass(frozen=True, eq=False)
 class PairProblem:
     """A ``slave`` body (the pad) on a ``master`` body (the disc), both `BodySystem`: their
@@ -245,18 +263,8 @@ class PairProblem:
     @cached_property
     def tangent(self) -> tuple[np.ndarray, np.ndarray]:
         """``(t, speed)``: the unit tangent at each slave node along the master's sliding there,
-        and that sliding speed [m/s]."""
-        c = self.coupling
-        n = c.normal
-        t0 = np.column_stack([n[:, 1], -n[:, 0]])
-        v = _velocity(self.motion, self.slave.body.points[c.slave_nodes])
-        along = np.sum(v * t0, axis=1)
-        if np.abs(along).max() > MAX_SPEED:
-            raise ParameterError("motion", self.motion, f"at most {MAX_SPEED:g} m/s of sliding at the contact")
-        if not np.all(np.abs(along) > 0):
-            raise ParameterError("motion", self.motion, "a motion that slides the master along the contact at "
-                                 "every slave node")
-        return t0 * np.sign(along)[:, None], np.abs(along)
+        and that sliding speed [m/s] (`sliding`)."""
+        return sliding(self.coupling, self.motion, self.slave.body.points)
 
     def _rows(self, direction: np.ndarray) -> sp.csr_matrix:
         """``(sum_k D_jk d_j . u_k - sum_l M_jl d_j . u_l)_j`` as a matrix on all dofs."""
@@ -348,7 +356,7 @@ class PairProblem:
         return K, C, mass, free
 
     def to_attrs(self) -> dict:
-        return {"slave_mesh": str(self.slave.body.source), "master_mesh": str(self.master.body.source),
+        return {"slave_mesh": Path(str(self.slave.body.source)).name, "master_mesh": Path(str(self.master.body.source)).name,
                 "slave_group": self.slave_group, "master_group": self.master_group, "friction": self.friction,
                 "motion": repr(self.motion), "clamped_slave": ",".join(self.clamped_slave),
                 "clamped_master": ",".join(self.clamped_master), "slave_nodes": len(self.coupling.slave_nodes)}
@@ -370,6 +378,27 @@ class PairSteady(Result):
     friction_force: float
     load_floor: float = 0.0
     params: dict = field(default_factory=dict)
+    points: np.ndarray | None = None  # the slave nodes' reference positions [m] (for to_xarray)
+    gap: np.ndarray | None = None  # each slave node's normal gap in steady sliding [m]
+
+    def to_xarray(self) -> xr.Dataset:
+        """The slave's contact nodes (in mesh order): position, pressure, state, gap."""
+        N = "slave_node"
+        data = {"pressure": (N, self.pressure, {"units": "Pa", "long_name": "contact pressure at the slave node "
+                                                                             "(the mortar multiplier)"}),
+                "active": (N, self.active.astype(np.int8), {"units": "1", "long_name": "slave node in contact (1) "
+                                                                                        "or lifted off (0)"})}
+        if self.gap is not None:
+            data["gap"] = (N, self.gap, {"units": "m", "long_name": "normal gap to the master in steady sliding"})
+        if self.points is not None:
+            for k, axis in enumerate("xy"):
+                data[axis] = (N, self.points[:, k], {"units": "m", "long_name": f"{axis} of the slave node "
+                                                                                "(reference configuration)"})
+        ds = xr.Dataset(data, coords={N: (N, np.arange(len(self.pressure)), {"units": "1", "long_name":
+                                                                                "index of the slave contact node"})})
+        d = {k: v for k, v in self.to_dict().items() if k != "params"}
+        return finish(ds, "steady sliding of two bodies in contact (mortar)", "fem",
+                      params={**d, **self.params, "loaded": int(self.loaded)})
 
     @property
     def loaded(self) -> bool:
@@ -426,7 +455,8 @@ def steady_pair(problem: PairProblem, max_iterations: int | None = None) -> Pair
         if np.array_equal(new, active):
             normal = float(weight @ lam)  # the multiplier is the pressure, interpolated along the slave line
             return PairSteady(u, lam, active.copy(), iteration, normal, problem.friction * normal,
-                              1e-10 * young * size, problem.to_attrs())
+                              1e-10 * young * size, problem.to_attrs(), problem.slave.body.points[c.slave_nodes],
+                              gap / weight)
         if any(np.array_equal(old, new) for old in seen):
             raise NoSolutionError(f"no steady sliding of the pair at friction {problem.friction:g}: the active set "
                                   "cycles")

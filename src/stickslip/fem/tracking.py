@@ -39,7 +39,7 @@ from ..quantities import FEM as Q
 from ..sweep import run_sweep
 from .cea import NEUTRAL, complex_eigenvalues, count_sketch, linearised
 from .config import load_config, read_toml, resolve_key
-from .scheme import BodyScheme
+from .scheme import BodyScheme, ContactProblem
 
 __all__ = ["cea_sweep", "track", "Tracked", "MIN_MAC", "SKETCH"]
 
@@ -59,13 +59,16 @@ def _solve(config, key, value, modes_kept):
     cfg = load_config(config, {key: value})
     problem = cfg.problem()
     modes = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=True, complete_below=cfg.complete_below)
-    n = BodyScheme(problem).free.size
-    _, _, _, kept = linearised(problem)
+    if isinstance(problem, ContactProblem):  # the kept dofs among the scheme's free ones
+        n, kept = BodyScheme(problem).free.size, linearised(problem)[3]
+    else:  # a pair: its free dofs, ahead of the contact multipliers (whose number varies)
+        n = problem.linearised()[3].size
+        kept = np.arange(n)
     sketch = count_sketch(n, SKETCH)
     out = np.zeros((min(len(modes.s), modes_kept), SKETCH), dtype=complex)
     for k in range(out.shape[0]):
         full = np.zeros(n, dtype=complex)
-        full[kept] = modes.shapes[:, k]
+        full[kept] = modes.shapes[:kept.size, k]
         out[k] = sketch(full)
     return modes.s[:out.shape[0]], out
 

@@ -1,0 +1,88 @@
+"""A pad on an elastic disc from a config (``[partner]``) through `stickslip fem steady | cea`, as a
+user runs the example (`examples/pad_on_disc/pad_disc.toml`, coarser meshes): the disc drags
+the pad along its own turning (the pad's face moves with the disc, the other way when the
+disc turns the other way), the CEA finds the disc's modes below the pad's first (rigid disc:
+none in the band) and a pad-disc coupling that flutters; refusals in one line."""
+
+import json
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from stickslip.cli import run
+from stickslip.fem.config import load_config
+
+from .test_examples import EXAMPLES
+
+
+@pytest.fixture(scope="module")
+def folder(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("pad_disc")
+    shutil.copy(EXAMPLES / "pad_on_disc" / "pad_disc.toml", folder)
+    for script, args in (("mesh.py", ["pad.msh", "0.004"]), ("disc.py", ["disc.msh", "0.003", "2e-5"])):
+        subprocess.run([sys.executable, str(EXAMPLES / "pad_on_disc" / script), *args], cwd=folder, check=True)
+    return folder
+
+
+def _config(folder, old="", new="", name="case.toml"):
+    text = (folder / "pad_disc.toml").read_text()
+    assert old in text
+    (folder / name).write_text(text.replace(old, new))
+    return folder / name
+
+
+@pytest.mark.parametrize("omega", [30.0, -30.0])
+def test_the_disc_drags_the_pad_along_its_turning(folder, omega, capsys):
+    path = _config(folder, "omega = 30.0", f"omega = {omega}")
+    assert run(["fem", "steady", str(path), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["active_nodes"] == data["contact_nodes"] > 0 and data["loaded"]
+    assert data["friction_force"] == pytest.approx(0.5 * data["normal_force"], rel=1e-12)
+    problem = load_config(path).problem()
+    st = problem.steady
+    pts = problem.slave.body.points[problem.coupling.slave_nodes]
+    u = st.u[: problem.slave.n_dofs].reshape(-1, 2)[problem.coupling.slave_nodes]
+    e_theta = np.column_stack([-pts[:, 1], pts[:, 0]]) / np.hypot(pts[:, 0], pts[:, 1])[:, None]
+    along = np.sum(u * e_theta, axis=1)  # the face's displacement along the counter-clockwise direction
+    assert np.all(np.sign(along) == np.sign(omega))
+
+
+def test_the_cea_finds_disc_modes_and_a_pad_disc_flutter(folder, capsys):
+    assert run(["fem", "cea", str(folder / "pad_disc.toml"), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert len(data["modes"]) >= 10 and data["unstable"] >= 1  # the rigid disc gives none below 20 kHz
+    assert data["params"]["master_mesh"] == "disc.msh" and data["units"]["modes.growth_rate"]["units"] == "1/s"
+    frozen = _config(folder, "friction = 0.5", "friction = 0.0", "frictionless.toml")
+    assert run(["fem", "cea", str(frozen), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["unstable"] == 0 and data["neutral"] == len(data["modes"])  # undamped, no friction: conservative
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("[partner]\n", '[surface]\nkind = "flat"\npoint = [0, 0]\nnormal = [0, 1]\nvelocity = [1, 0]\n[partner]\n',
+     "exclude each other"),
+    ('group = "rim"', 'group = "hub"', "partner.group"),
+    ('group = "rim"', 'group = "spoke"', "partner.group = 'spoke' is not a boundary group"),
+    ("omega = 30.0", "omega = 30.0\nvelocity = [1.0, 0.0]", "one of them"),
+    ("young = 1.25e11", "young = -1.0", "partner.material.young"),
+    ('mesh = "disc.msh"', 'mesh = "nowhere.msh"', "partner.mesh"),
+    ("friction = 0.5", 'friction = 0.5\nlaw = "stribeck"\nstribeck_speed = 0.1\nstatic_friction = 0.6',
+     "do not apply with a [partner]"),
+])
+def test_a_bad_partner_is_refused_in_one_line(folder, old, new, words, capsys):
+    path = _config(folder, old, new, "bad.toml")
+    assert run(["fem", "steady", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and words in err, err
+
+
+def test_runs_and_mode_files_of_a_pair_are_refused_naming_why(folder, tmp_path, capsys):
+    assert run(["fem", "run", str(folder / "pad_disc.toml"), "--transits", "1"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "[partner]" in err
+    assert run(["fem", "cea", str(folder / "pad_disc.toml"), "--xdmf", str(tmp_path / "m.xdmf")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--xdmf" in err and not list(tmp_path.iterdir())
