@@ -64,8 +64,9 @@ def _coordinates(problem):
     return out
 
 
-def _equations(problem):
-    """``R(z, zd, zdd)``: the equations of motion above, about steady sliding."""
+def _equations(problem, consistent=False):
+    """``R(z, zd, zdd)``: the equations of motion above, about steady sliding (with the
+    consistent mass matrix, assembled here with scikit-fem, if ``consistent``)."""
     system, frames, steady = problem.system, problem.frames, problem.steady
     coords = _coordinates(problem)
     n_dofs = system.n_dofs
@@ -75,6 +76,13 @@ def _equations(problem):
     K = system.K.toarray()
     C = np.zeros_like(K) if system.C is None else system.C.toarray()
     m = system.mass
+    if consistent:
+        from skfem import BilinearForm, asm
+        from skfem.helpers import dot
+
+        basis, order = system.basis
+        rho = system.cell_values("density")[:, None] * np.ones(basis.X.shape[1])
+        Mc = asm(BilinearForm(lambda u, v, w: w.rho * dot(u, v)), basis, rho=rho)[order][:, order].toarray()
     u0 = steady.u
     held = {int(frames.nodes[k]): k for k in np.flatnonzero(steady.active)}
     law = problem.law
@@ -84,10 +92,12 @@ def _equations(problem):
     def R(z, zd, zdd):
         u, v, acc = u0 + P @ z, P @ zd, P @ zdd
         r = K @ u + C @ v - system.load
+        if consistent:  # the inertia joins the internal force: the normal reaction carries it too
+            r = r + Mc @ acc
         out = np.empty(len(coords))
         for j, (_, node, direction) in enumerate(coords):
             pair = slice(2 * node, 2 * node + 2)
-            row = m[2 * node] * acc[pair] + r[pair]
+            row = r[pair] if consistent else m[2 * node] * acc[pair] + r[pair]
             if node in held:
                 k = held[node]
                 n, t = frames.normal[k], frames.tangent[k]
@@ -99,8 +109,8 @@ def _equations(problem):
     return R, coords
 
 
-def _jacobians(problem, h_u, h_v):
-    R, coords = _equations(problem)
+def _jacobians(problem, h_u, h_v, consistent=False):
+    R, coords = _equations(problem, consistent)
     n = len(coords)
     zero = np.zeros(n)
     J = []
@@ -116,14 +126,15 @@ def _jacobians(problem, h_u, h_v):
     return J, coords
 
 
-def _check(problem, h_u, h_v):
-    (JK, JC, JM), coords = _jacobians(problem, h_u, h_v)
-    K_eff, C_eff, mass, kept = linearised(problem)
+def _check(problem, h_u, h_v, consistent=False):
+    (JK, JC, JM), coords = _jacobians(problem, h_u, h_v, consistent)
+    K_eff, C_eff, mass, kept = linearised(problem, "consistent" if consistent else "lumped")
+    mass = mass.toarray() if consistent else np.diag(mass)
     scheme = BodyScheme(problem)
     # the same coordinates in the same order as the package's kept dofs (of its nodal frames)
     assert np.array_equal(np.asarray(scheme.free)[kept], [dof for dof, _, _ in coords])
     C_eff = sp.csr_matrix(K_eff.shape) if C_eff is None else C_eff
-    for mine, theirs, name in ((JK, K_eff.toarray(), "K"), (JC, C_eff.toarray(), "C"), (JM, np.diag(mass), "M")):
+    for mine, theirs, name in ((JK, K_eff.toarray(), "K"), (JC, C_eff.toarray(), "C"), (JM, mass, "M")):
         scale = np.abs(mine).max()
         assert scale > 0 and np.abs(mine - theirs).max() <= 1e-7 * scale, (name, np.abs(mine - theirs).max() / scale)
     return JC
@@ -140,9 +151,11 @@ def _block(folder, law, friction, alpha, beta, speed):
 @pytest.mark.parametrize("law, friction", [(None, 0.4), (Stribeck(0.6, 0.4, 0.2), 0.0),
                                            (LinearWeakening(0.5, 0.3, 0.1), 0.0)],
                          ids=["coulomb", "stribeck", "linear-weakening"])
-def test_the_block_on_a_belt_linearises_as_its_equations_of_motion(block, law, friction):  # noqa: F811
+@pytest.mark.parametrize("consistent", [False, True], ids=["lumped", "consistent"])
+def test_the_block_on_a_belt_linearises_as_its_equations_of_motion(block, law, friction, consistent):  # noqa: F811
+    """With the consistent mass the friction rows carry the normal rows' inertia too."""
     problem = _block(block, law, friction, alpha=40.0, beta=2e-6, speed=0.3)
-    JC = _check(problem, h_u=1e-9, h_v=1e-5)
+    JC = _check(problem, h_u=1e-9, h_v=1e-5, consistent=consistent)
     assert np.abs(JC).max() > 0
 
 

@@ -71,6 +71,8 @@ def test_the_cea_finds_disc_modes_and_a_pad_disc_flutter(folder, capsys):
     ('mesh = "disc.msh"', 'mesh = "nowhere.msh"', "partner.mesh"),
     ("friction = 0.5", 'friction = 0.5\nlaw = "stribeck"\nstribeck_speed = 0.1\nstatic_friction = 0.6',
      "do not apply with a [partner]"),
+    ("count = 30", 'count = 30\nmass_matrix = "consistent"', "cea.mass_matrix, cea.contact_model and cea.penalty "
+                                                               "do not apply with a [partner]"),
 ])
 def test_a_bad_partner_is_refused_in_one_line(folder, old, new, words, capsys):
     path = _config(folder, old, new, "bad.toml")

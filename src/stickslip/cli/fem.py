@@ -104,7 +104,7 @@ def cea(config: Config, json: Json = False,
                              "written yet)")
     problem = cfg.problem()
     result = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=xdmf is not None,
-                                 complete_below=cfg.complete_below)
+                                 complete_below=cfg.complete_below, **cfg.cea_options)
     if not result.s.size:  # nothing to report or write: said, not an empty success
         raise NoSolutionError(f"no mode of steady sliding has its frequency in cea.band = {list(cfg.band)} Hz (every "
                               f"mode there with |growth rate| below {result.complete_below:.4g} 1/s would have been "

@@ -146,6 +146,14 @@ class BodySystem:
         return max(speeds[int(i)] for i in which)
 
     @cached_property
+    def consistent_mass(self) -> sp.csr_matrix:
+        """The consistent mass matrix ``int rho N_i . N_j`` [kg/m] on the ``2 n`` Cartesian dofs
+        (each cell's own density); `mass` is its lumped form."""
+        basis, order = self.basis
+        M = asm(_weighted_mass, basis, rho=_on_points(basis, self.cell_values("density")))
+        return M[order][:, order].tocsr()
+
+    @cached_property
     def basis(self) -> tuple:
         """``(basis, order)``: the scikit-fem vector basis of the body and, for each dof ``2 i + c``,
         its index in scikit-fem's numbering."""

@@ -52,16 +52,31 @@ NEUTRAL = 1e-7
 MAX_RESTARTS = 300
 #: The band's top at most this times the mesh's highest frequency (no mode lies beyond it).
 BAND_MARGIN = 1.5
+#: The default penalty of ``contact_model="penalty"``: the springs' stiffness over the stiffness'
+#: largest diagonal entry.
+PENALTY = 1e3
 #: The most eigenvalues a shift asks for by default (a shift costs its pencil's size times the
 #: count squared: 1000 on a pad of 6k dofs took minutes).
 MAX_COUNT = 400
 
 
-def linearised(problem: ContactProblem):
+def linearised(problem: ContactProblem, mass_matrix: str = "lumped", contact_model: str = "constraint",
+               penalty: float | None = None):
     """``(K_eff, C_eff or None, mass, kept)``: the linearised operators on the kept dofs
     (the free dofs of `BodyScheme` less the normal dofs of the contact nodes in contact).
+    ``mass`` is the lumped mass (a vector) or, with ``mass_matrix="consistent"``, the consistent
+    mass matrix with the friction rows applied to it too (its normal rows couple). With
+    ``contact_model="penalty"`` the normal dofs in contact are kept, each on a spring of
+    ``penalty`` times the stiffness' largest diagonal entry, whose force ``-k w_n`` drives the
+    friction ``f`` times it on the tangential dof (converging to the constraint as the penalty grows).
     A steady state that carries no load (`SteadyContact.loaded`) is a `NoSolutionError`: which
     nodes touch it is round-off."""
+    mass_matrix = Q.check("mass_matrix", mass_matrix)
+    contact_model = Q.check("contact_model", contact_model)
+    if contact_model == "penalty":
+        penalty = Q.check("penalty", PENALTY if penalty is None else penalty)
+    elif penalty is not None:
+        raise ParameterError("penalty", penalty, 'left out unless contact_model = "penalty"', also=("contact_model",))
     scheme = BodyScheme(problem)
     K = scheme.stiffness
     normal, tangent = scheme.contact_dofs
@@ -73,11 +88,16 @@ def linearised(problem: ContactProblem):
                               "body (surface.interference > 0) or press the body on it with a load")
     touching = steady.active[scheme.contact_nodes]
     normal, tangent = normal[touching], tangent[touching]
-    keep = np.setdiff1d(np.arange(scheme.free.size), normal)
     f = problem.friction
-    # each tangential row less f times its node's normal row: (I - f P) A with P[t, n] = 1
-    rows = sp.identity(K.shape[0], format="csr") - f * sp.csr_matrix(
-        (np.ones(len(normal)), (tangent, normal)), shape=K.shape)
+    P = sp.csr_matrix((np.ones(len(normal)), (tangent, normal)), shape=K.shape)  # P[t, n] = 1
+    if contact_model == "penalty":  # every free dof kept; the springs' force -k w_n, and f times it on t
+        keep = np.arange(scheme.free.size)
+        k = penalty * float(np.abs(K.diagonal()).max())
+        K = K + k * sp.csr_matrix((np.ones(len(normal)), (normal, normal)), shape=K.shape) + f * k * P
+        rows = sp.identity(K.shape[0], format="csr")
+    else:  # each tangential row less f times its node's normal row: (I - f P) A
+        keep = np.setdiff1d(np.arange(scheme.free.size), normal)
+        rows = sp.identity(K.shape[0], format="csr") - f * P
 
     def effective(A):
         return (rows @ A).tocsr()[keep][:, keep]
@@ -93,6 +113,9 @@ def linearised(problem: ContactProblem):
         extra = sp.csr_matrix((force * slope, (np.searchsorted(keep, tangent), np.searchsorted(keep, tangent))),
                               shape=K_eff.shape)
         C_eff = extra if C_eff is None else (C_eff + extra).tocsr()
+    if mass_matrix == "consistent":  # in the scheme's frames on the free dofs, as K
+        M = (scheme.rotation.T @ problem.system.consistent_mass @ scheme.rotation).tocsr()[scheme.free][:, scheme.free]
+        return K_eff, C_eff, effective(M), keep
     return K_eff, C_eff, scheme.mass[keep], keep
 
 
@@ -177,17 +200,18 @@ def eigenvalues_near(K_eff, C_eff, mass, shift_hz: float, count: int, vectors: b
     w0 = 2.0 * math.pi * shift_hz
     n = K_eff.shape[0]
     C = sp.csr_matrix((n, n)) if C_eff is None else C_eff
+    M = mass if sp.issparse(mass) else sp.diags(np.asarray(mass, dtype=float))  # lumped (a vector) or a matrix
     sigma = 1j * w0
-    lu = sla.splu((K_eff + sigma * C + sp.diags(sigma**2 * mass)).astype(complex).tocsc())
+    lu = sla.splu((K_eff + sigma * C + sigma**2 * M).astype(complex).tocsc())
     # x = (w, s w / om): with om of the order of the frequencies, both halves of an
     # eigenvector are of one size (with om = 1 Arnoldi loses 1e-6 of s near sigma = 0)
-    om = max(w0, math.sqrt(np.mean(np.abs(K_eff.diagonal())) / np.mean(mass)))
+    om = max(w0, math.sqrt(np.mean(np.abs(K_eff.diagonal())) / np.mean(np.abs(M.diagonal()))))
 
     def solve(x):
         """``(A - sigma B)^-1 B x`` of the scaled pencil, through one solve with
         ``Q(sigma) = K + sigma C + sigma^2 M``."""
-        b1, b2 = x[:n], om * mass * x[n:]
-        y1 = -lu.solve(b2 + C @ b1 + sigma * mass * b1)
+        b1, b2 = x[:n], om * (M @ x[n:])
+        y1 = -lu.solve(b2 + C @ b1 + sigma * (M @ b1))
         return np.concatenate([y1, (b1 + sigma * y1) / om])
 
     op = sla.LinearOperator((2 * n, 2 * n), matvec=solve, dtype=complex)
@@ -287,7 +311,8 @@ def covered(centres, radii, lo: float, hi: float) -> float:
 
 def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], count: int = 30,
                         mode_shapes: bool = False, max_shifts: int = 100, complete_below: float | None = None,
-                        max_count: int | None = None) -> CeaModes:
+                        max_count: int | None = None, mass_matrix: str = "lumped", contact_model: str = "constraint",
+                        penalty: float | None = None) -> CeaModes:
     """The modes of steady sliding of ``problem`` with frequencies in ``band`` [Hz] (see the
     module docstring), every one with ``|growth rate| < complete_below`` [1/s] found (default:
     0.1 x 2 pi x the band's top, a mode that grows by a factor 1.9 per period there).
@@ -316,7 +341,15 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
     count = Q.check("count", count)
     max_count = None if max_count is None else Q.check("max_count", max_count)
     max_shifts = Q.check("max_shifts", max_shifts)
-    K_eff, C_eff, mass, _ = linearised(problem) if isinstance(problem, ContactProblem) else problem.linearised()
+    if isinstance(problem, ContactProblem):
+        K_eff, C_eff, mass, _ = linearised(problem, mass_matrix, contact_model, penalty)
+    else:
+        if (Q.check("mass_matrix", mass_matrix), Q.check("contact_model", contact_model), penalty) != \
+                ("lumped", "constraint", None):
+            raise ParameterError("mass_matrix", mass_matrix, 'lumped with a pair of bodies, contact_model '
+                                 '"constraint" and no penalty (the other options are for one body, for now)',
+                                 also=("contact_model", "penalty"))
+        K_eff, C_eff, mass, _ = problem.linearised()
     most = K_eff.shape[0] - 2
     count = min(count, most)
     max_count = min(MAX_COUNT, 16 * count, max(count, most // 2)) if max_count is None else \
@@ -354,7 +387,9 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
     s = s[inside][order]
     vecs = np.array([shapes[i] for i in np.flatnonzero(inside)[order]]).T if mode_shapes and s.size else None
     reached = covered(2.0 * math.pi * np.array(shifts), np.array(radii), lo, hi)
-    return CeaModes(s, vecs, np.array(shifts), (lo, hi), reached, reach, problem.to_attrs())
+    options = {"mass_matrix": mass_matrix, "contact_model": contact_model,
+               **({} if penalty is None else {"penalty": float(penalty)})}
+    return CeaModes(s, vecs, np.array(shifts), (lo, hi), reached, reach, {**problem.to_attrs(), **options})
 
 
 def _overdamped_band(materials: dict, lo: float, hi: float) -> str:

@@ -60,6 +60,9 @@
     count = 30                      # eigenvalues per shift to start with (default 30)
     complete_below = 5e3            # [1/s]: every mode with |growth rate| below it is found
                                     # (default 0.1 x 2 pi x the band's top)
+    mass_matrix = "lumped"          # or "consistent" (optional)
+    contact_model = "constraint"    # or "penalty": the contact nodes on springs of penalty x the
+    penalty = 1e3                   # stiffness' largest diagonal entry (optional; default 1e3)
 
 `load_config(path)` returns a `FemConfig`; `FemConfig.problem()` builds the `ContactProblem` (with a
 ``[partner]``: the `stickslip.fem.pair.PairProblem`).
@@ -91,7 +94,7 @@ _KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "partner", "
           "contact": {"group", "friction", "static_friction", "law", "stribeck_speed", "weakening"},
           "surface": {"kind", "radius", "omega", "center", "body_inside", "point", "normal", "velocity",
                       "interference"},
-          "cea": {"band", "count", "complete_below"}}
+          "cea": {"band", "count", "complete_below", "mass_matrix", "contact_model", "penalty"}}
 _MATERIAL = {"young", "poisson", "density", "plane", "alpha", "beta"}
 
 
@@ -127,6 +130,7 @@ class FemConfig:
     complete_below: float | None = None  # [cea] complete_below [1/s] (None: the default of complex_eigenvalues)
     law: object = None  # a friction law of stickslip.friction ([contact] law), or None: Coulomb
     partner: Partner | None = None  # an elastic counter-body ([partner]) instead of the surface
+    cea_options: dict = field(default_factory=dict)  # [cea] mass_matrix, contact_model, penalty (as given)
 
     def problem(self) -> ContactProblem | PairProblem:
         """Assemble the body and set the contact up (the mesh is read again if not kept); with a
@@ -324,6 +328,21 @@ def _checked(path: Path, data: dict) -> FemConfig:
     below = e.get("complete_below")
     if below is not None:
         below = _number(problems, "cea.complete_below", below)
+    options = {}
+    for key in ("mass_matrix", "contact_model"):
+        if key in e:
+            try:
+                options[key] = Q.check(key, e[key], f"cea.{key}")
+            except ParameterError as err:
+                problems.append(_problem(err))
+    if "penalty" in e:
+        options["penalty"] = _number(problems, "cea.penalty", e["penalty"])
+        if options.get("contact_model") != "penalty":
+            problems.append('cea.penalty applies with cea.contact_model = "penalty" only')
+    defaults = {("mass_matrix", "lumped"), ("contact_model", "constraint")}
+    if "partner" in data and any(item not in defaults for item in options.items()):
+        problems.append("cea.mass_matrix, cea.contact_model and cea.penalty do not apply with a [partner] (two "
+                        "bodies: lumped mass and constraint contact, for now)")
     if young is not None:
         big = MAX_STRAIN * young
         problems += [f"load[{i}].pressure = {x.pressure!r} must be at most {MAX_STRAIN:g} x material.young = {big:.4g} "
@@ -344,7 +363,7 @@ def _checked(path: Path, data: dict) -> FemConfig:
     made = {name: Material(e, nu, rho, plane, a, b) for name, (e, nu, rho, plane, a, b) in materials.items()}
     material = made[""] if list(made) == [""] else made
     return FemConfig(path, mesh_path, tuple(clamped), material, group, friction, surface, tuple(band), count,
-                     static, springs, loads, body, below, law, partner)
+                     static, springs, loads, body, below, law, partner, options)
 
 
 def _partner(problems, path: Path, p: dict) -> Partner | None:

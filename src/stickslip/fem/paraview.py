@@ -87,7 +87,9 @@ def write_modes_xdmf(problem: ContactProblem, modes: CeaModes, path) -> Path:
     if not isinstance(modes, CeaModes) or modes.shapes is None:
         raise ParameterError("modes", type(modes).__name__, "CeaModes from complex_eigenvalues(..., mode_shapes=True)")
     scheme = BodyScheme(problem)
-    _, _, _, kept = linearised(problem)
+    params = modes.params or {}
+    _, _, _, kept = linearised(problem, params.get("mass_matrix", "lumped"), params.get("contact_model", "constraint"),
+                               params.get("penalty"))
     body = problem.system.body
     n = len(body.points)
 

@@ -58,9 +58,10 @@ def _solve(config, key, value, modes_kept):
     sketched shapes on the free dofs (unit length), at most ``modes_kept``."""
     cfg = load_config(config, {key: value})
     problem = cfg.problem()
-    modes = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=True, complete_below=cfg.complete_below)
+    modes = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=True, complete_below=cfg.complete_below,
+                                **cfg.cea_options)
     if isinstance(problem, ContactProblem):  # the kept dofs among the scheme's free ones
-        n, kept = BodyScheme(problem).free.size, linearised(problem)[3]
+        n, kept = BodyScheme(problem).free.size, linearised(problem, **cfg.cea_options)[3]
     else:  # a pair: its free dofs, ahead of the contact multipliers (whose number varies)
         n = problem.linearised()[3].size
         kept = np.arange(n)

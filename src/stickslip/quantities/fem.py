@@ -118,6 +118,13 @@ FEM = Domain("fem", units="SI", quantities=[
     Q('mesh', '', 'mesh file'),
     Q('clamped', '', 'clamped boundary groups'),
     Q('contact_group', '', 'boundary group in contact'),
+    Q("mass_matrix", "", "the CEA's mass matrix: lumped (as the explicit scheme) or consistent",
+      choices=("lumped", "consistent")),
+    Q("contact_model", "", "the CEA's contact: the normal dofs in contact held (constraint) or on stiff springs "
+      "(penalty)", choices=("constraint", "penalty")),
+    Q("penalty", "1", "penalty stiffness over the largest diagonal entry of the stiffness", "[1, 1e12]",
+      why="below 1 the springs are softer than the body and hold nothing; beyond 1e12 the pencil loses every digit "
+          "to round-off"),
     Q('slave_mesh', '', 'mesh file of the slave body of a pair (the pad)'),
     Q('master_mesh', '', 'mesh file of the master body of a pair (the disc)'),
     Q('slave_group', '', "the slave body's boundary group in contact"),
