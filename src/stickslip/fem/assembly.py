@@ -33,7 +33,7 @@ from ..errors import ParameterError
 from .body import Body, edge_middles
 from .boundary import Load, Spring, boundary_load, boundary_springs
 
-__all__ = ["Material", "BodySystem", "assemble", "cell_stress", "von_mises", "materials_of"]
+__all__ = ["Material", "BodySystem", "assemble", "cell_stress", "von_mises", "transport_operators", "materials_of"]
 
 PLANES = Q["plane"].choices
 #: Largest Young's modulus [Pa] and density [kg/m^3] accepted (declared in `stickslip.quantities.FEM`).
@@ -328,6 +328,28 @@ def cell_stress(system: BodySystem, u) -> np.ndarray:
         out.append(np.column_stack([lam * trace + 2 * mu * g[0, 0], lam * trace + 2 * mu * g[1, 1],
                                     mu * (g[0, 1] + g[1, 0])]))
     return np.array(out) if u.ndim == 2 else out[0]
+
+
+def transport_operators(system: BodySystem, omega: float, center=(0.0, 0.0)) -> tuple[sp.csr_matrix, sp.csr_matrix]:
+    """``(G, B)`` of a body turning at ``omega`` [rad/s] about ``center``, described in space-fixed
+    (Eulerian) coordinates: with the body's velocity field ``v = omega e_z x (x - c)`` and
+    ``A_ij = int rho N_i . (v . grad) N_j``, the gyroscopic matrix ``G = A - A^T`` (skew) [kg/(m s)]
+    and the transport softening ``B = int rho ((v . grad) N_i) . ((v . grad) N_j)`` [kg/(m s^2)]:
+    small vibrations ``u`` about the turning body obey ``M u'' + G u' + (K - B) u = f`` (the
+    kinetic energy of ``v + u' + (v . grad) u``; the centrifugal load and the stress stiffening
+    it causes are left out: a strain of ``rho omega^2 R^2 / E``)."""
+    omega = Q.check("omega", omega)
+    cx, cy = Q["center"].check_pair(center, "center")
+    basis, order = system.basis
+    rho = _on_points(basis, system.cell_values("density"))
+
+    def along(u, w):  # (v . grad) u at the quadrature points
+        vx, vy = -omega * (w.x[1] - cy), omega * (w.x[0] - cx)
+        return u.grad[:, 0] * vx + u.grad[:, 1] * vy
+
+    A = asm(BilinearForm(lambda u, v, w: w.rho * dot(along(u, w), v)), basis, rho=rho)[order][:, order].tocsr()
+    B = asm(BilinearForm(lambda u, v, w: w.rho * dot(along(u, w), along(v, w))), basis, rho=rho)[order][:, order]
+    return (A - A.T).tocsr(), B.tocsr()
 
 
 def von_mises(system: BodySystem, sigma) -> np.ndarray:

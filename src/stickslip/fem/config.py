@@ -52,6 +52,7 @@
     # clamped = ["hub"]             # its groups held fixed (optional)
     # omega = 30.0                  # it turns at omega [rad/s] about center = [x, y] [m] (a disc),
     # center = [0.0, 0.0]           # or translates at velocity = [vx, vy] [m/s] (a slider)
+    # gyroscopic = false            # true: a turning partner's gyroscopic and transport terms (Eulerian)
     # [partner.material]            # its material(s): as [material] (or [[partner.material]] per cell group)
     # young = 1.25e11
 
@@ -90,7 +91,7 @@ from .surfaces import MAX_SPEED, RigidCylinder, RigidFlat, contact_frames
 __all__ = ["FemConfig", "Partner", "load_config", "numeric_keys", "read_toml", "resolve_key"]
 
 _KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "partner", "cea", "spring", "load"},
-          "partner": {"mesh", "group", "clamped", "omega", "center", "velocity", "material"},
+          "partner": {"mesh", "group", "clamped", "omega", "center", "velocity", "material", "gyroscopic"},
           "contact": {"group", "friction", "static_friction", "law", "stribeck_speed", "weakening"},
           "surface": {"kind", "radius", "omega", "center", "body_inside", "point", "normal", "velocity",
                       "interference"},
@@ -108,6 +109,7 @@ class Partner:
     motion: object
     material: Material | dict
     body: object = field(default=None, repr=False, compare=False)
+    gyroscopic: bool = False
 
 
 @dataclass(frozen=True)
@@ -140,7 +142,8 @@ class FemConfig:
             p = self.partner
             other = p.body if p.body is not None else read_body(p.mesh)
             return PairProblem(assemble(body, self.material, self.springs, self.loads), self.group,
-                               assemble(other, p.material), p.group, p.motion, self.friction, self.clamped, p.clamped)
+                               assemble(other, p.material), p.group, p.motion, self.friction, self.clamped, p.clamped,
+                               p.gyroscopic)
         for name in (*self.clamped, self.group):
             body.group(name, "clamped" if name in self.clamped else "contact.group")
         frames = contact_frames(body, self.group, self.surface)
@@ -392,7 +395,14 @@ def _partner(problems, path: Path, p: dict) -> Partner | None:
     else:
         velocity = _pair(problems, "partner.velocity", p["velocity"])
         motion = None if velocity is None else Translation(velocity)
+        if "center" in p:
+            problems.append("partner.center applies with partner.omega only (a translating partner has no centre)")
     materials = _materials(problems, p.get("material"), "partner.material")
+    gyroscopic = p.get("gyroscopic", False)
+    if not isinstance(gyroscopic, bool) or (gyroscopic and "omega" not in p):
+        problems.append(f"partner.gyroscopic = {_toml(gyroscopic)} must be true or false, true only with "
+                        "partner.omega (a turning partner)")
+        gyroscopic = False
     body = None
     if mesh_path is not None:
         try:
@@ -410,7 +420,8 @@ def _partner(problems, path: Path, p: dict) -> Partner | None:
             or any(v is None for m in materials.values() for v in m):
         return None
     made = {name: Material(*m) for name, m in materials.items()}
-    return Partner(mesh_path, group, tuple(clamped), motion, made[""] if list(made) == [""] else made, body)
+    return Partner(mesh_path, group, tuple(clamped), motion, made[""] if list(made) == [""] else made, body,
+                   gyroscopic)
 
 
 def _facing(problems, body, group: str, partner: Partner) -> None:

@@ -32,8 +32,11 @@ slave is dragged along ``t_j`` by ``f lambda_j``: the contact force on both bodi
 slave nodes ``A``, the set updated as in `stickslip.fem.static` (tension leaves, penetration
 joins). **The CEA** keeps the active constraints (``G_A u = 0`` for the perturbation) and the
 multipliers as unknowns without mass: ``(s^2 M + s C + K) u = B^T lambda``, ``G_A u = 0``,
-``B = (G + f T)_A``. The master's motion enters only through the sliding direction (the
-usual engineering treatment of a turning disc): no transport, gyroscopic or centrifugal terms.
+``B = (G + f T)_A``. By default the master's motion enters only through the sliding direction
+(the usual engineering treatment of a turning disc). With ``gyroscopic=True`` a turning master
+is described in space-fixed (Eulerian) coordinates: its gyroscopic matrix joins the damping
+and its transport softening the stiffness (`stickslip.fem.assembly.transport_operators`),
+in steady sliding and the CEA; the centrifugal load and stress stiffening stay out.
 """
 
 from __future__ import annotations
@@ -53,7 +56,7 @@ from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import FEM as Q
 from ..results import Result
-from .assembly import BodySystem
+from .assembly import BodySystem, transport_operators
 from .static import ITERATIONS
 from .surfaces import MAX_SPEED
 
@@ -233,6 +236,7 @@ class PairProblem:
     friction: float = 0.0
     clamped_slave: tuple = ()
     clamped_master: tuple = ()
+    gyroscopic: bool = False
 
     def __post_init__(self):
         for name in ("slave", "master"):
@@ -241,6 +245,9 @@ class PairProblem:
         object.__setattr__(self, "friction", Q.check("friction", self.friction))
         if not isinstance(self.motion, (Rotation, Translation)):
             raise ParameterError("motion", self.motion, "a Rotation or a Translation of the master")
+        if not isinstance(self.gyroscopic, bool) or (self.gyroscopic and not isinstance(self.motion, Rotation)):
+            raise ParameterError("gyroscopic", self.gyroscopic, "true or false, true only with a turning master "
+                                 "(a Rotation)")
         _ = self.tangent  # the coupling and the sliding direction: a pair that cannot touch is refused here
 
     @cached_property
@@ -294,14 +301,31 @@ class PairProblem:
         return self.G @ x
 
     @cached_property
+    def transport(self):
+        """``(G, B)`` of the turning master (`stickslip.fem.assembly.transport_operators`) on all
+        dofs, or None without ``gyroscopic``."""
+        if not self.gyroscopic:
+            return None
+        G, B = transport_operators(self.master, self.motion.omega, self.motion.center)
+        zero = sp.csr_matrix((self.n_slave, self.n_slave))
+        return sp.block_diag([zero, G], format="csr"), sp.block_diag([zero, B], format="csr")
+
+    @cached_property
     def K(self) -> sp.csr_matrix:
-        return sp.block_diag([self.slave.K, self.master.K], format="csr")
+        """Both stiffnesses; with ``gyroscopic``, the master's less its transport softening ``B``
+        (steady in space, the turning material still accelerates through the deformation)."""
+        K = sp.block_diag([self.slave.K, self.master.K], format="csr")
+        return K if self.transport is None else (K - self.transport[1]).tocsr()
 
     @cached_property
     def C(self):
-        if self.slave.C is None and self.master.C is None:
-            return None
-        return sp.block_diag([self.slave.damping(), self.master.damping()], format="csr")
+        """Both dampings; with ``gyroscopic``, plus the master's gyroscopic matrix ``G``."""
+        C = None
+        if self.slave.C is not None or self.master.C is not None:
+            C = sp.block_diag([self.slave.damping(), self.master.damping()], format="csr")
+        if self.transport is not None:
+            C = self.transport[0] if C is None else (C + self.transport[0]).tocsr()
+        return C
 
     @property
     def mass(self) -> np.ndarray:
@@ -359,7 +383,8 @@ class PairProblem:
         return {"slave_mesh": Path(str(self.slave.body.source)).name, "master_mesh": Path(str(self.master.body.source)).name,
                 "slave_group": self.slave_group, "master_group": self.master_group, "friction": self.friction,
                 "motion": repr(self.motion), "clamped_slave": ",".join(self.clamped_slave),
-                "clamped_master": ",".join(self.clamped_master), "slave_nodes": len(self.coupling.slave_nodes)}
+                "clamped_master": ",".join(self.clamped_master), "slave_nodes": len(self.coupling.slave_nodes),
+                "gyroscopic": int(self.gyroscopic)}
 
 
 @dataclass(frozen=True, eq=False, repr=False)

@@ -134,6 +134,7 @@ FEM = Domain("fem", units="SI", quantities=[
     Q('clamped_master', '', "the master body's clamped boundary groups"),
     Q('slave_nodes', '1', 'nodes of the slave contact group'),
     Q('slave_node', '1', 'index of a node of the slave contact group'),
+    Q('gyroscopic', '', "a turning partner's gyroscopic and transport terms included (1) or not (0)"),
     Q('max_pressure', 'Pa', 'largest contact pressure'),
     Q('material_groups', '', "the cell groups of the materials, in the order of the material constants' lists"),
     Q('material', '', "each cell's material: its position in material_groups"),
