@@ -83,13 +83,28 @@ def test_a_bad_partner_is_refused_in_one_line(folder, old, new, words, capsys):
     assert err.count("\n") == 1 and words in err, err
 
 
-def test_runs_and_mode_files_of_a_pair_are_refused_naming_why(folder, tmp_path, capsys):
+def test_runs_of_a_pair_are_refused_and_its_mode_shapes_written(folder, tmp_path, capsys):
+    """The mode file holds both bodies; each shape keeps the pad's face on the disc's rim (the
+    held mortar constraints ``G_A u = 0`` of the written displacements, to 1e-8 of ``|G| |u|``)."""
+    import meshio
+
     assert run(["fem", "run", str(folder / "pad_disc.toml"), "--transits", "1"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "[partner]" in err
-    assert run(["fem", "cea", str(folder / "pad_disc.toml"), "--xdmf", str(tmp_path / "m.xdmf")]) == 2
-    err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "--xdmf" in err and not list(tmp_path.iterdir())
+    path = tmp_path / "modes.xdmf"
+    assert run(["fem", "cea", str(folder / "pad_disc.toml"), "--xdmf", str(path), "--json"]) == 0
+    count = len(json.loads(capsys.readouterr().out)["modes"])
+    problem = load_config(folder / "pad_disc.toml").problem()
+    held = problem.G[np.flatnonzero(problem.steady.active)]
+    with meshio.xdmf.TimeSeriesReader(path) as reader:
+        points, cells = reader.read_points_cells()
+        assert reader.num_steps == count and len(points) == len(problem.slave.body.points) + len(
+            problem.master.body.points)
+        for k in range(reader.num_steps):
+            _, data, _ = reader.read_data(k)
+            u = (data["mode_real"][:, :2] + 1j * data["mode_imag"][:, :2]).ravel()
+            assert np.abs(held @ u).max() <= 1e-8 * abs(held).max() * np.abs(u).max()
+            assert set(np.unique(data["body"])) == {0, 1} and np.abs(u).max() == pytest.approx(1.0)
 
 
 def test_the_turning_discs_gyroscopic_terms(folder, capsys):

@@ -99,9 +99,6 @@ def cea(config: Config, json: Json = False,
     out = output_path("--out", out, ".nc", overwrite)
     xdmf = xdmf_path(xdmf, overwrite)
     cfg = _problem(config)
-    if xdmf is not None and cfg.partner is not None:
-        raise ParameterError("--xdmf", str(xdmf), "left out with a [partner] (the mode shapes of two bodies are not "
-                             "written yet)")
     problem = cfg.problem()
     result = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=xdmf is not None,
                                  complete_below=cfg.complete_below, **cfg.cea_options)

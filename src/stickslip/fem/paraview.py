@@ -12,7 +12,8 @@ Both write the body's mesh (points at ``z = 0``, in m) with `stickslip.files.wri
   `stickslip.fem.assembly.von_mises`: in plane strain with ``sigma_zz = nu (sigma_xx + sigma_yy)``) and
   ``material`` (each cell's material, its position in the problem's ``material_groups``).
 * `write_modes_xdmf(problem, modes, path)`: the shapes of the CEA modes
-  (`complex_eigenvalues(..., mode_shapes=True)`), one step per mode (the step's "time" is the
+  (`complex_eigenvalues(..., mode_shapes=True)`; of a pair of bodies too, both meshes in one
+  with the point data ``body``, 0 the slave and 1 the master), one step per mode (the step's "time" is the
   mode's index in ``modes``, most unstable first): ``mode_real``, ``mode_imag`` (the complex
   shape, normalised to a largest displacement of 1), ``mode_amplitude`` and, constant over
   the mesh, ``growth_rate`` [1/s] and ``frequency`` [Hz]. Vectors are Cartesian, padded with
@@ -82,10 +83,35 @@ def write_run_xdmf(run: BodyRun, path) -> Path:
     return write_xdmf_series(path, *_mesh(body), (step(k) for k in range(len(snaps["vol_t"]))))
 
 
+def _pair_modes(problem, modes: CeaModes, path) -> Path:
+    """The mode shapes of a pair of bodies: both meshes in one (the slave's points first), with
+    the point data ``body`` (0: slave, 1: master)."""
+    s_body, m_body = problem.slave.body, problem.master.body
+    points = np.vstack([_mesh(s_body)[0], _mesh(m_body)[0]])
+    cells = [(s_body.kind, s_body.cells.astype(np.int64)), (m_body.kind, m_body.cells.astype(np.int64) + len(s_body.points))]
+    free = problem.linearised()[3]
+    n = len(points)
+    which = np.concatenate([np.zeros(len(s_body.points)), np.ones(len(m_body.points))]).astype(np.int32)
+
+    def step(k):
+        u = np.zeros(2 * n, dtype=complex)
+        u[free] = modes.shapes[:free.size, k]
+        u = u / np.abs(u).max()
+        amplitude = np.hypot(np.abs(u[0::2]), np.abs(u[1::2]))
+        return float(k), {"mode_real": _vectors(u.real), "mode_imag": _vectors(u.imag), "mode_amplitude": amplitude,
+                          "growth_rate": np.full(n, modes.growth_rate[k]), "frequency": np.full(n, modes.frequency[k]),
+                          "body": which}, {}
+
+    return write_xdmf_series(path, points, cells, (step(k) for k in range(len(modes.s))))
+
+
 def write_modes_xdmf(problem: ContactProblem, modes: CeaModes, path) -> Path:
-    """Write the shapes of ``modes`` of ``problem`` (see the module docstring); returns ``path``."""
+    """Write the shapes of ``modes`` of ``problem`` (see the module docstring); returns ``path``.
+    ``problem`` may be a `stickslip.fem.pair.PairProblem`: both bodies in one mesh."""
     if not isinstance(modes, CeaModes) or modes.shapes is None:
         raise ParameterError("modes", type(modes).__name__, "CeaModes from complex_eigenvalues(..., mode_shapes=True)")
+    if not isinstance(problem, ContactProblem):
+        return _pair_modes(problem, modes, path)
     scheme = BodyScheme(problem)
     params = modes.params or {}
     _, _, _, kept = linearised(problem, params.get("mass_matrix", "lumped"), params.get("contact_model", "constraint"),
