@@ -142,6 +142,7 @@ def test_a_motion_that_does_not_slide_or_too_fast_is_refused(stack):
         with pytest.raises(ParameterError) as err:
             PairProblem(slave, "bottom", master, "top", motion, 0.3)
         assert err.value.name == "motion"
+    PairProblem(slave, "bottom", master, "top", Translation((0.0, 0.0)), 0.0)  # at rest without friction: a preload
     with pytest.raises(ParameterError) as err:
         PairProblem(slave, "bottom", master, "top", Translation((1.0, 0.0)), -0.1)
     assert err.value.name == "friction"

@@ -359,7 +359,7 @@ def _checked(path: Path, data: dict) -> FemConfig:
         _cell_groups(problems, body, materials)
     if partner is not None and body is not None and partner.body is not None and isinstance(group, str) \
             and group in body.groups:
-        _facing(problems, body, group, partner)
+        _facing(problems, body, group, partner, friction)
     if problems:
         raise ParameterError("config", str(path), f"a valid config; {len(problems)} problem"
                              f"{'s' if len(problems) > 1 else ''}: " + "; ".join(problems))
@@ -424,12 +424,12 @@ def _partner(problems, path: Path, p: dict) -> Partner | None:
                    gyroscopic)
 
 
-def _facing(problems, body, group: str, partner: Partner) -> None:
+def _facing(problems, body, group: str, partner: Partner, friction) -> None:
     """The contact group and the partner's group face each other within reach, and the partner's
     motion slides along the contact."""
     try:
         coupling = mortar(body, group, partner.body, partner.group)
-        sliding(coupling, partner.motion, body.points)
+        sliding(coupling, partner.motion, body.points, required=bool(friction))
     except ParameterError as err:
         where = {"slave_group": "contact.group", "master_group": "partner.group", "motion": "partner motion"}
         problems.append(f"{where.get(err.name, err.name)} = {_toml(err.value) if err.name != 'motion' else ''} must "

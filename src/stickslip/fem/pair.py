@@ -207,19 +207,20 @@ def mortar(slave_body, slave_group: str, master_body, master_group: str) -> Mort
     return Mortar(nodes, normal, D, M)
 
 
-def sliding(coupling: Mortar, motion, points) -> tuple[np.ndarray, np.ndarray]:
+def sliding(coupling: Mortar, motion, points, required: bool = True) -> tuple[np.ndarray, np.ndarray]:
     """``(t, speed)`` at the slave nodes of ``coupling`` (mesh ``points``): the unit tangent along
-    the master's ``motion`` there and its speed [m/s]; a motion that does not slide the master
-    along the contact at every slave node, or faster than the fastest surface, is refused."""
+    the master's ``motion`` there and its speed [m/s]; a motion faster than the fastest surface is
+    refused, and so is one that does not slide the master along the contact at every slave node
+    if ``required`` (friction needs a direction; without friction the pair may rest)."""
     n = coupling.normal
     t0 = np.column_stack([n[:, 1], -n[:, 0]])
     along = np.sum(_velocity(motion, np.asarray(points)[coupling.slave_nodes]) * t0, axis=1)
     if np.abs(along).max() > MAX_SPEED:
         raise ParameterError("motion", motion, f"at most {MAX_SPEED:g} m/s of sliding at the contact")
-    if not np.all(np.abs(along) > 0):
+    if required and not np.all(np.abs(along) > 0):
         raise ParameterError("motion", motion, "a motion that slides the master along the contact at every slave "
-                             "node")
-    return t0 * np.sign(along)[:, None], np.abs(along)
+                             "node (friction needs a sliding direction)")
+    return t0 * np.where(along < 0, -1.0, 1.0)[:, None], np.abs(along)
 
 
 @dataclass(frozen=True, eq=False)
@@ -271,7 +272,7 @@ class PairProblem:
     def tangent(self) -> tuple[np.ndarray, np.ndarray]:
         """``(t, speed)``: the unit tangent at each slave node along the master's sliding there,
         and that sliding speed [m/s] (`sliding`)."""
-        return sliding(self.coupling, self.motion, self.slave.body.points)
+        return sliding(self.coupling, self.motion, self.slave.body.points, required=self.friction > 0)
 
     def _rows(self, direction: np.ndarray) -> sp.csr_matrix:
         """``(sum_k D_jk d_j . u_k - sum_l M_jl d_j . u_l)_j`` as a matrix on all dofs."""
@@ -363,7 +364,12 @@ class PairProblem:
 
     def linearised(self):
         """``(K_aug, C_aug or None, mass_aug, kept)`` of the CEA about steady sliding: the free dofs
-        and the multipliers of the active slave nodes (mass 0), see the module docstring."""
+        and the multipliers of the active slave nodes (mass 0), see the module docstring (built
+        once per problem)."""
+        return self._operators
+
+    @cached_property
+    def _operators(self):
         st = self.steady
         if not st.loaded:
             raise NoSolutionError("steady sliding of the pair carries no contact force: press the bodies together")
