@@ -326,7 +326,10 @@ def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tai
     if settings["tail_samples"] >= least and window_snapshots(settings) < 3:
         per = (t_end / length[1]) / (scheme.dt * settings["chunk"])  # samples per unit of the length typed
         raise ParameterError(*length, f"> {(least - 1) / per:.3g} here: the limit regime is read from at least 3 "
-                             "snapshots at the end of the run")
+                             "snapshots at the end of the run",  # samples per transit: set by the mesh's step
+                             also=("samples_per_transit",) + tuple(
+                                 k for k in ("nodes", "n_theta", "n_r", "xi") if hasattr(scheme, k)
+                                 or hasattr(getattr(scheme, "params", None), k)))
     settings["volume_every"] = 0 if volume_every is None else max(1, int(round(min(  # in samples
         Q.check("volume_every", volume_every) * scheme.steps_per_transit / settings["chunk"], 2.0**53))))
     return t_end, settings
