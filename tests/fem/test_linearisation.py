@@ -70,11 +70,14 @@ def _equations(problem, consistent=False):
     system, frames, steady = problem.system, problem.frames, problem.steady
     coords = _coordinates(problem)
     n_dofs = system.n_dofs
-    P = np.zeros((n_dofs, len(coords)))
+    rows, cols, vals = [], [], []
     for j, (_, node, direction) in enumerate(coords):
-        P[2 * node: 2 * node + 2, j] = direction
-    K = system.K.toarray()
-    C = np.zeros_like(K) if system.C is None else system.C.toarray()
+        rows += [2 * node, 2 * node + 1]
+        cols += [j, j]
+        vals += list(direction)
+    P = sp.csr_matrix((vals, (rows, cols)), shape=(n_dofs, len(coords)))
+    K = system.K
+    C = sp.csr_matrix(K.shape) if system.C is None else system.C
     m = system.mass
     if consistent:
         from skfem import BilinearForm, asm
@@ -82,28 +85,24 @@ def _equations(problem, consistent=False):
 
         basis, order = system.basis
         rho = system.cell_values("density")[:, None] * np.ones(basis.X.shape[1])
-        Mc = asm(BilinearForm(lambda u, v, w: w.rho * dot(u, v)), basis, rho=rho)[order][:, order].toarray()
+        Mc = asm(BilinearForm(lambda u, v, w: w.rho * dot(u, v)), basis, rho=rho)[order][:, order].tocsr()
     u0 = steady.u
     held = {int(frames.nodes[k]): k for k in np.flatnonzero(steady.active)}
     law = problem.law
     speed = float(np.max(frames.speed))
     mu = (lambda v: law.kinetic(v)) if law is not None else (lambda v: problem.friction)
 
+    held_j = [j for j, (_, node, _) in enumerate(coords) if node in held]  # the coordinates along t
+    held_k = [held[coords[j][1]] for j in held_j]
+    held_pairs = [slice(2 * coords[j][1], 2 * coords[j][1] + 2) for j in held_j]
+
     def R(z, zd, zdd):
         u, v, acc = u0 + P @ z, P @ zd, P @ zdd
-        r = K @ u + C @ v - system.load
-        if consistent:  # the inertia joins the internal force: the normal reaction carries it too
-            r = r + Mc @ acc
-        out = np.empty(len(coords))
-        for j, (_, node, direction) in enumerate(coords):
-            pair = slice(2 * node, 2 * node + 2)
-            row = r[pair] if consistent else m[2 * node] * acc[pair] + r[pair]
-            if node in held:
-                k = held[node]
-                n, t = frames.normal[k], frames.tangent[k]
-                out[j] = t @ row - mu(speed - t @ v[pair]) * (n @ r[pair])
-            else:
-                out[j] = direction @ row
+        r = K @ u + C @ v - system.load + (Mc @ acc if consistent else m * acc)  # inertia, internal minus load
+        out = P.T @ r  # each coordinate's direction . its node's row (t . row for a held node)
+        for j, k, pair in zip(held_j, held_k, held_pairs):
+            n, t = frames.normal[k], frames.tangent[k]
+            out[j] -= mu(speed - t @ v[pair]) * (n @ r[pair])  # the normal reaction (inertia in it: consistent mass)
         return out
 
     return R, coords

@@ -107,6 +107,7 @@ def test_runs_of_a_pair_are_refused_and_its_mode_shapes_written(folder, tmp_path
             assert set(np.unique(data["body"])) == {0, 1} and np.abs(u).max() == pytest.approx(1.0)
 
 
+@pytest.mark.slow
 def test_the_turning_discs_gyroscopic_terms(folder, capsys):
     """With ``gyroscopic = true`` (Eulerian disc): without friction still conservative (every mode
     neutral); with friction, the disc's doublets that were neutral become a growing and a

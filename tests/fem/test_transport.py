@@ -74,6 +74,7 @@ def _mismatch(n_theta, n_r, sign=1.0):
     return np.array(out)
 
 
+@pytest.mark.slow
 def test_the_space_fixed_model_is_the_turning_frames_shifted_by_n_omega():
     coarse, fine = np.median(_mismatch(24, 2)), np.median(_mismatch(48, 4))
     assert fine < 1e-3 and coarse > 2 * fine, (coarse, fine)
