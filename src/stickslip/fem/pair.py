@@ -160,13 +160,16 @@ def mortar(slave_body, slave_group: str, master_body, master_group: str) -> Mort
             Dr.append(where[int(j)])
             Dc.append(int(j))
             Dv.append(L / 2.0)
-        for f, (c, d) in enumerate(m_edges):
+        # where every master segment's ends fall along the slave segment, projected along n
+        # (vectorised: only the segments that overlap it are visited)
+        ends = (xm[m_edges] - pa) @ t / L  # (segments, 2)
+        overlap = (np.minimum(1.0, ends.max(axis=1)) - np.maximum(0.0, ends.min(axis=1)) > 1e-12) & \
+            (ends[:, 0] != ends[:, 1])
+        for f in np.flatnonzero(overlap):
+            c, d = m_edges[f]
             pc, pd = xm[c], xm[d]
-            # where the master's ends fall along the slave segment, projected along n
-            ec, ed = (np.dot(pc - pa, t) / L, np.dot(pd - pa, t) / L)
+            ec, ed = ends[f]
             lo, hi = max(0.0, min(ec, ed)), min(1.0, max(ec, ed))
-            if hi - lo <= 1e-12 or ec == ed:
-                continue
             mid = pa + 0.5 * (lo + hi) * (pb - pa)
             m_dir = pd - pc
             xi, alpha = np.linalg.solve(np.column_stack([m_dir, -n]), mid - pc)
