@@ -53,7 +53,7 @@ def main():
         result = json.loads(done.stdout)
         start = time.perf_counter()
         for value in values:
-            text = (tmp / "pad_disc.toml").read_text().replace("friction = 0.5", f"friction = {value!r}")
+            text = (tmp / "pad_disc.toml").read_text().replace("friction = 0.5", f"friction = {float(value)!r}")
             (tmp / "one.toml").write_text(text)
             subprocess.run([*stickslip, "fem", "cea", str(tmp / "one.toml"), "--json"], capture_output=True, check=True)
         separate = time.perf_counter() - start
