@@ -273,18 +273,8 @@ def _checked(path: Path, data: dict) -> FemConfig:
             continue
         extra = sorted(k for k in table if k not in keys and not (section == "" and k in _KNOWN))
         problems += [f"unknown key {'' if not section else section + '.'}{k}" for k in extra]
-    mesh = data.get("mesh")
-    mesh_path = None
-    if not isinstance(mesh, str):
-        problems.append("mesh must be the path of a mesh file")
-    else:
-        mesh_path = (path.parent / mesh) if not Path(mesh).is_absolute() else Path(mesh)
-        if not mesh_path.is_file():
-            problems.append(f"mesh = {mesh!r}: no such file ({mesh_path})")
-    clamped = data.get("clamped", [])
-    if not (isinstance(clamped, list) and all(isinstance(c, str) for c in clamped)):
-        problems.append(f"clamped = {clamped!r} must be a list of boundary group names")
-        clamped = []
+    mesh_path = _mesh_file(problems, path, data.get("mesh"), "mesh")
+    clamped = _group_list(problems, data.get("clamped", []), "clamped")
     twice = sorted({c for c in clamped if clamped.count(c) > 1})
     if twice:
         problems.append(f"clamped = {clamped!r} must name each group once ({', '.join(map(repr, twice))} twice)")
@@ -369,22 +359,33 @@ def _checked(path: Path, data: dict) -> FemConfig:
                      static, springs, loads, body, below, law, partner, options)
 
 
+def _mesh_file(problems, path: Path, mesh, where: str) -> Path | None:
+    """The mesh file named at ``where`` (relative to the config's folder), or None with the problem."""
+    if not isinstance(mesh, str):
+        problems.append(f"{where} must be the path of a mesh file")
+        return None
+    mesh_path = (path.parent / mesh) if not Path(mesh).is_absolute() else Path(mesh)
+    if not mesh_path.is_file():
+        problems.append(f"{where} = {mesh!r}: no such file ({mesh_path})")
+        return None
+    return mesh_path
+
+
+def _group_list(problems, value, where: str) -> list:
+    """A list of boundary group names at ``where``, or [] with the problem."""
+    if isinstance(value, list) and all(isinstance(c, str) for c in value):
+        return value
+    problems.append(f"{where} = {value!r} must be a list of boundary group names")
+    return []
+
+
 def _partner(problems, path: Path, p: dict) -> Partner | None:
     """The ``[partner]`` table: its mesh (read), group, clamps, motion and materials."""
-    mesh, group, clamped = p.get("mesh"), p.get("group"), p.get("clamped", [])
-    mesh_path = None
-    if not isinstance(mesh, str):
-        problems.append("partner.mesh must be the path of a mesh file")
-    else:
-        mesh_path = (path.parent / mesh) if not Path(mesh).is_absolute() else Path(mesh)
-        if not mesh_path.is_file():
-            problems.append(f"partner.mesh = {mesh!r}: no such file ({mesh_path})")
-            mesh_path = None
+    group = p.get("group")
+    mesh_path = _mesh_file(problems, path, p.get("mesh"), "partner.mesh")
     if not isinstance(group, str):
         problems.append("partner.group must be the name of a boundary group of partner.mesh")
-    if not (isinstance(clamped, list) and all(isinstance(c, str) for c in clamped)):
-        problems.append(f"partner.clamped = {clamped!r} must be a list of boundary group names")
-        clamped = []
+    clamped = _group_list(problems, p.get("clamped", []), "partner.clamped")
     motion = None
     if ("omega" in p) == ("velocity" in p):
         problems.append("partner: give omega (it turns about center) or velocity (it translates), one of them")
