@@ -172,7 +172,8 @@ def mortar(slave_body, slave_group: str, master_body, master_group: str) -> Mort
             lo, hi = max(0.0, min(ec, ed)), min(1.0, max(ec, ed))
             mid = pa + 0.5 * (lo + hi) * (pb - pa)
             m_dir = pd - pc
-            xi, alpha = np.linalg.solve(np.column_stack([m_dir, -n]), mid - pc)
+            along_n = np.column_stack([m_dir, -n])  # x + alpha n = pc + xi m_dir
+            xi, alpha = np.linalg.solve(along_n, mid - pc)
             gap = -alpha  # from the master's segment to the slave's, along n
             if abs(gap) > window or not 0.0 <= xi <= 1.0:
                 if gap < -window and np.dot(m_n[f], n) < 0.0 and 0.0 <= xi <= 1.0:
@@ -185,9 +186,7 @@ def mortar(slave_body, slave_group: str, master_body, master_group: str) -> Mort
             for g in GAUSS:
                 eta = lo + g * (hi - lo)
                 x = pa + eta * (pb - pa)
-                # x + alpha n = pc + xi m_dir
-                A = np.column_stack([m_dir, -n])
-                xi, _ = np.linalg.solve(A, x - pc)
+                xi, _ = np.linalg.solve(along_n, x - pc)
                 weight = 0.5 * (hi - lo) * L
                 Ns = (2.0 - 3.0 * eta, 3.0 * eta - 1.0)  # the dual shape functions phi_a, phi_b
                 Nm = (1.0 - xi, xi)
