@@ -21,14 +21,15 @@ def _gmsh(name: str):
 
 
 def rectangle(path, width: float = 0.04, height: float = 0.01, size: float = 0.004, quads: bool = False,
-              order: int = 1) -> meshio.Mesh:
-    """A ``width x height`` rectangle with boundary groups bottom, top, left, right; ``order`` 2:
-    6-node triangles or 9-node quadrilaterals."""
+              order: int = 1, origin=(0.0, 0.0)) -> meshio.Mesh:
+    """A ``width x height`` rectangle from ``origin`` with boundary groups bottom, top, left,
+    right; ``order`` 2: 6-node triangles or 9-node quadrilaterals."""
+    x0, y0 = origin
     with _gmsh("rectangle") as gmsh:
-        r = gmsh.model.occ.addRectangle(0, 0, 0, width, height)
+        r = gmsh.model.occ.addRectangle(x0, y0, 0, width, height)
         gmsh.model.occ.synchronize()
-        where = {"bottom": (width / 2, 0), "top": (width / 2, height), "left": (0, height / 2),
-                 "right": (width, height / 2)}
+        where = {"bottom": (x0 + width / 2, y0), "top": (x0 + width / 2, y0 + height), "left": (x0, y0 + height / 2),
+                 "right": (x0 + width, y0 + height / 2)}
         for name, (x, y) in where.items():
             tag = [c for _, c in gmsh.model.getBoundary([(2, r)], oriented=False)
                    if max(abs(a - b) for a, b in zip(gmsh.model.occ.getCenterOfMass(1, c)[:2], (x, y))) < 1e-9]

@@ -74,9 +74,20 @@ def test_steady_sliding_slips_at_the_laws_kinetic_coefficient(block, capsys):
         assert run(["fem", "steady", str(config), "--json"]) == 0
         data = json.loads(capsys.readouterr().out)
         assert data["friction_force"] == pytest.approx(LAW.kinetic(1.0) * data["normal_force"], rel=1e-12)
-        assert run(["fem", "run", str(config), "--transits", "1"]) == 2
-        err = capsys.readouterr().err
-        assert err.count("\n") == 1 and "contact.law" in err and "coulomb in an explicit run" in err
+        out = block / "law_run.nc"
+        assert run(["fem", "run", str(config), "--transits", "1", "--out", str(out), "--json"]) == 0
+        capsys.readouterr()
+        import xarray as xr
+        with xr.open_dataset(out) as ds:
+            assert "Stribeck" in ds.attrs["friction_law"]
+            # slipping nodes at the law's coefficient of their own slip speed, between f_d and f_s
+            # (not one constant: nodes slip at many speeds), sticking ones within f_s
+            state, ratio = ds["state"].values, np.abs(ds["Q"].values) / np.maximum(ds["P"].values, 1e-300)
+            slipping = (state == 1) | (state == 2)
+            assert slipping.sum() > 100 and (state == 0).sum() > 10
+            assert LAW.fd * (1 - 1e-12) <= ratio[slipping].min() and ratio[slipping].max() <= LAW.fs * (1 + 1e-12)
+            assert np.ptp(ratio[slipping]) > 0.05
+            assert ratio[state == 0].max() <= LAW.fs * (1 + 1e-12)
     finally:
         config.write_text(text)
 
@@ -96,6 +107,17 @@ def test_a_law_written_wrong_is_named_in_the_configs_one_error(block, edit, word
         load_config(config)
     for w in words:
         assert w in str(err.value), str(err.value)
+
+
+def test_a_users_law_is_refused_by_an_explicit_run_before_it_starts(block):
+    from stickslip.fem import integrate_body
+    from stickslip.friction import UserLaw
+
+    problem = _problem(block, 1.0)
+    user = ContactProblem(problem.system, problem.frames, law=UserLaw(lambda v: 0.4 + 0.0 * v, 0.6))
+    with pytest.raises(ParameterError) as err:
+        integrate_body(user, transits=0.1)
+    assert err.value.name == "law" and "compiled" in str(err.value)
 
 
 def test_a_law_with_a_coefficient_beside_it_is_refused(block):

@@ -190,7 +190,7 @@ def run(config: Config,
     """Explicit dynamics from perturbed steady sliding (or the preload, --start), then the limit
     regime on the contact nodes."""
     from ..fem.paraview import write_run_xdmf
-    from ..fem.run import classify_body, integrate_body, perturbed_steady_body, preload_body
+    from ..fem.run import integrate_body, perturbed_steady_body, preload_body
     from ..fem.scheme import BodyScheme
     from ..fem.surfaces import RigidFlat
 
@@ -206,8 +206,8 @@ def run(config: Config,
                              also=("--transits",))
     cfg = _problem(config)
     if cfg.partner is not None:
-        raise ParameterError("config", str(config), "a config with a rigid [surface] for fem run (explicit runs of "
-                             "two bodies, [partner], are not written yet: fem steady and fem cea take it)")
+        return _run_pair(cfg, transits, beta2, time_step, start, amplitude, out, xdmf, volume_every, window, overwrite,
+                         json)
     if start is Start.stick and not isinstance(cfg.surface, RigidFlat):
         raise ParameterError("--start", start.value, "steady or rest with a rotating cylinder (stick moves the "
                              "whole body with a flat surface)")
@@ -223,6 +223,34 @@ def run(config: Config,
                                 progress=tick, overwrite=overwrite, volume_every=volume_every)
     if xdmf is not None:
         write_run_xdmf(result, xdmf)
+    _limit_regime(result, window, json)
+
+
+def _run_pair(cfg, transits, beta2, time_step, start, amplitude, out, xdmf, volume_every, window, overwrite, json):
+    """`run` of a pad on a [partner]: from perturbed steady sliding only."""
+    from ..fem.paraview import write_run_xdmf
+    from ..fem.pair_run import PairScheme, integrate_pair
+
+    if start is not Start.steady:
+        raise ParameterError("--start", start.value, "steady with a [partner] (a run of two bodies starts from their "
+                             "steady sliding)")
+    if cfg.partner.gyroscopic:
+        raise ParameterError("partner.gyroscopic", True, "false for fem run (the explicit scheme of two bodies leaves "
+                             "out the turning partner's transport terms; fem steady and fem cea take them)")
+    problem = cfg.problem()
+    PairScheme(problem, beta2, time_step=time_step)  # the step and the damping refused before anything runs
+    with progress_bar("pad on partner") as tick:
+        result = integrate_pair(problem, transits=transits, amplitude=amplitude, beta2=beta2, time_step=time_step,
+                                checkpoint=out, progress=tick, overwrite=overwrite, volume_every=volume_every)
+    if xdmf is not None:
+        write_run_xdmf(result, xdmf)
+    _limit_regime(result, window, json)
+
+
+def _limit_regime(result, window, json) -> None:
+    """Classify a run's limit regime over ``--window`` and print it."""
+    from ..fem.run import classify_body
+
     try:
         regime = classify_body(result, window)
     except ParameterError as err:

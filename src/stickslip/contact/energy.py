@@ -103,7 +103,6 @@ def energy_books(tr: Trace) -> EnergyBooks:
     s = tr.scheme
     dt, beta2 = s.dt, s.beta2
     mass = np.broadcast_to(np.asarray(s.mass, dtype=float), tr.u.shape[1:])
-    (normal, tangent), (_, speed) = s.contact_dofs, s.surface
     w = np.diff(tr.u, axis=0) / dt                                          # w_{m+1/2}, m = 0 .. M-1
     kinetic = 0.5 * np.einsum("mi,i,mi->m", w, mass, w)
     Ku = -mass * np.array([s.apply(x) for x in tr.u[:-1]])                  # K u_m
@@ -111,10 +110,6 @@ def energy_books(tr: Trace) -> EnergyBooks:
     du = 0.5 * (tr.u[2:] - tr.u[:-2])                                       # m = 1 .. M-1
     a_prev = np.vstack([tr.a_start[None], tr.a[:-1]])
     numerical = (beta2 - 0.5) * np.einsum("mi,i,mi->m", (tr.a - a_prev)[1:], mass, du)
-    m_n, m_t = mass[normal], mass[tangent]
-    r_n, r_t = tr.lam_n[1:], tr.lam_t[1:]
-    slip = du[:, tangent] - speed * dt
-    return EnergyBooks(energy=kinetic + strain, kinetic=kinetic, strain=strain,
-                       surface_work=np.sum(m_t * r_t * speed * dt, axis=1),
-                       friction_dissipation=-np.sum(m_t * r_t * slip, axis=1),
-                       normal_work=np.sum(m_n * r_n * du[:, normal], axis=1), numerical=numerical)
+    surface, friction, normal = s.contact_work(tr.lam_n[1:], tr.lam_t[1:], du)
+    return EnergyBooks(energy=kinetic + strain, kinetic=kinetic, strain=strain, surface_work=surface,
+                       friction_dissipation=friction, normal_work=normal, numerical=numerical)

@@ -21,7 +21,12 @@ it to ``[-f r_n, f r_n]`` solves the discrete Coulomb law, the slip velocity bei
 and increasing in ``r_t``. With a static coefficient ``f_s > f`` a node sticks while the
 reaction that holds it to the surface, ``r*``, stays within ``f_s r_n`` (the 1-DOF
 oscillator's stick condition, node by node), and slips with the kinetic ``f r_n`` otherwise;
-``f_s = f`` is plain Coulomb (the same numbers as the clipping). The mass is diagonal and
+``f_s = f`` is plain Coulomb (the same numbers as the clipping). A kinetic coefficient that
+depends on the slip speed (`kinetic_coefficient`: linear weakening, Stribeck) is taken at the
+slip speed of the step itself, ``|v_r| = c dt (|r*| - mu(|v_r|) r_n)`` (the slip of ``u_t``
+over the step against the surface's, per ``dt``), solved node by node: in closed form for
+linear weakening, by Newton's method for Stribeck (convex in ``|v_r|``: one root, reached
+monotonically from the Coulomb one), still with no iteration between nodes. The mass is diagonal and
 each multiplier acts on one dof, so this is exact node by node, with no iteration
 (``docs/theory/contact.md``). A constant external load per unit mass ``b`` (pressure on a
 boundary) is added to ``A_m``.
@@ -47,7 +52,7 @@ from numba import njit
 
 from .states import SEPARATION, SLIP_NEG, SLIP_POS
 
-__all__ = ["explicit_step", "predictor", "csr_apply", "block2_apply", "stencil_apply", "advance", "multiplier_factor"]
+__all__ = ["explicit_step", "kinetic_coefficient", "COULOMB", "LINEAR_WEAKENING", "STRIBECK", "predictor", "csr_apply", "block2_apply", "stencil_apply", "advance", "multiplier_factor"]
 
 
 @njit(cache=True)
@@ -66,14 +71,51 @@ def predictor(u, v, a, A, dt, beta2):
         a[k] = A[k]
 
 
+#: Kinds of kinetic friction of `explicit_step` (``law[0]``): constant ``f`` (Coulomb), linear
+#: weakening ``f (1 - tau |v_r|)`` (``law[1] = tau`` [s/m], floored at 0), Stribeck ``f + (f_s -
+#: f) exp(-|v_r| / v_s)`` (``law[1] = v_s`` [m/s]).
+COULOMB, LINEAR_WEAKENING, STRIBECK = 0, 1, 2
+
+
 @njit(cache=True)
-def explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, fs, contact, lam_n, lam_t, state, ut_old):
+def kinetic_coefficient(kind, par, f, fs, excess, p, cdt):
+    """The kinetic coefficient ``mu`` of a slipping node at its slip speed of the step.
+
+    ``excess = |r*|`` exceeds ``fs p``; the slip speed is ``x = cdt (excess - mu(x) p)``
+    (``cdt = (beta2 + 1/2) dt``), ``mu`` of ``kind`` (`COULOMB`, `LINEAR_WEAKENING`,
+    `STRIBECK`) with parameter ``par``. Linear weakening: ``x`` in closed form while ``mu > 0``
+    (a step so long that ``cdt p f tau >= 1`` has no root there: ``mu = 0``). Stribeck: Newton on
+    the convex ``h(x) = x - cdt (excess - mu(x) p)`` from the Coulomb root, where ``h >= 0``."""
+    if kind == LINEAR_WEAKENING:
+        slope = 1.0 - cdt * p * f * par
+        if slope <= 0.0:
+            return 0.0
+        x = cdt * (excess - f * p) / slope
+        return max(f * (1.0 - par * x), 0.0)
+    if kind == STRIBECK:
+        x = cdt * (excess - f * p)
+        for _ in range(60):
+            e = np.exp(-x / par)
+            h = x - cdt * (excess - (f + (fs - f) * e) * p)
+            dh = 1.0 - cdt * p * (fs - f) / par * e
+            step = h / dh
+            x -= step
+            if not step > 1e-15 * x:  # monotone from the right: done when the step stops shrinking x
+                break
+        return f + (fs - f) * np.exp(-x / par)
+    return f
+
+
+@njit(cache=True)
+def explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, fs, contact, lam_n, lam_t, state, ut_old,
+                  law):
     """One step of the scheme in place, given ``A = -M^{-1} K u_m``.
 
     ``u, v, a`` hold ``u_m, v_{m-1}, a_{m-1}`` on entry and ``u_{m+1}, v_m, a_m`` on exit.
     Contact node ``j`` has its normal dof ``normal[j]`` and tangential dof ``tangent[j]``,
     the rigid surface at ``gap0[j]`` along the normal and moving at ``speed[j]``; ``f`` and
-    ``fs >= f`` are the kinetic and static friction coefficients.
+    ``fs >= f`` are the kinetic and static friction coefficients, the kinetic one of kind
+    ``law[0]`` with parameter ``law[1]`` (`kinetic_coefficient`; ``(COULOMB, 0)``: constant).
     ``lam_n, lam_t, state`` receive the reactions per unit mass and the node states;
     ``ut_old`` is scratch of the size of ``normal``. ``contact=False``: no reactions.
     """
@@ -83,12 +125,17 @@ def explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, fs, co
     predictor(u, v, a, A, dt, beta2)
     cdt2 = multiplier_factor(beta2, dt)
     on = 1.0 if contact else 0.0
-    for j in range(nc):  # branch-free, so that the loop vectorises
+    kind = int(law[0])
+    for j in range(nc):  # branch-free for Coulomb, so that the loop vectorises
         r, t = normal[j], tangent[j]
         p = on * max((gap0[j] - u[r]) / cdt2, 0.0)
         trial = (ut_old[j] + dt * speed[j] - u[t]) / cdt2
-        lim, held = f * p, fs * p
+        held = fs * p
         stick = abs(trial) <= held
+        mu = f
+        if kind != COULOMB and not stick:
+            mu = kinetic_coefficient(kind, law[1], f, fs, abs(trial), p, cdt2 / dt)
+        lim = mu * p
         q = stick * trial + (1 - stick) * min(max(trial, -lim), lim)
         touch = p > 0.0
         state[j] = SEPARATION * (1 - touch) + touch * (SLIP_POS * (trial > held) + SLIP_NEG * (trial < -held))
@@ -187,14 +234,14 @@ def stencil_apply(C, u, out):
 
 @njit(cache=True)
 def advance(C, indptr, indices, data, block, load, damping, u, v, a, normal, tangent, gap0, speed, nsteps, dt, beta2, f, fs,
-            contact, lam_n, lam_t, state, work):
+            contact, lam_n, lam_t, state, work, law):
     """``nsteps`` steps of the scheme in place, ``A_m = -(M^{-1} K) u_m + load`` (``load`` empty: none),
     with Rayleigh ``damping = (alpha, beta)`` on ``v_{m-1}`` if not both zero.
 
     ``M^{-1} K`` is the stencil ``C`` (`stencil_apply`) if ``C`` is not empty, else the sparse
     matrix ``(indptr, indices, data)``: in 2 x 2 blocks if ``block == 2`` (`block2_apply`), in CSR
     if ``block == 1`` (`csr_apply`). ``work`` receives ``u_m`` of the last
-    step; the other arguments are those of `explicit_step`.
+    step; the other arguments (``law``: the kind of kinetic friction) are those of `explicit_step`.
     """
     A = np.empty(u.shape[0])
     ut_old = np.empty(normal.shape[0])
@@ -220,4 +267,5 @@ def advance(C, indptr, indices, data, block, load, damping, u, v, a, normal, tan
             A += load
         if step == nsteps - 1:
             work[:] = u
-        explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, fs, contact, lam_n, lam_t, state, ut_old)
+        explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, fs, contact, lam_n, lam_t, state, ut_old,
+                      law)

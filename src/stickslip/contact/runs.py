@@ -572,9 +572,8 @@ def volume_at_start(scheme, u0, v0, st: dict, run_format) -> dict:
     the steady ones at the contact nodes that touch, in forward slip; the others separated)."""
     if not st.get("volume_every"):
         return {}
-    (normal, _), (gap0, _) = scheme.contact_dofs, scheme.surface
     u0, v0 = np.asarray(u0, float), np.asarray(v0, float)
-    touching = (u0[normal] <= gap0) if st["contact"] else np.zeros(len(normal), bool)
+    touching = scheme.touching(u0) if st["contact"] else np.zeros(scheme.nodes, bool)
     _, r_n, r_t = scheme.steady_reference() if st["contact"] else (None, 0.0, 0.0)
     scale = run_format.traction_scale(scheme)
     return {"vol_t": [0.0], "vol_u": [u0.copy()], "vol_v": [v0.copy()], "vol_P": [scale * touching * r_n],
@@ -605,7 +604,7 @@ def _run_explicit(cls, scheme, u0, v0, settings, t_end, checkpoint, every, progr
         run = cls(scheme, settings, {}, volume_at_start(scheme, u0, v0, settings, run_format=cls.FORMAT),
                   {"u": start.u, "v": start.v, "a": start.a, "ref": ref.copy()}, 0)
     out = scheme.new_output()
-    (normal, tangent), (gap0, _) = scheme.contact_dofs, scheme.surface
+    normal, tangent = scheme.contact_dofs
     scale = run.FORMAT.traction_scale(scheme)
     st = run.settings
 
@@ -624,7 +623,7 @@ def _run_explicit(cls, scheme, u0, v0, settings, t_end, checkpoint, every, progr
         if snapshot_due(done, st):
             fields = {"snap_t": m * scheme.dt, "U": U, "V": V, "Ud": (u1[normal] - U) / scheme.dt,
                       "Vd": (u1[tangent] - V) / scheme.dt, "P": scale * out.lam_n, "Q": scale * out.lam_t,
-                      "gap": u1[normal] - gap0, "state": out.state.copy()}
+                      "gap": scheme.gaps(u1), "state": out.state.copy()}
             for key, v in fields.items():
                 snaps.setdefault(key, []).append(v)
         if volume_due(done, st):

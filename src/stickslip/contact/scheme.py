@@ -35,7 +35,7 @@ import scipy.sparse as sp
 
 from ..quantities import COMMON as Q
 from ..errors import ParameterError
-from .kernel import advance, block2_apply, csr_apply, stencil_apply
+from .kernel import COULOMB, advance, block2_apply, csr_apply, stencil_apply
 
 __all__ = ["ExplicitScheme", "StepState", "StepOutput", "amplification_matrix", "discrete_rates", "stencil_matrix"]
 
@@ -173,6 +173,12 @@ class ExplicitScheme(ABC):
         return float(self.params.friction)
 
     @property
+    def kinetic_law(self) -> tuple[float, int, float]:
+        """The kinetic coefficient and how it depends on the slip speed: ``(f, kind, parameter)``
+        of `kernel.kinetic_coefficient` (default ``(params.friction, COULOMB, 0)``: a constant)."""
+        return (float(self.params.friction), COULOMB, 0.0)
+
+    @property
     def damping(self) -> tuple[float, float]:
         """Rayleigh damping ``(alpha, beta)``, ``C = alpha M + beta K`` (default none)."""
         return (0.0, 0.0)
@@ -297,6 +303,26 @@ class ExplicitScheme(ABC):
         mass = self.mass
         return 0.5 * float(np.dot(mass * w, w)), -0.5 * float(np.dot(x0, mass * self.apply(x1)))
 
+    def gaps(self, u: np.ndarray) -> np.ndarray:
+        """The normal gap of every contact node at displacement ``u``: ``u_n - gap0``."""
+        return u[self.contact_dofs[0]] - self.surface[0]
+
+    def touching(self, u: np.ndarray) -> np.ndarray:
+        """Which contact nodes touch at displacement ``u`` (``u_n <= gap0``)."""
+        return u[self.contact_dofs[0]] <= self.surface[0]
+
+    def contact_work(self, lam_n: np.ndarray, lam_t: np.ndarray, du: np.ndarray):
+        """``(surface work, friction dissipation, normal work)`` of the reactions per unit mass
+        ``lam_n, lam_t`` (one row per step) over the displacements ``du = (u_{m+1} - u_{m-1}) / 2``:
+        ``r_t`` times the surface's displacement ``s dt``, against the slip ``du_t - s dt``, and
+        ``r_n`` times ``du_n`` (`stickslip.contact.energy`)."""
+        (normal, tangent), (_, speed) = self.contact_dofs, self.surface
+        mass = np.broadcast_to(np.asarray(self.mass, dtype=float), du.shape[-1:])
+        m_n, m_t = mass[normal], mass[tangent]
+        slip = du[..., tangent] - speed * self.dt
+        return (np.sum(m_t * lam_t * speed * self.dt, axis=-1), -np.sum(m_t * lam_t * slip, axis=-1),
+                np.sum(m_n * lam_n * du[..., normal], axis=-1))
+
     def initial_state(self, u0: np.ndarray, v0: np.ndarray, contact: bool = True) -> StepState:
         """``u_0, v_{-1}, a_{-1}`` such that the first step starts from displacement ``u0`` and velocity ``v0``.
 
@@ -313,12 +339,16 @@ class ExplicitScheme(ABC):
         if self.load is not None:
             a += self.load
         if contact:
-            (normal, tangent), (gap0, _) = self.contact_dofs, self.surface
-            _, r_n, r_t = self.steady_reference()
-            touching = u0[normal] <= gap0
-            a[normal] += touching * r_n
-            a[tangent] += touching * r_t
+            a += self.steady_reactions(u0)
         return StepState(u0, v0 - self.dt * a, a)
+
+    def steady_reactions(self, u: np.ndarray) -> np.ndarray:
+        """The steady reactions per unit mass on every dof, at the contact nodes that touch at ``u``."""
+        (normal, tangent), (_, r_n, r_t) = self.contact_dofs, self.steady_reference()
+        out, touching = np.zeros_like(u), self.touching(u)
+        out[normal] += touching * r_n
+        out[tangent] += touching * r_t
+        return out
 
     def new_output(self) -> StepOutput:
         n = self.nodes
@@ -336,8 +366,9 @@ class ExplicitScheme(ABC):
         (normal, tangent), (gap0, speed) = self.contact_dofs, self.surface
         indptr, indices, data, block = self.kernel_operator
         C = self.stencil if self.stencil is not None and not sparse else _NO_STENCIL
+        f, kind, parameter = self.kinetic_law
         load = _NO_LOAD if self.load is None else np.ascontiguousarray(self.load, dtype=float)
         advance(C, indptr, indices, data, block, load, np.array(self.damping, dtype=float), state.u, state.v, state.a, normal, tangent, gap0, speed, nsteps,
-                self.dt, self.beta2, self.params.friction, self.static_friction, bool(contact), out.lam_n, out.lam_t,
-                out.state, out.u_prev)
+                self.dt, self.beta2, f, self.static_friction, bool(contact), out.lam_n, out.lam_t,
+                out.state, out.u_prev, np.array([kind, parameter], dtype=float))
         return out

@@ -14,6 +14,7 @@
   (`ContactProblem`, `BodyScheme`);
 * `pair`: two deformable bodies in frictional contact (a pad on a disc turning at Omega):
   dual mortar coupling of non-matching meshes, steady sliding and the CEA (`PairProblem`);
+* `pair_run`: explicit runs of a pair, the partner Eulerian (`PairScheme`, `integrate_pair`);
 * `cea`: complex eigenvalue analysis of steady sliding over a frequency band, shift-invert
   Arnoldi (`complex_eigenvalues`), of a body on a rigid surface or of a pair;
 * `run`: explicit dynamics with the shared run books, checkpoints and classification
@@ -28,6 +29,7 @@ from .body import CELL_KINDS, Body, body_from_meshio, read_body
 from .boundary import Load, Spring
 from .cea import CeaModes, complex_eigenvalues
 from .pair import PairProblem, PairSteady, Rotation, Translation, steady_pair
+from .pair_run import PairRun, PairScheme, integrate_pair
 from .run import BodyInitial, BodyRun, classify_body, integrate_body, perturbed_steady_body, preload_body
 from .scheme import BodyScheme, ContactProblem
 from .static import SteadyContact, steady_contact
@@ -37,4 +39,5 @@ __all__ = ["Body", "read_body", "body_from_meshio", "CELL_KINDS", "Material", "B
            "RigidCylinder", "RigidFlat", "ContactFrames", "contact_frames", "SteadyContact", "steady_contact",
            "ContactProblem", "BodyScheme", "CeaModes", "complex_eigenvalues", "BodyInitial", "BodyRun",
            "integrate_body", "classify_body", "perturbed_steady_body", "preload_body", "Spring", "Load",
-           "PairProblem", "PairSteady", "Rotation", "Translation", "steady_pair"]
+           "PairProblem", "PairSteady", "Rotation", "Translation", "steady_pair", "PairScheme", "PairRun",
+           "integrate_pair"]

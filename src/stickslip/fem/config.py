@@ -26,7 +26,7 @@
     law = "stribeck"                # optional: friction falling with the slip speed v_r, from
     stribeck_speed = 0.1            # static_friction to friction, mu = f_d + (f_s - f_d) exp(-v_r / v_s) [m/s];
                                     # or law = "linear-weakening", weakening = tau [s/m]: mu = f_d (1 - tau v_r)
-                                    # (steady sliding and the CEA; an explicit run takes Coulomb friction)
+                                    # (steady sliding, the CEA and explicit runs, node by node)
 
     [[spring]]                      # springs from a group's nodes to the ground (optional, repeatable)
     group = "left"

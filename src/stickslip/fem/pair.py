@@ -1,5 +1,5 @@
-"""Two deformable bodies in frictional contact: a pad on a disc (issue 24, first increment:
-steady sliding and the CEA; explicit runs of a pair are not written yet).
+"""Two deformable bodies in frictional contact: a pad on a disc (steady sliding and the CEA;
+their explicit runs: `stickslip.fem.pair_run`).
 
 **Mortar coupling.** The contact is discretised segment to segment (mortar), with one
 Lagrange multiplier ``lambda_j`` [Pa] per node ``j`` of the *slave* group (the pad's face),
@@ -41,6 +41,7 @@ in steady sliding and the CEA; the centrifugal load and stress stiffening stay o
 
 from __future__ import annotations
 
+import hashlib
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -387,12 +388,30 @@ class PairProblem:
         mass = np.concatenate([self.mass[free], np.zeros(len(A))])
         return K, C, mass, free
 
+    @cached_property
+    def digest(self) -> str:
+        """SHA-256 of both meshes, stiffnesses, loads, the mortar, the sliding and the clamped dofs:
+        what a checkpoint of a run must share."""
+        h = hashlib.sha256()
+        c, (t, speed) = self.coupling, self.tangent
+        for system in (self.slave, self.master):
+            K = system.K
+            for arr in (system.body.points, system.body.cells, K.indptr, K.indices, K.data, system.load, system.mass):
+                h.update(np.ascontiguousarray(arr).tobytes())
+        for arr in (c.slave_nodes, c.normal, c.D.data, c.M.indptr, c.M.indices, c.M.data, t, speed, self.fixed):
+            h.update(np.ascontiguousarray(arr).tobytes())
+        h.update(repr((self.friction, self.gyroscopic)).encode())
+        return h.hexdigest()
+
+    def to_dict(self) -> dict:
+        return self.to_attrs()
+
     def to_attrs(self) -> dict:
         return {"slave_mesh": Path(str(self.slave.body.source)).name, "master_mesh": Path(str(self.master.body.source)).name,
                 "slave_group": self.slave_group, "master_group": self.master_group, "friction": self.friction,
                 "motion": repr(self.motion), "clamped_slave": ",".join(self.clamped_slave),
                 "clamped_master": ",".join(self.clamped_master), "slave_nodes": len(self.coupling.slave_nodes),
-                "gyroscopic": int(self.gyroscopic)}
+                "gyroscopic": int(self.gyroscopic), "problem_sha256": self.digest}
 
 
 @dataclass(frozen=True, eq=False, repr=False)

@@ -3,7 +3,10 @@
 Both write the body's mesh (points at ``z = 0``, in m) with `stickslip.files.write_xdmf_series`
 (the ``.xdmf`` and its ``.h5`` beside it; `meshio.xdmf.TimeSeriesReader` reads them back).
 
-* `write_run_xdmf(run, path)`: the volume snapshots of `integrate_body(..., volume_every=T)`;
+* `write_run_xdmf(run, path)`: the volume snapshots of `integrate_body(..., volume_every=T)`
+  (or of `stickslip.fem.pair_run.integrate_pair`: both bodies in one mesh, the slave's points
+  first, with the point data ``body``, 0 the slave and 1 the master, and ``material`` counting
+  the slave's materials first);
   per snapshot (time [s]) the point data ``displacement`` [m] (total, from the unstressed
   body), ``velocity`` [m/s], and on the contact nodes ``contact_pressure`` and
   ``contact_shear`` [N per unit thickness per node] and ``contact_state`` (0 stick, 1 slip,
@@ -30,6 +33,7 @@ from ..errors import ParameterError
 from ..files import write_xdmf_series
 from .assembly import cell_stress, von_mises
 from .cea import CeaModes, linearised
+from .pair_run import PairRun
 from .run import BodyRun
 from .scheme import BodyScheme, ContactProblem
 
@@ -47,13 +51,15 @@ def _vectors(xy: np.ndarray) -> np.ndarray:
     return np.column_stack([xy, np.zeros(len(xy), dtype=xy.dtype)])
 
 
-def write_run_xdmf(run: BodyRun, path) -> Path:
+def write_run_xdmf(run: BodyRun | PairRun, path) -> Path:
     """Write the volume snapshots of ``run`` (see the module docstring); returns ``path``."""
-    if not isinstance(run, BodyRun):
-        raise ParameterError("run", type(run).__name__, "a BodyRun (from integrate_body)")
+    if not isinstance(run, (BodyRun, PairRun)):
+        raise ParameterError("run", type(run).__name__, "a BodyRun or a PairRun (from integrate_body, integrate_pair)")
     snaps = run.snapshots
     if not run.settings.get("volume_every") or len(snaps.get("vol_t", ())) == 0:
-        raise ParameterError("run", "a run without volume snapshots", "a BodyRun integrated with volume_every=T")
+        raise ParameterError("run", "a run without volume snapshots", "a run integrated with volume_every=T")
+    if isinstance(run, PairRun):
+        return _pair_run(run, path)
     scheme: BodyScheme = run.scheme
     body, frames = scheme.params.system.body, scheme.params.frames
     nodes = frames.nodes[scheme.contact_nodes]
@@ -83,15 +89,52 @@ def write_run_xdmf(run: BodyRun, path) -> Path:
     return write_xdmf_series(path, *_mesh(body), (step(k) for k in range(len(snaps["vol_t"]))))
 
 
-def _pair_modes(problem, modes: CeaModes, path) -> Path:
-    """The mode shapes of a pair of bodies: both meshes in one (the slave's points first), with
-    the point data ``body`` (0: slave, 1: master)."""
+def _both(problem):
+    """Both meshes of a pair in one (the slave's points first): points, cell blocks, and the
+    point data ``body`` (0: slave, 1: master)."""
     s_body, m_body = problem.slave.body, problem.master.body
     points = np.vstack([_mesh(s_body)[0], _mesh(m_body)[0]])
     cells = [(s_body.kind, s_body.cells.astype(np.int64)), (m_body.kind, m_body.cells.astype(np.int64) + len(s_body.points))]
+    which = np.concatenate([np.zeros(len(s_body.points)), np.ones(len(m_body.points))]).astype(np.int32)
+    return points, cells, which
+
+
+def _pair_run(run: PairRun, path) -> Path:
+    """The volume snapshots of a run of a pair of bodies (`write_run_xdmf`)."""
+    scheme, snaps = run.scheme, run.snapshots
+    p = scheme.params
+    points, cells, which = _both(p)
+    n, ns = len(points), 2 * len(p.slave.body.points)
+    nodes = scheme.contact_nodes
+    materials = [p.slave.cell_material.astype(np.int32), (p.master.cell_material + len(p.slave.materials)).astype(np.int32)]
+
+    def on_line(values, fill=0.0, dtype=float):
+        out = np.full(n, fill, dtype=dtype)
+        out[nodes] = values
+        return out
+
+    def step(k):
+        u = scheme.cartesian(snaps["vol_u"][k])
+        point_data = {"displacement": _vectors(u), "velocity": _vectors(scheme.cartesian(snaps["vol_v"][k])),
+                      "contact_pressure": on_line(snaps["vol_P"][k]), "contact_shear": on_line(snaps["vol_Q"][k]),
+                      "contact_state": on_line(snaps["vol_state"][k], -1, np.int32), "body": which}
+        cell_data = {name: [] for name in ("stress_xx", "stress_yy", "stress_xy", "von_mises")}
+        for system, part in ((p.slave, u[:ns]), (p.master, u[ns:])):
+            sigma = cell_stress(system, part)
+            for name, values in zip(("stress_xx", "stress_yy", "stress_xy"), sigma.T):
+                cell_data[name].append(values)
+            cell_data["von_mises"].append(von_mises(system, sigma))
+        cell_data["material"] = materials
+        return float(snaps["vol_t"][k]), point_data, cell_data
+
+    return write_xdmf_series(path, points, cells, (step(k) for k in range(len(snaps["vol_t"]))))
+
+
+def _pair_modes(problem, modes: CeaModes, path) -> Path:
+    """The mode shapes of a pair of bodies: both meshes in one (`_both`)."""
+    points, cells, which = _both(problem)
     free = problem.linearised()[3]
     n = len(points)
-    which = np.concatenate([np.zeros(len(s_body.points)), np.ones(len(m_body.points))]).astype(np.int32)
 
     def step(k):
         u = np.zeros(2 * n, dtype=complex)

@@ -22,7 +22,7 @@ from typing import Callable, ClassVar
 import numpy as np
 
 from ..quantities import COMMON, FEM as Q
-from ..contact import classify
+from ..contact import ExplicitScheme, classify
 from ..contact.runs import RunFormat, RunRecord, prepare, run_explicit
 from ..errors import ParameterError
 from .scheme import BodyScheme, ContactProblem
@@ -44,13 +44,14 @@ class BodyInitial:
 
 
 def perturbed_steady_body(scheme: BodyScheme, amplitude: float = 1e-3, seed: int = 0) -> BodyInitial:
-    """Steady sliding plus white noise on the contact nodes' tangential displacements, at rest.
+    """Steady sliding plus white noise on the contact nodes' tangential displacements, at rest
+    (of a `BodyScheme`, or of a `stickslip.fem.pair_run.PairScheme`: its slave's contact nodes).
 
     The noise has RMS ``amplitude`` (in [0, 100]) times the largest steady displacement of the
     contact line.
     """
-    if not isinstance(scheme, BodyScheme):
-        raise ParameterError("scheme", scheme, "a BodyScheme")
+    if not isinstance(scheme, ExplicitScheme):
+        raise ParameterError("scheme", scheme, "a BodyScheme or a PairScheme")
     amplitude = COMMON.check("amplitude", amplitude)  # beyond, the start is no longer near steady sliding
     u_e, _, _ = scheme.steady_reference()
     normal, tangent = scheme.contact_dofs
@@ -130,11 +131,8 @@ def integrate_body(problem: ContactProblem, t_end: float | None = None, *, trans
     set `BodyScheme`; the books and ``checkpoint`` behave as in `stickslip.brake.fem.integrate_fem`;
     ``volume_every`` [transits] keeps volume snapshots (one at ``t = 0`` too) for `stickslip.fem.paraview.write_run_xdmf`.
     """
-    if getattr(problem, "law", None) is not None and problem.law.name != "coulomb":
-        raise ParameterError("contact.law", problem.law.name, "coulomb in an explicit run (a law that depends on the "
-                             "slip speed is taken by steady sliding and the CEA; the explicit scheme's nodes stick "
-                             "and slip with Coulomb's static and kinetic coefficients)")
     scheme = BodyScheme(problem, beta2, courant, time_step)
+    scheme.kinetic_law  # a law the kernel is not compiled for is refused before anything runs
     initial = perturbed_steady_body(scheme) if initial is None else initial
     if not isinstance(initial, BodyInitial) or initial.u.shape != (scheme.free.size,):
         raise ParameterError("initial", initial, f"a BodyInitial with {scheme.free.size} dofs")
@@ -146,7 +144,8 @@ def integrate_body(problem: ContactProblem, t_end: float | None = None, *, trans
 
 
 def classify_body(run: BodyRun, transits: float | None = None, **options):
-    """The limit regime of a run on its contact nodes (`stickslip.contact.classify`)."""
-    if not isinstance(run, BodyRun):
-        raise ParameterError("run", run, "a BodyRun (see integrate_body)")
+    """The limit regime of a run on its contact nodes (`stickslip.contact.classify`; of a pair
+    of bodies, on the slave's)."""
+    if not isinstance(run, RunRecord) or run.FORMAT.model != "fem":
+        raise ParameterError("run", run, "a BodyRun or a PairRun (see integrate_body, integrate_pair)")
     return classify(run, transits, **options)

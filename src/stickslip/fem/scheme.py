@@ -31,15 +31,45 @@ from .. import validation as check
 from ..quantities import FEM as Q
 from ..contact import ExplicitScheme
 from ..errors import ParameterError
-from ..friction import FrictionLaw
+from ..contact.kernel import COULOMB, LINEAR_WEAKENING, STRIBECK
+from ..friction import Coulomb, FrictionLaw, LinearWeakening, Stribeck
 from .assembly import BodySystem
 from .static import SteadyContact, frame_rotation, problem_attrs, steady_contact
 from .surfaces import ContactFrames
 
-__all__ = ["ContactProblem", "BodyScheme", "MAX_OVERDAMPING"]
+__all__ = ["ContactProblem", "FemScheme", "BodyScheme", "MAX_OVERDAMPING", "check_damping"]
 
 #: The most an explicit run lets Rayleigh damping overdamp the mesh's highest mode (times critical).
 MAX_OVERDAMPING = 100.0
+
+
+def check_damping(materials: dict, omega_max: float) -> tuple[float, float]:
+    """The one Rayleigh damping ``(alpha, beta)`` of an explicit run's ``materials`` (the
+    `Material` of each group), refused if it would make the run crawl: the highest mode
+    (``omega_max`` [rad/s]) damped more than ``MAX_OVERDAMPING`` times critically, ``alpha + beta
+    omega_max^2 > 2 MAX_OVERDAMPING omega_max``. The stable step shrinks about in proportion
+    (``beta omega_max = 1e6`` asks for some 1e6 times more steps). The CEA has no step: any
+    damping within the material's ranges goes. The explicit scheme damps with one ``(alpha,
+    beta)``: materials with different ones are refused here (steady sliding and the CEA take
+    them)."""
+    pairs = {(m.alpha, m.beta) for m in materials.values()}
+    if len(pairs) > 1:
+        names = ", ".join(f"{k}: alpha = {m.alpha:g}, beta = {m.beta:g}" for k, m in materials.items())
+        raise ParameterError("material.alpha", names, "one Rayleigh damping (alpha, beta) for every material of an "
+                             "explicit run (its scheme damps the whole body with one pair; steady sliding and the "
+                             "CEA take one per material)", also=("material.beta",))
+    alpha, beta = pairs.pop()
+    if alpha == 0.0 and beta == 0.0:
+        return (0.0, 0.0)
+    w, top = omega_max, 2.0 * MAX_OVERDAMPING * omega_max
+    if alpha + beta * w * w > top * (1.0 + 1e-12):
+        name, value, most = ("beta", beta, (top - alpha) / (w * w)) if beta > 0 else ("alpha", alpha, top)
+        raise ParameterError(name, value, f"<= {max(most, 0.0):.4g} {'s' if name == 'beta' else '1/s'} on this "
+                             f"mesh for an explicit run: alpha + beta omega_max^2 <= {2 * MAX_OVERDAMPING:g} "
+                             f"omega_max, its highest mode (omega_max = {w:.4g} rad/s) at most {MAX_OVERDAMPING:g} "
+                             "times critically damped (the stable step shrinks in proportion)",
+                             also=("alpha" if name == "beta" else "beta",))
+    return (float(alpha), float(beta))
 
 
 @dataclass(frozen=True, eq=False)
@@ -53,7 +83,8 @@ class ContactProblem:
     sliding slips at the surface's speed ``V`` (the same at every contact node of a rigid
     surface), so ``friction`` becomes ``law.kinetic(V)`` and ``static_friction``
     ``law.static``; the CEA adds the slope ``law.slope(V)`` (a falling law is negative damping,
-    `stickslip.fem.cea.linearised`). An explicit run takes Coulomb friction only, for now."""
+    `stickslip.fem.cea.linearised`). An explicit run takes each slipping node's kinetic
+    coefficient at its own slip speed (`BodyScheme.kinetic_law`), sticking with ``law.static``."""
 
     system: BodySystem
     frames: ContactFrames
@@ -145,30 +176,8 @@ class ContactProblem:
         return float(np.sqrt(lam[0]) * (1.0 + 1e-6))
 
     def check_damping(self) -> None:
-        """Refuse Rayleigh damping that would make an explicit run crawl: the mesh's highest mode
-        damped more than ``MAX_OVERDAMPING`` times critically, ``alpha + beta omega_max^2 >
-        2 MAX_OVERDAMPING omega_max``. The stable step shrinks about in proportion (``beta
-        omega_max = 1e6`` asks for some 1e6 times more steps). The CEA has no step: any damping
-        within the material's ranges goes. The explicit scheme damps with one ``(alpha, beta)``:
-        materials of the body with different ones are refused here (steady sliding and the CEA
-        take them)."""
-        pairs = {(m.alpha, m.beta) for m in self.system.materials.values()}
-        if len(pairs) > 1:
-            names = ", ".join(f"{k}: alpha = {m.alpha:g}, beta = {m.beta:g}" for k, m in self.system.materials.items())
-            raise ParameterError("material.alpha", names, "one Rayleigh damping (alpha, beta) for every material of an "
-                                 "explicit run (its scheme damps the whole body with one pair; steady sliding and the "
-                                 "CEA take one per material)", also=("material.beta",))
-        alpha, beta = pairs.pop()
-        if alpha == 0.0 and beta == 0.0:
-            return
-        w, top = self.omega_max, 2.0 * MAX_OVERDAMPING * self.omega_max
-        if alpha + beta * w * w > top * (1.0 + 1e-12):
-            name, value, most = ("beta", beta, (top - alpha) / (w * w)) if beta > 0 else ("alpha", alpha, top)
-            raise ParameterError(name, value, f"<= {max(most, 0.0):.4g} {'s' if name == 'beta' else '1/s'} on this "
-                                 f"mesh for an explicit run: alpha + beta omega_max^2 <= {2 * MAX_OVERDAMPING:g} "
-                                 f"omega_max, its highest mode (omega_max = {w:.4g} rad/s) at most {MAX_OVERDAMPING:g} "
-                                 "times critically damped (the stable step shrinks in proportion)",
-                                 also=("alpha" if name == "beta" else "beta",))
+        """Refuse Rayleigh damping an explicit run cannot take (`check_damping`)."""
+        check_damping(self.system.materials, self.omega_max)
 
     @cached_property
     def digest(self) -> str:
@@ -193,8 +202,50 @@ class ContactProblem:
         return self.to_attrs()
 
 
+class FemScheme(ExplicitScheme):
+    """What the explicit schemes of `stickslip.fem` share (SI units): an optional ``time_step``
+    [s] instead of ``courant * dt_max`` (at most ``dt_max``), the transit time of a P-wave along
+    the contact line (``line_length / p_wave_speed``) and the run key."""
+
+    time_step: float | None
+
+    def check_time_step(self) -> None:
+        """Refuse a ``time_step`` beyond the stable step (call in ``__post_init__``)."""
+        if self.time_step is not None:
+            step = Q.check("time_step", self.time_step)
+            if step > self.dt_max:
+                raise ParameterError("time_step", step, f"<= the stable step {self.dt_max:.6g} s of this mesh "
+                                     f"(its highest mode: omega_max = {self.omega_max:.6g} rad/s, with its damping)")
+
+    @property
+    def dt(self) -> float:
+        """``time_step`` if given (at most the stable step), else ``courant * dt_max``."""
+        if self.time_step is not None:
+            return float(self.time_step)
+        return self.courant * self.dt_max
+
+    @property
+    def transit_time(self) -> float:
+        """The contact line's length over the P-wave speed [s] (the fastest of the materials along it)."""
+        return self.line_length / self.p_wave_speed
+
+    @property
+    def speed_scales(self) -> dict:
+        """The P-wave speed and the surface's mean speed along the line, in ``theta`` per second."""
+        return {"cp": 2.0 * np.pi / self.transit_time,
+                "surface": 2.0 * np.pi * float(np.mean(self.surface[1])) / self.line_length}
+
+    @property
+    def step_given(self) -> float:
+        """The user's ``time_step``, 0 if none (stored with a run's settings)."""
+        return float(self.time_step or 0.0)
+
+    def key(self) -> dict:
+        return {"beta2": self.beta2, "courant": self.courant, "step_given": self.step_given}
+
+
 @dataclass(frozen=True, eq=False)
-class BodyScheme(ExplicitScheme):
+class BodyScheme(FemScheme):
     """The explicit scheme of a `ContactProblem` (``beta2`` in [1/2, 1], ``courant`` in (0, 1]);
     ``time_step`` [s], if given, replaces ``courant * dt_max`` and may not exceed ``dt_max``."""
 
@@ -206,11 +257,7 @@ class BodyScheme(ExplicitScheme):
 
     def __post_init__(self):
         self.validate_common()
-        if self.time_step is not None:
-            step = Q.check("time_step", self.time_step)
-            if step > self.dt_max:
-                raise ParameterError("time_step", step, f"<= the stable step {self.dt_max:.6g} s of this mesh "
-                                     f"(its highest mode: omega_max = {self.omega_max:.6g} rad/s, with its damping)")
+        self.check_time_step()
 
     @cached_property
     def dt_max(self) -> float:
@@ -257,6 +304,21 @@ class BodyScheme(ExplicitScheme):
     @property
     def static_friction(self) -> float:
         return float(self.params.static_friction)
+
+    @property
+    def kinetic_law(self) -> tuple[float, int, float]:
+        """``(f_d, kind, parameter)`` of the problem's law for the kernel
+        (`stickslip.contact.kernel.kinetic_coefficient`): linear weakening and Stribeck with their
+        own kinetic coefficient, Coulomb (or none) with ``friction``."""
+        law = self.params.law
+        if isinstance(law, LinearWeakening):
+            return (float(law.fd), LINEAR_WEAKENING, float(law.tau))
+        if isinstance(law, Stribeck):
+            return (float(law.fd), STRIBECK, float(law.vs))
+        if law is not None and not isinstance(law, Coulomb):
+            raise ParameterError("law", law, "Coulomb, linear weakening or Stribeck in an explicit run (the kernel "
+                                 "is compiled for these; a user's law is taken by steady sliding and the CEA)")
+        return (float(self.params.friction), COULOMB, 0.0)
 
     @property
     def closed_line(self) -> bool:
@@ -309,34 +371,8 @@ class BodyScheme(ExplicitScheme):
         """Largest free angular frequency [rad/s] (`ContactProblem.omega_max`)."""
         return self.params.omega_max
 
-    @property
-    def dt(self) -> float:
-        """``time_step`` if given (at most the stable step), else ``courant * dt_max``."""
-        if self.time_step is not None:
-            return float(self.time_step)
-        return self.courant * self.dt_max
-
-    @property
-    def transit_time(self) -> float:
-        """The contact line's length over the P-wave speed [s] (the fastest of the materials along it)."""
-        return self.line_length / self.p_wave_speed
-
     @cached_property
     def p_wave_speed(self) -> float:
         """The P-wave speed [m/s] of the material along the contact line (the fastest, if several)."""
         system = self.params.system
         return system.p_wave_speed(system.body.cells_along(self.params.frames.group))
-
-    @property
-    def speed_scales(self) -> dict:
-        """The P-wave speed and the surface's mean speed along the line, in ``theta`` per second."""
-        return {"cp": 2.0 * np.pi / self.transit_time,
-                "surface": 2.0 * np.pi * float(np.mean(self.params.frames.speed)) / self.line_length}
-
-    @property
-    def step_given(self) -> float:
-        """The user's ``time_step``, 0 if none (stored with a run's settings)."""
-        return float(self.time_step or 0.0)
-
-    def key(self) -> dict:
-        return {"beta2": self.beta2, "courant": self.courant, "step_given": self.step_given}

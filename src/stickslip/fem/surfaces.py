@@ -24,7 +24,7 @@ import numpy as np
 from ..quantities import FEM as Q
 from ..errors import ParameterError
 
-__all__ = ["RigidCylinder", "RigidFlat", "ContactFrames", "contact_frames", "MAX_SPEED"]
+__all__ = ["RigidCylinder", "RigidFlat", "ContactFrames", "contact_frames", "order_along", "MAX_SPEED"]
 
 #: The fastest surface [m/s] (declared: the range of a flat's velocity).
 MAX_SPEED = Q["velocity"].range.hi
@@ -122,7 +122,7 @@ class ContactFrames:
     group: str = ""
 
 
-def _order_along(points: np.ndarray, edges: np.ndarray, nodes: np.ndarray) -> np.ndarray:
+def order_along(points: np.ndarray, edges: np.ndarray, nodes: np.ndarray) -> np.ndarray:
     """The nodes of a chain (open or closed) of edges, in order along it."""
     neighbours = {int(v): [] for v in nodes}
     for a, b in edges:
@@ -158,7 +158,7 @@ def contact_frames(body, group: str, surface, tolerance: float = 0.05) -> Contac
         raise ParameterError("surface", surface, "a RigidCylinder or a RigidFlat")
     tolerance = Q.check("tolerance", tolerance)
     edges = body.segments(group, "contact_group")
-    nodes = _order_along(body.points, edges, np.unique(edges))
+    nodes = order_along(body.points, edges, np.unique(edges))
     pts = body.points[nodes]
     n, t, g, speed = surface.geometry(pts)
     seg = np.hypot(*np.diff(pts, axis=0).T)
