@@ -65,5 +65,7 @@ def count_zones(mask: np.ndarray, min_run: int = 1, periodic: bool = True) -> in
 def state_fractions(state: np.ndarray) -> np.ndarray:
     """Fraction of the nodes in each state (columns in the order of `STATE_NAMES`), over the last axis."""
     state = np.asarray(state)
+    if state.ndim == 1:  # one row (every sample of a run): one pass
+        return np.bincount(state.astype(np.intp), minlength=len(STATE_NAMES))[: len(STATE_NAMES)] / state.size
     counts = np.stack([np.sum(state == code, axis=-1) for code in range(len(STATE_NAMES))], axis=-1)
     return counts / state.shape[-1]
