@@ -114,7 +114,7 @@ def test_one_material_still_means_the_whole_body(layers):
     ({"a": LINING}, "none for cell group 'b'"),
     ({"a": LINING, "b": STEEL, "c": STEEL}, "material.group = 'c': must be a cell group of"),
     ({"a": LINING, "b": Material(1e10, 0.25, 2500.0, "stress")}, "one plane"),
-    ({}, "a Material, or {cell group name: Material}"),
+    ({}, "a Material or an Orthotropic, or {cell group name: material}"),
 ])
 def test_materials_that_do_not_cover_the_cell_groups_once_are_refused(layers, materials, words):
     with pytest.raises(ParameterError) as err:

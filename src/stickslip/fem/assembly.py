@@ -12,7 +12,9 @@ damping ``C = sum over materials of (alpha M + beta K)`` of each material's cell
 spring damped with the beta of the cells along its group), on the
 Cartesian dofs ``2 i`` (x) and ``2 i + 1`` (y) of node ``i``. Plane strain uses the Lamé
 parameters ``lambda = E nu / ((1 + nu)(1 - 2 nu))``, ``mu = E / (2 (1 + nu))``; plane stress
-replaces ``lambda`` by ``2 lambda mu / (lambda + 2 mu)``.
+replaces ``lambda`` by ``2 lambda mu / (lambda + 2 mu)``. A cell group may instead be of an
+`stickslip.fem.orthotropic.Orthotropic` material (a lining): its cells take the constitutive
+matrix ``D`` in x-y axes, ``int eps(v)^T D eps(u)``, in Voigt form.
 """
 
 from __future__ import annotations
@@ -32,6 +34,7 @@ from ..quantities import COMMON, FEM as Q
 from ..errors import ParameterError
 from .body import Body, edge_middles
 from .boundary import Load, Spring, boundary_load, boundary_springs
+from .orthotropic import Orthotropic
 
 __all__ = ["Material", "BodySystem", "assemble", "cell_stress", "von_mises", "transport_operators", "materials_of"]
 
@@ -235,6 +238,26 @@ def _weighted_mass(u, v, w):
 
 
 @BilinearForm
+def _anisotropic(u, v, w):
+    """Linear elasticity with a constitutive matrix ``D`` per cell (fields ``d00 .. d22``), Voigt form."""
+    eu, ev = sym_grad(u), sym_grad(v)
+    a, b = (eu[0, 0], eu[1, 1], 2.0 * eu[0, 1]), (ev[0, 0], ev[1, 1], 2.0 * ev[0, 1])
+    return sum(getattr(w, f"d{i}{j}") * a[j] * b[i] for i in range(3) for j in range(3))
+
+
+def _constitutive(materials: list, owner: np.ndarray) -> np.ndarray:
+    """``D`` [Pa] (3 x 3, x-y axes, Voigt) of every cell: zero on the cells of isotropic materials."""
+    per = np.array([m.stiffness if isinstance(m, Orthotropic) else np.zeros((3, 3)) for m in materials])
+    return per[owner]
+
+
+def _anisotropic_stiffness(basis, order: np.ndarray, D: np.ndarray) -> sp.csr_matrix:
+    """``K`` of cells of constitutive matrices ``D`` (one per cell), on the dofs ``2 i + c``."""
+    fields = {f"d{i}{j}": _on_points(basis, D[:, i, j]) for i in range(3) for j in range(3)}
+    return asm(_anisotropic, basis, **fields)[order][:, order].tocsr()
+
+
+@BilinearForm
 def _elasticity(u, v, w):
     """Isotropic linear elasticity with Lamé parameters that vary from cell to cell."""
     return 2.0 * w.mu * ddot(sym_grad(u), sym_grad(v)) + w.lam * div(u) * div(v)
@@ -266,14 +289,16 @@ def _stiffness(basis, order: np.ndarray, lam: np.ndarray, mu: np.ndarray) -> sp.
 
 
 def materials_of(material) -> dict:
-    """``{cell group: Material}`` of what `assemble` takes: one `Material` (``{"": material}``)
-    or a mapping from cell group names to materials."""
-    if isinstance(material, Material):
+    """``{cell group: Material}`` of what `assemble` takes: one `Material` or `Orthotropic`
+    (``{"": material}``) or a mapping from cell group names to materials."""
+    if isinstance(material, (Material, Orthotropic)):
         return {"": material}
-    if isinstance(material, dict) and material and all(isinstance(k, str) and k and isinstance(m, Material)
+    if isinstance(material, dict) and material and all(isinstance(k, str) and k and
+                                                       isinstance(m, (Material, Orthotropic))
                                                        for k, m in material.items()):
         return dict(material)
-    raise ParameterError("material", material, "a Material, or {cell group name: Material} for every cell group")
+    raise ParameterError("material", material, "a Material or an Orthotropic, or {cell group name: material} for "
+                         "every cell group")
 
 
 def _cell_material(body: Body, materials: dict) -> np.ndarray:
@@ -316,18 +341,23 @@ def cell_stress(system: BodySystem, u) -> np.ndarray:
     if u.shape[-1] != system.n_dofs or u.ndim > 2:
         raise ParameterError("u", f"an array of shape {u.shape}", f"(2 n,) or (k, 2 n) with 2 n = {system.n_dofs}")
     basis, order = system.basis
-    pairs = np.array([m.lame for m in system.materials.values()])[system.cell_material]
-    lam, mu = pairs[:, 0], pairs[:, 1]
+    mats = list(system.materials.values())
+    D = np.array([m.stiffness if isinstance(m, Orthotropic) else _isotropic_matrix(*m.lame) for m in mats])
+    D = D[system.cell_material]
     weights = basis.dx / basis.dx.sum(axis=1, keepdims=True)
     out = []
     for one in np.atleast_2d(u):
         x = np.empty(system.n_dofs)
         x[order] = one
         g = np.sum(basis.interpolate(x).grad * weights, axis=-1)  # g[i, j] = d u_i / d x_j, cell means
-        trace = g[0, 0] + g[1, 1]
-        out.append(np.column_stack([lam * trace + 2 * mu * g[0, 0], lam * trace + 2 * mu * g[1, 1],
-                                    mu * (g[0, 1] + g[1, 0])]))
+        strain = np.stack([g[0, 0], g[1, 1], g[0, 1] + g[1, 0]], axis=-1)
+        out.append(np.einsum("cij,cj->ci", D, strain))
     return np.array(out) if u.ndim == 2 else out[0]
+
+
+def _isotropic_matrix(lam: float, mu: float) -> np.ndarray:
+    """``D`` of an isotropic material of Lamé parameters ``lam``, ``mu`` (Voigt, engineering shear)."""
+    return np.array([[lam + 2 * mu, lam, 0.0], [lam, lam + 2 * mu, 0.0], [0.0, 0.0, mu]])
 
 
 def transport_operators(system: BodySystem, omega: float, center=(0.0, 0.0)) -> tuple[sp.csr_matrix, sp.csr_matrix]:
@@ -355,11 +385,17 @@ def transport_operators(system: BodySystem, omega: float, center=(0.0, 0.0)) -> 
 def von_mises(system: BodySystem, sigma) -> np.ndarray:
     """The von Mises stress [Pa] of the cell stresses ``sigma`` (`cell_stress`: ``(..., n_cells, 3)``)
     with the out-of-plane stress of the material's plane: ``sigma_zz = nu (sigma_xx + sigma_yy)``
-    in plane strain (each cell's own ``nu``), 0 in plane stress."""
+    in plane strain (each cell's own ``nu``; an orthotropic cell's `Orthotropic.sigma_zz`), 0 in
+    plane stress."""
     sigma = np.asarray(sigma, dtype=float)
     sxx, syy, sxy = sigma[..., 0], sigma[..., 1], sigma[..., 2]
     strain = next(iter(system.materials.values())).plane == "strain"
     szz = system.cell_values("poisson") * (sxx + syy) if strain else np.zeros_like(sxx)
+    owner = system.cell_material
+    for i, m in enumerate(system.materials.values()):
+        if isinstance(m, Orthotropic):
+            cells = owner == i
+            szz[..., cells] = m.sigma_zz(sigma[..., cells, :])
     return np.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) + 3.0 * sxy**2)
 
 
@@ -390,9 +426,13 @@ def assemble(body: Body, material, springs=(), loads=()) -> BodySystem:
     # scikit-fem numbers the dofs its own way: reorder to 2 i + c, the contact machinery's
     order = _dof_order(basis, where)
     mats = list(materials.values())
-    lame = np.array([m.lame for m in mats])[owner]
+    lame = np.array([(0.0, 0.0) if isinstance(m, Orthotropic) else m.lame for m in mats])[owner]
     value = lambda name: np.array([getattr(m, name) for m in mats], dtype=float)[owner]  # noqa: E731
     K = _stiffness(basis, order, lame[:, 0], lame[:, 1])
+    orthotropic = any(isinstance(m, Orthotropic) for m in mats)
+    if orthotropic:
+        D = _constitutive(mats, owner)
+        K = (K + _anisotropic_stiffness(basis, order, D)).tocsr()
     quadratic = body.order == 2
     lumped = _lumped_mass(basis, order, value("density"), quadratic)
     C = None
@@ -401,6 +441,8 @@ def assemble(body: Body, material, springs=(), loads=()) -> BodySystem:
         C = sp.diags(_lumped_mass(basis, order, alpha_rho, quadratic))
         if np.any(beta > 0):
             C = C + _stiffness(basis, order, beta * lame[:, 0], beta * lame[:, 1])
+            if orthotropic:
+                C = C + _anisotropic_stiffness(basis, order, beta[:, None, None] * D)
         C = sp.csr_matrix(C)
     if springs:
         _check_springs(body, springs, K.diagonal())

@@ -18,6 +18,9 @@
     # [[material]]
     # group = "backplate"
     # young = 2.1e11
+    # An orthotropic material (a lining; stickslip.fem.orthotropic) has e1, e2 [Pa], nu12, g12 [Pa]
+    # and angle [deg] (axis 1 from x) instead of young and poisson; in plane strain e3 [Pa], nu13,
+    # nu23 too.
 
     [contact]
     group = "bottom"                # the boundary group in contact
@@ -83,6 +86,7 @@ from ..quantities import FEM as Q
 from ..errors import ParameterError
 from .assembly import MAX_STRAIN, PLANES, Material, assemble
 from .body import read_body
+from .orthotropic import Orthotropic
 from .pair import PairProblem, Rotation, Translation, mortar, sliding
 from .boundary import LIMIT, Load, Spring
 from .scheme import ContactProblem
@@ -97,6 +101,8 @@ _KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "partner", "
                       "interference"},
           "cea": {"band", "count", "complete_below", "mass_matrix", "contact_model", "penalty"}}
 _MATERIAL = {"young", "poisson", "density", "plane", "alpha", "beta"}
+#: The keys of an orthotropic material (`stickslip.fem.orthotropic.Orthotropic`), instead of young and poisson.
+_ORTHOTROPIC = {"e1", "e2", "e3", "nu12", "nu13", "nu23", "g12", "angle"}
 
 
 @dataclass(frozen=True)
@@ -280,7 +286,7 @@ def _checked(path: Path, data: dict) -> FemConfig:
         problems.append(f"clamped = {clamped!r} must name each group once ({', '.join(map(repr, twice))} twice)")
         clamped = list(dict.fromkeys(clamped))
     materials = _materials(problems, data.get("material"))
-    young = max((m[0] for m in materials.values() if m[0] is not None), default=None)
+    young = max((m.young for m in materials.values() if m is not None), default=None)
     c = data.get("contact", {}) if isinstance(data.get("contact", {}), dict) else {}
     group = c.get("group")
     if not isinstance(group, str):
@@ -353,8 +359,7 @@ def _checked(path: Path, data: dict) -> FemConfig:
     if problems:
         raise ParameterError("config", str(path), f"a valid config; {len(problems)} problem"
                              f"{'s' if len(problems) > 1 else ''}: " + "; ".join(problems))
-    made = {name: Material(e, nu, rho, plane, a, b) for name, (e, nu, rho, plane, a, b) in materials.items()}
-    material = made[""] if list(made) == [""] else made
+    material = materials[""] if list(materials) == [""] else materials
     return FemConfig(path, mesh_path, tuple(clamped), material, group, friction, surface, tuple(band), count,
                      static, springs, loads, body, below, law, partner, options)
 
@@ -418,11 +423,10 @@ def _partner(problems, path: Path, p: dict) -> Partner | None:
                      if isinstance(name, str) and name not in body.groups]
         _cell_groups(problems, body, materials, "partner.material")
     if None in (motion, body) or not materials or not isinstance(group, str) or group not in body.groups \
-            or any(v is None for m in materials.values() for v in m):
+            or any(m is None for m in materials.values()):
         return None
-    made = {name: Material(*m) for name, m in materials.items()}
-    return Partner(mesh_path, group, tuple(clamped), motion, made[""] if list(made) == [""] else made, body,
-                   gyroscopic)
+    return Partner(mesh_path, group, tuple(clamped), motion, materials[""] if list(materials) == [""] else materials,
+                   body, gyroscopic)
 
 
 def _facing(problems, body, group: str, partner: Partner, friction) -> None:
@@ -466,9 +470,11 @@ def _law(problems, c: dict, friction, static):
 
 
 def _materials(problems, raw, key: str = "material") -> dict:
-    """``{cell group: (young, poisson, density, plane, alpha, beta)}`` of ``[material]`` (the whole
-    body, group "") or of ``[[material]]`` tables, each with its ``group``; problems named as
-    written (``material.young``, ``material[1].young``)."""
+    """``{cell group: Material or Orthotropic}`` of ``[material]`` (the whole body, group "") or of
+    ``[[material]]`` tables, each with its ``group`` (None for a table with a problem); problems
+    named as written (``material.young``, ``material[1].young``). A table with ``e1`` is
+    orthotropic (`stickslip.fem.orthotropic.Orthotropic`: ``e1, e2, nu12, g12``, ``angle``, and
+    ``e3, nu13, nu23`` in plane strain) instead of ``young`` and ``poisson``."""
     if raw is None:
         raw = {}
     if isinstance(raw, dict):
@@ -484,8 +490,11 @@ def _materials(problems, raw, key: str = "material") -> dict:
         return {}
     out = {}
     for where, m in tables:
-        problems += [f"unknown key {where}.{k}" for k in sorted(m) if k not in _MATERIAL | ({"group"} if "[" in where
-                                                                                             else set())]
+        ortho = "e1" in m
+        allowed = (_MATERIAL - {"young", "poisson"} | _ORTHOTROPIC) if ortho else _MATERIAL
+        problems += [f"unknown key {where}.{k}" + (" (an orthotropic material, with e1, takes e1, e2, nu12, g12 "
+                                                   "instead of young and poisson)" if ortho and k in _MATERIAL else "")
+                     for k in sorted(m) if k not in allowed | ({"group"} if "[" in where else set())]
         name = ""
         if "[" in where:
             name = m.get("group")
@@ -499,12 +508,27 @@ def _materials(problems, raw, key: str = "material") -> dict:
         plane = m.get("plane", "strain")
         if plane not in PLANES:
             problems.append(f"{where}.plane = {_toml(plane)} must be one of {', '.join(PLANES)}")
-        out[name] = (_number(problems, f"{where}.young", m.get("young")),
-                     _number(problems, f"{where}.poisson", m.get("poisson")),
-                     _number(problems, f"{where}.density", m.get("density")), plane,
-                     _number(problems, f"{where}.alpha", m.get("alpha", 0.0)),
-                     _number(problems, f"{where}.beta", m.get("beta", 0.0)))
-    planes = {v[3] for v in out.values()}
+        common = {"density": _number(problems, f"{where}.density", m.get("density")), "plane": plane,
+                  "alpha": _number(problems, f"{where}.alpha", m.get("alpha", 0.0)),
+                  "beta": _number(problems, f"{where}.beta", m.get("beta", 0.0))}
+        if ortho:
+            given = {k: _number(problems, f"{where}.{k}", m.get(k)) for k in ("e1", "e2", "nu12", "g12")}
+            given["angle"] = _number(problems, f"{where}.angle", m.get("angle", 0.0))
+            given.update({k: _number(problems, f"{where}.{k}", m[k]) for k in ("e3", "nu13", "nu23") if k in m})
+            if plane == "strain":
+                problems += [f"{where}.{k} is missing (an orthotropic material in plane strain needs e3, nu13, nu23)"
+                             for k in ("e3", "nu13", "nu23") if k not in m]
+            kind, args = Orthotropic, {**given, **common}
+        else:
+            kind, args = Material, {"young": _number(problems, f"{where}.young", m.get("young")),
+                                    "poisson": _number(problems, f"{where}.poisson", m.get("poisson")), **common}
+        out[name] = None
+        if plane in PLANES and all(v is not None for v in args.values()):
+            try:
+                out[name] = kind(**args)
+            except ParameterError as err:
+                problems.append(f"{where}.{err.name} = {_toml(err.value)} must be {err.allowed}")
+    planes = {v.plane for v in out.values() if v is not None}
     if len(planes) > 1:
         problems.append(f"{key}.plane must be the same for every material (they have {', '.join(sorted(planes))})")
     return out

@@ -57,6 +57,9 @@ def problem_attrs(system: BodySystem, frames: ContactFrames, friction: float, cl
         per = {k: v[0] for k, v in per.items()}
     else:
         per["material_groups"] = " ".join(materials)
+    described = [f"{name or 'body'}: {m.describe()}" for name, m in materials.items() if hasattr(m, "describe")]
+    if described:  # an orthotropic material: young is its stiffest modulus, poisson its nu12
+        per["orthotropic"] = "; ".join(described)
     surface = frames.surface.describe() if hasattr(frames.surface, "describe") else "not recorded"
     # the mesh file's name only: a run moved with its mesh resumes
     return {"mesh": Path(str(system.body.source)).name, **per,
