@@ -94,6 +94,11 @@ class Material:
         lam, mu = self.lame
         return math.sqrt((lam + 2 * mu) / self.density)
 
+    def describe(self) -> str:
+        """One line: every constant (for a file's attributes)."""
+        return (f"isotropic: young = {self.young:g} Pa, poisson = {self.poisson:g}, plane {self.plane}"
+                + (" (scaled units)" if self.scaled else ""))
+
 
 @BilinearForm
 def _mass(u, v, w):

@@ -146,6 +146,6 @@ class Orthotropic:
 
     def describe(self) -> str:
         """One line: every constant (for a file's attributes)."""
-        out = f"; e3 = {self.e3:g} Pa, nu13 = {self.nu13:g}, nu23 = {self.nu23:g}" if self.plane == "strain" else ""
+        out = f", e3 = {self.e3:g} Pa, nu13 = {self.nu13:g}, nu23 = {self.nu23:g}" if self.plane == "strain" else ""
         return (f"orthotropic: e1 = {self.e1:g} Pa, e2 = {self.e2:g} Pa, nu12 = {self.nu12:g}, g12 = {self.g12:g} Pa"
                 f"{out}, angle = {self.angle:g} deg, plane {self.plane}")

@@ -411,7 +411,9 @@ class PairProblem:
                 "slave_group": self.slave_group, "master_group": self.master_group, "friction": self.friction,
                 "motion": repr(self.motion), "clamped_slave": ",".join(self.clamped_slave),
                 "clamped_master": ",".join(self.clamped_master), "slave_nodes": len(self.coupling.slave_nodes),
-                "gyroscopic": int(self.gyroscopic), "problem_sha256": self.digest}
+                "gyroscopic": int(self.gyroscopic), "problem_sha256": self.digest,
+                "materials": "; ".join(f"{name}: {m.describe()}, density = {m.density:g} kg/m3"
+                                       for name, m in self.materials.items())}
 
 
 @dataclass(frozen=True, eq=False, repr=False)

@@ -57,7 +57,8 @@ def problem_attrs(system: BodySystem, frames: ContactFrames, friction: float, cl
         per = {k: v[0] for k, v in per.items()}
     else:
         per["material_groups"] = " ".join(materials)
-    described = [f"{name or 'body'}: {m.describe()}" for name, m in materials.items() if hasattr(m, "describe")]
+    described = [f"{name or 'body'}: {m.describe()}" for name, m in materials.items()
+                 if m.describe().startswith("orthotropic")]
     if described:  # an orthotropic material: young is its stiffest modulus, poisson its nu12
         per["orthotropic"] = "; ".join(described)
     surface = frames.surface.describe() if hasattr(frames.surface, "describe") else "not recorded"

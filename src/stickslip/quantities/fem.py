@@ -20,6 +20,7 @@ FEM = Domain("fem", units="SI", quantities=[
       why="a scaled model's units keep its numbers near 1"),
     Q("plane", "", "plane strain or plane stress", choices=("strain", "stress")),
     # an orthotropic material (stickslip.fem.orthotropic): moduli e1, e2, e3, g12 are declared as young
+    Q("materials", "", "every material of both bodies of a pair and its constants"),
     Q("orthotropic", "", "every orthotropic material of the body and its constants (young: its stiffest modulus, "
       "poisson: its nu12)"),
     Q("angle", "degree", "angle of an orthotropic material's axis 1 from x, counter-clockwise", "[-360, 360]"),
