@@ -1,4 +1,5 @@
-"""Structured mesh of the annulus ``1 < r < xi`` and its assembly (scikit-fem), eq. [10].
+"""Structured mesh of the annulus ``1 < r < xi`` and its assembly, eq. [10]: the general body's
+(`stickslip.fem.assemble`, scikit-fem) on this mesh, turned into polar frames and read as a stencil.
 
 Lengths are in units of ``R`` and stresses in units of ``E`` (paper scaling above [10]).
 The mesh has ``n_theta`` nodes around and ``n_r`` layers of bilinear quadrilaterals
@@ -18,11 +19,12 @@ last and is dropped. In these frames the stiffness is block circulant in ``j``.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
+
+import meshio
 import numpy as np
 import scipy.sparse as sp
-from skfem import Basis, BilinearForm, ElementQuad1, ElementVector, MeshQuad, asm
-from skfem.helpers import dot
-from skfem.models.elasticity import lame_parameters, linear_elasticity
+from skfem import MeshQuad
 
 from ...quantities import BRAKE as Q, MAX_MESH_NODES
 from ...contact import stencil_matrix
@@ -58,6 +60,13 @@ class AnnulusMesh:
     def h_r(self) -> float:
         return (self.xi - 1.0) / self.n_r
 
+    @cached_property
+    def body(self):
+        """The mesh as a general `stickslip.fem.Body` (the same nodes, in the same order)."""
+        from ...fem import body_from_meshio
+
+        return body_from_meshio(meshio.Mesh(self.mesh.p.T, [("quad", self.mesh.t.T)]), self.describe())
+
     def describe(self) -> str:
         return (f"{self.n_theta} x {self.n_r} bilinear quadrilaterals (xi = {self.xi:g}; "
                 f"h_theta = {self.h_theta:.3g} R at r = R, h_r = {self.h_r:.3g} R)")
@@ -91,11 +100,6 @@ def annulus_mesh(n_theta: int = 256, n_r: int = 16, xi: float = 1.5) -> AnnulusM
     jp = (j + 1) % n_theta
     t = np.vstack([i * n_theta + j, (i + 1) * n_theta + j, (i + 1) * n_theta + jp, i * n_theta + jp])
     return AnnulusMesh(n_theta, n_r, xi, MeshQuad(p, t))
-
-
-@BilinearForm
-def _mass(u, v, w):
-    return dot(u, v)
 
 
 @dataclass(frozen=True, eq=False)
@@ -159,7 +163,8 @@ def _stencil(K_pol: sp.csr_matrix, n_theta: int, n_r: int) -> np.ndarray:
 
 
 def assemble(mesh: AnnulusMesh, nu: float = 0.3) -> FemSystem:
-    """Assemble the plane-strain stiffness and the row-sum lumped mass (scikit-fem).
+    """Assemble the plane-strain stiffness and the row-sum lumped mass: `stickslip.fem.assemble`
+    on the mesh's `AnnulusMesh.body` in the paper's units (``E = 1``, unit density), in polar frames.
 
     Parameters
     ----------
@@ -170,15 +175,16 @@ def assemble(mesh: AnnulusMesh, nu: float = 0.3) -> FemSystem:
     """
     if not isinstance(mesh, AnnulusMesh):
         raise ParameterError("mesh", mesh, "an AnnulusMesh (see annulus_mesh)")
+    from ...fem import Material, assemble as assemble_body
+
     nu = Q.check("nu", nu)
-    basis = Basis(mesh.mesh, ElementVector(ElementQuad1()))
-    K_cart = asm(linear_elasticity(*lame_parameters(1.0, nu)), basis)
-    lumped = np.asarray(asm(_mass, basis).sum(axis=1)).ravel()
+    general = assemble_body(mesh.body, Material(1.0, nu, 1.0, scaled=True))
+    K_cart, lumped = general.K, general.mass
     nodes = mesh.mesh.p.shape[1]
     ang = np.arctan2(mesh.mesh.p[1], mesh.mesh.p[0])
     c, s = np.cos(ang), np.sin(ang)
-    dx, dy = basis.nodal_dofs
     k = np.arange(nodes)
+    dx, dy = 2 * k, 2 * k + 1
     rows = np.concatenate([dx, dy, dx, dy])
     cols = np.concatenate([2 * k, 2 * k, 2 * k + 1, 2 * k + 1])
     T = sp.csr_matrix((np.concatenate([c, s, -s, c]), (rows, cols)), shape=(2 * nodes, 2 * nodes))

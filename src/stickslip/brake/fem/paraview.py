@@ -21,8 +21,8 @@ point data (every node of the mesh, the clamped ring ``r = xi`` included, where 
     ``contact_traction`` ``p e_r + q e_theta`` (the shaft's traction on the ring) and
     ``contact_state`` (`stickslip.contact.STATE_NAMES`: 0 stick, 1 slip, 2 reverse slip,
     3 separation); away from ``r = 1`` pressure, shear and traction are 0, the state -1.
-cell data (the mean over each quadrilateral of the FE stress, plane strain, computed with
-scikit-fem from the nodal displacement)
+cell data (the mean over each quadrilateral of the FE stress, plane strain: the general body's
+`stickslip.fem.assembly.cell_stress` of the nodal displacement)
     ``stress``: the Cartesian tensor, 9 components row by row (``xx xy xz yx yy yz zx zy zz``,
     ``sigma_zz = lambda (eps_xx + eps_yy)``); ``sigma_rr``, ``sigma_thth``, ``sigma_rth``:
     its polar components at the cell's centre angle.
@@ -38,10 +38,10 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-from skfem import Basis, ElementQuad1, ElementVector
-from skfem.models.elasticity import lame_parameters
 
 from ...errors import ParameterError
+from ...fem import Material, assemble
+from ...fem.assembly import cell_stress
 from ...files import write_xdmf_series
 from .mesh import FemSystem
 from .run import FemRun
@@ -60,8 +60,8 @@ class _Fields:
         centre = mesh.p[:, mesh.t].mean(axis=1)
         cell = np.arctan2(centre[1], centre[0])
         self.cell_cos, self.cell_sin = np.cos(cell), np.sin(cell)
-        self.basis = Basis(mesh, ElementVector(ElementQuad1()))
-        self.lam, self.mu = lame_parameters(1.0, system.nu)
+        self.general = assemble(system.mesh.body, Material(1.0, system.nu, 1.0, scaled=True))
+        self.nu = system.nu
 
     def polar(self, free: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Free-dof vector -> ``(radial, hoop)`` at every node (0 on the clamped ring)."""
@@ -76,19 +76,12 @@ class _Fields:
 
     def stress(self, ux, uy) -> tuple[np.ndarray, tuple]:
         """Cell means of the plane-strain stress: the 9-component tensor and ``(rr, thth, rth)``."""
-        w = np.zeros(self.basis.N)
-        w[self.basis.nodal_dofs[0]], w[self.basis.nodal_dofs[1]] = ux, uy
-        grad = self.basis.interpolate(w).grad  # [i, j] = d u_i / d x_j at (cell, point)
-        dx = self.basis.dx  # quadrature weights times Jacobians, (cell, point)
-
-        def mean(f):
-            return (f * dx).sum(axis=-1) / dx.sum(axis=-1)
-
-        exx, eyy, exy = mean(grad[0, 0]), mean(grad[1, 1]), mean(0.5 * (grad[0, 1] + grad[1, 0]))
-        trace = self.lam * (exx + eyy)
-        sxx, syy, sxy = trace + 2.0 * self.mu * exx, trace + 2.0 * self.mu * eyy, 2.0 * self.mu * exy
+        u = np.empty(2 * self.nodes)
+        u[0::2], u[1::2] = ux, uy
+        sxx, syy, sxy = cell_stress(self.general, u).T
+        szz = self.nu * (sxx + syy)  # plane strain: lambda (eps_xx + eps_yy)
         zero = np.zeros_like(sxx)
-        tensor = np.column_stack([sxx, sxy, zero, sxy, syy, zero, zero, zero, trace])
+        tensor = np.column_stack([sxx, sxy, zero, sxy, syy, zero, zero, zero, szz])
         c, s = self.cell_cos, self.cell_sin
         polar = (c * c * sxx + s * s * syy + 2 * c * s * sxy, s * s * sxx + c * c * syy - 2 * c * s * sxy,
                  c * s * (syy - sxx) + (c * c - s * s) * sxy)
