@@ -34,7 +34,7 @@ from .errors import ParameterError
 from .quantities import lookup
 from .files import content_digest, die_with_parent, exclusive
 
-__all__ = ["run_sweep", "verify_store", "SWEEP_FORMAT", "NOT_COMPUTED"]
+__all__ = ["worker_pool", "run_sweep", "verify_store", "SWEEP_FORMAT", "NOT_COMPUTED"]
 
 #: The layout of a sweep store; a store with another layout is refused, not misread.
 SWEEP_FORMAT = "stickslip-sweep-1"
@@ -160,6 +160,21 @@ def _matches(store: Path, axes: dict, outputs: dict, attrs: dict) -> bool:
     return same_axes and same_attrs and same_source and all(name in ds for name in outputs)
 
 
+@contextlib.contextmanager
+def worker_pool(scheduler="processes", workers: int | None = None):
+    """``evaluate(delayed_list) -> tuple``: `dask.compute` of Dask delayed calls on one pool for
+    the whole block: spawned processes (``workers``, default the CPU count; they die with their
+    parent) for the ``"processes"`` scheduler, else ``scheduler`` as `dask.compute` takes it
+    (``"synchronous"``, ``"threads"``, ``client.get``)."""
+    with contextlib.ExitStack() as stack:
+        extra = {}
+        if scheduler == "processes":
+            context = multiprocessing.get_context("spawn")
+            extra["pool"] = stack.enter_context(ProcessPoolExecutor(workers, mp_context=context,
+                                                                    initializer=die_with_parent))
+        yield lambda calls: dask.compute(*calls, scheduler=scheduler, **extra)
+
+
 def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Sequence[float]], store, *,
               outputs: Mapping[str, str], batch: int = 32, scheduler: str | Callable = "processes",
               progress: Callable[[int, int], None] | None = None, attrs: Mapping | None = None,
@@ -256,17 +271,11 @@ def _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attr
     total, finished = math.prod(shape), math.prod(shape) - len(todo)
     if progress:
         progress(finished, total)
-    with contextlib.ExitStack() as stack:
-        extra = {}
-        if scheduler == "processes" and todo:  # one pool for the whole sweep, not one per batch
-            context = multiprocessing.get_context("spawn")
-            extra["pool"] = stack.enter_context(ProcessPoolExecutor(workers, mp_context=context,
-                                                                    initializer=die_with_parent))
+    with worker_pool(scheduler if todo else "synchronous", workers) as evaluate:  # one pool for the whole sweep
         for start in range(0, len(todo), batch):
             chunk = todo[start:start + batch]
             points = [{k: axes[k][i] for k, i in zip(axes, idx)} for idx in chunk]
-            values = dask.compute(*[dask.delayed(_call)(func, p, names, sizes) for p in points],
-                                  scheduler=scheduler, **extra)
+            values = evaluate([dask.delayed(_call)(func, p, names, sizes) for p in points])
             where = tuple(np.array(c) for c in zip(*chunk))
             new = {name: group[name][...] for name in [*names, "done"]}
             for j, name in enumerate(names):

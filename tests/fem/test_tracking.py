@@ -44,6 +44,17 @@ def test_the_sweep_locates_the_critical_damping_of_the_oscillators_closed_form(s
     assert np.array_equal(again.s, tracked.s)  # resumed from the store: nothing recomputed differs
 
 
+@pytest.mark.slow
+def test_the_bisections_on_two_workers_find_what_one_finds(stiff_block, tmp_path):
+    """The rounds of bisection run in parallel on a process pool: the same decisions, so the same
+    critical value; the frequency there to the eigensolver's tolerance (another process's ARPACK
+    run differs by some 1e-10)."""
+    one = cea_sweep(stiff_block, "alpha", np.linspace(0.0, 1000.0, 6), tmp_path / "a.zarr", workers=1)
+    two = cea_sweep(stiff_block, "alpha", np.linspace(0.0, 1000.0, 6), tmp_path / "b.zarr", workers=2)
+    assert np.array_equal(one.critical, two.critical, equal_nan=True)
+    assert np.allclose(one.critical_frequency, two.critical_frequency, rtol=1e-8, equal_nan=True)
+
+
 def test_tracking_by_shape_follows_two_modes_through_a_frequency_crossing():
     """Two modes of fixed, different shapes whose frequencies cross between points 4 and 5:
     each branch keeps its shape (and its frequency trend); sorting by frequency would swap them

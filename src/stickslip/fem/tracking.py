@@ -29,6 +29,7 @@ import functools
 import math
 from dataclasses import dataclass
 
+import dask
 import numpy as np
 import xarray as xr
 from scipy.optimize import linear_sum_assignment
@@ -36,7 +37,7 @@ from scipy.optimize import linear_sum_assignment
 from ..cf import finish
 from ..errors import ParameterError
 from ..quantities import FEM as Q
-from ..sweep import run_sweep
+from ..sweep import run_sweep, worker_pool
 from .cea import NEUTRAL, complex_eigenvalues, count_sketch, linearised
 from .config import load_config, read_toml, resolve_key
 from .scheme import BodyScheme, ContactProblem
@@ -183,39 +184,56 @@ def cea_sweep(config, key: str, values, store, *, tol: float = 1e-2, workers: in
         sketches.append((ds["sketch_real"].values[p, :m * SKETCH] + 1j * ds["sketch_imag"].values[p, :m * SKETCH])
                         .reshape(m, SKETCH))
     s, _ = track(s_points, sketches)
-    critical, freq, partner, turn = _onsets(config, key, np.array(values), s, s_points, sketches, tol, kept)
+    if scheduler == "processes" and workers == 1:
+        scheduler = "synchronous"
+    critical, freq, partner, turn = _onsets(config, key, np.array(values), s, s_points, sketches, tol, kept,
+                                            scheduler, workers)
     return Tracked(key, np.array(values), s, critical, freq, partner, turn, tol, tuple(first.band))
 
 
-def _onsets(config, key, values, s, s_points, sketches, tol, kept):
+def _onsets(config, key, values, s, s_points, sketches, tol, kept, scheduler="synchronous", workers=None):
     """Each branch's first onset of instability, by bisection between the points (see the module
-    docstring), its frequency and partner."""
+    docstring), its frequency and partner. The bisections of all branches advance together, a
+    round at a time: the CEAs of a round run in parallel on ``scheduler`` (`worker_pool`), and a
+    value shared by several branches (partners turn in the same bracket) is solved once."""
     nb = len(s)
     onset, freq, partner, turn = np.full(nb, np.nan), np.full(nb, np.nan), np.full(nb, -1), np.zeros(nb, int)
+    jobs = {}  # branch -> [p, lo, hi, at, shape, target state]
     for b in range(nb):
         up = _unstable(s[b])
         known = ~np.isnan(s[b])
         for p in range(len(values) - 1):
-            if not (known[p] and known[p + 1] and up[p] != up[p + 1]):
-                continue
-            shape = sketches[p + 1][int(np.argmin(np.abs(s_points[p + 1] - s[b, p + 1])))]
-            lo, hi, at = values[p], values[p + 1], s[b, p + 1]
-            while hi - lo > tol * (values[p + 1] - values[p]):
-                mid = 0.5 * (lo + hi)
-                z, x = _solve(config, key, mid, kept)
+            if known[p] and known[p + 1] and up[p] != up[p + 1]:
+                shape = sketches[p + 1][int(np.argmin(np.abs(s_points[p + 1] - s[b, p + 1])))]
+                jobs[b] = [p, values[p], values[p + 1], s[b, p + 1], shape, up[p + 1]]
+                break
+    solved = {}
+    with worker_pool(scheduler, workers) as evaluate:
+        while True:
+            active = [b for b, (p, lo, hi, *_) in jobs.items() if hi - lo > tol * (values[p + 1] - values[p])]
+            mids = sorted({0.5 * (jobs[b][1] + jobs[b][2]) for b in active} - set(solved))
+            if not active:
+                break
+            for value, result in zip(mids, evaluate([dask.delayed(_solve)(config, key, v, kept) for v in mids])):
+                solved[value] = result
+            for b in active:
+                job = jobs[b]
+                mid = 0.5 * (job[1] + job[2])
+                z, x = solved[mid]
                 if not len(z):
-                    break
-                k = int(np.argmax(mac(shape[None, :], x)[0]))
-                if _unstable(z[k : k + 1])[0] == up[p + 1]:
-                    hi, at, shape = mid, z[k], x[k]
+                    job[1] = job[2] = mid  # no mode at all there: the bracket stops
+                    continue
+                k = int(np.argmax(mac(job[4][None, :], x)[0]))
+                if _unstable(z[k : k + 1])[0] == job[5]:
+                    job[2], job[3], job[4] = mid, z[k], x[k]
                 else:
-                    lo = mid
-            onset[b], freq[b], turn[b] = 0.5 * (lo + hi), at.imag / (2 * math.pi), 1 if up[p + 1] else -1
-            rising = bool(up[p + 1])  # the partner's growth rate goes the other way
-            falling = [c for c in range(nb) if c != b and not np.isnan(s[c, p])
-                       and not np.isnan(s[c, p + 1]) and (s[c, p + 1].real < s[c, p].real) == rising
-                       and abs(s[c, p + 1].imag - s[b, p + 1].imag) <= COUPLING * abs(s[b, p + 1].imag)]
-            if falling:
-                partner[b] = min(falling, key=lambda c: abs(s[c, p + 1].imag - s[b, p + 1].imag))
-            break
+                    job[1] = mid
+    for b, (p, lo, hi, at, _, target) in jobs.items():
+        onset[b], freq[b], turn[b] = 0.5 * (lo + hi), at.imag / (2 * math.pi), 1 if target else -1
+        rising = bool(target)  # the partner's growth rate goes the other way
+        falling = [c for c in range(nb) if c != b and not np.isnan(s[c, p])
+                   and not np.isnan(s[c, p + 1]) and (s[c, p + 1].real < s[c, p].real) == rising
+                   and abs(s[c, p + 1].imag - s[b, p + 1].imag) <= COUPLING * abs(s[b, p + 1].imag)]
+        if falling:
+            partner[b] = min(falling, key=lambda c: abs(s[c, p + 1].imag - s[b, p + 1].imag))
     return onset, freq, partner, turn
