@@ -65,6 +65,7 @@ def test_the_cea_finds_disc_modes_and_a_pad_disc_flutter(folder, capsys):
     ("[partner]\n", '[surface]\nkind = "flat"\npoint = [0, 0]\nnormal = [0, 1]\nvelocity = [1, 0]\n[partner]\n',
      "exclude each other"),
     ('group = "rim"', 'group = "hub"', "partner.group"),
+    ('clamped = ["hub"]', 'clamped = ["hub", "hub"]', "partner.clamped = ['hub', 'hub'] must name each group once"),
     ('group = "rim"', 'group = "spoke"', "partner.group = 'spoke' is not a boundary group"),
     ("omega = 30.0", "omega = 30.0\nvelocity = [1.0, 0.0]", "one of them"),
     ("young = 1.25e11", "young = -1.0", "partner.material.young"),

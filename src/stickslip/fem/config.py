@@ -281,10 +281,6 @@ def _checked(path: Path, data: dict) -> FemConfig:
         problems += [f"unknown key {'' if not section else section + '.'}{k}" for k in extra]
     mesh_path = _mesh_file(problems, path, data.get("mesh"), "mesh")
     clamped = _group_list(problems, data.get("clamped", []), "clamped")
-    twice = sorted({c for c in clamped if clamped.count(c) > 1})
-    if twice:
-        problems.append(f"clamped = {clamped!r} must name each group once ({', '.join(map(repr, twice))} twice)")
-        clamped = list(dict.fromkeys(clamped))
     materials = _materials(problems, data.get("material"))
     young = max((m.young for m in materials.values() if m is not None), default=None)
     c = data.get("contact", {}) if isinstance(data.get("contact", {}), dict) else {}
@@ -377,9 +373,12 @@ def _mesh_file(problems, path: Path, mesh, where: str) -> Path | None:
 
 
 def _group_list(problems, value, where: str) -> list:
-    """A list of boundary group names at ``where``, or [] with the problem."""
+    """A list of boundary group names at ``where``, each once, or [] with the problem."""
     if isinstance(value, list) and all(isinstance(c, str) for c in value):
-        return value
+        twice = sorted({c for c in value if value.count(c) > 1})
+        if twice:
+            problems.append(f"{where} = {value!r} must name each group once ({', '.join(map(repr, twice))} twice)")
+        return list(dict.fromkeys(value))
     problems.append(f"{where} = {value!r} must be a list of boundary group names")
     return []
 
