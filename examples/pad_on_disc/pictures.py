@@ -26,6 +26,7 @@ import numpy as np
 import xarray as xr
 
 from stickslip import plotting
+from stickslip.contact.states import STATE_NAMES
 
 HERE = Path(__file__).resolve().parent
 
@@ -58,7 +59,7 @@ def draw_run(run_file: Path, xdmf: Path, png: Path) -> None:
     """The energy and the node states of the run over time, and its last volume snapshot."""
     with xr.open_dataset(run_file) as ds:
         t, energy, fraction = ds["t"].values, ds["energy"].values, ds["fraction"].values
-        kinds = [str(k) for k in ds["kind"].values]
+        kinds = list(STATE_NAMES)  # the columns of fraction
     with meshio.xdmf.TimeSeriesReader(xdmf) as reader:
         points, cells = reader.read_points_cells()
         time, point_data, cell_data = reader.read_data(reader.num_steps - 1)
@@ -66,11 +67,11 @@ def draw_run(run_file: Path, xdmf: Path, png: Path) -> None:
     a.semilogy(1e3 * t, np.maximum(energy, 1e-30), lw=1.0)
     a.set(xlabel="time t [ms]", ylabel="energy of the deviation [J/m]", title="growth and saturation")
     for k, name in enumerate(kinds):
-        b.plot(1e3 * t, fraction[:, k], lw=1.0, label=name.replace("_", " "))
+        b.plot(1e3 * t, fraction[:, k], lw=0.6, label=name.replace("_", " "))
     b.set(xlabel="time t [ms]", ylabel="fraction of the pad's face [1]", title="contact node states")
     plotting.legend_beside(b)
     u = point_data["displacement"][:, :2]
-    scale = 0.004 / max(np.abs(u).max(), 1e-300)  # the largest displacement drawn as 4 mm
+    scale = 0.001 / max(np.abs(u).max(), 1e-300)  # the largest displacement drawn as 1 mm
     xy = points[:, :2] + scale * u
     stress = np.concatenate([np.asarray(v) for v in cell_data["von_mises"]])
     triangles = np.concatenate([blk.data for blk in cells if blk.type == "triangle"])
@@ -78,7 +79,10 @@ def draw_run(run_file: Path, xdmf: Path, png: Path) -> None:
     shown = c.tripcolor(xy[:, 0] * 1e3, xy[:, 1] * 1e3, triangles[near], facecolors=stress[near] / 1e6,
                         cmap="viridis", shading="flat")
     c.set_aspect("equal")
-    c.set(xlabel="x [mm]", ylabel="y [mm]", title=f"t = {1e3 * time:.2f} ms, displacements x {scale:.3g}")
+    shown_xy = xy[np.unique(triangles[near])] * 1e3
+    c.set_xlim(shown_xy[:, 0].min() - 2, shown_xy[:, 0].max() + 2)
+    c.set_ylim(shown_xy[:, 1].min() - 2, shown_xy[:, 1].max() + 2)
+    c.set(xlabel="x [mm]", ylabel="y [mm]", title=f"t = {1e3 * time:.2f} ms, u x {scale:.0f}")
     fig.colorbar(shown, ax=c, label="von Mises stress [MPa]")
     plotting.save(fig, png)
 
