@@ -318,3 +318,18 @@ def test_the_pad_grows_from_steady_sliding_to_a_saturated_chatter(tmp_path, caps
     n = len(e)
     third, last = e[n // 2:3 * n // 4].mean(), e[3 * n // 4:].mean()
     assert last > 1e4 * e[0] and abs(last / third - 1) < 0.2
+
+
+def test_the_brake_example_slides_as_its_comments_say(tmp_path, capsys):
+    """examples/pad_on_disc/brake.toml with its meshes made as it says: an orthotropic lining on a
+    steel backplate against the elastic disc; steady sliding holds the whole face (33 nodes) at
+    f = 0.5, and a short run of it exits 0 with finite numbers."""
+    path = _example("pad_on_disc", "brake.toml", "pad_layers.msh 0.002 1 0.004", tmp_path)
+    subprocess.run([sys.executable, str(EXAMPLES / "pad_on_disc" / "disc.py"), "disc.msh"], cwd=path.parent, check=True)
+    assert run(["fem", "steady", str(path), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["active_nodes"] == data["contact_nodes"] == 33 and "orthotropic" in data["params"]["materials"]
+    assert data["friction_force"] == pytest.approx(0.5 * data["normal_force"], rel=1e-12)
+    assert run(["fem", "run", str(path), "--transits", "2", "--json"]) == 0
+    regime = json.loads(capsys.readouterr().out)
+    assert np.isfinite(regime["residual"]) and regime["line"] == "open"

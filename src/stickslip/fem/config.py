@@ -282,7 +282,7 @@ def _checked(path: Path, data: dict) -> FemConfig:
     mesh_path = _mesh_file(problems, path, data.get("mesh"), "mesh")
     clamped = _group_list(problems, data.get("clamped", []), "clamped")
     materials = _materials(problems, data.get("material"))
-    young = max((m.young for m in materials.values() if m is not None), default=None)
+    young = _stiffest(data.get("material"))
     c = data.get("contact", {}) if isinstance(data.get("contact", {}), dict) else {}
     group = c.get("group")
     if not isinstance(group, str):
@@ -531,6 +531,21 @@ def _materials(problems, raw, key: str = "material") -> dict:
     if len(planes) > 1:
         problems.append(f"{key}.plane must be the same for every material (they have {', '.join(sorted(planes))})")
     return out
+
+
+def _stiffest(raw):
+    """The largest valid modulus (``young``, ``e1``, ``e2``, ``e3``) written in the material
+    tables, None without one: the scale the loads are checked against, even when another key
+    of a table has a problem."""
+    tables = [raw] if isinstance(raw, dict) else raw if isinstance(raw, list) else []
+    found = []
+    for t in (t for t in tables if isinstance(t, dict)):
+        for k in ("young", "e1", "e2", "e3"):
+            try:
+                found.append(Q[k].check(t[k], k))
+            except (KeyError, ParameterError):
+                pass
+    return max(found, default=None)
 
 
 def _cell_groups(problems, body, materials: dict, key: str = "material") -> None:
