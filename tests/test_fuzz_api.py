@@ -12,6 +12,7 @@ from stickslip.brake import (BrakeParams, PhysicalParams, continue_waves, growth
 from stickslip.brake.fem import FemScheme, integrate_fem
 from stickslip.brake.ring import RingScheme
 from stickslip.errors import NoSolutionError, ParameterError
+from stickslip.fem.orthotropic import Orthotropic
 from stickslip.friction import Coulomb, Stribeck
 from stickslip.halfspace import StickSlipWave, direct_problem, inverse_problem
 from stickslip.oscillator import Oscillator, continue_cycle, hopf_points, limit_cycle, simulate
@@ -32,6 +33,7 @@ BAD = [float("nan"), float("inf"), -float("inf"), -1.0, 0.0, 1e300, 1e-300, 1e-3
 OSC = dict(mass=1.0, stiffness=1.0, normal_force=1.0, belt_speed=0.2, friction=Coulomb(0.6, 0.4))
 BRAKE = dict(xi=1.5, nu=0.3, gamma=1e-6, delta=0.004, friction=0.2)
 P = BrakeParams(**BRAKE)
+ORTHO = dict(e1=2e10, e2=5e9, nu12=0.3, g12=3e9, density=1500.0, e3=8e9, nu13=0.2, nu23=0.35)
 CALLS = {
     "Oscillator": (lambda **k: Oscillator(**{**OSC, **k}), [*OSC, "damping"]),
     "Coulomb": (lambda **k: Coulomb(**{"fs": 0.6, "fd": 0.4, **k}), ["fs", "fd"]),
@@ -69,6 +71,7 @@ CALLS = {
                   ["nodes", "transits", "beta2", "courant", "samples_per_transit", "snapshot_every", "tail", "modes"]),
     "integrate_fem": (lambda **k: integrate_fem(**{"params": P, "n_theta": 16, "n_r": 1, "transits": 0.5, **k}),
                       ["n_theta", "n_r", "transits", "beta2", "courant", "samples_per_transit", "modes"]),
+    "Orthotropic": (lambda **k: Orthotropic(**{**ORTHO, **k}), [*ORTHO, "angle", "plane", "alpha", "beta"]),
     "run_sweep": (lambda **k: run_sweep(**{"func": _one, "axes": {"x": [1.0]}, "store": _fresh_store(),
                                            "outputs": {"y": "1"}, "scheduler": "synchronous", **k}),
                   ["axes", "store", "outputs", "batch", "workers"]),

@@ -53,6 +53,7 @@ def perturbed_steady_body(scheme: BodyScheme, amplitude: float = 1e-3, seed: int
     if not isinstance(scheme, ExplicitScheme):
         raise ParameterError("scheme", scheme, "a BodyScheme or a PairScheme")
     amplitude = COMMON.check("amplitude", amplitude)  # beyond, the start is no longer near steady sliding
+    seed = COMMON.check("seed", seed)
     u_e, _, _ = scheme.steady_reference()
     normal, tangent = scheme.contact_dofs
     size = float(np.abs(u_e[np.concatenate([normal, tangent])]).max()) or 1.0
