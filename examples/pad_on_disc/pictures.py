@@ -69,7 +69,7 @@ def draw_run(run_file: Path, xdmf: Path, png: Path) -> None:
     for k, name in enumerate(kinds):
         b.plot(1e3 * t, fraction[:, k], lw=0.6, label=name.replace("_", " "))
     b.set(xlabel="time t [ms]", ylabel="fraction of the pad's face [1]", title="contact node states")
-    plotting.legend_beside(b)
+    plotting.legend_beside(b, fontsize=9)
     u = point_data["displacement"][:, :2]
     scale = 0.001 / max(np.abs(u).max(), 1e-300)  # the largest displacement drawn as 1 mm
     xy = points[:, :2] + scale * u

@@ -236,12 +236,16 @@ def plot_stability_map(ds, fig: Figure | None = None) -> Figure:
             ax.plot(x, np.where(up, y, np.nan), color="tab:red", lw=2.2)
         c = float(ds["critical"].values[b])
         if np.isfinite(c):
-            ax1.plot([c], [0.0], "o", mfc="none", mec="k", ms=5)
-            ax2.plot([c], [float(ds["critical_frequency"].values[b]) / 1e3], "o", mfc="none", mec="k", ms=5)
+            ax1.plot([c], [0.0], "o", color="k", mfc="none", ms=5)
+            ax2.plot([c], [float(ds["critical_frequency"].values[b]) / 1e3], "o", color="k", mfc="none", ms=5)
     ax1.axhline(0.0, color="k", lw=0.5)
-    label = f"{key} [{units}]" if units not in ("", "1") else key
-    ax1.set(ylabel="growth rate [1/s]", title="tracked modes: unstable in red, critical values circled")
+    label = f"{key} [{units or '1'}]"
+    ax1.set(xlabel=label, ylabel="growth rate [1/s]", title="tracked modes")
     ax2.set(xlabel=label, ylabel="frequency [kHz]")
+    handles = [Line2D([], [], color="0.6", lw=0.8, label="stable or neutral"),
+               Line2D([], [], color="tab:red", lw=2.2, label="unstable"),
+               Line2D([], [], ls="none", marker="o", color="k", mfc="none", label="critical value")]
+    legend_beside(ax2, handles=handles)
     return fig
 
 
