@@ -40,6 +40,32 @@ def test_a_killed_run_resumes_bitwise_and_another_problem_is_refused(annulus, tm
     assert resumed.to_xarray()["t"].attrs["units"] == "s"
 
 
+def test_a_step_that_fails_midway_leaves_a_checkpoint_that_resumes_bitwise(annulus, tmp_path, monkeypatch):
+    """A solver that stops inside a chunk (as the coupled contact does when it does not
+    converge) has already moved the state: the checkpoint must keep the last good sample, not
+    the half-made one. Planted: without the restore in `stickslip.contact.runs.loop` the resumed
+    run differs."""
+    from stickslip.errors import NoSolutionError
+    from stickslip.fem.scheme import BodyScheme
+
+    whole = integrate_body(annulus, transits=4.0)
+    path, real, calls = tmp_path / "run.nc", BodyScheme.advance, []
+
+    def failing(self, state, *args, **kwargs):
+        out = real(self, state, *args, **kwargs)
+        calls.append(1)
+        if len(calls) == 40:
+            raise NoSolutionError("stopped midway")  # after the chunk has moved the state
+        return out
+
+    monkeypatch.setattr(BodyScheme, "advance", failing)
+    with pytest.raises(NoSolutionError):
+        integrate_body(annulus, transits=4.0, checkpoint=path)
+    monkeypatch.setattr(BodyScheme, "advance", real)
+    resumed = integrate_body(annulus, transits=4.0, checkpoint=path)
+    assert np.array_equal(resumed.U, whole.U) and np.array_equal(resumed.energy, whole.energy)
+
+
 def test_the_contact_line_is_stored_by_arclength_in_metres(annulus):
     """The bore's nodes are a regular polygon of 32 sides on radius a: arclengths i 2 a sin(pi/32),
     theta = 2 pi s / L with L the whole perimeter (the line is closed)."""

@@ -30,7 +30,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .kernel import COULOMB, block2_apply, csr_apply, kinetic_coefficient, multiplier_factor, predictor
+from .kernel import COULOMB, internal, kinetic_coefficient, multiplier_factor, predictor
 from .states import SEPARATION, SLIP_NEG, SLIP_POS, STICK
 
 __all__ = ["relative", "coupled_contact", "coupled_advance"]
@@ -132,26 +132,13 @@ def coupled_advance(indptr, indices, data, block, load, damping, u, v, a, normal
     nc = normal.shape[0]
     A = np.empty(n)
     ustar = np.empty(n)
+    w = np.empty(n)
     d_old = np.empty(nc)
-    alpha, beta = damping[0], damping[1]
-    damped = alpha != 0.0 or beta != 0.0
-    w = np.empty(n) if damped else u
-    loaded = load.shape[0] > 0
+    no_stencil = np.zeros((0, 3, 3, 2, 2))
     cdt2 = multiplier_factor(beta2, dt)
     most = 0
     for step in range(nsteps):
-        if damped:
-            for k in range(n):
-                w[k] = u[k] + beta * v[k]
-        if block == 2:
-            block2_apply(indptr, indices, data, w, A)
-        else:
-            csr_apply(indptr, indices, data, w, A)
-        if damped:
-            for k in range(n):
-                A[k] -= alpha * v[k]
-        if loaded:
-            A += load
+        internal(no_stencil, indptr, indices, data, block, load, damping, u, v, w, A)
         if step == nsteps - 1:
             work[:] = u
         for j in range(nc):

@@ -52,7 +52,7 @@ from numba import njit
 
 from .states import SEPARATION, SLIP_NEG, SLIP_POS
 
-__all__ = ["explicit_step", "kinetic_coefficient", "COULOMB", "LINEAR_WEAKENING", "STRIBECK", "predictor", "csr_apply", "block2_apply", "stencil_apply", "advance", "multiplier_factor"]
+__all__ = ["internal", "explicit_step", "kinetic_coefficient", "COULOMB", "LINEAR_WEAKENING", "STRIBECK", "predictor", "csr_apply", "block2_apply", "stencil_apply", "advance", "multiplier_factor"]
 
 
 @njit(cache=True)
@@ -233,6 +233,30 @@ def stencil_apply(C, u, out):
 
 
 @njit(cache=True)
+def internal(C, indptr, indices, data, block, load, damping, u, v, w, A):
+    """``A = A_m``: ``-(M^{-1} K)(u_m + beta v_{m-1}) - alpha v_{m-1} + load`` (``load`` empty: none;
+    Rayleigh ``damping = (alpha, beta)``), ``M^{-1} K`` as `advance` reads it; ``w`` is scratch."""
+    alpha, beta = damping[0], damping[1]
+    damped = alpha != 0.0 or beta != 0.0
+    x = u
+    if damped:
+        for k in range(u.shape[0]):
+            w[k] = u[k] + beta * v[k]
+        x = w
+    if C.shape[0] > 0:
+        stencil_apply(C, x, A)
+    elif block == 2:
+        block2_apply(indptr, indices, data, x, A)
+    else:
+        csr_apply(indptr, indices, data, x, A)
+    if damped:
+        for k in range(u.shape[0]):
+            A[k] -= alpha * v[k]
+    if load.shape[0] > 0:
+        A += load
+
+
+@njit(cache=True)
 def advance(C, indptr, indices, data, block, load, damping, u, v, a, normal, tangent, gap0, speed, nsteps, dt, beta2, f, fs,
             contact, lam_n, lam_t, state, work, law):
     """``nsteps`` steps of the scheme in place, ``A_m = -(M^{-1} K) u_m + load`` (``load`` empty: none),
@@ -245,26 +269,9 @@ def advance(C, indptr, indices, data, block, load, damping, u, v, a, normal, tan
     """
     A = np.empty(u.shape[0])
     ut_old = np.empty(normal.shape[0])
-    stencil = C.shape[0] > 0
-    loaded = load.shape[0] > 0
-    alpha, beta = damping[0], damping[1]
-    damped = alpha != 0.0 or beta != 0.0
-    w = np.empty(u.shape[0]) if damped else u
+    w = np.empty(u.shape[0])
     for step in range(nsteps):
-        if damped:
-            for k in range(u.shape[0]):
-                w[k] = u[k] + beta * v[k]
-        if stencil:
-            stencil_apply(C, w, A)
-        elif block == 2:
-            block2_apply(indptr, indices, data, w, A)
-        else:
-            csr_apply(indptr, indices, data, w, A)
-        if damped:
-            for k in range(u.shape[0]):
-                A[k] -= alpha * v[k]
-        if loaded:
-            A += load
+        internal(C, indptr, indices, data, block, load, damping, u, v, w, A)
         if step == nsteps - 1:
             work[:] = u
         explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, fs, contact, lam_n, lam_t, state, ut_old,

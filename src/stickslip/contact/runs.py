@@ -529,7 +529,12 @@ def loop(run, checkpoint, every, progress, t_end, step: Callable, record: Callab
     try:
         while done < total:
             good = {key: v.copy() for key, v in k.items()}
-            step(k)
+            try:
+                step(k)
+            except BaseException:  # a step that fails midway (a solver that stops) leaves no half-made state
+                for key, value in good.items():
+                    k[key][...] = value
+                raise
             if not np.abs(k["u"]).max() < BLOW_UP * scale:  # blown up (or NaN): back to the last good state, kept
                 for key, value in good.items():
                     k[key][...] = value

@@ -309,7 +309,7 @@ class ExplicitScheme(ABC):
 
     def touching(self, u: np.ndarray) -> np.ndarray:
         """Which contact nodes touch at displacement ``u`` (``u_n <= gap0``)."""
-        return u[self.contact_dofs[0]] <= self.surface[0]
+        return self.gaps(u) <= 0.0
 
     def contact_work(self, lam_n: np.ndarray, lam_t: np.ndarray, du: np.ndarray):
         """``(surface work, friction dissipation, normal work)`` of the reactions per unit mass

@@ -36,7 +36,6 @@ from typing import Callable, ClassVar
 import numpy as np
 import scipy.sparse as sp
 
-from ..contact import ExplicitScheme
 from ..contact.coupled import coupled_advance
 from ..contact.runs import RunRecord, prepare, run_explicit
 from ..contact.scheme import StepOutput, StepState
@@ -44,7 +43,7 @@ from ..errors import NoSolutionError, ParameterError
 from ..quantities import COMMON
 from .pair import PairProblem
 from .run import BodyRun, perturbed_steady_body
-from .scheme import FemScheme, check_damping
+from .scheme import FemScheme
 from .surfaces import order_along
 
 __all__ = ["PairScheme", "PairRun", "integrate_pair", "MAX_SWEEPS"]
@@ -180,11 +179,6 @@ class PairScheme(FemScheme):
         return False
 
     @cached_property
-    def damping(self) -> tuple[float, float]:
-        """The one Rayleigh damping ``(alpha, beta)`` of both bodies (`stickslip.fem.scheme.check_damping`)."""
-        return check_damping(self.params.materials, self.omega_max)
-
-    @cached_property
     def load(self) -> np.ndarray | None:
         F = self.params.load
         return None if not F.any() else (self.rotation.T @ F)[self.free] / self.mass
@@ -248,19 +242,11 @@ class PairScheme(FemScheme):
         if sweeps > MAX_SWEEPS:
             raise NoSolutionError(f"the contact forces between the bodies did not converge in {MAX_SWEEPS} "
                                   "Gauss-Seidel sweeps in a step (a partner far lighter than the pad's nodes, or a "
-                                  "step too long for the contact's stiffness); the state is that of the step's end")
+                                  "step too long for the contact's stiffness); a run's checkpoint keeps its last "
+                                  "good sample")
         return out
 
     # --- time and the contact line ---------------------------------------------------------
-    @cached_property
-    def omega_max(self) -> float:
-        return self.params.omega_max
-
-    @cached_property
-    def dt_max(self) -> float:
-        _ = self.damping  # refused before a step is computed
-        return ExplicitScheme.dt_max.func(self)
-
     @cached_property
     def arclength(self) -> np.ndarray:
         pts = self.params.slave.body.points[self.contact_nodes]

@@ -133,7 +133,6 @@ def integrate_body(problem: ContactProblem, t_end: float | None = None, *, trans
     ``volume_every`` [transits] keeps volume snapshots (one at ``t = 0`` too) for `stickslip.fem.paraview.write_run_xdmf`.
     """
     scheme = BodyScheme(problem, beta2, courant, time_step)
-    scheme.kinetic_law  # a law the kernel is not compiled for is refused before anything runs
     initial = perturbed_steady_body(scheme) if initial is None else initial
     if not isinstance(initial, BodyInitial) or initial.u.shape != (scheme.free.size,):
         raise ParameterError("initial", initial, f"a BodyInitial with {scheme.free.size} dofs")

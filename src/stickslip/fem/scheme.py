@@ -175,9 +175,14 @@ class ContactProblem:
         lam = sla.eigsh(A, k=1, which="LA", return_eigenvectors=False, tol=1e-10, v0=start)
         return float(np.sqrt(lam[0]) * (1.0 + 1e-6))
 
+    @property
+    def materials(self) -> dict:
+        """The body's materials (`BodySystem.materials`)."""
+        return self.system.materials
+
     def check_damping(self) -> None:
         """Refuse Rayleigh damping an explicit run cannot take (`check_damping`)."""
-        check_damping(self.system.materials, self.omega_max)
+        check_damping(self.materials, self.omega_max)
 
     @cached_property
     def digest(self) -> str:
@@ -216,6 +221,23 @@ class FemScheme(ExplicitScheme):
             if step > self.dt_max:
                 raise ParameterError("time_step", step, f"<= the stable step {self.dt_max:.6g} s of this mesh "
                                      f"(its highest mode: omega_max = {self.omega_max:.6g} rad/s, with its damping)")
+
+    @property
+    def omega_max(self) -> float:
+        """Largest free angular frequency [rad/s] of the problem (its ``omega_max``)."""
+        return self.params.omega_max
+
+    @cached_property
+    def damping(self) -> tuple[float, float]:
+        """The one Rayleigh damping ``(alpha [1/s], beta [s])`` of the problem's materials,
+        refused if an explicit run cannot take it (`check_damping`)."""
+        return check_damping(self.params.materials, self.omega_max)
+
+    @cached_property
+    def dt_max(self) -> float:
+        """The stable step (`ExplicitScheme.dt_max`), once the damping is checked (`damping`)."""
+        _ = self.damping
+        return ExplicitScheme.dt_max.func(self)
 
     @property
     def dt(self) -> float:
@@ -258,13 +280,7 @@ class BodyScheme(FemScheme):
     def __post_init__(self):
         self.validate_common()
         self.check_time_step()
-
-    @cached_property
-    def dt_max(self) -> float:
-        """The stable step (`ExplicitScheme.dt_max`), once the damping is checked
-        (`ContactProblem.check_damping`)."""
-        self.params.check_damping()
-        return ExplicitScheme.dt_max.func(self)
+        _ = self.kinetic_law  # a law the kernel is not compiled for is refused here, before anything runs
 
     # --- dofs: the free ones, in nodal frames at the contact nodes --------------------
     @cached_property
@@ -324,13 +340,6 @@ class BodyScheme(FemScheme):
     def closed_line(self) -> bool:
         return bool(self.params.frames.closed)
 
-    @property
-    def damping(self) -> tuple[float, float]:
-        """The Rayleigh damping ``(alpha [1/s], beta [s])`` of the body's materials (one pair:
-        `ContactProblem.check_damping`)."""
-        alpha, beta = max((m.alpha, m.beta) for m in self.params.system.materials.values())
-        return (float(alpha), float(beta))
-
     @cached_property
     def load(self) -> np.ndarray | None:
         """The boundary load per unit mass on the free dofs, in the scheme's frames (None: no load)."""
@@ -365,11 +374,6 @@ class BodyScheme(FemScheme):
     @cached_property
     def theta(self) -> np.ndarray:
         return 2.0 * np.pi * self.params.frames.arclength[self.contact_nodes] / self.line_length
-
-    @property
-    def omega_max(self) -> float:
-        """Largest free angular frequency [rad/s] (`ContactProblem.omega_max`)."""
-        return self.params.omega_max
 
     @cached_property
     def p_wave_speed(self) -> float:

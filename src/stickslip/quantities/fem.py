@@ -9,6 +9,10 @@ from .core import Domain, declare as Q
 from .oscillator import OSCILLATOR
 from .materials import DENSITY_WHY, FRICTION_WHY, YOUNG_WHY
 
+#: Why an orthotropic material's Poisson's ratios may pass an isotropic one's bound.
+ORTHO_WHY = ("orthotropic ratios may pass 0.5; the compliance must also be positive definite (nu12^2 < e1 / e2, "
+             "checked with the material)")
+
 FEM = Domain("fem", units="SI", quantities=[
     # the material
     Q("young", "Pa", "Young's modulus", "[1000, 1e13]", symbol="E", why=YOUNG_WHY),
@@ -19,8 +23,8 @@ FEM = Domain("fem", units="SI", quantities=[
     Q("density_scaled", "1", "density in the units of a scaled model (the paper's annulus: gamma)", "[1e-30, 1e30]",
       why="a scaled model's units keep its numbers near 1"),
     Q("plane", "", "plane strain or plane stress", choices=("strain", "stress")),
-    # an orthotropic material (stickslip.fem.orthotropic): moduli e1, e2, e3, g12 are declared as young
     Q("materials", "", "every material of both bodies of a pair and its constants"),
+    # an orthotropic material (stickslip.fem.orthotropic)
     Q("orthotropic", "", "every orthotropic material of the body and its constants (young: its stiffest modulus, "
       "poisson: its nu12)"),
     Q("angle", "degree", "angle of an orthotropic material's axis 1 from x, counter-clockwise", "[-360, 360]"),
@@ -30,11 +34,11 @@ FEM = Domain("fem", units="SI", quantities=[
       why=YOUNG_WHY),
     Q("g12", "Pa", "in-plane shear modulus of an orthotropic material", "[1000, 1e13]", why=YOUNG_WHY),
     Q("nu12", "1", "Poisson's ratio of an orthotropic material: contraction along 2 per strain along 1", "(-1, 10)",
-      why="orthotropic ratios may pass 0.5; the compliance must also be positive definite (nu12^2 < e1 / e2, checked with the material)"),
+      why=ORTHO_WHY),
     Q("nu13", "1", "Poisson's ratio of an orthotropic material: out of the plane per strain along 1", "(-1, 10)",
-      why="orthotropic ratios may pass 0.5; the compliance must also be positive definite (nu12^2 < e1 / e2, checked with the material)"),
+      why=ORTHO_WHY),
     Q("nu23", "1", "Poisson's ratio of an orthotropic material: out of the plane per strain along 2", "(-1, 10)",
-      why="orthotropic ratios may pass 0.5; the compliance must also be positive definite (nu12^2 < e1 / e2, checked with the material)"),
+      why=ORTHO_WHY),
     Q("alpha", "1/s", "Rayleigh damping: mass coefficient", "[0, 1e9]", symbol="alpha",
       why="a mode of frequency f has the damping ratio alpha / (4 pi f): 1e9 1/s overdamps every mode below "
           "80 MHz"),
