@@ -25,7 +25,8 @@ from . import validation as check
 from .quantities import OSCILLATOR as Q
 from .errors import MISSING, ParameterError
 
-__all__ = ["FrictionLaw", "Coulomb", "LinearWeakening", "Stribeck", "UserLaw", "law_names", "make_law"]
+__all__ = ["FrictionLaw", "Coulomb", "LinearWeakening", "Stribeck", "UserLaw", "PressurePower", "law_names",
+           "make_law"]
 
 _REGISTRY: dict[str, type["FrictionLaw"]] = {}
 
@@ -236,3 +237,47 @@ def make_law(name: str, *, fs: float, fd: float, tau: float | None = None, vs: f
     if name == "linear-weakening":
         return LinearWeakening(fs, fd, tau)
     return Stribeck(fs, fd, vs)
+
+
+@dataclass(frozen=True)
+class PressurePower:
+    """A friction coefficient that depends on the contact pressure ``P`` as a power, on top of any
+    law of the slip speed: ``mu(v_r, P) = mu(v_r) (P / P_ref)^(-n)``, the static
+    coefficient likewise (brake linings: ``pressure_exponent`` of 0.05-0.3, friction falling as
+    the pressure rises). ``reference_pressure`` [Pa] is the pressure at which the law is its own;
+    ``pressure_exponent`` in [-1, 1): below 1 the friction force ``mu P`` still grows with ``P``.
+
+    Used by the contacts of `stickslip.fem`, where ``P`` is a contact node's normal force over
+    its tributary length (`stickslip.fem.boundary.tributary_lengths`). ``factor(P)`` is the
+    multiplier (1 where ``P <= 0``: no force, nothing to multiply) and ``rate`` the multiplier
+    of the friction force's derivative, ``d(mu P)/dP = mu (1 - exponent)``."""
+
+    reference_pressure: float
+    pressure_exponent: float
+
+    def __post_init__(self):
+        from .quantities import COMMON
+
+        for name in ("reference_pressure", "pressure_exponent"):
+            object.__setattr__(self, name, COMMON.check(name, getattr(self, name)))
+
+    @property
+    def reference(self) -> float:
+        """``reference_pressure`` [Pa]."""
+        return self.reference_pressure
+
+    @property
+    def exponent(self) -> float:
+        """``pressure_exponent``."""
+        return self.pressure_exponent
+
+    def factor(self, pressure):
+        """``(P / P_ref)^(-n)`` where ``P > 0``, 1 elsewhere."""
+        P = np.asarray(pressure, dtype=float)
+        positive = P > 0
+        return np.where(positive, (np.where(positive, P, self.reference) / self.reference) ** -self.exponent, 1.0)
+
+    @property
+    def rate(self) -> float:
+        """``d(factor(P) P)/dP / factor(P) = 1 - n``."""
+        return 1.0 - self.exponent

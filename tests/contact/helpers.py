@@ -13,5 +13,5 @@ def free_run(scheme, u0, nsteps, dt):
     (indptr, indices, data, block), (normal, tangent) = scheme.kernel_operator, scheme.contact_dofs
     gap0, speed = scheme.surface
     kernel.advance(scheme.stencil, indptr, indices, data, block, np.zeros(0), np.zeros(2), k.u, k.v, k.a, normal, tangent, gap0, speed, nsteps,
-                   dt, scheme.beta2, 0.0, 0.0, False, out.lam_n, out.lam_t, out.state, out.u_prev, np.zeros(2))
+                   dt, scheme.beta2, 0.0, 0.0, False, out.lam_n, out.lam_t, out.state, out.u_prev, np.zeros(3))
     return k.u

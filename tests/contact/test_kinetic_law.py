@@ -45,7 +45,7 @@ def _scheme(kind, parameter, dt, periods=3.5, cycle=7.0):
     load = np.array([-G, 0.0])  # presses the normal dof onto the belt at u_n = 0
     u, v, a = np.zeros(2), np.array([0.0, V]), np.zeros(2)
     out = np.zeros(1), np.zeros(1), np.zeros(1, np.int8)
-    law = np.array([kind, parameter], float)
+    law = np.array([kind, parameter, 0.0], float)  # no pressure dependence
     n = int(periods * cycle / dt)
     x, state = np.empty(n), np.empty(n, np.int8)
     for k in range(n):

@@ -19,7 +19,8 @@ from stickslip.errors import ParameterError
 from stickslip.fem import ContactProblem, Material, RigidFlat, assemble, contact_frames, read_body
 from stickslip.fem.cea import complex_eigenvalues
 from stickslip.fem.config import load_config
-from stickslip.friction import Stribeck
+from stickslip.fem.scheme import BodyScheme
+from stickslip.friction import LinearWeakening, PressurePower, Stribeck
 
 from .test_examples import EXAMPLES
 
@@ -98,6 +99,12 @@ def test_steady_sliding_slips_at_the_laws_kinetic_coefficient(block, capsys):
     ("stribeck_speed = 0.2", ["contact.stribeck_speed needs contact.law"]),
     ('law = "stribeck"\nstribeck_speed = 0.2\nweakening = 1.0', ["contact.weakening must be left out"]),
     ('law = "stribeck"\nstribeck_speed = -1.0', ["contact.stribeck_speed = -1.0 must be"]),
+    ("pressure_exponent = 0.2", ["contact.reference_pressure is missing (contact.pressure_exponent needs it)"]),
+    ("pressure_exponent = 1.0\nreference_pressure = 1e6", ["contact.pressure_exponent = 1.0 must be in [-1, 1)"]),
+    ("pressure_exponent = 0.1\nreference_pressure = 0.0", ["contact.reference_pressure = 0.0 must be in [0.001, "
+                                                          "1e12] Pa"]),
+    ('pressure_exponent = "a"\nreference_pressure = 1e300', ["contact.pressure_exponent = 'a' must be",
+                                                             "contact.reference_pressure = 1e+300 must be"]),
 ])
 def test_a_law_written_wrong_is_named_in_the_configs_one_error(block, edit, words):
     config = block / "bad.toml"
@@ -126,3 +133,28 @@ def test_a_law_with_a_coefficient_beside_it_is_refused(block):
         ContactProblem(problem.system, problem.frames, 0.4, law=LAW)
     assert err.value.name == "friction"
     assert np.isclose(problem.friction, LAW.kinetic(1.0)) and problem.static_friction == 0.6
+
+
+@pytest.mark.parametrize("law", [None, LinearWeakening(0.4, 0.4, 0.1)], ids=["coulomb", "linear-weakening"])
+def test_steady_sliding_with_a_pressure_dependent_coefficient_is_a_fixed_point_of_the_scheme(block, law):
+    """The explicit kernel takes each node's coefficient at its own pressure (its reaction per unit
+    mass times m / (L P_ref)); steady sliding (solved by `steady_contact`, another code) must then
+    be its fixed point: from it, 200 steps leave the displacement within 1e-10 and the friction
+    reactions within 1e-9 of steady sliding's, every loaded node slipping (f_s = f_d, so that no
+    node can stick on a step of the belt). The pressures differ from node to node by a factor of
+    about 10, so a wrong scale moves the reactions of most nodes."""
+    cfg = load_config(block / "block.toml")
+    body = read_body(block / "block.msh")
+    system = assemble(body, Material(1e9, 0.3, 1000.0), cfg.springs, cfg.loads)
+    frames = contact_frames(body, "bottom", RigidFlat((0.0, 0.0), (0.0, 1.0), (1.0, 0.0)))
+    friction = {"friction": 0.4} if law is None else {"law": law}
+    problem = ContactProblem(system, frames, pressure_law=PressurePower(1e6, 0.3), **friction)
+    scheme = BodyScheme(problem)
+    w, r_n, r_t = scheme.steady_reference()
+    pressure = problem.steady.pressure / problem.tributary
+    assert pressure.max() > 3 * pressure[pressure > 0].min()
+    state = scheme.initial_state(w, np.zeros_like(w))
+    out = scheme.advance(state, 200)
+    assert np.abs(state.u - w).max() < 1e-10 * np.abs(w).max()
+    assert np.abs(out.lam_t - r_t).max() < 1e-9 * np.abs(r_t).max()
+    assert np.all(out.state[r_n > 0] == 1)

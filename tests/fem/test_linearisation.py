@@ -10,7 +10,8 @@ and load) and the lumped nodal mass ``m``, the equations are, per free dof off t
     m a'' + t . r  =  mu(V - a') n . r,
 
 the normal reaction ``n . r`` (the mass has no normal acceleration) times the friction law at
-the slip speed. Their Jacobians in ``(z, z', z'')`` by central differences must equal the
+the slip speed (with a pressure-dependent law, times ``(P / P_ref)^(-n)`` at the node's pressure
+``P = n . r / L``, ``L`` its tributary length: half of each adjacent edge, computed here). Their Jacobians in ``(z, z', z'')`` by central differences must equal the
 ``K_eff``, ``C_eff`` and mass of `stickslip.fem.cea.linearised` entry by entry: a wrong
 damping row, a missing or wrong-signed slope term, or a friction row on the wrong dof fails.
 Tolerances (set before the first run): 1e-7 of each matrix's largest entry.
@@ -32,7 +33,7 @@ from stickslip.fem import (
 from stickslip.fem.cea import linearised
 from stickslip.fem.config import load_config
 from stickslip.fem.scheme import BodyScheme
-from stickslip.friction import LinearWeakening, Stribeck
+from stickslip.friction import LinearWeakening, PressurePower, Stribeck
 
 from .test_friction_law import block  # noqa: F401 - the block example, meshed (a fixture)
 from .test_scheme import PARAMS, general_annulus
@@ -91,6 +92,13 @@ def _equations(problem, consistent=False):
     law = problem.law
     speed = float(np.max(frames.speed))
     mu = (lambda v: law.kinetic(v)) if law is not None else (lambda v: problem.friction)
+    share = np.zeros(len(system.body.points))  # each node's half of its adjacent contact edges
+    for a, b in system.body.group(frames.group):
+        half = 0.5 * np.hypot(*(system.body.points[a] - system.body.points[b]))
+        share[a] += half
+        share[b] += half
+    power = problem.pressure_law
+    g = (lambda P: 1.0) if power is None else (lambda P: (P / power.reference) ** -power.exponent)
 
     held_j = [j for j, (_, node, _) in enumerate(coords) if node in held]  # the coordinates along t
     held_k = [held[coords[j][1]] for j in held_j]
@@ -102,10 +110,25 @@ def _equations(problem, consistent=False):
         out = P.T @ r  # each coordinate's direction . its node's row (t . row for a held node)
         for j, k, pair in zip(held_j, held_k, held_pairs):
             n, t = frames.normal[k], frames.tangent[k]
-            out[j] -= mu(speed - t @ v[pair]) * (n @ r[pair])  # the normal reaction (inertia in it: consistent mass)
+            N = n @ r[pair]  # the normal reaction (inertia in it: consistent mass)
+            out[j] -= mu(speed - t @ v[pair]) * g(N / share[coords[j][1]]) * N
         return out
 
     return R, coords
+
+
+def test_steady_sliding_with_a_pressure_dependent_coefficient_solves_the_equations(block):  # noqa: F811
+    """The residual of the equations above (with the test's own tributary lengths and power law) at
+    the package's steady sliding: zero to 1e-9 of the load, where the pressures under the block
+    differ from node to node by more than 5 % (so each node has its own coefficient)."""
+    problem = _block(block, Stribeck(0.6, 0.4, 0.2), 0.0, 0.0, 0.0, 0.3, PressurePower(1e6, 0.3))
+    R, _ = _equations(problem)
+    load = np.abs(problem.system.load).max()
+    assert np.abs(R(*[np.zeros(len(_coordinates(problem)))] * 3)).max() < 1e-9 * load
+    st = problem.steady
+    on = st.active
+    assert np.ptp(st.pressure[on] / problem.tributary[on]) > 0.05 * np.mean(st.pressure[on] / problem.tributary[on])
+    assert np.ptp(st.coefficients[on]) > 0.01 * np.mean(st.coefficients[on])
 
 
 def _jacobians(problem, h_u, h_v, consistent=False):
@@ -139,21 +162,23 @@ def _check(problem, h_u, h_v, consistent=False):
     return JC
 
 
-def _block(folder, law, friction, alpha, beta, speed):
+def _block(folder, law, friction, alpha, beta, speed, pressure_law=None):
     cfg = load_config(folder / "block.toml")
     body = read_body(folder / "block.msh")
     system = assemble(body, Material(1e9, 0.3, 1000.0, alpha=alpha, beta=beta), cfg.springs, cfg.loads)
     surface = RigidFlat((0.0, 0.0), (0.0, 1.0), (speed, 0.0))
-    return ContactProblem(system, contact_frames(body, "bottom", surface), friction, law=law)
+    return ContactProblem(system, contact_frames(body, "bottom", surface), friction, law=law, pressure_law=pressure_law)
 
 
-@pytest.mark.parametrize("law, friction", [(None, 0.4), (Stribeck(0.6, 0.4, 0.2), 0.0),
-                                           (LinearWeakening(0.5, 0.3, 0.1), 0.0)],
-                         ids=["coulomb", "stribeck", "linear-weakening"])
+@pytest.mark.parametrize("law, friction, pressure_law", [
+    (None, 0.4, None), (Stribeck(0.6, 0.4, 0.2), 0.0, None), (LinearWeakening(0.5, 0.3, 0.1), 0.0, None),
+    (Stribeck(0.6, 0.4, 0.2), 0.0, PressurePower(1e6, 0.3)), (None, 0.4, PressurePower(1e6, -0.2))],
+    ids=["coulomb", "stribeck", "linear-weakening", "stribeck-pressure", "coulomb-pressure-rising"])
 @pytest.mark.parametrize("consistent", [False, True], ids=["lumped", "consistent"])
-def test_the_block_on_a_belt_linearises_as_its_equations_of_motion(block, law, friction, consistent):  # noqa: F811
+def test_the_block_on_a_belt_linearises_as_its_equations_of_motion(block, law, friction, pressure_law,
+                                                                   consistent):  # noqa: F811
     """With the consistent mass the friction rows carry the normal rows' inertia too."""
-    problem = _block(block, law, friction, alpha=40.0, beta=2e-6, speed=0.3)
+    problem = _block(block, law, friction, alpha=40.0, beta=2e-6, speed=0.3, pressure_law=pressure_law)
     JC = _check(problem, h_u=1e-9, h_v=1e-5, consistent=consistent)
     assert np.abs(JC).max() > 0
 

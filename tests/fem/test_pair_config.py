@@ -72,6 +72,8 @@ def test_the_cea_finds_disc_modes_and_a_pad_disc_flutter(folder, capsys):
     ('mesh = "disc.msh"', 'mesh = "nowhere.msh"', "partner.mesh"),
     ("friction = 0.5", 'friction = 0.5\nlaw = "stribeck"\nstribeck_speed = 0.1\nstatic_friction = 0.6',
      "do not apply with a [partner]"),
+    ("friction = 0.5", "friction = 0.5\npressure_exponent = 0.1\nreference_pressure = 1e6",
+     "contact.pressure_exponent do not apply with a [partner]"),
     ("omega = 30.0", "velocity = [1.0, 0.0]", "partner.center applies with partner.omega only"),
     ("omega = 30.0", "velocity = [1.0, 0.0]\ngyroscopic = true", "true only with partner.omega"),
     ("count = 30", 'count = 30\nmass_matrix = "consistent"', "cea.mass_matrix, cea.contact_model and cea.penalty "

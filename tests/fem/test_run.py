@@ -128,3 +128,12 @@ def test_a_checkpoint_of_the_same_parameters_on_another_contact_is_refused(annul
         integrate_body(other, transits=1.0, checkpoint=path, initial=start)
     assert err.value.name == "checkpoint" and "the problem (mesh" in err.value.allowed
     assert "surface: stored 'cylinder of radius 1" in err.value.allowed
+
+
+def test_volume_snapshots_beyond_a_gigabyte_are_refused_for_a_general_body_too(annulus):
+    """The bound on a run's volume snapshots (1.25e8 numbers) is the shared run books', so a
+    general body's run (not only the annulus's) is refused before it starts, naming the option."""
+    with pytest.raises(ParameterError) as err:
+        integrate_body(annulus, transits=1e5, volume_every=1e-3)
+    assert err.value.name == "volume_every" and "transits" in err.value.allowed
+    integrate_body(annulus, transits=1.0, volume_every=0.5)  # a small one runs

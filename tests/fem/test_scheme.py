@@ -5,9 +5,10 @@ frames) step by step, and a user time step above the stable one is refused."""
 import meshio
 import numpy as np
 import pytest
+import scipy.sparse as sp
 
 from stickslip.brake import BrakeParams
-from stickslip.brake.fem import FemScheme, annulus_mesh, perturbed_steady
+from stickslip.brake.fem import FemScheme, annulus_mesh, annulus_problem, perturbed_steady
 from stickslip.errors import ParameterError
 from stickslip.fem import Material, RigidCylinder, assemble, body_from_meshio, contact_frames
 from stickslip.fem.scheme import BodyScheme, ContactProblem
@@ -114,3 +115,28 @@ def test_a_time_step_above_the_stable_one_is_refused():
     with pytest.raises(ParameterError) as err:
         general_annulus(fem, time_step=1.01 * fem.dt_max)
     assert err.value.name == "time_step" and "stable step" in str(err.value)
+
+
+def test_the_annulus_problem_is_the_one_built_by_hand_from_the_general_api():
+    """`brake.fem.annulus_problem` (what the annulus's scheme, steady sliding and ParaView
+    fields now stand on) against the problem this module builds from the public API by hand:
+    the same stiffness and mass to round-off, the same contact frames, clamps and steady sliding."""
+    fem = FemScheme(PARAMS, 32, 2, 0.9)
+    by_hand = general_annulus(fem).params
+    problem = annulus_problem(PARAMS, 32, 2)
+    assert abs(problem.system.K - by_hand.system.K).max() <= 1e-14 * abs(by_hand.system.K).max()
+    assert np.allclose(problem.system.mass, by_hand.system.mass, rtol=1e-14, atol=0)
+    for name in ("nodes", "normal", "tangent", "gap", "speed"):
+        assert np.allclose(getattr(problem.frames, name), getattr(by_hand.frames, name), rtol=1e-14, atol=1e-16), name
+    assert np.array_equal(problem.fixed, by_hand.fixed) and problem.friction == by_hand.friction
+    assert np.allclose(problem.steady.u, by_hand.steady.u, rtol=0, atol=1e-14 * np.abs(by_hand.steady.u).max())
+    assert isinstance(fem, BodyScheme) and fem.problem is problem
+
+
+def test_the_annulus_stencil_is_the_general_assembly_in_polar_frames():
+    """The fast path's operator (the stencil, symmetrised from the polar stiffness) against the
+    general body's stiffness in the annulus's frames over its lumped mass, entry by entry."""
+    fem = FemScheme(PARAMS, 32, 2, 0.9)
+    general = sp.diags(1.0 / fem.mass) @ fem.stiffness
+    stencil = fem.operator_matrix()
+    assert abs(stencil - general).max() <= 1e-13 * abs(general).max()

@@ -99,13 +99,16 @@ def coupled_contact(u, d_old, normal, tangent, nvec, tvec, mptr, mdof, mw, inv_m
             dt_ -= g * force_t[j]
             p = max((gap0[j] - dn) / g, 0.0)
             trial = (d_old[j] + dt * speed[j] - dt_) / g
-            held = fs * p
+            scale = 1.0  # a coefficient that depends on the pressure: (P / P_ref)^(-n), P = p law[3 + j]
+            if law[2] != 0.0 and p > 0.0:
+                scale = (p * law[3 + j]) ** (-law[2])
+            held = fs * scale * p
             stick = abs(trial) <= held
             q = trial
             if not stick:
-                mu = f
+                mu = f * scale
                 if kind != COULOMB:
-                    mu = kinetic_coefficient(kind, law[1], f, fs, abs(trial), p, g / dt)
+                    mu = kinetic_coefficient(kind, law[1], f * scale, fs * scale, abs(trial), p, g / dt)
                 q = min(max(trial, -mu * p), mu * p)
             touch = p > 0.0
             state[j] = SEPARATION if not touch else (STICK if stick else (SLIP_POS if trial > 0 else SLIP_NEG))

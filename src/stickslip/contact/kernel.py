@@ -115,7 +115,9 @@ def explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, fs, co
     Contact node ``j`` has its normal dof ``normal[j]`` and tangential dof ``tangent[j]``,
     the rigid surface at ``gap0[j]`` along the normal and moving at ``speed[j]``; ``f`` and
     ``fs >= f`` are the kinetic and static friction coefficients, the kinetic one of kind
-    ``law[0]`` with parameter ``law[1]`` (`kinetic_coefficient`; ``(COULOMB, 0)``: constant).
+    ``law[0]`` with parameter ``law[1]`` (`kinetic_coefficient`; ``(COULOMB, 0)``: constant);
+    ``law[2] = n`` (0: none) makes both depend on the pressure, times ``(P / P_ref)^(-n)`` with
+    ``P / P_ref = p law[3 + j]`` at node ``j`` (``p`` its normal reaction per unit mass).
     ``lam_n, lam_t, state`` receive the reactions per unit mass and the node states;
     ``ut_old`` is scratch of the size of ``normal``. ``contact=False``: no reactions.
     """
@@ -130,11 +132,14 @@ def explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, fs, co
         r, t = normal[j], tangent[j]
         p = on * max((gap0[j] - u[r]) / cdt2, 0.0)
         trial = (ut_old[j] + dt * speed[j] - u[t]) / cdt2
-        held = fs * p
+        g = 1.0  # a coefficient that depends on the pressure: (P / P_ref)^(-n), P = p law[3 + j]
+        if law[2] != 0.0 and p > 0.0:
+            g = (p * law[3 + j]) ** (-law[2])
+        held = fs * g * p
         stick = abs(trial) <= held
-        mu = f
+        mu = f * g
         if kind != COULOMB and not stick:
-            mu = kinetic_coefficient(kind, law[1], f, fs, abs(trial), p, cdt2 / dt)
+            mu = kinetic_coefficient(kind, law[1], f * g, fs * g, abs(trial), p, cdt2 / dt)
         lim = mu * p
         q = stick * trial + (1 - stick) * min(max(trial, -lim), lim)
         touch = p > 0.0

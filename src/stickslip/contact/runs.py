@@ -40,8 +40,9 @@ from ..files import content_digest, exclusive
 from .scheme import StepState
 from .states import SEPARATION, SLIP_POS, STATE_ATTRS, STATE_NAMES, state_fractions
 
-__all__ = ["RunFormat", "RunRecord", "schedule", "prepare", "save", "resume", "loop", "run_explicit",
-           "run_to_dataset", "results_view", "dataset_to_run", "settings_key", "snapshot_due", "window_snapshots", "volume_due", "volume_at_start"]
+__all__ = ["MAX_VOLUME", "MAX_WORK", "RunFormat", "RunRecord", "schedule", "prepare", "save", "resume", "loop",
+           "run_explicit", "run_to_dataset", "results_view", "dataset_to_run", "settings_key", "snapshot_due",
+           "window_snapshots", "volume_due", "volume_at_start"]
 
 _KEYS = ("chunk", "samples_total", "snap_every", "tail_samples", "samples_per_transit", "modes", "contact",
          "initial", "initial_hash", "volume_every")
@@ -278,6 +279,8 @@ def schedule(scheme, t_end, samples_per_transit, snapshot_every, tail) -> dict:
 #: The largest run accepted, in dof-steps (degrees of freedom x time steps): about 4 hours of the
 #: kernel at ~1.5 ns per dof-step. Larger requests are refused up front, not left to hang.
 MAX_WORK = 1e13
+#: The most numbers the volume snapshots of one run may hold (1.25e8 float64: 1 GB of memory).
+MAX_VOLUME = 1.25e8
 
 
 def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tail, modes, contact, initial,
@@ -335,6 +338,14 @@ def prepare(scheme, *, t_end, transits, samples_per_transit, snapshot_every, tai
                                  or hasattr(getattr(scheme, "params", None), k)))
     settings["volume_every"] = 0 if volume_every is None else max(1, int(round(min(  # in samples
         Q.check("volume_every", volume_every) * scheme.steps_per_transit / settings["chunk"], 2.0**53))))
+    if settings["volume_every"]:
+        count = -(-settings["samples_total"] // settings["volume_every"]) + 1  # and one at t = 0
+        size = dofs * 2 + scheme.theta.size * 3  # u and v of every free dof; P, Q and the state of the contact nodes
+        if count * size > MAX_VOLUME:
+            sample = settings["chunk"] * scheme.dt / scheme.transit_time  # in transits
+            least = (settings["samples_total"] * size / max(MAX_VOLUME - 2 * size, size) + 1) * sample
+            raise ParameterError("volume_every", volume_every, f">= {least:.3g} transits for this run ({count} volume "
+                                 f"snapshots of {size} numbers; at most {MAX_VOLUME:.3g} numbers, 1 GB, in all)")
     return t_end, settings
 
 

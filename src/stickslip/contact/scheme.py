@@ -179,6 +179,21 @@ class ExplicitScheme(ABC):
         return (float(self.params.friction), COULOMB, 0.0)
 
     @property
+    def pressure_scaling(self) -> tuple[float, np.ndarray]:
+        """A friction coefficient that depends on the contact pressure: ``(n, s)``, the exponent of
+        ``(P / P_ref)^(-n)`` and, per contact node, ``P / P_ref`` per unit of the kernel's normal
+        reaction (default ``(0, [])``: none)."""
+        return (0.0, np.zeros(0))
+
+    @property
+    def kernel_law(self) -> np.ndarray:
+        """The kernel's ``law`` array: ``[kind, parameter, n, s_0, s_1, ...]`` (`kinetic_law`,
+        `pressure_scaling`)."""
+        _, kind, parameter = self.kinetic_law
+        n, scale = self.pressure_scaling
+        return np.concatenate([[float(kind), float(parameter), float(n)], np.asarray(scale, dtype=float)])
+
+    @property
     def damping(self) -> tuple[float, float]:
         """Rayleigh damping ``(alpha, beta)``, ``C = alpha M + beta K`` (default none)."""
         return (0.0, 0.0)
@@ -370,5 +385,5 @@ class ExplicitScheme(ABC):
         load = _NO_LOAD if self.load is None else np.ascontiguousarray(self.load, dtype=float)
         advance(C, indptr, indices, data, block, load, np.array(self.damping, dtype=float), state.u, state.v, state.a, normal, tangent, gap0, speed, nsteps,
                 self.dt, self.beta2, f, self.static_friction, bool(contact), out.lam_n, out.lam_t,
-                out.state, out.u_prev, np.array([kind, parameter], dtype=float))
+                out.state, out.u_prev, self.kernel_law)
         return out

@@ -28,7 +28,7 @@ from ..quantities import FEM as Q
 from ..errors import ParameterError
 from .body import Body
 
-__all__ = ["Spring", "Load", "boundary_springs", "boundary_load"]
+__all__ = ["tributary_lengths", "Spring", "Load", "boundary_springs", "boundary_load"]
 
 #: Largest spring stiffness accepted [N/m per m] (declared in `stickslip.quantities.FEM`).
 LIMIT = Q["stiffness"].range.hi
@@ -88,6 +88,18 @@ def _edge_integrals(body: Body, edges: np.ndarray):
     length = np.einsum("eq,eqk->ek", np.hypot(tangent[..., 0], tangent[..., 1]), weight)
     normal = np.stack([-tangent[..., 1], tangent[..., 0]], axis=-1)
     return length, np.einsum("eqc,eqk->ekc", normal, weight)
+
+
+def tributary_lengths(body: Body, group: str) -> np.ndarray:
+    """Each node's share [m] of boundary ``group`` (0 off it): the integral along the group of the
+    node's shape function, so that a uniform pressure ``P`` gives the node the normal force ``P``
+    times its share (half of each adjacent edge on a linear mesh; a sixth and two thirds of an edge
+    at a quadratic edge's ends and middle)."""
+    edges = body.group(group, "contact_group")
+    length, _ = _edge_integrals(body, edges)
+    share = np.zeros(len(body.points))
+    np.add.at(share, edges.ravel(), length.ravel())
+    return share
 
 
 def boundary_springs(body: Body, springs) -> sp.csr_matrix:

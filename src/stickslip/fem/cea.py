@@ -6,7 +6,9 @@ normal dof is removed) and its friction ``f lambda_n`` acts on its tangential do
 tangential rows therefore become ``K_t - f K_n`` and ``C_t - f C_n``: a non-symmetric
 (circulatory) stiffness. A friction law that depends on the slip speed adds
 ``N_i mu'(V)`` to the damping of each tangential dof in contact (``N_i`` the node's steady
-normal force): a falling law is negative damping. Modes ``w e^{s t}`` solve
+normal force): a falling law is negative damping. A coefficient that depends on the pressure
+too (``mu(V) g(P)``, `stickslip.friction.PressurePower`) puts each node's ``d(mu g P)/dP =
+mu g (1 - n)`` in place of ``f`` in its tangential row, and ``g`` on its slope term. Modes ``w e^{s t}`` solve
 
     (s^2 M + s C_eff + K_eff) w = 0.
 
@@ -88,16 +90,22 @@ def linearised(problem: ContactProblem, mass_matrix: str = "lumped", contact_mod
                               "body (surface.interference > 0) or press the body on it with a load")
     touching = steady.active[scheme.contact_nodes]
     normal, tangent = normal[touching], tangent[touching]
-    f = problem.friction
-    P = sp.csr_matrix((np.ones(len(normal)), (tangent, normal)), shape=K.shape)  # P[t, n] = 1
+    nodes = scheme.contact_nodes[touching]  # positions in frames.nodes
+    factor = np.ones(len(nodes))  # a pressure-dependent coefficient: F_t = mu(V) g(P) P, dF_t/dP = mu g (1 - n)
+    rate = 1.0
+    if problem.pressure_law is not None:
+        factor = problem.pressure_law.factor(steady.pressure[nodes] / problem.tributary[nodes])
+        rate = problem.pressure_law.rate
+    f = problem.friction * factor * rate  # d(friction force) / d(normal force), node by node
+    P = sp.csr_matrix((f, (tangent, normal)), shape=K.shape)  # P[t, n] = f_j
     if contact_model == "penalty":  # every free dof kept; the springs' force -k w_n, and f times it on t
         keep = np.arange(scheme.free.size)
         k = penalty * float(np.abs(K.diagonal()).max())
-        K = K + k * sp.csr_matrix((np.ones(len(normal)), (normal, normal)), shape=K.shape) + f * k * P
+        K = K + k * sp.csr_matrix((np.ones(len(normal)), (normal, normal)), shape=K.shape) + k * P
         rows = sp.identity(K.shape[0], format="csr")
-    else:  # each tangential row less f times its node's normal row: (I - f P) A
+    else:  # each tangential row less f times its node's normal row: (I - P) A
         keep = np.setdiff1d(np.arange(scheme.free.size), normal)
-        rows = sp.identity(K.shape[0], format="csr") - f * P
+        rows = sp.identity(K.shape[0], format="csr") - P
 
     def effective(A):
         return (rows @ A).tocsr()[keep][:, keep]
@@ -109,7 +117,7 @@ def linearised(problem: ContactProblem, mass_matrix: str = "lumped", contact_mod
         C_eff = effective((scheme.rotation.T @ C @ scheme.rotation).tocsr()[scheme.free][:, scheme.free])
     slope = problem.friction_slope
     if slope != 0.0:  # F = N mu(V - w_t'): d F / d w_t' = -N mu'(V), damping N mu'(V) on the tangential dof
-        force = steady.pressure[scheme.contact_nodes][touching]
+        force = steady.pressure[nodes] * factor
         extra = sp.csr_matrix((force * slope, (np.searchsorted(keep, tangent), np.searchsorted(keep, tangent))),
                               shape=K_eff.shape)
         C_eff = extra if C_eff is None else (C_eff + extra).tocsr()

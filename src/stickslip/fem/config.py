@@ -30,6 +30,8 @@
     stribeck_speed = 0.1            # static_friction to friction, mu = f_d + (f_s - f_d) exp(-v_r / v_s) [m/s];
                                     # or law = "linear-weakening", weakening = tau [s/m]: mu = f_d (1 - tau v_r)
                                     # (steady sliding, the CEA and explicit runs, node by node)
+    pressure_exponent = 0.1         # optional, with reference_pressure: each node's coefficients times
+    reference_pressure = 1e6        # (P / P_ref)^(-n) at its own contact pressure P [Pa] (n in [-1, 1))
 
     [[spring]]                      # springs from a group's nodes to the ground (optional, repeatable)
     group = "left"
@@ -96,7 +98,8 @@ __all__ = ["FemConfig", "Partner", "load_config", "numeric_keys", "read_toml", "
 
 _KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "partner", "cea", "spring", "load"},
           "partner": {"mesh", "group", "clamped", "omega", "center", "velocity", "material", "gyroscopic"},
-          "contact": {"group", "friction", "static_friction", "law", "stribeck_speed", "weakening"},
+          "contact": {"group", "friction", "static_friction", "law", "stribeck_speed", "weakening", "pressure_exponent",
+                      "reference_pressure"},
           "surface": {"kind", "radius", "omega", "center", "body_inside", "point", "normal", "velocity",
                       "interference"},
           "cea": {"band", "count", "complete_below", "mass_matrix", "contact_model", "penalty"}}
@@ -139,6 +142,7 @@ class FemConfig:
     law: object = None  # a friction law of stickslip.friction ([contact] law), or None: Coulomb
     partner: Partner | None = None  # an elastic counter-body ([partner]) instead of the surface
     cea_options: dict = field(default_factory=dict)  # [cea] mass_matrix, contact_model, penalty (as given)
+    pressure_law: object = None  # a stickslip.friction.PressurePower ([contact] pressure_exponent), or None
 
     def problem(self) -> ContactProblem | PairProblem:
         """Assemble the body and set the contact up (the mesh is read again if not kept); with a
@@ -155,8 +159,9 @@ class FemConfig:
         frames = contact_frames(body, self.group, self.surface)
         system = assemble(body, self.material, self.springs, self.loads)
         if self.law is not None:
-            return ContactProblem(system, frames, clamped=self.clamped, law=self.law)
-        return ContactProblem(system, frames, self.friction, self.clamped, self.static_friction)
+            return ContactProblem(system, frames, clamped=self.clamped, law=self.law, pressure_law=self.pressure_law)
+        return ContactProblem(system, frames, self.friction, self.clamped, self.static_friction,
+                              pressure_law=self.pressure_law)
 
 
 def _problem(err: ParameterError) -> str:
@@ -295,6 +300,7 @@ def _checked(path: Path, data: dict) -> FemConfig:
             problems.append(f"contact.static_friction = {static!r} must be >= contact.friction = {friction!r}")
             static = None
     law = _law(problems, c, friction, static)
+    pressure_law = _pressure_law(problems, c)
     springs = _springs(problems, data.get("spring", []))
     loads = _loads(problems, data.get("load", []))
     partner = None
@@ -302,9 +308,9 @@ def _checked(path: Path, data: dict) -> FemConfig:
         if "surface" in data:
             problems.append("[surface] and [partner] exclude each other (a rigid counter-surface or an elastic "
                             "counter-body)")
-        if law is not None or static is not None:
-            problems.append("contact.law and contact.static_friction do not apply with a [partner] (two bodies slide "
-                            "with Coulomb friction at contact.friction, for now)")
+        if law is not None or static is not None or pressure_law is not None:
+            problems.append("contact.law, contact.static_friction and contact.pressure_exponent do not apply with a "
+                            "[partner] (two bodies slide with Coulomb friction at contact.friction, for now)")
         partner = _partner(problems, path, data["partner"] if isinstance(data["partner"], dict) else {})
         surface = None
     else:
@@ -357,7 +363,7 @@ def _checked(path: Path, data: dict) -> FemConfig:
                              f"{'s' if len(problems) > 1 else ''}: " + "; ".join(problems))
     material = materials[""] if list(materials) == [""] else materials
     return FemConfig(path, mesh_path, tuple(clamped), material, group, friction, surface, tuple(band), count,
-                     static, springs, loads, body, below, law, partner, options)
+                     static, springs, loads, body, below, law, partner, options, pressure_law)
 
 
 def _mesh_file(problems, path: Path, mesh, where: str) -> Path | None:
@@ -466,6 +472,23 @@ def _law(problems, c: dict, friction, static):
         return None
     return make_law(name, fs=static, fd=friction, **({"vs": value} if needs == "stribeck_speed" else
                                                      {"tau": value} if needs == "weakening" else {}))
+
+
+def _pressure_law(problems, c: dict):
+    """``[contact] pressure_exponent`` and ``reference_pressure`` (both or neither) as a
+    `stickslip.friction.PressurePower`, or None."""
+    from ..friction import PressurePower
+
+    given = [k for k in ("pressure_exponent", "reference_pressure") if k in c]
+    if not given:
+        return None
+    if len(given) == 1:
+        other = ({"pressure_exponent", "reference_pressure"} - set(given)).pop()
+        problems.append(f"contact.{other} is missing (contact.{given[0]} needs it)")
+        return None
+    n = _number(problems, "contact.pressure_exponent", c["pressure_exponent"])
+    reference = _number(problems, "contact.reference_pressure", c["reference_pressure"])
+    return None if None in (n, reference) else PressurePower(reference, n)
 
 
 def _materials(problems, raw, key: str = "material") -> dict:

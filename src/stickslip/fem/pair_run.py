@@ -232,11 +232,11 @@ class PairScheme(FemScheme):
         ptr, dof, w = self.partners
         nv, tv = self.frames
         load = np.zeros(0) if self.load is None else np.ascontiguousarray(self.load, dtype=float)
-        f, kind, parameter = self.kinetic_law
+        f, _, _ = self.kinetic_law
         sweeps = coupled_advance(
             indptr, indices, data, block, load, np.array(self.damping, dtype=float), state.u, state.v, state.a,
             normal, tangent, np.ascontiguousarray(nv), np.ascontiguousarray(tv), ptr, dof, w, 1.0 / self.mass, gap0,
-            speed, nsteps, self.dt, self.beta2, f, self.static_friction, np.array([kind, parameter], dtype=float),
+            speed, nsteps, self.dt, self.beta2, f, self.static_friction, self.kernel_law,
             bool(contact), out.lam_n, out.lam_t, out.state, out.u_prev, MAX_SWEEPS)
         object.__setattr__(self, "last_sweeps", int(sweeps))  # the most Gauss-Seidel sweeps a step of the call took
         if sweeps > MAX_SWEEPS:

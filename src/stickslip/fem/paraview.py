@@ -37,7 +37,7 @@ from .pair_run import PairRun
 from .run import BodyRun
 from .scheme import BodyScheme, ContactProblem
 
-__all__ = ["write_run_xdmf", "write_modes_xdmf"]
+__all__ = ["write_run_xdmf", "write_modes_xdmf", "run_snapshot"]
 
 
 def _mesh(body):
@@ -60,8 +60,16 @@ def write_run_xdmf(run: BodyRun | PairRun, path) -> Path:
         raise ParameterError("run", "a run without volume snapshots", "a run integrated with volume_every=T")
     if isinstance(run, PairRun):
         return _pair_run(run, path)
-    scheme: BodyScheme = run.scheme
-    body, frames = scheme.params.system.body, scheme.params.frames
+    body = run.scheme.problem.system.body
+    steps = (run_snapshot(run.scheme, snaps, k) for k in range(len(snaps["vol_t"])))
+    return write_xdmf_series(path, *_mesh(body), steps)
+
+
+def run_snapshot(scheme: BodyScheme, snapshots: dict, k: int) -> tuple[float, dict, dict]:
+    """``(time, point_data, cell_data)`` of volume snapshot ``k`` of a run of ``scheme`` (see the
+    module docstring; a specialisation such as the paper's annulus adds its own fields to these)."""
+    system = scheme.problem.system
+    body, frames = system.body, scheme.problem.frames
     nodes = frames.nodes[scheme.contact_nodes]
     n = len(body.points)
 
@@ -70,23 +78,17 @@ def write_run_xdmf(run: BodyRun | PairRun, path) -> Path:
         out[nodes] = values
         return out
 
-    system = scheme.params.system
-    material = system.cell_material.astype(np.int32)  # the position of each cell's material in material_groups
-
-    def step(k):
-        state = np.full(n, -1, dtype=np.int32)
-        state[nodes] = snaps["vol_state"][k]
-        u = scheme.cartesian(snaps["vol_u"][k])
-        point_data = {"displacement": _vectors(u), "velocity": _vectors(scheme.cartesian(snaps["vol_v"][k])),
-                      "contact_pressure": on_line(snaps["vol_P"][k]), "contact_shear": on_line(snaps["vol_Q"][k]),
-                      "contact_state": state}
-        sigma = cell_stress(system, u)
-        sxx, syy, sxy = sigma.T
-        cell_data = {"stress_xx": [sxx], "stress_yy": [syy], "stress_xy": [sxy], "von_mises": [von_mises(system, sigma)],
-                     "material": [material]}
-        return float(snaps["vol_t"][k]), point_data, cell_data
-
-    return write_xdmf_series(path, *_mesh(body), (step(k) for k in range(len(snaps["vol_t"]))))
+    state = np.full(n, -1, dtype=np.int32)
+    state[nodes] = snapshots["vol_state"][k]
+    u = scheme.cartesian(snapshots["vol_u"][k])
+    point_data = {"displacement": _vectors(u), "velocity": _vectors(scheme.cartesian(snapshots["vol_v"][k])),
+                  "contact_pressure": on_line(snapshots["vol_P"][k]), "contact_shear": on_line(snapshots["vol_Q"][k]),
+                  "contact_state": state}
+    sigma = cell_stress(system, u)
+    sxx, syy, sxy = sigma.T
+    cell_data = {"stress_xx": [sxx], "stress_yy": [syy], "stress_xy": [sxy], "von_mises": [von_mises(system, sigma)],
+                 "material": [system.cell_material.astype(np.int32)]}  # its position in material_groups
+    return float(snapshots["vol_t"][k]), point_data, cell_data
 
 
 def _both(problem):

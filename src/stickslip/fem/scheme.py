@@ -32,8 +32,9 @@ from ..quantities import FEM as Q
 from ..contact import ExplicitScheme
 from ..errors import ParameterError
 from ..contact.kernel import COULOMB, LINEAR_WEAKENING, STRIBECK
-from ..friction import Coulomb, FrictionLaw, LinearWeakening, Stribeck
+from ..friction import Coulomb, FrictionLaw, LinearWeakening, PressurePower, Stribeck
 from .assembly import BodySystem
+from .boundary import tributary_lengths
 from .static import SteadyContact, frame_rotation, problem_attrs, steady_contact
 from .surfaces import ContactFrames
 
@@ -84,7 +85,14 @@ class ContactProblem:
     surface), so ``friction`` becomes ``law.kinetic(V)`` and ``static_friction``
     ``law.static``; the CEA adds the slope ``law.slope(V)`` (a falling law is negative damping,
     `stickslip.fem.cea.linearised`). An explicit run takes each slipping node's kinetic
-    coefficient at its own slip speed (`BodyScheme.kinetic_law`), sticking with ``law.static``."""
+    coefficient at its own slip speed (`BodyScheme.kinetic_law`), sticking with ``law.static``.
+
+    And ``pressure_law`` (`stickslip.friction.PressurePower`), a coefficient that depends on the
+    contact pressure too: each node's coefficients (kinetic and static) are the law's times
+    ``(P / reference)^(-exponent)`` at its own pressure ``P`` (its normal force over its
+    tributary length), in steady sliding (`steady_contact`), in the CEA (the friction force's
+    derivative ``mu (1 - exponent)`` in the tangential rows) and in an explicit run (node by node,
+    `BodyScheme.pressure_scaling`)."""
 
     system: BodySystem
     frames: ContactFrames
@@ -92,6 +100,7 @@ class ContactProblem:
     clamped: tuple = ()
     static_friction: float | None = None
     law: FrictionLaw | None = None
+    pressure_law: PressurePower | None = None
 
     def __post_init__(self):
         if not isinstance(self.system, BodySystem):
@@ -100,6 +109,8 @@ class ContactProblem:
             raise ParameterError("frames", self.frames, "ContactFrames (see contact_frames)")
         if self.law is not None:
             self._from_law()
+        if self.pressure_law is not None and not isinstance(self.pressure_law, PressurePower):
+            raise ParameterError("pressure_law", self.pressure_law, "a stickslip.friction.PressurePower or None")
         object.__setattr__(self, "friction", Q.check("friction", self.friction))
         fs = self.friction if self.static_friction is None else self.static_friction
         object.__setattr__(self, "static_friction", check.at_least("static_friction", Q.check("static_friction", fs), self.friction, "friction"))
@@ -162,7 +173,13 @@ class ContactProblem:
     @cached_property
     def steady(self) -> SteadyContact:
         return steady_contact(self.system, self.frames, self.friction, self.clamped,
-                              static_friction=self.static_friction)
+                              static_friction=self.static_friction, pressure_law=self.pressure_law)
+
+    @cached_property
+    def tributary(self) -> np.ndarray:
+        """Each contact node's tributary length [m] (`stickslip.fem.boundary.tributary_lengths`), in
+        the order of ``frames.nodes``: its normal force over it is its pressure."""
+        return tributary_lengths(self.system.body, self.frames.group)[self.frames.nodes]
 
     @cached_property
     def omega_max(self) -> float:
@@ -194,12 +211,16 @@ class ContactProblem:
         for arr in (body.points, body.cells, f.nodes, f.normal, f.tangent, f.gap, f.speed, self.fixed, K.indptr,
                     K.indices, K.data, self.system.load):
             h.update(np.ascontiguousarray(arr).tobytes())
+        if self.pressure_law is not None:
+            h.update(repr((self.pressure_law.reference, self.pressure_law.exponent)).encode())
         return h.hexdigest()
 
     def to_attrs(self) -> dict:
         """The problem as netCDF attributes (`stickslip.fem.static.problem_attrs`) and its digest;
         with a law, its description and slope."""
         law = {} if self.law is None else {"friction_law": repr(self.law), "friction_slope": self.friction_slope}
+        if self.pressure_law is not None:
+            law |= {"pressure_exponent": self.pressure_law.exponent, "reference_pressure": self.pressure_law.reference}
         return {**problem_attrs(self.system, self.frames, self.friction, self.clamped, self.static_friction),
                 **law, "problem_sha256": self.digest}
 
@@ -214,6 +235,12 @@ class FemScheme(ExplicitScheme):
 
     time_step: float | None
 
+    @property
+    def problem(self):
+        """The problem the scheme discretises in time (its ``params``; a specialisation such as
+        the paper's annulus, whose ``params`` are its own, gives its general problem here)."""
+        return self.params
+
     def check_time_step(self) -> None:
         """Refuse a ``time_step`` beyond the stable step (call in ``__post_init__``)."""
         if self.time_step is not None:
@@ -225,13 +252,13 @@ class FemScheme(ExplicitScheme):
     @property
     def omega_max(self) -> float:
         """Largest free angular frequency [rad/s] of the problem (its ``omega_max``)."""
-        return self.params.omega_max
+        return self.problem.omega_max
 
     @cached_property
     def damping(self) -> tuple[float, float]:
         """The one Rayleigh damping ``(alpha [1/s], beta [s])`` of the problem's materials,
         refused if an explicit run cannot take it (`check_damping`)."""
-        return check_damping(self.params.materials, self.omega_max)
+        return check_damping(self.problem.materials, self.omega_max)
 
     @cached_property
     def dt_max(self) -> float:
@@ -286,47 +313,47 @@ class BodyScheme(FemScheme):
     @cached_property
     def rotation(self) -> sp.csr_matrix:
         """``T`` with Cartesian ``u = T w`` (all dofs)."""
-        return frame_rotation(self.params.system.n_dofs, self.params.frames)
+        return frame_rotation(self.problem.system.n_dofs, self.problem.frames)
 
     @cached_property
     def free(self) -> np.ndarray:
         """The free dofs (not clamped), indices into all ``2 n``."""
-        return np.flatnonzero(~self.params.fixed)
+        return np.flatnonzero(~self.problem.fixed)
 
     @cached_property
     def contact_nodes(self) -> np.ndarray:
         """Positions in ``frames.nodes`` of the contact nodes that are not clamped."""
-        return np.flatnonzero(~self.params.fixed[2 * self.params.frames.nodes])
+        return np.flatnonzero(~self.problem.fixed[2 * self.problem.frames.nodes])
 
     def cartesian(self, w: np.ndarray) -> np.ndarray:
         """Free-dof vector(s) of the scheme -> Cartesian displacements of every dof."""
-        full = np.zeros(np.shape(w)[:-1] + (self.params.system.n_dofs,))
+        full = np.zeros(np.shape(w)[:-1] + (self.problem.system.n_dofs,))
         full[..., self.free] = w
         return full @ self.rotation.T
 
     # --- the interface of stickslip.contact ----------------------------------------------
     @cached_property
     def mass(self) -> np.ndarray:
-        return self.params.system.mass[self.free]
+        return self.problem.system.mass[self.free]
 
     @cached_property
     def stiffness(self) -> sp.csr_matrix:
         """``K`` on the free dofs in the scheme's frames (nodal frames at the contact nodes)."""
-        return (self.rotation.T @ self.params.system.K @ self.rotation).tocsr()[self.free][:, self.free]
+        return (self.rotation.T @ self.problem.system.K @ self.rotation).tocsr()[self.free][:, self.free]
 
     def operator_matrix(self):
         return (sp.diags(1.0 / self.mass) @ self.stiffness).tocsr()
 
     @property
     def static_friction(self) -> float:
-        return float(self.params.static_friction)
+        return float(self.problem.static_friction)
 
     @property
     def kinetic_law(self) -> tuple[float, int, float]:
         """``(f_d, kind, parameter)`` of the problem's law for the kernel
         (`stickslip.contact.kernel.kinetic_coefficient`): linear weakening and Stribeck with their
         own kinetic coefficient, Coulomb (or none) with ``friction``."""
-        law = self.params.law
+        law = self.problem.law
         if isinstance(law, LinearWeakening):
             return (float(law.fd), LINEAR_WEAKENING, float(law.tau))
         if isinstance(law, Stribeck):
@@ -334,32 +361,43 @@ class BodyScheme(FemScheme):
         if law is not None and not isinstance(law, Coulomb):
             raise ParameterError("law", law, "Coulomb, linear weakening or Stribeck in an explicit run (the kernel "
                                  "is compiled for these; a user's law is taken by steady sliding and the CEA)")
-        return (float(self.params.friction), COULOMB, 0.0)
+        return (float(self.problem.friction), COULOMB, 0.0)
+
+    @cached_property
+    def pressure_scaling(self) -> tuple[float, np.ndarray]:
+        """With the problem's ``pressure_law``: its exponent and, per contact node, ``m / (L P_ref)``
+        (the node's lumped mass over its tributary length and the reference pressure: the kernel's
+        reaction per unit mass times it is ``P / P_ref``); else none."""
+        law = self.problem.pressure_law
+        if law is None:
+            return (0.0, np.zeros(0))
+        m = self.mass[self.contact_dofs[0]]
+        return (float(law.exponent), m / (self.problem.tributary[self.contact_nodes] * law.reference))
 
     @property
     def closed_line(self) -> bool:
-        return bool(self.params.frames.closed)
+        return bool(self.problem.frames.closed)
 
     @cached_property
     def load(self) -> np.ndarray | None:
         """The boundary load per unit mass on the free dofs, in the scheme's frames (None: no load)."""
-        F = self.params.system.load
+        F = self.problem.system.load
         return None if not F.any() else (self.rotation.T @ F)[self.free] / self.mass
 
     @cached_property
     def contact_dofs(self) -> tuple[np.ndarray, np.ndarray]:
-        where = np.full(self.params.system.n_dofs, -1, dtype=np.int64)
+        where = np.full(self.problem.system.n_dofs, -1, dtype=np.int64)
         where[self.free] = np.arange(self.free.size)
-        nodes = self.params.frames.nodes[self.contact_nodes]
+        nodes = self.problem.frames.nodes[self.contact_nodes]
         return where[2 * nodes], where[2 * nodes + 1]
 
     @cached_property
     def surface(self) -> tuple[np.ndarray, np.ndarray]:
-        f = self.params.frames
+        f = self.problem.frames
         return -f.gap[self.contact_nodes], f.speed[self.contact_nodes]
 
     def steady_reference(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        st = self.params.steady
+        st = self.problem.steady
         w = (self.rotation.T @ st.u)[self.free]
         m = self.mass[self.contact_dofs[0]]
         return w, st.pressure[self.contact_nodes] / m, st.shear[self.contact_nodes] / m
@@ -367,16 +405,16 @@ class BodyScheme(FemScheme):
     @cached_property
     def line_length(self) -> float:
         """Length of the contact line [m] (closed lines include the closing edge)."""
-        f = self.params.frames
-        pts = self.params.system.body.points[f.nodes]
+        f = self.problem.frames
+        pts = self.problem.system.body.points[f.nodes]
         return float(f.arclength[-1] + (np.hypot(*(pts[0] - pts[-1])) if f.closed else 0.0))
 
     @cached_property
     def theta(self) -> np.ndarray:
-        return 2.0 * np.pi * self.params.frames.arclength[self.contact_nodes] / self.line_length
+        return 2.0 * np.pi * self.problem.frames.arclength[self.contact_nodes] / self.line_length
 
     @cached_property
     def p_wave_speed(self) -> float:
         """The P-wave speed [m/s] of the material along the contact line (the fastest, if several)."""
-        system = self.params.system
-        return system.p_wave_speed(system.body.cells_along(self.params.frames.group))
+        system = self.problem.system
+        return system.p_wave_speed(system.body.cells_along(self.problem.frames.group))

@@ -30,9 +30,11 @@ import xarray as xr
 from .. import validation as check
 from ..quantities import FEM as Q
 from ..cf import finish
-from ..errors import NoSolutionError
+from ..errors import NoSolutionError, ParameterError
+from ..friction import PressurePower
 from ..results import Result
 from .assembly import BodySystem
+from .boundary import tributary_lengths
 from .surfaces import ContactFrames
 
 __all__ = ["SteadyContact", "frame_rotation", "steady_contact", "problem_attrs", "LOAD_FLOOR", "ITERATIONS"]
@@ -43,6 +45,8 @@ __all__ = ["SteadyContact", "frame_rotation", "steady_contact", "problem_attrs",
 LOAD_FLOOR = 1e-10
 #: The fewest active-set iterations allowed by default (`steady_contact`).
 ITERATIONS = 50
+#: The most fixed-point iterations of the nodes' coefficients per active set (a pressure-dependent law).
+PRESSURE_ITERATIONS = 200
 
 
 def problem_attrs(system: BodySystem, frames: ContactFrames, friction: float, clamped=(),
@@ -109,6 +113,15 @@ class SteadyContact(Result):
     points: np.ndarray | None = None  # the contact nodes' reference positions [m] (for to_xarray)
     params: dict | None = None  # the problem (`problem_attrs`)
     load_floor: float = 0.0  # [N/m]: a total normal force at most this is no load (see `loaded`)
+    node_friction: np.ndarray | None = None  # each contact node's coefficient (a pressure-dependent law), else None
+
+    @property
+    def coefficients(self) -> np.ndarray:
+        """The friction coefficient of each contact node (``friction`` everywhere unless it depends on
+        the pressure)."""
+        if self.node_friction is not None:
+            return self.node_friction
+        return np.full(len(self.pressure), float(self.friction))
 
     @property
     def loaded(self) -> bool:
@@ -157,7 +170,8 @@ class SteadyContact(Result):
 
 
 def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 0.0, clamped=(),
-                   max_iterations: int | None = None, static_friction: float | None = None) -> SteadyContact:
+                   max_iterations: int | None = None, static_friction: float | None = None,
+                   pressure_law: PressurePower | None = None) -> SteadyContact:
     """Steady sliding of ``system`` on the surface of ``frames`` (see the module docstring).
 
     ``clamped`` names boundary groups whose dofs are fixed (a contact node among them is held
@@ -167,6 +181,11 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
     ``max_iterations``: by default ``ITERATIONS`` or twice the contact nodes, whichever is more
     (a lift-off zone grows by a node or two per iteration: a strip pulled off the surface at one
     end needs about as many iterations as the nodes that lift).
+    ``pressure_law`` (`stickslip.friction.PressurePower`): each node's coefficient is ``friction``
+    times its factor at the node's pressure (normal force over its tributary length,
+    `stickslip.fem.boundary.tributary_lengths`), found for each active set by fixed-point
+    iteration to 1e-10 of ``friction`` (or to the solve's round-off, below 1e-8; `PRESSURE_ITERATIONS`
+    at most, else a `NoSolutionError`).
     """
     friction = Q.check("friction", friction)
     max_iterations = max(ITERATIONS, 2 * len(frames.nodes)) if max_iterations is None else \
@@ -185,10 +204,14 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
     nearest = max(0.0, float(frames.gap[free].min())) if free.any() else 0.0
     active = (frames.gap <= nearest * (1.0 + 1e-9)) & free  # if nothing touches, the nearest nodes
     seen = [active.copy()]
+    if pressure_law is not None and not isinstance(pressure_law, PressurePower):
+        raise ParameterError("pressure_law", pressure_law, "a stickslip.friction.PressurePower or None")
+    share = None if pressure_law is None else tributary_lengths(system.body, frames.group)[frames.nodes]
+    mu = np.full(len(frames.nodes), friction)
     for iteration in range(1, max_iterations + 1):
         try:
-            w, p = _solve(Kw, Fw, fixed, normal_dofs[active], tangent_dofs[active], -frames.gap[active], friction,
-                          n_dofs)
+            w, p, mu = _coefficients(Kw, Fw, fixed, normal_dofs, tangent_dofs, active, -frames.gap, friction, n_dofs,
+                                     pressure_law, share)
         except NoSolutionError:
             if iteration == 1:
                 raise
@@ -203,9 +226,13 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
             points = system.body.points
             size = float(np.hypot(*(points.max(axis=0) - points.min(axis=0))))
             attrs = problem_attrs(system, frames, friction, clamped, static_friction)
-            return SteadyContact(frames, friction, T @ w, pressure, friction * pressure, active.copy(), iteration,
+            if pressure_law is not None:
+                attrs = {**attrs, "pressure_exponent": pressure_law.exponent,
+                         "reference_pressure": pressure_law.reference}
+            return SteadyContact(frames, friction, T @ w, pressure, mu * pressure, active.copy(), iteration,
                                  points[frames.nodes], attrs,
-                                 LOAD_FLOOR * max(m.young for m in system.materials.values()) * size)
+                                 LOAD_FLOOR * max(m.young for m in system.materials.values()) * size,
+                                 None if pressure_law is None else mu)
         back = [k for k, old in enumerate(seen[:-1]) if np.array_equal(old, new)]
         if back:
             raise NoSolutionError(_cycling(seen[back[0]:], friction))
@@ -226,6 +253,29 @@ def _cycling(cycle: list, friction: float) -> str:
             "contact.friction, or run from the preload (fem run --start rest) to see what the contact does")
 
 
+def _coefficients(Kw, Fw, fixed, normal, tangent, active, prescribed, friction, n_dofs, pressure_law, share):
+    """``(w, p, mu)`` of one active set: the solve, and with a pressure law the fixed point of
+    each active node's coefficient ``mu = friction factor(p / share)`` (``mu`` per contact node)."""
+    mu = np.full(len(normal), float(friction))
+    last = np.inf
+    for _ in range(PRESSURE_ITERATIONS):
+        w, p = _solve(Kw, Fw, fixed, normal[active], tangent[active], prescribed[active], mu[active], n_dofs)
+        if pressure_law is None or friction == 0.0:
+            return w, p, mu
+        new = friction * pressure_law.factor(np.maximum(p, 0.0) / share[active])
+        change = float(np.max(np.abs(new - mu[active]), initial=0.0))
+        mu[active] = new
+        # settled: to 1e-10, or at the solve's round-off (below 1e-8 and no longer falling)
+        if change <= 1e-10 * friction or (change <= 1e-8 * friction and change >= 0.5 * last):
+            w, p = _solve(Kw, Fw, fixed, normal[active], tangent[active], prescribed[active], mu[active], n_dofs)
+            return w, p, mu
+        last = change
+    raise NoSolutionError(f"steady sliding with friction depending on the pressure (exponent "
+                          f"{pressure_law.exponent:g}) did not settle in {PRESSURE_ITERATIONS} iterations: the "
+                          "coefficients of the nodes change the pressures more than they are changed by them (a "
+                          "smaller pressure_exponent)")
+
+
 def _solve(Kw, Fw, fixed, normal, tangent, prescribed, friction, n_dofs):
     P = fixed.copy()
     P[normal] = True
@@ -234,7 +284,7 @@ def _solve(Kw, Fw, fixed, normal, tangent, prescribed, friction, n_dofs):
     wP[normal] = prescribed
     where = np.full(n_dofs, -1)
     where[F] = np.arange(F.size)
-    S = sp.csr_matrix((np.full(len(normal), friction), (where[tangent], np.arange(len(normal)))),
+    S = sp.csr_matrix((np.broadcast_to(friction, len(normal)), (where[tangent], np.arange(len(normal)))),
                       shape=(F.size, len(normal)))
     K_F = Kw[F]
     K_A = Kw[normal]

@@ -17,6 +17,13 @@ MAX_POINTS = 1_000_000
 MAX_MESH_NODES = 1 << 20
 
 COMMON = Domain("common", [
+    # a friction coefficient that depends on the contact pressure (stickslip.friction.PressurePower)
+    Q("pressure_exponent", "1", "exponent n of a friction coefficient that depends on the contact pressure P, "
+      "mu (P / P_ref)^(-n) (n > 0: friction falls as the pressure rises)", "[-1, 1)", symbol="n",
+      why="below 1 the friction force mu P grows with the pressure (at 1 it would not depend on it); from -1 a "
+          "coefficient at most proportional to the pressure"),
+    Q("reference_pressure", "Pa", "pressure P_ref at which a pressure-dependent friction coefficient is the law's own",
+      "[1e-3, 1e12]", symbol="P_ref", why="from a millipascal to a terapascal, beyond any contact a solid bears"),
     # counters, labels and codes of results
     Q("done", "1", "point computed (1) or not yet (0)"),
     Q("seconds", "s", "wall-clock time of the computation"),

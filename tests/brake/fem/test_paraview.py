@@ -16,7 +16,8 @@ from stickslip.errors import ParameterError
 CASE2 = BrakeParams.from_physical(50.0, 1e-4, 0.7)  # f = 0.7, delta = 0.001
 POINT_FIELDS = {"displacement", "u_r", "u_theta", "velocity", "contact_pressure", "contact_shear", "contact_traction",
                 "contact_state"}
-CELL_FIELDS = {"stress", "sigma_rr", "sigma_thth", "sigma_rth"}
+CELL_FIELDS = {"stress", "sigma_rr", "sigma_thth", "sigma_rth",  # the annulus's own, and the general body's:
+               "stress_xx", "stress_yy", "stress_xy", "von_mises", "material"}
 
 
 def read(path):
@@ -79,7 +80,7 @@ def test_steady_sliding_written_matches_the_fe_static_state_and_lame(tmp_path):
     with forward slip. Tolerances set before the first run: displacement = FE static solution to
     1e-8 delta, u_r = Lamé to 2 % of delta; cell stresses = Lamé at the cell's mid radius to 5 %
     of p_e; pressure = p_e, and = -sigma_rr at the bore extrapolated from the written stresses,
-    to 5 % of p_e (32 x 4 mesh)."""
+    to 5 % of p_e, and so the von Mises stress (32 x 4 mesh)."""
     n_theta, n_r = 32, 4
     scheme = FemScheme(CASE2, n_theta, n_r)
     steady = scheme.steady
@@ -107,6 +108,10 @@ def test_steady_sliding_written_matches_the_fe_static_state_and_lame(tmp_path):
         for name, exact in zip(stresses, lame.stress(r_mid)):
             assert np.abs(stresses[name] - exact).max() < 0.05 * p_e, name
         assert np.abs(cd["stress"][0] - _lame_cartesian(lame, r_mid, phi_mid)).max() < 0.05 * p_e
+        # the general body's fields reach the annulus: its von Mises stress against Lame's, to 5 % of p_e
+        srr, stt, srt, szz = lame.stress(r_mid)
+        exact = np.sqrt(srr**2 + stt**2 + szz**2 - srr * stt - stt * szz - szz * srr + 3 * srt**2)
+        assert np.abs(cd["von_mises"][0] - exact).max() < 0.05 * p_e and np.all(cd["material"][0] == 0)
         # the contact surface: pressure and shear, traction p e_r + q e_theta, states; nothing elsewhere
         p, q = pd["contact_pressure"], pd["contact_shear"]
         assert np.abs(p[surface] - p_e).max() < 0.05 * p_e and np.abs(q[surface] - q_e).max() < 0.05 * p_e

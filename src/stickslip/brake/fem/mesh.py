@@ -62,10 +62,29 @@ class AnnulusMesh:
 
     @cached_property
     def body(self):
-        """The mesh as a general `stickslip.fem.Body` (the same nodes, in the same order)."""
+        """The mesh as a general `stickslip.fem.Body` (the same nodes and cells, in the same
+        order), with the boundary groups ``bore`` (the contact circle ``r = 1``, its edges from
+        node ``j`` to ``j + 1``) and ``rim`` (the clamped circle ``r = xi``)."""
         from ...fem import body_from_meshio
 
-        return body_from_meshio(meshio.Mesh(self.mesh.p.T, [("quad", self.mesh.t.T)]), self.describe())
+        n, ring = self.n_theta, np.arange(self.n_theta)
+        bore = np.column_stack([ring, (ring + 1) % n])
+        none, every = np.array([], dtype=np.int64), np.arange(n)
+        blocks = [meshio.CellBlock("quad", self.mesh.t.T), meshio.CellBlock("line", bore),
+                  meshio.CellBlock("line", bore + self.n_r * n)]
+        sets = {"bore": [none, every, none], "rim": [none, none, every]}
+        return body_from_meshio(meshio.Mesh(self.mesh.p.T, blocks, cell_sets=sets), self.describe())
+
+    @cached_property
+    def polar_rotation(self) -> sp.csr_matrix:
+        """``T`` with Cartesian ``u = T w`` at every node, ``w`` its polar components ``(u_r, u_theta)``."""
+        ang = np.arctan2(self.mesh.p[1], self.mesh.p[0])
+        c, s = np.cos(ang), np.sin(ang)
+        k = np.arange(ang.size)
+        dx, dy = 2 * k, 2 * k + 1
+        rows = np.concatenate([dx, dy, dx, dy])
+        cols = np.concatenate([dx, dx, dy, dy])
+        return sp.csr_matrix((np.concatenate([c, s, -s, c]), (rows, cols)), shape=(2 * ang.size, 2 * ang.size))
 
     def describe(self) -> str:
         return (f"{self.n_theta} x {self.n_r} bilinear quadrilaterals (xi = {self.xi:g}; "
@@ -179,17 +198,9 @@ def assemble(mesh: AnnulusMesh, nu: float = 0.3) -> FemSystem:
 
     nu = Q.check("nu", nu)
     general = assemble_body(mesh.body, Material(1.0, nu, 1.0, scaled=True))
-    K_cart, lumped = general.K, general.mass
-    nodes = mesh.mesh.p.shape[1]
-    ang = np.arctan2(mesh.mesh.p[1], mesh.mesh.p[0])
-    c, s = np.cos(ang), np.sin(ang)
-    k = np.arange(nodes)
-    dx, dy = 2 * k, 2 * k + 1
-    rows = np.concatenate([dx, dy, dx, dy])
-    cols = np.concatenate([2 * k, 2 * k, 2 * k + 1, 2 * k + 1])
-    T = sp.csr_matrix((np.concatenate([c, s, -s, c]), (rows, cols)), shape=(2 * nodes, 2 * nodes))
-    K_pol = (T.T @ K_cart @ T).tocsr()
+    T = mesh.polar_rotation
+    K_pol = (T.T @ general.K @ T).tocsr()
     C = _stencil(K_pol, mesh.n_theta, mesh.n_r)
-    ring_mass = lumped[dx][:: mesh.n_theta][: mesh.n_r]  # the same on every node of a ring
+    ring_mass = general.mass[0::2][:: mesh.n_theta][: mesh.n_r]  # the same on every node of a ring
     mass = np.repeat(ring_mass, 2 * mesh.n_theta)
     return FemSystem(mesh, nu, stencil_matrix(C, mesh.n_theta), mass, C)

@@ -12,6 +12,9 @@ pressures and tractions in units of ``E``; times are the paper's ``t = Omega t̄
 snapshot times ``vol_t`` of the run). XDMF has no place for units, hence this list. Vectors
 are Cartesian and padded with ``z = 0`` (ParaView's 3-component vectors). Per snapshot:
 
+The fields are the general body's (`stickslip.fem.paraview.run_snapshot`, on the annulus's
+problem `problem.annulus_problem`) and the annulus's polar components beside them.
+
 point data (every node of the mesh, the clamped ring ``r = xi`` included, where ``u = 0``)
     ``displacement``: total displacement from the unstressed ring (steady shrink fit plus
     the motion), ``u_r``, ``u_theta``: its polar components, ``velocity``: the scheme's
@@ -23,9 +26,10 @@ point data (every node of the mesh, the clamped ring ``r = xi`` included, where 
     3 separation); away from ``r = 1`` pressure, shear and traction are 0, the state -1.
 cell data (the mean over each quadrilateral of the FE stress, plane strain: the general body's
 `stickslip.fem.assembly.cell_stress` of the nodal displacement)
-    ``stress``: the Cartesian tensor, 9 components row by row (``xx xy xz yx yy yz zx zy zz``,
-    ``sigma_zz = lambda (eps_xx + eps_yy)``); ``sigma_rr``, ``sigma_thth``, ``sigma_rth``:
-    its polar components at the cell's centre angle.
+    ``stress_xx``, ``stress_yy``, ``stress_xy``, ``von_mises`` (`stickslip.fem.assembly.von_mises`)
+    and ``material`` (0: the one material); ``stress``: the Cartesian tensor, 9 components row
+    by row (``xx xy xz yx yy yz zx zy zz``, ``sigma_zz = nu (sigma_xx + sigma_yy)``);
+    ``sigma_rr``, ``sigma_thth``, ``sigma_rth``: its polar components at the cell's centre angle.
 
 The files are written in a hidden temporary folder beside ``path`` (removed afterwards, or
 left behind by a killed process) and moved into place, the ``.h5`` first, then the
@@ -40,66 +44,37 @@ from pathlib import Path
 import numpy as np
 
 from ...errors import ParameterError
-from ...fem import Material, assemble
-from ...fem.assembly import cell_stress
+from ...fem.paraview import run_snapshot
 from ...files import write_xdmf_series
-from .mesh import FemSystem
 from .run import FemRun
 
 __all__ = ["write_xdmf"]
 
 
-class _Fields:
-    """Nodal Cartesian fields and cell stresses of one mesh, from free-dof vectors (polar frames)."""
-
-    def __init__(self, system: FemSystem):
-        mesh = system.mesh.mesh
-        self.nodes, self.n_contact = mesh.p.shape[1], system.n_contact
-        ang = np.arctan2(mesh.p[1], mesh.p[0])
-        self.cos, self.sin = np.cos(ang), np.sin(ang)
-        centre = mesh.p[:, mesh.t].mean(axis=1)
-        cell = np.arctan2(centre[1], centre[0])
-        self.cell_cos, self.cell_sin = np.cos(cell), np.sin(cell)
-        self.general = assemble(system.mesh.body, Material(1.0, system.nu, 1.0, scaled=True))
-        self.nu = system.nu
-
-    def polar(self, free: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Free-dof vector -> ``(radial, hoop)`` at every node (0 on the clamped ring)."""
-        full = np.zeros(2 * self.nodes)
-        full[:free.size] = free
-        return full[0::2], full[1::2]
-
-    def cartesian(self, radial, hoop) -> np.ndarray:
-        """Polar components at the nodes -> ``(nodes, 3)`` Cartesian vectors, ``z = 0``."""
-        return np.column_stack([self.cos * radial - self.sin * hoop, self.sin * radial + self.cos * hoop,
-                                np.zeros(self.nodes)])
-
-    def stress(self, ux, uy) -> tuple[np.ndarray, tuple]:
-        """Cell means of the plane-strain stress: the 9-component tensor and ``(rr, thth, rth)``."""
-        u = np.empty(2 * self.nodes)
-        u[0::2], u[1::2] = ux, uy
-        sxx, syy, sxy = cell_stress(self.general, u).T
-        szz = self.nu * (sxx + syy)  # plane strain: lambda (eps_xx + eps_yy)
-        zero = np.zeros_like(sxx)
-        tensor = np.column_stack([sxx, sxy, zero, sxy, syy, zero, zero, zero, szz])
-        c, s = self.cell_cos, self.cell_sin
-        polar = (c * c * sxx + s * s * syy + 2 * c * s * sxy, s * s * sxx + c * c * syy - 2 * c * s * sxy,
-                 c * s * (syy - sxx) + (c * c - s * s) * sxy)
-        return tensor, polar
-
-    def snapshot(self, u, v, P, Q, state) -> tuple[dict, dict]:
-        """Point and cell data of one volume snapshot."""
-        ur, ut = self.polar(u)
-        disp = self.cartesian(ur, ut)
-        on = slice(0, self.n_contact)  # the contact nodes come first (r = 1)
-        p, q, code = np.zeros(self.nodes), np.zeros(self.nodes), np.full(self.nodes, -1, dtype=np.int32)
-        p[on], q[on], code[on] = P, Q, state
-        tensor, (srr, stt, srt) = self.stress(disp[:, 0], disp[:, 1])
-        points = {"displacement": disp, "u_r": ur, "u_theta": ut, "velocity": self.cartesian(*self.polar(v)),
-                  "contact_pressure": p, "contact_shear": q, "contact_traction": self.cartesian(p, q),
-                  "contact_state": code}
-        cells = {"stress": [tensor], "sigma_rr": [srr], "sigma_thth": [stt], "sigma_rth": [srt]}
-        return points, cells
+def _polar(scheme, snapshots: dict, k: int) -> tuple[float, dict, dict]:
+    """The general body's fields of snapshot ``k`` and the annulus's polar components beside them
+    (the displacement's exactly as the run holds them: its dofs are polar)."""
+    time, points, cells = run_snapshot(scheme, snapshots, k)
+    p = scheme.problem.system.body.points
+    ang = np.arctan2(p[:, 1], p[:, 0])
+    c, s = np.cos(ang), np.sin(ang)
+    polar = np.zeros(2 * len(p))
+    polar[scheme.free] = snapshots["vol_u"][k]
+    pressure, shear = points["contact_pressure"], points["contact_shear"]
+    traction = np.column_stack([c * pressure - s * shear, s * pressure + c * shear, np.zeros_like(c)])
+    points = {**points, "u_r": polar[0::2], "u_theta": polar[1::2],
+              "contact_traction": traction}
+    sxx, syy, sxy = cells["stress_xx"][0], cells["stress_yy"][0], cells["stress_xy"][0]
+    szz = scheme.params.nu * (sxx + syy)  # plane strain: lambda (eps_xx + eps_yy), E = 1
+    zero = np.zeros_like(sxx)
+    centre = p[scheme.problem.system.body.cells].mean(axis=1)
+    cell = np.arctan2(centre[:, 1], centre[:, 0])
+    c, s = np.cos(cell), np.sin(cell)
+    cells = {**cells, "stress": [np.column_stack([sxx, sxy, zero, sxy, syy, zero, zero, zero, szz])],
+             "sigma_rr": [c * c * sxx + s * s * syy + 2 * c * s * sxy],
+             "sigma_thth": [s * s * sxx + c * c * syy - 2 * c * s * sxy],
+             "sigma_rth": [c * s * (syy - sxx) + (c * c - s * s) * sxy]}
+    return time, points, cells
 
 
 def write_xdmf(run: FemRun, path) -> Path:
@@ -121,9 +96,8 @@ def write_xdmf(run: FemRun, path) -> Path:
     if not run.settings.get("volume_every") or len(run.snapshots.get("vol_t", ())) == 0:
         raise ParameterError("run", "a run without volume snapshots", "a FemRun integrated with volume_every=T "
                              "(volume snapshots every T transits), holding at least one")
-    fields, mesh = _Fields(run.scheme.system), run.scheme.system.mesh.mesh
-    points = np.column_stack([mesh.p.T, np.zeros(mesh.p.shape[1])])
-    snaps = run.snapshots
-    steps = ((t, *fields.snapshot(*(snaps[f"vol_{n}"][k] for n in ("u", "v", "P", "Q", "state"))))
-             for k, t in enumerate(snaps["vol_t"]))
-    return write_xdmf_series(path, points, [("quad", mesh.t.T.astype(np.int64))], steps)
+    scheme, snaps = run.scheme, run.snapshots
+    body = scheme.problem.system.body
+    points = np.column_stack([body.points, np.zeros(len(body.points))])
+    steps = (_polar(scheme, snaps, k) for k in range(len(snaps["vol_t"])))
+    return write_xdmf_series(path, points, [(body.kind, body.cells.astype(np.int64))], steps)

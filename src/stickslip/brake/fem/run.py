@@ -31,14 +31,12 @@ import numpy as np
 
 from ...quantities import BRAKE as Q
 from ...contact import RunFormat, RunRecord, prepare, run_explicit
+from ...contact.runs import MAX_VOLUME
 from ...errors import ParameterError
 from ..reduced import BrakeParams
 from .scheme import FemScheme
 
 __all__ = ["FemInitial", "FemRun", "integrate_fem", "perturbed_steady", "MAX_VOLUME"]
-
-#: The most numbers the volume snapshots of one run may hold (1.25e8 float64: 1 GB of memory).
-MAX_VOLUME = 1.25e8
 
 
 @dataclass(frozen=True, eq=False)
@@ -171,13 +169,5 @@ def integrate_fem(params: BrakeParams, n_theta: int = 256, n_r: int = 16, t_end:
     t_end, settings = prepare(scheme, t_end=t_end, transits=transits, samples_per_transit=samples_per_transit,
                               snapshot_every=snapshot_every, tail=tail, modes=modes, contact=contact,
                               initial=initial, progress=progress, volume_every=volume_every)
-    if settings["volume_every"]:
-        count = -(-settings["samples_total"] // settings["volume_every"]) + 1  # and one at t = 0
-        size = scheme.system.n_free * 2 + scheme.n_theta * 3
-        if count * size > MAX_VOLUME:
-            sample = settings["chunk"] * scheme.dt / scheme.transit_time  # in transits
-            least = (settings["samples_total"] * size / max(MAX_VOLUME - 2 * size, size) + 1) * sample
-            raise ParameterError("volume_every", volume_every, f">= {least:.3g} transits for this run ({count} volume "
-                                 f"snapshots of {size} numbers; at most {MAX_VOLUME:.3g} numbers, 1 GB, in all)")
     return run_explicit(FemRun, scheme, initial.u, initial.v, settings, t_end, checkpoint=checkpoint, every=every,
                         progress=progress, overwrite=overwrite)

@@ -1,14 +1,15 @@
-"""The FE annulus as an explicit contact scheme ([21]-[23]) of `stickslip.contact`.
+"""The FE annulus as an explicit contact scheme ([21]-[23]): the general body's, with the stencil.
 
 Semi-discrete problem ([21]): ``gamma M u_tt + K u = C^T lambda`` with the lumped (diagonal)
 mass ``M``, the stiffness ``K`` of `mesh.assemble` and reactions ``lambda`` on the contact
 dofs only (polar frames: ``lambda_n`` on the radial dof, ``lambda_t`` on the hoop dof of each
-node at ``r = 1``). The step is the shared one (`stickslip.contact.kernel`, see
-``docs/theory/brake-fem.md``): explicit beta2 predictor, forward-increment multipliers node
-by node, corrector; ``A_m = -(gamma M)^{-1} K u_m`` comes from the block-circulant stencil
-of the structured mesh (the fast path) or from the sparse matrix (the general path). The
-shaft is the rigid surface, at ``u_r = delta``, moving at ``R Omega`` = 1; the reactions
-are per unit mass, ``r = lambda / (gamma m_c)`` (``m_c`` the contact node's lumped mass).
+node at ``r = 1``). `FemScheme` is the general body's scheme (`stickslip.fem.scheme.BodyScheme`)
+on the annulus's problem (`problem.annulus_problem`: its steady sliding, contact frames,
+reactions, damping and friction), written in polar frames at every node, where the structured
+mesh makes ``(gamma M)^{-1} K`` a block-circulant stencil (the fast path; the general sparse
+matrix, in the same frames, is the other path). The shaft is the rigid surface, at
+``u_r = delta``, moving at ``R Omega`` = 1; the reactions are per unit mass, ``r = lambda /
+(gamma m_c)`` (``m_c`` the contact node's lumped mass). See ``docs/theory/brake-fem.md``.
 """
 
 from __future__ import annotations
@@ -20,9 +21,11 @@ from typing import ClassVar
 import numpy as np
 
 from ...contact import ExplicitScheme
+from ...fem.scheme import BodyScheme
 from ..reduced import BrakeParams, ReducedCoefficients, elastic_moduli
 from .mesh import FemSystem, annulus_mesh, assemble
 from .modes import max_frequency
+from .problem import annulus_problem
 from .static import FemSteady, steady_state
 
 __all__ = ["FemScheme"]
@@ -34,8 +37,8 @@ def _system(n_theta: int, n_r: int, xi: float, nu: float) -> FemSystem:
     return assemble(annulus_mesh(n_theta, n_r, xi), nu)
 
 
-@dataclass(frozen=True, eq=False)
-class FemScheme(ExplicitScheme):
+@dataclass(frozen=True, eq=False, init=False)
+class FemScheme(BodyScheme):
     """The FE discretisation of [10] on an ``n_theta x n_r`` mesh and its explicit time step.
 
     Parameters
@@ -56,14 +59,24 @@ class FemScheme(ExplicitScheme):
     params: BrakeParams
     n_theta: int = 256
     n_r: int = 16
-    beta2: float = 0.9
-    courant: float = 0.9
+
+    def __init__(self, params: BrakeParams, n_theta: int = 256, n_r: int = 16, beta2: float = 0.9,
+                 courant: float = 0.9):
+        for name, value in (("params", params), ("n_theta", n_theta), ("n_r", n_r), ("beta2", beta2),
+                            ("courant", courant), ("time_step", None)):
+            object.__setattr__(self, name, value)
+        self.__post_init__()
 
     def __post_init__(self):
         self.validate_common()
         annulus_mesh(self.n_theta, self.n_r, self.params.xi)  # validates n_theta, n_r
         object.__setattr__(self, "n_theta", int(self.n_theta))
         object.__setattr__(self, "n_r", int(self.n_r))
+
+    @cached_property
+    def problem(self):
+        """The annulus as a problem of the general body (`annulus_problem`)."""
+        return annulus_problem(self.params, self.n_theta, self.n_r)
 
     @cached_property
     def system(self) -> FemSystem:
@@ -73,32 +86,33 @@ class FemScheme(ExplicitScheme):
     def steady(self) -> FemSteady:
         return steady_state(self.params, self.system)
 
-    # --- the interface of stickslip.contact ----------------------------------------------
+    # --- where the annulus differs from the general body ----------------------------------
+    @cached_property
+    def rotation(self):
+        """Polar frames at every node (at the bore, the contact frames ``(n, t) = (e_r, e_theta)``):
+        the frames in which the structured mesh's operator is block circulant."""
+        return self.system.mesh.polar_rotation
+
     @cached_property
     def stencil(self) -> np.ndarray:
         """Stencil of ``(gamma M)^{-1} K`` (row layer ``i`` divided by its mass)."""
         m = self.params.gamma * self.system.mass[::2 * self.n_theta]
         return np.ascontiguousarray(self.system.stencil / m[:, None, None, None, None])
 
+    def operator_matrix(self):
+        """The stencil as a sparse matrix (the same operator as the fast path, summed in another
+        order; the general assembly in these frames, ``stiffness / mass``, equals it to 1e-15)."""
+        return ExplicitScheme.operator_matrix(self)
+
     @property
     def mass(self) -> np.ndarray:
-        """Physical lumped mass ``gamma M`` of the free dofs."""
+        """Physical lumped mass ``gamma M`` of the free dofs (one value per ring of nodes, exactly)."""
         return self.params.gamma * self.system.mass
 
     @cached_property
-    def contact_dofs(self) -> tuple[np.ndarray, np.ndarray]:
-        j = np.arange(self.n_theta, dtype=np.int64)  # the inner layer r = 1 comes first
-        return 2 * j, 2 * j + 1
-
-    @cached_property
     def surface(self) -> tuple[np.ndarray, np.ndarray]:
-        """The shaft: ``u_r >= delta``, surface speed ``R Omega`` = 1."""
+        """The shaft: ``u_r >= delta``, surface speed ``R Omega`` = 1 (the paper's numbers, exactly)."""
         return np.full(self.n_theta, self.params.delta), np.ones(self.n_theta)
-
-    def steady_reference(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """FE steady sliding (`steady_state`) and its reactions per unit mass."""
-        m = self.mass[0]
-        return self.steady.u, self.steady.reaction_n / m, self.steady.reaction_t / m
 
     @property
     def theta(self) -> np.ndarray:

@@ -2,15 +2,12 @@
 
 Every contact node slips forward (the shaft surface moves at speed 1, the ring is at
 rest), so its radial displacement is held, ``u_r = delta``, and its hoop dof carries the
-friction ``f lambda_n``, where ``lambda_n = (K u)_r`` is the radial reaction. With ``c``
-the contact radial dofs and ``F`` all other free dofs this is the linear (non-symmetric)
-system
-
-    (K_FF - f E K_cF) u_F = -(K_Fc - f E K_cc) delta 1,
-
-``E`` moving the row of contact node ``j``'s radial dof to its hoop dof. The solution is
-an exact fixed point of the explicit scheme (the reactions the scheme computes at rest are
-``lambda_n`` and ``f lambda_n``). It must agree with the Lamé solution `brake.reduced.steady`:
+friction ``f lambda_n``, where ``lambda_n = (K u)_r`` is the radial reaction. This is the
+general body's steady sliding (`stickslip.fem.static.steady_contact`) on the annulus's problem
+(`problem.annulus_problem`: the shaft a rigid cylinder ``delta`` into the bore, every bore
+node active from the first iteration), written in the annulus's polar frames. The solution
+is an exact fixed point of the explicit scheme (the reactions the scheme computes at rest are
+``lambda_n`` and ``f lambda_n``). It must agree with the Lame solution `brake.reduced.steady`:
 ``u = delta X(r)``, ``v = V_e X(r)`` and ``p = lambda_n / (2 pi / n_theta) = p_e``, up to the
 discretisation error ``O(h^2)``.
 """
@@ -22,8 +19,6 @@ from typing import ClassVar
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.sparse as sp
-import scipy.sparse.linalg as spla
 import xarray as xr
 
 from ...results import Result
@@ -32,6 +27,7 @@ from ...errors import ParameterError
 from ..reduced.params import BrakeParams
 from ..reduced.steady import steady_sliding
 from .mesh import FemSystem, annulus_mesh, assemble
+from .problem import annulus_problem
 
 __all__ = ["FemSteady", "steady_state"]
 
@@ -111,17 +107,6 @@ def steady_state(params: BrakeParams, system: FemSystem | None = None, *, n_thet
     if not isinstance(system, FemSystem) or abs(system.nu - params.nu) > 1e-15 or \
             abs(system.mesh.xi - params.xi) > 1e-12 * params.xi:
         raise ParameterError("system", system, "a FemSystem assembled with params.xi and params.nu")
-    K, n, N = system.K, system.n_free, system.n_contact
-    c = 2 * np.arange(N)
-    F = np.setdiff1d(np.arange(n), c)
-    pos = np.full(n, -1)
-    pos[F] = np.arange(F.size)
-    E = sp.csr_matrix((np.ones(N), (pos[c + 1], np.arange(N))), shape=(F.size, N))  # radial row j -> hoop dof j
-    K_FF, K_Fc, K_cF, K_cc = K[F][:, F], K[F][:, c], K[c][:, F], K[c][:, c]
-    f, delta = params.friction, params.delta
-    A = (K_FF - f * (E @ K_cF)).tocsc()
-    b = -(K_Fc - f * (E @ K_cc)) @ np.full(N, delta)
-    u = np.empty(n)
-    u[c], u[F] = delta, spla.spsolve(A, b)
-    lam_n = K[c] @ u
-    return FemSteady(params, system, u, lam_n, f * lam_n)
+    general = annulus_problem(params, system.mesh.n_theta, system.mesh.n_r).steady
+    u = (system.mesh.polar_rotation.T @ general.u)[:system.n_free]  # the clamped ring comes last
+    return FemSteady(params, system, u, general.pressure.copy(), general.shear.copy())
