@@ -35,6 +35,7 @@ from stickslip.fem import (
 from stickslip.fem.assembly import cell_stress
 from stickslip.fem.cea import complex_eigenvalues
 from stickslip.fem.pair import PairProblem, Rotation, Translation, steady_pair
+from stickslip.friction import PressurePower, Stribeck
 
 from .meshes import rectangle
 
@@ -84,19 +85,25 @@ def pad(tmp_path_factory):
     return assemble(body, Material(1e10, 0.25, 2500.0)), under
 
 
-def _pair_and_rigid(pad, ratio, friction=0.5):
+def _pair_and_rigid(pad, ratio, friction=0.5, **laws):
     system, under = pad
+    friction = {"friction": friction} if "law" not in laws else {}
     rigid = ContactProblem(system, contact_frames(system.body, "bottom", RigidFlat((0, 2e-6), (0, 1), (1.0, 0))),
-                           friction, ("top",))
+                           clamped=("top",), **friction, **laws)
     partner = assemble(under, Material(1e10 * ratio, 0.25, 2500.0))
-    pair = PairProblem(system, "bottom", partner, "top", Translation((1.0, 0.0)), friction, ("top",), ("bottom",))
+    pair = PairProblem(system, "bottom", partner, "top", Translation((1.0, 0.0)), clamped_slave=("top",),
+                       clamped_master=("bottom",), **friction, **laws)
     return rigid, pair
 
 
-def test_a_stiff_partner_reproduces_the_rigid_surface(pad):
+@pytest.mark.parametrize("laws", [{}, {"law": Stribeck(0.6, 0.5, 0.2), "pressure_law": PressurePower(2e6, 0.2)}],
+                         ids=["coulomb", "stribeck-and-pressure"])
+def test_a_stiff_partner_reproduces_the_rigid_surface(pad, laws):
+    """With a law of the slip speed (the CEA's slope term on the relative velocity) and a
+    coefficient of the pressure (its fixed point in steady sliding, ``mu (1 - n)`` in the CEA) too."""
     errors = []
     for ratio in (1e2, 1e3):
-        rigid, pair = _pair_and_rigid(pad, ratio)
+        rigid, pair = _pair_and_rigid(pad, ratio, **laws)
         order = np.searchsorted(pair.coupling.slave_nodes, rigid.frames.nodes)  # the pair's slave nodes, along the line
         assert np.array_equal(pair.steady.active[order], rigid.steady.active) and not rigid.steady.active.all()
         force = pair.coupling.D.T @ pair.steady.pressure  # on the pad's mesh nodes [N/m]

@@ -70,10 +70,6 @@ def test_the_cea_finds_disc_modes_and_a_pad_disc_flutter(folder, capsys):
     ("omega = 30.0", "omega = 30.0\nvelocity = [1.0, 0.0]", "one of them"),
     ("young = 1.25e11", "young = -1.0", "partner.material.young"),
     ('mesh = "disc.msh"', 'mesh = "nowhere.msh"', "partner.mesh"),
-    ("friction = 0.5", 'friction = 0.5\nlaw = "stribeck"\nstribeck_speed = 0.1\nstatic_friction = 0.6',
-     "do not apply with a [partner]"),
-    ("friction = 0.5", "friction = 0.5\npressure_exponent = 0.1\nreference_pressure = 1e6",
-     "contact.pressure_exponent do not apply with a [partner]"),
     ("omega = 30.0", "velocity = [1.0, 0.0]", "partner.center applies with partner.omega only"),
     ("omega = 30.0", "velocity = [1.0, 0.0]\ngyroscopic = true", "true only with partner.omega"),
     ("count = 30", 'count = 30\nmass_matrix = "consistent"', "cea.mass_matrix, cea.contact_model and cea.penalty "
@@ -142,3 +138,30 @@ def test_the_turning_discs_gyroscopic_terms(folder, capsys):
     assert np.all((np.array(ratios) > 5) & (np.array(ratios) < 20)), ratios
     top = plain[np.argmax(plain.real)]
     assert abs(fast[np.argmin(np.abs(fast - top))] - top) < 0.02 * abs(top)
+
+
+def test_a_pad_on_the_disc_takes_a_law_of_the_slip_speed_and_of_the_pressure(folder, capsys, tmp_path):
+    """`[contact] law` and `pressure_exponent` with a `[partner]`: steady sliding's friction force is
+    the sum over the slave nodes of the law at the disc's sliding speed times the pressure factor
+    at each node's own pressure (computed here from the multipliers and the mortar weights), and
+    the CEA and a short run go through, their attributes naming the laws."""
+    from stickslip.friction import PressurePower, Stribeck
+
+    path = _config(folder, "friction = 0.5", 'friction = 0.5\nstatic_friction = 0.6\nlaw = "stribeck"\n'
+                   "stribeck_speed = 2.0\npressure_exponent = 0.2\nreference_pressure = 1e6")
+    assert run(["fem", "steady", str(path), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    problem = load_config(path).problem()
+    st, w = problem.steady, problem.coupling.weight
+    speed = problem.tangent[1]
+    mu = Stribeck(0.6, 0.5, 2.0).kinetic(speed) * PressurePower(1e6, 0.2).factor(st.pressure)
+    assert data["friction_force"] == pytest.approx(float(np.sum(w * mu * st.pressure)), rel=1e-12)
+    assert np.ptp(st.pressure[st.active]) > 0.05 * st.pressure.max()  # each node its own coefficient
+    assert data["params"]["friction_law"].startswith("Stribeck") and data["params"]["pressure_exponent"] == 0.2
+    assert run(["fem", "cea", str(path), "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["modes"]
+    out = tmp_path / "run.nc"
+    assert run(["fem", "run", str(path), "--transits", "1", "--out", str(out), "--json"]) == 0
+    import xarray as xr
+    with xr.open_dataset(out) as ds:
+        assert "Stribeck" in ds.attrs["friction_law"] and ds.attrs["reference_pressure"] == 1e6

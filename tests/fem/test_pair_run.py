@@ -2,7 +2,9 @@
 pressed 2 micrometres in, f = 0.5) on a block sliding under it.
 
 * Steady sliding of the pair (`steady_pair`, a linear solve) is a state of the scheme: left
-  unperturbed, 2000 steps keep it to 1e-12 of its largest displacement.
+  unperturbed, 2000 steps keep it to 1e-12 of its largest displacement (with a law of the slip
+  speed and a coefficient of the pressure too, to 1e-10: each node's coefficient found by
+  fixed-point iteration in steady sliding and at its own force in the coupled kernel).
 * The energy books of `stickslip.contact.energy` close to round-off (1e-10 of the largest
   change of energy per step) at beta2 = 1/2 and 0.9, on a start violent enough that nodes
   stick, slip and separate. Their contact terms are computed from each slave node's force on
@@ -11,7 +13,10 @@ pressed 2 micrometres in, f = 0.5) on a block sliding under it.
 * A partner stiffer and heavier by the same factor (its frequencies unchanged: the same step)
   reproduces the run of the pad on a rigid flat (the verified single-body scheme): the contact
   nodes' displacements over 2000 steps within 10 x the compliance ratio, first order in it
-  (the error at 1e2 at least 5 times that at 1e3), every node state the same.
+  (the error at 1e2 at least 5 times that at 1e3), every node state the same; with a Stribeck
+  law and a coefficient of the pressure too (the two kernels scale the pressure their own way:
+  the rigid one from a reaction per unit mass and the tributary length, the coupled one from a
+  force and the mortar's weight).
 * The explicit run and the CEA, two independent routes to the same linear dynamics: from
   steady sliding perturbed by 1e-9, the energy of the run grows (while every node slips) at
   twice the discrete growth rate (`discrete_rates`, central differences) of the CEA's most
@@ -31,6 +36,7 @@ from stickslip.fem.pair import PairProblem, Translation
 from stickslip.fem.pair_run import PairRun, PairScheme, integrate_pair
 from stickslip.fem.run import perturbed_steady_body
 from stickslip.fem.scheme import BodyScheme
+from stickslip.friction import LinearWeakening, PressurePower, Stribeck
 
 from .meshes import rectangle
 
@@ -47,19 +53,29 @@ def bodies(tmp_path_factory):
     return folder, assemble(pad, Material(1e8, 0.25, 25.0)), under
 
 
-def _pair(bodies, ratio=1.0, friction=0.5):
+def _pair(bodies, ratio=1.0, friction=0.5, **laws):
     _, system, under = bodies
     partner = assemble(under, Material(1e8 * ratio, 0.25, 25.0 * ratio))
-    return PairProblem(system, "bottom", partner, "top", Translation((1.0, 0.0)), friction, ("top",), ("bottom",))
+    friction = {"law": laws.pop("law")} if "law" in laws else {"friction": friction}
+    return PairProblem(system, "bottom", partner, "top", Translation((1.0, 0.0)), clamped_slave=("top",),
+                       clamped_master=("bottom",), **friction, **laws)
 
 
-def test_steady_sliding_of_the_pair_is_a_state_of_the_scheme(bodies):
-    scheme = PairScheme(_pair(bodies))
-    u_e, r_n, _ = scheme.steady_reference()
+#: a law of the slip speed and a coefficient that falls with the pressure (about 2e4 Pa under the pad)
+LAWS = {"law": Stribeck(0.6, 0.5, 0.2), "pressure_law": PressurePower(2e4, 0.3)}
+
+
+@pytest.mark.parametrize("laws, tol", [({}, 1e-12), ({"law": LinearWeakening(0.5, 0.5, 0.1),
+                                                       "pressure_law": PressurePower(2e4, 0.3)}, 1e-10)],
+                         ids=["coulomb", "weakening-and-pressure"])
+def test_steady_sliding_of_the_pair_is_a_state_of_the_scheme(bodies, laws, tol):
+    scheme = PairScheme(_pair(bodies, **laws))
+    u_e, r_n, r_t = scheme.steady_reference()
     assert (r_n > 0).sum() >= 5
     state = scheme.initial_state(u_e, np.zeros_like(u_e))
-    scheme.advance(state, 2000)
-    assert np.abs(state.u - u_e).max() <= 1e-12 * np.abs(u_e).max()
+    out = scheme.advance(state, 2000)
+    assert np.abs(state.u - u_e).max() <= tol * np.abs(u_e).max()
+    assert np.abs(out.lam_t - r_t).max() <= 1e3 * tol * np.abs(r_t).max()
 
 
 @pytest.mark.parametrize("beta2", [0.5, 0.9])
@@ -74,13 +90,14 @@ def test_the_energy_books_of_two_bodies_close(bodies, beta2):
     assert books.surface_work.sum() > 0 and books.friction_dissipation.sum() > 0
 
 
-def test_a_stiff_heavy_partner_reproduces_the_pad_on_a_rigid_flat(bodies):
+@pytest.mark.parametrize("laws", [{}, LAWS], ids=["coulomb", "stribeck-and-pressure"])
+def test_a_stiff_heavy_partner_reproduces_the_pad_on_a_rigid_flat(bodies, laws):
     _, system, _ = bodies
-    rigid = ContactProblem(system, contact_frames(system.body, "bottom", RigidFlat((0, 2e-6), (0, 1), (1.0, 0))),
-                           0.5, ("top",))
+    frames = contact_frames(system.body, "bottom", RigidFlat((0, 2e-6), (0, 1), (1.0, 0)))
+    rigid = ContactProblem(system, frames, clamped=("top",), **(laws or {"friction": 0.5}))
     errors = []
     for ratio in (1e2, 1e3):
-        pair = PairScheme(_pair(bodies, ratio))
+        pair = PairScheme(_pair(bodies, ratio, **laws))
         dt = min(pair.dt, BodyScheme(rigid).dt)
         runs = []
         for scheme in (BodyScheme(rigid, time_step=dt), PairScheme(pair.params, time_step=dt)):

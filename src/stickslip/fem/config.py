@@ -151,9 +151,12 @@ class FemConfig:
         if self.partner is not None:
             p = self.partner
             other = p.body if p.body is not None else read_body(p.mesh)
+            friction = {"law": self.law} if self.law is not None else {"friction": self.friction,
+                                                                         "static_friction": self.static_friction}
             return PairProblem(assemble(body, self.material, self.springs, self.loads), self.group,
-                               assemble(other, p.material), p.group, p.motion, self.friction, self.clamped, p.clamped,
-                               p.gyroscopic)
+                               assemble(other, p.material), p.group, p.motion, clamped_slave=self.clamped,
+                               clamped_master=p.clamped, gyroscopic=p.gyroscopic, pressure_law=self.pressure_law,
+                               **friction)
         for name in (*self.clamped, self.group):
             body.group(name, "clamped" if name in self.clamped else "contact.group")
         frames = contact_frames(body, self.group, self.surface)
@@ -308,9 +311,6 @@ def _checked(path: Path, data: dict) -> FemConfig:
         if "surface" in data:
             problems.append("[surface] and [partner] exclude each other (a rigid counter-surface or an elastic "
                             "counter-body)")
-        if law is not None or static is not None or pressure_law is not None:
-            problems.append("contact.law, contact.static_friction and contact.pressure_exponent do not apply with a "
-                            "[partner] (two bodies slide with Coulomb friction at contact.friction, for now)")
         partner = _partner(problems, path, data["partner"] if isinstance(data["partner"], dict) else {})
         surface = None
     else:

@@ -37,6 +37,14 @@ multipliers as unknowns without mass: ``(s^2 M + s C + K) u = B^T lambda``, ``G_
 is described in space-fixed (Eulerian) coordinates: its gyroscopic matrix joins the damping
 and its transport softening the stiffness (`stickslip.fem.assembly.transport_operators`),
 in steady sliding and the CEA; the centrifugal load and stress stiffening stay out.
+
+**Friction laws.** Coulomb ``friction`` (and a ``static_friction`` for explicit runs), or a law of
+the slip speed (`stickslip.friction`), each slave node's coefficient ``mu_j = mu(V_j)`` at the
+master's sliding speed there: ``B = G + diag(mu) T``; the CEA adds the damping
+``T^T diag(lambda g mu'(V) / w) T`` of the relative tangential velocity ``(T u')_j / w_j`` (a
+falling law is negative damping); and a coefficient that depends on the pressure
+(``pressure_law``, `stickslip.friction.PressurePower`): ``mu_j g(lambda_j)``, found by fixed-point
+iteration in steady sliding, ``mu_j g_j (1 - n)`` in the CEA's friction rows.
 """
 
 from __future__ import annotations
@@ -53,12 +61,14 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as sla
 import xarray as xr
 
+from .. import validation as check
 from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
+from ..friction import FrictionLaw, PressurePower
 from ..quantities import FEM as Q
 from ..results import Result
 from .assembly import BodySystem, transport_operators
-from .static import ITERATIONS
+from .static import ITERATIONS, PRESSURE_ITERATIONS
 from .surfaces import MAX_SPEED
 
 __all__ = ["Mortar", "PairProblem", "PairSteady", "Rotation", "Translation", "mortar", "sliding", "steady_pair"]
@@ -230,7 +240,13 @@ def sliding(coupling: Mortar, motion, points, required: bool = True) -> tuple[np
 class PairProblem:
     """A ``slave`` body (the pad) on a ``master`` body (the disc), both `BodySystem`: their
     contact groups, the master's ``motion`` (`Rotation` or `Translation`), the Coulomb
-    ``friction`` and each body's clamped boundary groups."""
+    ``friction`` and each body's clamped boundary groups.
+
+    As a `stickslip.fem.scheme.ContactProblem`'s: a ``static_friction >= friction`` (explicit
+    runs; None: the same), or a friction ``law`` of the slip speed instead of both (each slave
+    node's kinetic coefficient at the master's sliding speed there, ``law.slope`` in the CEA's
+    damping on the relative tangential velocity), and a ``pressure_law`` (each node's
+    coefficients times ``(P / P_ref)^(-n)`` at its multiplier ``P``)."""
 
     slave: BodySystem
     slave_group: str
@@ -241,18 +257,62 @@ class PairProblem:
     clamped_slave: tuple = ()
     clamped_master: tuple = ()
     gyroscopic: bool = False
+    static_friction: float | None = None
+    law: FrictionLaw | None = None
+    pressure_law: PressurePower | None = None
 
     def __post_init__(self):
         for name in ("slave", "master"):
             if not isinstance(getattr(self, name), BodySystem):
                 raise ParameterError(name, getattr(self, name), "a BodySystem (see assemble)")
         object.__setattr__(self, "friction", Q.check("friction", self.friction))
+        if self.law is not None:
+            if not isinstance(self.law, FrictionLaw):
+                raise ParameterError("law", self.law, "a friction law of stickslip.friction or None")
+            if self.friction != 0.0 or self.static_friction is not None:
+                raise ParameterError("friction", self.friction, "left out with a law (the law gives the kinetic "
+                                     "coefficient at the sliding speed, and the static one)", also=("law",))
+        elif self.static_friction is not None:
+            object.__setattr__(self, "static_friction", check.at_least(
+                "static_friction", Q.check("static_friction", self.static_friction), self.friction, "friction"))
+        if self.pressure_law is not None and not isinstance(self.pressure_law, PressurePower):
+            raise ParameterError("pressure_law", self.pressure_law, "a stickslip.friction.PressurePower or None")
         if not isinstance(self.motion, (Rotation, Translation)):
             raise ParameterError("motion", self.motion, "a Rotation or a Translation of the master")
         if not isinstance(self.gyroscopic, bool) or (self.gyroscopic and not isinstance(self.motion, Rotation)):
             raise ParameterError("gyroscopic", self.gyroscopic, "true or false, true only with a turning master "
                                  "(a Rotation)")
         _ = self.tangent  # the coupling and the sliding direction: a pair that cannot touch is refused here
+        if self.law is not None:
+            speed = self.tangent[1]
+            if speed.max() >= self.law.max_speed:
+                raise ParameterError("law", self.law, f"a law valid at the sliding speed {speed.max():.6g} m/s (this "
+                                     f"one up to {self.law.max_speed:.6g} m/s)")
+            object.__setattr__(self, "friction", float(np.max(self.law.kinetic(speed))))
+            object.__setattr__(self, "static_friction", float(self.law.static))
+        elif self.static_friction is None:
+            object.__setattr__(self, "static_friction", float(self.friction))
+
+    @cached_property
+    def kinetic(self) -> np.ndarray:
+        """Each slave node's kinetic coefficient at the master's sliding speed there (``friction``
+        everywhere without a law)."""
+        if self.law is None:
+            return np.full(len(self.coupling.slave_nodes), float(self.friction))
+        return np.asarray(self.law.kinetic(self.tangent[1]), dtype=float)
+
+    @cached_property
+    def slopes(self) -> np.ndarray:
+        """``d mu / d v_r`` [s/m] at each slave node's sliding speed (0 without a law)."""
+        if self.law is None:
+            return np.zeros(len(self.coupling.slave_nodes))
+        return np.asarray(self.law.slope(self.tangent[1]), dtype=float) + np.zeros(len(self.coupling.slave_nodes))
+
+    def factor(self, pressure: np.ndarray) -> np.ndarray:
+        """The pressure law's factor at each slave node's multiplier (1 without one)."""
+        if self.pressure_law is None:
+            return np.ones(len(pressure))
+        return self.pressure_law.factor(pressure)
 
     @cached_property
     def coupling(self) -> Mortar:
@@ -275,7 +335,8 @@ class PairProblem:
     def tangent(self) -> tuple[np.ndarray, np.ndarray]:
         """``(t, speed)``: the unit tangent at each slave node along the master's sliding there,
         and that sliding speed [m/s] (`sliding`)."""
-        return sliding(self.coupling, self.motion, self.slave.body.points, required=self.friction > 0)
+        return sliding(self.coupling, self.motion, self.slave.body.points,
+                       required=self.friction > 0 or self.law is not None)
 
     def _rows(self, direction: np.ndarray) -> sp.csr_matrix:
         """``(sum_k D_jk d_j . u_k - sum_l M_jl d_j . u_l)_j`` as a matrix on all dofs."""
@@ -379,12 +440,19 @@ class PairProblem:
         free = np.flatnonzero(~self.fixed)
         A = np.flatnonzero(st.active)
         c = self.constraint_scale
-        B = c * (self.G + self.friction * self.T)[A][:, free]
+        g = self.factor(st.pressure[A])
+        rate = 1.0 if self.pressure_law is None else self.pressure_law.rate
+        # the friction force T^T (mu g lambda): d/d lambda = mu g (1 - n) per node
+        B = c * (self.G[A] + sp.diags(self.kinetic[A] * g * rate) @ self.T[A])[:, free]
         G = c * self.G[A][:, free]
         K = sp.bmat([[self.K[free][:, free], -B.T], [G, None]], format="csr")
-        C = None
-        if self.C is not None:
-            C = sp.block_diag([self.C[free][:, free], sp.csr_matrix((len(A), len(A)))], format="csr")
+        C = None if self.C is None else self.C[free][:, free]
+        if self.law is not None:  # mu(V - (T u')_j / w_j): damping T^T diag(lambda g mu' / w) T (negative if falling)
+            T = self.T[A][:, free]
+            slip = T.T @ sp.diags(st.pressure[A] * g * self.slopes[A] / self.coupling.weight[A]) @ T
+            C = slip if C is None else (C + slip).tocsr()
+        if C is not None:
+            C = sp.block_diag([C, sp.csr_matrix((len(A), len(A)))], format="csr")
         mass = np.concatenate([self.mass[free], np.zeros(len(A))])
         return K, C, mass, free
 
@@ -400,7 +468,9 @@ class PairProblem:
                 h.update(np.ascontiguousarray(arr).tobytes())
         for arr in (c.slave_nodes, c.normal, c.D.data, c.M.indptr, c.M.indices, c.M.data, t, speed, self.fixed):
             h.update(np.ascontiguousarray(arr).tobytes())
-        h.update(repr((self.friction, self.gyroscopic)).encode())
+        h.update(repr((self.friction, self.gyroscopic, self.static_friction, repr(self.law),
+                       None if self.pressure_law is None else (self.pressure_law.reference, self.pressure_law.exponent))
+                      ).encode())
         return h.hexdigest()
 
     def to_dict(self) -> dict:
@@ -412,6 +482,10 @@ class PairProblem:
                 "motion": repr(self.motion), "clamped_slave": ",".join(self.clamped_slave),
                 "clamped_master": ",".join(self.clamped_master), "slave_nodes": len(self.coupling.slave_nodes),
                 "gyroscopic": int(self.gyroscopic), "problem_sha256": self.digest,
+                "static_friction": self.static_friction,
+                **({} if self.law is None else {"friction_law": repr(self.law)}),
+                **({} if self.pressure_law is None else {"pressure_exponent": self.pressure_law.exponent,
+                                                         "reference_pressure": self.pressure_law.reference}),
                 "materials": "; ".join(f"{name}: {m.describe()}, density = {m.density:g} kg/m3"
                                        for name, m in self.materials.items())}
 
@@ -434,6 +508,7 @@ class PairSteady(Result):
     params: dict = field(default_factory=dict)
     points: np.ndarray | None = None  # the slave nodes' reference positions [m] (for to_xarray)
     gap: np.ndarray | None = None  # each slave node's normal gap in steady sliding [m]
+    coefficients: np.ndarray | None = None  # each slave node's friction coefficient (law and pressure)
 
     def to_xarray(self) -> xr.Dataset:
         """The slave's contact nodes (in mesh order): position, pressure, state, gap."""
@@ -474,8 +549,7 @@ def steady_pair(problem: PairProblem, max_iterations: int | None = None) -> Pair
     max_iterations = max(ITERATIONS, 2 * len(weight)) if max_iterations is None else \
         Q.check("max_iterations", max_iterations)
     free = np.flatnonzero(~problem.fixed)
-    K, F, G, B = problem.K[free][:, free], problem.load[free], problem.G[:, free], \
-        (problem.G + problem.friction * problem.T)[:, free]
+    K, F, G, T = problem.K[free][:, free], problem.load[free], problem.G[:, free], problem.T[:, free]
     g0 = problem.gap
     reach = np.asarray(c.M.sum(axis=1)).ravel()  # a slave node whose line overlaps no master cannot touch
     can = reach > 0.5 * weight
@@ -488,32 +562,55 @@ def steady_pair(problem: PairProblem, max_iterations: int | None = None) -> Pair
     scale = problem.constraint_scale
     for iteration in range(1, max_iterations + 1):
         A = np.flatnonzero(active)
-        S = sp.bmat([[K, -scale * B[A].T], [scale * G[A], None]], format="csc")
-        try:
-            lu = sla.splu(S)
-        except RuntimeError:
-            raise NoSolutionError("the pair is not held (a rigid motion is free): clamp a group of each body or "
-                                  "press them together") from None
-        piv = np.abs(lu.U.diagonal())
-        if piv.min() < 1e-12 * piv.max():
-            raise NoSolutionError("the pair is not held (a rigid motion is free): clamp a group of each body or press "
-                                  "them together")
-        x = lu.solve(np.concatenate([F, -scale * g0[A]]))
+        mu = problem.kinetic.copy()
+        last = np.inf
+        for _ in range(PRESSURE_ITERATIONS):  # with a pressure law: each node's coefficient at its pressure
+            x = _solve_pair(K, F, G[A], G[A] + sp.diags(mu[A]) @ T[A], scale, -scale * g0[A])
+            lam = np.zeros(len(weight))
+            lam[A] = scale * x[free.size:]
+            if problem.pressure_law is None:
+                break
+            new = problem.kinetic[A] * problem.factor(np.maximum(lam[A], 0.0))
+            change, top = float(np.max(np.abs(new - mu[A]), initial=0.0)), float(np.max(problem.kinetic))
+            mu[A] = new
+            if change <= 1e-10 * top or (change <= 1e-8 * top and change >= 0.5 * last):
+                x = _solve_pair(K, F, G[A], G[A] + sp.diags(mu[A]) @ T[A], scale, -scale * g0[A])
+                lam[A] = scale * x[free.size:]
+                break
+            last = change
+        else:
+            raise NoSolutionError(f"steady sliding of the pair with friction depending on the pressure (exponent "
+                                  f"{problem.pressure_law.exponent:g}) did not settle in {PRESSURE_ITERATIONS} "
+                                  "iterations (a smaller pressure_exponent)")
         u = np.zeros(problem.K.shape[0])
         u[free] = x[: free.size]
-        lam = np.zeros(len(weight))
-        lam[A] = scale * x[free.size:]
         gap = g0 + problem.G @ u
         penetrating = can & ~active & (gap < -tol)
         new = (active & (lam >= 0.0)) | penetrating
         if np.array_equal(new, active):
             normal = float(weight @ lam)  # the multiplier is the pressure, interpolated along the slave line
-            return PairSteady(u, lam, active.copy(), iteration, normal, problem.friction * normal,
+            return PairSteady(u, lam, active.copy(), iteration, normal, float(weight @ (mu * lam)),
                               1e-10 * young * size, problem.to_attrs(), problem.slave.body.points[c.slave_nodes],
-                              gap / weight)
+                              gap / weight, mu)
         if any(np.array_equal(old, new) for old in seen):
             raise NoSolutionError(f"no steady sliding of the pair at friction {problem.friction:g}: the active set "
                                   "cycles")
         seen.append(active.copy())
         active = new
     raise NoSolutionError(f"the pair's active set did not settle in {max_iterations} iterations")
+
+
+def _solve_pair(K, F, G_A, B_A, scale, rhs):
+    """``(u_free, lambda_A / scale)`` of ``K u - scale B_A^T l = F``, ``scale G_A u = rhs``; a pair
+    a rigid motion moves freely is a `NoSolutionError`."""
+    S = sp.bmat([[K, -scale * B_A.T], [scale * G_A, None]], format="csc")
+    not_held = NoSolutionError("the pair is not held (a rigid motion is free): clamp a group of each body or press "
+                               "them together")
+    try:
+        lu = sla.splu(S)
+    except RuntimeError:
+        raise not_held from None
+    piv = np.abs(lu.U.diagonal())
+    if piv.min() < 1e-12 * piv.max():
+        raise not_held
+    return lu.solve(np.concatenate([F, rhs]))

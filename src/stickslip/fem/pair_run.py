@@ -43,7 +43,7 @@ from ..errors import NoSolutionError, ParameterError
 from ..quantities import COMMON
 from .pair import PairProblem
 from .run import BodyRun, perturbed_steady_body
-from .scheme import FemScheme
+from .scheme import FemScheme, kernel_friction
 from .surfaces import order_along
 
 __all__ = ["PairScheme", "PairRun", "integrate_pair", "MAX_SWEEPS"]
@@ -69,6 +69,26 @@ class PairScheme(FemScheme):
             raise ParameterError("gyroscopic", True, "false in an explicit run of a pair (its scheme leaves out the "
                                  "turning material's transport terms; steady sliding and the CEA take them)")
         self.check_time_step()
+        _ = self.kinetic_law  # a law the kernel is not compiled for is refused here, before anything runs
+
+    # --- friction: the problem's law, static coefficient and pressure law -------------------
+    @property
+    def kinetic_law(self) -> tuple[float, int, float]:
+        """``(f_d, kind, parameter)`` of the problem's law for the kernel (`kernel_friction`)."""
+        return kernel_friction(self.params.law, self.params.friction)
+
+    @property
+    def static_friction(self) -> float:
+        return float(self.params.static_friction)
+
+    @cached_property
+    def pressure_scaling(self) -> tuple[float, np.ndarray]:
+        """With the problem's ``pressure_law``: its exponent and, per contact node, ``1 / (D_jj P_ref)``
+        (the coupled kernel's normal force over it is ``P / P_ref``); else none."""
+        law = self.params.pressure_law
+        if law is None:
+            return (0.0, np.zeros(0))
+        return (float(law.exponent), 1.0 / (self.params.coupling.weight[self._rows] * law.reference))
 
     # --- the dofs ------------------------------------------------------------------------
     @cached_property
@@ -199,7 +219,7 @@ class PairScheme(FemScheme):
         w = (self.rotation.T @ st.u)[self.free]
         force = p.coupling.weight[r] * st.pressure[r]  # D_jj lambda_j [N/m]
         r_n = force / self.mass[self.contact_dofs[0]]
-        return w, r_n, p.friction * r_n
+        return w, r_n, st.coefficients[r] * r_n
 
     def gaps(self, u: np.ndarray) -> np.ndarray:
         return (self.contact_matrix[:, : self.nodes].T @ u) - self.surface[0]

@@ -38,7 +38,7 @@ from .boundary import tributary_lengths
 from .static import SteadyContact, frame_rotation, problem_attrs, steady_contact
 from .surfaces import ContactFrames
 
-__all__ = ["ContactProblem", "FemScheme", "BodyScheme", "MAX_OVERDAMPING", "check_damping"]
+__all__ = ["ContactProblem", "FemScheme", "BodyScheme", "MAX_OVERDAMPING", "check_damping", "kernel_friction"]
 
 #: The most an explicit run lets Rayleigh damping overdamp the mesh's highest mode (times critical).
 MAX_OVERDAMPING = 100.0
@@ -71,6 +71,21 @@ def check_damping(materials: dict, omega_max: float) -> tuple[float, float]:
                              "times critically damped (the stable step shrinks in proportion)",
                              also=("alpha" if name == "beta" else "beta",))
     return (float(alpha), float(beta))
+
+
+def kernel_friction(law, friction: float) -> tuple[float, int, float]:
+    """``(f_d, kind, parameter)`` of a friction ``law`` for the compiled kernel
+    (`stickslip.contact.kernel.kinetic_coefficient`): linear weakening and Stribeck with their own
+    kinetic coefficient, Coulomb (or no law) with ``friction``; a user's law is refused (the
+    kernel is compiled for these; steady sliding and the CEA take any law)."""
+    if isinstance(law, LinearWeakening):
+        return (float(law.fd), LINEAR_WEAKENING, float(law.tau))
+    if isinstance(law, Stribeck):
+        return (float(law.fd), STRIBECK, float(law.vs))
+    if law is not None and not isinstance(law, Coulomb):
+        raise ParameterError("law", law, "Coulomb, linear weakening or Stribeck in an explicit run (the kernel "
+                             "is compiled for these; a user's law is taken by steady sliding and the CEA)")
+    return (float(friction), COULOMB, 0.0)
 
 
 @dataclass(frozen=True, eq=False)
@@ -350,18 +365,8 @@ class BodyScheme(FemScheme):
 
     @property
     def kinetic_law(self) -> tuple[float, int, float]:
-        """``(f_d, kind, parameter)`` of the problem's law for the kernel
-        (`stickslip.contact.kernel.kinetic_coefficient`): linear weakening and Stribeck with their
-        own kinetic coefficient, Coulomb (or none) with ``friction``."""
-        law = self.problem.law
-        if isinstance(law, LinearWeakening):
-            return (float(law.fd), LINEAR_WEAKENING, float(law.tau))
-        if isinstance(law, Stribeck):
-            return (float(law.fd), STRIBECK, float(law.vs))
-        if law is not None and not isinstance(law, Coulomb):
-            raise ParameterError("law", law, "Coulomb, linear weakening or Stribeck in an explicit run (the kernel "
-                                 "is compiled for these; a user's law is taken by steady sliding and the CEA)")
-        return (float(self.problem.friction), COULOMB, 0.0)
+        """``(f_d, kind, parameter)`` of the problem's law for the kernel (`kernel_friction`)."""
+        return kernel_friction(self.problem.law, self.problem.friction)
 
     @cached_property
     def pressure_scaling(self) -> tuple[float, np.ndarray]:
