@@ -234,9 +234,6 @@ def _run_pair(cfg, transits, beta2, time_step, start, amplitude, out, xdmf, volu
     if start is not Start.steady:
         raise ParameterError("--start", start.value, "steady with a [partner] (a run of two bodies starts from their "
                              "steady sliding)")
-    if cfg.partner.gyroscopic:
-        raise ParameterError("partner.gyroscopic", True, "false for fem run (the explicit scheme of two bodies leaves "
-                             "out the turning partner's transport terms; fem steady and fem cea take them)")
     problem = cfg.problem()
     PairScheme(problem, beta2, time_step=time_step)  # the step and the damping refused before anything runs
     with progress_bar("pad on partner") as tick:

@@ -30,7 +30,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .kernel import COULOMB, internal, kinetic_coefficient, multiplier_factor, predictor
+from .kernel import COULOMB, csr_apply, internal, kinetic_coefficient, multiplier_factor, predictor
 from .states import SEPARATION, SLIP_NEG, SLIP_POS, STICK
 
 __all__ = ["relative", "coupled_contact", "coupled_advance"]
@@ -124,24 +124,31 @@ def coupled_contact(u, d_old, normal, tangent, nvec, tvec, mptr, mdof, mw, inv_m
 
 
 @njit(cache=True)
-def coupled_advance(indptr, indices, data, block, load, damping, u, v, a, normal, tangent, nvec, tvec, mptr, mdof, mw,
-                    inv_mass, gap0, speed, nsteps, dt, beta2, f, fs, law, contact, lam_n, lam_t, state, work,
-                    max_sweeps):
+def coupled_advance(indptr, indices, data, block, load, damping, gyro_ptr, gyro_idx, gyro_data, u, v, a, normal, tangent,
+                    nvec, tvec, mptr, mdof, mw, inv_mass, gap0, speed, nsteps, dt, beta2, f, fs, law, contact, lam_n,
+                    lam_t, state, work, max_sweeps):
     """``nsteps`` steps of the scheme for two bodies in contact, in place (the operator, load
     and damping as in `kernel.advance`, the sparse paths only); ``lam_n, lam_t`` receive the
-    forces per unit mass of the slave node. Returns the most sweeps any step took (at once
-    when a step does not converge: ``max_sweeps + 1``)."""
+    forces per unit mass of the slave node. A velocity operator ``M^{-1} G`` in CSR
+    ``(gyro_ptr, gyro_idx, gyro_data)`` (a turning partner's gyroscopic matrix; ``gyro_ptr`` of
+    length 1: none) acts on ``v_{m-1}`` as the damping does: ``A_m -= M^{-1} G v_{m-1}``. Returns
+    the most sweeps any step took (at once when a step does not converge: ``max_sweeps + 1``)."""
     n = u.shape[0]
     nc = normal.shape[0]
     A = np.empty(n)
     ustar = np.empty(n)
     w = np.empty(n)
     d_old = np.empty(nc)
+    spin = np.empty(n)
+    turning = gyro_ptr.shape[0] > 1
     no_stencil = np.zeros((0, 3, 3, 2, 2))
     cdt2 = multiplier_factor(beta2, dt)
     most = 0
     for step in range(nsteps):
         internal(no_stencil, indptr, indices, data, block, load, damping, u, v, w, A)
+        if turning:
+            csr_apply(gyro_ptr, gyro_idx, gyro_data, v, spin)  # -M^{-1} G v_{m-1}
+            A += spin
         if step == nsteps - 1:
             work[:] = u
         for j in range(nc):

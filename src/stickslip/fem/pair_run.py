@@ -10,10 +10,12 @@ sliding is a state of the scheme.
 **The partner's motion is Eulerian.** The master's mesh stays where it is and its material
 slides through it at the motion's speed (``t_j`` and ``speed`` at each slave node, as in steady
 sliding): its displacements are the deformation seen in space-fixed coordinates, which suits
-a disc turning under a pad (no contact search; the contact line does not move). The scheme
-leaves out the transport terms of the turning material (``gyroscopic=True`` is refused):
-the usual engineering treatment, whose effect on the CEA is measured in
-``docs/tutorial-your-body.md``.
+a disc turning under a pad (no contact search; the contact line does not move). By default
+the scheme leaves out the transport terms of the turning material (the usual engineering
+treatment, whose effect on the CEA is measured in ``docs/tutorial-your-body.md``); with
+``gyroscopic=True`` they are in: the transport softening in the stiffness (the problem's
+``K``) and the gyroscopic matrix on the velocity ``v_{m-1}``, as the Rayleigh damping
+(`PairScheme.gyroscopic_operator`; first order in the step, as that damping).
 
 `integrate_pair` runs it with every book of `stickslip.contact.runs` (series, snapshots of
 the slave's contact nodes, volume snapshots, checkpoints, the limit regime), and
@@ -65,9 +67,6 @@ class PairScheme(FemScheme):
 
     def __post_init__(self):
         self.validate_common()
-        if self.params.gyroscopic:
-            raise ParameterError("gyroscopic", True, "false in an explicit run of a pair (its scheme leaves out the "
-                                 "turning material's transport terms; steady sliding and the CEA take them)")
         self.check_time_step()
         _ = self.kinetic_law  # a law the kernel is not compiled for is refused here, before anything runs
 
@@ -194,6 +193,18 @@ class PairScheme(FemScheme):
     def operator_matrix(self):
         return (sp.diags(1.0 / self.mass) @ self.stiffness).tocsr()
 
+    @cached_property
+    def gyroscopic_operator(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``M^{-1} G`` in CSR ``(indptr, indices, data)`` on the free dofs in the scheme's frames:
+        the turning master's gyroscopic matrix (with ``gyroscopic``; its transport softening is in
+        `stiffness`, through the problem's ``K``), or empty (``indptr = [0]``)."""
+        if self.params.transport is None:
+            return np.zeros(1, np.int64), np.zeros(0, np.int64), np.zeros(0)
+        G = (self.rotation.T @ self.params.transport[0] @ self.rotation).tocsr()[self.free][:, self.free]
+        A = (sp.diags(1.0 / self.mass) @ G).tocsr()
+        A.sort_indices()
+        return A.indptr.astype(np.int64), A.indices.astype(np.int64), A.data.astype(float)
+
     @property
     def closed_line(self) -> bool:
         return False
@@ -254,7 +265,8 @@ class PairScheme(FemScheme):
         load = np.zeros(0) if self.load is None else np.ascontiguousarray(self.load, dtype=float)
         f, _, _ = self.kinetic_law
         sweeps = coupled_advance(
-            indptr, indices, data, block, load, np.array(self.damping, dtype=float), state.u, state.v, state.a,
+            indptr, indices, data, block, load, np.array(self.damping, dtype=float), *self.gyroscopic_operator,
+            state.u, state.v, state.a,
             normal, tangent, np.ascontiguousarray(nv), np.ascontiguousarray(tv), ptr, dof, w, 1.0 / self.mass, gap0,
             speed, nsteps, self.dt, self.beta2, f, self.static_friction, self.kernel_law,
             bool(contact), out.lam_n, out.lam_t, out.state, out.u_prev, MAX_SWEEPS)
