@@ -68,11 +68,13 @@ def measure(config: Path, folder: Path, transits: float) -> None:
     print(f"{scheme.free.size} free dofs, {steps} steps ({transits:g} transits): kernel {kernel:.2f} s "
           f"({kernel / steps / scheme.free.size * 1e9:.2f} ns per dof-step)")
 
-    fresh = load_config(config).problem()
-    t0 = time.perf_counter()
-    integrate_body(fresh, transits=transits, checkpoint=folder / "api.nc", overwrite=True)
-    api = time.perf_counter() - t0
-    print(f"  integrate_body (fresh problem, checkpointed): {api:.2f} s, ratio {api / kernel:.2f}")
+    for call in ("first", "second"):  # the first in a process imports what its first file needs (xarray: dask)
+        fresh = load_config(config).problem()
+        t0 = time.perf_counter()
+        integrate_body(fresh, transits=transits, checkpoint=folder / "api.nc", overwrite=True)
+        api = time.perf_counter() - t0
+        print(f"  integrate_body (fresh problem, checkpointed; {call} run of the process): {api:.2f} s, ratio "
+              f"{api / kernel:.2f}")
 
     cli = [sys.executable, "-m", "stickslip", "fem", "run", str(config), "--transits", f"{transits:g}",
            "--out", str(folder / "cli.nc"), "--overwrite"]
