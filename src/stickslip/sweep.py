@@ -5,9 +5,11 @@ the grid spanned by ``axes`` and writes each finished batch into a Zarr store to
 with a ``done`` mask. If the run is killed, calling it again with the same store only
 computes the points that are not done yet. The store records its format and a SHA-256 of
 its content (`stickslip.files.content_digest`), so a store from another program or
-version, or one damaged since (a flipped byte, a lost chunk), is refused, not resumed. The batches go through ``dask.compute``, so
-the scheduler can be local threads or processes, or a cluster (``scheduler=client.get``
-with a `dask.distributed.Client`) when a sweep outgrows one machine.
+version, or one damaged since (a flipped byte, a lost chunk), is refused, not resumed. The
+batches go through ``dask.compute`` on local threads or processes; with
+``scheduler="distributed"``, an address ``tcp://HOST:PORT`` or a `distributed.Client` the
+points go to dask.distributed instead (`stickslip.cluster`): each is stored as it finishes,
+and one that raises is stored with its message without stopping the sweep.
 """
 
 from __future__ import annotations
@@ -33,6 +35,7 @@ from .cf import SOURCE, finish, flag_attrs, plain_attrs
 from .errors import ParameterError
 from .quantities import lookup
 from .files import content_digest, die_with_parent, exclusive
+from .cluster import client as dask_client, guarded, is_distributed
 
 __all__ = ["worker_pool", "run_sweep", "verify_store", "SWEEP_FORMAT", "NOT_COMPUTED"]
 
@@ -220,9 +223,14 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
         (one more dimension, ``<name>_index``; the function returns an array).
     batch : int
         Points per checkpoint.
-    scheduler : str or callable
-        Passed to `dask.compute` (``"processes"``, ``"threads"``, ``"synchronous"``, or
-        ``client.get``).
+    scheduler : str, callable or distributed.Client
+        ``"processes"`` (a local pool, in batches), ``"threads"``, ``"synchronous"`` or a callable
+        as `dask.compute` takes them; or dask.distributed (`stickslip.cluster`): ``"distributed"``
+        (a local cluster of ``workers`` processes), a running scheduler's address
+        ``tcp://HOST:PORT``, or a `distributed.Client`. There every point is stored as it
+        finishes (at least every ``batch`` points or `FLUSH_SECONDS`), and a point that raises
+        is left not done with its message in the store's ``failed`` attribute (JSON, keyed
+        ``"i,j"`` by grid index) while the sweep goes on; a later call computes it again.
     progress : callable, optional
         ``progress(done, total)`` after every batch.
     workers : int, optional
@@ -292,27 +300,101 @@ def _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attr
     total, finished = math.prod(shape), math.prod(shape) - len(todo)
     if progress:
         progress(finished, total)
+    if todo and is_distributed(scheduler):
+        _stream(func, axes, store, group, names, sizes, todo, batch, scheduler, workers, progress, finished, total)
+        return _result(store)
     with worker_pool(scheduler if todo else "synchronous", workers) as evaluate:  # one pool for the whole sweep
         for start in range(0, len(todo), batch):
             chunk = todo[start:start + batch]
             points = [{k: axes[k][i] for k, i in zip(axes, idx)} for idx in chunk]
             values = evaluate([dask.delayed(_call)(func, p, names, sizes) for p in points])
-            where = tuple(np.array(c) for c in zip(*chunk))
-            new = {name: group[name][...] for name in [*names, "done"]}
-            for j, name in enumerate(names):
-                new[name][where] = np.array([v[j] for v in values])
-            new["done"][where] = True
-            group.attrs["pending_sha256"] = _digest(group, new)
-            for name in names:
-                if name in sizes:  # a row per point
-                    for idx in chunk:
-                        group[name][idx] = new[name][idx]
-                else:
-                    group[name].vindex[where] = new[name][where]
-            group["done"].vindex[where] = True  # last: a batch counts only once all outputs are in
-            group.attrs["content_sha256"] = group.attrs["pending_sha256"]
-            zarr.consolidate_metadata(str(store))
+            _write(group, store, names, sizes, chunk, values)
             finished += len(chunk)
             if progress:
                 progress(finished, total)
+    return _result(store)
+
+
+#: A streaming sweep writes what has finished at least this often [s] (and every ``batch`` points).
+FLUSH_SECONDS = 10.0
+
+
+def _stream(func, axes, store, group, names, sizes, todo, batch, scheduler, workers, progress, finished, total):
+    """The points ``todo`` on dask.distributed (`stickslip.cluster`), each stored as it finishes
+    (every ``batch`` points or `FLUSH_SECONDS`, whichever comes first: no point waits for a
+    slower one); a point that raises is left not done, its message in the store's ``failed``
+    attribute (JSON ``{"i,j": message}``), and the sweep goes on."""
+    import json
+    import time
+
+    from distributed import as_completed
+
+    failed = json.loads(group.attrs.get("failed", "{}"))
+    ready, values = [], []
+    last = time.monotonic()
+
+    def flush(tell=True):
+        nonlocal finished, last
+        if ready:
+            _write(group, store, names, sizes, list(ready), list(values))
+            finished += len(ready)
+            ready.clear()
+            values.clear()
+        group.attrs["failed"] = json.dumps(failed)
+        zarr.consolidate_metadata(str(store))
+        last = time.monotonic()
+        if progress and tell:
+            progress(finished, total)
+
+    share = str(max(1, (os.cpu_count() or 1) // (workers or os.cpu_count() or 1)))  # BLAS threads per local worker
+    with _environment({name: share for name in BLAS_THREADS}), dask_client(scheduler, workers) as cl:
+        futures = {}
+        for idx in todo:
+            point = {k: axes[k][i] for k, i in zip(axes, idx)}
+            futures[cl.submit(guarded, _call, func, point, names, sizes, pure=False)] = idx
+        try:
+            # results fetched as they finish (a worker that dies later holds none of them)
+            for future, outcome in as_completed(list(futures), with_results=True, raise_errors=False):
+                idx = futures.pop(future)
+                key = ",".join(map(str, idx))
+                if future.status == "error":  # the scheduler gave up on it (its workers kept dying)
+                    failed[key] = f"{type(outcome).__name__}: {outcome}"
+                else:
+                    status, value = outcome
+                    if status == "ok":
+                        ready.append(idx)
+                        values.append(value)
+                        failed.pop(key, None)
+                    else:
+                        failed[key] = value
+                future.release()
+                if len(ready) >= batch or time.monotonic() - last >= FLUSH_SECONDS:
+                    flush()
+        except BaseException:  # interrupted (Ctrl-C, a progress callback raising): keep what has finished
+            flush(tell=False)
+            raise
+        flush()
+
+
+def _result(store: Path) -> xr.Dataset:
     return xr.open_zarr(store, consolidated=False).load()
+
+
+def _write(group, store: Path, names: list, sizes: dict, chunk: list, values: list) -> None:
+    """Store the ``values`` of the points ``chunk`` (grid indices) and mark them done, so that a
+    kill at any moment leaves the store's last or next content (`verify_store`)."""
+    where = tuple(np.array(c) for c in zip(*chunk))
+    new = {name: group[name][...] for name in [*names, "done"]}
+    for j, name in enumerate(names):
+        new[name][where] = np.array([v[j] for v in values])
+    new["done"][where] = True
+    group.attrs["pending_sha256"] = _digest(group, new)
+    for name in names:
+        if name in sizes:  # a row per point
+            for idx in chunk:
+                group[name][idx] = new[name][idx]
+        else:
+            group[name].vindex[where] = new[name][where]
+    group["done"].vindex[where] = True  # last: a batch counts only once all outputs are in
+    group.attrs["content_sha256"] = group.attrs["pending_sha256"]
+    zarr.consolidate_metadata(str(store))

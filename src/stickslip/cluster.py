@@ -1,0 +1,70 @@
+"""Dask.distributed for the sweeps: a local cluster of processes, or an existing scheduler.
+
+`is_distributed(scheduler)` tells a distributed scheduler from the others `stickslip.sweep`
+takes: ``"distributed"`` (a `distributed.LocalCluster` of ``workers`` processes, one thread
+each, started for the sweep and closed after it), an address ``tcp://HOST:PORT`` (or ``tls://``,
+``ucx://``, ``inproc://``) of a running scheduler (its workers started by hand, or by
+``dask-jobqueue`` on a batch system), or a `distributed.Client`. `client(scheduler, workers)`
+yields the `distributed.Client` and says where its dashboard is, when it has one.
+
+The point function runs in the workers as `guarded` calls it: an exception becomes a record
+``("error", message)`` instead of a failed task, so that one bad point is stored with its
+message and the sweep goes on. A worker that dies (killed, out of memory) loses only its
+running point: the scheduler gives it to another worker (up to ``distributed.scheduler.
+allowed-failures`` times, then the point is recorded as failed with the scheduler's reason).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+
+from .errors import ParameterError
+
+__all__ = ["is_distributed", "client", "guarded", "PROTOCOLS", "CONNECT_SECONDS"]
+
+#: Address prefixes of a running scheduler.
+PROTOCOLS = ("tcp://", "tls://", "ucx://", "inproc://")
+#: How long to wait for a scheduler at an address before refusing it.
+CONNECT_SECONDS = 10.0
+
+
+def is_distributed(scheduler) -> bool:
+    """``"distributed"``, a scheduler's address, or a `distributed.Client`."""
+    if isinstance(scheduler, str):
+        return scheduler == "distributed" or scheduler.startswith(PROTOCOLS)
+    return type(scheduler).__name__ == "Client" and type(scheduler).__module__.startswith("distributed")
+
+
+@contextlib.contextmanager
+def client(scheduler, workers: int | None = None, announce=None):
+    """The `distributed.Client` of ``scheduler`` (see the module docstring) for the block;
+    ``announce(text)``, if given, is told the scheduler's and the dashboard's addresses."""
+    from distributed import Client, LocalCluster
+
+    if not isinstance(scheduler, str):  # the caller's client: used, not closed
+        yield scheduler
+        return
+    with contextlib.ExitStack() as stack:
+        if scheduler == "distributed":
+            cluster = stack.enter_context(LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
+                                                       processes=True, host="127.0.0.1", dashboard_address=None))
+            made = stack.enter_context(Client(cluster))
+        else:
+            try:
+                made = stack.enter_context(Client(scheduler, timeout=CONNECT_SECONDS))
+            except (OSError, TimeoutError, ValueError) as err:
+                raise ParameterError("scheduler", scheduler, f"the address of a running Dask scheduler ({type(err).__name__}: "
+                                     f"none answered within {CONNECT_SECONDS:g} s)") from None
+        if announce is not None:
+            link = getattr(made, "dashboard_link", None) if scheduler != "distributed" else None
+            announce(f"Dask scheduler {made.scheduler.address}" + (f", dashboard {link}" if link else ""))
+        yield made
+
+
+def guarded(func, *args):
+    """``("ok", func(*args))``, or ``("error", message)`` if it raises (in the worker)."""
+    try:
+        return ("ok", func(*args))
+    except Exception as err:  # noqa: BLE001 - any point may fail; it is stored, not raised
+        return ("error", f"{type(err).__name__}: {err}")

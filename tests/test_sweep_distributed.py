@@ -1,0 +1,129 @@
+"""Sweeps on dask.distributed (issue 25): a real scheduler and worker processes on loopback.
+
+* A local cluster of two processes computes every point, each stored as it finishes; a point
+  that raises is left not done with its message in the store (``failed``) and does not stop
+  the sweep; a second run computes only what is not done (each point's calls are counted in
+  files the point function writes).
+* Interrupted mid-sweep (the progress callback raising, as Ctrl-C would), the store keeps what
+  had finished, and the resume computes nothing already stored.
+* A worker killed (SIGKILL) while it computes a point loses that point: the scheduler gives
+  it to another worker and every point ends done; the killed point ran twice, every other point
+  at most twice (a result the dead worker had finished but not yet handed over is computed
+  again: the sweep fetches results as they finish, which makes that window short, not empty).
+* An existing scheduler by its address; an address where none answers is refused, named.
+"""
+
+import os
+import signal
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from stickslip import cluster
+from stickslip.errors import ParameterError
+from stickslip.sweep import run_sweep
+
+AXES = {"a": [0.0, 1.0, 2.0, 3.0], "b": [0.0, 1.0, 2.0]}
+
+
+def point(a, b, marks, slow=-1.0, bad=-1.0):
+    """``y = 10 a + b``; a file per call in ``marks`` (named by the point and the worker's pid)."""
+    Path(marks, f"{a:g}_{b:g}_{os.getpid()}_{time.monotonic_ns()}").write_text(str(os.getpid()))
+    if a == bad and b == 1.0:
+        raise ValueError("a bad point")
+    time.sleep(3.0 if a == slow and b == 1.0 else 0.02)
+    return {"y": 10 * a + b}
+
+
+def _calls(marks: Path) -> dict:
+    out = {}
+    for f in marks.iterdir():
+        a, b = f.name.split("_")[:2]
+        out[(float(a), float(b))] = out.get((float(a), float(b)), 0) + 1
+    return out
+
+
+def _point(marks, **options):
+    import functools
+
+    return functools.partial(point, marks=str(marks), **options)
+
+
+def test_a_local_cluster_streams_the_points_and_stores_a_failure_without_stopping(tmp_path):
+    marks = tmp_path / "marks"
+    marks.mkdir()
+    seen = []
+    ds = run_sweep(_point(marks, bad=2.0), AXES, tmp_path / "s.zarr", outputs={"y": "1"}, scheduler="distributed",
+                   workers=2, batch=4, progress=lambda done, total: seen.append(done))
+    a, b = np.meshgrid(AXES["a"], AXES["b"], indexing="ij")
+    done = ds["done"].values.astype(bool)
+    assert done.sum() == 11 and not done[2, 1]
+    assert np.array_equal(ds["y"].values[done], (10 * a + b)[done]) and np.isnan(ds["y"].values[2, 1])
+    assert '"2,1": "ValueError: a bad point"' in ds.attrs["failed"]
+    assert seen[-1] == 11 and len(seen) >= 3  # stored in several goes, not at the end
+    assert len({p.read_text() for p in marks.iterdir()}) == 2  # two worker processes
+    before = _calls(marks)
+    run_sweep(_point(marks, bad=2.0), AXES, tmp_path / "s.zarr", outputs={"y": "1"}, scheduler="distributed",
+              workers=2)
+    after = _calls(marks)
+    assert {k: after[k] - before.get(k, 0) for k in after if after[k] != before.get(k, 0)} == {(2.0, 1.0): 1}
+
+
+def test_an_interrupted_sweep_keeps_what_finished_and_resumes_computing_nothing_twice(tmp_path):
+    marks = tmp_path / "marks"
+    marks.mkdir()
+
+    def stop(done, total):
+        if done > 0:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        run_sweep(_point(marks), AXES, tmp_path / "s.zarr", outputs={"y": "1"}, scheduler="distributed", workers=2,
+                  batch=2, progress=stop)
+    first = _calls(marks)
+    ds = run_sweep(_point(marks), AXES, tmp_path / "s.zarr", outputs={"y": "1"}, scheduler="synchronous")
+    assert ds["done"].values.all()
+    again = {k: n - first.get(k, 0) for k, n in _calls(marks).items()}
+    import xarray as xr
+
+    stored = [k for k in again if again[k] == 0]
+    assert stored and all(v in (0, 1) for v in again.values())  # stored points not computed again
+    del xr
+
+
+def test_a_worker_killed_mid_point_loses_only_that_point(tmp_path):
+    marks = tmp_path / "marks"
+    marks.mkdir()
+    killed = []
+
+    def kill(done, total):  # once the slow point has started, kill the worker computing it
+        for f in marks.iterdir():
+            if f.name.startswith("1_1_") and not killed:
+                pid = int(f.read_text())
+                os.kill(pid, signal.SIGKILL)
+                killed.append(pid)
+
+    ds = run_sweep(_point(marks, slow=1.0), AXES, tmp_path / "s.zarr", outputs={"y": "1"}, scheduler="distributed",
+                   workers=2, batch=1, progress=kill)
+    assert killed and ds["done"].values.all() and ds.attrs["failed"] == "{}"
+    calls = _calls(marks)
+    assert calls[(1.0, 1.0)] == 2 and all(n in (1, 2) for n in calls.values())
+    assert sum(calls.values()) <= len(calls) + 2
+
+
+def test_an_existing_scheduler_by_address_and_one_that_does_not_answer(tmp_path, monkeypatch):
+    from distributed import LocalCluster
+
+    marks = tmp_path / "marks"
+    marks.mkdir()
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=True, host="127.0.0.1",
+                      dashboard_address=None) as local:
+        ds = run_sweep(_point(marks), {"a": [0.0, 1.0], "b": [2.0]}, tmp_path / "s.zarr", outputs={"y": "1"},
+                       scheduler=local.scheduler_address)
+        assert np.array_equal(ds["y"].values.ravel(), [2.0, 12.0])
+    monkeypatch.setattr(cluster, "CONNECT_SECONDS", 1.0)
+    with pytest.raises(ParameterError) as err:
+        run_sweep(_point(marks), {"a": [0.0]}, tmp_path / "t.zarr", outputs={"y": "1"}, scheduler="tcp://127.0.0.1:9")
+    assert err.value.name == "scheduler" and "running Dask scheduler" in str(err.value)
