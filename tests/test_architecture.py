@@ -37,7 +37,7 @@ ALLOWED = {
     "errata": set(),
     "figures": BASE | MODELS | {"contact", "friction", "sweep", "plotting"},
     "report": BASE | {"figures", "errata", "plotting", "__init__"},
-    "cli": BASE | MODELS | {"friction", "contact", "sweep", "plotting", "figures", "report", "__init__"},
+    "cli": BASE | MODELS | {"friction", "contact", "sweep", "cluster", "plotting", "figures", "report", "__init__"},
     "__main__": {"cli"},
     "__init__": set(),
 }

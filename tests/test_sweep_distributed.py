@@ -127,3 +127,25 @@ def test_an_existing_scheduler_by_address_and_one_that_does_not_answer(tmp_path,
     with pytest.raises(ParameterError) as err:
         run_sweep(_point(marks), {"a": [0.0]}, tmp_path / "t.zarr", outputs={"y": "1"}, scheduler="tcp://127.0.0.1:9")
     assert err.value.name == "scheduler" and "running Dask scheduler" in str(err.value)
+
+
+def test_the_map_commands_take_a_scheduler(tmp_path, capsys):
+    """`oscillator map --scheduler distributed` stores the same map as the local pool (and a store
+    of one resumes with the other: where the points ran is not part of the results); a scheduler
+    that is neither is refused in one line."""
+    import json
+
+    from stickslip.cli import run
+
+    args = ["oscillator", "map", "--mass", "1", "--stiffness", "1", "--normal-force", "1", "--fs", "0.6", "--fd",
+            "0.4", "--x", "belt_speed=0.1:1.2:3", "--y", "damping=0.01:0.5:2", "--json"]
+    counts = []
+    for name, extra in (("a", ["--scheduler", "distributed", "--workers", "2"]), ("b", ["--workers", "1"])):
+        assert run(args + ["--out", str(tmp_path / f"{name}.zarr")] + extra) == 0
+        counts.append(json.loads(capsys.readouterr().out)["counts"])
+    assert counts[0] == counts[1] and sum(counts[0].values()) == 6
+    assert run(args + ["--out", str(tmp_path / "a.zarr"), "--workers", "1"]) == 0  # resumed: nothing to compute
+    capsys.readouterr()
+    assert run(args + ["--out", str(tmp_path / "c.zarr"), "--scheduler", "mpi"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--scheduler = 'mpi'" in err and "tcp://HOST:PORT" in err

@@ -21,7 +21,7 @@ import os
 
 from .errors import ParameterError
 
-__all__ = ["is_distributed", "client", "guarded", "PROTOCOLS", "CONNECT_SECONDS"]
+__all__ = ["is_distributed", "check_scheduler", "client", "guarded", "PROTOCOLS", "CONNECT_SECONDS"]
 
 #: Address prefixes of a running scheduler.
 PROTOCOLS = ("tcp://", "tls://", "ucx://", "inproc://")
@@ -34,6 +34,19 @@ def is_distributed(scheduler) -> bool:
     if isinstance(scheduler, str):
         return scheduler == "distributed" or scheduler.startswith(PROTOCOLS)
     return type(scheduler).__name__ == "Client" and type(scheduler).__module__.startswith("distributed")
+
+
+def check_scheduler(value, option: str = "scheduler"):
+    """``value`` if it names a scheduler the sweeps take by name (``processes``, ``distributed``,
+    ``threads``, ``synchronous``, or an address ``tcp://HOST:PORT``), else a `ParameterError`
+    naming ``option``."""
+    if value is None:
+        return None
+    if isinstance(value, str) and (value in ("processes", "distributed", "threads", "synchronous") or (
+            value.startswith(PROTOCOLS) and len(value.split("://", 1)[1]) > 0)):
+        return value
+    raise ParameterError(option, value, "processes (a local pool of processes), distributed (a local Dask cluster), "
+                         "or the address tcp://HOST:PORT of a running Dask scheduler")
 
 
 @contextlib.contextmanager

@@ -12,7 +12,7 @@ import typer
 from ..brake.reduced.params import in_ratio, small_strain
 from ..quantities import BRAKE as Q, COMMON
 from ..errors import MISSING, ParameterError
-from .common import (AXIS_HELP, Overwrite, Replace, RunOut, XdmfEvery, axis, checked_axis, declared, emit, map_size, output_folder, output_path, overwrite_needs,
+from .common import (AXIS_HELP, Overwrite, Replace, RunOut, Scheduler, XdmfEvery, axis, checked_axis, declared, emit, map_size, output_folder, output_path, overwrite_needs,
                      progress_bar, write_netcdf, xdmf_snapshots)
 
 _emit = functools.partial(emit, model="brake")  # results are printed with the units of this model
@@ -261,7 +261,7 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (directory ending
             modes: Annotated[Optional[int], declared(Q["modes"], "--wave-number", "With --kind waves only; "
                                                      "default 4.")] = None,
             workers: Annotated[Optional[int], declared(COMMON["workers"], "--workers", "Default: all cores.")] = None,
-            overwrite: Overwrite = False, json: Json = False):
+            scheduler: Scheduler = None, overwrite: Overwrite = False, json: Json = False):
     """Regime map over friction and mismatch (resumable, parallel): travelling waves or ring limit regimes."""
     from ..brake.maps import REGIME_CODES, ring_regime_map, wave_regime_map
 
@@ -291,9 +291,10 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (directory ending
     with progress_bar(f"{kind} map") as tick:
         if kind == "waves":
             ds = wave_regime_map(f, d, out, omega=omega, modes=modes, workers=workers, progress=tick,
-                                 overwrite=overwrite)
+                                 overwrite=overwrite, scheduler=scheduler or "processes")
         else:
-            ds = ring_regime_map(f, d, out, omega=omega, workers=workers, progress=tick, overwrite=overwrite)
+            ds = ring_regime_map(f, d, out, omega=omega, workers=workers, progress=tick, overwrite=overwrite,
+                                 scheduler=scheduler or "processes")
     name = "wave_regime" if kind == "waves" else "ring_regime"
     counts = {k: int((ds[name] == v).sum()) for k, v in REGIME_CODES.items() if int((ds[name] == v).sum())}
     _emit({"store": str(out), "kind": kind, "points": int(ds[name].size), "counts": counts}, json, "regime map")
@@ -350,7 +351,7 @@ def campaign_cmd(
                                                 "Per case, xi and beta2 (geometry).")] = 4,
         workers: Annotated[Optional[int], declared(COMMON["workers"], "--workers", "Default: all cores.")] = None,
         export: Annotated[Optional[Path], typer.Option(help="When done, also write fem_<part>.nc here.")] = None,
-        overwrite: Overwrite = False, json: Json = False):
+        scheduler: Scheduler = None, overwrite: Overwrite = False, json: Json = False):
     """Section 3.1 by finite elements: limit regimes from unseeded starts (about an hour on 2 cores; resumable)."""
     import datetime
 
@@ -364,10 +365,11 @@ def campaign_cmd(
     export = None if export is None else output_folder("--export", export)
     out.mkdir(parents=True, exist_ok=True)
     summary = {"out": str(out)}
+    where = {"workers": workers, "scheduler": scheduler or "processes"}
     sweeps = {"statistics": lambda tick: campaign.statistics(out / "statistics.zarr", CASES, seeds=seeds,
-                                                             workers=workers, progress=tick, overwrite=overwrite),
+                                                             progress=tick, overwrite=overwrite, **where),
               "geometry": lambda tick: campaign.geometry(out / "geometry.zarr", CASES, seeds=geometry_seeds,
-                                                         workers=workers, progress=tick, overwrite=overwrite)}
+                                                         progress=tick, overwrite=overwrite, **where)}
     for kind, sweep in sweeps.items():
         if part not in (kind, "all"):
             continue

@@ -34,6 +34,19 @@ def declared(quantity: Quantity, flag: str, note: str = "", **options):
     return info
 
 
+def _scheduler(value):
+    from ..cluster import check_scheduler
+
+    return check_scheduler(value, "--scheduler")
+
+
+#: ``--scheduler``: where a sweep's points are computed (`stickslip.sweep.run_sweep`).
+Scheduler = Annotated[Optional[str], typer.Option(
+    "--scheduler", callback=_scheduler,
+    help="Where the points are computed: processes (a local pool, the default), distributed (a local Dask cluster "
+         "of --workers processes, each point stored as it finishes, a failing point stored with its message) or "
+         "the address tcp://HOST:PORT of a running Dask scheduler and its workers.")]
+
 #: ``--overwrite``: start a store or checkpoint afresh instead of resuming it.
 Overwrite = Annotated[bool, typer.Option("--overwrite", help="Start afresh, replacing the store or checkpoint, "
                                          "instead of resuming it (one from another run is refused without it), "

@@ -15,7 +15,7 @@ from ..friction import make_law
 from ..oscillator import (Oscillator, continue_cycle, continue_from_hopf, equilibrium_stability, hopf_points,
                           limit_cycle, simulate)
 from ..quantities import COMMON, OSCILLATOR as Q
-from .common import (AXIS_HELP, Overwrite, Replace, axis, declared, map_size, emit, output_folder, output_path, overwrite_needs,
+from .common import (AXIS_HELP, Overwrite, Replace, Scheduler, axis, declared, map_size, emit, output_folder, output_path, overwrite_needs,
                      progress_bar, write_netcdf)
 
 _emit = functools.partial(emit, model="oscillator")  # results are printed with the units of this model
@@ -168,7 +168,7 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (a directory endi
             y: Annotated[str, typer.Option("--y", help=f"Second axis, {AXIS_HELP}.")] = "damping=0.01:0.3:20",
             law: LawOpt = Law.coulomb, tau: Tau = None, vs: Vs = None, damping: Optional[float] = Given(Damping),
             workers: Annotated[Optional[int], declared(COMMON["workers"], "--workers", "Default: all cores.")] = None,
-            overwrite: Overwrite = False, json: Json = False, plot: Plot = None):
+            scheduler: Scheduler = None, overwrite: Overwrite = False, json: Json = False, plot: Plot = None):
     """Regime map over two parameters (steady sliding, stick-slip, bistable, pure slip): resumable, parallel."""
     from ..errors import MISSING, ParameterError
     from ..oscillator.regimes import REGIMES, regime_map
@@ -212,7 +212,8 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (a directory endi
                                  if exc.name != "parameter" else exc.allowed, also=exc.also) from None
         axes[name] = values
     with progress_bar("regime map") as tick:
-        ds = regime_map(osc, axes, out, workers=workers, progress=tick, overwrite=overwrite)
+        ds = regime_map(osc, axes, out, workers=workers, progress=tick, overwrite=overwrite,
+                        scheduler=scheduler or "processes")
     counts = {REGIMES[k]: int((ds["regime"] == k).sum()) for k in REGIMES}
     _emit({"store": str(out), "axes": {k: [min(v), max(v), len(v)] for k, v in axes.items()}, "counts": counts},
          json, "regime map")
