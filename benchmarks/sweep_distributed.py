@@ -72,7 +72,7 @@ def main(argv=None) -> None:
             from distributed import LocalCluster
 
             with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
-                              dashboard_address=None) as cluster:
+                              dashboard_address=":0") as cluster:
                 t0 = time.perf_counter()
                 run_sweep(func, {"x": xs}, Path(tmp) / f"a{workers}.zarr", outputs={"y": "1"},
                           scheduler=cluster.scheduler_address)

@@ -2,8 +2,9 @@
 
 * A local cluster of two processes computes every point, each stored as it finishes; a point
   that raises is left not done with its message in the store (``failed``) and does not stop
-  the sweep; a second run computes only what is not done (each point's calls are counted in
-  files the point function writes).
+  the sweep, which ends by saying how many failed (`NoSolutionError`); a second run computes
+  only what is not done (each point's calls are counted in files the point function writes);
+  a point computed later no longer counts as failed.
 * Interrupted mid-sweep (the progress callback raising, as Ctrl-C would), the store keeps what
   had finished, and the resume computes nothing already stored.
 * A worker killed (SIGKILL) while it computes a point loses that point: the scheduler gives
@@ -22,10 +23,26 @@ import numpy as np
 import pytest
 
 from stickslip import cluster
-from stickslip.errors import ParameterError
+from stickslip.errors import NoSolutionError, ParameterError
 from stickslip.sweep import run_sweep
 
 AXES = {"a": [0.0, 1.0, 2.0, 3.0], "b": [0.0, 1.0, 2.0]}
+
+#: distributed leaves sockets of its schedulers to the garbage collector (ResourceWarning), which
+#: pytest reports as unraisable exceptions; they are collected here, after each test of this module
+pytestmark = pytest.mark.filterwarnings("ignore::ResourceWarning",
+                                        "ignore::pytest.PytestUnraisableExceptionWarning")
+
+
+@pytest.fixture(autouse=True)
+def _collect_sockets():
+    yield
+    import gc
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        gc.collect()
 
 
 def point(a, b, marks, slow=-1.0, bad=-1.0):
@@ -55,8 +72,13 @@ def test_a_local_cluster_streams_the_points_and_stores_a_failure_without_stoppin
     marks = tmp_path / "marks"
     marks.mkdir()
     seen = []
-    ds = run_sweep(_point(marks, bad=2.0), AXES, tmp_path / "s.zarr", outputs={"y": "1"}, scheduler="distributed",
-                   workers=2, batch=4, progress=lambda done, total: seen.append(done))
+    with pytest.raises(NoSolutionError) as err:
+        run_sweep(_point(marks, bad=2.0), AXES, tmp_path / "s.zarr", outputs={"y": "1"}, scheduler="distributed",
+                  workers=2, batch=4, progress=lambda done, total: seen.append(done))
+    assert "1 of 12 points failed" in str(err.value) and "ValueError: a bad point" in str(err.value)
+    import xarray as xr
+
+    ds = xr.open_zarr(tmp_path / "s.zarr", consolidated=False).load()
     a, b = np.meshgrid(AXES["a"], AXES["b"], indexing="ij")
     done = ds["done"].values.astype(bool)
     assert done.sum() == 11 and not done[2, 1]
@@ -65,10 +87,13 @@ def test_a_local_cluster_streams_the_points_and_stores_a_failure_without_stoppin
     assert seen[-1] == 11 and len(seen) >= 3  # stored in several goes, not at the end
     assert len({p.read_text() for p in marks.iterdir()}) == 2  # two worker processes
     before = _calls(marks)
-    run_sweep(_point(marks, bad=2.0), AXES, tmp_path / "s.zarr", outputs={"y": "1"}, scheduler="distributed",
-              workers=2)
+    with pytest.raises(NoSolutionError):
+        run_sweep(_point(marks, bad=2.0), AXES, tmp_path / "s.zarr", outputs={"y": "1"}, scheduler="distributed",
+                  workers=2)
     after = _calls(marks)
     assert {k: after[k] - before.get(k, 0) for k in after if after[k] != before.get(k, 0)} == {(2.0, 1.0): 1}
+    ds = run_sweep(_point(marks), AXES, tmp_path / "s.zarr", outputs={"y": "1"}, scheduler="synchronous")
+    assert ds["done"].values.all() and ds.attrs["failed"] == "{}"  # computed at last: no longer failed
 
 
 def test_an_interrupted_sweep_keeps_what_finished_and_resumes_computing_nothing_twice(tmp_path):
@@ -119,7 +144,7 @@ def test_an_existing_scheduler_by_address_and_one_that_does_not_answer(tmp_path,
     marks = tmp_path / "marks"
     marks.mkdir()
     with LocalCluster(n_workers=1, threads_per_worker=1, processes=True, host="127.0.0.1",
-                      dashboard_address=None) as local:
+                      dashboard_address=":0") as local:
         ds = run_sweep(_point(marks), {"a": [0.0, 1.0], "b": [2.0]}, tmp_path / "s.zarr", outputs={"y": "1"},
                        scheduler=local.scheduler_address)
         assert np.array_equal(ds["y"].values.ravel(), [2.0, 12.0])

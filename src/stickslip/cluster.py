@@ -46,7 +46,7 @@ def check_scheduler(value, option: str = "scheduler"):
             value.startswith(PROTOCOLS) and len(value.split("://", 1)[1]) > 0)):
         return value
     raise ParameterError(option, value, "processes (a local pool of processes), distributed (a local Dask cluster), "
-                         "or the address tcp://HOST:PORT of a running Dask scheduler")
+                         "the address tcp://HOST:PORT of a running Dask scheduler, or threads or synchronous")
 
 
 @contextlib.contextmanager
@@ -61,7 +61,7 @@ def client(scheduler, workers: int | None = None, announce=None):
     with contextlib.ExitStack() as stack:
         if scheduler == "distributed":
             cluster = stack.enter_context(LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
-                                                       processes=True, host="127.0.0.1", dashboard_address=None))
+                                                       processes=True, host="127.0.0.1", dashboard_address=":0"))
             made = stack.enter_context(Client(cluster))
         else:
             try:
@@ -70,7 +70,7 @@ def client(scheduler, workers: int | None = None, announce=None):
                 raise ParameterError("scheduler", scheduler, f"the address of a running Dask scheduler ({type(err).__name__}: "
                                      f"none answered within {CONNECT_SECONDS:g} s)") from None
         if announce is not None:
-            link = getattr(made, "dashboard_link", None) if scheduler != "distributed" else None
+            link = getattr(made, "dashboard_link", None)
             announce(f"Dask scheduler {made.scheduler.address}" + (f", dashboard {link}" if link else ""))
         yield made
 

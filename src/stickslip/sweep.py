@@ -32,7 +32,7 @@ import zarr
 from . import validation as check
 from .quantities import COMMON as Q, MAX_POINTS
 from .cf import SOURCE, finish, flag_attrs, plain_attrs
-from .errors import ParameterError
+from .errors import NoSolutionError, ParameterError
 from .quantities import lookup
 from .files import content_digest, die_with_parent, exclusive
 from .cluster import client as dask_client, guarded, is_distributed
@@ -228,9 +228,9 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
         as `dask.compute` takes them; or dask.distributed (`stickslip.cluster`): ``"distributed"``
         (a local cluster of ``workers`` processes), a running scheduler's address
         ``tcp://HOST:PORT``, or a `distributed.Client`. There every point is stored as it
-        finishes (at least every ``batch`` points or `FLUSH_SECONDS`), and a point that raises
-        is left not done with its message in the store's ``failed`` attribute (JSON, keyed
-        ``"i,j"`` by grid index) while the sweep goes on; a later call computes it again.
+        finishes (every ``batch`` points, and each within `FLUSH_SECONDS` of finishing), and a point that raises is left not done with its message in the store's
+        ``failed`` attribute (JSON, keyed ``"i,j"`` by grid index) while the sweep goes on;
+        at the end a `NoSolutionError` says how many failed (a later call computes them again).
     progress : callable, optional
         ``progress(done, total)`` after every batch.
     workers : int, optional
@@ -320,10 +320,11 @@ FLUSH_SECONDS = 10.0
 
 
 def _stream(func, axes, store, group, names, sizes, todo, batch, scheduler, workers, progress, finished, total):
-    """The points ``todo`` on dask.distributed (`stickslip.cluster`), each stored as it finishes
-    (every ``batch`` points or `FLUSH_SECONDS`, whichever comes first: no point waits for a
-    slower one); a point that raises is left not done, its message in the store's ``failed``
-    attribute (JSON ``{"i,j": message}``), and the sweep goes on."""
+    """The points ``todo`` on dask.distributed (`stickslip.cluster`), stored as they finish
+    (every ``batch`` points, and each within `FLUSH_SECONDS` of finishing: no point waits for a
+    slower one); a point that raises is left not done, its message in the store's
+    ``failed`` attribute (JSON ``{"i,j": message}``), the sweep goes on, and at its end a
+    `NoSolutionError` says how many failed."""
     import json
     import time
 
@@ -352,28 +353,67 @@ def _stream(func, axes, store, group, names, sizes, todo, batch, scheduler, work
         for idx in todo:
             point = {k: axes[k][i] for k, i in zip(axes, idx)}
             futures[cl.submit(guarded, _call, func, point, names, sizes, pure=False)] = idx
+        # results fetched as they finish (a worker that dies later holds none of them), stored at
+        # least every FLUSH_SECONDS while any has come in; SIGTERM (a batch system ending the job)
+        # stops the sweep as Ctrl-C does, after storing what has finished
+        completed = as_completed(list(futures), with_results=True, raise_errors=False)
         try:
-            # results fetched as they finish (a worker that dies later holds none of them)
-            for future, outcome in as_completed(list(futures), with_results=True, raise_errors=False):
-                idx = futures.pop(future)
-                key = ",".join(map(str, idx))
-                if future.status == "error":  # the scheduler gave up on it (its workers kept dying)
-                    failed[key] = f"{type(outcome).__name__}: {outcome}"
-                else:
-                    status, value = outcome
-                    if status == "ok":
-                        ready.append(idx)
-                        values.append(value)
-                        failed.pop(key, None)
-                    else:
-                        failed[key] = value
-                future.release()
-                if len(ready) >= batch or time.monotonic() - last >= FLUSH_SECONDS:
-                    flush()
-        except BaseException:  # interrupted (Ctrl-C, a progress callback raising): keep what has finished
+            with _terminate_as_interrupt():
+                while futures:
+                    arrived = completed.next_batch(block=False)
+                    if not arrived:
+                        time.sleep(0.05)
+                    for future, outcome in arrived:
+                        _book(futures.pop(future), future, outcome, ready, values, failed)
+                        future.release()
+                    if len(ready) >= batch or (ready and time.monotonic() - last >= FLUSH_SECONDS):
+                        flush()
+        except BaseException:  # interrupted (Ctrl-C, SIGTERM, a progress callback raising): keep what finished
             flush(tell=False)
             raise
         flush()
+    if failed:
+        first = next(iter(failed.items()))
+        raise NoSolutionError(f"{len(failed)} of {total} points failed (the first, at grid index ({first[0]}): "
+                              f"{first[1]}); the others are stored in {store}, these are left not done with their "
+                              "messages in its failed attribute, and a rerun computes them again")
+
+
+def _book(idx, future, outcome, ready, values, failed) -> None:
+    """One finished future: its values, or why it failed (the point raised; or the scheduler gave
+    up on it, its workers dying, or cancelled it)."""
+    key = ",".join(map(str, idx))
+    if future.status == "finished" and isinstance(outcome, tuple) and len(outcome) == 2:
+        status, value = outcome
+        if status == "ok":
+            ready.append(idx)
+            values.append(value)
+            failed.pop(key, None)
+            return
+        failed[key] = value
+        return
+    why = outcome[1] if isinstance(outcome, tuple) and len(outcome) == 3 else outcome  # (type, exception, tb)
+    failed[key] = f"{future.status}: {type(why).__name__}: {why}"
+
+
+@contextlib.contextmanager
+def _terminate_as_interrupt():
+    """SIGTERM raises KeyboardInterrupt in the block (main thread only; restored after)."""
+    import signal
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt("SIGTERM")
+
+    previous = signal.signal(signal.SIGTERM, interrupt)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
 
 
 def _result(store: Path) -> xr.Dataset:
@@ -397,4 +437,10 @@ def _write(group, store: Path, names: list, sizes: dict, chunk: list, values: li
             group[name].vindex[where] = new[name][where]
     group["done"].vindex[where] = True  # last: a batch counts only once all outputs are in
     group.attrs["content_sha256"] = group.attrs["pending_sha256"]
+    if "failed" in group.attrs:  # a point computed now no longer counts as failed
+        import json
+
+        failed = json.loads(group.attrs["failed"])
+        group.attrs["failed"] = json.dumps({k: v for k, v in failed.items()
+                                            if tuple(int(i) for i in k.split(",")) not in set(map(tuple, chunk))})
     zarr.consolidate_metadata(str(store))

@@ -75,6 +75,9 @@ def coupled_contact(u, d_old, normal, tangent, nvec, tvec, mptr, mdof, mw, inv_m
     nc = normal.shape[0]
     cdt2 = multiplier_factor(beta2, dt)
     kind = int(law[0])
+    expo = law[2] if law.shape[0] > 2 else 0.0  # a law of two entries (kind, parameter): no pressure dependence
+    if expo != 0.0 and law.shape[0] < 3 + nc:
+        raise ValueError("law: [kind, parameter, exponent] and one pressure scale per contact node")
     for j in range(nc):
         force_n[j] = 0.0
         force_t[j] = 0.0
@@ -100,8 +103,8 @@ def coupled_contact(u, d_old, normal, tangent, nvec, tvec, mptr, mdof, mw, inv_m
             p = max((gap0[j] - dn) / g, 0.0)
             trial = (d_old[j] + dt * speed[j] - dt_) / g
             scale = 1.0  # a coefficient that depends on the pressure: (P / P_ref)^(-n), P = p law[3 + j]
-            if law[2] != 0.0 and p > 0.0:
-                scale = (p * law[3 + j]) ** (-law[2])
+            if expo != 0.0 and p > 0.0:
+                scale = (p * law[3 + j]) ** (-expo)
             held = fs * scale * p
             stick = abs(trial) <= held
             q = trial

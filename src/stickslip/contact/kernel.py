@@ -117,7 +117,8 @@ def explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, fs, co
     ``fs >= f`` are the kinetic and static friction coefficients, the kinetic one of kind
     ``law[0]`` with parameter ``law[1]`` (`kinetic_coefficient`; ``(COULOMB, 0)``: constant);
     ``law[2] = n`` (0: none) makes both depend on the pressure, times ``(P / P_ref)^(-n)`` with
-    ``P / P_ref = p law[3 + j]`` at node ``j`` (``p`` its normal reaction per unit mass).
+    ``P / P_ref = p law[3 + j]`` at node ``j`` (``p`` its normal reaction per unit mass); a
+    ``law`` of two entries (as before the pressure dependence) has none.
     ``lam_n, lam_t, state`` receive the reactions per unit mass and the node states;
     ``ut_old`` is scratch of the size of ``normal``. ``contact=False``: no reactions.
     """
@@ -128,13 +129,16 @@ def explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, fs, co
     cdt2 = multiplier_factor(beta2, dt)
     on = 1.0 if contact else 0.0
     kind = int(law[0])
+    expo = law[2] if law.shape[0] > 2 else 0.0  # a law of two entries (kind, parameter): no pressure dependence
+    if expo != 0.0 and law.shape[0] < 3 + nc:
+        raise ValueError("law: [kind, parameter, exponent] and one pressure scale per contact node")
     for j in range(nc):  # branch-free for Coulomb, so that the loop vectorises
         r, t = normal[j], tangent[j]
         p = on * max((gap0[j] - u[r]) / cdt2, 0.0)
         trial = (ut_old[j] + dt * speed[j] - u[t]) / cdt2
         g = 1.0  # a coefficient that depends on the pressure: (P / P_ref)^(-n), P = p law[3 + j]
-        if law[2] != 0.0 and p > 0.0:
-            g = (p * law[3 + j]) ** (-law[2])
+        if expo != 0.0 and p > 0.0:
+            g = (p * law[3 + j]) ** (-expo)
         held = fs * g * p
         stick = abs(trial) <= held
         mu = f * g

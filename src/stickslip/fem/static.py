@@ -184,8 +184,10 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
     ``pressure_law`` (`stickslip.friction.PressurePower`): each node's coefficient is ``friction``
     times its factor at the node's pressure (normal force over its tributary length,
     `stickslip.fem.boundary.tributary_lengths`), found for each active set by fixed-point
-    iteration to 1e-10 of ``friction`` (or to the solve's round-off, below 1e-8; `PRESSURE_ITERATIONS`
-    at most, else a `NoSolutionError`).
+    iteration: until a step changes no coefficient by more than 1e-10 of ``friction``, or by at most
+    1e-8 of it and no less than half the step before (the solve's round-off; a slowly contracting
+    iteration is then within about 1e-8 / (1 - rate) of its limit); `PRESSURE_ITERATIONS` at most,
+    else a `NoSolutionError` that says so.
     """
     friction = Q.check("friction", friction)
     max_iterations = max(ITERATIONS, 2 * len(frames.nodes)) if max_iterations is None else \
@@ -212,6 +214,8 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
         try:
             w, p, mu = _coefficients(Kw, Fw, fixed, normal_dofs, tangent_dofs, active, -frames.gap, friction, n_dofs,
                                      pressure_law, share)
+        except _Unsettled:
+            raise
         except NoSolutionError:
             if iteration == 1:
                 raise
@@ -253,6 +257,10 @@ def _cycling(cycle: list, friction: float) -> str:
             "contact.friction, or run from the preload (fem run --start rest) to see what the contact does")
 
 
+class _Unsettled(NoSolutionError):
+    """The coefficients of a pressure-dependent law found no fixed point (not a body that lifts off)."""
+
+
 def _coefficients(Kw, Fw, fixed, normal, tangent, active, prescribed, friction, n_dofs, pressure_law, share):
     """``(w, p, mu)`` of one active set: the solve, and with a pressure law the fixed point of
     each active node's coefficient ``mu = friction factor(p / share)`` (``mu`` per contact node)."""
@@ -270,7 +278,7 @@ def _coefficients(Kw, Fw, fixed, normal, tangent, active, prescribed, friction, 
             w, p = _solve(Kw, Fw, fixed, normal[active], tangent[active], prescribed[active], mu[active], n_dofs)
             return w, p, mu
         last = change
-    raise NoSolutionError(f"steady sliding with friction depending on the pressure (exponent "
+    raise _Unsettled(f"steady sliding with friction depending on the pressure (exponent "
                           f"{pressure_law.exponent:g}) did not settle in {PRESSURE_ITERATIONS} iterations: the "
                           "coefficients of the nodes change the pressures more than they are changed by them (a "
                           "smaller pressure_exponent)")

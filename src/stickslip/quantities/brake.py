@@ -40,6 +40,8 @@ BRAKE = Domain("brake", units="the paper's: time Omega t, lengths in R, traction
     Q("n_r", "1", "element layers across the FE annulus", "[1, 4096]", integer=True),
     Q("transits", "1", "run length in wave transits", "(0, 1e12]",
       why="the work budget, 1e13 degree-of-freedom steps, bounds a run for its mesh"),
+    Q("time_step", "1", "time step of the FE annulus's explicit scheme in the paper's time t = Omega t", "(0, 1]",
+      why="at most the stable step of the mesh"),
     Q("seed_mode", "1", "wave number of the initial perturbation", "[1, 2097152]", integer=True,
       why="at most half the nodes around the ring"),
     Q("mode", "1", "circumferential wave number (Fourier mode number; 0: uniform)", "[0, 2097152]", integer=True,

@@ -10,10 +10,9 @@ Units are the paper's: points and displacements in units of ``R`` (the bore radi
 mesh is the annulus ``1 <= r <= xi`` at ``z = 0``; velocities in ``R Omega``; stresses,
 pressures and tractions in units of ``E``; times are the paper's ``t = Omega t̄`` (the
 snapshot times ``vol_t`` of the run). XDMF has no place for units, hence this list. Vectors
-are Cartesian and padded with ``z = 0`` (ParaView's 3-component vectors). Per snapshot:
-
-The fields are the general body's (`stickslip.fem.paraview.run_snapshot`, on the annulus's
-problem `problem.annulus_problem`) and the annulus's polar components beside them.
+are Cartesian and padded with ``z = 0`` (ParaView's 3-component vectors). The fields are the
+general body's (`stickslip.fem.paraview.run_snapshot`, on the annulus's problem
+`problem.annulus_problem`) and the annulus's polar components beside them. Per snapshot:
 
 point data (every node of the mesh, the clamped ring ``r = xi`` included, where ``u = 0``)
     ``displacement``: total displacement from the unstressed ring (steady shrink fit plus
