@@ -99,11 +99,12 @@ class Body:
 
     def cells_along(self, name: str, option: str = "group") -> np.ndarray:
         """Sorted indices of the cells with an edge in boundary group ``name``."""
-        edges = {tuple(e) for e in np.sort(self.group(name, option)[:, :2], axis=1).tolist()}
+        n = np.int64(len(self.points))
+        edges = np.sort(self.group(name, option)[:, :2], axis=1).astype(np.int64)
         corners = self.corners
-        sides = np.sort(np.stack([corners, np.roll(corners, -1, axis=1)], axis=-1), axis=-1)
-        hit = [i for i, cell in enumerate(sides.tolist()) if any(tuple(e) in edges for e in cell)]
-        return np.array(hit, dtype=np.int64)
+        sides = np.sort(np.stack([corners, np.roll(corners, -1, axis=1)], axis=-1), axis=-1).astype(np.int64)
+        hit = np.isin(sides[..., 0] * n + sides[..., 1], edges[:, 0] * n + edges[:, 1]).any(axis=1)
+        return np.flatnonzero(hit).astype(np.int64)
 
     def nodes(self, name: str, option: str = "group") -> np.ndarray:
         """Sorted node indices of the boundary group ``name``."""
