@@ -18,13 +18,18 @@ from stickslip.fem.config import load_config
 from .test_examples import EXAMPLES
 
 
-@pytest.fixture(scope="module")
-def folder(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("pad_disc")
+def pad_disc(folder, disc_size: str = "0.003"):
+    """The example `pad_disc.toml` in ``folder`` with its meshes made there (the pad at 4 mm, the
+    disc at ``disc_size`` m): a folder as a user has it after the example's two mesh commands."""
     shutil.copy(EXAMPLES / "pad_on_disc" / "pad_disc.toml", folder)
-    for script, args in (("mesh.py", ["pad.msh", "0.004"]), ("disc.py", ["disc.msh", "0.003", "2e-5"])):
+    for script, args in (("mesh.py", ["pad.msh", "0.004"]), ("disc.py", ["disc.msh", disc_size, "2e-5"])):
         subprocess.run([sys.executable, str(EXAMPLES / "pad_on_disc" / script), *args], cwd=folder, check=True)
     return folder
+
+
+@pytest.fixture(scope="module")
+def folder(tmp_path_factory):
+    return pad_disc(tmp_path_factory.mktemp("pad_disc"))
 
 
 def _config(folder, old="", new="", name="case.toml"):

@@ -14,9 +14,6 @@ other solution. First measured: errors 1.9e-2, 9.3e-3, 4.6e-3 at Courant 0.8, 0.
 tenth of the effect) are what first order and a visible effect require, written after that
 first measurement. A planted sign of the gyroscopic matrix fails it."""
 
-import shutil
-import subprocess
-import sys
 
 import numpy as np
 import pytest
@@ -27,17 +24,14 @@ from stickslip.fem.config import load_config
 from stickslip.fem.pair import PairProblem, Rotation
 from stickslip.fem.pair_run import PairScheme
 
-from .test_examples import EXAMPLES
+from .test_pair_config import pad_disc
 
 OMEGA, T_END = 3000.0, 2e-4
 
 
 @pytest.fixture(scope="module")
 def base(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("gyro")
-    shutil.copy(EXAMPLES / "pad_on_disc" / "pad_disc.toml", folder)
-    for script, args in (("mesh.py", ["pad.msh", "0.004"]), ("disc.py", ["disc.msh", "0.006", "2e-5"])):
-        subprocess.run([sys.executable, str(EXAMPLES / "pad_on_disc" / script), *args], cwd=folder, check=True)
+    folder = pad_disc(tmp_path_factory.mktemp("gyro"), disc_size="0.006")
     return load_config(folder / "pad_disc.toml").problem()
 
 

@@ -68,7 +68,7 @@ from ..friction import FrictionLaw, PressurePower
 from ..quantities import FEM as Q
 from ..results import Result
 from .assembly import BodySystem, transport_operators
-from .static import ITERATIONS, PRESSURE_ITERATIONS
+from .static import ITERATIONS, PRESSURE_ITERATIONS, settled
 from .surfaces import MAX_SPEED
 
 __all__ = ["Mortar", "PairProblem", "PairSteady", "Rotation", "Translation", "mortar", "sliding", "steady_pair"]
@@ -573,7 +573,7 @@ def steady_pair(problem: PairProblem, max_iterations: int | None = None) -> Pair
             new = problem.kinetic[A] * problem.factor(np.maximum(lam[A], 0.0))
             change, top = float(np.max(np.abs(new - mu[A]), initial=0.0)), float(np.max(problem.kinetic))
             mu[A] = new
-            if change <= 1e-10 * top or (change <= 1e-8 * top and change >= 0.5 * last):
+            if settled(change, last, top):
                 x = _solve_pair(K, F, G[A], G[A] + sp.diags(mu[A]) @ T[A], scale, -scale * g0[A])
                 lam[A] = scale * x[free.size:]
                 break

@@ -37,7 +37,7 @@ from .assembly import BodySystem
 from .boundary import tributary_lengths
 from .surfaces import ContactFrames
 
-__all__ = ["SteadyContact", "frame_rotation", "steady_contact", "problem_attrs", "LOAD_FLOOR", "ITERATIONS"]
+__all__ = ["settled", "SteadyContact", "frame_rotation", "steady_contact", "problem_attrs", "LOAD_FLOOR", "ITERATIONS"]
 
 #: A total normal force below ``LOAD_FLOOR`` x Young's modulus (the largest of the materials) x the
 #: body's size [N/m] is no load
@@ -257,6 +257,13 @@ def _cycling(cycle: list, friction: float) -> str:
             "contact.friction, or run from the preload (fem run --start rest) to see what the contact does")
 
 
+def settled(change: float, last: float, scale: float) -> bool:
+    """A fixed-point iteration of friction coefficients is done: its step changed no coefficient by
+    more than 1e-10 of ``scale``, or by at most 1e-8 of it and no less than half the step before
+    (``last``: the solve's round-off, where the change stops falling)."""
+    return change <= 1e-10 * scale or (change <= 1e-8 * scale and change >= 0.5 * last)
+
+
 class _Unsettled(NoSolutionError):
     """The coefficients of a pressure-dependent law found no fixed point (not a body that lifts off)."""
 
@@ -274,7 +281,7 @@ def _coefficients(Kw, Fw, fixed, normal, tangent, active, prescribed, friction, 
         change = float(np.max(np.abs(new - mu[active]), initial=0.0))
         mu[active] = new
         # settled: to 1e-10, or at the solve's round-off (below 1e-8 and no longer falling)
-        if change <= 1e-10 * friction or (change <= 1e-8 * friction and change >= 0.5 * last):
+        if settled(change, last, friction):
             w, p = _solve(Kw, Fw, fixed, normal[active], tangent[active], prescribed[active], mu[active], n_dofs)
             return w, p, mu
         last = change
