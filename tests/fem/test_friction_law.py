@@ -158,3 +158,16 @@ def test_steady_sliding_with_a_pressure_dependent_coefficient_is_a_fixed_point_o
     assert np.abs(state.u - w).max() < 1e-10 * np.abs(w).max()
     assert np.abs(out.lam_t - r_t).max() < 1e-9 * np.abs(r_t).max()
     assert np.all(out.state[r_n > 0] == 1)
+
+
+@pytest.mark.parametrize("n, reference", [(0.999, 1e12), (-1.0, 1e-3)])
+def test_a_pressure_law_at_the_edges_of_its_ranges_is_named_not_misreported(block, capsys, n, reference):
+    """Both numbers within their declared ranges, together they give the block's nodes coefficients
+    of about 1e6 and 4e8: refused in one line naming the law (was "the body is not held", from a
+    solve the enormous friction made singular)."""
+    config = block / "edge.toml"
+    config.write_text((block / "block.toml").read_text().replace(
+        "static_friction = 0.6", f"static_friction = 0.4\npressure_exponent = {n}\nreference_pressure = {reference}"))
+    assert run(["fem", "steady", str(config)]) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "pressure_exponent" in err and "beyond 10" in err, err

@@ -68,7 +68,7 @@ from ..friction import FrictionLaw, PressurePower
 from ..quantities import FEM as Q
 from ..results import Result
 from .assembly import BodySystem, transport_operators
-from .static import ITERATIONS, PRESSURE_ITERATIONS, settled
+from .static import ITERATIONS, PRESSURE_ITERATIONS, settled, within_friction
 from .surfaces import MAX_SPEED
 
 __all__ = ["Mortar", "PairProblem", "PairSteady", "Rotation", "Translation", "mortar", "sliding", "steady_pair"]
@@ -571,6 +571,7 @@ def steady_pair(problem: PairProblem, max_iterations: int | None = None) -> Pair
             if problem.pressure_law is None:
                 break
             new = problem.kinetic[A] * problem.factor(np.maximum(lam[A], 0.0))
+            within_friction(new, problem.pressure_law)
             change, top = float(np.max(np.abs(new - mu[A]), initial=0.0)), float(np.max(problem.kinetic))
             mu[A] = new
             if settled(change, last, top):

@@ -37,7 +37,7 @@ from .assembly import BodySystem
 from .boundary import tributary_lengths
 from .surfaces import ContactFrames
 
-__all__ = ["settled", "SteadyContact", "frame_rotation", "steady_contact", "problem_attrs", "LOAD_FLOOR", "ITERATIONS"]
+__all__ = ["settled", "within_friction", "SteadyContact", "frame_rotation", "steady_contact", "problem_attrs", "LOAD_FLOOR", "ITERATIONS"]
 
 #: A total normal force below ``LOAD_FLOOR`` x Young's modulus (the largest of the materials) x the
 #: body's size [N/m] is no load
@@ -264,6 +264,16 @@ def settled(change: float, last: float, scale: float) -> bool:
     return change <= 1e-10 * scale or (change <= 1e-8 * scale and change >= 0.5 * last)
 
 
+def within_friction(mu, pressure_law) -> None:
+    """Refuse coefficients a pressure law has taken beyond the largest friction coefficient declared
+    (a `NoSolutionError` naming the law's parameters, rather than a solve that fails further on)."""
+    top = Q["friction"].range.hi
+    if np.max(mu, initial=0.0) > top:
+        raise _Unsettled(f"the pressure law (pressure_exponent = {pressure_law.exponent:g}, reference_pressure = "
+                         f"{pressure_law.reference:g} Pa) gives a node the friction coefficient {np.max(mu):.4g}, "
+                         f"beyond {top:g}: a reference pressure nearer the contact's pressures, or a smaller exponent")
+
+
 class _Unsettled(NoSolutionError):
     """The coefficients of a pressure-dependent law found no fixed point (not a body that lifts off)."""
 
@@ -278,6 +288,7 @@ def _coefficients(Kw, Fw, fixed, normal, tangent, active, prescribed, friction, 
         if pressure_law is None or friction == 0.0:
             return w, p, mu
         new = friction * pressure_law.factor(np.maximum(p, 0.0) / share[active])
+        within_friction(new, pressure_law)
         change = float(np.max(np.abs(new - mu[active]), initial=0.0))
         mu[active] = new
         # settled: to 1e-10, or at the solve's round-off (below 1e-8 and no longer falling)
