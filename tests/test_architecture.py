@@ -35,9 +35,9 @@ ALLOWED = {
     "fem": BASE | {"contact", "friction", "sweep", "files"},
     "plotting": set(),
     "errata": set(),
-    "figures": BASE | MODELS | {"contact", "friction", "sweep", "plotting"},
-    "report": BASE | {"figures", "errata", "plotting", "__init__"},
-    "cli": BASE | MODELS | {"friction", "contact", "sweep", "cluster", "plotting", "figures", "report", "__init__"},
+    "figures": BASE | MODELS | {"contact", "friction", "sweep", "files", "plotting"},
+    "report": BASE | {"figures", "errata", "plotting", "files", "__init__"},
+    "cli": BASE | MODELS | {"friction", "contact", "sweep", "cluster", "files", "plotting", "figures", "report", "__init__"},
     "__main__": {"cli"},
     "__init__": set(),
 }

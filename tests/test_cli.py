@@ -219,3 +219,17 @@ def test_a_parameter_that_is_no_number_is_refused(capsys):
         assert run(["oscillator", *command, *OSC, "--parameter", "name"]) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and "--parameter" in err and "belt_speed" in err
+
+
+def test_the_command_line_loads_no_model_before_a_command_needs_it():
+    """`stickslip --help` (and every command's start) does not import the models: they load
+    with the command that uses them (all of them once took 2.5 s before any work)."""
+    import subprocess
+    import sys
+
+    code = ("import sys, stickslip.cli; print(' '.join(sorted({m.split('.')[1] for m in sys.modules "
+            "if m.startswith('stickslip.') and m.split('.')[1] in ('brake', 'oscillator', 'fem', 'halfspace', "
+            "'contact', 'friction')})))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.split() == []

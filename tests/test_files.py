@@ -106,3 +106,23 @@ def _alive(pid):
             return f.read().split(")")[-1].split()[0] != "Z"
     except OSError:
         return False
+
+
+def test_a_netcdf_write_does_not_import_distributed_and_reads_back(tmp_path):
+    """`files.to_netcdf` skips xarray's cluster probe (an import of `distributed`, 0.3-0.7 s)
+    when the process has none, writes the same file, and leaves `distributed` importable."""
+    code = textwrap.dedent(f"""
+        import sys
+        import numpy as np, xarray as xr
+        from stickslip.files import to_netcdf
+        ds = xr.Dataset({{"a": ("x", np.arange(3.0))}})
+        to_netcdf(ds, {str(tmp_path / 'a.nc')!r})
+        print("distributed" in sys.modules, "dask.distributed" in sys.modules)
+        import distributed  # still importable after the write
+        to_netcdf(ds, {str(tmp_path / 'b.nc')!r})  # and a write with it imported
+        assert xr.load_dataset({str(tmp_path / 'a.nc')!r}).identical(xr.load_dataset({str(tmp_path / 'b.nc')!r}))
+        assert xr.load_dataset({str(tmp_path / 'a.nc')!r})["a"].values.tolist() == [0.0, 1.0, 2.0]
+        """)
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.split() == ["False", "False"]

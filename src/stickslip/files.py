@@ -13,6 +13,11 @@ kill it when its parent dies, so killing a sweep leaves no worker behind.
 `content_digest(arrays)` is the SHA-256 of named arrays (name, shape, type and bytes):
 checkpoints and sweep stores carry it, and a file whose content no longer matches it (a
 flipped byte, a lost chunk, a value edited by hand) is refused instead of resumed.
+
+`to_netcdf(ds, path, **options)` is `xarray.Dataset.to_netcdf` without the cost of asking
+for a Dask cluster when there can be none: xarray asks Dask which scheduler is active, and
+Dask imports `distributed` to look for a client (0.3-0.7 s on a process's first file). A
+process that has not imported `distributed` has no client, so the question is skipped.
 """
 
 from __future__ import annotations
@@ -21,6 +26,7 @@ import contextlib
 import hashlib
 import os
 import signal
+import sys
 from pathlib import Path
 from typing import Mapping
 
@@ -33,7 +39,24 @@ try:
 except ImportError:  # pragma: no cover - not POSIX
     fcntl = None
 
-__all__ = ["exclusive", "die_with_parent", "content_digest", "write_xdmf_series"]
+__all__ = ["exclusive", "die_with_parent", "content_digest", "to_netcdf", "write_xdmf_series"]
+
+
+def to_netcdf(ds, path, **options) -> None:
+    """``ds.to_netcdf(path, **options)``; when `distributed` was never imported in this process
+    (so no Dask client exists), without importing it to look for one."""
+    names = ("distributed", "dask.distributed")
+    if any(name in sys.modules for name in names):  # imported (a client may exist), or guarded
+        ds.to_netcdf(path, **options)
+        return
+    for name in names:
+        sys.modules[name] = None  # an import of it raises ImportError: "no cluster"
+    try:
+        ds.to_netcdf(path, **options)
+    finally:
+        for name in names:
+            if sys.modules.get(name, 0) is None:
+                del sys.modules[name]
 
 
 def content_digest(arrays: Mapping[str, object]) -> str:

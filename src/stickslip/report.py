@@ -23,6 +23,7 @@ from .cf import finish, for_file, from_file
 from . import __version__, plotting
 from .errata import ERRATA, to_markdown
 from .errors import ParameterError
+from .files import to_netcdf
 from .figures import Check, FigureSpec, registry
 
 
@@ -121,7 +122,7 @@ def _load_or_compute(spec: FigureSpec, data_dir: Path, quick: bool, fingerprint:
     ds.attrs.update({"fingerprint": fingerprint, "quick": int(quick), "figure": spec.key})
     ds = finish(ds, spec.title, domain, history=f"stickslip reproduce{' --quick' if quick else ''} (figure {spec.key})")
     tmp = path.with_suffix(".nc.partial")
-    for_file(ds).to_netcdf(tmp)
+    to_netcdf(for_file(ds), tmp)
     os.replace(tmp, path)
     shutil.rmtree(cache, ignore_errors=True)
     return ds, False

@@ -9,7 +9,6 @@ from typing import Annotated, Optional
 
 import typer
 
-from ..brake.reduced.params import in_ratio, small_strain
 from ..quantities import BRAKE as Q, COMMON
 from ..errors import MISSING, ParameterError
 from .common import (AXIS_HELP, Overwrite, Replace, RunOut, Scheduler, XdmfEvery, axis, checked_axis, declared, emit, map_size, output_folder, output_path, overwrite_needs,
@@ -61,6 +60,8 @@ def _check_options(options: dict) -> None:
 def resolve(*, xi=None, nu=0.3, gamma=None, delta=None, friction=0.0, inner_radius=None, outer_radius=None,
             young=None, density=None, omega=None, mismatch=None, need=("xi", "gamma", "delta")) -> dict:
     """Dimensionless ``xi, gamma, delta`` from either the dimensionless or the SI options."""
+    from ..brake.reduced.params import in_ratio, small_strain  # the models load with the commands that use them
+
     _check_options(dict(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                         outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch))
     phys = {k: v for k, v in dict(inner_radius=inner_radius, outer_radius=outer_radius, young=young,
@@ -283,6 +284,8 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (directory ending
             raise ParameterError(name, value, "> 0 with --kind waves (no stick zone without friction)")
         Q.check(name, value)
         if name == "mismatch":
+            from ..brake.reduced.params import small_strain
+
             small_strain(name, value, 0.1, "the bore radius 0.1 m")
 
     axes = dict(checked_axis(option, text, point) for option, text in (("--x", x), ("--y", y)))

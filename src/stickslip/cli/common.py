@@ -237,11 +237,12 @@ def write_netcdf(ds, out: Path) -> None:
     """Write a result dataset to ``out`` (through a temporary file, so a kill leaves no half
     file), with the command line in its ``history``."""
     from ..cf import for_file, stamp
+    from ..files import to_netcdf
 
     ds = for_file(stamp(ds.copy(), "stickslip " + " ".join(shlex.quote(a) for a in sys.argv[1:])))
     tmp = Path(out).with_name(Path(out).name + ".partial")
     try:
-        ds.to_netcdf(tmp)
+        to_netcdf(ds, tmp)
         os.replace(tmp, out)
     finally:
         tmp.unlink(missing_ok=True)

@@ -11,9 +11,6 @@ from typing import Annotated, Optional
 
 import typer
 
-from ..friction import make_law
-from ..oscillator import (Oscillator, continue_cycle, continue_from_hopf, equilibrium_stability, hopf_points,
-                          limit_cycle, simulate)
 from ..quantities import COMMON, OSCILLATOR as Q
 from .common import (AXIS_HELP, Overwrite, Replace, Scheduler, axis, declared, map_size, emit, output_folder, output_path, overwrite_needs,
                      progress_bar, write_netcdf)
@@ -52,7 +49,10 @@ def Given(option):
     return given
 
 
-def _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, damping) -> Oscillator:
+def _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, damping):
+    from ..friction import make_law  # the models are imported by the commands that use them (`--help` stays quick)
+    from ..oscillator import Oscillator
+
     # a value given for nothing is a mistake, not something to ignore: make_law refuses it
     friction = make_law(law.value, fs=fs, fd=fd, tau=tau, vs=vs)
     return Oscillator(mass, stiffness, normal_force, belt_speed, friction, damping)
@@ -82,6 +82,8 @@ def cycle(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed: Be
           json: Json = False, out: Out = None, plot: Plot = None, overwrite: Replace = False):
     """Limit cycle: period, stick and slip times, amplitude, Floquet multipliers."""
     out, plot = _outputs(out, plot, overwrite)
+    from ..oscillator import limit_cycle
+
     result = limit_cycle(_osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, damping), x0, v0)
     _emit(result.to_dict(), json, "limit cycle")
 
@@ -98,6 +100,8 @@ def simulate_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_sp
                  json: Json = False, out: Out = None, plot: Plot = None, overwrite: Replace = False):
     """Event-driven simulation with exact stick/slip switching."""
     out, plot = _outputs(out, plot, overwrite)
+    from ..oscillator import simulate
+
     traj = simulate(_osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, damping), t_end, x0, v0)
     counts = {name: int((traj.modes == m).sum()) for name, m in (("stick_segments", 0), ("slip_segments", 1),
                                                                   ("reverse_slip_segments", -1))}
@@ -122,6 +126,8 @@ def stability(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed
     hi = min(value * 100, span.hi) if hi is None else hi
     if lo == hi:  # a parameter at zero (damping 0): scanned over its declared range
         lo, hi = span.lo, min(span.hi, 1.0)
+    from ..oscillator import equilibrium_stability, hopf_points
+
     data = equilibrium_stability(osc).to_dict()
     data["hopf_points"] = [h.to_dict() for h in hopf_points(osc, parameter, lo, hi)]
     _emit(data, json, "steady sliding")
@@ -138,6 +144,8 @@ def continue_cmd(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_sp
                  json: Json = False, out: Out = None, plot: Plot = None, overwrite: Replace = False):
     """Continuation of the limit cycle in a parameter (amplitude, period, grazing, Hopf)."""
     out, plot = _outputs(out, plot, overwrite)
+    from ..oscillator import continue_cycle, continue_from_hopf, hopf_points
+
     osc = _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, damping)
     if from_hopf:
         start = osc.parameter(parameter)

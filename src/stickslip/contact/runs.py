@@ -36,7 +36,7 @@ from ..results import Result
 from ..quantities import COMMON as Q
 from ..cf import SOURCE, finish, for_file, from_file, plain_attrs
 from ..errors import NoSolutionError, ParameterError
-from ..files import content_digest, exclusive
+from ..files import content_digest, exclusive, to_netcdf
 from .scheme import StepState
 from .states import SEPARATION, SLIP_POS, STATE_ATTRS, STATE_NAMES, state_fractions
 
@@ -430,8 +430,8 @@ def save(run, path) -> None:
     results = results_view(run)
     results.attrs.update({**stamp, "results_sha256": _digest(results)})
     results.attrs["checkpoint"] = "the group checkpoint holds the scheme's state for resuming this run"
-    for_file(results).to_netcdf(tmp, mode="w")
-    for_file(state).to_netcdf(tmp, mode="a", group="checkpoint")
+    to_netcdf(for_file(results), tmp, mode="w")
+    to_netcdf(for_file(state), tmp, mode="a", group="checkpoint")
     os.replace(tmp, path)
 
 

@@ -29,6 +29,7 @@ import xarray as xr
 
 from ...brake import BrakeParams
 from ...cf import for_file, from_file, stamp
+from ...files import to_netcdf
 from ...brake.fem import FemScheme, classify_fem, integrate_fem, perturbed_steady
 from ...brake.fem.campaign import limit_regime
 from ...contact import REGIME_ATTRS, REGIME_CODES
@@ -143,7 +144,7 @@ def export(ds: xr.Dataset, kind: str, folder: Path, computed: str) -> Path:
     out.attrs.update({"model_fingerprint": model_fingerprint(), "computed": computed,
                       "compute_seconds": float(np.nansum(ds["seconds"].values))})
     path = folder / f"fem_{kind}.nc"
-    for_file(stamp(out, f"exported by stickslip brake campaign ({kind})")).to_netcdf(path)
+    to_netcdf(for_file(stamp(out, f"exported by stickslip brake campaign ({kind})")), path)
     return path
 
 
