@@ -75,3 +75,17 @@ def test_every_file_of_reproduce_quick_follows_the_cf_rules(tmp_path):
     files = sorted((tmp_path / "data").glob("*.nc"))
     assert len(files) == len({s.data_from or s.key for s in registry().values()})
     assert [p for f in files for p in file_problems(f)] == []
+
+
+def test_the_report_says_which_data_a_figure_used_and_describes_them(tmp_path):
+    """A figure whose data can come from several places (a stored campaign, one run here, a
+    small version) states it, and its text is the one computed for those data."""
+    from stickslip.figures import Check, FigureSpec
+    from stickslip.report import FigureOutcome, Summary, markdown_report
+
+    spec = FigureSpec("x", "X", "model", "claim", "the full campaign on two meshes")
+    outcome = FigureOutcome(spec, [Check("numerics", True, "1", "1")], 0.0, False, "x.png",
+                            "4 runs on one mesh", "the small version (4 runs): no campaign found")
+    text = markdown_report(Summary(tmp_path, True, [outcome]))
+    assert "**What was computed.** 4 runs on one mesh" in text and "two meshes" not in text
+    assert "**Data used.** The small version (4 runs): no campaign found." in text

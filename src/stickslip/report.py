@@ -34,6 +34,8 @@ class FigureOutcome:
     seconds: float
     cached: bool
     image: str
+    method: str = ""  # what was computed, for the data used (default: the spec's method)
+    data: str = ""  # where the data came from, when that can differ between runs (``ds.attrs["source"]``)
 
     @property
     def passed(self) -> bool:
@@ -149,7 +151,9 @@ def reproduce(out: Path, *, quick: bool = False, only: str | None = None, force:
             "the figure is legible at 100 % (stickslip.plotting.legibility_problems)", not problems,
             f"{len(problems)} problem(s)", "none: text >= 7 pt, units on axes, no overlaps, nothing on the data, "
             "every colour code explained", "; ".join(problems[:8]).replace("|", "/"))]
-        summary.outcomes.append(FigureOutcome(spec, checks, time.perf_counter() - start, cached, image))
+        method = spec.describe(ds) if spec.describe else spec.method
+        summary.outcomes.append(FigureOutcome(spec, checks, time.perf_counter() - start, cached, image, method,
+                                              str(ds.attrs.get("source", ""))))
         write_report(summary)  # keep the report current while the run proceeds
     return summary
 
@@ -179,7 +183,8 @@ def markdown_report(summary: Summary) -> str:
     for o in summary.outcomes:
         s = o.spec
         lines += ["", f'<a id="{s.key}"></a>', "", f"## {s.title}", "", f"*Model:* {s.model}", "",
-                  f"**The paper's claim.** {s.claim}", "", f"**What was computed.** {s.method}", "",
+                  f"**The paper's claim.** {s.claim}", "", f"**What was computed.** {o.method or s.method}", "",
+                  *([f"**Data used.** {o.data[:1].upper() + o.data[1:]}.", ""] if o.data else []),
                   f"![{s.title}]({o.image})", "", "| Check | Measured | Expected | Verdict | Detail |",
                   "|---|---|---|---|---|"]
         for c in o.checks:

@@ -70,12 +70,13 @@ class FigureSpec:
     plot: Callable | None = None
     check: Callable[[xr.Dataset], list[Check]] | None = None
     inputs: Callable | None = None  # inputs(data_dir) -> str: fingerprint of data from outside the package
+    describe: Callable[[xr.Dataset], str] | None = None  # what was computed, for the data actually used
 
 
 def _spec(name: str) -> FigureSpec:
     module = importlib.import_module(f"{__name__}.{name}")
     return replace(module.FIGURE, compute=getattr(module, "compute", None), plot=module.plot, check=module.check,
-                   inputs=getattr(module, "inputs", None))
+                   inputs=getattr(module, "inputs", None), describe=getattr(module, "describe", None))
 
 
 def registry() -> dict[str, FigureSpec]:

@@ -144,3 +144,27 @@ def test_campaign_summary_counts_as_the_figure_does():
     assert out["runs"] == 24 and out["paper_outcome"]["case 1 on 256 x 16"]["reached"] == 1.0
     case2 = out["paper_outcome"]["case 2 on 512 x 32"]
     assert case2["reached"] == 0.25 and case2["most_frequent"] == "stick-slip-separation 5"
+
+
+def test_the_text_describes_the_data_shown_not_the_full_campaign():
+    """The report's "what was computed" comes from the dataset: the small version (one mesh,
+    4 runs) is described as such, never as the two-mesh campaign of 16 runs."""
+    small = statistics_data(seeds=4, meshes=((256, 16),))
+    small.attrs["mesh0_max_transits"] = 300.0
+    text = fem_statistics.describe(small)
+    assert "4 runs per case" in text and "256 × 16 (100 to 300 transits)" in text
+    assert "512" not in text and "no claim can be settled" in text
+    full = statistics_data(seeds=16)
+    full.attrs.update({"mesh0_max_transits": 300.0, "mesh1_max_transits": 400.0, "mesh1_min_transits": 120.0})
+    text = fem_statistics.describe(full)
+    assert "16 runs per case" in text and "512 × 32 (120 to 400 transits)" in text and "settled" not in text
+
+
+def test_geometry_text_follows_its_grid_and_budget():
+    dims = ("case", "xi", "beta2", "seed")
+    ds = xr.Dataset({"regime": (dims, np.zeros((3, 2, 2, 2)))},
+                    coords={"case": range(3), "xi": [1.5, 2.5], "beta2": [0.6, 0.9], "seed": range(2)},
+                    attrs={"n_theta": 128, "budget": {"max_transits": 150.0}})
+    text = fem_geometry.describe(ds)
+    assert "2 unseeded runs" in text and "ξ = 1.5, 2.5" in text and "128 × 16, 128 × 48" in text
+    assert "β2 = 0.6, 0.9" in text and "150 transits" in text and "1.25" not in text

@@ -28,6 +28,7 @@ Cases are given as ``(friction, mismatch [m], Omega [rad/s])`` on the steel ring
 from __future__ import annotations
 
 import functools
+import inspect
 import shutil
 import time
 from pathlib import Path
@@ -43,7 +44,7 @@ from .classify import classify_fem
 from .run import integrate_fem, perturbed_steady
 from .scheme import FemScheme
 
-__all__ = ["OUTCOMES", "limit_regime", "statistics", "geometry", "geometry_mesh"]
+__all__ = ["OUTCOMES", "limit_regime", "statistics", "geometry", "geometry_mesh", "budget_of"]
 
 #: What each run records (name -> units).
 OUTCOMES = {"regime": REGIME_CODES, "n_zones": "1", "n_fft": "1", "stationary": "1", "residual": "1", "transits": "1",
@@ -169,6 +170,17 @@ def _fresh_runs(store: Path, options: dict) -> None:
     """With ``overwrite``, the runs' checkpoints go with the store (`run_sweep` replaces it)."""
     if options.get("overwrite"):
         shutil.rmtree(store.with_suffix(".runs"), ignore_errors=True)
+
+
+def budget_of(attrs, mesh: int | None = None) -> dict:
+    """The budget of `limit_regime` (``chunk``, ``min_transits``, ``max_transits``, ...) a
+    campaign's runs had, from its attributes (``mesh{m}_<key>`` of `statistics`, ``budget_<key>``
+    of `geometry`), the defaults filled in."""
+    defaults = {k: p.default for k, p in inspect.signature(limit_regime).parameters.items()
+                if p.kind is p.KEYWORD_ONLY and isinstance(p.default, float)}
+    prefix = "budget_" if mesh is None else f"mesh{mesh}_"
+    given = attrs.get("budget") if mesh is None and isinstance(attrs.get("budget"), dict) else {}
+    return {k: float(given.get(k, attrs.get(prefix + k, v))) for k, v in defaults.items()}
 
 
 def _case_attrs(cases) -> dict:

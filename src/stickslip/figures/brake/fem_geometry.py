@@ -18,13 +18,13 @@ import xarray as xr
 from matplotlib.figure import Figure
 
 from ... import plotting
-from ...brake.fem.campaign import geometry
+from ...brake.fem.campaign import budget_of, geometry, geometry_mesh
 from ...contact import REGIME_CODES
 from .. import Check, FigureSpec
 from . import campaign_data
 from .paper import CASES, PAPER_REGIMES
 
-__all__ = ["compute", "check", "plot", "inputs", "most_frequent"]
+__all__ = ["compute", "check", "plot", "inputs", "most_frequent", "describe"]
 
 _NAMES = {v: k for k, v in REGIME_CODES.items()}
 _SHORT = {"stick-slip": "SS", "stick-slip-separation": "SSS", "stick-separation": "SSep", "slip": "S",
@@ -46,6 +46,18 @@ def compute(quick: bool = False, cache: Path | None = None, data_dir: Path | Non
 
 def inputs(data_dir: Path | None) -> str:
     return campaign_data.inputs("geometry", data_dir)
+
+
+def describe(ds: xr.Dataset) -> str:
+    """What was computed, from the dataset itself (its grid, mesh and budget)."""
+    n_theta, budget = int(ds.attrs.get("n_theta", 256)), budget_of(ds.attrs)
+    xis = ", ".join(f"{x:g}" for x in ds["xi"].values)
+    meshes = ", ".join(f"{a} × {b}" for a, b in (geometry_mesh(float(x), n_theta) for x in ds["xi"].values))
+    return (f"{ds.sizes['seed']} unseeded runs (white noise 1e-3 δ) per cell, of the three cases over ξ = {xis} "
+            f"(R = 0.1 m; meshes {meshes}: the radial spacing of 256 × 16 at ξ = 1.5) and β2 = "
+            + ", ".join(f"{b:g}" for b in ds["beta2"].values) + f", each to stationarity or {budget['max_transits']:g} "
+            "transits as in brake-fem-statistics; the most frequent (regime, number of stick zones) over the runs of "
+            "each cell.")
 
 
 def most_frequent(ds: xr.Dataset) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -20,14 +20,14 @@ import xarray as xr
 from matplotlib.figure import Figure
 
 from ... import plotting
-from ...brake.fem.campaign import statistics
+from ...brake.fem.campaign import budget_of, statistics
 from ...contact import REGIME_CODES
 from .. import Check, FigureSpec
 from . import campaign_data
 from .campaign_data import outcome_counts
 from .paper import CASES, PAPER_REGIMES
 
-__all__ = ["THRESHOLD", "compute", "check", "plot", "inputs"]
+__all__ = ["THRESHOLD", "compute", "check", "plot", "inputs", "describe"]
 
 #: Fraction of unseeded runs, on each mesh, that must reach the paper's regime and mode number.
 THRESHOLD = 0.25
@@ -50,6 +50,23 @@ def compute(quick: bool = False, cache: Path | None = None, data_dir: Path | Non
 
 def inputs(data_dir: Path | None) -> str:
     return campaign_data.inputs("statistics", data_dir)
+
+
+def describe(ds: xr.Dataset) -> str:
+    """What was computed, from the dataset itself (its meshes, budgets and runs): the report's
+    text describes the data the figure shows, the small version included."""
+    meshes = _meshes(ds)
+    runs = [f"{a} × {b} ({budget_of(ds.attrs, m)['min_transits']:g} to {budget_of(ds.attrs, m)['max_transits']:g} "
+            "transits)" for m, (a, b) in enumerate(meshes)]
+    chunk = budget_of(ds.attrs, 0)["chunk"]
+    return (f"{ds.sizes['seed']} runs per case from FE steady sliding plus white noise (1e-3 δ, one seed per run, "
+            f"nothing seeded), β2 = {float(ds.attrs.get('beta2', 0.9)):g}, on " + " and ".join(runs) + ", each "
+            f"integrated in chunks of {chunk:g} P-wave transits and stopped once its last 2 transits form a stationary "
+            "travelling wave (relative misfit and state mismatch of the shifted snapshots < 0.1). The outcome: the "
+            "regime of those transits and the mode number counted as the median number of stick zones around the "
+            f"ring. A claim is reproduced when >= {THRESHOLD:.0%} of the runs on each of two meshes reach the paper's "
+            "regime and mode" + ("." if len(meshes) >= 2 else "; with one mesh here, no claim can be settled.")
+            + " The full campaign is `stickslip brake campaign` (resumable, about an hour on 2 cores).")
 
 
 def _meshes(ds) -> list:
