@@ -148,7 +148,8 @@ _OWN_RANGES = re.compile(r"\bcheck\.(finite|positive|nonnegative|in_range|greate
 def test_no_module_checks_a_range_of_its_own():
     found = [f"{p.relative_to(ROOT)}:{i}" for p in (ROOT / "src" / "stickslip").rglob("*.py")
              for i, line in enumerate(p.read_text().splitlines(), 1)
-             if _OWN_RANGES.search(line) and "validation.py" not in p.name and "sweep.py" not in p.name]
+             if _OWN_RANGES.search(line) and "validation.py" not in p.name
+             and p.relative_to(ROOT).as_posix() != "src/stickslip/sweep/grid.py"]
     assert not found, found
 
 

@@ -120,24 +120,48 @@ def _again(store, **options):
                      scheduler="synchronous", **options)
 
 
-def test_a_store_whose_content_changed_is_refused_and_overwrite_starts_afresh(tmp_path):
-    """Issue 9: a value edited, or a chunk lost, in a finished store is not resumed silently."""
+def _counted(x, y):
+    CALLS.append((x, y))
+    return {"sum": x + y, "product": x * y}
+
+
+def _counting(store, **options):
+    return run_sweep(_counted, {"x": [1, 2, 3], "y": [10, 20]}, store, outputs={"sum": "1", "product": "1"},
+                     scheduler="synchronous", **options)
+
+
+def test_a_stored_point_whose_content_changed_is_computed_again_and_said(tmp_path, caplog):
+    """Issue 25: a value edited, or a chunk lost, in a finished store: the points that no longer
+    match their checksum (and only those) are computed again, with a warning; a reader refuses
+    the store until then."""
     import zarr
 
-    store = _store(tmp_path)
+    from stickslip.sweep import verify_store
+
+    store = tmp_path / "s.zarr"
+    _counting(store)
     group = zarr.open_group(str(store), mode="r+")
     group["sum"][1, 1] = 999.0  # one value changed: axes and attributes all still match
-    with pytest.raises(ParameterError, match="checksum") as err:
-        _again(store)
-    assert err.value.name == "store"
-    ds = _again(store, overwrite=True)
-    assert ds["done"].all() and float(ds["sum"][1, 1]) == 22.0
-    chunks = [p for p in (store / "done").rglob("*") if p.is_file() and not p.name.startswith((".", "zarr"))]
+    with pytest.raises(ParameterError, match="1 point"):
+        verify_store(store)
+    CALLS.clear()
+    with caplog.at_level("WARNING", logger="stickslip.sweep"):
+        ds = _counting(store)
+    assert CALLS == [(2, 20)] and float(ds["sum"][1, 1]) == 22.0 and ds["done"].all()
+    assert "1 stored point(s)" in caplog.text and "(1, 1)" in caplog.text
+    verify_store(store)  # intact again
+    group["product"][0, 0] = 0.0  # an exact number that happens to be plausible is still found
+    group["sum"][2, 0] = np.nan
+    CALLS.clear()
+    assert float(_counting(store)["product"][0, 0]) == 10.0 and sorted(CALLS) == [(1, 10), (3, 10)]
+    chunks = [p for p in (store / "sum").rglob("*") if p.is_file() and not p.name.startswith((".", "zarr"))]
     assert chunks
     for chunk in chunks:
-        chunk.unlink()  # a lost chunk reads back as the fill value: "not done"
-    with pytest.raises(ParameterError, match="checksum"):
-        _again(store)
+        chunk.unlink()  # a lost chunk reads back as the fill value (NaN): every point computed again
+    CALLS.clear()
+    assert _counting(store)["done"].all() and len(CALLS) == 6
+    ds = _counting(store, overwrite=True)
+    assert ds["done"].all() and float(ds["sum"][1, 1]) == 22.0
 
 
 def test_a_store_from_another_format_is_refused(tmp_path):
@@ -149,18 +173,53 @@ def test_a_store_from_another_format_is_refused(tmp_path):
         _again(store)
 
 
-def test_a_store_killed_between_its_data_and_its_checksum_resumes(tmp_path):
-    """The checksum of the next content is written before the data (``pending_sha256``): a kill
-    after the data and before ``content_sha256`` leaves a store that verifies and resumes."""
+def test_a_store_killed_between_a_points_data_and_its_done_flag_resumes(tmp_path):
+    """A point's outputs, then its checksum, then ``done``: a kill between any two leaves it not
+    done (computed again), never done with unchecked values."""
     import zarr
 
-    store = _store(tmp_path)
+    store = tmp_path / "s.zarr"
+    _counting(store)
     group = zarr.open_group(str(store), mode="r+")
-    group.attrs["content_sha256"] = "0" * 64  # as if killed before the last update
-    assert _again(store)["done"].all()
-    group.attrs["pending_sha256"] = "0" * 64  # neither matches: refused
+    group["done"][0, 1] = 0  # killed after the outputs and checksum, before done
+    group["done"][2, 1] = 0
+    group["checksum"][2, 1] = 0  # killed before the checksum
+    group["sum"][2, 1] = 5.0
+    CALLS.clear()
+    ds = _counting(store)
+    assert sorted(CALLS) == [(1, 20), (3, 20)] and float(ds["sum"][2, 1]) == 23.0
+    group["checksum"][1, 0] = 0  # a done point without its checksum: not trusted
+    CALLS.clear()
+    assert float(_counting(store)["sum"][1, 0]) == 12.0 and CALLS == [(2, 10)]
+
+
+def test_a_store_of_the_earlier_layout_is_resumed_when_intact_and_refused_when_not(tmp_path):
+    """Stores written before the per-point checksums (``stickslip-sweep-1``, one checksum of
+    the whole store) resume without recomputing; one whose content changed is refused (which
+    point changed cannot be told)."""
+    import zarr
+
+    from stickslip.files import content_digest
+
+    def earlier(path):
+        _counting(path)
+        group = zarr.open_group(str(path), mode="r+")
+        del group["checksum"]
+        arrays = {name: group[name][...] for name in group.array_keys()}
+        group.attrs.update({"sweep_format": "stickslip-sweep-1", "content_sha256": content_digest(arrays),
+                            "pending_sha256": content_digest(arrays)})
+        zarr.consolidate_metadata(str(path))
+        return group
+
+    earlier(tmp_path / "a.zarr")
+    CALLS.clear()
+    ds = _counting(tmp_path / "a.zarr")
+    assert CALLS == [] and ds["done"].all() and float(ds["sum"][2, 1]) == 23.0
+    assert zarr.open_group(str(tmp_path / "a.zarr")).attrs["sweep_format"] == "stickslip-sweep-2"
+    group = earlier(tmp_path / "b.zarr")
+    group["sum"][0, 0] = 0.0
     with pytest.raises(ParameterError, match="checksum"):
-        _again(store)
+        _counting(tmp_path / "b.zarr")
 
 
 def test_axes_that_differ_in_the_last_digit_are_another_sweep(tmp_path):

@@ -6,6 +6,8 @@ code 2, a well-posed problem without solution exits with code 1.
 
 from __future__ import annotations
 
+import contextlib
+import logging
 import os
 import sys
 import warnings
@@ -13,7 +15,7 @@ import warnings
 import typer
 
 from ..errors import NoSolutionError, ParameterError
-from . import brake, fem, halfspace, oscillator, reproduce
+from . import brake, fem, halfspace, oscillator, reproduce, study
 
 # typer vendors its own copy of click (older releases re-export click's classes):
 # its usage errors are the parent class of typer.BadParameter in both cases
@@ -67,6 +69,29 @@ def _as_typed(argv: list[str] | None, exc: ParameterError) -> ParameterError:
     return ParameterError(typed(exc.name), exc.value, exc.allowed, also)
 
 
+class _OneLine(logging.Formatter):
+    def format(self, record):
+        text = " ".join(record.getMessage().split())
+        return text if record.levelno <= logging.INFO else f"{record.levelname.lower()}: {text}"
+
+
+@contextlib.contextmanager
+def _logs_on_stderr():
+    """The library's log records (``stickslip.*``: a sweep's dashboard, its failed or recomputed
+    points) on stderr, one line each, for the block."""
+    logger = logging.getLogger("stickslip")
+    handler = logging.StreamHandler(sys.stderr)
+    handler.setFormatter(_OneLine())
+    level = logger.level
+    logger.addHandler(handler)
+    logger.setLevel(logging.INFO)
+    try:
+        yield
+    finally:
+        logger.removeHandler(handler)
+        logger.setLevel(level)
+
+
 def run(argv: list[str] | None = None) -> int:
     """Run the CLI and return its exit code."""
     def fail(prefix: str, exc, code: int) -> int:
@@ -76,7 +101,7 @@ def run(argv: list[str] | None = None) -> int:
     try:
         # numeric warnings are not for the user: a result that went NaN or infinite is refused
         # by `common.emit` (one line, exit 1), a finite one is printed
-        with warnings.catch_warnings():
+        with warnings.catch_warnings(), _logs_on_stderr():
             warnings.simplefilter("ignore", RuntimeWarning)
             result = app(args=argv, prog_name="stickslip", standalone_mode=False)
         return result if isinstance(result, int) else 0
@@ -102,6 +127,9 @@ def run(argv: list[str] | None = None) -> int:
         if os.environ.get("STICKSLIP_DEBUG"):
             raise
         return fail("internal error", f"{type(exc).__name__}: {exc} (set STICKSLIP_DEBUG=1 for a traceback)", 3)
+
+
+app.command("sweep")(study.command(app, run))  # its points run commands of this app
 
 
 def main() -> None:

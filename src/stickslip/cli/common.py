@@ -96,7 +96,7 @@ def _number(value) -> str:
     return str(value)
 
 
-def _units(key: str, model: str) -> tuple[str, str]:
+def units_of(key: str, model: str) -> tuple[str, str]:
     """Units and meaning of a result's key ``a.b.c``: of its own name, else of the nearest part
     of its path that is declared (``counts.stick-slip``: a count; ``checks.pressure``: a check)."""
     for part in reversed(key.split(".")):
@@ -131,7 +131,7 @@ def emit(data: dict, as_json: bool, title: str, model: str = "common") -> None:
     rows = list(_rows(data))
     records = {k: v for k, v in rows if isinstance(v, list) and v and all(isinstance(x, dict) for x in v)}
     keys = {k for k, _ in rows} | {f"{k}.{c}" for k, v in records.items() for c in v[0]}
-    units = {k: dict(zip(("units", "long_name"), _units(k, model))) for k in sorted(keys) if any(_units(k, model))}
+    units = {k: dict(zip(("units", "long_name"), units_of(k, model))) for k in sorted(keys) if any(units_of(k, model))}
     if as_json:
         print(json.dumps({**data, "units": units} if units and "units" not in data else data))
         return
@@ -142,15 +142,15 @@ def emit(data: dict, as_json: bool, title: str, model: str = "common") -> None:
         table.add_column(plain(column))
     for key, value in rows:
         if key not in records:
-            table.add_row(*map(plain, (key, _number(value), *_units(key, model))))
+            table.add_row(*map(plain, (key, _number(value), *units_of(key, model))))
     console.print(table)
     for key, items in records.items():
         columns = list(items[0])
-        notes = [f"{c}: {_units(c, model)[1]}" for c in columns if _units(c, model)[1]]
+        notes = [f"{c}: {units_of(c, model)[1]}" for c in columns if units_of(c, model)[1]]
         sub = Table(title=plain(f"{title}: {key}"), header_style="bold", caption=plain("; ".join(notes)) if notes
                     else None)
         for c in columns:
-            unit = _units(c, model)[0]
+            unit = units_of(c, model)[0]
             sub.add_column(plain(f"{c} [{unit}]" if unit and unit != "1" else c))
         for item in items:
             sub.add_row(*(plain(_number(item.get(c))) for c in columns))
@@ -336,16 +336,50 @@ def output_folder(name: str, path: Path, suffix: str | None = None) -> Path:
     return path
 
 
+#: Without a terminal, `progress_bar` writes a status line at most this often [s].
+STATUS_SECONDS = 60.0
+
+
+def _status_lines(label: str):
+    """``progress(done, total)`` printing ``label: done of total, about T left`` on stderr at
+    most every `STATUS_SECONDS` (and when the last point is done), the time left from the rate
+    since the first call."""
+    import time
+
+    first, last = [], [-math.inf, -1]
+
+    def tell(done, total):
+        now = time.monotonic()
+        if not first:
+            first.append((now, done))
+        if (now - last[0] < STATUS_SECONDS and done < total) or (done == total and last[-1] == total):
+            return
+        last[:] = [now, done]
+        (t0, d0), rate = first[0], None
+        if done > d0 and now > t0:
+            rate = (done - d0) / (now - t0)
+        left = f", about {_duration((total - done) / rate)} left" if rate and done < total else ""
+        print(f"{label}: {done} of {total} done{left}", file=sys.stderr, flush=True)
+
+    return tell
+
+
+def _duration(seconds: float) -> str:
+    return f"{seconds:.0f} s" if seconds < 120 else (f"{seconds / 60:.0f} min" if seconds < 7200 else
+                                                     f"{seconds / 3600:.1f} h")
+
+
 @contextlib.contextmanager
 def progress_bar(label: str):
-    """A transient rich progress bar on stderr; yields the library's ``progress(done, total)``
-    callback. Without a terminal on stderr (a pipe, a log file, a batch job) nothing is drawn."""
-    from rich.progress import Progress
+    """A transient rich progress bar on stderr (with the time left); yields the library's
+    ``progress(done, total)`` callback. Without a terminal on stderr (a pipe, a log file, a
+    batch job) a line at most every `STATUS_SECONDS` says how far it is and the time left."""
+    from rich.progress import Progress, TimeElapsedColumn
 
     console = Console(stderr=True)
     if not console.is_terminal:
-        yield lambda done, total: None
+        yield _status_lines(label)
         return
-    with Progress(console=console, transient=True) as bar:
+    with Progress(*Progress.get_default_columns(), TimeElapsedColumn(), console=console, transient=True) as bar:
         task = bar.add_task(label, total=None)
         yield lambda done, total: bar.update(task, completed=done, total=total)

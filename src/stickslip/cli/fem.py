@@ -13,7 +13,7 @@ import typer
 
 from ..quantities import COMMON, FEM as Q
 from ..errors import NoSolutionError, ParameterError
-from .common import (Overwrite, Replace, RunOut, XdmfEvery, declared, emit, output_path, overwrite_needs, progress_bar, write_netcdf,
+from .common import (Overwrite, Replace, RunOut, Scheduler, XdmfEvery, declared, emit, output_path, overwrite_needs, progress_bar, write_netcdf,
                      xdmf_path, xdmf_snapshots)
 
 _emit = functools.partial(emit, model="fem")  # SI units: growth rates in 1/s, frequencies in Hz
@@ -40,10 +40,35 @@ StartOpt = Annotated[Start, typer.Option("--start", help=(
     "stick: the preload moving with a flat surface (the 1-DOF oscillator's stick segment)."))]
 
 
-def _problem(config: Path):
+Set = Annotated[Optional[list[str]], typer.Option("--set", help=(
+    "Replace a number of the config for this run: KEY=VALUE, the key as the config writes it (contact.friction, "
+    "material[1].young) or its last part when that is one key (friction); repeatable."))]
+
+
+def overrides(config: Path, sets: list[str] | None) -> dict:
+    """``{config key: number}`` of the ``--set KEY=VALUE`` options (each key resolved in the config)."""
+    from ..fem.config import read_toml, resolve_key
+
+    out = {}
+    for text in sets or ():
+        name, sep, value = text.partition("=")
+        try:
+            number = float(value)
+        except ValueError:
+            number = None
+        if not sep or number is None:
+            raise ParameterError("--set", text, "KEY=VALUE with a number VALUE (e.g. contact.friction=0.5)")
+        key = resolve_key(read_toml(config), name.strip(), "--set")
+        if key in out:
+            raise ParameterError("--set", text, f"one value per key ({key} is set twice)")
+        out[key] = number
+    return out
+
+
+def _problem(config: Path, sets: list[str] | None = None):
     from ..fem.config import load_config
 
-    return load_config(config)
+    return load_config(config, overrides(config, sets))
 
 
 @app.command()
@@ -51,11 +76,11 @@ def steady(config: Config, json: Json = False,
            out: Annotated[Optional[Path], typer.Option(help=(
                "Write the contact line node by node to this netCDF file (.nc): forces [N/m], displacements [m] "
                "and contact state along the arclength [m]."))] = None,
-           overwrite: Replace = False):
+           overwrite: Replace = False, set_: Set = None):
     """Steady sliding (or the preload, with friction 0): contact nodes, forces and nodes in contact."""
     overwrite_needs(overwrite, "--out", out)
     out = output_path("--out", out, ".nc", overwrite)
-    cfg = _problem(config)
+    cfg = _problem(config, set_)
     problem = cfg.problem()
     st = problem.steady
     if not st.loaded:
@@ -87,18 +112,21 @@ def cea(config: Config, json: Json = False,
                                                                                    "cores.")] = None,
         plot: Annotated[Optional[Path], typer.Option(help=(
             "With --sweep: write the stability map (growth rate and frequency of every branch against the swept "
-            "value, unstable stretches marked) to this PNG file."))] = None):
+            "value, unstable stretches marked) to this PNG file."))] = None,
+        scheduler: Scheduler = None, set_: Set = None):
     """Complex eigenvalue analysis of steady sliding over [cea] band: growth rate [1/s] and
     frequency [Hz] of every mode found, most unstable first."""
     from ..fem import complex_eigenvalues
     from ..fem.paraview import write_modes_xdmf
 
-    if sweep is not None or store is not None or plot is not None or workers is not None:
-        return _cea_sweep(config, json, out, xdmf, overwrite, sweep, store, workers, plot)
+    if sweep is not None or store is not None or plot is not None or workers is not None or scheduler is not None:
+        if set_:
+            raise ParameterError("--set", set_[0], "left out with --sweep (write the fixed numbers into the config)")
+        return _cea_sweep(config, json, out, xdmf, overwrite, sweep, store, workers, plot, scheduler)
     overwrite_needs(overwrite, "--out or --xdmf", out, xdmf)
     out = output_path("--out", out, ".nc", overwrite)
     xdmf = xdmf_path(xdmf, overwrite)
-    cfg = _problem(config)
+    cfg = _problem(config, set_)
     problem = cfg.problem()
     result = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=xdmf is not None,
                                  complete_below=cfg.complete_below, **cfg.cea_options)
@@ -119,7 +147,7 @@ def cea(config: Config, json: Json = False,
            "shift_count": len(data["shifts"]), "params": data["params"]}, json, "complex eigenvalue analysis")
 
 
-def _cea_sweep(config, json, out, xdmf, overwrite, sweep, store, workers, plot):
+def _cea_sweep(config, json, out, xdmf, overwrite, sweep, store, workers, plot, scheduler):
     """`fem cea --sweep`: the tracked sweep (`stickslip.fem.tracking.cea_sweep`)."""
     import numpy as np
 
@@ -151,7 +179,8 @@ def _cea_sweep(config, json, out, xdmf, overwrite, sweep, store, workers, plot):
     if any(b <= a for a, b in zip(values, values[1:])):
         raise ParameterError("--sweep", sweep, "LO < HI (the values increase)")
     with progress_bar("CEA sweep") as tick:
-        tracked = cea_sweep(config, key, values, store, workers=workers, progress=tick, overwrite=overwrite)
+        tracked = cea_sweep(config, key, values, store, workers=workers, progress=tick, overwrite=overwrite,
+                            scheduler=scheduler or "processes")
     ds = tracked.to_xarray()
     if out is not None:
         write_netcdf(ds, out)
@@ -186,7 +215,7 @@ def run(config: Config,
             "Classify the limit regime over the last this many transits, at most --transits (default the run's "
             "dense tail, 2 transits: the wave scale). A stick-slip cycle is often much longer: give a window of "
             "several cycles."))] = None,
-        overwrite: Overwrite = False, json: Json = False):
+        overwrite: Overwrite = False, json: Json = False, set_: Set = None):
     """Explicit dynamics from perturbed steady sliding (or the preload, --start), then the limit
     regime on the contact nodes."""
     from ..fem.paraview import write_run_xdmf
@@ -204,7 +233,7 @@ def run(config: Config,
     if window is not None and not (math.isfinite(window) and 0.0 < window <= transits):
         raise ParameterError("--window", window, f"in (0, {transits:g}] transits (at most --transits)",
                              also=("--transits",))
-    cfg = _problem(config)
+    cfg = _problem(config, set_)
     if cfg.partner is not None:
         return _run_pair(cfg, transits, beta2, time_step, start, amplitude, out, xdmf, volume_every, window, overwrite,
                          json)

@@ -1,0 +1,176 @@
+"""`stickslip sweep CONFIG.toml` (issue 25): any command over a grid, checked before it runs,
+on dask.distributed, resumable."""
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from stickslip.cli import run
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+
+OSCILLATOR = """
+command = "oscillator cycle"
+outputs = ["period", "stick_time", "amplitude"]
+[fixed]
+mass = 1.0
+stiffness = 1.0
+normal_force = 2.0
+fd = 0.3
+[axes]
+belt_speed = { start = 0.1, stop = 0.4, num = 4 }
+fs = [0.4, 0.5, 0.6]
+"""
+
+
+def _write(folder: Path, text: str, name="sweep.toml") -> Path:
+    path = folder / name
+    path.write_text(text)
+    return path
+
+
+def _open(store) -> xr.Dataset:
+    import warnings
+
+    with warnings.catch_warnings():  # a killed write leaves zarr's temporary file (the resume removes it)
+        warnings.filterwarnings("ignore", "Object at .* is not recognized as a component")
+        return xr.open_zarr(store, consolidated=False).load()
+
+
+def test_an_oscillator_sweep_gives_the_closed_form_stick_time(tmp_path, capsys):
+    """Coulomb friction, no damping: the stick phase lasts 2 (fs - fd) N / (k V) (the spring
+    force sweeps from -(fs - fd) N to +(fs - fd) N relative to its slip value at belt speed V),
+    at every point of the grid, each axis where it belongs."""
+    config = _write(tmp_path, OSCILLATOR)
+    assert run(["sweep", str(config), "--out", str(tmp_path / "s.zarr"), "--scheduler", "synchronous", "--json"]) == 0
+    ds = _open(tmp_path / "s.zarr")
+    V, fs = np.meshgrid(ds["belt_speed"].values, ds["fs"].values, indexing="ij")
+    assert ds["stick_time"].dims == ("belt_speed", "fs") and ds["done"].all()
+    np.testing.assert_allclose(ds["stick_time"].values, 2 * (fs - 0.3) * 2.0 / (1.0 * V), rtol=1e-9)
+    np.testing.assert_allclose(ds["belt_speed"].values, [0.1, 0.2, 0.3, 0.4])
+    assert ds["period"].attrs["units"] == "s" and ds["stick_time"].attrs["units"] == "s"
+    assert '"done": 12' in capsys.readouterr().out
+
+
+def test_a_fem_sweep_over_the_configs_numbers(tmp_path):
+    """`fem steady` on the block over its friction and its pressure (a log range): the friction
+    force is f times the normal force (every node slips), the normal force the pressure times
+    the 0.1 m top face."""
+    for name in ("block.toml", "mesh.py"):
+        (tmp_path / name).write_bytes((EXAMPLES / "block_on_belt" / name).read_bytes())
+    subprocess.run([sys.executable, "mesh.py", "block.msh", "0.005"], cwd=tmp_path, check=True)
+    config = _write(tmp_path, """
+command = "fem steady"
+config = "block.toml"
+outputs = ["normal_force", "friction_force"]
+[axes]
+friction = { start = 0.1, stop = 0.5, num = 3 }
+"load[0].pressure" = { start = 1e5, stop = 1e7, num = 3, scale = "log" }
+""")
+    assert run(["sweep", str(config), "--out", str(tmp_path / "f.zarr"), "--scheduler", "synchronous"]) == 0
+    ds = _open(tmp_path / "f.zarr")
+    assert ds["normal_force"].dims == ("contact_friction", "load_0_pressure")
+    f, p = np.meshgrid(ds["contact_friction"].values, ds["load_0_pressure"].values, indexing="ij")
+    np.testing.assert_allclose(ds["load_0_pressure"].values, [1e5, 1e6, 1e7], rtol=1e-12)
+    np.testing.assert_allclose(ds["normal_force"].values, 0.1 * p, rtol=1e-9)
+    np.testing.assert_allclose(ds["friction_force"].values, f * ds["normal_force"].values, rtol=1e-9)
+
+
+def test_every_problem_of_a_sweep_config_in_one_line(tmp_path, capsys):
+    config = _write(tmp_path, """
+command = "oscillator cycle"
+outputs = ["period", "perod"]
+colour = "blue"
+[fixed]
+mass = 1.0
+stiffness = 1.0
+normal_force = 1.0
+fd = 0.3
+wheels = 4
+[axes]
+belt_speed = [-1.0, 0.2]
+fs = { start = 0.0, stop = 0.5, num = 3, scale = "log" }
+""")
+    assert run(["sweep", str(config), "--out", str(tmp_path / "s.zarr")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and err.startswith("error: invalid CONFIG")
+    for words in ("unknown key colour", "fixed.wheels is not an option of oscillator cycle", "axes.fs: a log range",
+                  "'perod' is not a number oscillator cycle prints", "5 problems"):
+        assert words in err, (words, err)
+    assert not (tmp_path / "s.zarr").exists()
+    config.write_text(OSCILLATOR.replace("[0.4, 0.5, 0.6]", "[0.4, 11.0]").replace("start = 0.1", "start = -0.1"))
+    assert run(["sweep", str(config), "--out", str(tmp_path / "s.zarr")]) == 2
+    err = capsys.readouterr().err
+    assert "axes.belt_speed = -0.1" in err and "axes.fs = 11" in err and "--fs" in err
+    config.write_text('command = "brake map"\noutputs = ["x"]\n[axes]\nfriction = [0.1]\n')
+    assert run(["sweep", str(config), "--out", str(tmp_path / "s.zarr")]) == 2
+    assert "command must be one of: " in capsys.readouterr().err
+
+
+@pytest.fixture
+def oscillator_store(tmp_path):
+    config = _write(tmp_path, OSCILLATOR)
+    assert run(["sweep", str(config), "--out", str(tmp_path / "s.zarr"), "--scheduler", "synchronous"]) == 0
+    return config, tmp_path / "s.zarr"
+
+
+def test_a_store_of_another_sweep_is_refused(oscillator_store, capsys):
+    config, store = oscillator_store
+    config.write_text(OSCILLATOR.replace("normal_force = 2.0", "normal_force = 3.0"))
+    assert run(["sweep", str(config), "--out", str(store), "--scheduler", "synchronous"]) == 2
+    assert "a sweep store of the same computation" in capsys.readouterr().err
+    assert run(["sweep", str(config), "--out", str(store), "--scheduler", "synchronous", "--overwrite"]) == 0
+    assert float(_open(store)["stick_time"][0, 0]) == pytest.approx(2 * 0.1 * 3.0 / 0.1)
+
+
+def test_failing_points_are_stored_with_their_message_on_a_local_cluster(tmp_path, capsys):
+    """fs = fd: no stick phase, no limit cycle at those points; the others are computed, the
+    failures logged and stored, and the sweep ends with exit code 1 saying how many."""
+    config = _write(tmp_path, OSCILLATOR.replace("[0.4, 0.5, 0.6]", "[0.3, 0.5]"))
+    assert run(["sweep", str(config), "--out", str(tmp_path / "s.zarr"), "--workers", "2"]) == 1
+    err = capsys.readouterr().err
+    assert "Dask dashboard: http://127.0.0.1:" in err and "4 of 8 points failed" in err
+    ds = _open(tmp_path / "s.zarr")
+    assert ds["done"].values.tolist() == [[0, 1]] * 4
+    assert "no finite limit cycle" in ds.attrs["failed"]
+
+
+@pytest.mark.slow
+def test_a_sweep_killed_with_sigkill_resumes_without_recomputing(tmp_path):
+    """The whole job killed (the process group, workers included, as a batch system does): the
+    rerun starts from the points stored, and ends with every point right."""
+    config = _write(tmp_path, OSCILLATOR.replace("num = 4", "num = 30"))
+    store = tmp_path / "s.zarr"
+    cmd = [sys.executable, "-m", "stickslip", "sweep", str(config), "--out", str(store), "--workers", "2"]
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
+    stored = 0
+    try:
+        deadline = time.monotonic() + 120
+        while time.monotonic() < deadline and stored < 10:
+            time.sleep(0.5)
+            try:
+                stored = int(_open(store)["done"].sum())
+            except Exception:  # noqa: BLE001 - not written yet
+                stored = 0
+    finally:
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.wait()
+    assert 10 <= stored < 90, stored
+    before = _open(store)
+    done = before["done"].values.astype(bool)
+    out = subprocess.run(cmd + ["--json"], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    first = next(line for line in out.stderr.splitlines() if " done" in line)
+    assert int(first.split()[2]) >= done.sum()  # "oscillator cycle: K of 90 done": K already stored
+    after = _open(store)
+    assert after["done"].all()
+    np.testing.assert_array_equal(after["stick_time"].values[done], before["stick_time"].values[done])
+    V, fs = np.meshgrid(after["belt_speed"].values, after["fs"].values, indexing="ij")
+    np.testing.assert_allclose(after["stick_time"].values, 2 * (fs - 0.3) * 2.0 / V, rtol=1e-9)
