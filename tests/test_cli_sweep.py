@@ -174,3 +174,36 @@ def test_a_sweep_killed_with_sigkill_resumes_without_recomputing(tmp_path):
     np.testing.assert_array_equal(after["stick_time"].values[done], before["stick_time"].values[done])
     V, fs = np.meshgrid(after["belt_speed"].values, after["fs"].values, indexing="ij")
     np.testing.assert_allclose(after["stick_time"].values, 2 * (fs - 0.3) * 2.0 / V, rtol=1e-9)
+
+
+def test_the_configs_of_the_docs_are_valid(tmp_path):
+    """The first sweep config of docs/sweeps-on-a-cluster.md is read as written."""
+    import re
+
+    from stickslip.cli import app
+    from stickslip.cli.study import read_study
+
+    text = (Path(__file__).resolve().parents[1] / "docs" / "sweeps-on-a-cluster.md").read_text()
+    first = re.findall(r"```toml\n(.*?)```", text, re.S)[0]
+    study = read_study(_write(tmp_path, first), app)
+    assert study.points == 4 * 3 * 5 * 8 and list(study.outputs) == ["period", "stick_time", "amplitude"]
+
+
+def test_an_entry_of_a_list_is_an_output(tmp_path):
+    """``modes[0].growth_rate``: the most unstable mode of each CEA (a consistency check with
+    the command's own output for the same friction)."""
+    import json
+
+    for name in ("block.toml", "mesh.py"):
+        (tmp_path / name).write_bytes((EXAMPLES / "block_on_belt" / name).read_bytes())
+    subprocess.run([sys.executable, "mesh.py", "block.msh", "0.005"], cwd=tmp_path, check=True)
+    config = _write(tmp_path, 'command = "fem cea"\nconfig = "block.toml"\noutputs = ["unstable", '
+                    '"modes[0].growth_rate", "modes[1].frequency"]\n[axes]\nfriction = [0.2, 0.6]\n')
+    assert run(["sweep", str(config), "--out", str(tmp_path / "c.zarr"), "--scheduler", "synchronous"]) == 0
+    ds = _open(tmp_path / "c.zarr")
+    out = subprocess.run([sys.executable, "-m", "stickslip", "fem", "cea", str(tmp_path / "block.toml"), "--set",
+                          "friction=0.6", "--json"], capture_output=True, text=True, check=True)
+    data = json.loads(out.stdout)
+    assert float(ds["modes_0_growth_rate"][1]) == pytest.approx(data["modes"][0]["growth_rate"], rel=1e-9)
+    assert float(ds["modes_1_frequency"][1]) == pytest.approx(data["modes"][1]["frequency"], rel=1e-9)
+    assert int(ds["unstable"][1]) == data["unstable"] and ds["modes_0_growth_rate"].attrs["units"] == "1/s"

@@ -352,14 +352,16 @@ def _status_lines(label: str):
         now = time.monotonic()
         if not first:
             first.append((now, done))
-        if (now - last[0] < STATUS_SECONDS and done < total) or (done == total and last[-1] == total):
+        finished = done >= total * (1 - 1e-9)
+        if (now - last[0] < STATUS_SECONDS and not finished) or (finished and last[-1] >= total * (1 - 1e-9)):
             return
         last[:] = [now, done]
+        done = min(done, total)
         (t0, d0), rate = first[0], None
         if done > d0 and now > t0:
             rate = (done - d0) / (now - t0)
-        left = f", about {_duration((total - done) / rate)} left" if rate and done < total else ""
-        print(f"{label}: {done} of {total} done{left}", file=sys.stderr, flush=True)
+        left = f", about {_duration((total - done) / rate)} left" if rate and not finished else ""
+        print(f"{label}: {done:.6g} of {total:.6g} done{left}", file=sys.stderr, flush=True)
 
     return tell
 

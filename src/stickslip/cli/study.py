@@ -238,7 +238,7 @@ def read_study(path: Path, app) -> Study:
     model = MODELS.get(words[0], "common")
     if not isinstance(names, list) or not names or not all(isinstance(n, str) for n in names):
         problems.append(f"outputs must be a non-empty list of the numbers {' '.join(words)} --json prints "
-                        "(e.g. [\"period\"]; a nested one as \"a.b\")")
+                        "(e.g. [\"period\"]; a nested one as \"a.b\", an entry of a list as \"a[0].b\")")
     else:
         for name in names:
             units = units_of(name, model)[0]
@@ -390,7 +390,11 @@ def run_point(study: Study, checkpoints: str | None, runner, **point) -> dict:
     for store_key, (name, _) in study.outputs.items():
         value = data
         for part in name.split("."):
-            value = value.get(part, MISSING) if isinstance(value, dict) else MISSING
+            key, _, index = part.partition("[")
+            value = value.get(key, MISSING) if isinstance(value, dict) else MISSING
+            if index:  # an entry of a list: modes[0] (the most unstable mode of a CEA)
+                i = int(index.rstrip("]")) if index.rstrip("]").isdigit() else -1
+                value = value[i] if isinstance(value, list) and 0 <= i < len(value) else MISSING
         if isinstance(value, bool):
             value = float(value)
         if not isinstance(value, (int, float)):
