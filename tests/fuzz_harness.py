@@ -62,8 +62,27 @@ BASE = {
     "fem run": ["{config}", "--transits", "2", "--out", "{tmp}/g.nc"],
     "fem cea": ["{config}"],
     "fem steady": ["{config}"],
+    "sweep": ["{sweep}", "--out", "{tmp}/s.zarr", "--workers", "1"],
 }
 _CONFIG: list[str] = []
+
+
+def example_sweep() -> str:
+    """A sweep config of two cheap points (oscillator cycles), written once per process."""
+    if not _SWEEP:
+        import atexit
+        import shutil
+
+        folder = pathlib.Path(tempfile.mkdtemp(prefix="stickslip-fuzz-sweep-"))
+        atexit.register(shutil.rmtree, folder, ignore_errors=True)
+        (folder / "sweep.toml").write_text(
+            'command = "oscillator cycle"\noutputs = ["period"]\n[fixed]\nmass = 1.0\nstiffness = 1.0\n'
+            'normal_force = 1.0\nfd = 0.3\nfs = 0.5\n[axes]\nbelt_speed = [0.1, 0.2]\n')
+        _SWEEP.append(str(folder / "sweep.toml"))
+    return _SWEEP[0]
+
+
+_SWEEP: list[str] = []
 
 
 def example_config() -> str:
@@ -192,7 +211,8 @@ def path_args(command: str, option: str, kind: str, tmp) -> list[str]:
 def args_for(command: str, option: str, value: str, tmp) -> list[str]:
     """The base invocation of ``command`` with ``option value`` (and ``--json``)."""
     base = [a.replace("{tmp}", str(tmp)) for a in BASE[command]]
-    positional = [example_config() if a == "{config}" else a for a in base[:1] if not a.startswith("--")]
+    positional = [example_config() if a == "{config}" else example_sweep() if a == "{sweep}" else a
+                  for a in base[:1] if not a.startswith("--")]
     base = base[len(positional):]
     drop = {option}
     for group in SAME_QUANTITY:
