@@ -56,7 +56,7 @@ def test_an_oscillator_sweep_gives_the_closed_form_stick_time(tmp_path, capsys):
     np.testing.assert_allclose(ds["stick_time"].values, 2 * (fs - 0.3) * 2.0 / (1.0 * V), rtol=1e-9)
     np.testing.assert_allclose(ds["belt_speed"].values, [0.1, 0.2, 0.3, 0.4])
     assert ds["period"].attrs["units"] == "s" and ds["stick_time"].attrs["units"] == "s"
-    assert '"done": 12' in capsys.readouterr().out
+    assert '"grid_points": 12' in capsys.readouterr().out
 
 
 def test_a_fem_sweep_over_the_configs_numbers(tmp_path):
@@ -81,6 +81,10 @@ friction = { start = 0.1, stop = 0.5, num = 3 }
     np.testing.assert_allclose(ds["load_0_pressure"].values, [1e5, 1e6, 1e7], rtol=1e-12)
     np.testing.assert_allclose(ds["normal_force"].values, 0.1 * p, rtol=1e-9)
     np.testing.assert_allclose(ds["friction_force"].values, f * ds["normal_force"].values, rtol=1e-9)
+    (tmp_path / "block.toml").write_text((tmp_path / "block.toml").read_text() + "\n# a comment changes nothing\n")
+    assert run(["sweep", str(config), "--out", str(tmp_path / "f.zarr"), "--scheduler", "synchronous"]) == 0
+    subprocess.run([sys.executable, "mesh.py", "block.msh", "0.01"], cwd=tmp_path, check=True)  # another mesh
+    assert run(["sweep", str(config), "--out", str(tmp_path / "f.zarr"), "--scheduler", "synchronous"]) == 2
 
 
 def test_every_problem_of_a_sweep_config_in_one_line(tmp_path, capsys):
@@ -207,3 +211,37 @@ def test_an_entry_of_a_list_is_an_output(tmp_path):
     assert float(ds["modes_0_growth_rate"][1]) == pytest.approx(data["modes"][0]["growth_rate"], rel=1e-9)
     assert float(ds["modes_1_frequency"][1]) == pytest.approx(data["modes"][1]["frequency"], rel=1e-9)
     assert int(ds["unstable"][1]) == data["unstable"] and ds["modes_0_growth_rate"].attrs["units"] == "1/s"
+
+
+def test_review_cases_a_flag_a_bool_dotted_keys_and_a_scheduler_that_is_not_there(tmp_path, capsys):
+    """A bool for a number (it was dropped: the default computed instead), a number for a
+    flag, and an address where no scheduler answers: refused before any store is made; an
+    unquoted dotted key is read as the key it writes."""
+    config = _write(tmp_path, 'command = "halfspace direct"\noutputs = ["c"]\n[fixed]\nnu = false\nv = 3.514e-3\n'
+                    'v_star = 0.001\n[axes]\nT = [9.52e-4]\njson = [1.0]\n')
+    assert run(["sweep", str(config), "--out", str(tmp_path / "s.zarr")]) == 2
+    err = capsys.readouterr().err
+    assert "fixed.nu = False: a number, not true or false" in err and "axes.json is not an option" in err
+    config.write_text('command = "halfspace direct"\noutputs = ["c"]\n[fixed]\nv = 3.514e-3\nv_star = 0.001\n'
+                      '[axes]\nT = [9.52e-4]\n')
+    assert run(["sweep", str(config), "--out", str(tmp_path / "s.zarr"), "--scheduler", "tcp://127.0.0.1:9"]) == 2
+    assert "none answered" in capsys.readouterr().err and not (tmp_path / "s.zarr").exists()
+    from stickslip.cli import app
+    from stickslip.cli.study import read_study
+
+    for name in ("block.toml", "mesh.py"):
+        (tmp_path / name).write_bytes((EXAMPLES / "block_on_belt" / name).read_bytes())
+    subprocess.run([sys.executable, "mesh.py", "block.msh", "0.01"], cwd=tmp_path, check=True)
+    study = read_study(_write(tmp_path, 'command = "fem steady"\nconfig = "block.toml"\noutputs = ["normal_force"]\n'
+                              '[axes]\ncontact.friction = [0.2, 0.4]\n', "dotted.toml"), app)
+    assert study.keys == {"contact_friction": "config:contact.friction"}
+
+
+def test_a_failing_point_on_the_local_pool_is_stored_and_the_others_computed(tmp_path, capsys):
+    """With --scheduler synchronous too (not only on a cluster), one point without a limit cycle
+    does not stop the sweep; changing the mesh file of a fem config is another sweep."""
+    config = _write(tmp_path, OSCILLATOR.replace("[0.4, 0.5, 0.6]", "[0.3, 0.5]"))
+    assert run(["sweep", str(config), "--out", str(tmp_path / "s.zarr"), "--scheduler", "synchronous"]) == 1
+    err = capsys.readouterr().err
+    assert "4 of 8 points failed" in err and "(belt_speed = 0.1, fs = 0.3) failed" in err
+    assert _open(tmp_path / "s.zarr")["done"].values.tolist() == [[0, 1]] * 4

@@ -21,7 +21,7 @@ import os
 
 from .errors import ParameterError
 
-__all__ = ["is_distributed", "check_scheduler", "client", "guarded", "PROTOCOLS", "CONNECT_SECONDS"]
+__all__ = ["is_distributed", "check_scheduler", "client", "guarded", "reachable", "PROTOCOLS", "CONNECT_SECONDS"]
 
 #: Address prefixes of a running scheduler.
 PROTOCOLS = ("tcp://", "tls://", "ucx://", "inproc://")
@@ -73,6 +73,20 @@ def client(scheduler, workers: int | None = None, announce=None):
             link = getattr(made, "dashboard_link", None)
             announce(f"Dask scheduler {made.scheduler.address}" + (f", dashboard {link}" if link else ""))
         yield made
+
+
+def reachable(address: str, option: str = "scheduler") -> None:
+    """Refuse (`ParameterError` naming ``option``) an address ``tcp://HOST:PORT`` where nothing
+    answers within `CONNECT_SECONDS` (checked before any work)."""
+    import socket
+
+    host, _, port = address.split("://", 1)[1].rpartition(":")
+    try:
+        with socket.create_connection((host.strip("[]"), int(port)), timeout=CONNECT_SECONDS):
+            return
+    except (OSError, ValueError) as err:
+        raise ParameterError(option, address, f"the address of a running Dask scheduler (tcp://HOST:PORT; "
+                             f"{type(err).__name__}: none answered within {CONNECT_SECONDS:g} s)") from None
 
 
 def guarded(func, *args):

@@ -41,6 +41,11 @@ def _scheduler(value):
 
 
 #: ``--scheduler``: where a sweep's points are computed (`stickslip.sweep.run_sweep`).
+def scheduler_option(help_text: str):
+    """A ``--scheduler`` option (checked by `stickslip.cluster.check_scheduler`) with its own help."""
+    return typer.Option("--scheduler", callback=_scheduler, help=help_text)
+
+
 Scheduler = Annotated[Optional[str], typer.Option(
     "--scheduler", callback=_scheduler,
     help="Where the points are computed: processes (a local pool, the default), distributed (a local Dask cluster "

@@ -45,7 +45,7 @@ import typer
 
 from ..errors import MISSING, NoSolutionError, ParameterError
 from ..quantities import COMMON, MAX_POINTS
-from .common import Overwrite, Scheduler, declared, emit, output_folder, progress_bar, units_of
+from .common import Overwrite, declared, scheduler_option, emit, output_folder, progress_bar, units_of
 
 _CLICK_ERROR = next(c for c in typer.BadParameter.__mro__ if c.__name__ == "ClickException")  # typer's own click
 Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
@@ -87,12 +87,34 @@ class Study:
     def attrs(self) -> dict:
         """Every parameter of the sweep (a resume with others is refused)."""
         out = {"command": " ".join(self.words), "swept_keys": json.dumps(self.keys),
+               "outputs_printed_as": json.dumps({k: name for k, (name, _) in self.outputs.items()}),
                "fixed_options": json.dumps(self.fixed, sort_keys=True),
                "fixed_config_numbers": json.dumps(self.sets, sort_keys=True)}
-        if self.config is not None:
-            out["config"] = str(self.config.resolve())
-            out["config_sha256"] = hashlib.sha256(self.config.read_bytes()).hexdigest()
+        if self.config is not None:  # what the config says and the files it names (a mesh), not where it is
+            out["config"] = self.config.name
+            out["config_inputs_sha256"] = _inputs_digest(self.config)
         return out
+
+
+def _inputs_digest(config: Path) -> str:
+    """SHA-256 of a config's content (its TOML as read: comments and layout aside) and of every
+    file it names relative to its folder (a mesh, a partner's mesh)."""
+    data = tomllib.loads(config.read_text(encoding="utf-8"))
+    digest = hashlib.sha256(json.dumps(data, sort_keys=True, default=str).encode())
+
+    def files(value):
+        if isinstance(value, dict):
+            for v in value.values():
+                yield from files(v)
+        elif isinstance(value, list):
+            for v in value:
+                yield from files(v)
+        elif isinstance(value, str) and (config.parent / value).is_file():
+            yield config.parent / value
+
+    for path in sorted(set(files(data))):
+        digest.update(path.name.encode() + hashlib.sha256(path.read_bytes()).digest())
+    return digest.hexdigest()
 
 
 def _key(param) -> str:
@@ -198,7 +220,7 @@ def read_study(path: Path, app) -> Study:
         if not isinstance(table, dict):
             problems.append(f"[{section}] must be a table")
             continue
-        for raw, value in table.items():
+        for raw, value in _flat(table, section == "axes"):
             name = raw.replace("-", "_")
             if section == "axes" and name == REPLICATE:
                 values = _values(name, value, problems)
@@ -210,9 +232,16 @@ def read_study(path: Path, app) -> Study:
             elif key_of is not None and key_of(raw) is not None:
                 target = key_of(raw)
             else:
+                known = sorted(n for n in params if n not in ("config", "json")) + (key_of.keys if key_of else [])
                 problems.append(f"{section}.{raw} is not an option of {' '.join(words)}"
                                 + (" nor a number of its config" if key_of is not None else "")
-                                + f" (options: {', '.join(sorted(n for n in params if n not in ('config', 'json')))})")
+                                + f" ({', '.join(known) or 'none'})")
+                continue
+            kind = _kind_problem(section, raw, value, target)
+            if kind:
+                problems.append(kind)
+                if not isinstance(target, str) and section == "axes":
+                    unparsed.add(target.opts[0])
                 continue
             if section == "fixed":
                 (sets if isinstance(target, str) else fixed)[target if isinstance(target, str) else name] = value
@@ -228,7 +257,7 @@ def read_study(path: Path, app) -> Study:
                 keys[store_key] = f"{_CONFIG}{target}" if isinstance(target, str) else name
     both = {k.removeprefix(_CONFIG) for k in keys.values()} & (set(fixed) | set(sets))
     problems += [f"{k} is both fixed and swept" for k in sorted(both)]
-    if not axes:
+    if not axes and not data.get("axes"):
         problems.append("[axes] must sweep at least one option or config number")
     elif math.prod(len(v) for v in axes.values()) > MAX_POINTS:
         problems.append(f"the grid has {math.prod(len(v) for v in axes.values()):.3g} points (at most "
@@ -265,9 +294,32 @@ def _summary(problems: list) -> str:
     return f"a valid sweep config; {len(problems)} problem{'s' if len(problems) > 1 else ''}: " + "; ".join(problems)
 
 
+def _flat(table: dict, axes: bool, prefix: str = ""):
+    """``(key, value)`` of a table, a nested one (``contact.friction = 0.3`` unquoted) as a dotted
+    key; on axes a table of ``start, stop, num, scale`` or ``count`` is a value."""
+    for key, value in table.items():
+        name = f"{prefix}{key}"
+        if isinstance(value, dict) and not (axes and set(value) <= {"start", "stop", "num", "scale", "count"}):
+            yield from _flat(value, axes, f"{name}.")
+        else:
+            yield name, value
+
+
+def _kind_problem(section: str, raw: str, value, target) -> str | None:
+    """A value of the wrong kind for its option: a bool for a number or a number for a flag."""
+    flag = not isinstance(target, str) and getattr(target, "is_flag", False)
+    values = value if isinstance(value, list) else [value]
+    if flag and not (section == "fixed" and isinstance(value, bool)):
+        return f"{section}.{raw} is a flag: fixed, true or false (not swept)" if section == "axes" else \
+            f"fixed.{raw} = {value!r}: true or false"
+    if not flag and any(isinstance(v, bool) for v in values):
+        return f"{section}.{raw} = {value!r}: a number, not true or false"
+    return None
+
+
 def _config_keys(config: Path, problems: list):
     """``key_of(name)``: the config key a name means (`resolve_key`), or None."""
-    from ..fem.config import read_toml, resolve_key
+    from ..fem.config import numeric_keys, read_toml, resolve_key
 
     try:
         data = read_toml(config)
@@ -281,6 +333,7 @@ def _config_keys(config: Path, problems: list):
         except ParameterError:
             return None
 
+    key_of.keys = numeric_keys(data)
     return key_of
 
 
@@ -411,7 +464,10 @@ def command(app, runner):
                                                            "[axes] (see docs/sweeps-on-a-cluster.md).")],
               out: Annotated[Path, typer.Option("--out", help="The sweep's Zarr store (.zarr); resumed if it holds "
                                                               "this sweep.")],
-              scheduler: Scheduler = None,
+              scheduler: Annotated[Optional[str], scheduler_option(
+                  "Where the points run: distributed (the default: a local Dask cluster of --workers processes), "
+                  "the address tcp://HOST:PORT of a running Dask scheduler and its workers, processes (a local pool "
+                  "of --workers processes, in batches), or synchronous (one after another in this process).")] = None,
               workers: Annotated[Optional[int], declared(COMMON["workers"], "--workers", "Local worker processes "
                                                          "(default: all cores).")] = None,
               overwrite: Overwrite = False, json: Json = False):
@@ -423,9 +479,13 @@ def command(app, runner):
 
         out = output_folder("--out", out, ".zarr")
         study = read_study(config, app)
-        if scheduler not in (None, "distributed") and workers is not None:
-            raise ParameterError("--workers", workers, f"left out with --scheduler {scheduler} (the cluster has its own "
-                                 "workers)")
+        if scheduler not in (None, "distributed", "processes") and workers is not None:
+            raise ParameterError("--workers", workers, f"left out with --scheduler {scheduler} (" + (
+                "the cluster has its own workers)" if "://" in str(scheduler) else "it runs in this process)"))
+        if scheduler is not None and "://" in scheduler:
+            from ..cluster import reachable
+
+            reachable(scheduler, "--scheduler")  # before the store is made
         checkpoints = str(out.with_suffix(".runs")) if study.words in RESUMABLE else None
         if overwrite and checkpoints is not None:
             shutil.rmtree(checkpoints, ignore_errors=True)
@@ -434,9 +494,9 @@ def command(app, runner):
         with progress_bar(" ".join(study.words)) as tick:  # failed points: logged, then one line and exit 1
             ds = run_sweep(func, study.axes, out, outputs=outputs, scheduler=scheduler or "distributed",
                            workers=workers, progress=tick, overwrite=overwrite, attrs=study.attrs(),
-                           title=study.title, model=study.model, batch=8)
-        emit({"store": str(out), "command": " ".join(study.words), "sweep_points": study.points,
-              "done": int(ds["done"].sum()), "axes": {k: [v[0], v[-1], len(v)] for k, v in study.axes.items()},
-              "outputs": list(study.outputs)}, json, "sweep")
+                           title=study.title, model=study.model, batch=8, keep_going=True)
+        emit({"store": str(out), "command": " ".join(study.words), "grid_points": study.points,
+              "axes": {k: [v[0], v[-1], len(v)] for k, v in study.axes.items()},
+              "outputs": {key: name for key, (name, _) in study.outputs.items()}}, json, "sweep")
 
     return sweep

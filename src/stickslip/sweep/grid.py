@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import functools
 import itertools
+import json
 import logging
 import math
 import os
@@ -15,14 +16,14 @@ import dask
 import numpy as np
 
 from .. import validation as check
-from ..cluster import is_distributed
+from ..cluster import guarded, is_distributed
 from ..errors import ParameterError
 from ..files import exclusive
 from ..quantities import COMMON as Q, MAX_POINTS
 from ..cf import SOURCE
 from .pool import worker_pool
-from .store import create, damaged, forget, is_vector, matches, open_group, result, tidy, write_points
-from .stream import stream
+from .store import create, damaged, failures, forget, is_vector, matches, open_group, result, tidy, write_points
+from .stream import described, failure_error, stream
 
 __all__ = ["run_sweep", "evaluate_point"]
 
@@ -52,7 +53,7 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
               outputs: Mapping[str, str], batch: int = 32, scheduler: str | Callable = "processes",
               progress: Callable[[int, int], None] | None = None, attrs: Mapping | None = None,
               workers: int | None = None, overwrite: bool = False, title: str = "parameter sweep",
-              model: str = "common") -> "xarray.Dataset":  # noqa: F821
+              model: str = "common", keep_going: bool = False) -> "xarray.Dataset":  # noqa: F821
     """Evaluate ``func`` on a grid, resumably.
 
     Parameters
@@ -95,6 +96,9 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
     title, model : str
         The store's ``title`` attribute, and the vocabulary of its variables' units and
         long names (`stickslip.cf.finish`).
+    keep_going : bool
+        On the local schedulers too, a point that raises is stored with its message (as on
+        dask.distributed) and the sweep goes on, instead of stopping it.
 
     Returns
     -------
@@ -131,7 +135,7 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
     with exclusive(store, "store"):  # one writer per store
         if overwrite and store.exists():
             shutil.rmtree(store)
-        return _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attrs, title, model)
+        return _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attrs, title, model, keep_going)
 
 
 def _producer(func) -> str:
@@ -141,7 +145,7 @@ def _producer(func) -> str:
     return f"{getattr(func, '__module__', '?')}.{getattr(func, '__qualname__', type(func).__name__)}"
 
 
-def _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attrs, title, model):
+def _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attrs, title, model, keep_going):
     attrs = {**dict(attrs or {}), "producer": _producer(func)}
     if store.exists():
         tidy(store)
@@ -175,14 +179,32 @@ def _sweep(func, axes, store, outputs, batch, scheduler, workers, progress, attr
         stream(call, {idx: _point(axes, idx) for idx in todo}, store, group, names, sizes, batch, scheduler,
                workers, tick, total)
         return result(store)
+    failed = failures(group)
     with worker_pool(scheduler if todo else "synchronous", workers) as evaluate:  # one pool for the whole sweep
         for start in range(0, len(todo), batch):
             chunk = todo[start:start + batch]
-            values = evaluate([dask.delayed(call)(_point(axes, idx)) for idx in chunk])
-            write_points(group, store, names, sizes, chunk, values)
+            if not keep_going:
+                values = evaluate([dask.delayed(call)(_point(axes, idx)) for idx in chunk])
+            else:  # each point's outcome: ("ok", values) or ("error", message)
+                outcomes = evaluate([dask.delayed(guarded)(call, _point(axes, idx)) for idx in chunk])
+                for idx, (status, value) in zip(chunk, outcomes):
+                    key = ",".join(map(str, idx))
+                    if status == "ok":
+                        failed.pop(key, None)
+                        continue
+                    failed[key] = value
+                    log.warning("point %s (%s) failed (%d so far): %s", idx, described(_point(axes, idx)),
+                                len(failed), value)
+                ok = [k for k, (status, _) in enumerate(outcomes) if status == "ok"]
+                chunk, values = [chunk[k] for k in ok], [outcomes[k][1] for k in ok]
+                group.attrs["failed"] = json.dumps(failed)
+            if chunk:
+                write_points(group, store, names, sizes, chunk, values)
             finished += len(chunk)
             if progress:
                 progress(finished, total)
+    if keep_going and failed:
+        raise failure_error(failed, total, store)
     return result(store)
 
 

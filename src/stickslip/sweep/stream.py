@@ -13,7 +13,7 @@ from ..errors import NoSolutionError
 from .pool import blas_share
 from .store import failures, write_points
 
-__all__ = ["FLUSH_SECONDS", "stream"]
+__all__ = ["FLUSH_SECONDS", "stream", "failure_error", "described"]
 
 log = logging.getLogger("stickslip.sweep")
 
@@ -65,8 +65,8 @@ def stream(call: Callable, points: dict, store, group, names, sizes, batch, sche
                     for future, outcome in arrived:
                         idx = futures.pop(future)
                         if not _book(idx, future, outcome, ready, values, failed):
-                            log.warning("point %s failed (%d so far): %s", idx, len(failed),
-                                        failed[",".join(map(str, idx))])
+                            log.warning("point %s (%s) failed (%d so far): %s", idx, described(points[idx]),
+                                        len(failed), failed[",".join(map(str, idx))])
                         future.release()
                     if len(ready) >= batch or (ready and time.monotonic() - last >= FLUSH_SECONDS):
                         flush()
@@ -75,10 +75,20 @@ def stream(call: Callable, points: dict, store, group, names, sizes, batch, sche
             raise
         flush()
     if failed:
-        first = next(iter(failed.items()))
-        raise NoSolutionError(f"{len(failed)} of {total} points failed (the first, at grid index ({first[0]}): {first[1]}); "
-                              f"the others are stored in {store}, these are left not done with their messages in "
-                              "its failed attribute, and a rerun computes them again")
+        raise failure_error(failed, total, store)
+
+
+def failure_error(failed: dict, total: int, store) -> NoSolutionError:
+    """The error that ends a sweep in which the points ``failed`` (``{"i,j": message}``) failed."""
+    first = next(iter(failed.items()))
+    return NoSolutionError(f"{len(failed)} of {total} points failed (the first, at grid index ({first[0]}): "
+                           f"{first[1]}); the others are stored in {store}, these are left not done with their "
+                           "messages in its failed attribute, and a rerun computes them again")
+
+
+def described(point: dict) -> str:
+    """``name = value, ...`` of a point's parameters."""
+    return ", ".join(f"{k} = {v:g}" if isinstance(v, float) else f"{k} = {v}" for k, v in point.items())
 
 
 def _book(idx, future, outcome, ready, values, failed) -> bool:
