@@ -35,9 +35,12 @@ def declared(quantity: Quantity, flag: str, note: str = "", **options):
 
 
 def _scheduler(value):
-    from ..cluster import check_scheduler
+    from ..cluster import check_scheduler, reachable
 
-    return check_scheduler(value, "--scheduler")
+    value = check_scheduler(value, "--scheduler")
+    if value is not None and "://" in value:
+        reachable(value, "--scheduler")  # before any work: no store is made for a scheduler that is not there
+    return value
 
 
 #: ``--scheduler``: where a sweep's points are computed (`stickslip.sweep.run_sweep`).
@@ -346,23 +349,27 @@ STATUS_SECONDS = 60.0
 
 
 def _status_lines(label: str):
-    """``progress(done, total)`` printing ``label: done of total, about T left`` on stderr at
-    most every `STATUS_SECONDS` (and when the last point is done), the time left from the rate
-    since the first call."""
+    """``progress(done, total)`` printing ``label: done of total, about T left`` on stderr every
+    `STATUS_SECONDS` (the time left from the rate since the first call), and when the last
+    point is done if a line was printed before: a job shorter than `STATUS_SECONDS` prints
+    nothing."""
     import time
 
-    first, last = [], [-math.inf, -1]
+    start, last = [], [0.0]
 
     def tell(done, total):
         now = time.monotonic()
-        if not first:
-            first.append((now, done))
+        if not start:
+            start.append((now, done))
+            last[0] = now
         finished = done >= total * (1 - 1e-9)
-        if (now - last[0] < STATUS_SECONDS and not finished) or (finished and last[-1] >= total * (1 - 1e-9)):
+        printed = last[0] > start[0][0]
+        if (finished and not printed) or (not finished and now - last[0] < STATUS_SECONDS) or \
+                (finished and last[0] == math.inf):
             return
-        last[:] = [now, done]
+        last[0] = math.inf if finished else now
         done = min(done, total)
-        (t0, d0), rate = first[0], None
+        (t0, d0), rate = start[0], None
         if done > d0 and now > t0:
             rate = (done - d0) / (now - t0)
         left = f", about {_duration((total - done) / rate)} left" if rate and not finished else ""
@@ -380,7 +387,7 @@ def _duration(seconds: float) -> str:
 def progress_bar(label: str):
     """A transient rich progress bar on stderr (with the time left); yields the library's
     ``progress(done, total)`` callback. Without a terminal on stderr (a pipe, a log file, a
-    batch job) a line at most every `STATUS_SECONDS` says how far it is and the time left."""
+    batch job) a line every `STATUS_SECONDS` says how far it is and the time left."""
     from rich.progress import Progress, TimeElapsedColumn
 
     console = Console(stderr=True)

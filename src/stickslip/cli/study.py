@@ -482,20 +482,24 @@ def command(app, runner):
         if scheduler not in (None, "distributed", "processes") and workers is not None:
             raise ParameterError("--workers", workers, f"left out with --scheduler {scheduler} (" + (
                 "the cluster has its own workers)" if "://" in str(scheduler) else "it runs in this process)"))
-        if scheduler is not None and "://" in scheduler:
-            from ..cluster import reachable
-
-            reachable(scheduler, "--scheduler")  # before the store is made
         checkpoints = str(out.with_suffix(".runs")) if study.words in RESUMABLE else None
         if overwrite and checkpoints is not None:
             shutil.rmtree(checkpoints, ignore_errors=True)
         func = functools.partial(run_point, study, checkpoints, runner)
         outputs = {key: units for key, (_, units) in study.outputs.items()}
+        stored = []  # the points already in the store when the sweep starts
+
+        def progress(done, total):
+            if not stored:
+                stored.append(done)
+            tick(done, total)
+
         with progress_bar(" ".join(study.words)) as tick:  # failed points: logged, then one line and exit 1
             ds = run_sweep(func, study.axes, out, outputs=outputs, scheduler=scheduler or "distributed",
-                           workers=workers, progress=tick, overwrite=overwrite, attrs=study.attrs(),
+                           workers=workers, progress=progress, overwrite=overwrite, attrs=study.attrs(),
                            title=study.title, model=study.model, batch=8, keep_going=True)
         emit({"store": str(out), "command": " ".join(study.words), "grid_points": study.points,
+              "computed_now": int(ds["done"].sum()) - stored[0],
               "axes": {k: [v[0], v[-1], len(v)] for k, v in study.axes.items()},
               "outputs": {key: name for key, (name, _) in study.outputs.items()}}, json, "sweep")
 
