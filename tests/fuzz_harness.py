@@ -25,6 +25,7 @@ import math
 import os
 import pathlib
 import signal
+import re
 import sys
 import tempfile
 import time
@@ -65,6 +66,10 @@ BASE = {
     "sweep": ["{sweep}", "--out", "{tmp}/s.zarr", "--workers", "1"],
 }
 _CONFIG: list[str] = []
+
+
+#: A status line of a long job without a terminal (`stickslip.cli.common.progress_bar`).
+_PROGRESS = re.compile(r"^[\w .-]+: \S+ of \S+ done(, about .+ left)?$")
 
 
 def example_sweep() -> str:
@@ -352,9 +357,10 @@ def problems(t: Trial, option: str, folder) -> list[str]:
     if "Traceback" in t.err:
         found.append("traceback")
     if t.code == 0:
-        # on success stderr stays empty, but for the one log line a sweep owes its user: where its
-        # cluster's dashboard is (issue 25)
-        if [line for line in t.err.splitlines() if not line.startswith("Dask dashboard: http")]:
+        # on success stderr stays empty, but for what a long job owes its user: where its cluster's
+        # dashboard is, and (without a terminal, every minute) how far it is (issue 25)
+        if [line for line in t.err.splitlines() if not line.startswith("Dask dashboard: http")
+                and not _PROGRESS.match(line)]:
             found.append("stderr on success")
         try:
             finite = json_finite(t.out)
