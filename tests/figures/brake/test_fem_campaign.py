@@ -168,3 +168,19 @@ def test_geometry_text_follows_its_grid_and_budget():
     text = fem_geometry.describe(ds)
     assert "2 unseeded runs" in text and "ξ = 1.5, 2.5" in text and "128 × 16, 128 × 48" in text
     assert "β2 = 0.6, 0.9" in text and "150 transits" in text and "1.25" not in text
+
+
+@pytest.mark.parametrize("path", sorted(campaign_data.STORED_DIR.glob("fem_*.nc")), ids=lambda p: p.name)
+def test_the_stored_campaign_was_computed_by_the_present_code(path):
+    """Issue 25: a change of the FE code's numbers cannot land while a campaign result stored
+    with the package was computed by other code (the report would fall back to the small
+    version). The fingerprint hashes the bits of short runs of the three cases
+    (`model_fingerprint`). Planted: the stale statistics of 2026-11-23 fail it."""
+    ds = xr.load_dataset(path)
+    assert ds.attrs["model_fingerprint"] == campaign_data.model_fingerprint(), (
+        f"the stored {path.name} is stale: rerun `stickslip brake campaign --scheduler distributed --workers 2 "
+        "--export src/stickslip/figures/brake/data` (about 3 h of compute on 2 cores) and commit its files")
+
+
+def test_the_statistics_are_stored_with_the_package():
+    assert (campaign_data.STORED_DIR / "fem_statistics.nc").exists()
