@@ -41,6 +41,7 @@ from pathlib import Path
 import shutil
 from typing import Annotated, Optional
 
+import numpy as np
 import typer
 
 from ..errors import MISSING, NoSolutionError, ParameterError
@@ -176,10 +177,8 @@ def _values(name: str, spec, problems: list) -> list:
         if start <= 0 or stop <= 0:
             problems.append(f"{where}: a log range needs start > 0 and stop > 0 (got {start:g}, {stop:g})")
             return []
-        return [float(10 ** (math.log10(start) + (math.log10(stop) - math.log10(start)) * i / max(num - 1, 1)))
-                if 0 < i < num - 1 else float(start if i == 0 else stop) for i in range(num)]
-    return [float(start + (stop - start) * i / max(num - 1, 1)) if 0 < i < num - 1 else float(start if i == 0 else stop)
-            for i in range(num)]
+        return np.geomspace(start, stop, num).tolist()  # both ends exactly as written
+    return np.linspace(start, stop, num).tolist()
 
 
 def _store_name(key: str) -> str:
