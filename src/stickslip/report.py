@@ -152,8 +152,8 @@ def reproduce(out: Path, *, quick: bool = False, only: str | None = None, force:
             f"{len(problems)} problem(s)", "none: text >= 7 pt, units on axes, no overlaps, nothing on the data, "
             "every colour code explained", "; ".join(problems[:8]).replace("|", "/"))]
         method = spec.describe(ds) if spec.describe else spec.method
-        summary.outcomes.append(FigureOutcome(spec, checks, time.perf_counter() - start, cached, image, method,
-                                              str(ds.attrs.get("source", ""))))
+        data = str(ds.attrs.get("source", "")) if spec.describe else ""  # else "source" is CF's: the producer
+        summary.outcomes.append(FigureOutcome(spec, checks, time.perf_counter() - start, cached, image, method, data))
         write_report(summary)  # keep the report current while the run proceeds
     return summary
 
