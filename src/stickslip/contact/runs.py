@@ -42,7 +42,7 @@ from .states import SEPARATION, SLIP_POS, STATE_ATTRS, STATE_NAMES, state_fracti
 
 __all__ = ["MAX_VOLUME", "MAX_WORK", "RunFormat", "RunRecord", "schedule", "prepare", "save", "resume", "loop",
            "run_explicit", "run_to_dataset", "results_view", "dataset_to_run", "settings_key", "snapshot_due",
-           "window_snapshots", "volume_due", "volume_at_start"]
+           "window_snapshots", "volume_due", "volume_at_start", "held_transits"]
 
 _KEYS = ("chunk", "samples_total", "snap_every", "tail_samples", "samples_per_transit", "modes", "contact",
          "initial", "initial_hash", "volume_every")
@@ -446,6 +446,22 @@ _LABELS = {"chunk": "time steps per sample (set by the time step)", "snap_every"
                            "--xdmf and --xdmf-every)",
            "initial": "initial condition", "step_given": "time step given [s] (0: none)"}
 _AFRESH = "overwrite it to start afresh"
+
+
+def held_transits(path) -> float | None:
+    """Transits held by the checkpoint at ``path``, less one sample (None without a readable one).
+
+    A run asked for ``T`` transits ends within one sample past ``T`` (`schedule`), so a held run
+    of ``T`` gives a value below ``T``: a driver that lengthens a run in steps starts again at the
+    first step not below it, where a run asked for less than it holds is refused (`resume`)."""
+    try:
+        with xr.open_dataset(path) as ds:
+            a = ds.attrs
+            sample = float(a["chunk"]) * float(a["dt"]) / float(a["transit_time"])
+            held = (float(a["samples_done"]) - 1.0) * sample
+    except (OSError, KeyError, ValueError, TypeError, ZeroDivisionError):
+        return None
+    return held if np.isfinite(held) else None
 
 
 def resume(cls, path, scheme, settings):

@@ -10,6 +10,7 @@ from stickslip.brake.fem.campaign import OUTCOMES, geometry_mesh, limit_regime, 
 from stickslip.brake.fem.scheme import FemScheme
 from stickslip.cli import run as cli_run
 from stickslip.contact import REGIME_CODES
+from stickslip.contact.runs import held_transits
 from stickslip.errors import ParameterError
 
 CASE1 = (0.2, 4e-4, 1.0)  # section 3.1 case 1: settles quickly on a stationary stick-slip wave
@@ -52,3 +53,19 @@ def test_campaign_command_rejects_bad_options(args, option, tmp_path, capsys):
     code = cli_run(["brake", "campaign", "--out", str(tmp_path / "c"), *args])
     err = capsys.readouterr().err
     assert code == 2 and option in err and len(err.strip().splitlines()) == 1
+
+
+@pytest.mark.parametrize("killed_at", [20.0, 17.0])  # at the end of a lengthening step, and within one
+def test_a_run_killed_past_its_first_length_resumes_to_the_same_outcome(tmp_path, killed_at):
+    # found by the geometry campaign: a checkpoint longer than min_transits was refused on resume
+    p = BrakeParams.from_physical(CASE1[2], CASE1[1], CASE1[0])
+    budget = {"min_transits": 10.0, "chunk": 5.0, "max_transits": 30.0}
+    straight = limit_regime(p, 32, 2, seed=0, **budget)
+    assert straight["stationary"] == 0.0  # lengthened to the end: the kill below falls within the schedule
+    path = tmp_path / "run.nc"
+    integrate_fem(p, 32, 2, transits=killed_at, initial=perturbed_steady(FemScheme(p, 32, 2), 1e-3, seed=0),
+                  beta2=0.9, tail=2.0, checkpoint=path)
+    assert killed_at - 0.1 < held_transits(path) < killed_at  # a run of T ends within a sample past T
+    out = limit_regime(p, 32, 2, seed=0, checkpoint=path, **budget)
+    assert out["transits"] == straight["transits"] and out["n_zones"] == straight["n_zones"]
+    assert out["residual"] == pytest.approx(straight["residual"], rel=1e-12)

@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import functools
 import inspect
+import math
 import shutil
 import time
 from pathlib import Path
@@ -37,6 +38,7 @@ from pathlib import Path
 from ... import validation as check
 from ...quantities import BRAKE as Q
 from ...contact import REGIME_CODES, regime_code
+from ...contact.runs import held_transits
 from ...errors import ParameterError
 from ...sweep import run_sweep
 from ..reduced import BrakeParams
@@ -65,6 +67,9 @@ def limit_regime(params: BrakeParams, n_theta: int, n_r: int, seed: int, *, beta
     scheme = FemScheme(params, n_theta, n_r, beta2)
     initial = perturbed_steady(scheme, amplitude, seed=int(seed))
     start, T = time.perf_counter(), min_transits
+    held = held_transits(checkpoint) if checkpoint is not None else None
+    if held is not None and held > min_transits:  # a killed run resumes at the length it had reached
+        T = min(max_transits, min_transits + chunk * math.ceil((held - min_transits) / chunk))
     while True:
         run = integrate_fem(params, n_theta, n_r, transits=T, initial=initial, beta2=beta2, tail=window,
                             checkpoint=checkpoint)
