@@ -262,3 +262,18 @@ def test_the_fem_cea_sweep_takes_a_scheduler(tmp_path, capsys):
     assert json.loads(capsys.readouterr().out)["sweep_points"] == 3
     assert run(base + ["--store", str(tmp_path / "d.zarr"), "--scheduler", "tcp://127.0.0.1:9"]) == 2
     assert "--scheduler" in capsys.readouterr().err
+
+
+def test_the_oscillator_map_gives_what_a_sweep_of_the_cycle_command_gives(oscillator_store, tmp_path):
+    """A ready-made study and the generic sweep over the same grid: at every stick-slip point of
+    the map, the cycle's period, stick time and amplitude are those of `oscillator cycle`."""
+    _, store = oscillator_store
+    assert run(["oscillator", "map", "--out", str(tmp_path / "m.zarr"), "--mass", "1", "--stiffness", "1",
+                "--normal-force", "2", "--fd", "0.3", "--x", "belt_speed=0.1:0.4:4", "--y", "fs=0.4:0.6:3",
+                "--scheduler", "synchronous"]) == 0
+    preset, generic = _open(tmp_path / "m.zarr"), _open(store)
+    sticks = np.isin(preset["regime"].values, (1, 2))
+    assert sticks.sum() >= 6 and preset["regime"].dims == generic["period"].dims
+    for name in ("period", "stick_time", "amplitude"):
+        np.testing.assert_allclose(preset[name].values[sticks], generic[name].values[sticks], rtol=1e-12)
+        assert preset[name].attrs["units"] == generic[name].attrs["units"]
