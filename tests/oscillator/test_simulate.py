@@ -112,6 +112,27 @@ def test_linear_law_validity_is_enforced():
     assert traj.status == -1 and "validity" in traj.message
 
 
+def test_a_falling_law_run_is_not_stopped_by_the_speed_its_closed_form_reaches_after_the_segment():
+    """Linear weakening (limit |v_r| < 1.25): the slip after the first release peaks at
+    |v_r| = 1.02 and ends at a stick (solve_ivp with events: at t = 9.8326126); the closed form
+    continued past that stick exceeds the limit, which once stopped the run there."""
+    from scipy.integrate import solve_ivp
+
+    osc = Oscillator(1.0, 1.0, 2.0, 0.2, LinearWeakening(0.5, 0.3, 0.8), damping=0.02)
+    traj = simulate(osc, 30.0, x0=0.1, v0=-0.3)
+    assert traj.status == 0 and len(traj.events) >= 3
+    t_rel, x_rel = traj.events[1][0], traj.events[1][1]  # the release: slip from (x, V)
+
+    def rhs(t, y):
+        vr = 0.2 - y[1]
+        return [y[1], 2.0 * 0.3 * (1 - 0.8 * abs(vr)) * np.sign(vr) - 0.02 * y[1] - y[0]]
+
+    stick = lambda t, y: y[1] - 0.2  # noqa: E731
+    stick.terminal, stick.direction = True, 1
+    ref = solve_ivp(rhs, [0, 20], [x_rel, 0.2 - 1e-13], events=stick, rtol=1e-12, atol=1e-14)
+    assert traj.events[2][0] == pytest.approx(t_rel + ref.t_events[0][0], rel=1e-8)
+
+
 def test_simulate_against_damped_solve_ivp_with_stribeck():
     osc = Oscillator(1.0, 1.0, 1.0, 0.2, Stribeck(0.6, 0.4, 0.1), damping=0.05)
     traj = simulate(osc, 30.0, x0=0.0, v0=0.0)

@@ -186,9 +186,6 @@ def run_affine(p, x0, v0, mode, t_end, max_segments, section, use_section):
             while True:
                 tb = next_piece(sigma, w02, om2, xi0, v, ta, t_max)
                 vb = velocity_acceleration(sigma, w02, om2, xi0, v, tb)[0]
-                if abs(V - vb) > max_speed * (1 + 1e-12):
-                    status = -1
-                    break
                 gb_v, gb_s = vb - V, vb - section
                 sa, sb = _sign(ga_v, tol), _sign(gb_v, tol)
                 if sa != 0 and sb != sa and sa == -s:
@@ -199,7 +196,12 @@ def run_affine(p, x0, v0, mode, t_end, max_segments, section, use_section):
                     d2 = tb if sb == 0 else _root(sigma, w02, om2, xi0, v, section, ta, tb)
                     if which < 0 or d2 < dt:
                         dt, which = d2, 1
-                if which >= 0 or tb >= t_max:
+                if which >= 0:  # the segment ends in this piece, where the speed is monotone between valid ends
+                    break
+                if abs(V - vb) > max_speed * (1 + 1e-12):  # (checked only within the segment: beyond its end the
+                    status = -1  # closed form may leave the law's range; a run stopped there for it, falsely)
+                    break
+                if tb >= t_max:
                     break
                 ta, ga_v, ga_s = tb, gb_v, gb_s
             if status < 0:
