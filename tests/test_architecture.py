@@ -16,7 +16,7 @@ PACKAGE = SRC / "stickslip"
 
 #: Top-level parts of the package and what each may import (besides itself).
 BASE = {"errors", "validation", "quantities", "cf", "results"}
-MODELS = {"oscillator", "brake", "halfspace", "fem"}
+MODELS = {"oscillator", "brake", "halfspace", "fem", "system"}
 ALLOWED = {
     "errors": set(),
     "validation": {"errors"},
@@ -33,6 +33,7 @@ ALLOWED = {
     "brake": BASE | {"contact", "sweep", "files"},
     "halfspace": BASE,
     "fem": BASE | {"contact", "friction", "sweep", "files"},
+    "system": BASE | {"friction"},
     "plotting": set(),
     "errata": set(),
     "figures": BASE | MODELS | {"contact", "friction", "sweep", "files", "plotting"},

@@ -95,6 +95,10 @@ def _results():
     yield "inverse", inverse_problem(np.array([2.0, 3.0]), np.array([-0.7, -0.7]), 0.001, nu=0.25, mu=0.5).to_xarray()
     yield "direct", direct_problem(9.52e-4, 3.514e-3, 0.001, nu=0.25, mu=0.5).to_xarray()
     yield "fields", wave_from_inverse(11.358, -0.7, 0.001, nu=0.25, mu=0.5).fields(n=101).to_xarray()
+    from stickslip.system import Contact, System, simulate as system_simulate
+
+    system = System(np.eye(2), [[2.0, -1.0], [-1.0, 1.0]], [Contact([1.0, 0.0], 1.0, Coulomb(0.6, 0.4), 0.2)])
+    yield "system run", system_simulate(system, t_end=5.0, samples=51).to_xarray()
 
 
 def test_every_result_dataset_follows_the_rules():

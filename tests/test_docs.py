@@ -31,6 +31,15 @@ def test_tutorial_examples_run(tmp_path, monkeypatch):
     assert any(e["kind"] == "grazing" for e in namespace["stick_slip"].events)
 
 
+def test_systems_page_runs(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    namespace = {}
+    for block in _blocks("docs/systems.md"):
+        exec(block, namespace)
+    assert list(namespace["run"].event_contact) == [1, 0, 0, 0, 0, 1, 1]
+    assert namespace["ds"]["friction_force"].dims == ("t", "contact")
+
+
 def test_brake_tutorial_runs(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     namespace = {}

@@ -17,6 +17,8 @@ from stickslip.friction import Coulomb, Stribeck
 from stickslip.halfspace import StickSlipWave, direct_problem, inverse_problem
 from stickslip.oscillator import Oscillator, continue_cycle, hopf_points, limit_cycle, simulate
 from stickslip.sweep import run_sweep
+from stickslip.system import Contact, System
+from stickslip.system import simulate as system_simulate
 
 def _one(x):
     return {"y": x}
@@ -34,7 +36,13 @@ OSC = dict(mass=1.0, stiffness=1.0, normal_force=1.0, belt_speed=0.2, friction=C
 BRAKE = dict(xi=1.5, nu=0.3, gamma=1e-6, delta=0.004, friction=0.2)
 P = BrakeParams(**BRAKE)
 ORTHO = dict(e1=2e10, e2=5e9, nu12=0.3, g12=3e9, density=1500.0, e3=8e9, nu13=0.2, nu23=0.35)
+CONTACT = dict(direction=[1.0, 0.0], normal_force=1.0, friction=Coulomb(0.6, 0.4), surface_speed=0.2)
+SYSTEM = dict(mass=[[1.0, 0.0], [0.0, 2.0]], stiffness=[[2.0, -1.0], [-1.0, 1.0]], contacts=[Contact(**CONTACT)])
 CALLS = {
+    "System": (lambda **k: System(**{**SYSTEM, **k}), [*SYSTEM, "damping", "force"]),
+    "Contact": (lambda **k: Contact(**{**CONTACT, **k}), [*CONTACT, "name"]),
+    "system simulate": (lambda **k: system_simulate(**{"system": System(**SYSTEM), "t_end": 5.0, **k}),
+                        ["system", "x0", "v0", "t_end", "samples", "max_events"]),
     "Oscillator": (lambda **k: Oscillator(**{**OSC, **k}), [*OSC, "damping"]),
     "Coulomb": (lambda **k: Coulomb(**{"fs": 0.6, "fd": 0.4, **k}), ["fs", "fd"]),
     "Stribeck": (lambda **k: Stribeck(**{"fs": 0.6, "fd": 0.4, "vs": 0.1, **k}), ["fs", "fd", "vs"]),
@@ -161,7 +169,8 @@ DOMAIN = {**{n: "oscillator" for n in ("Oscillator", "Coulomb", "Stribeck", "sim
                                   "integrate_fem", "annulus_frequencies", "fem perturbed_steady", "classify")},
           **{n: "halfspace" for n in ("inverse_problem", "direct_problem", "StickSlipWave", "inverse_map",
                                       "direct_map", "fields")},
-          **{n: "fem" for n in ("contact_frames", "ContactProblem")}}
+          **{n: "fem" for n in ("contact_frames", "ContactProblem")},
+          **{n: "system" for n in ("System", "Contact", "system simulate")}}
 
 
 @pytest.mark.parametrize("name, param", CASES, ids=[f"{n} {p}" for n, p in CASES])

@@ -9,6 +9,7 @@ _TITLES = {"oscillator": "The 1-DOF friction oscillator (`stickslip oscillator`,
            "brake": "The annulus on a turning shaft (`stickslip brake`, `stickslip.brake`)",
            "halfspace": "The sliding half-space (`stickslip halfspace`, `stickslip.halfspace`)",
            "fem": "Any 2-D body (`stickslip fem`, `stickslip.fem`)",
+           "system": "Linear structures with several frictional contacts (`stickslip.system`)",
            "common": "Shared by every model"}
 
 
@@ -53,7 +54,7 @@ def markdown(domains: dict[str, Domain]) -> str:
            "of the files written and these tables are all read from there. This page is generated "
            "(`python -m stickslip.quantities`); a name missing from a model's table is looked up under "
            "*Shared by every model*.\n"]
-    for name in ("oscillator", "brake", "halfspace", "fem", "common"):
+    for name in ("oscillator", "brake", "halfspace", "fem", "system", "common"):
         domain = domains[name]
         out.append(f"## {_TITLES[name]}\n")
         if domain.units:

@@ -1,0 +1,45 @@
+"""Linear structures with several frictional contacts (`stickslip.system`), in SI units (or
+any consistent set: the model has no built-in scale).
+
+The ranges are those of the 1-DOF oscillator's quantities, of which a system is the
+generalisation: one contact of a one-degree-of-freedom system is that oscillator.
+"""
+
+from __future__ import annotations
+
+from .core import Domain, declare as Q
+
+#: The most degrees of freedom of a system (dense matrices: 4096^2 doubles are 128 MB, and
+#: each mode's matrix exponential costs about a second).
+MAX_SYSTEM_DOFS = 4096
+#: The most contacts of a system (a ring of the reduced model has one per node).
+MAX_CONTACTS = 4096
+
+SYSTEM = Domain("system", units="SI (or any consistent units)", quantities=[
+    Q("mass_matrix", "kg", "entry of the mass matrix M (symmetric positive definite)", "[-1e15, 1e15]",
+      symbol="M", why="the oscillator's mass range: from a microcantilever to a crustal block"),
+    Q("stiffness_matrix", "N/m", "entry of the stiffness matrix K", "[-1e15, 1e15]", symbol="K"),
+    Q("damping_matrix", "N s/m", "entry of the damping matrix C", "[-1e15, 1e15]", symbol="C"),
+    Q("force", "N", "entry of the constant external force f", "[-1e15, 1e15]", symbol="f"),
+    Q("direction", "1", "entry of a contact's direction w (its slip velocity is V - w . x')", "[-1e6, 1e6]",
+      symbol="w", why="a lever arm of up to a million: beyond it the contact's force dwarfs every other"),
+    Q("surface_speed", "m/s", "speed of the surface a contact rubs on", "[-1e4, 1e4]", symbol="V",
+      why="from rest to ballistic speeds, either way"),
+    Q("normal_force", "N", "normal force of a contact", "(0, 1e15]", symbol="N"),
+    Q("t_end", "s", "end time", "(0, 1e300]", symbol="t_end"),
+    Q("x0", "m", "entry of the initial displacement", "[-1e300, 1e300]", symbol="x_0"),
+    Q("v0", "m/s", "entry of the initial velocity", "[-1e300, 1e300]", symbol="v_0"),
+    Q("samples", "1", "uniform samples of the trajectory in the output", "[2, 1e7]", integer=True),
+    Q("max_events", "1", "most contact events of a simulation", "[1, 1e9]", integer=True),
+    # results
+    Q("contact", "1", "contact number"),
+    Q("t", "s", "time since the start"),
+    Q("x", "m", "displacement"),
+    Q("v", "m/s", "velocity"),
+    Q("contact_state", "1", "state of a contact: 1 slip (V - w.x' > 0), 0 stick, -1 reverse slip"),
+    Q("friction_force", "N", "friction force of a contact on the structure, along its direction"),
+    Q("slip_velocity", "m/s", "slip velocity V - w . x' of a contact"),
+    Q("event_time", "s", "time of a contact event"),
+    Q("event_contact", "1", "contact whose state changed at the event"),
+    Q("event_state", "1", "its state after the event (1 slip, 0 stick, -1 reverse slip)"),
+])

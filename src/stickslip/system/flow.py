@@ -1,0 +1,175 @@
+"""The affine flow of one contact state, and its first event, in closed form.
+
+In a state (each contact sticking, ``0``, or slipping with ``sign(v_r) = +-1``) and with laws
+affine in the slip speed (``mu = mu0 - mu1 |v_r|``), the motion is linear:
+
+    M a = r + W_S lam,   r = f - C_eff v - K x + sum_slip w_j N_j (s_j mu0_j - mu1_j V_j),
+    C_eff = C - sum_slip N_j mu1_j w_j w_j^T,   W_S^T a = 0,
+
+so ``lam = -D^-1 W_S^T M^-1 r`` (``D = W_S^T M^-1 W_S``, minimum-norm where sticking contacts are
+redundant) and ``z = (x, v, 1)`` obeys ``z' = A z``: ``z(t) = expm(t A) z(0)``, exact to round-off.
+Every switching function is linear in ``z``: a slipping contact's ``s_j v_r``, a sticking one's
+``f_s N -+ F``. The first time one of them reaches zero is found on the exact flow, at steps
+of a fraction of the fastest time scale of ``A`` (a sign change, or a dip between two steps
+seen by the derivative, which is linear in ``z`` too), then by Brent's method to round-off.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy.linalg import expm
+from scipy.optimize import brentq
+
+from .model import System
+
+__all__ = ["Flow", "SLIP_ZERO", "STICK_LIMIT", "LAW_LIMIT"]
+
+_EPS = np.finfo(float).eps
+#: Steps per fastest time scale ``1/max|eig(A)|`` of the event search: a switching function
+#: is a sum of the flow's modes, so it changes sign at most about once within such a step
+#: (a dip that returns within it is seen by the derivative's sign change).
+STEPS_PER_SCALE = 4.0
+#: What a switching function's zero means: a slipping contact's slip velocity reached zero, a
+#: sticking one's force reached f_s N, a slipping one's slip speed reached its law's limit.
+SLIP_ZERO, STICK_LIMIT, LAW_LIMIT = 0, 1, 2
+
+
+def _root(fun, a: float, b: float) -> float:
+    return brentq(fun, a, b, xtol=1e-300, rtol=4 * _EPS, maxiter=200)
+
+
+class Flow:
+    """The flow of the contact state ``states`` (a tuple of -1, 0, 1 per contact)."""
+
+    def __init__(self, system: System, states: tuple[int, ...]):
+        n = system.dofs
+        self.states = tuple(int(s) for s in states)
+        M, K, W = system.mass, system.stiffness, system.directions
+        Minv = np.linalg.inv(M)
+        stuck = [i for i, s in enumerate(self.states) if s == 0]
+        c_eff = system.damping.copy()
+        g = system.force.copy()
+        force_rows = np.zeros((len(self.states), 2 * n + 1))
+        for j, (c, s) in enumerate(zip(system.contacts, self.states)):
+            if s == 0:
+                continue
+            mu0, mu1 = c.friction.affine
+            N, w, V = c.normal_force, c.direction, c.surface_speed
+            c_eff -= N * mu1 * np.outer(w, w)
+            g += w * N * (s * mu0 - mu1 * V)
+            force_rows[j, n:2 * n] = N * mu1 * w
+            force_rows[j, -1] = N * (s * mu0 - mu1 * V)
+        if stuck:
+            Ws = W[:, stuck]
+            L = np.linalg.pinv(Ws.T @ Minv @ Ws) @ Ws.T @ Minv  # lam = -L r
+            P = Minv - Minv @ Ws @ L
+            force_rows[stuck, :n] = L @ K
+            force_rows[stuck, n:2 * n] = L @ c_eff
+            force_rows[stuck, -1] = -L @ g
+        else:
+            P = Minv
+        A = np.zeros((2 * n + 1, 2 * n + 1))
+        A[:n, n:2 * n] = np.eye(n)
+        A[n:2 * n, :n] = -P @ K
+        A[n:2 * n, n:2 * n] = -P @ c_eff
+        A[n:2 * n, -1] = P @ g
+        self.A, self.n = A, n
+        self.force_rows = force_rows
+        slip = np.zeros((len(self.states), 2 * n + 1))  # v_r = V - w . v
+        slip[:, n:2 * n] = -W.T
+        slip[:, -1] = [c.surface_speed for c in system.contacts]
+        self.slip_rows = slip
+        rows, owners, kinds = [], [], []  # switching functions: an event when one reaches zero from above
+        for i, (c, s) in enumerate(zip(system.contacts, self.states)):
+            if s == 0:
+                limit = np.zeros(2 * n + 1)
+                limit[-1] = c.friction.static * c.normal_force
+                rows += [limit - force_rows[i], limit + force_rows[i]]
+                owners += [i, i]
+                kinds += [STICK_LIMIT, STICK_LIMIT]
+            else:
+                rows.append(s * slip[i])
+                owners.append(i)
+                kinds.append(SLIP_ZERO)
+                if math.isfinite(c.friction.max_speed):  # the law holds up to it: |v_r| < max_speed
+                    valid = -s * slip[i]
+                    valid[-1] += c.friction.max_speed
+                    rows.append(valid)
+                    owners.append(i)
+                    kinds.append(LAW_LIMIT)
+        self.rows, self.owners, self.kinds = np.array(rows), np.array(owners), np.array(kinds)
+        rho = float(np.max(np.abs(np.linalg.eigvals(A[:-1, :-1])))) if n else 0.0
+        self.h = STEPS_PER_SCALE ** -1 / rho if rho > 0 else math.inf
+        self._step = None
+
+    def propagate(self, z: np.ndarray, t: float) -> np.ndarray:
+        """``expm(t A) z``."""
+        return expm(t * self.A) @ z
+
+    def acceleration(self, z: np.ndarray) -> np.ndarray:
+        return (self.A @ z)[self.n:2 * self.n]
+
+    def first_event(self, z0: np.ndarray, t_max: float):
+        """``(t, z(t), rows)``: the first switching time within ``(0, t_max]`` and the switching
+        functions (indices of ``rows``: their contact in ``owners``, what they mean in ``kinds``)
+        that reached zero there; ``(t_max, z(t_max), ())`` if none."""
+        G, A = self.rows, self.A
+        h = min(self.h, t_max)
+        if self._step is None or self._step[0] != h:
+            self._step = (h, expm(h * A))
+        t, z = 0.0, z0
+        g, dg = G @ z, G @ (A @ z)
+        scale = np.abs(G[:, :-1]) @ np.abs(z0[:-1]) + np.abs(G[:, -1])
+        while t < t_max:
+            dt = min(h, t_max - t)
+            z1 = self._step[1] @ z if dt == h else expm(dt * A) @ z
+            g1, dg1 = G @ z1, G @ (A @ z1)
+            tol = 64 * _EPS * (np.abs(G[:, :-1]) @ np.abs(z1[:-1]) + np.abs(G[:, -1]) + scale)
+            hits = []
+            for r in range(len(G)):
+                found = self._crossing(r, z, dt, g[r], dg[r], g1[r], dg1[r], tol[r])
+                if found is not None:
+                    hits.append((found, r))
+            if hits:
+                first = min(s for s, _ in hits)
+                ze = expm(first * A) @ z
+                ge = G @ ze
+                rows = sorted({r for s, r in hits if s <= first * (1 + 1e-9) + 1e-300}
+                              | {r for r in range(len(G)) if ge[r] <= tol[r]})
+                return t + first, ze, tuple(rows)
+            t, z, g, dg = t + dt, z1, g1, dg1
+        return t_max, z, ()
+
+    def _crossing(self, r, z, dt, g0, dg0, g1, dg1, tol):
+        """The time in ``(0, dt]`` when row ``r`` first reaches zero from above, or None."""
+        row, A = self.rows[r], self.A
+
+        def value(s):
+            return float(row @ (expm(s * A) @ z))
+
+        def slope(s):
+            return float(row @ (A @ (expm(s * A) @ z)))
+
+        start = 0.0
+        if g0 <= tol:  # on the switching line at the start: departing (rising) or leaving at once
+            if dg0 <= 0 and g1 <= tol:
+                return 0.0
+            if g1 > tol and dg1 >= 0:
+                return None
+            if dg0 > 0 and dg1 < 0:  # rose, then fell: from its top
+                start = _root(slope, 0.0, dt)
+                if value(start) <= tol:
+                    return None
+            elif g1 > tol:
+                return None
+        if g1 <= 0 and value(start) > 0:
+            return _root(value, start, dt)
+        if g1 <= 0:
+            return start
+        if dg0 < 0 < dg1 and g0 > tol:  # a dip between the steps: below zero at its bottom?
+            bottom = _root(slope, 0.0, dt)
+            if value(bottom) <= 0:
+                return _root(value, 0.0, bottom)
+        return None

@@ -1,0 +1,128 @@
+"""A linear structure with several frictional contacts.
+
+    M x'' + C x' + K x = f + sum_i w_i F_i,
+
+``x`` the ``n`` degrees of freedom. Contact ``i`` acts along its direction ``w_i`` (a vector
+of ``n`` numbers: a unit vector for a contact on one degree of freedom, a lever arm or a
+difference of two for others) against a surface moving at ``V_i``: its slip velocity is
+``v_r = V_i - w_i . x'`` and its friction force follows the paper's convention (eq. [1]),
+
+    slipping (v_r != 0):  F_i = N_i sign(v_r) mu_i(v_r),
+    sticking (v_r = 0):   |F_i| <= f_s,i N_i, F_i whatever keeps v_r = 0,
+
+with ``N_i`` its normal force and ``mu_i`` its friction law (`stickslip.friction`). One contact
+on a one-degree-of-freedom system is the oscillator of `stickslip.oscillator`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import ParameterError
+from ..friction import FrictionLaw
+from ..quantities import MAX_CONTACTS, MAX_SYSTEM_DOFS, SYSTEM as Q
+
+__all__ = ["Contact", "System"]
+
+
+def _vector(name: str, value, n: int | None, quantity: str) -> np.ndarray:
+    arr = np.asarray(Q[quantity].check_array(value, name), dtype=float)
+    if arr.ndim != 1 or (n is not None and arr.shape[0] != n):
+        want = f"{n} numbers (one per degree of freedom)" if n is not None else "a vector of numbers"
+        raise ParameterError(name, value, want)
+    return arr
+
+
+def _matrix(name: str, value, n: int, quantity: str) -> np.ndarray:
+    arr = np.asarray(Q[quantity].check_array(value, name), dtype=float)
+    if arr.shape != (n, n):
+        raise ParameterError(name, value, f"a {n} x {n} matrix (one row and column per degree of freedom; "
+                                          f"this one has shape {arr.shape})")
+    return arr
+
+
+@dataclass(frozen=True, eq=False)
+class Contact:
+    """One frictional contact: ``direction`` ``w`` (n numbers), ``normal_force`` ``N`` [N] > 0,
+    its ``friction`` law, and the ``surface_speed`` ``V`` [m/s] of what it rubs on."""
+
+    direction: np.ndarray
+    normal_force: float
+    friction: FrictionLaw
+    surface_speed: float = 0.0
+    name: str = ""
+
+    def __post_init__(self):
+        w = _vector("direction", self.direction, None, "direction")
+        if not np.any(w):
+            raise ParameterError("direction", self.direction, "a vector with at least one entry not zero")
+        object.__setattr__(self, "direction", w)
+        object.__setattr__(self, "normal_force", Q.check("normal_force", self.normal_force))
+        object.__setattr__(self, "surface_speed", Q.check("surface_speed", self.surface_speed))
+        if not isinstance(self.friction, FrictionLaw):
+            raise ParameterError("friction", self.friction, "a stickslip.friction.FrictionLaw")
+        if not isinstance(self.name, str):
+            raise ParameterError("name", self.name, "a text")
+
+    def slip_velocity(self, v: np.ndarray) -> float:
+        """``V - w . v``."""
+        return float(self.surface_speed - self.direction @ v)
+
+
+@dataclass(frozen=True, eq=False)
+class System:
+    """Matrices ``mass`` M (symmetric positive definite), ``stiffness`` K and ``damping`` C
+    (any n x n; default none), a constant ``force`` f (n numbers; default none) and the
+    ``contacts``. K and C need not be symmetric (follower forces, gyroscopic terms)."""
+
+    mass: np.ndarray
+    stiffness: np.ndarray
+    contacts: tuple = ()
+    damping: np.ndarray | None = None
+    force: np.ndarray | None = None
+    _chol: np.ndarray = field(init=False, repr=False)
+
+    def __post_init__(self):
+        try:
+            shape = np.shape(self.mass)
+        except Exception:  # noqa: BLE001 - ragged lists
+            shape = ()
+        if len(shape) != 2 or shape[0] != shape[1] or not 1 <= shape[0] <= MAX_SYSTEM_DOFS:
+            raise ParameterError("mass", self.mass, f"a square matrix of 1 to {MAX_SYSTEM_DOFS} rows")
+        n = shape[0]
+        M = _matrix("mass", self.mass, n, "mass_matrix")
+        if not np.allclose(M, M.T, rtol=1e-12, atol=1e-12 * np.abs(M).max()):
+            raise ParameterError("mass", self.mass, "a symmetric matrix")
+        try:
+            chol = np.linalg.cholesky(M)
+        except np.linalg.LinAlgError:
+            raise ParameterError("mass", self.mass, "positive definite (a kinetic energy that is never zero "
+                                                    "for a moving structure)") from None
+        object.__setattr__(self, "mass", M)
+        object.__setattr__(self, "_chol", chol)
+        object.__setattr__(self, "stiffness", _matrix("stiffness", self.stiffness, n, "stiffness_matrix"))
+        C = np.zeros((n, n)) if self.damping is None else _matrix("damping", self.damping, n, "damping_matrix")
+        object.__setattr__(self, "damping", C)
+        f = np.zeros(n) if self.force is None else _vector("force", self.force, n, "force")
+        object.__setattr__(self, "force", f)
+        contacts = tuple(self.contacts) if isinstance(self.contacts, (list, tuple)) else None
+        if contacts is None or not 1 <= len(contacts) <= MAX_CONTACTS:
+            raise ParameterError("contacts", self.contacts, f"a list of 1 to {MAX_CONTACTS} Contact")
+        for i, c in enumerate(contacts):
+            if not isinstance(c, Contact):
+                raise ParameterError(f"contacts[{i}]", c, "a stickslip.system.Contact")
+            if c.direction.shape != (n,):
+                raise ParameterError(f"contacts[{i}].direction", c.direction.tolist(),
+                                     f"{n} numbers (one per degree of freedom)")
+        object.__setattr__(self, "contacts", contacts)
+
+    @property
+    def dofs(self) -> int:
+        return self.mass.shape[0]
+
+    @property
+    def directions(self) -> np.ndarray:
+        """``W``: one column per contact."""
+        return np.stack([c.direction for c in self.contacts], axis=1)

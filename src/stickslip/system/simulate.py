@@ -1,0 +1,237 @@
+"""Event-driven simulation of a `System`: exact switching between contact states.
+
+Between events the motion is the closed-form flow of the contact state (`Flow`). At an event
+(a slipping contact's slip velocity reaching zero, or a sticking contact's force reaching
+``f_s N``) the next state is chosen for all contacts at zero slip velocity at once: every one
+of them sticks, then the one whose sticking force exceeds ``f_s N`` the most is released in the
+direction of that force, and so on until every sticking force is admissible (an active set:
+at most one solve per contact). The released contacts must then slip the way they were
+released (their slip acceleration has the force's sign); if not, no state is consistent and
+the simulation stops with a `NoSolutionError` saying so. A contact that sticks has its slip
+velocity set to exactly zero (the velocity moved in the metric of ``M``, by round-off).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import xarray as xr
+
+from ..cf import finish
+from ..errors import NoSolutionError, ParameterError
+from ..quantities import SYSTEM as Q
+from ..results import Result
+from .flow import LAW_LIMIT, Flow
+from .model import System
+
+__all__ = ["SystemRun", "simulate", "choose_states"]
+
+#: Events in a row without time passing before the simulation is said to chatter.
+MAX_INSTANT_EVENTS = 64
+#: The most numbers the samples of a run hold (1 GB of float64).
+MAX_NUMBERS = 1.25e8
+#: The most steps of the event search in a run (each a product with the step's matrix exponential:
+#: about a minute for a small system).
+MAX_STEPS = 1e7
+
+
+@dataclass(frozen=True, eq=False)
+class SystemRun(Result):
+    """A simulated trajectory: samples and events."""
+
+    t: np.ndarray
+    x: np.ndarray
+    v: np.ndarray
+    states: np.ndarray
+    friction_force: np.ndarray
+    event_time: np.ndarray
+    event_contact: np.ndarray
+    event_state: np.ndarray
+    MODEL = "system"
+
+    def to_dict(self) -> dict:
+        return {"events": int(self.event_time.size), "t_end": float(self.t[-1]),
+                "x_end": self.x[-1].tolist(), "v_end": self.v[-1].tolist(), "states_end": self.states[-1].tolist()}
+
+    def to_xarray(self) -> xr.Dataset:
+        def var(dims, values, name):
+            units, meaning = Q[name].units, Q[name].meaning
+            return dims, values, {"units": units, "long_name": meaning}
+
+        n, k = self.x.shape[1], self.states.shape[1]
+        ds = xr.Dataset(
+            {"x": var(("t", "dof"), self.x, "x"), "v": var(("t", "dof"), self.v, "v"),
+             "contact_state": var(("t", "contact"), self.states.astype(np.int8), "contact_state"),
+             "friction_force": var(("t", "contact"), self.friction_force, "friction_force"),
+             "event_time": var(("event",), self.event_time, "event_time"),
+             "event_contact": var(("event",), self.event_contact, "event_contact"),
+             "event_state": var(("event",), self.event_state.astype(np.int8), "event_state")},
+            coords={"t": var(("t",), self.t, "t"), "dof": var(("dof",), np.arange(n), "dof"),
+                    "contact": var(("contact",), np.arange(k), "contact"),
+                    "event": var(("event",), np.arange(self.event_time.size), "event")})
+        for name in ("contact_state", "event_state"):
+            ds[name].attrs.update(flag_values=np.array([-1, 0, 1], dtype=np.int8),
+                                  flag_meanings="reverse_slip stick slip")
+        return finish(ds, "system with frictional contacts: event-driven simulation", "system")
+
+
+def _zero_slip(system: System, z: np.ndarray, stuck: list[int]) -> np.ndarray:
+    """``z`` with the slip velocity of the ``stuck`` contacts exactly zero (the smallest change
+    of the velocity in the metric of M)."""
+    if not stuck:
+        return z
+    n = system.dofs
+    W = system.directions[:, stuck]
+    V = np.array([system.contacts[i].surface_speed for i in stuck])
+    v = z[n:2 * n]
+    MiW = np.linalg.solve(system.mass, W)
+    z = z.copy()
+    z[n:2 * n] = v + MiW @ np.linalg.lstsq(W.T @ MiW, V - W.T @ v, rcond=None)[0]
+    return z
+
+
+def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, released: dict, flows: dict) -> tuple:
+    """The contact states from ``z`` on: contacts not in ``zero`` keep ``states``; those in
+    ``zero`` (at zero slip velocity) stick unless their sticking force exceeds ``f_s N``
+    (released in the force's direction), ``released`` (contact -> sign) slip at once."""
+    st = list(states)
+    for i in zero:
+        st[i] = released.get(i, 0)
+    for _ in range(len(zero) + 1):
+        flow = _flow(system, tuple(st), flows)
+        forces = flow.force_rows @ z
+        worst, over = None, 0.0
+        for i in zero:
+            if st[i] != 0:
+                continue
+            c = system.contacts[i]
+            limit = c.friction.static * c.normal_force
+            excess = abs(forces[i]) - limit
+            if excess > 1e-12 * max(limit, abs(forces[i])) and excess > over:
+                worst, over = i, excess
+        if worst is None:
+            break
+        st[worst] = 1 if forces[worst] > 0 else -1
+    flow = _flow(system, tuple(st), flows)
+    a = flow.acceleration(z)
+    for i in zero:
+        if st[i] == 0:
+            continue
+        c = system.contacts[i]
+        rate = -c.direction @ a  # d v_r / dt
+        size = np.abs(c.direction) @ np.abs(a) + 1e-300
+        if st[i] * rate < -1e-9 * size:
+            raise NoSolutionError(f"no consistent contact state at contact {i}: released to slip with sign {st[i]}, "
+                                  f"its slip velocity would change with sign {-st[i]} (a Painleve-like paradox "
+                                  "of these directions and laws)")
+    return tuple(st)
+
+
+def _sampled(flow: Flow, z: np.ndarray, times: np.ndarray, dt: float) -> np.ndarray:
+    """The states at ``times`` (uniform, ``dt`` apart) of the flow from ``z``, one per row: the
+    first by its matrix exponential, the others by powers of the step's, doubled (``log2`` of
+    the count of matrix products, not one per sample)."""
+    block = flow.propagate(z, times[0])[:, None]
+    power = flow.propagate(np.eye(z.size), dt) if times.size > 1 else None
+    while block.shape[1] < times.size:
+        block = np.hstack([block, power @ block])
+        power = power @ power
+    return block[:, :times.size].T
+
+
+def _flow(system, states, flows) -> Flow:
+    flow = flows.get(states)
+    if flow is None:
+        flow = flows[states] = Flow(system, states)
+    return flow
+
+
+def _check(system, x0, v0, t_end, samples, max_events):
+    if not isinstance(system, System):
+        raise ParameterError("system", system, "a stickslip.system.System")
+    for i, c in enumerate(system.contacts):
+        if c.friction.affine is None:
+            raise ParameterError(f"contacts[{i}].friction", type(c.friction).__name__,
+                                 "a law affine in the slip speed (Coulomb, linear weakening) in this version")
+    n = system.dofs
+    x0 = np.zeros(n) if x0 is None else np.asarray(Q["x0"].check_array(x0, "x0"), dtype=float).reshape(-1)
+    v0 = np.zeros(n) if v0 is None else np.asarray(Q["v0"].check_array(v0, "v0"), dtype=float).reshape(-1)
+    for name, arr in (("x0", x0), ("v0", v0)):
+        if arr.shape != (n,):
+            raise ParameterError(name, arr.tolist(), f"{n} numbers (one per degree of freedom)")
+    t_end, samples = Q.check("t_end", t_end), Q.check("samples", samples)
+    k = len(system.contacts)
+    if samples * (2 * n + 2 * k) > MAX_NUMBERS:
+        raise ParameterError("samples", samples, f"<= {MAX_NUMBERS // (2 * n + 2 * k)} for {n} degrees of freedom and "
+                             f"{k} contacts (the samples hold at most {MAX_NUMBERS:.3g} numbers, 1 GB)",
+                             also=("mass", "contacts"))
+    free = Flow(system, tuple(1 for _ in range(k)))  # every contact slipping: the fastest time scale
+    if np.isfinite(free.h) and t_end / free.h > MAX_STEPS:
+        raise ParameterError("t_end", t_end, f"<= {MAX_STEPS * free.h:.6g} s ({MAX_STEPS:.0e} steps of the event "
+                             f"search, {free.h:.3g} s each, set by the fastest time scale of the system)",
+                             also=("mass", "stiffness", "damping"))
+    return x0, v0, t_end, samples, Q.check("max_events", max_events)
+
+
+def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: int = 1001,
+             max_events: int = 1_000_000) -> SystemRun:
+    """Simulate ``system`` from ``(x0, v0)`` (default rest at zero) to ``t_end``, with
+    ``samples`` uniform samples; at most ``max_events`` contact events (else `NoSolutionError`)."""
+    x0, v0, t_end, samples, max_events = _check(system, x0, v0, t_end, samples, max_events)
+    n, k = system.dofs, len(system.contacts)
+    flows: dict = {}
+    z = np.concatenate([x0, v0, [1.0]])
+    vr = [c.slip_velocity(v0) for c in system.contacts]
+    speed = max(1.0, *(abs(c.surface_speed) for c in system.contacts))
+    zero = {i for i in range(k) if abs(vr[i]) <= 1e-14 * speed}
+    states = tuple(0 if i in zero else (1 if vr[i] > 0 else -1) for i in range(k))
+    states = choose_states(system, z, states, zero, {}, flows)
+    z = _zero_slip(system, z, [i for i in zero if states[i] == 0])
+    ts = np.linspace(0.0, t_end, samples)
+    out = np.empty((samples, 2 * n))
+    st_out = np.empty((samples, k), dtype=np.int8)
+    f_out = np.empty((samples, k))
+    ev_t, ev_c, ev_s = [], [], []
+    t, j, instant = 0.0, 0, 0
+    while True:
+        flow = _flow(system, states, flows)
+        t_next, z_next, hit = flow.first_event(z, t_end - t)
+        t_next = t + t_next if t_next < t_end - t else t_end
+        j1 = j
+        while j1 < samples and (ts[j1] < t_next or (not hit and ts[j1] <= t_next)):
+            j1 += 1
+        if j1 > j:
+            zs = _sampled(flow, z, ts[j:j1] - t, ts[1] - ts[0])
+            out[j:j1], st_out[j:j1], f_out[j:j1] = zs[:, :-1], states, zs @ flow.force_rows.T
+            j = j1
+        if not hit:
+            break
+        instant = instant + 1 if t_next == t else 0
+        if instant > MAX_INSTANT_EVENTS or len(ev_t) >= max_events:
+            why = (f"{MAX_INSTANT_EVENTS} contact events at t = {t:.17g} without time passing (chattering)"
+                   if instant > MAX_INSTANT_EVENTS else f"more than max_events = {max_events} contact events")
+            raise NoSolutionError(f"simulation stopped: {why}")
+        t, z = t_next, z_next
+        beyond = [int(flow.owners[r]) for r in hit if flow.kinds[r] == LAW_LIMIT]
+        if beyond:
+            i = beyond[0]
+            raise NoSolutionError(f"simulation stopped at t = {t:.17g}: the slip speed of contact {i} reached the "
+                                  f"limit of its friction law, |v_r| < {system.contacts[i].friction.max_speed:.6g} "
+                                  "(beyond it the law gives no friction coefficient)")
+        hit = sorted({int(flow.owners[r]) for r in hit})
+        released = {}
+        for i in hit:
+            if states[i] == 0:  # its force reached f_s N: released in its direction
+                released[i] = 1 if (flow.force_rows[i] @ z) > 0 else -1
+        vr = flow.slip_rows @ z
+        zero = set(hit) | {i for i in range(k) if states[i] == 0}
+        zero |= {i for i in range(k) if abs(vr[i]) <= 1e-13 * speed}
+        new = choose_states(system, z, states, zero, released, flows)
+        z = _zero_slip(system, z, [i for i in range(k) if new[i] == 0])
+        for i in range(k):
+            if new[i] != states[i]:
+                ev_t.append(t), ev_c.append(i), ev_s.append(new[i])
+        states = new
+    return SystemRun(ts, out[:, :n], out[:, n:], st_out, f_out, np.array(ev_t), np.array(ev_c, dtype=np.int64),
+                     np.array(ev_s, dtype=np.int8))
