@@ -99,6 +99,9 @@ def _results():
 
     system = System(np.eye(2), [[2.0, -1.0], [-1.0, 1.0]], [Contact([1.0, 0.0], 1.0, Coulomb(0.6, 0.4), 0.2)])
     yield "system run", system_simulate(system, t_end=5.0, samples=51).to_xarray()
+    from stickslip.system import limit_cycle as system_cycle
+
+    yield "system cycle", system_cycle(system, transient=40.0).to_xarray()
 
 
 def test_every_result_dataset_follows_the_rules():

@@ -38,6 +38,8 @@ def test_systems_page_runs(tmp_path, monkeypatch):
         exec(block, namespace)
     assert list(namespace["run"].event_contact) == [1, 0, 0, 0, 0, 1, 1]
     assert namespace["ds"]["friction_force"].dims == ("t", "contact")
+    cycle = namespace["cycle"]
+    assert round(cycle.period, 2) == 6.69 and cycle.stable
 
 
 def test_brake_tutorial_runs(tmp_path, monkeypatch):

@@ -18,6 +18,7 @@ from stickslip.halfspace import StickSlipWave, direct_problem, inverse_problem
 from stickslip.oscillator import Oscillator, continue_cycle, hopf_points, limit_cycle, simulate
 from stickslip.sweep import run_sweep
 from stickslip.system import Contact, System
+from stickslip.system import limit_cycle as system_cycle
 from stickslip.system import simulate as system_simulate
 
 def _one(x):
@@ -42,7 +43,9 @@ CALLS = {
     "System": (lambda **k: System(**{**SYSTEM, **k}), [*SYSTEM, "damping", "force"]),
     "Contact": (lambda **k: Contact(**{**CONTACT, **k}), [*CONTACT, "name"]),
     "system simulate": (lambda **k: system_simulate(**{"system": System(**SYSTEM), "t_end": 5.0, **k}),
-                        ["system", "x0", "v0", "t_end", "samples", "max_events"]),
+                        ["system", "x0", "v0", "t_end", "samples", "max_events", "segments", "states"]),
+    "system limit_cycle": (lambda **k: system_cycle(**{"system": System(**SYSTEM), "transient": 20.0, **k}),
+                           ["system", "x0", "v0", "transient", "tol", "max_iter"]),
     "Oscillator": (lambda **k: Oscillator(**{**OSC, **k}), [*OSC, "damping"]),
     "Coulomb": (lambda **k: Coulomb(**{"fs": 0.6, "fd": 0.4, **k}), ["fs", "fd"]),
     "Stribeck": (lambda **k: Stribeck(**{"fs": 0.6, "fd": 0.4, "vs": 0.1, **k}), ["fs", "fd", "vs"]),
@@ -170,7 +173,7 @@ DOMAIN = {**{n: "oscillator" for n in ("Oscillator", "Coulomb", "Stribeck", "sim
           **{n: "halfspace" for n in ("inverse_problem", "direct_problem", "StickSlipWave", "inverse_map",
                                       "direct_map", "fields")},
           **{n: "fem" for n in ("contact_frames", "ContactProblem")},
-          **{n: "system" for n in ("System", "Contact", "system simulate")}}
+          **{n: "system" for n in ("System", "Contact", "system simulate", "system limit_cycle")}}
 
 
 @pytest.mark.parametrize("name, param", CASES, ids=[f"{n} {p}" for n, p in CASES])

@@ -31,6 +31,9 @@ SYSTEM = Domain("system", units="SI (or any consistent units)", quantities=[
     Q("v0", "m/s", "entry of the initial velocity", "[-1e300, 1e300]", symbol="v_0"),
     Q("samples", "1", "uniform samples of the trajectory in the output", "[2, 1e7]", integer=True),
     Q("max_events", "1", "most contact events of a simulation", "[1, 1e9]", integer=True),
+    Q("transient", "s", "time simulated before a cycle is looked for", "(0, 1e300]"),
+    Q("max_iter", "1", "most returns to the section while a cycle is looked for", "[1, 1e6]", integer=True),
+    Q("states", "1", "contact states to start in: 1 slip, 0 stick, -1 reverse slip, one per contact"),
     # results
     Q("contact", "1", "contact number"),
     Q("t", "s", "time since the start"),
@@ -42,4 +45,8 @@ SYSTEM = Domain("system", units="SI (or any consistent units)", quantities=[
     Q("event_time", "s", "time of a contact event"),
     Q("event_contact", "1", "contact whose state changed at the event"),
     Q("event_state", "1", "its state after the event (1 slip, 0 stick, -1 reverse slip)"),
+    Q("period", "s", "period of the limit cycle"),
+    Q("multipliers_abs", "1", "moduli of the Floquet multipliers of the cycle"),
+    Q("stable", "1", "1 if the cycle is stable: every multiplier but the flow's own inside the unit circle"),
+    Q("events", "1", "contact events (of a run, or of one period of a cycle)"),
 ])

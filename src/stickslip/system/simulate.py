@@ -13,6 +13,7 @@ velocity set to exactly zero (the velocity moved in the metric of ``M``, by roun
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -25,7 +26,7 @@ from ..results import Result
 from .flow import LAW_LIMIT, Flow
 from .model import System
 
-__all__ = ["SystemRun", "simulate", "choose_states"]
+__all__ = ["SystemRun", "Segment", "simulate", "choose_states"]
 
 #: Events in a row without time passing before the simulation is said to chatter.
 MAX_INSTANT_EVENTS = 64
@@ -36,7 +37,7 @@ MAX_NUMBERS = 1.25e8
 MAX_STEPS = 1e7
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, repr=False)
 class SystemRun(Result):
     """A simulated trajectory: samples and events."""
 
@@ -48,6 +49,8 @@ class SystemRun(Result):
     event_time: np.ndarray
     event_contact: np.ndarray
     event_state: np.ndarray
+    #: With ``simulate(..., segments=True)``: one `Segment` per piece of the flow, in order.
+    segments: tuple = ()
     MODEL = "system"
 
     def to_dict(self) -> dict:
@@ -74,6 +77,20 @@ class SystemRun(Result):
             ds[name].attrs.update(flag_values=np.array([-1, 0, 1], dtype=np.int8),
                                   flag_meanings="reverse_slip stick slip")
         return finish(ds, "system with frictional contacts: event-driven simulation", "system")
+
+
+@dataclass(frozen=True)
+class Segment:
+    """A piece of the flow: the contact ``states``, its start ``z`` = (x, v, 1) at time ``t``, its
+    ``duration``; ``rows`` the switching functions (of `Flow` of ``states``) that ended it and
+    ``after`` the states from then on (``()`` and ``states`` for the last piece)."""
+
+    states: tuple
+    t: float
+    z: np.ndarray
+    duration: float
+    rows: tuple
+    after: tuple
 
 
 def _zero_slip(system: System, z: np.ndarray, stuck: list[int]) -> np.ndarray:
@@ -140,6 +157,21 @@ def _sampled(flow: Flow, z: np.ndarray, times: np.ndarray, dt: float) -> np.ndar
     return block[:, :times.size].T
 
 
+def _given_states(states, vr, speed) -> tuple:
+    try:
+        given = tuple(int(s) for s in states)
+        ok = len(given) == len(vr) and all(s in (-1, 0, 1) and float(s) == float(o) for s, o in zip(given, states))
+    except (TypeError, ValueError):
+        ok = False
+    if not ok:
+        raise ParameterError("states", states, f"{len(vr)} numbers, each 1 (slip), 0 (stick) or -1 (reverse slip)")
+    for i, (s, v) in enumerate(zip(given, vr)):
+        if (s == 0 and abs(v) > 1e-9 * speed) or (s != 0 and s * v < -1e-9 * speed):
+            raise ParameterError("states", list(states), f"states the start allows: contact {i} has slip velocity "
+                                 f"{v:.6g}, so it cannot {'stick' if s == 0 else 'slip with sign ' + str(s)}")
+    return given
+
+
 def _flow(system, states, flows) -> Flow:
     flow = flows.get(states)
     if flow is None:
@@ -175,29 +207,40 @@ def _check(system, x0, v0, t_end, samples, max_events):
 
 
 def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: int = 1001,
-             max_events: int = 1_000_000) -> SystemRun:
+             max_events: int = 1_000_000, segments: bool = False, states=None) -> SystemRun:
     """Simulate ``system`` from ``(x0, v0)`` (default rest at zero) to ``t_end``, with
-    ``samples`` uniform samples; at most ``max_events`` contact events (else `NoSolutionError`)."""
+    ``samples`` uniform samples; at most ``max_events`` contact events (else `NoSolutionError`).
+    With ``segments`` the run keeps its pieces of flow (`Segment`: for `monodromy`). The
+    contact ``states`` to start in (1 slip, 0 stick, -1 reverse slip; default: chosen from the
+    start, as at an event) are for a start on a switching line, such as just after an event."""
     x0, v0, t_end, samples, max_events = _check(system, x0, v0, t_end, samples, max_events)
+    if not isinstance(segments, (bool, np.bool_)):
+        raise ParameterError("segments", segments, "True or False")
     n, k = system.dofs, len(system.contacts)
     flows: dict = {}
     z = np.concatenate([x0, v0, [1.0]])
     vr = [c.slip_velocity(v0) for c in system.contacts]
     speed = max(1.0, *(abs(c.surface_speed) for c in system.contacts))
     zero = {i for i in range(k) if abs(vr[i]) <= 1e-14 * speed}
-    states = tuple(0 if i in zero else (1 if vr[i] > 0 else -1) for i in range(k))
-    states = choose_states(system, z, states, zero, {}, flows)
+    if states is None:
+        states = tuple(0 if i in zero else (1 if vr[i] > 0 else -1) for i in range(k))
+        states = choose_states(system, z, states, zero, {}, flows)
+    else:
+        states = _given_states(states, vr, speed)
+        zero = {i for i in range(k) if states[i] == 0}
     z = _zero_slip(system, z, [i for i in zero if states[i] == 0])
     ts = np.linspace(0.0, t_end, samples)
     out = np.empty((samples, 2 * n))
     st_out = np.empty((samples, k), dtype=np.int8)
     f_out = np.empty((samples, k))
-    ev_t, ev_c, ev_s = [], [], []
+    ev_t, ev_c, ev_s, pieces = [], [], [], []
     t, j, instant = 0.0, 0, 0
     while True:
         flow = _flow(system, states, flows)
         t_next, z_next, hit = flow.first_event(z, t_end - t)
         t_next = t + t_next if t_next < t_end - t else t_end
+        if segments:
+            pieces.append(Segment(states, t, z, t_next - t, tuple(hit), states))
         j1 = j
         while j1 < samples and (ts[j1] < t_next or (not hit and ts[j1] <= t_next)):
             j1 += 1
@@ -232,6 +275,8 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
         for i in range(k):
             if new[i] != states[i]:
                 ev_t.append(t), ev_c.append(i), ev_s.append(new[i])
+        if segments:
+            pieces[-1] = dataclasses.replace(pieces[-1], after=new)
         states = new
     return SystemRun(ts, out[:, :n], out[:, n:], st_out, f_out, np.array(ev_t), np.array(ev_c, dtype=np.int64),
-                     np.array(ev_s, dtype=np.int8))
+                     np.array(ev_s, dtype=np.int8), tuple(pieces))

@@ -1,0 +1,150 @@
+"""Monodromy matrices with saltation matrices, limit cycles and their Floquet multipliers.
+
+Along a run the derivative of the end state with respect to the start state is the product,
+in order, of each piece's ``expm(tau A)`` (its (x, v) block) and, at each event, the saltation
+matrix of the switching function ``h`` (gradient ``n``) that ended it,
+
+    S = I + (f+ - f-) n^T / (n . f-),
+
+with ``f-`` and ``f+`` the vector fields of the states before and after, at the event. Every
+kind of switch — stick onset, stick release, slip reversal — is such a crossing; only the
+fields and the function differ. At a stick onset ``S`` removes the velocity along the contact
+(a multiplier 0 per contact that sticks); a cycle's other multipliers say its stability.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.linalg import expm
+
+from ..errors import NoSolutionError, ParameterError
+from ..quantities import SYSTEM as Q
+from ..results import Result
+from .flow import Flow
+from .model import System
+from .simulate import SystemRun, simulate
+
+__all__ = ["monodromy", "saltation", "SystemCycle", "limit_cycle"]
+
+
+def saltation(f_minus: np.ndarray, f_plus: np.ndarray, normal: np.ndarray) -> np.ndarray:
+    """``I + (f+ - f-) n^T / (n . f-)``: the jump of the linearised flow at a transversal crossing."""
+    rate = float(normal @ f_minus)
+    if rate == 0.0:
+        raise NoSolutionError("a grazing event (the switching function is tangent to the flow): the monodromy "
+                              "is not defined there")
+    return np.eye(f_minus.size) + np.outer(f_plus - f_minus, normal) / rate
+
+
+def monodromy(system: System, run: SystemRun | tuple) -> np.ndarray:
+    """``d(x, v)(t_end) / d(x, v)(0)`` of a run simulated with ``segments=True`` (or of a tuple
+    of its segments: up to just after the last one's event)."""
+    segments = run if isinstance(run, tuple) else run.segments
+    if not segments:
+        raise ParameterError("run", "a run without segments", "a run of simulate(..., segments=True)")
+    n = system.dofs
+    flows: dict = {}
+
+    def flow_of(states):
+        if states not in flows:
+            flows[states] = Flow(system, states)
+        return flows[states]
+
+    out = np.eye(2 * n)
+    for seg in segments:
+        flow = flow_of(seg.states)
+        step = expm(seg.duration * flow.A)
+        out = step[:2 * n, :2 * n] @ out
+        if not seg.rows:
+            continue
+        z = step @ seg.z
+        normal = flow.rows[seg.rows[0]][:2 * n]
+        f_minus = (flow.A @ z)[:2 * n]
+        f_plus = (flow_of(seg.after).A @ z)[:2 * n]
+        out = saltation(f_minus, f_plus, normal) @ out
+    return out
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class SystemCycle(Result):
+    """A periodic orbit: its ``period``, the state ``x0``, ``v0`` just after the event that starts
+    it (contact ``contact`` entering state ``state``; every contact's state then in ``states``,
+    to start a `simulate` there), its ``multipliers`` (by decreasing size), and the events
+    within one period."""
+
+    period: float
+    x0: np.ndarray
+    v0: np.ndarray
+    contact: int
+    state: int
+    states: tuple
+    multipliers: np.ndarray
+    event_time: np.ndarray
+    event_contact: np.ndarray
+    event_state: np.ndarray
+    MODEL = "system"
+
+    @property
+    def stable(self) -> bool:
+        """All multipliers but the flow's own (the one nearest 1) inside the unit circle."""
+        others = np.delete(self.multipliers, np.argmin(np.abs(self.multipliers - 1.0)))
+        return bool(np.all(np.abs(others) < 1.0))
+
+    def to_dict(self) -> dict:
+        return {"period": self.period, "stable": self.stable, "multipliers_abs": np.abs(self.multipliers).tolist(),
+                "events": int(self.event_time.size), "x0": self.x0.tolist(), "v0": self.v0.tolist()}
+
+
+def _after(run: SystemRun, signature) -> list[tuple]:
+    """``(time, state just after, segment number, contact states after)`` of each event of ``run`` where a contact
+    entered a state, as ``signature`` = (contact, state) says."""
+    out = []
+    for i, (seg, nxt) in enumerate(zip(run.segments, run.segments[1:])):
+        if seg.rows and seg.after[signature[0]] == signature[1] != seg.states[signature[0]]:
+            out.append((seg.t + seg.duration, nxt.z, i, nxt.states))
+    return out
+
+
+def limit_cycle(system: System, x0=None, v0=None, *, transient: float = 100.0, tol: float = 1e-10,
+                max_iter: int = 200) -> SystemCycle:
+    """The periodic orbit the motion from ``(x0, v0)`` settles on after ``transient`` seconds.
+
+    The last contact event of the transient (a contact entering a state) is the Poincare
+    section; the return map to it is iterated until the state repeats to ``tol`` (relative),
+    and the multipliers are those of the monodromy over one period (with saltation matrices)."""
+    transient = Q.check("transient", transient)
+    tol, max_iter = Q.check("tol", tol), Q.check("max_iter", max_iter)
+    try:
+        run = simulate(system, x0, v0, transient, samples=2, segments=True)
+    except ParameterError as err:  # the run's bound on its length is the transient's
+        if err.name != "t_end":
+            raise
+        raise ParameterError("transient", transient, err.allowed, also=err.also) from None
+    if run.event_time.size < 2:
+        raise NoSolutionError(f"no contact events within transient = {transient:g} s: no stick-slip cycle to follow")
+    signature = (int(run.event_contact[-1]), int(run.event_state[-1]))
+    crossings = _after(run, signature)
+    n = system.dofs
+    z, states = crossings[-1][1], crossings[-1][3]
+    horizon = transient if len(crossings) < 2 else 4.0 * (crossings[-1][0] - crossings[-2][0])
+    for _ in range(max_iter):
+        one = simulate(system, z[:n], z[n:2 * n], horizon, samples=2, segments=True, states=states)
+        ret = [r for r in _after(one, signature) if r[0] > 0.0]
+        if not ret:
+            raise NoSolutionError(f"contact {signature[0]} did not enter state {signature[1]} again within "
+                                  f"{horizon:g} s: no periodic orbit through that event")
+        period, z_next, last, states = ret[0]
+        if np.abs(z_next - z).max() <= tol * max(1.0, np.abs(z).max()):
+            break
+        z = z_next
+    else:
+        raise NoSolutionError(f"the return map did not settle to {tol:g} in {max_iter} returns (a cycle of "
+                              "several returns, or quasi-periodic or chaotic motion)")
+    start = one.segments[0].states
+    mult = np.linalg.eigvals(monodromy(system, one.segments[:last + 1]))
+    mult = mult[np.argsort(-np.abs(mult))]
+    inside = one.event_time < period * (1 - 1e-12)
+    return SystemCycle(period, z[:n], z[n:2 * n], signature[0], signature[1], start, mult, one.event_time[inside],
+                       one.event_contact[inside], one.event_state[inside])
