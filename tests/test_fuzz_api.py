@@ -19,6 +19,7 @@ from stickslip.oscillator import Oscillator, continue_cycle, hopf_points, limit_
 from stickslip.sweep import run_sweep
 from stickslip.system import Contact, System
 from stickslip.system import limit_cycle as system_cycle
+from stickslip.system import load_system
 from stickslip.system import simulate as system_simulate
 
 def _one(x):
@@ -44,6 +45,7 @@ CALLS = {
     "Contact": (lambda **k: Contact(**{**CONTACT, **k}), [*CONTACT, "name"]),
     "system simulate": (lambda **k: system_simulate(**{"system": System(**SYSTEM), "t_end": 5.0, **k}),
                         ["system", "x0", "v0", "t_end", "samples", "max_events", "segments", "states"]),
+    "load_system": (lambda **k: load_system(**{"path": "no such file.toml", **k}), ["path"]),
     "system limit_cycle": (lambda **k: system_cycle(**{"system": System(**SYSTEM), "transient": 20.0, **k}),
                            ["system", "x0", "v0", "transient", "tol", "max_iter"]),
     "Oscillator": (lambda **k: Oscillator(**{**OSC, **k}), [*OSC, "damping"]),
@@ -173,7 +175,7 @@ DOMAIN = {**{n: "oscillator" for n in ("Oscillator", "Coulomb", "Stribeck", "sim
           **{n: "halfspace" for n in ("inverse_problem", "direct_problem", "StickSlipWave", "inverse_map",
                                       "direct_map", "fields")},
           **{n: "fem" for n in ("contact_frames", "ContactProblem")},
-          **{n: "system" for n in ("System", "Contact", "system simulate", "system limit_cycle")}}
+          **{n: "system" for n in ("System", "Contact", "system simulate", "system limit_cycle", "load_system")}}
 
 
 @pytest.mark.parametrize("name, param", CASES, ids=[f"{n} {p}" for n, p in CASES])

@@ -3,14 +3,15 @@
 `System` (``M x'' + C x' + K x = f + sum_i w_i F_i``) with its `Contact` s; `simulate` advances it
 through closed-form flows between contact events (`Flow`); `monodromy` differentiates a run
 (saltation matrices at its events) and `limit_cycle` finds the periodic orbit a motion settles
-on, with its Floquet multipliers. One contact on one degree of
+on, with its Floquet multipliers; `load_system` reads a system from a TOML file. One contact on one degree of
 freedom is the oscillator of `stickslip.oscillator`.
 """
 
+from .config import load_system, system_from_dict
 from .floquet import SystemCycle, limit_cycle, monodromy, saltation
 from .flow import Flow
 from .model import Contact, System
 from .simulate import Segment, SystemRun, choose_states, simulate
 
 __all__ = ["Contact", "System", "Flow", "SystemRun", "Segment", "simulate", "choose_states", "monodromy",
-           "saltation", "SystemCycle", "limit_cycle"]
+           "saltation", "SystemCycle", "limit_cycle", "load_system", "system_from_dict"]

@@ -1,0 +1,101 @@
+"""A `System` from a TOML file.
+
+```toml
+mass = [[1.0, 0.0], [0.0, 1.5]]          # kg; symmetric positive definite
+stiffness = [[3.0, -1.0], [-1.0, 2.0]]   # N/m
+damping = [[0.06, -0.02], [-0.02, 0.04]] # N s/m (optional)
+force = [0.0, 0.0]                       # N (optional)
+
+[[contact]]                              # one table per contact
+direction = [1.0, 0.0]                   # its slip velocity is surface_speed - direction . x'
+normal_force = 2.0                       # N
+surface_speed = 0.3                      # m/s
+law = "coulomb"                          # coulomb | linear-weakening (with tau)
+fs = 0.6
+fd = 0.4
+```
+
+Every problem is a `ParameterError` naming the key as the file writes it (``contact[1].fs``).
+"""
+
+from __future__ import annotations
+
+import os
+import tomllib
+from pathlib import Path
+
+from ..errors import MISSING, ParameterError
+from ..friction import make_law
+from .model import Contact, System
+
+__all__ = ["load_system", "system_from_dict"]
+
+_TOP = ("mass", "stiffness", "damping", "force", "contact")
+_CONTACT = ("direction", "normal_force", "surface_speed", "law", "fs", "fd", "tau", "name")
+_LAWS = ("coulomb", "linear-weakening")
+
+
+def _renamed(err: ParameterError, prefix: str) -> ParameterError:
+    return ParameterError(f"{prefix}{err.name}", err.value, err.allowed,
+                          also=tuple(f"{prefix}{a}" for a in err.also))
+
+
+def _contact(i: int, table) -> Contact:
+    where = f"contact[{i}]."
+    if not isinstance(table, dict):
+        raise ParameterError(f"contact[{i}]", table, "a table of direction, normal_force, law, fs, fd, ...")
+    unknown = sorted(set(table) - set(_CONTACT))
+    if unknown:
+        raise ParameterError(where + unknown[0], table[unknown[0]], "a key of a contact: " + ", ".join(_CONTACT))
+    for key in ("direction", "normal_force", "fs", "fd"):
+        if key not in table:
+            raise ParameterError(where + key, MISSING, "given")
+    law = table.get("law", "coulomb")
+    if law not in _LAWS:
+        raise ParameterError(where + "law", law, "one of " + ", ".join(_LAWS) + " (laws affine in the slip speed)")
+    try:
+        friction = make_law(law, fs=table["fs"], fd=table["fd"], tau=table.get("tau"))
+        return Contact(table["direction"], table["normal_force"], friction, table.get("surface_speed", 0.0),
+                       table.get("name", ""))
+    except ParameterError as err:
+        raise _renamed(err, where) from None
+
+
+def system_from_dict(data: dict) -> System:
+    """The `System` a parsed TOML file describes (see the module's docstring)."""
+    if not isinstance(data, dict):
+        raise ParameterError("system", data, "a table of mass, stiffness, contact, ...")
+    unknown = sorted(set(data) - set(_TOP))
+    if unknown:
+        raise ParameterError(unknown[0], data[unknown[0]], "a key of a system: " + ", ".join(_TOP))
+    for key in ("mass", "stiffness", "contact"):
+        if key not in data:
+            raise ParameterError(key, MISSING, "given" + (" (one [[contact]] table per contact)" if key == "contact"
+                                                          else ""))
+    if not isinstance(data["contact"], list) or not data["contact"]:
+        raise ParameterError("contact", data["contact"], "one [[contact]] table per contact, at least one")
+    contacts = [_contact(i, t) for i, t in enumerate(data["contact"])]
+    try:
+        return System(data["mass"], data["stiffness"], contacts, damping=data.get("damping"),
+                      force=data.get("force"))
+    except ParameterError as err:
+        if err.name.startswith("contacts["):
+            raise ParameterError(err.name.replace("contacts[", "contact[", 1), err.value, err.allowed) from None
+        raise
+
+
+def load_system(path) -> System:
+    """The `System` of the TOML file at ``path``."""
+    if not isinstance(path, (str, os.PathLike)):
+        raise ParameterError("system file", path, "a path to a TOML file")
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as err:
+        raise ParameterError("system file", str(path), f"a readable UTF-8 TOML file ({err.__class__.__name__})") \
+            from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as err:
+        raise ParameterError("system file", str(path), f"valid TOML ({err})") from None
+    return system_from_dict(data)
