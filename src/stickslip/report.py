@@ -35,7 +35,7 @@ class FigureOutcome:
     cached: bool
     image: str
     method: str = ""  # what was computed, for the data used (default: the spec's method)
-    data: str = ""  # where the data came from, when that can differ between runs (``ds.attrs["source"]``)
+    data: str = ""  # where the data came from, when that can differ between runs (``ds.attrs["data_source"]``)
 
     @property
     def passed(self) -> bool:
@@ -152,7 +152,7 @@ def reproduce(out: Path, *, quick: bool = False, only: str | None = None, force:
             f"{len(problems)} problem(s)", "none: text >= 7 pt, units on axes, no overlaps, nothing on the data, "
             "every colour code explained", "; ".join(problems[:8]).replace("|", "/"))]
         method = spec.describe(ds) if spec.describe else spec.method
-        data = str(ds.attrs.get("source", "")) if spec.describe else ""  # else "source" is CF's: the producer
+        data = str(ds.attrs.get("data_source", ""))  # a campaign figure's data (CF's "source": the producer)
         summary.outcomes.append(FigureOutcome(spec, checks, time.perf_counter() - start, cached, image, method, data))
         write_report(summary)  # keep the report current while the run proceeds
     return summary

@@ -184,3 +184,16 @@ def test_the_stored_campaign_was_computed_by_the_present_code(path):
 
 def test_the_statistics_are_stored_with_the_package():
     assert (campaign_data.STORED_DIR / "fem_statistics.nc").exists()
+
+
+def test_the_report_says_a_campaign_figure_used_the_stored_campaign(tmp_path):
+    """Through the report's own path (computed, checkpointed, then read back from the
+    checkpoint): the geometry figure says it used the campaign stored with the package, not
+    CF's producer ('Stickslip 0.1.0', which a fresh clone's report printed)."""
+    from stickslip.cli import run
+
+    for _ in range(2):  # computed, then from the report's checkpoint
+        assert run(["reproduce", "--out", str(tmp_path), "--only", "brake-fem-geometry"]) in (0, 1)
+        text = (tmp_path / "report.md").read_text()
+        assert "**Data used.** The campaign stored with the package (144 runs, computed 2026-11-26" in text
+        assert "data: the campaign stored with the package" in text

@@ -40,7 +40,7 @@ def compute(quick: bool = False, cache: Path | None = None, data_dir: Path | Non
                           budget={"max_transits": 150.0 if quick else 250.0})
         source = f"the small version (xi 1.5, 2.5; beta2 0.6, 0.9; 2 runs each; 128 nodes around): {source}"
     ds = ds.drop_vars("done", errors="ignore")
-    ds.attrs.update({"source": source, "small": int(small)})
+    ds.attrs.update({"data_source": source, "small": int(small)})
     return ds
 
 
@@ -82,7 +82,8 @@ def check(ds: xr.Dataset) -> list[Check]:
     return [
         Check("every run ended in a classified window", bool(np.all(ds["regime"].values >= 0)
                                                              and np.all(np.isfinite(ds["n_zones"].values))),
-              f"{int(ds['regime'].size)} runs", "regime and mode number for every run", f"data: {ds.attrs['source']}"),
+              f"{int(ds['regime'].size)} runs", "regime and mode number for every run",
+              f"data: {ds.attrs.get('data_source', 'not recorded')}"),
         Check("some ring thickness xi and damping beta2 give the paper's three regimes and mode numbers at once "
               "(most frequent outcome of the unseeded runs)", bool(hit.any()),
               ", ".join(where) if where else "none", "at least one (xi, beta2)",
@@ -113,7 +114,7 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
         fig.colorbar(im, ax=ax, label="most frequent mode number [1]")
     fig.suptitle(plotting.wrap("Cells: most frequent number of stick zones and regime (SS stick-slip, SSS "
                                "stick-slip-separation, SSep stick-separation), % = share of the runs; "
-                               f"data: {ds.attrs['source'][:80]}", 130), fontsize=9)
+                               f"data: {ds.attrs.get('data_source', 'not recorded')[:80]}", 130), fontsize=9)
     return fig
 
 

@@ -44,7 +44,7 @@ def compute(quick: bool = False, cache: Path | None = None, data_dir: Path | Non
                             budgets=({"max_transits": 300.0},))
         source = f"the small version ({_SMALL[bool(quick)]} runs per case on 256 x 16 only): {source}"
     ds = ds.drop_vars("done", errors="ignore")
-    ds.attrs.update({"source": source, "small": int(small), "threshold": THRESHOLD})
+    ds.attrs.update({"data_source": source, "small": int(small), "threshold": THRESHOLD})
     return ds
 
 
@@ -94,7 +94,7 @@ def check(ds: xr.Dataset) -> list[Check]:
                       and np.all(np.abs(ds[["stick", "slip", "reverse_slip", "separation"]].to_array().sum("variable")
                                         - 1.0) < 1e-9)),
                  f"{int(ds['regime'].size)} runs", "regime, mode number and fractions summing to 1 for every run",
-                 f"data: {ds.attrs['source']}")]
+                 f"data: {ds.attrs.get('data_source', 'not recorded')}")]
     for case, (regime, modes) in enumerate(PAPER_REGIMES):
         fractions = [_paper_fraction(ds, case, m) for m in range(len(meshes))]
         stationary = [float(ds["stationary"].isel(case=case, mesh=m).mean()) for m in range(len(meshes))]
@@ -168,7 +168,7 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
     handles.append(Patch(facecolor="0.75", hatch="//", edgecolor="w", label="not stationary (pale, hatched)"))
     plotting.legend_beside(axes[0], handles=handles, title="mesh", title_fontsize=8)
     fig.suptitle(plotting.wrap(f"Limit regimes from unseeded starts ({ds.sizes['seed']} runs per case and mesh); "
-                               f"data: {ds.attrs['source'][:90]}", 110), fontsize=9)
+                               f"data: {ds.attrs.get('data_source', 'not recorded')[:90]}", 110), fontsize=9)
     return fig
 
 
