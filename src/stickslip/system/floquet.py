@@ -46,15 +46,9 @@ def monodromy(system: System, run: SystemRun | tuple) -> np.ndarray:
         raise ParameterError("run", "a run without segments", "a run of simulate(..., segments=True)")
     n = system.dofs
     flows: dict = {}
-
-    def flow_of(states):
-        if states not in flows:
-            flows[states] = Flow(system, states)
-        return flows[states]
-
     out = np.eye(2 * n)
     for seg in segments:
-        flow = flow_of(seg.states)
+        flow = Flow.cached(system, seg.states, flows)
         step = expm(seg.duration * flow.A)
         out = step[:2 * n, :2 * n] @ out
         if not seg.rows:
@@ -62,7 +56,7 @@ def monodromy(system: System, run: SystemRun | tuple) -> np.ndarray:
         z = step @ seg.z
         normal = flow.rows[seg.rows[0]][:2 * n]
         f_minus = (flow.A @ z)[:2 * n]
-        f_plus = (flow_of(seg.after).A @ z)[:2 * n]
+        f_plus = (Flow.cached(system, seg.after, flows).A @ z)[:2 * n]
         out = saltation(f_minus, f_plus, normal) @ out
     return out
 

@@ -104,6 +104,14 @@ class Flow:
         self.h = STEPS_PER_SCALE ** -1 / rho if rho > 0 else math.inf
         self._step = None
 
+    @classmethod
+    def cached(cls, system: System, states: tuple, cache: dict) -> "Flow":
+        """The flow of ``states``, built once per ``cache`` (a run or a monodromy revisits few states)."""
+        flow = cache.get(states)
+        if flow is None:
+            flow = cache[states] = cls(system, states)
+        return flow
+
     def propagate(self, z: np.ndarray, t: float) -> np.ndarray:
         """``expm(t A) z``."""
         return expm(t * self.A) @ z

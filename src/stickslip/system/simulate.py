@@ -116,7 +116,7 @@ def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, relea
     for i in zero:
         st[i] = released.get(i, 0)
     for _ in range(len(zero) + 1):
-        flow = _flow(system, tuple(st), flows)
+        flow = Flow.cached(system, tuple(st), flows)
         forces = flow.force_rows @ z
         worst, over = None, 0.0
         for i in zero:
@@ -130,7 +130,7 @@ def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, relea
         if worst is None:
             break
         st[worst] = 1 if forces[worst] > 0 else -1
-    flow = _flow(system, tuple(st), flows)
+    flow = Flow.cached(system, tuple(st), flows)
     a = flow.acceleration(z)
     for i in zero:
         if st[i] == 0:
@@ -172,14 +172,7 @@ def _given_states(states, vr, speed) -> tuple:
     return given
 
 
-def _flow(system, states, flows) -> Flow:
-    flow = flows.get(states)
-    if flow is None:
-        flow = flows[states] = Flow(system, states)
-    return flow
-
-
-def _check(system, x0, v0, t_end, samples, max_events):
+def _check(system, x0, v0, t_end, samples, max_events, flows):
     if not isinstance(system, System):
         raise ParameterError("system", system, "a stickslip.system.System")
     for i, c in enumerate(system.contacts):
@@ -198,7 +191,7 @@ def _check(system, x0, v0, t_end, samples, max_events):
         raise ParameterError("samples", samples, f"<= {MAX_NUMBERS // (2 * n + 2 * k)} for {n} degrees of freedom and "
                              f"{k} contacts (the samples hold at most {MAX_NUMBERS:.3g} numbers, 1 GB)",
                              also=("mass", "contacts"))
-    free = Flow(system, tuple(1 for _ in range(k)))  # every contact slipping: the fastest time scale
+    free = Flow.cached(system, tuple(1 for _ in range(k)), flows)  # every contact slipping: the fastest time scale
     if np.isfinite(free.h) and t_end / free.h > MAX_STEPS:
         raise ParameterError("t_end", t_end, f"<= {MAX_STEPS * free.h:.6g} s ({MAX_STEPS:.0e} steps of the event "
                              f"search, {free.h:.3g} s each, set by the fastest time scale of the system)",
@@ -213,11 +206,11 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
     With ``segments`` the run keeps its pieces of flow (`Segment`: for `monodromy`). The
     contact ``states`` to start in (1 slip, 0 stick, -1 reverse slip; default: chosen from the
     start, as at an event) are for a start on a switching line, such as just after an event."""
-    x0, v0, t_end, samples, max_events = _check(system, x0, v0, t_end, samples, max_events)
+    flows: dict = {}
+    x0, v0, t_end, samples, max_events = _check(system, x0, v0, t_end, samples, max_events, flows)
     if not isinstance(segments, (bool, np.bool_)):
         raise ParameterError("segments", segments, "True or False")
     n, k = system.dofs, len(system.contacts)
-    flows: dict = {}
     z = np.concatenate([x0, v0, [1.0]])
     vr = [c.slip_velocity(v0) for c in system.contacts]
     speed = max(1.0, *(abs(c.surface_speed) for c in system.contacts))
@@ -236,7 +229,7 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
     ev_t, ev_c, ev_s, pieces = [], [], [], []
     t, j, instant = 0.0, 0, 0
     while True:
-        flow = _flow(system, states, flows)
+        flow = Flow.cached(system, states, flows)
         t_next, z_next, hit = flow.first_event(z, t_end - t)
         t_next = t + t_next if t_next < t_end - t else t_end
         if segments:
