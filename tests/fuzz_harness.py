@@ -34,6 +34,8 @@ import typing
 import numpy as np
 
 OSC = ["--mass", "1", "--stiffness", "1", "--normal-force", "1", "--belt-speed", "0.2", "--fs", "0.6", "--fd", "0.4"]
+#: The example system of two blocks on two belts (`stickslip system ...`).
+SYSTEM_FILE = str(pathlib.Path(__file__).resolve().parents[1] / "examples" / "two_blocks" / "two_blocks.toml")
 BRAKE = ["--omega", "50", "--mismatch", "1e-4", "--friction", "0.7"]
 #: A valid, fast invocation of every command ({tmp} is a fresh folder).
 BASE = {
@@ -64,6 +66,9 @@ BASE = {
     "fem cea": ["{config}"],
     "fem steady": ["{config}"],
     "sweep": ["{sweep}", "--out", "{tmp}/s.zarr", "--workers", "1"],
+    "system simulate": [SYSTEM_FILE, "--t-end", "5", "--out", "{tmp}/y.nc"],
+    "system cycle": [SYSTEM_FILE, "--transient", "30", "--out", "{tmp}/yc.nc"],
+    "system stability": [SYSTEM_FILE, "--out", "{tmp}/ys.nc"],
 }
 _CONFIG: list[str] = []
 

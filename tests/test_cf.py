@@ -19,7 +19,7 @@ from stickslip.oscillator import Oscillator, continue_cycle, limit_cycle, simula
 from stickslip.sweep import run_sweep
 
 from .cf_rules import compliance_errors, file_problems, problems
-from .fuzz_harness import example_config
+from .fuzz_harness import SYSTEM_FILE, example_config
 
 CASE = BrakeParams.from_physical(50.0, 1e-4, 0.7)
 
@@ -102,6 +102,9 @@ def _results():
     from stickslip.system import limit_cycle as system_cycle
 
     yield "system cycle", system_cycle(system, transient=40.0).to_xarray()
+    from stickslip.system import steady_sliding
+
+    yield "system steady sliding", steady_sliding(system).to_xarray()
 
 
 def test_every_result_dataset_follows_the_rules():
@@ -145,6 +148,9 @@ WRITERS = [
     (["fem", "steady", "{config}", "--out", "{tmp}/fs.nc"], ["fs.nc"]),
     (["fem", "cea", "{config}", "--out", "{tmp}/fc.nc"], ["fc.nc"]),
     (["fem", "run", "{config}", "--transits", "2", "--out", "{tmp}/fr.nc"], ["fr.nc"]),
+    (["system", "simulate", SYSTEM_FILE, "--t-end", "5", "--out", "{tmp}/ys.nc"], ["ys.nc"]),
+    (["system", "cycle", SYSTEM_FILE, "--transient", "30", "--out", "{tmp}/yc.nc"], ["yc.nc"]),
+    (["system", "stability", SYSTEM_FILE, "--out", "{tmp}/yt.nc"], ["yt.nc"]),
 ]
 
 

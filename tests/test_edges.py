@@ -13,7 +13,7 @@ import pytest
 from stickslip.cli import run
 from stickslip.files import exclusive
 
-from .fuzz_harness import example_config
+from .fuzz_harness import SYSTEM_FILE, example_config
 
 OSC = ["--mass", "1", "--stiffness", "1", "--normal-force", "1", "--belt-speed", "0.2", "--fs", "0.6", "--fd", "0.4"]
 MAP = ["oscillator", "map", "--mass", "1", "--stiffness", "1", "--normal-force", "1", "--fs", "0.6", "--fd", "0.4",
@@ -40,6 +40,7 @@ WRITERS = [
      ".nc"),
     (["fem", "steady", "{config}"], "--out", ".nc"),
     (["fem", "cea", "{config}"], "--xdmf", ".xdmf"),
+    (["system", "stability", SYSTEM_FILE], "--out", ".nc"),
 ]
 
 

@@ -15,7 +15,7 @@ import warnings
 import typer
 
 from ..errors import NoSolutionError, ParameterError
-from . import brake, fem, halfspace, oscillator, reproduce, study
+from . import brake, fem, halfspace, oscillator, reproduce, study, system
 
 # typer vendors its own copy of click (older releases re-export click's classes):
 # its usage errors are the parent class of typer.BadParameter in both cases
@@ -41,6 +41,7 @@ app.add_typer(oscillator.app, name="oscillator")
 app.add_typer(brake.app, name="brake")
 app.add_typer(halfspace.app, name="halfspace")
 app.add_typer(fem.app, name="fem")
+app.add_typer(system.app, name="system")
 app.command("reproduce")(reproduce.reproduce)
 
 

@@ -47,6 +47,17 @@ SYSTEM = Domain("system", units="SI (or any consistent units)", quantities=[
     Q("event_state", "1", "its state after the event (1 slip, 0 stick, -1 reverse slip)"),
     Q("period", "s", "period of the limit cycle"),
     Q("multipliers_abs", "1", "moduli of the Floquet multipliers of the cycle"),
-    Q("stable", "1", "1 if the cycle is stable: every multiplier but the flow's own inside the unit circle"),
+    Q("stable", "1", "1 if stable: a cycle's multipliers but the flow's own inside the unit circle, steady "
+      "sliding's eigenvalues in the left half-plane"),
     Q("events", "1", "contact events (of a run, or of one period of a cycle)"),
+    Q("x_end", "m", "displacement at the end of the run"),
+    Q("v_end", "m/s", "velocity at the end of the run"),
+    Q("states_end", "1", "contact states at the end of the run (1 slip, 0 stick, -1 reverse slip)"),
+    Q("mode", "1", "number of an eigenvalue of the linearised flow"),
+    Q("eigenvalue_real", "1/s", "real part of an eigenvalue of the flow linearised about steady sliding"),
+    Q("eigenvalue_imag", "rad/s", "imaginary part of an eigenvalue of the flow linearised about steady sliding"),
+    Q("growth_rate", "1/s", "largest real part of the eigenvalues about steady sliding (> 0: unstable)"),
+    Q("multiplier", "1", "number of a Floquet multiplier, by decreasing modulus"),
+    Q("multiplier_real", "1", "real part of a Floquet multiplier of the cycle"),
+    Q("multiplier_imag", "1", "imaginary part of a Floquet multiplier of the cycle"),
 ])

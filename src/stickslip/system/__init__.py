@@ -3,7 +3,8 @@
 `System` (``M x'' + C x' + K x = f + sum_i w_i F_i``) with its `Contact` s; `simulate` advances it
 through closed-form flows between contact events (`Flow`); `monodromy` differentiates a run
 (saltation matrices at its events) and `limit_cycle` finds the periodic orbit a motion settles
-on, with its Floquet multipliers; `load_system` reads a system from a TOML file. One contact on one degree of
+on, with its Floquet multipliers; `steady_sliding` the resting state under sliding contacts and its
+linear stability; `load_system` reads a system from a TOML file. One contact on one degree of
 freedom is the oscillator of `stickslip.oscillator`.
 """
 
@@ -12,6 +13,8 @@ from .floquet import SystemCycle, limit_cycle, monodromy, saltation
 from .flow import Flow
 from .model import Contact, System
 from .simulate import Segment, SystemRun, choose_states, simulate
+from .steady import SteadySliding, steady_sliding
 
 __all__ = ["Contact", "System", "Flow", "SystemRun", "Segment", "simulate", "choose_states", "monodromy",
-           "saltation", "SystemCycle", "limit_cycle", "load_system", "system_from_dict"]
+           "saltation", "SystemCycle", "limit_cycle", "load_system", "system_from_dict",
+           "SteadySliding", "steady_sliding"]

@@ -17,8 +17,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import xarray as xr
 from scipy.linalg import expm
 
+from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import SYSTEM as Q
 from ..results import Result
@@ -66,7 +68,7 @@ class SystemCycle(Result):
     """A periodic orbit: its ``period``, the state ``x0``, ``v0`` just after the event that starts
     it (contact ``contact`` entering state ``state``; every contact's state then in ``states``,
     to start a `simulate` there), its ``multipliers`` (by decreasing size), and the events
-    within one period."""
+    of one period (the last is the section's own, at ``period``)."""
 
     period: float
     x0: np.ndarray
@@ -89,6 +91,26 @@ class SystemCycle(Result):
     def to_dict(self) -> dict:
         return {"period": self.period, "stable": self.stable, "multipliers_abs": np.abs(self.multipliers).tolist(),
                 "events": int(self.event_time.size), "x0": self.x0.tolist(), "v0": self.v0.tolist()}
+
+    def to_xarray(self) -> xr.Dataset:
+        def var(dims, values, name):
+            return dims, values, {"units": Q[name].units, "long_name": Q[name].meaning}
+
+        m, n = self.multipliers, self.x0.size
+        ds = xr.Dataset(
+            {"multiplier_real": var(("multiplier",), m.real, "multiplier_real"),
+             "multiplier_imag": var(("multiplier",), m.imag, "multiplier_imag"),
+             "x0": var(("dof",), self.x0, "x0"), "v0": var(("dof",), self.v0, "v0"),
+             "event_time": var(("event",), self.event_time, "event_time"),
+             "event_contact": var(("event",), self.event_contact, "event_contact"),
+             "event_state": var(("event",), self.event_state.astype(np.int8), "event_state")},
+            coords={"dof": var(("dof",), np.arange(n), "dof"),
+                    "event": var(("event",), np.arange(self.event_time.size), "event")},
+            attrs={"period": self.period, "stable": int(self.stable), "section_contact": self.contact,
+                   "section_state": self.state})
+        ds["event_state"].attrs.update(flag_values=np.array([-1, 0, 1], dtype=np.int8),
+                                       flag_meanings="reverse_slip stick slip")
+        return finish(ds, "system with frictional contacts: limit cycle and its Floquet multipliers", "system")
 
 
 def _after(run: SystemRun, signature) -> list[tuple]:
@@ -139,6 +161,6 @@ def limit_cycle(system: System, x0=None, v0=None, *, transient: float = 100.0, t
     start = one.segments[0].states
     mult = np.linalg.eigvals(monodromy(system, one.segments[:last + 1]))
     mult = mult[np.argsort(-np.abs(mult))]
-    inside = one.event_time < period * (1 - 1e-12)
+    inside = one.event_time <= period * (1 + 1e-12)  # the events of one period, the section's own last
     return SystemCycle(period, z[:n], z[n:2 * n], signature[0], signature[1], start, mult, one.event_time[inside],
                        one.event_contact[inside], one.event_state[inside])

@@ -123,6 +123,11 @@ class System:
         return self.mass.shape[0]
 
     @property
+    def cholesky(self) -> np.ndarray:
+        """The lower Cholesky factor ``L`` of the mass matrix (``M = L L^T``)."""
+        return self._chol
+
+    @property
     def directions(self) -> np.ndarray:
         """``W``: one column per contact."""
         return np.stack([c.direction for c in self.contacts], axis=1)

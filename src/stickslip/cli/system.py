@@ -1,0 +1,102 @@
+"""`stickslip system ...`: linear structures with several frictional contacts, from a TOML file."""
+
+from __future__ import annotations
+
+import functools
+from pathlib import Path
+from typing import Annotated, Optional
+
+import typer
+
+from ..errors import ParameterError
+from ..quantities import COMMON, SYSTEM as Q
+from .common import Replace, declared, emit, output_path, overwrite_needs, write_netcdf
+
+_emit = functools.partial(emit, model="system")
+
+app = typer.Typer(no_args_is_help=True, rich_markup_mode=None,
+                  help="Structures M x'' + C x' + K x = f + sum of contact forces, with several frictional contacts "
+                       "(a TOML file: docs/systems.md).")
+
+File = Annotated[Path, typer.Argument(help="The system: a TOML file of mass, stiffness, [damping, force] and one "
+                                           "[[contact]] table per contact (docs/systems.md).", show_default=False)]
+Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
+Out = Annotated[Optional[Path], typer.Option("--out", help="Write the data to this netCDF file (.nc).")]
+X0 = Annotated[Optional[str], typer.Option("--x0", help=f"Initial displacement: one number per degree of freedom, "
+                                                        f"separated by commas ({Q['x0'].units}). Default: zeros.")]
+V0 = Annotated[Optional[str], typer.Option("--v0", help=f"Initial velocity: one number per degree of freedom, "
+                                                        f"separated by commas ({Q['v0'].units}). Default: zeros.")]
+
+
+def _load(path: Path):
+    from ..system import load_system
+
+    return load_system(path)
+
+
+def _numbers(option: str, text: str | None, n: int):
+    """``--x0 "0.1, 0.2"``: ``n`` numbers (None if not given); each is checked by the library."""
+    if text is None:
+        return None
+    try:
+        values = [float(part) for part in text.split(",")]
+    except ValueError:
+        values = None
+    if values is None or len(values) != n:
+        raise ParameterError(option, text, f"{n} numbers separated by commas (one per degree of freedom)")
+    return values
+
+
+def _out(out: Path | None, overwrite: bool) -> Path | None:
+    overwrite_needs(overwrite, "--out", out)
+    return output_path("--out", out, ".nc", overwrite)
+
+
+@app.command("simulate")
+def simulate_cmd(file: File, t_end: Annotated[float, declared(Q["t_end"], "--t-end")],
+                 x0: X0 = None, v0: V0 = None,
+                 samples: Annotated[int, declared(Q["samples"], "--samples")] = 1001,
+                 max_events: Annotated[int, declared(Q["max_events"], "--max-events")] = 1_000_000,
+                 json: Json = False, out: Out = None, overwrite: Replace = False):
+    """Event-driven simulation with exact stick/slip switching at every contact."""
+    out = _out(out, overwrite)
+    from ..system import simulate
+
+    system = _load(file)
+    n = system.dofs
+    run = simulate(system, _numbers("--x0", x0, n), _numbers("--v0", v0, n), t_end, samples=samples,
+                   max_events=max_events)
+    _emit(run.to_dict(), json, "simulation")
+    if out is not None:
+        write_netcdf(run.to_xarray(), out)
+
+
+@app.command()
+def cycle(file: File, x0: X0 = None, v0: V0 = None,
+          transient: Annotated[float, declared(Q["transient"], "--transient")] = 100.0,
+          tol: Annotated[float, declared(COMMON["tol"], "--tol")] = 1e-10,
+          max_iter: Annotated[int, declared(Q["max_iter"], "--max-iter")] = 200,
+          json: Json = False, out: Out = None, overwrite: Replace = False):
+    """Limit cycle the motion settles on: period, events, Floquet multipliers (with saltation matrices)."""
+    out = _out(out, overwrite)
+    from ..system import limit_cycle
+
+    system = _load(file)
+    n = system.dofs
+    result = limit_cycle(system, _numbers("--x0", x0, n), _numbers("--v0", v0, n), transient=transient, tol=tol,
+                         max_iter=max_iter)
+    _emit(result.to_dict(), json, "limit cycle")
+    if out is not None:
+        write_netcdf(result.to_xarray(), out)
+
+
+@app.command()
+def stability(file: File, json: Json = False, out: Out = None, overwrite: Replace = False):
+    """Steady sliding (every contact slipping, the structure at rest) and its linear stability."""
+    out = _out(out, overwrite)
+    from ..system import steady_sliding
+
+    result = steady_sliding(_load(file))
+    _emit(result.to_dict(), json, "steady sliding")
+    if out is not None:
+        write_netcdf(result.to_xarray(), out)

@@ -1,0 +1,102 @@
+"""Steady sliding of a system and its linear stability.
+
+With every surface moving (``V_i != 0``) the structure can rest while each contact slips at
+``v_r = V_i``: the position solves ``K x = f + sum_i w_i N_i sign(V_i) mu_i(|V_i|)``. Small
+motions about it obey ``M y'' + C_eff y' + K y = 0`` with
+
+    C_eff = C + sum_i N_i mu_i'(|V_i|) w_i w_i^T
+
+(a friction law falling with slip speed, ``mu' < 0``, feeds energy in: negative damping), and
+steady sliding is stable when every eigenvalue of that linear flow has a negative real part.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg
+import xarray as xr
+
+from ..cf import finish
+from ..errors import NoSolutionError, ParameterError
+from ..quantities import SYSTEM as Q
+from ..results import Result
+from .model import System
+
+__all__ = ["SteadySliding", "steady_sliding"]
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class SteadySliding(Result):
+    """The resting position ``x`` under sliding contacts, each contact's ``friction_force``,
+    the effective damping matrix and the ``eigenvalues`` of the linearised flow (by decreasing
+    real part)."""
+
+    x: np.ndarray
+    friction_force: np.ndarray
+    effective_damping: np.ndarray
+    eigenvalues: np.ndarray
+    MODEL = "system"
+
+    @property
+    def stable(self) -> bool:
+        """Every eigenvalue with a negative real part."""
+        return bool(np.all(self.eigenvalues.real < 0))
+
+    @property
+    def growth_rate(self) -> float:
+        """The largest real part of the eigenvalues (1/s): positive when steady sliding is unstable."""
+        return float(self.eigenvalues.real.max())
+
+    def to_dict(self) -> dict:
+        return {"stable": self.stable, "growth_rate": self.growth_rate, "x": self.x.tolist(),
+                "friction_force": self.friction_force.tolist(),
+                "eigenvalue_real": self.eigenvalues.real.tolist(), "eigenvalue_imag": self.eigenvalues.imag.tolist()}
+
+    def to_xarray(self) -> xr.Dataset:
+        def var(dims, values, name):
+            return dims, values, {"units": Q[name].units, "long_name": Q[name].meaning}
+
+        n, k = self.x.size, self.friction_force.size
+        ds = xr.Dataset(
+            {"x": var(("dof",), self.x, "x"), "friction_force": var(("contact",), self.friction_force, "friction_force"),
+             "eigenvalue_real": var(("mode",), self.eigenvalues.real, "eigenvalue_real"),
+             "eigenvalue_imag": var(("mode",), self.eigenvalues.imag, "eigenvalue_imag")},
+            coords={"dof": var(("dof",), np.arange(n), "dof"), "contact": var(("contact",), np.arange(k), "contact"),
+                    "mode": var(("mode",), np.arange(self.eigenvalues.size), "mode")},
+            attrs={"stable": int(self.stable), "growth_rate": self.growth_rate})
+        return finish(ds, "system with frictional contacts: steady sliding and its linear stability", "system")
+
+
+def steady_sliding(system: System) -> SteadySliding:
+    """Steady sliding of ``system`` (every contact's surface moving) and its linear stability."""
+    if not isinstance(system, System):
+        raise ParameterError("system", system, "a stickslip.system.System")
+    n = system.dofs
+    forces = np.empty(len(system.contacts))
+    c_eff = system.damping.copy()
+    for i, c in enumerate(system.contacts):
+        speed = abs(c.surface_speed)
+        if speed == 0.0:
+            raise ParameterError(f"contacts[{i}].surface_speed", c.surface_speed,
+                                 "nonzero for steady sliding (a contact on a surface at rest sticks)")
+        if speed >= c.friction.max_speed:
+            raise ParameterError(f"contacts[{i}].surface_speed", c.surface_speed,
+                                 f"below the speed {c.friction.max_speed:g} where its friction law ends")
+        forces[i] = c.normal_force * np.sign(c.surface_speed) * float(c.friction.kinetic(speed))
+        slope = float(c.friction.slope(speed))  # d mu / d v_r at v_r = |V|; mu is even in v_r
+        c_eff += c.normal_force * slope * np.outer(c.direction, c.direction)
+    load = system.force + system.directions @ forces
+    sv = np.linalg.svd(system.stiffness, compute_uv=False)
+    if sv[-1] <= 1e-13 * sv[0]:
+        raise NoSolutionError("the stiffness matrix is singular: the structure has no unique resting position "
+                              "under sliding contacts (a free body, or a mechanism)")
+    x = np.linalg.solve(system.stiffness, load)
+    Minv = scipy.linalg.cho_solve((system.cholesky, True), np.eye(n))
+    A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ system.stiffness, -Minv @ c_eff]])
+    eig = np.linalg.eigvals(A)
+    eig = eig[np.lexsort((-eig.imag, -eig.real))]
+    if not (np.all(np.isfinite(x)) and np.all(np.isfinite(eig))):
+        raise NoSolutionError("steady sliding overflows: the loads or the stiffness are out of scale")
+    return SteadySliding(x, forces, c_eff, eig)
