@@ -36,6 +36,7 @@ import numpy as np
 OSC = ["--mass", "1", "--stiffness", "1", "--normal-force", "1", "--belt-speed", "0.2", "--fs", "0.6", "--fd", "0.4"]
 #: The example system of two blocks on two belts (`stickslip system ...`).
 SYSTEM_FILE = str(pathlib.Path(__file__).resolve().parents[1] / "examples" / "two_blocks" / "two_blocks.toml")
+RSF = ["--a", "0.01", "--b", "0.015", "--dc", "1e-5", "--normal-stress", "1e7"]
 BRAKE = ["--omega", "50", "--mismatch", "1e-4", "--friction", "0.7"]
 #: A valid, fast invocation of every command ({tmp} is a fresh folder).
 BASE = {
@@ -69,6 +70,10 @@ BASE = {
     "system simulate": [SYSTEM_FILE, "--t-end", "5", "--out", "{tmp}/y.nc"],
     "system cycle": [SYSTEM_FILE, "--transient", "30", "--out", "{tmp}/yc.nc"],
     "system stability": [SYSTEM_FILE, "--out", "{tmp}/ys.nc"],
+    "rsf slide": RSF + ["--stiffness", "1e10", "--t-end", "30", "--history", "0:1e-6,10:1e-5", "--out", "{tmp}/r.nc"],
+    "rsf stability": RSF + ["--stiffness", "1e10", "--load-velocity", "1e-6"],
+    "rsf cycle": RSF + ["--stiffness", "3e9", "--mass", "1e9", "--load-velocity", "1e-6", "--tol", "1e-3",
+                        "--cycles", "2"],
 }
 _CONFIG: list[str] = []
 

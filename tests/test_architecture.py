@@ -16,7 +16,7 @@ PACKAGE = SRC / "stickslip"
 
 #: Top-level parts of the package and what each may import (besides itself).
 BASE = {"errors", "validation", "quantities", "cf", "results"}
-MODELS = {"oscillator", "brake", "halfspace", "fem", "system"}
+MODELS = {"oscillator", "brake", "halfspace", "fem", "system", "rsf"}
 ALLOWED = {
     "errors": set(),
     "validation": {"errors"},
@@ -34,6 +34,7 @@ ALLOWED = {
     "halfspace": BASE,
     "fem": BASE | {"contact", "friction", "sweep", "files"},
     "system": BASE | {"friction"},
+    "rsf": BASE,
     "plotting": set(),
     "errata": set(),
     "figures": BASE | MODELS | {"contact", "friction", "sweep", "files", "plotting"},

@@ -21,6 +21,8 @@ from stickslip.system import Contact, System
 from stickslip.system import limit_cycle as system_cycle
 from stickslip.system import load_system
 from stickslip.system import simulate as system_simulate
+from stickslip.system import steady_sliding as system_steady
+from stickslip.rsf import RateState, SpringSlider, linear_stability, slide, slider_cycle
 
 def _one(x):
     return {"y": x}
@@ -40,7 +42,19 @@ P = BrakeParams(**BRAKE)
 ORTHO = dict(e1=2e10, e2=5e9, nu12=0.3, g12=3e9, density=1500.0, e3=8e9, nu13=0.2, nu23=0.35)
 CONTACT = dict(direction=[1.0, 0.0], normal_force=1.0, friction=Coulomb(0.6, 0.4), surface_speed=0.2)
 SYSTEM = dict(mass=[[1.0, 0.0], [0.0, 2.0]], stiffness=[[2.0, -1.0], [-1.0, 1.0]], contacts=[Contact(**CONTACT)])
+RSF_LAW = dict(a=0.01, b=0.015, dc=1e-5)
+SLIDER = dict(law=RateState(**RSF_LAW), normal_stress=1e7, stiffness=1e10)
 CALLS = {
+    "system steady_sliding": (lambda **k: system_steady(**{"system": System(**SYSTEM), **k}), ["system"]),
+    "RateState": (lambda **k: RateState(**{**RSF_LAW, **k}),
+                  [*RSF_LAW, "f0", "v_ref", "evolution", "b2", "dc2", "regularized"]),
+    "SpringSlider": (lambda **k: SpringSlider(**{**SLIDER, **k}), [*SLIDER, "mass"]),
+    "slide": (lambda **k: slide(**{"slider": SpringSlider(**SLIDER), "load_velocity": 1e-6, "t_end": 10.0, **k}),
+              ["slider", "load_velocity", "t_end", "times", "v_init", "samples", "rtol", "start"]),
+    "linear_stability": (lambda **k: linear_stability(**{"slider": SpringSlider(**SLIDER), "load_velocity": 1e-6, **k}),
+                         ["slider", "load_velocity"]),
+    "slider_cycle": (lambda **k: slider_cycle(**{"slider": SpringSlider(**SLIDER), "load_velocity": 1e-6, **k}),
+                     ["slider", "load_velocity", "transient", "cycles", "rtol", "tol"]),
     "System": (lambda **k: System(**{**SYSTEM, **k}), [*SYSTEM, "damping", "force"]),
     "Contact": (lambda **k: Contact(**{**CONTACT, **k}), [*CONTACT, "name"]),
     "system simulate": (lambda **k: system_simulate(**{"system": System(**SYSTEM), "t_end": 5.0, **k}),
@@ -175,7 +189,9 @@ DOMAIN = {**{n: "oscillator" for n in ("Oscillator", "Coulomb", "Stribeck", "sim
           **{n: "halfspace" for n in ("inverse_problem", "direct_problem", "StickSlipWave", "inverse_map",
                                       "direct_map", "fields")},
           **{n: "fem" for n in ("contact_frames", "ContactProblem")},
-          **{n: "system" for n in ("System", "Contact", "system simulate", "system limit_cycle", "load_system")}}
+          **{n: "system" for n in ("System", "Contact", "system simulate", "system limit_cycle", "load_system",
+                                   "system steady_sliding")},
+          **{n: "rsf" for n in ("RateState", "SpringSlider", "slide", "linear_stability", "slider_cycle")}}
 
 
 @pytest.mark.parametrize("name, param", CASES, ids=[f"{n} {p}" for n, p in CASES])

@@ -15,7 +15,7 @@ import warnings
 import typer
 
 from ..errors import NoSolutionError, ParameterError
-from . import brake, fem, halfspace, oscillator, reproduce, study, system
+from . import brake, fem, halfspace, oscillator, reproduce, rsf, study, system
 
 # typer vendors its own copy of click (older releases re-export click's classes):
 # its usage errors are the parent class of typer.BadParameter in both cases
@@ -42,6 +42,7 @@ app.add_typer(brake.app, name="brake")
 app.add_typer(halfspace.app, name="halfspace")
 app.add_typer(fem.app, name="fem")
 app.add_typer(system.app, name="system")
+app.add_typer(rsf.app, name="rsf")
 app.command("reproduce")(reproduce.reproduce)
 
 

@@ -31,17 +31,18 @@ from .core import Domain, Quantity, Range, number
 from .fem import FEM
 from .halfspace import HALFSPACE
 from .oscillator import OSCILLATOR
+from .rsf import RSF
 from .system import MAX_CONTACTS, MAX_SYSTEM_DOFS, SYSTEM
 
 __all__ = ["Quantity", "Range", "Domain", "DOMAINS", "COMMON", "OSCILLATOR", "BRAKE", "HALFSPACE", "FEM",
-           "SYSTEM",
+           "SYSTEM", "RSF",
            "declared", "lookup", "number", "MAX_MESH_NODES", "MAX_POINTS", "MAX_WORKERS", "MAX_SYSTEM_DOFS",
            "MAX_CONTACTS"]
 
 #: Model -> its declarations; ``common`` serves every model.
 DOMAINS = {"common": COMMON, "oscillator": OSCILLATOR, "brake": BRAKE, "halfspace": HALFSPACE, "fem": FEM,
-           "system": SYSTEM}
-for _domain in (OSCILLATOR, BRAKE, HALFSPACE, FEM, SYSTEM):
+           "system": SYSTEM, "rsf": RSF}
+for _domain in (OSCILLATOR, BRAKE, HALFSPACE, FEM, SYSTEM, RSF):
     _domain.fallback = COMMON
 
 # derived names: a branch's or a run's copy of a quantity, its real or imaginary part
