@@ -111,3 +111,12 @@ def test_readme_command_lines_use_only_options_their_commands_have():
         known = {opt for p in command.params for opt in p.opts}
         unknown = [t for t in tokens if t.startswith("--") and t not in known]
         assert not unknown, (line, unknown)
+
+
+def test_rsf_page_runs():
+    namespace = {}
+    for block in _blocks("docs/rsf.md"):
+        exec(block, namespace)
+    assert round(namespace["stability"].critical_stiffness / 5e9, 9) == 1.0 and namespace["stability"].stable
+    assert round(namespace["cycle"].period) == 181
+    assert set(namespace["ds"].data_vars) >= {"slip_rate", "theta", "friction", "shear_stress", "slip", "load_point"}
