@@ -3,6 +3,8 @@ when the data say so and fails on data that contradict it), their plots, and whe
 data come from (a finished campaign, the stored result if the FE code is unchanged, or the
 small version)."""
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 import xarray as xr
@@ -174,7 +176,7 @@ def test_geometry_text_follows_its_grid_and_budget():
 def test_the_stored_campaign_was_computed_by_the_present_code(path):
     """Issue 25: a change of the FE code's numbers cannot land while a campaign result stored
     with the package was computed by other code (the report would fall back to the small
-    version). The fingerprint hashes the bits of short runs of the three cases
+    version). The fingerprint hashes the syntax of the code the numbers come from
     (`model_fingerprint`). Planted: the stale statistics of 2026-11-23 fail it."""
     ds = xr.load_dataset(path)
     assert ds.attrs["model_fingerprint"] == campaign_data.model_fingerprint(), (
@@ -197,3 +199,33 @@ def test_the_report_says_a_campaign_figure_used_the_stored_campaign(tmp_path):
         text = (tmp_path / "report.md").read_text()
         assert "**Data used.** The campaign stored with the package (144 runs, computed 2026-11-26" in text
         assert "data: the campaign stored with the package" in text
+
+
+def test_the_fingerprint_follows_the_code_not_its_comments_or_the_libraries(tmp_path, monkeypatch):
+    """A copy of the package: a comment and a docstring changed keep the fingerprint, a changed
+    number in a statement of the FE code changes it (and nothing is run: a new numpy cannot)."""
+    import shutil
+
+    package = Path(campaign_data.__file__).resolve().parents[2]
+    copy = tmp_path / "stickslip"
+    shutil.copytree(package, copy, ignore=shutil.ignore_patterns("__pycache__", "*.nc"))
+    here = campaign_data.model_fingerprint()
+
+    def fingerprint():
+        monkeypatch.setattr(campaign_data, "__file__", str(copy / "figures" / "brake" / "campaign_data.py"))
+        campaign_data.model_fingerprint.cache_clear()
+        try:
+            return campaign_data.model_fingerprint()
+        finally:
+            monkeypatch.undo()
+            campaign_data.model_fingerprint.cache_clear()
+
+    assert fingerprint() == here
+    scheme = copy / "contact" / "scheme.py"
+    text = scheme.read_text()
+    scheme.write_text('"""Another docstring."""\n# a comment\n' + text.split('"""', 2)[2])
+    assert fingerprint() == here
+    friction = copy / "friction.py"
+    friction.write_text(friction.read_text().replace("return self.fd + 0.0 * np.abs(v_r)",
+                                                     "return self.fd + 1e-300 * np.abs(v_r)"))
+    assert fingerprint() != here

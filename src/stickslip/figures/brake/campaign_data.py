@@ -5,10 +5,9 @@ In order of preference:
 1. a campaign run with ``stickslip brake campaign`` into ``<out>/data/brake-fem-campaign/``
    (the default of that command), once every point of its sweep is done;
 2. the campaign result stored with the package (``figures/brake/data/*.nc``, exported by
-   ``stickslip brake campaign --export``), if the present code computes what the code that
-   produced it did: `model_fingerprint` hashes the bits of short FE runs of the three cases
-   (state, reactions, classification), so a refactor that changes no number keeps the
-   stored result valid and any change of the numbers makes it stale;
+   ``stickslip brake campaign --export``), if it was computed by the present code:
+   `model_fingerprint` hashes the code the campaign's numbers come from (its syntax, not its
+   comments or docstrings), so any change of that code makes the stored result stale;
 3. otherwise a small version computed on the spot (fewer runs, the coarse mesh only), in
    which the paper's claims cannot be settled; the report says so.
 
@@ -27,14 +26,11 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from ...brake import BrakeParams
 from ...cf import for_file, from_file, stamp
 from ...files import to_netcdf
-from ...brake.fem import FemScheme, classify_fem, integrate_fem, perturbed_steady
-from ...brake.fem.campaign import limit_regime
 from ...contact import REGIME_ATTRS, REGIME_CODES
 from ...sweep import verify_store
-from .paper import CASES, PAPER_REGIMES
+from .paper import PAPER_REGIMES
 
 _REGIME_NAMES = {v: k for k, v in REGIME_CODES.items()}
 
@@ -47,23 +43,36 @@ CAMPAIGN_DIR = "brake-fem-campaign"
 STORED_DIR = Path(__file__).parent / "data"
 
 
+#: The code a campaign's numbers come from (relative to the package): the annulus by finite
+#: elements and its campaign, the reduced model's steady state, the general FE body it
+#: specialises, the contact scheme, the friction laws, the cases of the paper.
+MODEL_CODE = ("brake/fem", "brake/reduced", "fem", "contact", "friction.py", "figures/brake/paper.py")
+
+
+def _without_docstrings(tree: ast.AST) -> ast.AST:
+    for node in ast.walk(tree):
+        body = getattr(node, "body", None)
+        if (isinstance(body, list) and body and isinstance(body[0], ast.Expr)
+                and isinstance(body[0].value, ast.Constant) and isinstance(body[0].value.value, str)):
+            node.body = body[1:] or [ast.Pass()]
+    return tree
+
+
 @functools.lru_cache(maxsize=1)
 def model_fingerprint() -> str:
-    """SHA-256 (16 hex digits) of what the FE code computes: the bits of the final state, the
-    reactions and the classification of 12-transit runs of the three cases on a 32 x 2 mesh,
-    started as the campaign's runs are (white noise, seed 0), and of the campaign's outcome
-    record of a run stopped at its first check."""
+    """SHA-256 (16 hex digits) of the code that computes a campaign (`MODEL_CODE`), as Python
+    reads it: the syntax tree of each module without its docstrings, so comments, docstrings
+    and layout do not count and every change of a statement does. (The bits of short runs, the
+    fingerprint until 2026-11-26, changed with the libraries: a run's stick/slip switches
+    amplify a change of the last bit of a BLAS sum, 1e-15, to 1e-2 of a reaction within one
+    transit, so a new numpy made the stored campaigns look stale.)"""
+    root = Path(__file__).resolve().parents[2]
+    files = sorted(f for part in MODEL_CODE
+                   for f in ((root / part).rglob("*.py") if (root / part).is_dir() else [root / part]))
     digest = hashlib.sha256()
-    for f, d, om in CASES:
-        p = BrakeParams.from_physical(om, d, f)
-        run = integrate_fem(p, 32, 2, transits=12.0, initial=perturbed_steady(FemScheme(p, 32, 2), seed=0))
-        for name in ("u", "v", "a"):
-            digest.update(run.kernel[name].tobytes())
-        digest.update(run.P.tobytes() + run.Q.tobytes() + run.state.tobytes())
-        digest.update(repr(classify_fem(run).to_dict()).encode())
-        digest.update(repr(sorted((k, v) for k, v in limit_regime(p, 32, 2, 0, min_transits=6.0, chunk=2.0,
-                                                                     max_transits=6.0).items()
-                                  if k != "seconds")).encode())
+    for f in files:
+        digest.update(f.relative_to(root).as_posix().encode())
+        digest.update(ast.dump(_without_docstrings(ast.parse(f.read_text(encoding="utf-8")))).encode())
     return digest.hexdigest()[:16]
 
 
