@@ -40,6 +40,7 @@ def test_systems_page_runs(monkeypatch):
     assert namespace["ds"]["friction_force"].dims == ("t", "contact")
     cycle = namespace["cycle"]
     assert round(cycle.period, 2) == 6.69 and cycle.stable
+    assert round(namespace["squeal_cycle"].period, 2) == 6.20 and list(namespace["squeal_cycle"].event_state) == [2, 1]
 
 
 def test_brake_tutorial_runs(tmp_path, monkeypatch):

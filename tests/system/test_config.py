@@ -36,6 +36,8 @@ def _with(change: dict, contact: dict | None = None) -> dict:
     (_with({}, {"law": "stribeck"}), "contact[0].law"),
     (_with({}, {"law": "linear-weakening"}), "contact[0].tau"),
     (_with({}, {"normal_force": -1.0}), "contact[0].normal_force"),
+    (_with({}, {"normal_stiffness": 1.0}), "contact[0].normal_stiffness"),
+    (_with({}, {"normal_direction": [1.0, 1.0], "normal_stiffness": 1.0}), "contact[0].normal_direction"),
     (_with({"contact": []}), "contact"),
     (_with({"mass": [[1.0, 0.0], [0.0, 1.0]]}), "stiffness"),
     (_with({"mass": [[-1.0]]}), "mass"),
@@ -53,3 +55,12 @@ def test_a_file_that_is_not_toml_is_refused(tmp_path):
         load_system(bad)
     with pytest.raises(ParameterError, match="readable"):
         load_system(tmp_path / "missing.toml")
+
+
+def test_the_hoffmann_example_is_the_docs_squeal_model():
+    """Its file and the model of docs/systems.md written in Python give the same contact."""
+    system = load_system(EXAMPLE.parents[1] / "hoffmann" / "hoffmann.toml")
+    c = system.contacts[0]
+    assert c.unilateral and c.normal_stiffness == 0.5 and list(c.normal_direction) == [0.0, 1.0]
+    np.testing.assert_array_equal(system.stiffness, [[1.1, -0.3], [-0.3, 0.5]])
+    assert (c.friction.fs, c.friction.fd, c.surface_speed) == (0.84, 0.7, 0.5)

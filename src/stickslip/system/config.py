@@ -13,6 +13,8 @@ surface_speed = 0.3                      # m/s
 law = "coulomb"                          # coulomb | linear-weakening (with tau)
 fs = 0.6
 fd = 0.4
+# normal_direction = [0.0, 1.0]          # optional: a unilateral contact, N = normal_force - k_n n . x,
+# normal_stiffness = 0.5                 # N/m; it opens where N would pull (Coulomb only)
 ```
 
 Every problem is a `ParameterError` naming the key as the file writes it (``contact[1].fs``).
@@ -31,7 +33,8 @@ from .model import Contact, System
 __all__ = ["load_system", "system_from_dict"]
 
 _TOP = ("mass", "stiffness", "damping", "force", "contact")
-_CONTACT = ("direction", "normal_force", "surface_speed", "law", "fs", "fd", "tau", "name")
+_CONTACT = ("direction", "normal_force", "surface_speed", "law", "fs", "fd", "tau", "name", "normal_direction",
+            "normal_stiffness")
 _LAWS = ("coulomb", "linear-weakening")
 
 
@@ -56,7 +59,7 @@ def _contact(i: int, table) -> Contact:
     try:
         friction = make_law(law, fs=table["fs"], fd=table["fd"], tau=table.get("tau"))
         return Contact(table["direction"], table["normal_force"], friction, table.get("surface_speed", 0.0),
-                       table.get("name", ""))
+                       table.get("name", ""), table.get("normal_direction"), table.get("normal_stiffness", 0.0))
     except ParameterError as err:
         raise _renamed(err, where) from None
 

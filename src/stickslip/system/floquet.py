@@ -24,7 +24,7 @@ from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import SYSTEM as Q
 from ..results import Result
-from .flow import Flow
+from .flow import OPEN, Flow
 from .model import System
 from .simulate import SystemRun, simulate
 
@@ -108,8 +108,8 @@ class SystemCycle(Result):
                     "event": var(("event",), np.arange(self.event_time.size), "event")},
             attrs={"period": self.period, "stable": int(self.stable), "section_contact": self.contact,
                    "section_state": self.state})
-        ds["event_state"].attrs.update(flag_values=np.array([-1, 0, 1], dtype=np.int8),
-                                       flag_meanings="reverse_slip stick slip")
+        ds["event_state"].attrs.update(flag_values=np.array([-1, 0, 1, OPEN], dtype=np.int8),
+                                       flag_meanings="reverse_slip stick slip open")
         return finish(ds, "system with frictional contacts: limit cycle and its Floquet multipliers", "system")
 
 
@@ -123,13 +123,43 @@ def _after(run: SystemRun, signature) -> list[tuple]:
     return out
 
 
+def _newton_step(system: System, segments: tuple, residual: np.ndarray, states: tuple) -> np.ndarray:
+    """The change ``d`` of the start on the section that makes the return map's linearisation
+    return to it: ``(P' - I) d = -r``, keeping every sticking contact's slip velocity zero (least
+    squares). ``P' = (I - f- n^T / (n . f-)) Phi-`` is the derivative of the return map: the
+    monodromy up to just before the return ``Phi-``, the end moved along the flow ``f-`` to the
+    section ``n`` (not ``Phi``, which is the derivative at a fixed time)."""
+    n = system.dofs
+    end = segments[-1]
+    flow = Flow(system, end.states)
+    before = monodromy(system, segments[:-1]) if len(segments) > 1 else np.eye(2 * n)
+    phi = expm(end.duration * flow.A)
+    ze = phi @ end.z
+    phi = phi[:2 * n, :2 * n] @ before
+    normal = flow.rows[end.rows[0]][:2 * n]
+    f_minus = (flow.A @ ze)[:2 * n]
+    rate = float(normal @ f_minus)
+    if rate == 0.0:
+        raise NoSolutionError("a grazing return to the section: no Newton step")
+    deriv = phi - np.outer(f_minus, normal @ phi) / rate
+    rows = [deriv - np.eye(2 * n), normal[None, :]]
+    for i, st in enumerate(states):
+        if st == 0:
+            rows.append(np.concatenate([np.zeros(n), system.contacts[i].direction])[None, :])
+    rhs = np.concatenate([-residual[:2 * n], np.zeros(sum(r.shape[0] for r in rows[1:]))])
+    d = np.linalg.lstsq(np.vstack(rows), rhs, rcond=None)[0]
+    return np.concatenate([d, [0.0]])
+
+
 def limit_cycle(system: System, x0=None, v0=None, *, transient: float = 100.0, tol: float = 1e-10,
                 max_iter: int = 200) -> SystemCycle:
     """The periodic orbit the motion from ``(x0, v0)`` settles on after ``transient`` seconds.
 
     The last contact event of the transient (a contact entering a state) is the Poincare
-    section; the return map to it is iterated until the state repeats to ``tol`` (relative),
-    and the multipliers are those of the monodromy over one period (with saltation matrices)."""
+    section; the return map to it is iterated, then (once near, the contact states repeating)
+    solved by Newton's method with the monodromy as its derivative, until the state repeats to
+    ``tol`` (relative); the multipliers are those of the monodromy over one period (with
+    saltation matrices)."""
     transient = Q.check("transient", transient)
     tol, max_iter = Q.check("tol", tol), Q.check("max_iter", max_iter)
     try:
@@ -145,19 +175,32 @@ def limit_cycle(system: System, x0=None, v0=None, *, transient: float = 100.0, t
     n = system.dofs
     z, states = crossings[-1][1], crossings[-1][3]
     horizon = transient if len(crossings) < 2 else 4.0 * (crossings[-1][0] - crossings[-2][0])
-    for _ in range(max_iter):
-        one = simulate(system, z[:n], z[n:2 * n], horizon, samples=2, segments=True, states=states)
-        ret = [r for r in _after(one, signature) if r[0] > 0.0]
+    newton = False
+    for it in range(max_iter):
+        try:
+            one = simulate(system, z[:n], z[n:2 * n], horizon, samples=2, segments=True, states=states)
+            ret = [r for r in _after(one, signature) if r[0] > 0.0]
+        except (ParameterError, NoSolutionError):
+            if not newton:
+                raise
+            ret = []
+        if not ret and newton:  # the Newton step left the cycle's neighbourhood: iterate the map instead
+            z, states, newton = z_fixed, states_fixed, False
+            continue
         if not ret:
             raise NoSolutionError(f"contact {signature[0]} did not enter state {signature[1]} again within "
                                   f"{horizon:g} s: no periodic orbit through that event")
-        period, z_next, last, states = ret[0]
-        if np.abs(z_next - z).max() <= tol * max(1.0, np.abs(z).max()):
+        period, z_next, last, next_states = ret[0]
+        residual = z_next - z
+        size = max(1.0, np.abs(z).max())
+        if np.abs(residual).max() <= tol * size:
             break
-        z = z_next
-    else:
-        raise NoSolutionError(f"the return map did not settle to {tol:g} in {max_iter} returns (a cycle of "
-                              "several returns, or quasi-periodic or chaotic motion)")
+        z_fixed, states_fixed = z_next, next_states
+        newton = it >= 2 and next_states == states and np.abs(residual).max() < 1e-2 * size
+        if newton:
+            z = z + _newton_step(system, one.segments[:last + 1], residual, states)
+        else:
+            z, states = z_next, next_states
     start = one.segments[0].states
     mult = np.linalg.eigvals(monodromy(system, one.segments[:last + 1]))
     mult = mult[np.argsort(-np.abs(mult))]

@@ -1,7 +1,7 @@
 """The affine flow of one contact state, and its first event, in closed form.
 
-In a state (each contact sticking, ``0``, or slipping with ``sign(v_r) = +-1``) and with laws
-affine in the slip speed (``mu = mu0 - mu1 |v_r|``), the motion is linear:
+In a state (each contact sticking, ``0``, slipping with ``sign(v_r) = +-1``, or open, ``2``) and
+with laws affine in the slip speed (``mu = mu0 - mu1 |v_r|``), the motion is linear:
 
     M a = r + W_S lam,   r = f - C_eff v - K x + sum_slip w_j N_j (s_j mu0_j - mu1_j V_j),
     C_eff = C - sum_slip N_j mu1_j w_j w_j^T,   W_S^T a = 0,
@@ -9,7 +9,9 @@ affine in the slip speed (``mu = mu0 - mu1 |v_r|``), the motion is linear:
 so ``lam = -D^-1 W_S^T M^-1 r`` (``D = W_S^T M^-1 W_S``, minimum-norm where sticking contacts are
 redundant) and ``z = (x, v, 1)`` obeys ``z' = A z``: ``z(t) = expm(t A) z(0)``, exact to round-off.
 Every switching function is linear in ``z``: a slipping contact's ``s_j v_r``, a sticking one's
-``f_s N -+ F``. The first time one of them reaches zero is found on the exact flow, at steps
+``f_s N -+ F``, a unilateral contact's ``N(x)`` (opening; ``-N(x)`` while open: closing; a normal
+force ``N(x) = N_0 - k_n n . x`` adds ``k_n n n^T`` to the stiffness and, slipping, the friction
+``s mu0 k_n w n^T``). The first time one of them reaches zero is found on the exact flow, at steps
 of a fraction of the fastest time scale of ``A`` (a sign change, or a dip between two steps
 seen by the derivative, which is linear in ``z`` too), then by Brent's method to round-off.
 """
@@ -24,7 +26,7 @@ from scipy.optimize import brentq
 
 from .model import System
 
-__all__ = ["Flow", "SLIP_ZERO", "STICK_LIMIT", "LAW_LIMIT"]
+__all__ = ["Flow", "SLIP_ZERO", "STICK_LIMIT", "LAW_LIMIT", "OPENING", "CLOSING", "OPEN"]
 
 _EPS = np.finfo(float).eps
 #: Steps per fastest time scale ``1/max|eig(A)|`` of the event search: a switching function
@@ -33,7 +35,10 @@ _EPS = np.finfo(float).eps
 STEPS_PER_SCALE = 4.0
 #: What a switching function's zero means: a slipping contact's slip velocity reached zero, a
 #: sticking one's force reached f_s N, a slipping one's slip speed reached its law's limit.
-SLIP_ZERO, STICK_LIMIT, LAW_LIMIT = 0, 1, 2
+#: A unilateral contact's normal force reached zero (it opens), an open one's gap closed.
+SLIP_ZERO, STICK_LIMIT, LAW_LIMIT, OPENING, CLOSING = 0, 1, 2, 3, 4
+#: The state of an open contact (no force; the others are -1, 0, 1: reverse slip, stick, slip).
+OPEN = 2
 
 
 def _root(fun, a: float, b: float) -> float:
@@ -46,17 +51,31 @@ class Flow:
     def __init__(self, system: System, states: tuple[int, ...]):
         n = system.dofs
         self.states = tuple(int(s) for s in states)
-        M, K, W = system.mass, system.stiffness, system.directions
+        M, W = system.mass, system.directions
         Minv = np.linalg.inv(M)
         stuck = [i for i, s in enumerate(self.states) if s == 0]
         c_eff = system.damping.copy()
+        k_eff = system.stiffness.copy()
         g = system.force.copy()
         force_rows = np.zeros((len(self.states), 2 * n + 1))
+        normal = np.array([c.normal_row(n) for c in system.contacts])
         for j, (c, s) in enumerate(zip(system.contacts, self.states)):
+            if s == OPEN:
+                normal[j] = 0.0
+                continue
+            if c.unilateral:  # the contact's spring: N(x) n on the structure
+                k_eff += c.normal_stiffness * np.outer(c.normal_direction, c.normal_direction)
+                g += c.normal_direction * c.normal_force
             if s == 0:
                 continue
             mu0, mu1 = c.friction.affine
-            N, w, V = c.normal_force, c.direction, c.surface_speed
+            w, V = c.direction, c.surface_speed
+            if c.unilateral:  # F = s mu0 N(x): Coulomb only
+                force_rows[j] = s * mu0 * normal[j]
+                k_eff += s * mu0 * c.normal_stiffness * np.outer(w, c.normal_direction)
+                g += w * s * mu0 * c.normal_force
+                continue
+            N = c.normal_force
             c_eff -= N * mu1 * np.outer(w, w)
             g += w * N * (s * mu0 - mu1 * V)
             force_rows[j, n:2 * n] = N * mu1 * w
@@ -65,27 +84,37 @@ class Flow:
             Ws = W[:, stuck]
             L = np.linalg.pinv(Ws.T @ Minv @ Ws) @ Ws.T @ Minv  # lam = -L r
             P = Minv - Minv @ Ws @ L
-            force_rows[stuck, :n] = L @ K
+            force_rows[stuck, :n] = L @ k_eff
             force_rows[stuck, n:2 * n] = L @ c_eff
             force_rows[stuck, -1] = -L @ g
         else:
             P = Minv
         A = np.zeros((2 * n + 1, 2 * n + 1))
         A[:n, n:2 * n] = np.eye(n)
-        A[n:2 * n, :n] = -P @ K
+        A[n:2 * n, :n] = -P @ k_eff
         A[n:2 * n, n:2 * n] = -P @ c_eff
         A[n:2 * n, -1] = P @ g
         self.A, self.n = A, n
         self.force_rows = force_rows
+        #: Each contact's normal force as a row on z (zero while open).
+        self.normal_rows = normal
         slip = np.zeros((len(self.states), 2 * n + 1))  # v_r = V - w . v
         slip[:, n:2 * n] = -W.T
         slip[:, -1] = [c.surface_speed for c in system.contacts]
         self.slip_rows = slip
         rows, owners, kinds = [], [], []  # switching functions: an event when one reaches zero from above
         for i, (c, s) in enumerate(zip(system.contacts, self.states)):
+            if s == OPEN:
+                rows.append(-c.normal_row(n))  # N(x) < 0 while open: closes where it comes back to 0
+                owners.append(i)
+                kinds.append(CLOSING)
+                continue
+            if c.unilateral:
+                rows.append(normal[i].copy())
+                owners.append(i)
+                kinds.append(OPENING)
             if s == 0:
-                limit = np.zeros(2 * n + 1)
-                limit[-1] = c.friction.static * c.normal_force
+                limit = c.friction.static * normal[i]
                 rows += [limit - force_rows[i], limit + force_rows[i]]
                 owners += [i, i]
                 kinds += [STICK_LIMIT, STICK_LIMIT]

@@ -46,13 +46,21 @@ def _matrix(name: str, value, n: int, quantity: str) -> np.ndarray:
 @dataclass(frozen=True, eq=False)
 class Contact:
     """One frictional contact: ``direction`` ``w`` (n numbers), ``normal_force`` ``N`` [N] > 0,
-    its ``friction`` law, and the ``surface_speed`` ``V`` [m/s] of what it rubs on."""
+    its ``friction`` law, and the ``surface_speed`` ``V`` [m/s] of what it rubs on.
+
+    With a ``normal_direction`` ``n`` (n numbers, pointing away from the surface) and a
+    ``normal_stiffness`` ``k_n`` [N/m] the contact is unilateral: its normal force is
+    ``N(x) = N_0 - k_n n . x`` (``normal_force`` is ``N_0``, the force at ``x = 0``) while it
+    is positive, pushes the structure along ``n``, and the contact opens (no force at all) when
+    it would pull; it closes again where ``N(x)`` comes back to zero."""
 
     direction: np.ndarray
     normal_force: float
     friction: FrictionLaw
     surface_speed: float = 0.0
     name: str = ""
+    normal_direction: np.ndarray | None = None
+    normal_stiffness: float = 0.0
 
     def __post_init__(self):
         w = _vector("direction", self.direction, None, "direction")
@@ -65,6 +73,33 @@ class Contact:
             raise ParameterError("friction", self.friction, "a stickslip.friction.FrictionLaw")
         if not isinstance(self.name, str):
             raise ParameterError("name", self.name, "a text")
+        k_n = Q.check("normal_stiffness", self.normal_stiffness)
+        object.__setattr__(self, "normal_stiffness", k_n)
+        if self.normal_direction is None:
+            if k_n != 0.0:
+                raise ParameterError("normal_stiffness", k_n, "0 without a normal_direction", also=("normal_direction",))
+            return
+        nv = _vector("normal_direction", self.normal_direction, w.size, "direction")
+        if not np.any(nv):
+            raise ParameterError("normal_direction", self.normal_direction, "a vector with at least one entry not zero")
+        object.__setattr__(self, "normal_direction", nv)
+        mu = self.friction.affine
+        if mu is None or mu[1] != 0.0:
+            raise ParameterError("friction", type(self.friction).__name__, "Coulomb with a normal direction (the "
+                                 "friction force of a law of the slip speed times N(x) is not linear)")
+
+    @property
+    def unilateral(self) -> bool:
+        """True with a normal direction: the normal force follows the structure and may vanish."""
+        return self.normal_direction is not None
+
+    def normal_row(self, n: int) -> np.ndarray:
+        """``N(x)`` as a row on ``z = (x, v, 1)``: ``N_0 - k_n n . x`` (``N_0`` without a normal direction)."""
+        row = np.zeros(2 * n + 1)
+        row[-1] = self.normal_force
+        if self.unilateral:
+            row[:n] = -self.normal_stiffness * self.normal_direction
+        return row
 
     def slip_velocity(self, v: np.ndarray) -> float:
         """``V - w . v``."""
@@ -113,9 +148,10 @@ class System:
         for i, c in enumerate(contacts):
             if not isinstance(c, Contact):
                 raise ParameterError(f"contacts[{i}]", c, "a stickslip.system.Contact")
-            if c.direction.shape != (n,):
-                raise ParameterError(f"contacts[{i}].direction", c.direction.tolist(),
-                                     f"{n} numbers (one per degree of freedom)")
+            for name in ("direction", "normal_direction"):
+                vec = getattr(c, name)
+                if vec is not None and vec.shape != (n,):
+                    raise ParameterError(f"contacts[{i}].{name}", vec.tolist(), f"{n} numbers (one per degree of freedom)")
         object.__setattr__(self, "contacts", contacts)
 
     @property

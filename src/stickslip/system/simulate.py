@@ -23,7 +23,7 @@ from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import SYSTEM as Q
 from ..results import Result
-from .flow import LAW_LIMIT, Flow
+from .flow import CLOSING, LAW_LIMIT, OPEN, OPENING, Flow
 from .model import System
 
 __all__ = ["SystemRun", "Segment", "simulate", "choose_states"]
@@ -74,8 +74,8 @@ class SystemRun(Result):
                     "contact": var(("contact",), np.arange(k), "contact"),
                     "event": var(("event",), np.arange(self.event_time.size), "event")})
         for name in ("contact_state", "event_state"):
-            ds[name].attrs.update(flag_values=np.array([-1, 0, 1], dtype=np.int8),
-                                  flag_meanings="reverse_slip stick slip")
+            ds[name].attrs.update(flag_values=np.array([-1, 0, 1, OPEN], dtype=np.int8),
+                                  flag_meanings="reverse_slip stick slip open")
         return finish(ds, "system with frictional contacts: event-driven simulation", "system")
 
 
@@ -123,7 +123,7 @@ def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, relea
             if st[i] != 0:
                 continue
             c = system.contacts[i]
-            limit = c.friction.static * c.normal_force
+            limit = max(0.0, c.friction.static * float(c.normal_row(system.dofs) @ z))
             excess = abs(forces[i]) - limit
             if excess > 1e-12 * max(limit, abs(forces[i])) and excess > over:
                 worst, over = i, excess
@@ -157,15 +157,22 @@ def _sampled(flow: Flow, z: np.ndarray, times: np.ndarray, dt: float) -> np.ndar
     return block[:, :times.size].T
 
 
-def _given_states(states, vr, speed) -> tuple:
+def _given_states(states, vr, speed, unilateral) -> tuple:
     try:
         given = tuple(int(s) for s in states)
-        ok = len(given) == len(vr) and all(s in (-1, 0, 1) and float(s) == float(o) for s, o in zip(given, states))
+        ok = len(given) == len(vr) and all(s in (-1, 0, 1, OPEN) and float(s) == float(o)
+                                           for s, o in zip(given, states))
     except (TypeError, ValueError):
         ok = False
     if not ok:
-        raise ParameterError("states", states, f"{len(vr)} numbers, each 1 (slip), 0 (stick) or -1 (reverse slip)")
+        raise ParameterError("states", states, f"{len(vr)} numbers, each 1 (slip), 0 (stick), -1 (reverse slip) "
+                             "or 2 (open, for a unilateral contact)")
     for i, (s, v) in enumerate(zip(given, vr)):
+        if s == OPEN and not unilateral[i]:
+            raise ParameterError("states", list(states), f"2 (open) only for a unilateral contact (contact {i} has "
+                                 "no normal direction)")
+        if s == OPEN:
+            continue
         if (s == 0 and abs(v) > 1e-9 * speed) or (s != 0 and s * v < -1e-9 * speed):
             raise ParameterError("states", list(states), f"states the start allows: contact {i} has slip velocity "
                                  f"{v:.6g}, so it cannot {'stick' if s == 0 else 'slip with sign ' + str(s)}")
@@ -214,12 +221,13 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
     z = np.concatenate([x0, v0, [1.0]])
     vr = [c.slip_velocity(v0) for c in system.contacts]
     speed = max(1.0, *(abs(c.surface_speed) for c in system.contacts))
-    zero = {i for i in range(k) if abs(vr[i]) <= 1e-14 * speed}
+    opened = {i for i, c in enumerate(system.contacts) if c.unilateral and c.normal_row(n) @ z <= 0.0}
+    zero = {i for i in range(k) if abs(vr[i]) <= 1e-14 * speed} - opened
     if states is None:
-        states = tuple(0 if i in zero else (1 if vr[i] > 0 else -1) for i in range(k))
+        states = tuple(OPEN if i in opened else 0 if i in zero else (1 if vr[i] > 0 else -1) for i in range(k))
         states = choose_states(system, z, states, zero, {}, flows)
     else:
-        states = _given_states(states, vr, speed)
+        states = _given_states(states, vr, speed, [c.unilateral for c in system.contacts])
         zero = {i for i in range(k) if states[i] == 0}
     z = _zero_slip(system, z, [i for i in zero if states[i] == 0])
     ts = np.linspace(0.0, t_end, samples)
@@ -255,15 +263,22 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
             raise NoSolutionError(f"simulation stopped at t = {t:.17g}: the slip speed of contact {i} reached the "
                                   f"limit of its friction law, |v_r| < {system.contacts[i].friction.max_speed:.6g} "
                                   "(beyond it the law gives no friction coefficient)")
-        hit = sorted({int(flow.owners[r]) for r in hit})
+        opening = {int(flow.owners[r]) for r in hit if flow.kinds[r] == OPENING}
+        closing = {int(flow.owners[r]) for r in hit if flow.kinds[r] == CLOSING}
+        hit = sorted({int(flow.owners[r]) for r in hit} - opening - closing)
         released = {}
         for i in hit:
             if states[i] == 0:  # its force reached f_s N: released in its direction
                 released[i] = 1 if (flow.force_rows[i] @ z) > 0 else -1
         vr = flow.slip_rows @ z
-        zero = set(hit) | {i for i in range(k) if states[i] == 0}
-        zero |= {i for i in range(k) if abs(vr[i]) <= 1e-13 * speed}
-        new = choose_states(system, z, states, zero, released, flows)
+        before = list(states)
+        for i in opening:  # its normal force reached zero: no force from now on
+            before[i] = OPEN
+        for i in closing:  # touching again, with no normal force yet: slips the way the surface moves under it
+            before[i] = 1 if vr[i] > 0 else -1
+        zero = set(hit) | {i for i in range(k) if before[i] == 0}
+        zero |= {i for i in range(k) if abs(vr[i]) <= 1e-13 * speed and before[i] != OPEN}
+        new = choose_states(system, z, tuple(before), zero, released, flows)
         z = _zero_slip(system, z, [i for i in range(k) if new[i] == 0])
         for i in range(k):
             if new[i] != states[i]:

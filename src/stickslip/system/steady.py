@@ -8,6 +8,9 @@ motions about it obey ``M y'' + C_eff y' + K y = 0`` with
 
 (a friction law falling with slip speed, ``mu' < 0``, feeds energy in: negative damping), and
 steady sliding is stable when every eigenvalue of that linear flow has a negative real part.
+A unilateral contact (normal force ``N(x) = N_0 - k_n n . x``) adds ``k_n n n^T`` and, through its
+friction, ``sign(V) mu k_n w n^T`` to the stiffness: a matrix no longer symmetric, whose modes
+may coalesce and flutter (mode-coupling instability, Hoffmann et al. 2002).
 """
 
 from __future__ import annotations
@@ -76,6 +79,8 @@ def steady_sliding(system: System) -> SteadySliding:
     n = system.dofs
     forces = np.empty(len(system.contacts))
     c_eff = system.damping.copy()
+    k_eff = system.stiffness.copy()
+    load = system.force.copy()
     for i, c in enumerate(system.contacts):
         speed = abs(c.surface_speed)
         if speed == 0.0:
@@ -84,17 +89,30 @@ def steady_sliding(system: System) -> SteadySliding:
         if speed >= c.friction.max_speed:
             raise ParameterError(f"contacts[{i}].surface_speed", c.surface_speed,
                                  f"below the speed {c.friction.max_speed:g} where its friction law ends")
-        forces[i] = c.normal_force * np.sign(c.surface_speed) * float(c.friction.kinetic(speed))
+        mu, sign = float(c.friction.kinetic(speed)), float(np.sign(c.surface_speed))
+        if c.unilateral:  # N(x) = N0 - k_n n.x pushes along n; the friction s mu N(x) along w (Coulomb)
+            k_n, nv, w = c.normal_stiffness, c.normal_direction, c.direction
+            k_eff += k_n * np.outer(nv, nv) + sign * mu * k_n * np.outer(w, nv)
+            load += (nv + sign * mu * w) * c.normal_force
+            continue
+        forces[i] = c.normal_force * sign * mu
+        load += c.direction * forces[i]
         slope = float(c.friction.slope(speed))  # d mu / d v_r at v_r = |V|; mu is even in v_r
         c_eff += c.normal_force * slope * np.outer(c.direction, c.direction)
-    load = system.force + system.directions @ forces
-    sv = np.linalg.svd(system.stiffness, compute_uv=False)
+    sv = np.linalg.svd(k_eff, compute_uv=False)
     if sv[-1] <= 1e-13 * sv[0]:
         raise NoSolutionError("the stiffness matrix is singular: the structure has no unique resting position "
                               "under sliding contacts (a free body, or a mechanism)")
-    x = np.linalg.solve(system.stiffness, load)
+    x = np.linalg.solve(k_eff, load)
+    for i, c in enumerate(system.contacts):
+        if c.unilateral:
+            normal = float(c.normal_row(n)[:n] @ x + c.normal_force)
+            if normal <= 0.0:
+                raise NoSolutionError(f"contact {i} is open at the resting position (its normal force would be "
+                                      f"{normal:.6g} N): no steady sliding on it")
+            forces[i] = np.sign(c.surface_speed) * float(c.friction.kinetic(abs(c.surface_speed))) * normal
     Minv = scipy.linalg.cho_solve((system.cholesky, True), np.eye(n))
-    A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ system.stiffness, -Minv @ c_eff]])
+    A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ k_eff, -Minv @ c_eff]])
     eig = np.linalg.eigvals(A)
     eig = eig[np.lexsort((-eig.imag, -eig.real))]
     if not (np.all(np.isfinite(x)) and np.all(np.isfinite(eig))):
