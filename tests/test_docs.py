@@ -41,6 +41,7 @@ def test_systems_page_runs(monkeypatch):
     cycle = namespace["cycle"]
     assert round(cycle.period, 2) == 6.69 and cycle.stable
     assert round(namespace["squeal_cycle"].period, 2) == 6.20 and list(namespace["squeal_cycle"].event_state) == [2, 1]
+    assert namespace["slips"].event_time.size == 82
 
 
 def test_brake_tutorial_runs(tmp_path, monkeypatch):

@@ -22,6 +22,7 @@ from stickslip.system import limit_cycle as system_cycle
 from stickslip.system import load_system
 from stickslip.system import simulate as system_simulate
 from stickslip.system import steady_sliding as system_steady
+from stickslip.system import burridge_knopoff
 from stickslip.rsf import RateState, SpringSlider, linear_stability, slide, slider_cycle
 
 def _one(x):
@@ -46,6 +47,8 @@ RSF_LAW = dict(a=0.01, b=0.015, dc=1e-5)
 SLIDER = dict(law=RateState(**RSF_LAW), normal_stress=1e7, stiffness=1e10)
 CALLS = {
     "system steady_sliding": (lambda **k: system_steady(**{"system": System(**SYSTEM), **k}), ["system"]),
+    "burridge_knopoff": (lambda **k: burridge_knopoff(**{"blocks": 3, "friction": Coulomb(0.6, 0.4), **k}),
+                         ["blocks", "friction", "mass", "coupling", "pull", "normal_force", "plate_speed", "damping"]),
     "RateState": (lambda **k: RateState(**{**RSF_LAW, **k}),
                   [*RSF_LAW, "f0", "v_ref", "evolution", "b2", "dc2", "regularized"]),
     "SpringSlider": (lambda **k: SpringSlider(**{**SLIDER, **k}), [*SLIDER, "mass"]),
@@ -190,7 +193,7 @@ DOMAIN = {**{n: "oscillator" for n in ("Oscillator", "Coulomb", "Stribeck", "sim
                                       "direct_map", "fields")},
           **{n: "fem" for n in ("contact_frames", "ContactProblem")},
           **{n: "system" for n in ("System", "Contact", "system simulate", "system limit_cycle", "load_system",
-                                   "system steady_sliding")},
+                                   "system steady_sliding", "burridge_knopoff")},
           **{n: "rsf" for n in ("RateState", "SpringSlider", "slide", "linear_stability", "slider_cycle")}}
 
 

@@ -12,11 +12,11 @@ from stickslip.system import limit_cycle, monodromy, simulate
 from .test_simulate import one_dof, two_blocks
 
 
-def _end(run):
+def end_state(run):
     return np.concatenate([run.x[-1], run.v[-1]])
 
 
-def _finite_differences(system, z0, t_end, eps=1e-6):
+def finite_differences(system, z0, t_end, eps=1e-6):
     n = system.dofs
     out = np.zeros((2 * n, 2 * n))
     for c in range(2 * n):
@@ -24,7 +24,7 @@ def _finite_differences(system, z0, t_end, eps=1e-6):
         d[c] = eps
         plus = simulate(system, (z0 + d)[:n], (z0 + d)[n:], t_end, samples=2)
         minus = simulate(system, (z0 - d)[:n], (z0 - d)[n:], t_end, samples=2)
-        out[:, c] = (_end(plus) - _end(minus)) / (2 * eps)
+        out[:, c] = (end_state(plus) - end_state(minus)) / (2 * eps)
     return out
 
 
@@ -47,12 +47,12 @@ def test_the_monodromy_is_the_derivative_of_the_run(case, kinds):
     else:  # from a moment when both blocks slip, over a stick phase of each
         system = two_blocks()
         warm = simulate(system, [0.0, 0.0], [0.0, 0.0], 6.31, samples=2)
-        z0, t_end = _end(warm), 8.0
+        z0, t_end = end_state(warm), 8.0
         assert np.all(warm.states[-1] != 0)
     run = simulate(system, z0[:2], z0[2:], t_end, samples=2, segments=True)
     assert _switches(run) == kinds
     M = monodromy(system, run)
-    FD = _finite_differences(system, z0, t_end)
+    FD = finite_differences(system, z0, t_end)
     assert np.abs(M - FD).max() < 1e-6 * max(1.0, np.abs(M).max())
     assert np.abs(M - np.eye(4)).max() > 0.1  # not a trivial product
 
@@ -75,7 +75,7 @@ def test_a_two_contact_cycle_closes_and_its_multipliers_are_those_of_its_return_
     system = two_blocks()
     cycle = limit_cycle(system, [0.0, 0.0], [0.0, 0.0], transient=60.0)
     again = simulate(system, cycle.x0, cycle.v0, cycle.period, samples=2)
-    np.testing.assert_allclose(_end(again), np.concatenate([cycle.x0, cycle.v0]), atol=1e-8)
+    np.testing.assert_allclose(end_state(again), np.concatenate([cycle.x0, cycle.v0]), atol=1e-8)
     assert np.min(np.abs(cycle.multipliers - 1.0)) < 1e-8
     # the section: contact 1 sticking (v_1 = V_1 = 0.1); its coordinates x_1, x_2, v_1 of block 1
     z0 = np.concatenate([cycle.x0, cycle.v0])

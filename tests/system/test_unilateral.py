@@ -13,7 +13,7 @@ from stickslip.errors import ParameterError
 from stickslip.friction import Coulomb, LinearWeakening
 from stickslip.system import Contact, System, limit_cycle, monodromy, simulate, steady_sliding
 
-from .test_floquet import _end, _finite_differences
+from .test_floquet import end_state, finite_differences
 
 K11, K12, K22, KH = 1.1, -0.3, 0.5, 0.5
 
@@ -81,13 +81,13 @@ def test_the_monodromy_across_opening_closing_and_sticking_is_the_derivative_of_
     the product of exponentials and saltation matrices against central differences."""
     system = hoffmann(0.7, V=0.1, c=0.01)
     warm = simulate(system, [0.5, 0.1], [0.0, 0.0], 150.0, samples=2)
-    z0 = _end(warm)
+    z0 = end_state(warm)
     run = simulate(system, z0[:2], z0[2:], 12.0, samples=2, segments=True)
     kinds = {(a, b) for seg in run.segments for a, b in zip(seg.states, seg.after) if a != b}
     # opening from slip, closing into reverse slip, reversal, stick onset from reverse slip, release
     assert {(1, 2), (2, -1), (-1, 1), (-1, 0), (0, 1)} <= kinds, kinds
     M = monodromy(system, run)
-    FD = _finite_differences(system, z0, 12.0)
+    FD = finite_differences(system, z0, 12.0)
     assert np.abs(M - FD).max() < 1e-6 * max(1.0, np.abs(M).max())
     assert np.abs(M - np.eye(4)).max() > 0.1
 
@@ -96,7 +96,7 @@ def test_the_cycle_beyond_flutter_closes_and_its_multipliers_are_those_of_its_re
     system = hoffmann(0.7, c=0.01)
     cycle = limit_cycle(system, [0.5, 0.1], [0.0, 0.0], transient=300.0)
     again = simulate(system, cycle.x0, cycle.v0, cycle.period, samples=2, states=cycle.states)
-    np.testing.assert_allclose(_end(again), np.concatenate([cycle.x0, cycle.v0]), atol=1e-8)
+    np.testing.assert_allclose(end_state(again), np.concatenate([cycle.x0, cycle.v0]), atol=1e-8)
     assert np.min(np.abs(cycle.multipliers - 1.0)) < 1e-8
     assert cycle.state == 2 or cycle.state == 1  # its section: the contact opening or closing
     z0 = np.concatenate([cycle.x0, cycle.v0])

@@ -8,6 +8,7 @@ linear stability; `load_system` reads a system from a TOML file. One contact on 
 freedom is the oscillator of `stickslip.oscillator`.
 """
 
+from .chains import burridge_knopoff
 from .config import load_system, system_from_dict
 from .floquet import SystemCycle, limit_cycle, monodromy, saltation
 from .flow import Flow
@@ -17,4 +18,4 @@ from .steady import SteadySliding, steady_sliding
 
 __all__ = ["Contact", "System", "Flow", "SystemRun", "Segment", "simulate", "choose_states", "monodromy",
            "saltation", "SystemCycle", "limit_cycle", "load_system", "system_from_dict",
-           "SteadySliding", "steady_sliding"]
+           "SteadySliding", "steady_sliding", "burridge_knopoff"]

@@ -33,6 +33,9 @@ _EPS = np.finfo(float).eps
 #: is a sum of the flow's modes, so it changes sign at most about once within such a step
 #: (a dip that returns within it is seen by the derivative's sign change).
 STEPS_PER_SCALE = 4.0
+#: Steps of a flow's event search taken by its Taylor series before its step's matrix exponential
+#: is computed (and kept): a flow visited briefly never pays for the exponential of a large matrix.
+EXPM_AFTER = 64
 #: What a switching function's zero means: a slipping contact's slip velocity reached zero, a
 #: sticking one's force reached f_s N, a slipping one's slip speed reached its law's limit.
 #: A unilateral contact's normal force reached zero (it opens), an open one's gap closed.
@@ -52,7 +55,7 @@ class Flow:
         n = system.dofs
         self.states = tuple(int(s) for s in states)
         M, W = system.mass, system.directions
-        Minv = np.linalg.inv(M)
+        Minv = system.inverse_mass
         stuck = [i for i, s in enumerate(self.states) if s == 0]
         c_eff = system.damping.copy()
         k_eff = system.stiffness.copy()
@@ -129,9 +132,14 @@ class Flow:
                     owners.append(i)
                     kinds.append(LAW_LIMIT)
         self.rows, self.owners, self.kinds = np.array(rows), np.array(owners), np.array(kinds)
-        rho = float(np.max(np.abs(np.linalg.eigvals(A[:-1, :-1])))) if n else 0.0
+        # a bound of the fastest time scale: the infinity norm of A scaled by diag(s I, I), s^2 = |P K|
+        # (at least the spectral radius, and equal to it for a chain's Laplacian; no eigensolve)
+        stiff = float(np.abs(A[n:2 * n, :n]).sum(axis=1).max()) if n else 0.0
+        damp = float(np.abs(A[n:2 * n, n:2 * n]).sum(axis=1).max()) if n else 0.0
+        rho = math.sqrt(stiff) + damp
         self.h = STEPS_PER_SCALE ** -1 / rho if rho > 0 else math.inf
         self._step = None
+        self._taken = 0  # steps of the event search on this flow (its step's exponential once many)
 
     @classmethod
     def cached(cls, system: System, states: tuple, cache: dict) -> "Flow":
@@ -170,17 +178,22 @@ class Flow:
         roots are found on a polynomial rather than on matrix exponentials."""
         G, A = self.rows, self.A
         h = min(self.h, t_max)
-        if self._step is None or self._step[0] != h:
-            self._step = (h, expm(h * A))
         t, z = 0.0, z0
         g, dg = G @ z, G @ (A @ z)
         scale = np.abs(G[:, :-1]) @ np.abs(z0[:-1]) + np.abs(G[:, -1])
         while t < t_max:
             dt = min(h, t_max - t)
-            z1 = self._step[1] @ z if dt == h else expm(dt * A) @ z
+            self._taken += 1
+            if dt == h and (self._step is not None and self._step[0] == h or self._taken > EXPM_AFTER):
+                if self._step is None or self._step[0] != h:
+                    self._step = (h, expm(h * A))
+                z1, at = self._step[1] @ z, self._within(z, dt)
+            else:  # a flow visited for a few steps: its series, not the exponential of a large matrix
+                series = self._series(z, dt)
+                z1 = series.sum(axis=0) if series is not None else expm(dt * A) @ z
+                at = self._within(z, dt, series)
             g1, dg1 = G @ z1, G @ (A @ z1)
             tol = 64 * _EPS * (np.abs(G[:, :-1]) @ np.abs(z1[:-1]) + np.abs(G[:, -1]) + scale)
-            at = self._within(z, dt)
             hits = []
             for r in range(len(G)):
                 found = self._crossing(r, at, dt, g[r], dg[r], g1[r], dg1[r], tol[r])
@@ -196,10 +209,10 @@ class Flow:
             t, z, g, dg = t + dt, z1, g1, dg1
         return t_max, z, ()
 
-    def _within(self, z: np.ndarray, dt: float):
-        """``s -> z(s)`` on ``[0, dt]``: by the Taylor series of the step (made at the first call),
-        or by matrix exponentials where it does not converge."""
-        cache = []
+    def _within(self, z: np.ndarray, dt: float, series=False):
+        """``s -> z(s)`` on ``[0, dt]``: by the Taylor series of the step (``series``, or made at
+        the first call), or by matrix exponentials where it does not converge."""
+        cache = [] if series is False else [series]
 
         def at(s: float) -> np.ndarray:
             if not cache:

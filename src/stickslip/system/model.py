@@ -118,6 +118,7 @@ class System:
     damping: np.ndarray | None = None
     force: np.ndarray | None = None
     _chol: np.ndarray = field(init=False, repr=False)
+    _cache: dict = field(init=False, repr=False, default_factory=dict)
 
     def __post_init__(self):
         try:
@@ -162,6 +163,15 @@ class System:
     def cholesky(self) -> np.ndarray:
         """The lower Cholesky factor ``L`` of the mass matrix (``M = L L^T``)."""
         return self._chol
+
+    @property
+    def inverse_mass(self) -> np.ndarray:
+        """``M^-1`` (computed once, from the Cholesky factor)."""
+        if "minv" not in self._cache:
+            import scipy.linalg
+
+            self._cache["minv"] = scipy.linalg.cho_solve((self._chol, True), np.eye(self.dofs))
+        return self._cache["minv"]
 
     @property
     def directions(self) -> np.ndarray:

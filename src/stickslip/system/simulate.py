@@ -132,12 +132,14 @@ def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, relea
         st[worst] = 1 if forces[worst] > 0 else -1
     flow = Flow.cached(system, tuple(st), flows)
     a = flow.acceleration(z)
+    n = system.dofs
+    terms = np.abs(flow.A[n:2 * n]) @ np.abs(z)  # the size of what the accelerations sum (their round-off)
     for i in zero:
         if st[i] == 0:
             continue
         c = system.contacts[i]
         rate = -c.direction @ a  # d v_r / dt
-        size = np.abs(c.direction) @ np.abs(a) + 1e-300
+        size = np.abs(c.direction) @ terms + 1e-300
         if st[i] * rate < -1e-9 * size:
             raise NoSolutionError(f"no consistent contact state at contact {i}: released to slip with sign {st[i]}, "
                                   f"its slip velocity would change with sign {-st[i]} (a Painleve-like paradox "
