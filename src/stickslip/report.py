@@ -120,7 +120,8 @@ def _load_or_compute(spec: FigureSpec, data_dir: Path, quick: bool, fingerprint:
         cache.mkdir(exist_ok=True)
         options["cache"] = cache
     ds = spec.compute(quick, **options)
-    domain = "oscillator" if spec.model.startswith("1-DOF") else "halfspace" if "half-space" in spec.model else "brake"
+    domain = ("oscillator" if spec.model.startswith("1-DOF") else "halfspace" if "half-space" in spec.model else
+              "rsf" if "rate-and-state" in spec.model else "system" if "frictional contact" in spec.model else "brake")
     ds.attrs.update({"fingerprint": fingerprint, "quick": int(quick), "figure": spec.key})
     ds = finish(ds, spec.title, domain, history=f"stickslip reproduce{' --quick' if quick else ''} (figure {spec.key})")
     tmp = path.with_suffix(".nc.partial")

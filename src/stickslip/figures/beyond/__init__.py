@@ -1,0 +1,1 @@
+"""Figures beyond the paper: models the paper does not treat, each checked on closed forms."""
