@@ -18,7 +18,7 @@ import stickslip
 
 #: Every unit string stickslip may write: UDUNITS-2 spellings of SI units, "1" for dimensionless.
 UNITS = {"1", "m", "s", "kg", "N", "Pa", "J", "rad", "Hz", "m/s", "m s-1", "1/s", "s-1", "rad/s", "N/m",
-         "N s/m", "J/kg", "m2", "Pa s", "kg/m3", "N s3/m3", "J/m"}
+         "N s/m", "J/kg", "m2", "Pa s", "kg/m3", "N s3/m3", "J/m", "Pa/m", "kg/m2"}
 _CODE_NAMES = re.compile(r"(^|_)(state|regime)$")
 _REPR = re.compile(r"^\s*[\[{(].*[:,].*[\]})]\s*$|^(True|False|None)$")
 

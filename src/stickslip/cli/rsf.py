@@ -16,7 +16,7 @@ from .common import Replace, declared, emit, output_path, overwrite_needs, write
 _emit = functools.partial(emit, model="rsf")
 
 app = typer.Typer(no_args_is_help=True, rich_markup_mode=None,
-                  help="The spring-slider with rate-and-state friction (per unit area: Pa, Pa/m, kg/m^2).")
+                  help="The spring-slider with rate-and-state friction (per unit area: Pa, Pa/m, kg/m2).")
 
 
 class Evolution(str, Enum):

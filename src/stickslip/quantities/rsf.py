@@ -1,5 +1,5 @@
 """Rate-and-state friction and the spring-slider (`stickslip.rsf`), in SI units per unit area
-of the interface: stresses in Pa, a spring's stiffness in Pa/m, a slider's mass in kg/m^2.
+of the interface: stresses in Pa, a spring's stiffness in Pa/m, a slider's mass in kg/m2.
 
 The ranges span laboratory rock and polymer friction (``a`` and ``b`` about 1e-3 to 1e-1,
 ``D_c`` micrometres) to fault models (``D_c`` up to metres, stresses up to gigapascals).
@@ -32,7 +32,7 @@ RSF = Domain("rsf", units="SI, per unit area of the interface", quantities=[
     Q("normal_stress", "Pa", "normal stress on the interface", "[1e-3, 1e10]", symbol="sigma",
       why="from a gel's interface to the deepest seismogenic faults"),
     Q("stiffness", "Pa/m", "stiffness of the loading spring per unit area", "[1e-6, 1e18]", symbol="k"),
-    Q("mass", "kg/m^2", "slider mass per unit area (0: quasi-static)", "[0, 1e15]", symbol="m"),
+    Q("mass", "kg/m2", "slider mass per unit area (0: quasi-static)", "[0, 1e15]", symbol="m"),
     Q("load_velocity", "m/s", "load-point velocity (0: a hold)", "[0, 1e4]", symbol="V_lp"),
     Q("history_time", "s", "time at which the load-point velocity takes its next value", "[0, 1e300]"),
     Q("v_init", "m/s", "initial slip rate (the state starts at its steady value for it)", "[1e-20, 1e4]",

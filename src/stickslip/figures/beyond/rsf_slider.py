@@ -36,7 +36,7 @@ def compute(quick: bool) -> xr.Dataset:
         {"friction": (("law", "t"), np.array(friction), {"units": "1", "long_name": "friction coefficient"}),
          "critical_stiffness": ("eta", np.array(kc), {"units": "Pa/m", "long_name": "critical stiffness"}),
          "hopf_frequency": ("eta", np.array(omega), {"units": "rad/s", "long_name": "Hopf frequency"})},
-        coords={"law": ("law", list(LAWS)), "t": ("t", t, {"units": "s", "long_name": "time"}),
+        coords={"law": ("law", list(LAWS), {"long_name": "evolution law of the state"}), "t": ("t", t, {"units": "s", "long_name": "time"}),
                 "eta": ("eta", eta, {"units": "1", "long_name": "inertia m V^2 / (sigma a D_c)"})},
         attrs={"a": A, "b": B, "dc": DC, "normal_stress": SIGMA, "f0": F0, "v_ref": V0, "stiffness": K})
 
