@@ -13,7 +13,7 @@ from stickslip.errors import ParameterError
 from stickslip.friction import Coulomb, LinearWeakening
 from stickslip.system import Contact, System, limit_cycle, monodromy, simulate, steady_sliding
 
-from .test_floquet import end_state, finite_differences
+from .test_floquet import end_state, finite_differences, return_map_moduli
 
 K11, K12, K22, KH = 1.1, -0.3, 0.5, 0.5
 
@@ -99,23 +99,7 @@ def test_the_cycle_beyond_flutter_closes_and_its_multipliers_are_those_of_its_re
     np.testing.assert_allclose(end_state(again), np.concatenate([cycle.x0, cycle.v0]), atol=1e-8)
     assert np.min(np.abs(cycle.multipliers - 1.0)) < 1e-8
     assert cycle.state == 2 or cycle.state == 1  # its section: the contact opening or closing
-    z0 = np.concatenate([cycle.x0, cycle.v0])
-    # coordinates on the section N(x) = 0 (y fixed): x, vx, vy
-    free = [0, 2, 3]
-
-    def return_map(z):
-        run = simulate(system, z[:2], z[2:], 3 * cycle.period, samples=2, segments=True, states=cycle.states)
-        for seg, nxt in zip(run.segments, run.segments[1:]):
-            if seg.after[0] == cycle.state != seg.states[0]:
-                return nxt.z[:4]
-        raise AssertionError("no return")
-
-    eps, J = 1e-6, np.zeros((3, 3))
-    for j, c in enumerate(free):
-        d = np.zeros(4)
-        d[c] = eps
-        J[:, j] = (return_map(z0 + d)[free] - return_map(z0 - d)[free]) / (2 * eps)
-    poincare = np.sort(np.abs(np.linalg.eigvals(J)))
+    poincare = return_map_moduli(system, cycle, [0, 2, 3])  # on the section N(x) = 0 (y fixed): x, vx, vy
     others = np.delete(cycle.multipliers, np.argmin(np.abs(cycle.multipliers - 1.0)))
     np.testing.assert_allclose(np.sort(np.abs(others)), poincare, atol=1e-6)
 

@@ -104,15 +104,13 @@ class SliderRun(Result):
                 "slip_end": float(self.slip[-1]), "steps": self.steps}
 
     def to_xarray(self) -> xr.Dataset:
-        def var(values, name):
-            return ("t",), values, {"units": Q[name].units, "long_name": Q[name].meaning}
-
-        data = {name: var(getattr(self, name), name) for name in ("slip_rate", "friction", "shear_stress", "slip",
-                                                                  "load_point")}
-        data["theta"] = var(self.theta[:, 0], "theta")
+        """Units and meanings from the declarations (`stickslip.cf.finish`)."""
+        data = {name: ("t", getattr(self, name)) for name in ("slip_rate", "friction", "shear_stress", "slip",
+                                                              "load_point")}
+        data["theta"] = ("t", self.theta[:, 0])
         if self.theta.shape[1] > 1:
-            data["theta2"] = var(self.theta[:, 1], "theta2")
-        ds = xr.Dataset(data, coords={"t": var(self.t, "t")}, attrs={"steps": self.steps})
+            data["theta2"] = ("t", self.theta[:, 1])
+        ds = xr.Dataset(data, coords={"t": self.t}, attrs={"steps": self.steps})
         return finish(ds, "spring-slider with rate-and-state friction", "rsf")
 
 

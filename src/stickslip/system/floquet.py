@@ -24,7 +24,7 @@ from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import SYSTEM as Q
 from ..results import Result
-from .flow import OPEN, Flow
+from .flow import STATE_FLAGS, Flow
 from .model import System
 from .simulate import SystemRun, simulate
 
@@ -93,23 +93,16 @@ class SystemCycle(Result):
                 "events": int(self.event_time.size), "x0": self.x0.tolist(), "v0": self.v0.tolist()}
 
     def to_xarray(self) -> xr.Dataset:
-        def var(dims, values, name):
-            return dims, values, {"units": Q[name].units, "long_name": Q[name].meaning}
-
-        m, n = self.multipliers, self.x0.size
+        """Units and meanings from the declarations (`stickslip.cf.finish`)."""
+        m = self.multipliers
         ds = xr.Dataset(
-            {"multiplier_real": var(("multiplier",), m.real, "multiplier_real"),
-             "multiplier_imag": var(("multiplier",), m.imag, "multiplier_imag"),
-             "x0": var(("dof",), self.x0, "x0"), "v0": var(("dof",), self.v0, "v0"),
-             "event_time": var(("event",), self.event_time, "event_time"),
-             "event_contact": var(("event",), self.event_contact, "event_contact"),
-             "event_state": var(("event",), self.event_state.astype(np.int8), "event_state")},
-            coords={"dof": var(("dof",), np.arange(n), "dof"),
-                    "event": var(("event",), np.arange(self.event_time.size), "event")},
+            {"multiplier_real": ("multiplier", m.real), "multiplier_imag": ("multiplier", m.imag),
+             "x0": ("dof", self.x0), "v0": ("dof", self.v0),
+             "event_time": ("event", self.event_time), "event_contact": ("event", self.event_contact),
+             "event_state": ("event", self.event_state.astype(np.int8), STATE_FLAGS)},
+            coords={"dof": np.arange(self.x0.size), "event": np.arange(self.event_time.size)},
             attrs={"period": self.period, "stable": int(self.stable), "section_contact": self.contact,
                    "section_state": self.state})
-        ds["event_state"].attrs.update(flag_values=np.array([-1, 0, 1, OPEN], dtype=np.int8),
-                                       flag_meanings="reverse_slip stick slip open")
         return finish(ds, "system with frictional contacts: limit cycle and its Floquet multipliers", "system")
 
 

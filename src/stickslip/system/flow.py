@@ -26,7 +26,7 @@ from scipy.optimize import brentq
 
 from .model import System
 
-__all__ = ["Flow", "SLIP_ZERO", "STICK_LIMIT", "LAW_LIMIT", "OPENING", "CLOSING", "OPEN"]
+__all__ = ["Flow", "SLIP_ZERO", "STICK_LIMIT", "LAW_LIMIT", "OPENING", "CLOSING", "OPEN", "STATE_FLAGS"]
 
 _EPS = np.finfo(float).eps
 #: Steps per fastest time scale ``1/max|eig(A)|`` of the event search: a switching function
@@ -42,6 +42,8 @@ EXPM_AFTER = 64
 SLIP_ZERO, STICK_LIMIT, LAW_LIMIT, OPENING, CLOSING = 0, 1, 2, 3, 4
 #: The state of an open contact (no force; the others are -1, 0, 1: reverse slip, stick, slip).
 OPEN = 2
+#: CF flags of a variable of contact states.
+STATE_FLAGS = {"flag_values": np.array([-1, 0, 1, OPEN], dtype=np.int8), "flag_meanings": "reverse_slip stick slip open"}
 
 
 def _root(fun, a: float, b: float) -> float:
@@ -54,8 +56,7 @@ class Flow:
     def __init__(self, system: System, states: tuple[int, ...]):
         n = system.dofs
         self.states = tuple(int(s) for s in states)
-        M, W = system.mass, system.directions
-        Minv = system.inverse_mass
+        W, Minv = system.directions, system.inverse_mass
         stuck = [i for i, s in enumerate(self.states) if s == 0]
         c_eff = system.damping.copy()
         k_eff = system.stiffness.copy()
@@ -99,8 +100,6 @@ class Flow:
         A[n:2 * n, -1] = P @ g
         self.A, self.n = A, n
         self.force_rows = force_rows
-        #: Each contact's normal force as a row on z (zero while open).
-        self.normal_rows = normal
         slip = np.zeros((len(self.states), 2 * n + 1))  # v_r = V - w . v
         slip[:, n:2 * n] = -W.T
         slip[:, -1] = [c.surface_speed for c in system.contacts]

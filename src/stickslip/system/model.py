@@ -19,6 +19,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+import scipy.linalg
 
 from ..errors import ParameterError
 from ..friction import FrictionLaw
@@ -160,16 +161,9 @@ class System:
         return self.mass.shape[0]
 
     @property
-    def cholesky(self) -> np.ndarray:
-        """The lower Cholesky factor ``L`` of the mass matrix (``M = L L^T``)."""
-        return self._chol
-
-    @property
     def inverse_mass(self) -> np.ndarray:
         """``M^-1`` (computed once, from the Cholesky factor)."""
         if "minv" not in self._cache:
-            import scipy.linalg
-
             self._cache["minv"] = scipy.linalg.cho_solve((self._chol, True), np.eye(self.dofs))
         return self._cache["minv"]
 

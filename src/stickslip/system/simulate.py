@@ -23,7 +23,7 @@ from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import SYSTEM as Q
 from ..results import Result
-from .flow import CLOSING, LAW_LIMIT, OPEN, OPENING, Flow
+from .flow import CLOSING, LAW_LIMIT, OPEN, OPENING, STATE_FLAGS, Flow
 from .model import System
 
 __all__ = ["SystemRun", "Segment", "simulate", "choose_states"]
@@ -58,24 +58,15 @@ class SystemRun(Result):
                 "x_end": self.x[-1].tolist(), "v_end": self.v[-1].tolist(), "states_end": self.states[-1].tolist()}
 
     def to_xarray(self) -> xr.Dataset:
-        def var(dims, values, name):
-            units, meaning = Q[name].units, Q[name].meaning
-            return dims, values, {"units": units, "long_name": meaning}
-
+        """Units and meanings from the declarations (`stickslip.cf.finish`)."""
         n, k = self.x.shape[1], self.states.shape[1]
         ds = xr.Dataset(
-            {"x": var(("t", "dof"), self.x, "x"), "v": var(("t", "dof"), self.v, "v"),
-             "contact_state": var(("t", "contact"), self.states.astype(np.int8), "contact_state"),
-             "friction_force": var(("t", "contact"), self.friction_force, "friction_force"),
-             "event_time": var(("event",), self.event_time, "event_time"),
-             "event_contact": var(("event",), self.event_contact, "event_contact"),
-             "event_state": var(("event",), self.event_state.astype(np.int8), "event_state")},
-            coords={"t": var(("t",), self.t, "t"), "dof": var(("dof",), np.arange(n), "dof"),
-                    "contact": var(("contact",), np.arange(k), "contact"),
-                    "event": var(("event",), np.arange(self.event_time.size), "event")})
-        for name in ("contact_state", "event_state"):
-            ds[name].attrs.update(flag_values=np.array([-1, 0, 1, OPEN], dtype=np.int8),
-                                  flag_meanings="reverse_slip stick slip open")
+            {"x": (("t", "dof"), self.x), "v": (("t", "dof"), self.v),
+             "contact_state": (("t", "contact"), self.states.astype(np.int8), STATE_FLAGS),
+             "friction_force": (("t", "contact"), self.friction_force),
+             "event_time": ("event", self.event_time), "event_contact": ("event", self.event_contact),
+             "event_state": ("event", self.event_state.astype(np.int8), STATE_FLAGS)},
+            coords={"t": self.t, "dof": np.arange(n), "contact": np.arange(k), "event": np.arange(self.event_time.size)})
         return finish(ds, "system with frictional contacts: event-driven simulation", "system")
 
 
@@ -102,7 +93,7 @@ def _zero_slip(system: System, z: np.ndarray, stuck: list[int]) -> np.ndarray:
     W = system.directions[:, stuck]
     V = np.array([system.contacts[i].surface_speed for i in stuck])
     v = z[n:2 * n]
-    MiW = np.linalg.solve(system.mass, W)
+    MiW = system.inverse_mass @ W
     z = z.copy()
     z[n:2 * n] = v + MiW @ np.linalg.lstsq(W.T @ MiW, V - W.T @ v, rcond=None)[0]
     return z

@@ -18,12 +18,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.linalg
 import xarray as xr
 
 from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
-from ..quantities import SYSTEM as Q
 from ..results import Result
 from .model import System
 
@@ -58,16 +56,12 @@ class SteadySliding(Result):
                 "eigenvalue_real": self.eigenvalues.real.tolist(), "eigenvalue_imag": self.eigenvalues.imag.tolist()}
 
     def to_xarray(self) -> xr.Dataset:
-        def var(dims, values, name):
-            return dims, values, {"units": Q[name].units, "long_name": Q[name].meaning}
-
-        n, k = self.x.size, self.friction_force.size
+        """Units and meanings from the declarations (`stickslip.cf.finish`)."""
         ds = xr.Dataset(
-            {"x": var(("dof",), self.x, "x"), "friction_force": var(("contact",), self.friction_force, "friction_force"),
-             "eigenvalue_real": var(("mode",), self.eigenvalues.real, "eigenvalue_real"),
-             "eigenvalue_imag": var(("mode",), self.eigenvalues.imag, "eigenvalue_imag")},
-            coords={"dof": var(("dof",), np.arange(n), "dof"), "contact": var(("contact",), np.arange(k), "contact"),
-                    "mode": var(("mode",), np.arange(self.eigenvalues.size), "mode")},
+            {"x": ("dof", self.x), "friction_force": ("contact", self.friction_force),
+             "eigenvalue_real": ("mode", self.eigenvalues.real), "eigenvalue_imag": ("mode", self.eigenvalues.imag)},
+            coords={"dof": np.arange(self.x.size), "contact": np.arange(self.friction_force.size),
+                    "mode": np.arange(self.eigenvalues.size)},
             attrs={"stable": int(self.stable), "growth_rate": self.growth_rate})
         return finish(ds, "system with frictional contacts: steady sliding and its linear stability", "system")
 
@@ -111,7 +105,7 @@ def steady_sliding(system: System) -> SteadySliding:
                 raise NoSolutionError(f"contact {i} is open at the resting position (its normal force would be "
                                       f"{normal:.6g} N): no steady sliding on it")
             forces[i] = np.sign(c.surface_speed) * float(c.friction.kinetic(abs(c.surface_speed))) * normal
-    Minv = scipy.linalg.cho_solve((system.cholesky, True), np.eye(n))
+    Minv = system.inverse_mass
     A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ k_eff, -Minv @ c_eff]])
     eig = np.linalg.eigvals(A)
     eig = eig[np.lexsort((-eig.imag, -eig.real))]
