@@ -102,3 +102,13 @@ def test_a_key_of_the_file_is_named(tmp_path, capsys):
     (tmp_path / "s.toml").write_text(text)
     assert run(["system", "cycle", str(tmp_path / "s.toml")]) == 2
     assert "contact[0].fs" in capsys.readouterr().err
+
+
+def test_a_problem_found_after_reading_names_the_files_key(tmp_path, capsys):
+    """Steady sliding refuses a contact on a surface at rest: the command line names it as the file
+    does (contact[1]), not as Python does (contacts[1])."""
+    text = Path(SYSTEM_FILE).read_text().replace("surface_speed = 0.1", "surface_speed = 0.0")
+    (tmp_path / "s.toml").write_text(text)
+    assert run(["system", "stability", str(tmp_path / "s.toml")]) == 2
+    err = capsys.readouterr().err
+    assert "contact[1].surface_speed" in err and "contacts[" not in err

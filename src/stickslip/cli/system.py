@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import functools
 from pathlib import Path
 from typing import Annotated, Optional
@@ -34,6 +35,18 @@ def _load(path: Path):
     return load_system(path)
 
 
+@contextlib.contextmanager
+def _file_keys():
+    """A problem found after the file was read (steady sliding of a contact on a surface at rest)
+    names its key as the file writes it."""
+    from ..system.config import as_file_keys
+
+    try:
+        yield
+    except ParameterError as err:
+        raise as_file_keys(err) from None
+
+
 def _numbers(option: str, text: str | None, n: int):
     """``--x0 "0.1, 0.2"``: ``n`` numbers (None if not given); each is checked by the library."""
     if text is None:
@@ -64,8 +77,9 @@ def simulate_cmd(file: File, t_end: Annotated[float, declared(Q["t_end"], "--t-e
 
     system = _load(file)
     n = system.dofs
-    run = simulate(system, _numbers("--x0", x0, n), _numbers("--v0", v0, n), t_end, samples=samples,
-                   max_events=max_events)
+    with _file_keys():
+        run = simulate(system, _numbers("--x0", x0, n), _numbers("--v0", v0, n), t_end, samples=samples,
+                       max_events=max_events)
     _emit(run.to_dict(), json, "simulation")
     if out is not None:
         write_netcdf(run.to_xarray(), out)
@@ -83,8 +97,9 @@ def cycle(file: File, x0: X0 = None, v0: V0 = None,
 
     system = _load(file)
     n = system.dofs
-    result = limit_cycle(system, _numbers("--x0", x0, n), _numbers("--v0", v0, n), transient=transient, tol=tol,
-                         max_iter=max_iter)
+    with _file_keys():
+        result = limit_cycle(system, _numbers("--x0", x0, n), _numbers("--v0", v0, n), transient=transient,
+                             tol=tol, max_iter=max_iter)
     _emit(result.to_dict(), json, "limit cycle")
     if out is not None:
         write_netcdf(result.to_xarray(), out)
@@ -96,7 +111,9 @@ def stability(file: File, json: Json = False, out: Out = None, overwrite: Replac
     out = _out(out, overwrite)
     from ..system import steady_sliding
 
-    result = steady_sliding(_load(file))
+    system = _load(file)
+    with _file_keys():
+        result = steady_sliding(system)
     _emit(result.to_dict(), json, "steady sliding")
     if out is not None:
         write_netcdf(result.to_xarray(), out)

@@ -30,7 +30,7 @@ from ..errors import MISSING, ParameterError
 from ..friction import make_law
 from .model import Contact, System
 
-__all__ = ["load_system", "system_from_dict"]
+__all__ = ["load_system", "system_from_dict", "as_file_keys"]
 
 _TOP = ("mass", "stiffness", "damping", "force", "contact")
 _CONTACT = ("direction", "normal_force", "surface_speed", "law", "fs", "fd", "tau", "name", "normal_direction",
@@ -82,9 +82,15 @@ def system_from_dict(data: dict) -> System:
         return System(data["mass"], data["stiffness"], contacts, damping=data.get("damping"),
                       force=data.get("force"))
     except ParameterError as err:
-        if err.name.startswith("contacts["):
-            raise ParameterError(err.name.replace("contacts[", "contact[", 1), err.value, err.allowed) from None
-        raise
+        raise as_file_keys(err) from None
+
+
+def as_file_keys(err: ParameterError) -> ParameterError:
+    """``err`` naming a contact as the file does (``contact[1].surface_speed``, not the Python
+    ``contacts[1].surface_speed``): for the errors of a system read from a file."""
+    if not err.name.startswith("contacts["):
+        return err
+    return ParameterError(err.name.replace("contacts[", "contact[", 1), err.value, err.allowed, also=err.also)
 
 
 def load_system(path) -> System:

@@ -95,8 +95,10 @@ def steady_sliding(system: System) -> SteadySliding:
         c_eff += c.normal_force * slope * np.outer(c.direction, c.direction)
     sv = np.linalg.svd(k_eff, compute_uv=False)
     if sv[-1] <= 1e-13 * sv[0]:
-        raise NoSolutionError("the stiffness matrix is singular: the structure has no unique resting position "
-                              "under sliding contacts (a free body, or a mechanism)")
+        cond = f"condition number {sv[0] / sv[-1]:.3g}" if sv[-1] > 0 else "exactly singular"
+        raise NoSolutionError(f"the stiffness matrix (with the contacts' springs) is singular to working accuracy "
+                              f"({cond} > 1e13): no resting position under sliding contacts can be computed (a free "
+                              "body, a mechanism, or stiffnesses 13 decades apart)")
     x = np.linalg.solve(k_eff, load)
     for i, c in enumerate(system.contacts):
         if c.unilateral:
