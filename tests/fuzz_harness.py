@@ -253,9 +253,10 @@ class Trial:
         return self.code == "hang"
 
 
-#: Commands that write Zarr stores: zarr keeps an event-loop thread, which a forked child
-#: does not inherit (the child would wait on it forever), so these run in a fresh interpreter.
-FRESH = ("oscillator map", "brake map", "brake campaign", "reproduce")
+#: Commands that write Zarr stores or start Dask: zarr keeps an event-loop thread, which a forked
+#: child does not inherit (the child would wait on it forever), so these run in a fresh interpreter
+#: ("sweep" was forked: CI saw 'sweep --workers 1' wait 300 s after the dashboard line, 2026-11-26).
+FRESH = ("oscillator map", "brake map", "brake campaign", "reproduce", "sweep")
 
 
 def trial(args: list[str], timeout: float = 60.0) -> Trial:
