@@ -4,7 +4,8 @@
 through closed-form flows between contact events (`Flow`); `monodromy` differentiates a run
 (saltation matrices at its events) and `limit_cycle` finds the periodic orbit a motion settles
 on, with its Floquet multipliers; `steady_sliding` the resting state under sliding contacts and its
-linear stability; `load_system` reads a system from a TOML file. One contact on one degree of
+linear stability; `relative_cycle` a wave moving by one cell of a symmetric structure and
+its multipliers; `load_system` reads a system from a TOML file. One contact on one degree of
 freedom is the oscillator of `stickslip.oscillator`.
 """
 
@@ -15,7 +16,9 @@ from .flow import Flow
 from .model import Contact, System
 from .simulate import Segment, SystemRun, choose_states, simulate
 from .steady import SteadySliding, steady_sliding
+from .symmetry import RelativeCycle, cell_symmetry, relative_cycle
 
 __all__ = ["Contact", "System", "Flow", "SystemRun", "Segment", "simulate", "choose_states", "monodromy",
            "saltation", "SystemCycle", "limit_cycle", "load_system", "system_from_dict",
-           "SteadySliding", "steady_sliding", "burridge_knopoff"]
+           "SteadySliding", "steady_sliding", "burridge_knopoff", "RelativeCycle", "cell_symmetry",
+           "relative_cycle"]

@@ -28,7 +28,7 @@ from .flow import STATE_FLAGS, Flow
 from .model import System
 from .simulate import SystemRun, simulate
 
-__all__ = ["monodromy", "saltation", "SystemCycle", "limit_cycle"]
+__all__ = ["monodromy", "saltation", "jump", "SystemCycle", "limit_cycle", "return_fixed_point"]
 
 
 def saltation(f_minus: np.ndarray, f_plus: np.ndarray, normal: np.ndarray) -> np.ndarray:
@@ -40,9 +40,34 @@ def saltation(f_minus: np.ndarray, f_plus: np.ndarray, normal: np.ndarray) -> np
     return np.eye(f_minus.size) + np.outer(f_plus - f_minus, normal) / rate
 
 
+def jump(system: System, segment, z: np.ndarray, flows: dict, skip: int | None = None) -> tuple:
+    """``(S, f)``: the saltation matrix of the events that ended ``segment`` (at its end state
+    ``z``) and the field ``f`` after them. Events at the same instant (of contacts a symmetry
+    makes switch together) are taken one contact after another, each with its own switching
+    function and the fields before and after its own switch; for contacts that do not touch
+    each other's switching functions the order does not matter. Without the contact ``skip``
+    (its own switch is the section's, projected by the caller)."""
+    n = system.dofs
+    flow = Flow.cached(system, segment.states, flows)
+    states = list(segment.states)
+    out = np.eye(2 * n)
+    f_minus = (flow.A @ z)[:2 * n]
+    done = set()
+    for r in segment.rows:
+        owner = int(flow.owners[r])
+        if owner in done or owner == skip or segment.after[owner] == states[owner]:
+            continue
+        done.add(owner)
+        states[owner] = segment.after[owner]
+        f_plus = (Flow.cached(system, tuple(states), flows).A @ z)[:2 * n]
+        out = saltation(f_minus, f_plus, flow.rows[r][:2 * n]) @ out
+        f_minus = f_plus
+    return out, f_minus
+
+
 def monodromy(system: System, run: SystemRun | tuple) -> np.ndarray:
     """``d(x, v)(t_end) / d(x, v)(0)`` of a run simulated with ``segments=True`` (or of a tuple
-    of its segments: up to just after the last one's event)."""
+    of its segments: up to just after the last one's events)."""
     segments = run if isinstance(run, tuple) else run.segments
     if not segments:
         raise ParameterError("run", "a run without segments", "a run of simulate(..., segments=True)")
@@ -53,13 +78,8 @@ def monodromy(system: System, run: SystemRun | tuple) -> np.ndarray:
         flow = Flow.cached(system, seg.states, flows)
         step = expm(seg.duration * flow.A)
         out = step[:2 * n, :2 * n] @ out
-        if not seg.rows:
-            continue
-        z = step @ seg.z
-        normal = flow.rows[seg.rows[0]][:2 * n]
-        f_minus = (flow.A @ z)[:2 * n]
-        f_plus = (Flow.cached(system, seg.after, flows).A @ z)[:2 * n]
-        out = saltation(f_minus, f_plus, normal) @ out
+        if seg.rows:
+            out = jump(system, seg, step @ seg.z, flows)[0] @ out
     return out
 
 
@@ -116,32 +136,84 @@ def _after(run: SystemRun, signature) -> list[tuple]:
     return out
 
 
-def _newton_step(system: System, segments: tuple, residual: np.ndarray, states: tuple) -> np.ndarray:
+def _newton_step(system: System, segments: tuple, residual: np.ndarray, states: tuple, target: int,
+                 back: np.ndarray) -> np.ndarray:
     """The change ``d`` of the start on the section that makes the return map's linearisation
     return to it: ``(P' - I) d = -r``, keeping every sticking contact's slip velocity zero (least
-    squares). ``P' = (I - f- n^T / (n . f-)) Phi-`` is the derivative of the return map: the
-    monodromy up to just before the return ``Phi-``, the end moved along the flow ``f-`` to the
-    section ``n`` (not ``Phi``, which is the derivative at a fixed time)."""
+    squares). ``P' = B (I - f n^T / (n . f)) S Phi-`` is the derivative of the return map: the
+    monodromy up to just before the return ``Phi-``, the saltation ``S`` of other contacts
+    switching at that instant, the end moved along the flow ``f`` to the section ``n`` of the
+    contact ``target`` (not ``Phi``, which is the derivative at a fixed time), and mapped back by
+    the permutation ``B`` (the identity for a plain cycle)."""
     n = system.dofs
-    end = segments[-1]
-    flow = Flow(system, end.states)
+    end, flows = segments[-1], {}
+    flow = Flow.cached(system, end.states, flows)
     before = monodromy(system, segments[:-1]) if len(segments) > 1 else np.eye(2 * n)
     phi = expm(end.duration * flow.A)
     ze = phi @ end.z
-    phi = phi[:2 * n, :2 * n] @ before
-    normal = flow.rows[end.rows[0]][:2 * n]
-    f_minus = (flow.A @ ze)[:2 * n]
+    others, f_minus = jump(system, end, ze, flows, skip=target)
+    phi = others @ phi[:2 * n, :2 * n] @ before
+    row = next(r for r in end.rows if flow.owners[r] == target)
+    normal = flow.rows[row][:2 * n]
     rate = float(normal @ f_minus)
     if rate == 0.0:
         raise NoSolutionError("a grazing return to the section: no Newton step")
-    deriv = phi - np.outer(f_minus, normal @ phi) / rate
-    rows = [deriv - np.eye(2 * n), normal[None, :]]
+    deriv = (phi - np.outer(f_minus, normal @ phi) / rate)[back]
+    rows = [deriv - np.eye(2 * n), normal[back][None, :]]  # the section at the start: n . B^-1 z
     for i, st in enumerate(states):
         if st == 0:
             rows.append(np.concatenate([np.zeros(n), system.contacts[i].direction])[None, :])
     rhs = np.concatenate([-residual[:2 * n], np.zeros(sum(r.shape[0] for r in rows[1:]))])
     d = np.linalg.lstsq(np.vstack(rows), rhs, rcond=None)[0]
     return np.concatenate([d, [0.0]])
+
+
+def return_fixed_point(system: System, z: np.ndarray, states: tuple, signature: tuple, horizon: float, tol: float,
+                       max_iter: int, symmetry: tuple | None = None, newton_after: int = 2) -> tuple:
+    """The start ``z`` (``(x, v, 1)`` just after contact ``signature[0]`` entered the state
+    ``signature[1]``, every contact's state ``states``) to which the return map comes back to
+    ``tol`` (relative): ``(time of the return, z, states, segments of the return)``.
+
+    The return is the next such event of the same contact, or with ``symmetry`` =
+    ``(target, back, contacts_back)`` of the contact ``target``, the state at it mapped back
+    by the permutation ``back`` of ``(x, v)`` (``z[back]``) and the contacts' states by
+    ``contacts_back``: a relative periodic orbit (a wave moving by one cell of a symmetric
+    structure). The map is iterated, then (after ``newton_after`` iterations, once near and the
+    contact states repeating) solved by Newton's method; where a Newton step leaves the
+    neighbourhood it goes back to iterating."""
+    n = system.dofs
+    target, back, contacts_back = symmetry or (signature[0], np.arange(2 * n), np.arange(len(system.contacts)))
+    newton, fixed = False, None
+    for it in range(max_iter):
+        try:
+            one = simulate(system, z[:n], z[n:2 * n], horizon, samples=2, segments=True, states=states)
+            ret = [r for r in _after(one, (target, signature[1])) if r[0] > 0.0]
+        except (ParameterError, NoSolutionError):
+            if not newton:
+                raise
+            ret = []
+        if not ret and newton and fixed is not None:  # the Newton step left the neighbourhood: iterate instead
+            (z, states), newton = fixed, False
+            continue
+        if not ret:
+            raise NoSolutionError(f"contact {target} did not enter state {signature[1]} within {horizon:g} s of "
+                                  f"the start: no {'periodic orbit' if symmetry is None else 'travelling wave'} "
+                                  f"through that event (tried {it + 1} returns)")
+        period, z_next, last, next_states = ret[0]
+        z_next = np.concatenate([z_next[:2 * n][back], [1.0]])
+        next_states = tuple(next_states[i] for i in contacts_back)
+        residual = z_next - z
+        size = max(1.0, np.abs(z).max())
+        if np.abs(residual).max() <= tol * size:
+            return period, z, states, one.segments[:last + 1]
+        fixed = (z_next, next_states)
+        newton = it >= newton_after and next_states == states and np.abs(residual).max() < 1e-2 * size
+        if newton:
+            z = z + _newton_step(system, one.segments[:last + 1], residual, states, target, back)
+        else:
+            z, states = z_next, next_states
+    raise NoSolutionError(f"the return map did not come back to its start within tol = {tol:g} in {max_iter} "
+                          f"iterations (the last return missed it by {np.abs(residual).max():.3g})")
 
 
 def limit_cycle(system: System, x0=None, v0=None, *, transient: float = 100.0, tol: float = 1e-10,
@@ -168,35 +240,10 @@ def limit_cycle(system: System, x0=None, v0=None, *, transient: float = 100.0, t
     n = system.dofs
     z, states = crossings[-1][1], crossings[-1][3]
     horizon = transient if len(crossings) < 2 else 4.0 * (crossings[-1][0] - crossings[-2][0])
-    newton = False
-    for it in range(max_iter):
-        try:
-            one = simulate(system, z[:n], z[n:2 * n], horizon, samples=2, segments=True, states=states)
-            ret = [r for r in _after(one, signature) if r[0] > 0.0]
-        except (ParameterError, NoSolutionError):
-            if not newton:
-                raise
-            ret = []
-        if not ret and newton:  # the Newton step left the cycle's neighbourhood: iterate the map instead
-            z, states, newton = z_fixed, states_fixed, False
-            continue
-        if not ret:
-            raise NoSolutionError(f"contact {signature[0]} did not enter state {signature[1]} again within "
-                                  f"{horizon:g} s: no periodic orbit through that event")
-        period, z_next, last, next_states = ret[0]
-        residual = z_next - z
-        size = max(1.0, np.abs(z).max())
-        if np.abs(residual).max() <= tol * size:
-            break
-        z_fixed, states_fixed = z_next, next_states
-        newton = it >= 2 and next_states == states and np.abs(residual).max() < 1e-2 * size
-        if newton:
-            z = z + _newton_step(system, one.segments[:last + 1], residual, states)
-        else:
-            z, states = z_next, next_states
-    start = one.segments[0].states
-    mult = np.linalg.eigvals(monodromy(system, one.segments[:last + 1]))
+    period, z, start, segments = return_fixed_point(system, z, states, signature, horizon, tol, max_iter)
+    mult = np.linalg.eigvals(monodromy(system, segments))
     mult = mult[np.argsort(-np.abs(mult))]
+    one = simulate(system, z[:n], z[n:2 * n], period * (1 + 1e-9), samples=2, states=start)
     inside = one.event_time <= period * (1 + 1e-12)  # the events of one period, the section's own last
     return SystemCycle(period, z[:n], z[n:2 * n], signature[0], signature[1], start, mult, one.event_time[inside],
                        one.event_contact[inside], one.event_state[inside])

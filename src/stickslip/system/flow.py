@@ -67,7 +67,7 @@ class Flow:
             if s == OPEN:
                 normal[j] = 0.0
                 continue
-            if c.unilateral:  # the contact's spring: N(x) n on the structure
+            if c.pushes:  # the contact's spring: N(x) n on the structure
                 k_eff += c.normal_stiffness * np.outer(c.normal_direction, c.normal_direction)
                 g += c.normal_direction * c.normal_force
             if s == 0:

@@ -53,7 +53,12 @@ class Contact:
     ``normal_stiffness`` ``k_n`` [N/m] the contact is unilateral: its normal force is
     ``N(x) = N_0 - k_n n . x`` (``normal_force`` is ``N_0``, the force at ``x = 0``) while it
     is positive, pushes the structure along ``n``, and the contact opens (no force at all) when
-    it would pull; it closes again where ``N(x)`` comes back to zero."""
+    it would pull; it closes again where ``N(x)`` comes back to zero. With
+    ``normal_on_structure=False`` the normal force only loads the contact and does not act on
+    these degrees of freedom: the normal motion is held by a rigid constraint eliminated from
+    the model, whose reaction ``N(x)`` depends on the state (the paper's ring, where ``U = delta``
+    in contact and ``P = g delta - D V_theta``); such a contact opening is the constraint
+    letting go, which the model does not follow (the run says so)."""
 
     direction: np.ndarray
     normal_force: float
@@ -62,6 +67,7 @@ class Contact:
     name: str = ""
     normal_direction: np.ndarray | None = None
     normal_stiffness: float = 0.0
+    normal_on_structure: bool = True
 
     def __post_init__(self):
         w = _vector("direction", self.direction, None, "direction")
@@ -74,6 +80,8 @@ class Contact:
             raise ParameterError("friction", self.friction, "a stickslip.friction.FrictionLaw")
         if not isinstance(self.name, str):
             raise ParameterError("name", self.name, "a text")
+        if not isinstance(self.normal_on_structure, (bool, np.bool_)):
+            raise ParameterError("normal_on_structure", self.normal_on_structure, "true or false")
         k_n = Q.check("normal_stiffness", self.normal_stiffness)
         object.__setattr__(self, "normal_stiffness", k_n)
         if self.normal_direction is None:
@@ -88,6 +96,12 @@ class Contact:
         if mu is None or mu[1] != 0.0:
             raise ParameterError("friction", type(self.friction).__name__, "Coulomb with a normal direction (the "
                                  "friction force of a law of the slip speed times N(x) is not linear)")
+
+    @property
+    def pushes(self) -> bool:
+        """True when the normal force ``N(x) n`` acts on the structure (a unilateral contact
+        with ``normal_on_structure``)."""
+        return self.unilateral and bool(self.normal_on_structure)
 
     @property
     def unilateral(self) -> bool:

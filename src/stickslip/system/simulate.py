@@ -228,7 +228,7 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
     st_out = np.empty((samples, k), dtype=np.int8)
     f_out = np.empty((samples, k))
     ev_t, ev_c, ev_s, pieces = [], [], [], []
-    t, j, instant = 0.0, 0, 0
+    t, j, instant, released = 0.0, 0, 0, {}
     while True:
         flow = Flow.cached(system, states, flows)
         t_next, z_next, hit = flow.first_event(z, t_end - t)
@@ -259,7 +259,8 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
         opening = {int(flow.owners[r]) for r in hit if flow.kinds[r] == OPENING}
         closing = {int(flow.owners[r]) for r in hit if flow.kinds[r] == CLOSING}
         hit = sorted({int(flow.owners[r]) for r in hit} - opening - closing)
-        released = {}
+        if not instant:  # a contact released stays released through further events at the same instant
+            released = {}  # (else two groups at their limits together re-stick each other in turn)
         for i in hit:
             if states[i] == 0:  # its force reached f_s N: released in its direction
                 released[i] = 1 if (flow.force_rows[i] @ z) > 0 else -1

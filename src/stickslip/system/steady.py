@@ -86,8 +86,9 @@ def steady_sliding(system: System) -> SteadySliding:
         mu, sign = float(c.friction.kinetic(speed)), float(np.sign(c.surface_speed))
         if c.unilateral:  # N(x) = N0 - k_n n.x pushes along n; the friction s mu N(x) along w (Coulomb)
             k_n, nv, w = c.normal_stiffness, c.normal_direction, c.direction
-            k_eff += k_n * np.outer(nv, nv) + sign * mu * k_n * np.outer(w, nv)
-            load += (nv + sign * mu * w) * c.normal_force
+            push = 1.0 if c.pushes else 0.0  # without: the reaction of an eliminated constraint
+            k_eff += push * k_n * np.outer(nv, nv) + sign * mu * k_n * np.outer(w, nv)
+            load += (push * nv + sign * mu * w) * c.normal_force
             continue
         forces[i] = c.normal_force * sign * mu
         load += c.direction * forces[i]

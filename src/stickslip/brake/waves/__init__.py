@@ -9,7 +9,8 @@
 * `continuation`: branches in ``delta``, ``gamma``, ``Omega`` or ``f`` with births and
   deaths of zones;
 * `checks`: independent re-integration with ``solve_ivp`` and the energy balance;
-* `stability`: growth of a small perturbation with an independent Moreau-type stepper.
+* `stability`: growth of a small perturbation with an independent Moreau-type stepper;
+* `spectrum`: the Floquet multipliers of the discrete ring's wave (node-shift map).
 """
 
 from .checks import energy_balance, integrate_wave
@@ -17,9 +18,11 @@ from .continuation import PARAMETERS, WaveBranch, WaveEvent, continue_waves
 from .result import REGIMES, TravellingWave, Zone, regime_name
 from .shoot import Orbit, stick_exit_orbit
 from .solve import find_waves, solve_layout, travelling_wave
+from .spectrum import WaveSpectrum, ring_system, wave_spectra, wave_spectrum
 from .stability import WavePersistence, wave_persistence
 from .zones import Scaling, ZoneFlows
 
 __all__ = ["TravellingWave", "Zone", "REGIMES", "regime_name", "travelling_wave", "find_waves", "solve_layout",
            "WaveBranch", "WaveEvent", "continue_waves", "PARAMETERS", "WavePersistence", "wave_persistence",
-           "energy_balance", "integrate_wave", "Scaling", "ZoneFlows", "Orbit", "stick_exit_orbit"]
+           "energy_balance", "integrate_wave", "WaveSpectrum", "ring_system", "wave_spectrum",
+           "wave_spectra", "Scaling", "ZoneFlows", "Orbit", "stick_exit_orbit"]

@@ -1,0 +1,173 @@
+"""The stability of a travelling wave: Floquet multipliers of the discrete ring's wave.
+
+The paper leaves the stability of its waves open. Here a wave in permanent contact (stick,
+slip and reverse-slip zones, no separation) is followed onto the ring of ``N`` nodes (second-order
+centred differences in ``theta``, as `wave_persistence` and `stickslip.brake.ring` discretise
+[12]): with ``U = delta`` at every node, each node's ``V_j`` is a degree of freedom,
+
+    V_j'' = a (V_{j+1} - 2 V_j + V_{j-1}) / dtheta^2 - h V_j + Q_j,
+
+and its contact with the shaft (surface speed 1 in internal units) a frictional contact of a
+`stickslip.system.System` whose normal force is the reaction of the constraint ``U = delta``,
+``P_j = g delta - D (V_{j+1} - V_{j-1}) / (2 dtheta)`` (Coulomb, ``Q_j = s f P_j`` slipping,
+``|Q_j| <= f P_j`` sticking). The ring is unchanged by the shift of one node, and the discrete
+wave moves by one node in ``tau ~ dtheta/|c|``: it is a relative periodic orbit, found by Newton's
+method from the sampled continuous wave (`stickslip.system.relative_cycle`), and its stability
+is that of the node-shift map (saltation matrices at every node's switch): a perturbation grows
+by ``|mu|^(N/n)`` over a wave period for each multiplier ``mu``. Repeated for growing ``N``, the
+discrete wave speed tends to the continuous one (second order) and the leading multipliers
+show whether the wave's stability converges (`wave_spectra`).
+
+Internal units (`zones.Scaling`): time ``t/sqrt(gamma)``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
+import xarray as xr
+
+from ...cf import finish
+from ...errors import NoSolutionError, ParameterError
+from ...friction import Coulomb
+from ...quantities import BRAKE as Q
+from ...results import Result
+from ...system import Contact, System, relative_cycle
+from .zones import SEPARATION, STICK, Scaling
+
+__all__ = ["ring_system", "WaveSpectrum", "wave_spectrum", "wave_spectra"]
+
+
+def ring_system(params, nodes: int) -> System:
+    """The ring of ``nodes`` nodes in contact with the shaft (see the module), internal units."""
+    nodes = Q.check("spectrum_nodes", nodes, "nodes")
+    sc = Scaling(params)
+    co = sc.coefficients
+    dth = 2.0 * math.pi / nodes
+    eye = np.eye(nodes)
+    laplacian = 2.0 * eye - np.roll(eye, 1, axis=1) - np.roll(eye, -1, axis=1)
+    sign = 1.0 if co.D >= 0 else -1.0
+    pressure = co.g * sc.delta
+    if not pressure > 0:
+        raise ParameterError("delta", params.delta, "> 0 (a ring pressed on the shaft)")
+    law = Coulomb(params.friction, params.friction)
+    contacts = []
+    for j in range(nodes):
+        grad = sign * (eye[(j + 1) % nodes] - eye[j - 1])  # P_j = g delta - |D| grad . V / (2 dtheta)
+        contacts.append(Contact(eye[j], pressure, law, 1.0, name=f"node {j}", normal_direction=grad,
+                                normal_stiffness=abs(co.D) / (2.0 * dth), normal_on_structure=False))
+    return System(eye, co.a * laplacian / dth**2 + co.h * eye, contacts)
+
+
+@dataclass(frozen=True, repr=False)
+class WaveSpectrum(Result):
+    """The multipliers of a wave's node-shift map on a ring of ``nodes`` nodes.
+
+    ``shift_time`` (internal time for one node), ``continuous_shift_time`` (``dtheta/|c|`` of
+    the continuous wave), ``multipliers`` (by decreasing size; one is 1, the wave's own motion),
+    and ``n`` waves around the ring."""
+
+    MODEL: ClassVar[str] = "brake"
+
+    nodes: int
+    n: int
+    shift_time: float
+    continuous_shift_time: float
+    multipliers: np.ndarray
+    events_per_shift: int
+
+    @property
+    def leading(self) -> complex:
+        """The largest multiplier but the wave's own (the one nearest 1)."""
+        others = np.delete(self.multipliers, np.argmin(np.abs(self.multipliers - 1.0)))
+        return complex(others[0])
+
+    @property
+    def growth_per_period(self) -> float:
+        """``ln|mu| N/n`` of the leading multiplier: the log of a perturbation's growth over one
+        wave period (> 0: unstable)."""
+        return math.log(abs(self.leading)) * self.nodes / self.n if self.leading else -math.inf
+
+    @property
+    def stable(self) -> bool:
+        return abs(self.leading) < 1.0
+
+    def to_dict(self) -> dict:
+        return {"nodes": self.nodes, "n": self.n, "stable": self.stable, "growth_per_period": self.growth_per_period,
+                "leading_abs": abs(self.leading), "shift_time": self.shift_time,
+                "continuous_shift_time": self.continuous_shift_time, "events_per_shift": self.events_per_shift,
+                "multipliers_abs": np.abs(self.multipliers[:12]).tolist()}
+
+    def to_xarray(self) -> xr.Dataset:
+        m = self.multipliers
+        ds = xr.Dataset({"multiplier_real": ("multiplier", m.real, {"units": "1", "long_name": "multiplier (real part)"}),
+                         "multiplier_imag": ("multiplier", m.imag, {"units": "1",
+                                                                    "long_name": "multiplier (imaginary part)"})},
+                        coords={"multiplier": ("multiplier", np.arange(m.size), {"units": "1",
+                                                                               "long_name": "multiplier number"})},
+                        attrs={"nodes": self.nodes, "n": self.n, "shift_time": self.shift_time,
+                               "continuous_shift_time": self.continuous_shift_time, "stable": int(self.stable),
+                               "growth_per_period": self.growth_per_period})
+        return finish(ds, "multipliers of a travelling wave's node-shift map on the discrete ring", "brake")
+
+
+def wave_spectrum(wave, nodes: int = 128, tol: float = 1e-10) -> WaveSpectrum:
+    """The discrete ring's wave near ``wave`` (a `TravellingWave` in permanent contact) on
+    ``nodes`` nodes (a multiple of ``wave.n``) and the multipliers of its node-shift map."""
+    nodes = Q.check("spectrum_nodes", nodes, "nodes")
+    if nodes % wave.n:
+        raise ParameterError("nodes", nodes, f"a multiple of the mode number n = {wave.n}")
+    if any(z.kind == SEPARATION for z in wave.zones):
+        raise ParameterError("wave", wave.structure, "a wave in permanent contact (stick, slip, reverse slip): the "
+                             "ring leaving the shaft and landing again is not in this version")
+    if not any(z.kind == STICK for z in wave.zones):
+        raise ParameterError("wave", wave.structure, "a wave with a stick zone (its onset is the map's section)")
+    sc = Scaling(wave.params)
+    system = ring_system(wave.params, nodes)
+    c, r = float(wave.x[0]), sc.root_gamma
+    dth = 2.0 * math.pi / nodes
+    theta = dth * np.arange(nodes) + 0.5 * dth  # off the switching point at phi = 0
+    prof = wave.evaluate(theta)
+    direction = 1 if c > 0 else -1  # the wave moves to larger theta for c > 0
+    shift = (np.arange(nodes) + direction) % nodes
+    period = (2.0 * math.pi / wave.n) / abs(c)
+    try:
+        cycle = relative_cycle(system, prof["V"] / r, -c * prof["dV"] / r, shift, contact=0, state=0,
+                               horizon=1.5 * period, tol=tol)
+    except NoSolutionError as err:
+        raise NoSolutionError(f"no wave of the ring of {nodes} nodes near the continuous one ({err})") from None
+    if np.any(cycle.event_state == 2):
+        raise NoSolutionError(f"the ring's wave on {nodes} nodes leaves the shaft (a normal force reached zero): "
+                              "beyond this model")
+    return WaveSpectrum(nodes, int(wave.n), cycle.shift_time, dth / abs(c), cycle.multipliers,
+                        int(cycle.event_time.size))
+
+
+def wave_spectra(wave, nodes=(64, 128, 256), tol: float = 1e-10) -> xr.Dataset:
+    """`wave_spectrum` for each of ``nodes``: the convergence table (shift time against the
+    continuous wave's, leading multiplier, growth per period, observed order of the shift
+    time's error), as a dataset over ``nodes``."""
+    out = [wave_spectrum(wave, int(k), tol) for k in nodes]
+    err = np.array([abs(s.shift_time / s.continuous_shift_time - 1.0) for s in out])
+    order = np.full(len(out), np.nan)
+    for i in range(1, len(out)):
+        if err[i] > 0 and err[i - 1] > 0:
+            order[i] = math.log(err[i - 1] / err[i]) / math.log(out[i].nodes / out[i - 1].nodes)
+    lead = np.array([s.leading for s in out])
+    ds = xr.Dataset(
+        {"shift_time": ("nodes", [s.shift_time for s in out], {"units": "1", "long_name": "time to move one node"}),
+         "speed_error": ("nodes", err, {"units": "1", "long_name": "|shift time / (dtheta/|c|) - 1|"}),
+         "observed_order": ("nodes", order, {"units": "1", "long_name": "observed order of the speed error"}),
+         "leading_abs": ("nodes", np.abs(lead), {"units": "1", "long_name": "|leading multiplier|"}),
+         "leading_angle": ("nodes", np.angle(lead), {"units": "rad", "long_name": "argument of the leading multiplier"}),
+         "growth_per_period": ("nodes", [s.growth_per_period for s in out],
+                               {"units": "1", "long_name": "log growth of a perturbation over a wave period"}),
+         "stable": ("nodes", np.array([s.stable for s in out], dtype=np.int8), {"units": "1",
+                                                                                "long_name": "1 if stable"})},
+        coords={"nodes": ("nodes", np.array([s.nodes for s in out]), {"units": "1", "long_name": "ring nodes"})},
+        attrs={"c": float(wave.c), "n": int(wave.n), "structure": wave.structure})
+    return finish(ds, "convergence of a travelling wave's multipliers with the ring's nodes", "brake",
+                  params=wave.params.to_attrs())
