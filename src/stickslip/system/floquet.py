@@ -186,7 +186,8 @@ def return_fixed_point(system: System, z: np.ndarray, states: tuple, signature: 
     newton, fixed = False, None
     for it in range(max_iter):
         try:
-            one = simulate(system, z[:n], z[n:2 * n], horizon, samples=2, segments=True, states=states)
+            one = simulate(system, z[:n], z[n:2 * n], horizon, samples=2, segments=True, states=states,
+                           stop_at=(target, signature[1]))
             ret = [r for r in _after(one, (target, signature[1])) if r[0] > 0.0]
         except (ParameterError, NoSolutionError):
             if not newton:

@@ -63,20 +63,23 @@ class Flow:
         g = system.force.copy()
         force_rows = np.zeros((len(self.states), 2 * n + 1))
         normal = np.array([c.normal_row(n) for c in system.contacts])
+        kn = system.normal_directions  # k_n n per contact (columns)
+        push = np.zeros(len(self.states))  # N(x) n on the structure: k_n n n^T, N_0 n
+        fric = np.zeros(len(self.states))  # a unilateral contact slipping: F = s mu0 N(x): s mu0 k_n w n^T, ...
         for j, (c, s) in enumerate(zip(system.contacts, self.states)):
             if s == OPEN:
                 normal[j] = 0.0
                 continue
-            if c.pushes:  # the contact's spring: N(x) n on the structure
-                k_eff += c.normal_stiffness * np.outer(c.normal_direction, c.normal_direction)
+            if c.pushes:
+                push[j] = 1.0
                 g += c.normal_direction * c.normal_force
             if s == 0:
                 continue
             mu0, mu1 = c.friction.affine
             w, V = c.direction, c.surface_speed
-            if c.unilateral:  # F = s mu0 N(x): Coulomb only
+            if c.unilateral:  # Coulomb only
                 force_rows[j] = s * mu0 * normal[j]
-                k_eff += s * mu0 * c.normal_stiffness * np.outer(w, c.normal_direction)
+                fric[j] = s * mu0
                 g += w * s * mu0 * c.normal_force
                 continue
             N = c.normal_force
@@ -84,6 +87,11 @@ class Flow:
             g += w * N * (s * mu0 - mu1 * V)
             force_rows[j, n:2 * n] = N * mu1 * w
             force_rows[j, -1] = N * (s * mu0 - mu1 * V)
+        if push.any():
+            unit = np.array([c.normal_direction if c.unilateral else np.zeros(n) for c in system.contacts]).T
+            k_eff += (unit * push) @ kn.T
+        if fric.any():
+            k_eff += (W * fric) @ kn.T
         if stuck:
             Ws = W[:, stuck]
             L = np.linalg.pinv(Ws.T @ Minv @ Ws) @ Ws.T @ Minv  # lam = -L r

@@ -183,5 +183,18 @@ class System:
 
     @property
     def directions(self) -> np.ndarray:
-        """``W``: one column per contact."""
-        return np.stack([c.direction for c in self.contacts], axis=1)
+        """``W``: one column per contact (computed once)."""
+        if "W" not in self._cache:
+            self._cache["W"] = np.stack([c.direction for c in self.contacts], axis=1)
+            self._cache["W"].setflags(write=False)
+        return self._cache["W"]
+
+    @property
+    def normal_directions(self) -> np.ndarray:
+        """``k_n n`` of each contact as a column (zero without a normal direction; computed once)."""
+        if "Kn" not in self._cache:
+            cols = [c.normal_stiffness * c.normal_direction if c.unilateral else np.zeros(self.dofs)
+                    for c in self.contacts]
+            self._cache["Kn"] = np.stack(cols, axis=1)
+            self._cache["Kn"].setflags(write=False)
+        return self._cache["Kn"]

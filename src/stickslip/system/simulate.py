@@ -200,16 +200,23 @@ def _check(system, x0, v0, t_end, samples, max_events, flows):
 
 
 def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: int = 1001,
-             max_events: int = 1_000_000, segments: bool = False, states=None) -> SystemRun:
+             max_events: int = 1_000_000, segments: bool = False, states=None, stop_at=None) -> SystemRun:
     """Simulate ``system`` from ``(x0, v0)`` (default rest at zero) to ``t_end``, with
     ``samples`` uniform samples; at most ``max_events`` contact events (else `NoSolutionError`).
     With ``segments`` the run keeps its pieces of flow (`Segment`: for `monodromy`). The
     contact ``states`` to start in (1 slip, 0 stick, -1 reverse slip; default: chosen from the
-    start, as at an event) are for a start on a switching line, such as just after an event."""
+    start, as at an event) are for a start on a switching line, such as just after an event.
+    ``stop_at = (contact, state)`` ends the run just after that contact first enters that state
+    (its samples those before; a return map's run)."""
     flows: dict = {}
     x0, v0, t_end, samples, max_events = _check(system, x0, v0, t_end, samples, max_events, flows)
     if not isinstance(segments, (bool, np.bool_)):
         raise ParameterError("segments", segments, "True or False")
+    if stop_at is not None and not (isinstance(stop_at, tuple) and len(stop_at) == 2 and all(
+            isinstance(v, (int, np.integer)) and not isinstance(v, bool) for v in stop_at)
+            and 0 <= stop_at[0] < len(system.contacts) and stop_at[1] in (-1, 0, 1, OPEN)):
+        raise ParameterError("stop_at", stop_at, f"(contact, state): a contact from 0 to {len(system.contacts) - 1} "
+                             "and a state -1, 0, 1 or 2")
     n, k = system.dofs, len(system.contacts)
     z = np.concatenate([x0, v0, [1.0]])
     vr = [c.slip_velocity(v0) for c in system.contacts]
@@ -279,6 +286,11 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
                 ev_t.append(t), ev_c.append(i), ev_s.append(new[i])
         if segments:
             pieces[-1] = dataclasses.replace(pieces[-1], after=new)
+        if stop_at is not None and new[stop_at[0]] == stop_at[1] != states[stop_at[0]]:
+            if segments:  # the piece after the event: its start is the state there
+                pieces.append(Segment(new, t, z, 0.0, (), new))
+            ts, out, st_out, f_out = ts[:j], out[:j], st_out[:j], f_out[:j]
+            break
         states = new
     return SystemRun(ts, out[:, :n], out[:, n:], st_out, f_out, np.array(ev_t), np.array(ev_c, dtype=np.int64),
                      np.array(ev_s, dtype=np.int8), tuple(pieces))

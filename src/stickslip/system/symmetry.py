@@ -146,7 +146,7 @@ def relative_cycle(system: System, x0, v0, shift, *, contact: int, state: int, s
     if state not in (-1, 0, 1):
         raise ParameterError("state", state, "-1 (reverse slip), 0 (stick) or 1 (slip)")
     horizon, tol, max_iter = Q.check("transient", horizon, "horizon"), Q.check("tol", tol), Q.check("max_iter", max_iter)
-    run = simulate(system, x0, v0, horizon, samples=2, segments=True, states=states)
+    run = simulate(system, x0, v0, horizon, samples=2, segments=True, states=states, stop_at=(contact, state))
     first = next(((seg.t + seg.duration, nxt.z, nxt.states) for seg, nxt in zip(run.segments, run.segments[1:])
                   if seg.rows and seg.after[contact] == state != seg.states[contact]), None)
     if first is None:
