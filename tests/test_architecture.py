@@ -30,7 +30,7 @@ ALLOWED = {
     "cluster": {"errors"},
     "sweep": BASE | {"files", "cluster"},
     "oscillator": BASE | {"friction", "sweep"},
-    "brake": BASE | {"contact", "sweep", "files"},
+    "brake": BASE | {"contact", "sweep", "files", "system", "friction"},  # the waves' spectrum: a ring of contacts
     "halfspace": BASE,
     "fem": BASE | {"contact", "friction", "sweep", "files"},
     "system": BASE | {"friction"},

@@ -24,6 +24,24 @@ from stickslip.system import simulate as system_simulate
 from stickslip.system import steady_sliding as system_steady
 from stickslip.system import burridge_knopoff
 from stickslip.rsf import RateState, SpringSlider, linear_stability, slide, slider_cycle
+from stickslip.brake.waves import ring_system, wave_spectra, wave_spectrum
+from stickslip.system import relative_cycle
+
+FIG5 = BrakeParams.from_physical(100.0, 1e-4, 0.2)
+
+
+def _ring():
+    return ring_system(FIG5, 8)
+
+
+def _fig5_wave():
+    if not _WAVE:
+        _WAVE.append(travelling_wave(FIG5, 4))
+    return _WAVE[0]
+
+
+_WAVE: list = []
+
 
 def _one(x):
     return {"y": x}
@@ -59,9 +77,16 @@ CALLS = {
     "slider_cycle": (lambda **k: slider_cycle(**{"slider": SpringSlider(**SLIDER), "load_velocity": 1e-6, **k}),
                      ["slider", "load_velocity", "transient", "cycles", "rtol", "tol"]),
     "System": (lambda **k: System(**{**SYSTEM, **k}), [*SYSTEM, "damping", "force"]),
-    "Contact": (lambda **k: Contact(**{**CONTACT, **k}), [*CONTACT, "name"]),
+    "Contact": (lambda **k: Contact(**{**CONTACT, **k}), [*CONTACT, "name", "normal_on_structure"]),
     "system simulate": (lambda **k: system_simulate(**{"system": System(**SYSTEM), "t_end": 5.0, **k}),
-                        ["system", "x0", "v0", "t_end", "samples", "max_events", "segments", "states"]),
+                        ["system", "x0", "v0", "t_end", "samples", "max_events", "segments", "states", "stop_at"]),
+    "relative_cycle": (lambda **k: relative_cycle(**{"system": _ring(), "x0": [0.0] * 8, "v0": [0.0] * 8,
+                                                     "shift": [1, 2, 3, 4, 5, 6, 7, 0], "contact": 0, "state": 0,
+                                                     "horizon": 1.0, **k}),
+                       ["system", "x0", "v0", "shift", "contact", "state", "states", "horizon", "tol", "max_iter"]),
+    "ring_system": (lambda **k: ring_system(**{"params": FIG5, "nodes": 16, **k}), ["params", "nodes"]),
+    "wave_spectrum": (lambda **k: wave_spectrum(**{"wave": _fig5_wave(), "nodes": 16, **k}), ["wave", "nodes", "tol"]),
+    "wave_spectra": (lambda **k: wave_spectra(**{"wave": _fig5_wave(), "nodes": [16], **k}), ["nodes", "tol"]),
     "load_system": (lambda **k: load_system(**{"path": "no such file.toml", **k}), ["path"]),
     "system limit_cycle": (lambda **k: system_cycle(**{"system": System(**SYSTEM), "transient": 20.0, **k}),
                            ["system", "x0", "v0", "transient", "tol", "max_iter"]),

@@ -32,6 +32,7 @@ __all__ = ["Check", "FigureSpec", "close_check", "registry", "FIGURES"]
 #: The figure modules (relative to this package), in the order of the report.
 FIGURES = ("oscillator.fig2", "oscillator.fig3", "oscillator.bifurcation", "oscillator.regimes",
            "brake.stability", "brake.fig5", "brake.fig6", "brake.fig11", "brake.fig12", "brake.waves_vs_ring",
+           "brake.wave_stability",
            "brake.ring_regimes", "brake.initial_condition", "brake.regime_maps", "brake.fig7", "brake.fig8",
            "brake.fig9", "brake.fig10", "brake.fem_statistics", "brake.fem_geometry", "brake.fem_regimes",
            "halfspace.fig14", "halfspace.inverse_map",

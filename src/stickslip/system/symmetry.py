@@ -39,6 +39,8 @@ def cell_symmetry(system: System, shift) -> np.ndarray:
     ``i`` becomes ``shift[i]``): contact ``i`` becomes contact ``image[i]``. A `ParameterError`
     naming ``shift`` if it is not a permutation or the system is not unchanged by it (its
     matrices, force and contacts)."""
+    if not isinstance(system, System):
+        raise ParameterError("system", system, "a stickslip.system.System")
     n = system.dofs
     try:
         p = np.asarray(shift)

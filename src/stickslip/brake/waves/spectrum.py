@@ -33,9 +33,11 @@ import xarray as xr
 from ...cf import finish
 from ...errors import NoSolutionError, ParameterError
 from ...friction import Coulomb
-from ...quantities import BRAKE as Q
+from ...quantities import BRAKE as Q, SYSTEM as SYSTEM_Q
 from ...results import Result
 from ...system import Contact, System, relative_cycle
+from ..reduced.params import BrakeParams
+from .result import TravellingWave
 from .zones import SEPARATION, STICK, Scaling
 
 __all__ = ["ring_system", "WaveSpectrum", "wave_spectrum", "wave_spectra"]
@@ -43,6 +45,8 @@ __all__ = ["ring_system", "WaveSpectrum", "wave_spectrum", "wave_spectra"]
 
 def ring_system(params, nodes: int) -> System:
     """The ring of ``nodes`` nodes in contact with the shaft (see the module), internal units."""
+    if not isinstance(params, BrakeParams):
+        raise ParameterError("params", params, "BrakeParams (stickslip.brake.BrakeParams)")
     nodes = Q.check("spectrum_nodes", nodes, "nodes")
     sc = Scaling(params)
     co = sc.coefficients
@@ -117,7 +121,9 @@ class WaveSpectrum(Result):
 def wave_spectrum(wave, nodes: int = 128, tol: float = 1e-10) -> WaveSpectrum:
     """The discrete ring's wave near ``wave`` (a `TravellingWave` in permanent contact) on
     ``nodes`` nodes (a multiple of ``wave.n``) and the multipliers of its node-shift map."""
-    nodes = Q.check("spectrum_nodes", nodes, "nodes")
+    if not isinstance(wave, TravellingWave):
+        raise ParameterError("wave", wave, "a TravellingWave (stickslip.brake.travelling_wave)")
+    nodes, tol = Q.check("spectrum_nodes", nodes, "nodes"), SYSTEM_Q.check("tol", tol)
     if nodes % wave.n:
         raise ParameterError("nodes", nodes, f"a multiple of the mode number n = {wave.n}")
     if any(z.kind == SEPARATION for z in wave.zones):
@@ -136,7 +142,7 @@ def wave_spectrum(wave, nodes: int = 128, tol: float = 1e-10) -> WaveSpectrum:
     period = (2.0 * math.pi / wave.n) / abs(c)
     try:
         cycle = relative_cycle(system, prof["V"] / r, -c * prof["dV"] / r, shift, contact=0, state=0,
-                               horizon=1.5 * period, tol=tol)
+                               horizon=1.5 * period, tol=tol, max_iter=200)
     except NoSolutionError as err:
         raise NoSolutionError(f"no wave of the ring of {nodes} nodes near the continuous one ({err})") from None
     if np.any(cycle.event_state == 2):
@@ -150,7 +156,9 @@ def wave_spectra(wave, nodes=(64, 128, 256), tol: float = 1e-10) -> xr.Dataset:
     """`wave_spectrum` for each of ``nodes``: the convergence table (shift time against the
     continuous wave's, leading multiplier, growth per period, observed order of the shift
     time's error), as a dataset over ``nodes``."""
-    out = [wave_spectrum(wave, int(k), tol) for k in nodes]
+    if isinstance(nodes, (str, bytes)) or not hasattr(nodes, "__len__") or not 1 <= len(nodes) <= 16:
+        raise ParameterError("nodes", nodes, "a list of 1 to 16 node counts")
+    out = [wave_spectrum(wave, k, tol) for k in nodes]
     err = np.array([abs(s.shift_time / s.continuous_shift_time - 1.0) for s in out])
     order = np.full(len(out), np.nan)
     for i in range(1, len(out)):

@@ -1,0 +1,175 @@
+"""Beyond the paper (its open problem): are the travelling waves stable? The Floquet multipliers
+of the discrete ring's wave (`stickslip.brake.waves.wave_spectrum`), their convergence with
+the nodes, the Moreau runs' evidence beside them, and the stability along Figure 11's branch."""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+import xarray as xr
+from matplotlib.figure import Figure
+
+from ... import plotting
+from ...brake import BrakeParams, continue_waves, travelling_wave
+from ...brake.waves import wave_persistence, wave_spectrum
+from .. import Check, FigureSpec
+from .paper import FIG5, FIG11
+
+#: The two waves of the convergence table: Figure 5's at Omega = 100 rad/s and Figure 11's first.
+WAVES = (("Figure 5, Ω = 100 rad/s", 100.0, FIG5["mismatch"], FIG5["friction"], FIG5["modes"]),
+         ("Figure 11, d = 10 µm", FIG11["omega"], FIG11["mismatch"][0], FIG11["friction"], FIG11["modes"]))
+R = 0.1  # the ring's inner radius [m] (paper.GEOMETRY)
+
+
+def compute(quick: bool = False) -> xr.Dataset:
+    nodes = (64, 128, 256) if quick else (64, 128, 256, 512)
+    growth, err, secs, moreau, persists, period, separation = [], [], [], [], [], [], []
+    spectrum = None
+    for _, omega, d, f, n in WAVES:
+        wave = travelling_wave(BrakeParams.from_physical(omega, d, f), n)
+        row_g, row_e, row_t = [], [], []
+        for k in nodes:
+            start = time.perf_counter()
+            sp = wave_spectrum(wave, k)
+            row_t.append(time.perf_counter() - start)
+            row_g.append(sp.growth_per_period)
+            row_e.append(abs(sp.shift_time / sp.continuous_shift_time - 1.0))
+            if spectrum is None and k == 128:
+                spectrum = sp.multipliers
+        growth.append(row_g), err.append(row_e), secs.append(row_t)
+        run = wave_persistence(wave, nodes=256, periods=30)  # the Moreau stepper's evidence
+        wave_period = (2 * np.pi / wave.n) / abs(float(wave.x[0]))  # internal time
+        moreau.append(run.growth_rate * wave_period)
+        separation.append(run.separation_of_runs)
+        persists.append(int(run.persists))
+        period.append(wave_period)
+    p0 = BrakeParams.from_physical(FIG11["omega"], FIG11["mismatch"][0], FIG11["friction"])
+    branch = continue_waves(p0, FIG11["modes"], "delta", FIG11["mismatch"][1] / R, num=25 if quick else 60,
+                            spacing="log")
+    delta, structure, along = [], [], []
+    for w in branch.waves:
+        delta.append(w.params.delta)
+        structure.append(w.structure)
+        contact = "separation" not in w.structure
+        along.append([wave_spectrum(w, k).growth_per_period if contact else np.nan for k in (64, 128)])
+    return xr.Dataset(
+        {"growth_per_period": (("wave", "nodes"), np.array(growth),
+                               {"units": "1", "long_name": "ln of a perturbation's growth over a wave period"}),
+         "speed_error": (("wave", "nodes"), np.array(err),
+                         {"units": "1", "long_name": "discrete against continuous wave speed, relative"}),
+         "seconds": (("wave", "nodes"), np.array(secs), {"units": "s", "long_name": "time of the computation"}),
+         "moreau_growth_per_period": ("wave", np.array(moreau), {"units": "1", "long_name": "the same from the "
+                                                                 "Moreau runs (wave and perturbed wave, 256 nodes)"}),
+         "moreau_persists": ("wave", np.array(persists, dtype=np.int8), {"units": "1", "long_name": "1 if the "
+                                                                        "Moreau run stays within 5 % of the wave"}),
+         "moreau_separation": (("wave", "moreau_period"), np.array(separation),
+                               {"units": "1", "long_name": "perturbed - unperturbed Moreau run / initial perturbation"}),
+         "wave_period": ("wave", np.array(period), {"units": "1", "long_name": "wave period, internal time"}),
+         "multiplier_real": ("multiplier", spectrum.real, {"units": "1", "long_name": "node-shift multipliers "
+                                                           "(real part), first wave, 128 nodes"}),
+         "multiplier_imag": ("multiplier", spectrum.imag, {"units": "1", "long_name": "(imaginary part)"}),
+         "branch_growth": (("point", "branch_nodes"), np.array(along),
+                           {"units": "1", "long_name": "growth over a wave period along Figure 11's branch "
+                                                       "(NaN: the wave separates, not computed)"}),
+         "branch_structure": ("point", np.array(structure, dtype=str), {"long_name": "zones of the wave"})},
+        coords={"wave": ("wave", np.array([w[0] for w in WAVES], dtype=str), {"long_name": "wave"}),
+                "moreau_period": ("moreau_period", np.arange(len(separation[0])),
+                                  {"units": "1", "long_name": "time in wave periods"}),
+                "nodes": ("nodes", np.array(nodes), {"units": "1", "long_name": "ring nodes"}),
+                "multiplier": ("multiplier", np.arange(spectrum.size), {"units": "1", "long_name": "multiplier"}),
+                "point": ("point", np.arange(len(delta)), {"units": "1", "long_name": "branch point"}),
+                "mismatch": ("point", np.array(delta) * R, {"units": "m", "long_name": "mismatch d"}),
+                "branch_nodes": ("branch_nodes", np.array([64, 128]), {"units": "1", "long_name": "ring nodes"})})
+
+
+def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
+    fig, (ax, bx, cx, dx) = plotting.new_figure(fig, ncols=2, nrows=2, size=(5.4, 4.0))
+    colors = ("tab:blue", "tab:red")
+    for i, name in enumerate(ds.wave.values):
+        ax.plot(ds.nodes, ds.growth_per_period[i], "o-", color=colors[i], lw=1.2, label=name)
+    ax.axhline(0.0, color="k", lw=0.6)
+    ax.set_xscale("log", base=2)
+    ax.set_xlabel("ring nodes N [1]"), ax.set_ylabel("ln(growth) per wave period [1]")
+    ax.set_title("leading multiplier against the nodes", fontsize=10)
+    plotting.legend_beside(ax)
+    m = ds.multiplier_real.values + 1j * ds.multiplier_imag.values
+    near = np.abs(m) > 0.5  # the rest are 0: the sticking nodes' velocities
+    bx.plot(np.angle(m[near]), np.abs(m[near]) - 1.0, ".", ms=4, color=colors[0], label="multipliers μ")
+    bx.axhline(0.0, color="k", lw=0.6, label="unit circle")
+    bx.set_xlabel("arg μ [rad]"), bx.set_ylabel("|μ| - 1 [1]")
+    bx.set_title("node-shift map, first wave, 128 nodes", fontsize=10)
+    plotting.legend_beside(bx)
+    for j, k in enumerate(ds.branch_nodes.values):
+        cx.plot(ds.mismatch * 1e6, ds.branch_growth[:, j], "o-", ms=3, lw=1.0, label=f"{k} nodes")
+    sep = np.array(["separation" in s for s in ds.branch_structure.values])
+    if sep.any():
+        cx.axvspan(float(ds.mismatch[sep].min()) * 1e6, float(ds.mismatch[sep].max()) * 1e6, color="0.9",
+                   label="the wave separates:\nnot computed")
+    cx.axhline(0.0, color="k", lw=0.6)
+    cx.set_xscale("log")
+    cx.set_xlabel("mismatch d [µm]"), cx.set_ylabel("ln(growth) per wave period [1]")
+    cx.set_title("along Figure 11's branch (> 0: unstable)", fontsize=10)
+    plotting.legend_beside(cx)
+    periods = ds.moreau_period.values
+    for i, name in enumerate(ds.wave.values):
+        dx.semilogy(periods, ds.moreau_separation[i], color=colors[i], lw=1.0, label=f"{name}: Moreau run")
+        g = float(ds.growth_per_period[i, -1])
+        dx.semilogy(periods, np.exp(g * periods), color=colors[i], ls="--", lw=1.0,
+                    label=f"exp({g:.3f} t/T): multiplier")
+    dx.set_xlabel("time t/T [wave periods]"), dx.set_ylabel("perturbation / initial [1]")
+    dx.set_title("a perturbed run of the ring (Moreau)", fontsize=10)
+    plotting.legend_beside(dx)
+    return fig
+
+
+def check(ds: xr.Dataset) -> list[Check]:
+    out = []
+    for i, name in enumerate(ds.wave.values):
+        e = ds.speed_error[i].values
+        out.append(Check(f"{name}: the discrete wave's speed tends to the continuous one",
+                         bool(e[-1] < 1e-3 and e[-1] < e[-2]), ", ".join(f"{v:.2g}" for v in e),
+                         "< 1e-3 at the most nodes, falling"))
+        g = ds.growth_per_period[i].values
+        steps = np.abs(np.diff(g))
+        out.append(Check(f"{name}: the leading multiplier converges (each doubling of N changes it less)",
+                         bool(np.all(steps[1:] < steps[:-1])), ", ".join(f"{s:.2g}" for s in steps), "decreasing"))
+        mo = float(ds.moreau_growth_per_period[i])
+        ratio = mo / g[-1]
+        out.append(Check(f"{name}: the Moreau runs (an independent stepper) see the same instability",
+                         bool(g[-1] > 0 and 0.5 <= ratio <= 2.0), f"{mo:.3g} against {g[-1]:.3g}",
+                         "both > 0, ratio in [0.5, 2]"))
+    return out
+
+
+def describe(ds: xr.Dataset) -> str:
+    parts = []
+    for i, name in enumerate(ds.wave.values):
+        g = ds.growth_per_period[i].values
+        parts.append(f"{name}: a perturbation grows by a factor {np.exp(g[-1]):.3f} per wave period at "
+                     f"{int(ds.nodes[-1])} nodes ({', '.join(f'{v:.4f}' for v in g)} for N = "
+                     f"{', '.join(str(int(k)) for k in ds.nodes.values)}); the Moreau runs give "
+                     f"{float(ds.moreau_growth_per_period[i]):.4f}")
+    b = ds.branch_growth.values[:, -1]
+    done = np.isfinite(b)
+    parts.append(f"along Figure 11's branch {int(done.sum())} of {b.size} waves are in permanent contact, all "
+                 f"{'unstable' if np.all(b[done] > 0) else 'of mixed stability'} (ln growth per period "
+                 f"{np.nanmin(b):.3f} to {np.nanmax(b):.3f} at 128 nodes); the others separate from the shaft, "
+                 "which this computation does not follow (Figure 12's wave among them)")
+    return "; ".join(parts) + "."
+
+
+FIGURE = FigureSpec(
+    key="wave-stability", title="Beyond the paper — the stability of the travelling waves",
+    model="reduced brake model (ring), travelling waves",
+    claim="(The paper's open problem, not a claim of it.) The stick-slip waves of Figures 5 and 11 in permanent "
+          "contact are unstable: on the discrete ring their node-shift map has multipliers outside the unit circle, "
+          "and the leading one converges as the ring is refined.",
+    method="stickslip.brake.waves.wave_spectrum: the ring of N nodes (centred differences) in contact, each node a "
+           "frictional contact of a stickslip.system.System whose normal force is the reaction of U = δ; the wave "
+           "a relative periodic orbit (it moves by one node in τ ≈ Δθ/|c|), found by Newton's method from the "
+           "sampled shooting wave; the multipliers of the node-shift map with saltation matrices at every node's "
+           "switch; N = 64 to 256 (512 in the full run). Beside it the growth fitted to a perturbed Moreau run "
+           "(wave_persistence, 256 nodes). Waves that separate are not computed: the ring leaving the shaft is "
+           "not in this model.",
+)

@@ -1,0 +1,39 @@
+"""The wave-stability figure: its checks pass on the computed data and fail on planted data
+(a Moreau run that sees no instability, a leading multiplier that does not settle, a discrete
+wave speed that does not approach the continuous one)."""
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from stickslip.figures.brake import wave_stability
+
+
+def _failed(ds):
+    return [c.name for c in wave_stability.check(ds) if not c.passed]
+
+
+def _table(growth, errors, moreau):
+    """A dataset of the shape `compute` makes, for the checks alone."""
+    return xr.Dataset({"growth_per_period": (("wave", "nodes"), np.array(growth)),
+                       "speed_error": (("wave", "nodes"), np.array(errors)),
+                       "moreau_growth_per_period": ("wave", np.array(moreau))},
+                      coords={"wave": ["a", "b"], "nodes": [64, 128, 256]})
+
+
+def test_the_checks_catch_planted_tables():
+    good = _table([[0.06, 0.066, 0.067], [0.17, 0.21, 0.23]], [[4e-3, 1e-3, 2.5e-4]] * 2, [0.05, 0.18])
+    assert _failed(good) == []
+    assert any("Moreau" in n for n in _failed(_table([[0.06, 0.066, 0.067]] * 2, [[4e-3, 1e-3, 2.5e-4]] * 2,
+                                                     [-0.01, 0.05])))
+    assert any("converges" in n for n in _failed(_table([[0.06, 0.066, 0.09]] * 2, [[4e-3, 1e-3, 2.5e-4]] * 2,
+                                                        [0.05, 0.05])))
+    assert any("speed" in n for n in _failed(_table([[0.06, 0.066, 0.067]] * 2, [[4e-3, 1e-3, 2e-3]] * 2,
+                                                    [0.05, 0.05])))
+
+
+@pytest.mark.slow
+def test_the_checks_pass_on_the_computed_data():
+    ds = wave_stability.compute(quick=True)
+    assert _failed(ds) == []
+    assert "unstable" in wave_stability.describe(ds)
