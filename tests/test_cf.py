@@ -137,6 +137,8 @@ WRITERS = [
       "--workers", "1"], ["m.zarr"]),
     (["brake", "integrate", *BRAKE, "--nodes", "32", "--transits", "1", "--out", "{tmp}/i.nc"], ["i.nc"]),
     (["brake", "wave", *BRAKE, "--wave-number", "8", "--out", "{tmp}/w.nc"], ["w.nc"]),
+    (["brake", "spectrum", "--omega", "100", "--mismatch", "1e-4", "--friction", "0.2", "--nodes", "32",
+      "--out", "{tmp}/sp.nc"], ["sp.nc"]),
     (["brake", "continue", "--omega", "50", "--mismatch", "1e-5", "--friction", "0.7", "--wave-number", "4", "--stop",
       "9e-6", "--points", "3", "--out", "{tmp}/bc.nc"], ["bc.nc"]),
     (["brake", "map", "--out", "{tmp}/wm.zarr", "--x", "friction=0.2:0.7:2", "--y", "mismatch=1e-5:1e-4:2:log",

@@ -223,6 +223,61 @@ def wave(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, 
         write_netcdf(result.to_xarray(), out)
 
 
+def parse_nodes(text: str, modes: int) -> list[int]:
+    """``"64,128,256"`` -> the ring sizes of ``--nodes`` (each in its range, a multiple of ``modes``)."""
+    try:
+        nodes = [int(part) for part in text.split(",")]
+    except ValueError:
+        raise ParameterError("--nodes", text, "a list of node counts like 64,128,256") from None
+    if not 1 <= len(nodes) <= 16:
+        raise ParameterError("--nodes", text, "1 to 16 node counts")
+    for k in nodes:
+        Q.check("spectrum_nodes", k, "--nodes")
+        if k % modes:
+            raise ParameterError("--nodes", k, f"a multiple of the wave number {modes} (--wave-number)")
+    return nodes
+
+
+@app.command()
+def spectrum(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, friction: Friction = 0.0,
+             modes: Annotated[int, declared(Q["modes"], "--wave-number", "The period is 2 pi / n.")] = 4,
+             nodes: Annotated[str, typer.Option(help="Ring sizes, e.g. 64,128,256 (each 8 to 1024, a multiple of "
+                                                     "the wave number; 512 nodes take about a minute).")] = "64,128",
+             regime: Annotated[Optional[str], typer.Option(help="Wanted regime, e.g. stick-slip (default: any).")] = None,
+             inner_radius: Inner = None, outer_radius: Outer = None, young: Young = None, density: Density = None,
+             omega: Omega = None, mismatch: Mismatch = None, json: Json = False,
+             out: Annotated[Optional[Path], typer.Option(help="Write the convergence table to this netCDF file "
+                                                              "(.nc).")] = None,
+             overwrite: Replace = False):
+    """Stability of a travelling wave in permanent contact: the multipliers of its node-shift map
+    on rings of --nodes nodes (a perturbation grows by exp(growth_per_period) per wave period)."""
+    from ..brake import travelling_wave
+    from ..brake.waves import wave_spectra
+
+    overwrite_needs(overwrite, "--out", out)
+    out = output_path("--out", out, ".nc", overwrite)
+    sizes = parse_nodes(nodes, Q.check("modes", modes, "--wave-number"))
+    p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
+               outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
+    wave = travelling_wave(p, modes, regime=_regime(regime))
+    if "separation" in wave.structure:
+        raise ParameterError("--mismatch" if mismatch is not None else "--delta",
+                             mismatch if mismatch is not None else delta,
+                             f"a mismatch where the wave stays in contact (this one, {wave.structure}, separates "
+                             "from the shaft: not in this computation)",
+                             also=("--omega" if omega is not None else "--gamma", "--friction", "--wave-number"))
+    ds = wave_spectra(wave, sizes)
+    last = ds.isel(nodes=-1)
+    data = {"c": float(wave.c), "structure": wave.structure, "stable": bool(int(last["stable"])),
+            "growth_per_period": float(last["growth_per_period"]), "nodes": [int(k) for k in ds.nodes.values],
+            "growth_per_period_by_nodes": [float(v) for v in ds["growth_per_period"].values],
+            "leading_abs_by_nodes": [float(v) for v in ds["leading_abs"].values],
+            "speed_error_by_nodes": [float(v) for v in ds["speed_error"].values]}
+    _emit(data, json, "wave spectrum")
+    if out:
+        write_netcdf(ds, out)
+
+
 @app.command("continue")
 def continue_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = None, friction: Friction = 0.0,
                  modes: Annotated[int, declared(Q["modes"], "--wave-number")] = 4,

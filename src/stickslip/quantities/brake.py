@@ -202,4 +202,17 @@ BRAKE = Domain("brake", units="the paper's: time Omega t, lengths in R, traction
     Q("energy", "1", "energy of the deviation from steady sliding (units of E R^2 per unit mass)"),
     Q("kinetic", "1", "kinetic energy (units of E R^2 per unit mass)"),
     Q("flutter_speed", "1", "phase speed of the lowest flutter branch (units of c_p / R)"),
+    # the stability of a wave on the discrete ring (waves.spectrum)
+    Q("stable", "1", "1 if the wave is stable: its node-shift multipliers but its own inside the unit circle"),
+    Q("growth_per_period", "1", "ln of a perturbation's growth over one wave period (> 0: unstable)"),
+    Q("growth_per_period_by_nodes", "1", "growth_per_period on each ring of --nodes"),
+    Q("leading_abs", "1", "modulus of the leading node-shift multiplier (not the wave's own 1)"),
+    Q("leading_abs_by_nodes", "1", "leading_abs on each ring of --nodes"),
+    Q("leading_angle", "rad", "argument of the leading node-shift multiplier"),
+    Q("speed_error", "1", "relative difference of the discrete and the continuous wave speed"),
+    Q("speed_error_by_nodes", "1", "speed_error on each ring of --nodes"),
+    Q("observed_order", "1", "observed order of convergence of the wave speed in the node spacing"),
+    Q("shift_time", "1", "time for the discrete wave to move one node (internal time t / sqrt(gamma))"),
+    Q("continuous_shift_time", "1", "dtheta / |c| of the continuous wave (internal time)"),
+    Q("events_per_shift", "1", "contact events while the wave moves one node"),
 ])
