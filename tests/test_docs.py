@@ -42,6 +42,7 @@ def test_systems_page_runs(monkeypatch):
     assert round(cycle.period, 2) == 6.69 and cycle.stable
     assert round(namespace["squeal_cycle"].period, 2) == 6.20 and list(namespace["squeal_cycle"].event_state) == [2, 1]
     assert namespace["slips"].event_time.size == 82
+    assert abs(namespace["wave32"].shift_time - 0.1577) < 1e-4 and not namespace["wave32"].stable
 
 
 def test_brake_tutorial_runs(tmp_path, monkeypatch):
@@ -51,6 +52,7 @@ def test_brake_tutorial_runs(tmp_path, monkeypatch):
         exec(block, namespace)
     assert namespace["wave"].regime == "stick-slip-separation" and namespace["s"].p_e > 0
     assert namespace["regime"].regime.startswith("stick")
+    assert not namespace["spectrum"].stable and namespace["table"]["speed_error"].values[-1] < 1e-3
 
 
 def test_halfspace_tutorial_runs(tmp_path, monkeypatch):
