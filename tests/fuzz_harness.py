@@ -71,6 +71,8 @@ BASE = {
     "system simulate": [SYSTEM_FILE, "--t-end", "5", "--out", "{tmp}/y.nc"],
     "system cycle": [SYSTEM_FILE, "--transient", "30", "--out", "{tmp}/yc.nc"],
     "system stability": [SYSTEM_FILE, "--out", "{tmp}/ys.nc"],
+    "system continue": [SYSTEM_FILE, "--parameter", "contact[0].surface_speed", "--stop", "0.25", "--points", "3",
+                        "--transient", "30", "--out", "{tmp}/yb.nc"],
     "rsf slide": RSF + ["--stiffness", "1e10", "--t-end", "30", "--history", "0:1e-6,10:1e-5", "--out", "{tmp}/r.nc"],
     "rsf stability": RSF + ["--stiffness", "1e10", "--load-velocity", "1e-6"],
     "rsf cycle": RSF + ["--stiffness", "3e9", "--mass", "1e9", "--load-velocity", "1e-6", "--tol", "1e-3",
@@ -531,7 +533,7 @@ def api_values(name: str, param: str) -> list:
 #: (a branch of 1e5 waves, an annulus of 16 x 4096 elements): tried up to half their upper end.
 API_LONG_AT_THE_TOP = {("continue_waves", "num"), ("travelling_wave", "num"), ("integrate_fem", "n_r"), ("integrate_fem", "n_theta"),
                        ("integrate", "nodes"), ("FemScheme", "n_r"), ("FemScheme", "n_theta"), ("RingScheme", "nodes"),
-                       ("perturbed_steady", "nodes")}
+                       ("perturbed_steady", "nodes"), ("continue_system", "points")}
 
 
 def api_battery(timeout: float = 120.0, log=None, only=None):

@@ -153,6 +153,8 @@ WRITERS = [
     (["system", "simulate", SYSTEM_FILE, "--t-end", "5", "--out", "{tmp}/ys.nc"], ["ys.nc"]),
     (["system", "cycle", SYSTEM_FILE, "--transient", "30", "--out", "{tmp}/yc.nc"], ["yc.nc"]),
     (["system", "stability", SYSTEM_FILE, "--out", "{tmp}/yt.nc"], ["yt.nc"]),
+    (["system", "continue", SYSTEM_FILE, "--parameter", "contact[0].surface_speed", "--stop", "0.25", "--points", "3",
+      "--transient", "30", "--out", "{tmp}/yb.nc"], ["yb.nc"]),
     (["rsf", "slide", "--a", "0.01", "--b", "0.015", "--dc", "1e-5", "--normal-stress", "1e7", "--stiffness", "1e10",
       "--t-end", "30", "--history", "0:1e-6,10:1e-5", "--out", "{tmp}/rs.nc"], ["rs.nc"]),
 ]

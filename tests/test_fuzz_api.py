@@ -25,9 +25,13 @@ from stickslip.system import steady_sliding as system_steady
 from stickslip.system import burridge_knopoff
 from stickslip.rsf import RateState, SpringSlider, linear_stability, slide, slider_cycle
 from stickslip.brake.waves import ring_system, wave_spectra, wave_spectrum
-from stickslip.system import relative_cycle
+from stickslip.system import continue_system, file_parameter, relative_cycle
 
 FIG5 = BrakeParams.from_physical(100.0, 1e-4, 0.2)
+
+
+def _oscillator_build(v):
+    return System([[1.0]], [[1.0]], [Contact([1.0], 1.0, Coulomb(0.6, 0.4), v)])
 
 
 def _ring():
@@ -84,6 +88,12 @@ CALLS = {
                                                      "shift": [1, 2, 3, 4, 5, 6, 7, 0], "contact": 0, "state": 0,
                                                      "horizon": 1.0, **k}),
                        ["system", "x0", "v0", "shift", "contact", "state", "states", "horizon", "tol", "max_iter"]),
+    "continue_system": (lambda **k: continue_system(**{"build": _oscillator_build, "start": 0.2, "stop": 0.3,
+                                                       "points": 3, "transient": 30.0, **k}),
+                        ["build", "start", "stop", "points", "x0", "v0", "transient", "tol", "parameter"]),
+    "file_parameter": (lambda **k: file_parameter(**{"data": {"mass": [[1.0]], "stiffness": [[1.0]], "contact": [
+        {"direction": [1.0], "normal_force": 1.0, "surface_speed": 0.2, "fs": 0.6, "fd": 0.4}]},
+        "key": "contact[0].surface_speed", **k}), ["data", "key"]),
     "ring_system": (lambda **k: ring_system(**{"params": FIG5, "nodes": 16, **k}), ["params", "nodes"]),
     "wave_spectrum": (lambda **k: wave_spectrum(**{"wave": _fig5_wave(), "nodes": 16, **k}), ["wave", "nodes", "tol"]),
     "wave_spectra": (lambda **k: wave_spectra(**{"wave": _fig5_wave(), "nodes": [16], **k}), ["nodes", "tol"]),

@@ -117,3 +117,32 @@ def stability(file: File, json: Json = False, out: Out = None, overwrite: Replac
     _emit(result.to_dict(), json, "steady sliding")
     if out is not None:
         write_netcdf(result.to_xarray(), out)
+
+
+@app.command("continue")
+def continue_cmd(file: File,
+                 parameter: Annotated[str, typer.Option(help="The number of the file to vary, as the file names it: "
+                                                             "contact[0].surface_speed (normal_force, fs, fd, tau, "
+                                                             "normal_stiffness), stiffness[0][1] (mass, damping), "
+                                                             "force[1].", show_default=False)],
+                 stop: Annotated[float, declared(Q["parameter_value"], "--stop", "The value the branch heads for.")],
+                 points: Annotated[int, declared(Q["points"], "--points")] = 41,
+                 x0: X0 = None, v0: V0 = None,
+                 transient: Annotated[float, declared(Q["transient"], "--transient")] = 100.0,
+                 tol: Annotated[float, declared(COMMON["tol"], "--tol")] = 1e-10,
+                 json: Json = False, out: Out = None, overwrite: Replace = False):
+    """The limit cycle followed along one number of the file, with the values where its events change
+    (a stick phase born or gone: grazing), where it is lost, and where its stability changes."""
+    out = _out(out, overwrite)
+    from ..system import continue_system, file_parameter
+    from ..system.config import read_table
+
+    build, start = file_parameter(read_table(file), parameter)
+    n = build(start).dofs
+    with _file_keys():
+        branch = continue_system(build, start, stop, points=points, x0=_numbers("--x0", x0, n),
+                                 v0=_numbers("--v0", v0, n), transient=transient, tol=tol, parameter=parameter)
+    _emit(branch.to_dict(), json, "continuation")
+    if out is not None:
+        write_netcdf(branch.to_xarray(), out)
+

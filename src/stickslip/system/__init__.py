@@ -5,12 +5,13 @@ through closed-form flows between contact events (`Flow`); `monodromy` different
 (saltation matrices at its events) and `limit_cycle` finds the periodic orbit a motion settles
 on, with its Floquet multipliers; `steady_sliding` the resting state under sliding contacts and its
 linear stability; `relative_cycle` a wave moving by one cell of a symmetric structure and
-its multipliers; `load_system` reads a system from a TOML file. One contact on one degree of
+its multipliers; `continue_system` follows a cycle along a parameter; `load_system` reads a system from a TOML file. One contact on one degree of
 freedom is the oscillator of `stickslip.oscillator`.
 """
 
 from .chains import burridge_knopoff
 from .config import load_system, system_from_dict
+from .continuation import SystemBranch, continue_system, file_parameter
 from .floquet import SystemCycle, limit_cycle, monodromy, saltation
 from .flow import Flow
 from .model import Contact, System
@@ -21,4 +22,4 @@ from .symmetry import RelativeCycle, cell_symmetry, relative_cycle
 __all__ = ["Contact", "System", "Flow", "SystemRun", "Segment", "simulate", "choose_states", "monodromy",
            "saltation", "SystemCycle", "limit_cycle", "load_system", "system_from_dict",
            "SteadySliding", "steady_sliding", "burridge_knopoff", "RelativeCycle", "cell_symmetry",
-           "relative_cycle"]
+           "relative_cycle", "SystemBranch", "continue_system", "file_parameter"]

@@ -30,7 +30,7 @@ from ..errors import MISSING, ParameterError
 from ..friction import make_law
 from .model import Contact, System
 
-__all__ = ["load_system", "system_from_dict", "as_file_keys"]
+__all__ = ["load_system", "read_table", "system_from_dict", "as_file_keys"]
 
 _TOP = ("mass", "stiffness", "damping", "force", "contact")
 _CONTACT = ("direction", "normal_force", "surface_speed", "law", "fs", "fd", "tau", "name", "normal_direction",
@@ -95,6 +95,12 @@ def as_file_keys(err: ParameterError) -> ParameterError:
 
 def load_system(path) -> System:
     """The `System` of the TOML file at ``path``."""
+    return system_from_dict(read_table(path))
+
+
+def read_table(path) -> dict:
+    """The parsed TOML table of the system file at ``path`` (`ParameterError` naming ``system
+    file`` if it cannot be read)."""
     if not isinstance(path, (str, os.PathLike)):
         raise ParameterError("system file", path, "a path to a TOML file")
     path = Path(path)
@@ -107,4 +113,4 @@ def load_system(path) -> System:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as err:
         raise ParameterError("system file", str(path), f"valid TOML ({err})") from None
-    return system_from_dict(data)
+    return data

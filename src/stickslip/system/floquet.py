@@ -26,7 +26,7 @@ from ..quantities import SYSTEM as Q
 from ..results import Result
 from .flow import STATE_FLAGS, Flow
 from .model import System
-from .simulate import SystemRun, simulate
+from .simulate import SystemRun, simulate, zero_slip
 
 __all__ = ["monodromy", "saltation", "jump", "SystemCycle", "limit_cycle", "return_fixed_point"]
 
@@ -184,6 +184,7 @@ def return_fixed_point(system: System, z: np.ndarray, states: tuple, signature: 
     n = system.dofs
     target, back, contacts_back = symmetry or (signature[0], np.arange(2 * n), np.arange(len(system.contacts)))
     newton, fixed = False, None
+    z = zero_slip(system, z, [i for i, s in enumerate(states) if s == 0])  # a start from a neighbouring system
     for it in range(max_iter):
         try:
             one = simulate(system, z[:n], z[n:2 * n], horizon, samples=2, segments=True, states=states,

@@ -26,7 +26,7 @@ from ..results import Result
 from .flow import CLOSING, LAW_LIMIT, OPEN, OPENING, STATE_FLAGS, Flow
 from .model import System
 
-__all__ = ["SystemRun", "Segment", "simulate", "choose_states"]
+__all__ = ["SystemRun", "Segment", "simulate", "choose_states", "zero_slip"]
 
 #: Events in a row without time passing before the simulation is said to chatter.
 MAX_INSTANT_EVENTS = 64
@@ -84,7 +84,7 @@ class Segment:
     after: tuple
 
 
-def _zero_slip(system: System, z: np.ndarray, stuck: list[int]) -> np.ndarray:
+def zero_slip(system: System, z: np.ndarray, stuck: list[int]) -> np.ndarray:
     """``z`` with the slip velocity of the ``stuck`` contacts exactly zero (the smallest change
     of the velocity in the metric of M)."""
     if not stuck:
@@ -229,7 +229,7 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
     else:
         states = _given_states(states, vr, speed, [c.unilateral for c in system.contacts])
         zero = {i for i in range(k) if states[i] == 0}
-    z = _zero_slip(system, z, [i for i in zero if states[i] == 0])
+    z = zero_slip(system, z, [i for i in zero if states[i] == 0])
     ts = np.linspace(0.0, t_end, samples)
     out = np.empty((samples, 2 * n))
     st_out = np.empty((samples, k), dtype=np.int8)
@@ -280,7 +280,7 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
         zero = set(hit) | {i for i in range(k) if before[i] == 0}
         zero |= {i for i in range(k) if abs(vr[i]) <= 1e-13 * speed and before[i] != OPEN}
         new = choose_states(system, z, tuple(before), zero, released, flows)
-        z = _zero_slip(system, z, [i for i in range(k) if new[i] == 0])
+        z = zero_slip(system, z, [i for i in range(k) if new[i] == 0])
         for i in range(k):
             if new[i] != states[i]:
                 ev_t.append(t), ev_c.append(i), ev_s.append(new[i])

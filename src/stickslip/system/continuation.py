@@ -1,0 +1,211 @@
+"""Limit cycles of a system followed along a parameter, with the changes of their events.
+
+`continue_system(build, start, stop)` finds the cycle of ``build(start)`` (a `System` for a
+parameter value) and follows it over ``points`` values to ``stop``, each found by Newton's
+method on the return map from the cycle before (`return_fixed_point`). Along the branch it
+records the period, the multipliers and the cycle's sequence of contact events (which contact
+enters which state, in order over a period). Where that sequence changes between two values —
+a stick phase born or gone, a slip reversal appearing: a grazing of a switching line — the
+value is located by bisection, as is the value beyond which no cycle is found (a cycle lost at
+a grazing fold, where it meets a switching line tangentially); the branch ends there. A change
+of stability is marked between the two values that bracket it.
+
+`file_parameter(data, key)` makes ``build`` from a system's TOML table and one of its numbers
+named as the file writes it (``contact[0].surface_speed``, ``stiffness[0][1]``, ``force[1]``).
+"""
+
+from __future__ import annotations
+
+import copy
+import re
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+import xarray as xr
+
+from ..cf import finish
+from ..errors import NoSolutionError, ParameterError
+from ..quantities import SYSTEM as Q
+from ..results import Result
+from .config import as_file_keys, system_from_dict
+from .floquet import limit_cycle, monodromy, return_fixed_point
+from .model import System
+
+__all__ = ["SystemBranch", "continue_system", "file_parameter"]
+
+#: Bisection steps locating an event along the branch (2^-40 of the step between two values).
+BISECTIONS = 40
+
+
+def file_parameter(data: dict, key: str) -> tuple[Callable[[float], System], float]:
+    """``(build, value)``: the system of the TOML table ``data`` with its number ``key`` set to a
+    value, and that number's value in ``data``. A `ParameterError` naming ``parameter`` if the
+    key names no number of the table."""
+    match = re.fullmatch(r"(contact)\[(\d+)\]\.(\w+)|(mass|stiffness|damping)\[(\d+)\]\[(\d+)\]|(force)\[(\d+)\]",
+                         key) if isinstance(key, str) else None
+    if match is None:
+        raise ParameterError("parameter", key, "a number of the file: contact[i].surface_speed (or normal_force, fs, "
+                             "fd, tau, normal_stiffness), stiffness[i][j] (mass, damping), force[i]")
+    path = ([match[1], int(match[2]), match[3]] if match[1] else
+            [match[4], int(match[5]), int(match[6])] if match[4] else [match[7], int(match[8])])
+    try:
+        holder = data
+        for step in path[:-1]:
+            holder = holder[step]
+        value = holder[path[-1]]
+    except (KeyError, IndexError, TypeError):
+        raise ParameterError("parameter", key, "a number the file gives (this one is not in it)") from None
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise ParameterError("parameter", key, f"a number of the file (it holds {value!r})")
+
+    def build(p: float) -> System:
+        table = copy.deepcopy(data)
+        holder = table
+        for step in path[:-1]:
+            holder = holder[step]
+        holder[path[-1]] = float(p)
+        try:
+            return system_from_dict(table)
+        except ParameterError as err:
+            raise as_file_keys(err) from None
+    return build, float(value)
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class SystemBranch(Result):
+    """Cycles at the ``values`` of ``parameter``: their ``period``, start ``x0``, ``v0`` (one row a
+    value; with the contact ``states`` there, a `simulate` of one period draws the orbit), the moduli of their largest
+    ``multipliers`` (the flow's own 1 removed; NaN-padded), ``stable`` and the sequence of
+    contact events of each (``"0:stick 1:slip ..."``); ``events``, the changes located along
+    the branch (dicts with ``kind``, ``value``, ``before``, ``after``), and why it ``stopped``."""
+
+    parameter: str
+    values: np.ndarray
+    period: np.ndarray
+    x0: np.ndarray
+    v0: np.ndarray
+    states: tuple
+    multipliers: np.ndarray
+    stable: np.ndarray
+    sequence: tuple
+    events: tuple
+    stopped: str
+    MODEL = "system"
+
+    def to_dict(self) -> dict:
+        return {"parameter": self.parameter, "values": self.values.tolist(), "period": self.period.tolist(),
+                "stable": [bool(s) for s in self.stable], "events": [dict(e) for e in self.events],
+                "stopped": self.stopped, "points": int(self.values.size)}
+
+    def to_xarray(self) -> xr.Dataset:
+        ds = xr.Dataset(
+            {"period": ("point", self.period), "stable": ("point", self.stable.astype(np.int8)),
+             "x0": (("point", "dof"), self.x0), "v0": (("point", "dof"), self.v0),
+             "multiplier_abs": (("point", "multiplier"), self.multipliers),
+             "sequence": ("point", np.array(self.sequence, dtype=str)),
+             "event_value": ("event", np.array([e["value"] for e in self.events], dtype=float)),
+             "event_kind": ("event", np.array([e["kind"] for e in self.events], dtype=str))},
+            coords={"value": ("point", self.values), "point": np.arange(self.values.size),
+                    "dof": np.arange(self.x0.shape[1]),
+                    "multiplier": np.arange(self.multipliers.shape[1]), "event": np.arange(len(self.events))},
+            attrs={"parameter": self.parameter, "stopped": self.stopped})
+        return finish(ds, "system with frictional contacts: limit cycles along a parameter", "system")
+
+
+_NAMES = {-1: "reverse", 0: "stick", 1: "slip", 2: "open"}
+
+
+def _sequence(segments: tuple) -> str:
+    out = []
+    for seg in segments:
+        out += [f"{i}:{_NAMES[b]}" for i, (a, b) in enumerate(zip(seg.states, seg.after)) if seg.rows and a != b]
+    return " ".join(out)
+
+
+def _solve(build, p, start, horizon, tol):
+    """The cycle of ``build(p)`` from ``start`` = (z, states, signature): ``(period, z, states,
+    sequence, multipliers)``; NoSolutionError or ParameterError if none near."""
+    system = build(p)
+    z, states, signature = start
+    period, z, states, segments = return_fixed_point(system, z, states, signature, horizon, tol, 50, newton_after=0)
+    mult = np.linalg.eigvals(monodromy(system, segments))
+    mult = np.delete(mult, np.argmin(np.abs(mult - 1.0)))
+    return period, z, states, _sequence(segments), np.sort(np.abs(mult))[::-1]
+
+
+def continue_system(build: Callable[[float], System], start: float, stop: float, *, points: int = 41, x0=None,
+                    v0=None, transient: float = 100.0, tol: float = 1e-10, parameter: str = "parameter"
+                    ) -> SystemBranch:
+    """Follow the limit cycle of ``build(start)`` (the one the motion from ``x0``, ``v0`` settles on
+    after ``transient`` seconds, as `limit_cycle` finds it) over ``points`` equally spaced values
+    to ``stop`` (see the module). ``parameter`` names the parameter in messages and results."""
+    if not callable(build):
+        raise ParameterError("build", build, "a function of the parameter's value returning a System")
+    start, stop = Q.check("parameter_value", start, "start"), Q.check("parameter_value", stop, "stop")
+    if stop == start:
+        raise ParameterError("stop", stop, f"different from the start value {start:g}")
+    points, tol = Q.check("points", points), Q.check("tol", tol)
+    first = build(start)
+    try:  # a value the branch may reach must make a valid system: refused before the work
+        build(stop)
+    except ParameterError as err:
+        raise ParameterError("stop", stop, f"a value {parameter} can take ({err.name}: {err.allowed})") from None
+    cycle = limit_cycle(first, x0, v0, transient=transient, tol=tol)
+    n = first.dofs
+    state = (np.concatenate([cycle.x0, cycle.v0, [1.0]]), cycle.states, (cycle.contact, cycle.state))
+    here = _solve(build, start, state, 3.0 * cycle.period, tol)
+    values = np.linspace(start, stop, points)
+    rows, events, stopped = [(start, *here)], [], f"reached stop = {stop:g}"
+    for p in values[1:]:
+        prev = rows[-1]
+        guess = (prev[2], prev[3], state[2])
+        try:
+            now = _solve(build, p, guess, 3.0 * prev[1], tol)
+        except (NoSolutionError, ParameterError):
+            now = None
+        if now is None:  # a step too long for Newton, or the cycle is lost before p: where?
+            value, near = _bisect(build, prev, p, state[2], tol, lambda r: r is not None)
+            try:  # from the last cycle found, next to p
+                now = _solve(build, p, near, 3.0 * prev[1], tol)
+            except (NoSolutionError, ParameterError):
+                now = None
+        if now is None:
+            events.append({"kind": "cycle lost", "value": value, "before": prev[4], "after": ""})
+            stopped = (f"no cycle beyond {parameter} = {value:.10g} (the cycle {prev[4]!r} meets a switching line: a "
+                       "grazing fold, or the motion leaves for another attractor)")
+            break
+        if now[3] != prev[4]:
+            value = _bisect(build, prev, p, state[2], tol, lambda r: r is not None and r[3] == prev[4])[0]
+            events.append({"kind": "event sequence", "value": value, "before": prev[4], "after": now[3]})
+        if (now[4][0] < 1.0) != (prev[5][0] < 1.0):
+            events.append({"kind": "stability", "value": 0.5 * (prev[0] + p), "before": "stable" if prev[5][0] < 1
+                           else "unstable", "after": "stable" if now[4][0] < 1 else "unstable"})
+        rows.append((p, *now))
+    width = max(1, min(8, 2 * n - 1))
+    mult = np.full((len(rows), width), np.nan)
+    for i, r in enumerate(rows):
+        mult[i, :min(width, r[5].size)] = r[5][:width]
+    stable = np.array([r[5][0] < 1.0 if r[5].size else True for r in rows])
+    return SystemBranch(parameter, np.array([r[0] for r in rows]), np.array([r[1] for r in rows]),
+                        np.array([r[2][:n] for r in rows]), np.array([r[2][n:2 * n] for r in rows]),
+                        tuple(r[3] for r in rows), mult, stable,
+                        tuple(r[4] for r in rows), tuple(events), stopped)
+
+
+def _bisect(build, prev, bad, signature, tol, good) -> tuple:
+    """The value between ``prev[0]`` (where ``good(cycle)``) and ``bad`` (where not) at which the
+    cycle followed from ``prev`` stops being good, to `BISECTIONS` halvings, and the start of the
+    last good cycle found (for `_solve`)."""
+    lo, hi, start = prev[0], bad, (prev[2], prev[3], signature)
+    for _ in range(BISECTIONS):
+        mid = 0.5 * (lo + hi)
+        try:
+            found = _solve(build, mid, start, 3.0 * prev[1], tol)
+        except (NoSolutionError, ParameterError):
+            found = None
+        if good(found):
+            lo, start = mid, (found[1], found[2], signature)
+        else:
+            hi = mid
+    return 0.5 * (lo + hi), start
