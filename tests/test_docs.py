@@ -43,7 +43,7 @@ def test_systems_page_runs(monkeypatch):
     assert round(namespace["squeal_cycle"].period, 2) == 6.20 and list(namespace["squeal_cycle"].event_state) == [2, 1]
     assert namespace["slips"].event_time.size == 82
     assert abs(namespace["wave32"].shift_time - 0.1577) < 1e-4 and not namespace["wave32"].stable
-    assert [(e["kind"], round(e["value"], 4)) for e in namespace["branch"].events] == [("event sequence", 0.1494)]
+    assert [(e["change"], round(e["value"], 4)) for e in namespace["branch"].events] == [("event sequence", 0.1494)]
 
 
 def test_brake_tutorial_runs(tmp_path, monkeypatch):

@@ -75,7 +75,7 @@ def test_the_damped_cycle_is_lost_where_the_slip_no_longer_returns_to_the_belt_s
     build, start = file_parameter(_oscillator(c), "contact[0].surface_speed")
     branch = continue_system(build, start, 1.0, points=19, x0=[0.0], v0=[0.0], transient=60.0,
                              parameter="contact[0].surface_speed")
-    lost = [e for e in branch.events if e["kind"] == "cycle lost"]
+    lost = [e for e in branch.events if e["change"] == "cycle lost"]
     assert len(lost) == 1 and "no cycle beyond" in branch.stopped
     assert abs(lost[0]["value"] - _critical_speed(c)) < 1e-7
 
@@ -84,7 +84,7 @@ def test_a_stick_phase_is_born_where_the_orbit_touches_zero_slip_velocity():
     data = tomllib.loads((ROOT / "examples" / "two_blocks" / "two_blocks.toml").read_text())
     build, start = file_parameter(data, "contact[0].surface_speed")
     branch = continue_system(build, start, 0.12, points=8, x0=[0.1, 0.0], v0=[0.0, 0.0], transient=60.0)
-    born = [e for e in branch.events if e["kind"] == "event sequence"]
+    born = [e for e in branch.events if e["change"] == "event sequence"]
     assert born and born[0]["before"] == "1:slip 1:stick" and "0:stick" in born[0]["after"]
     p_star = born[0]["value"]
     lows = []
@@ -123,7 +123,7 @@ def test_the_command_line_continues_a_file_and_refuses_what_it_cannot(tmp_path, 
     assert run(["system", "continue", path, "--parameter", "contact[0].surface_speed", "--stop", "0.12", "--points",
                 "8", "--x0", "0.1,0", "--json", "--out", str(out)]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert data["points"] == 8 and [e["kind"] for e in data["events"]] == ["event sequence"] and out.exists()
+    assert data["points"] == 8 and [e["change"] for e in data["events"]] == ["event sequence"] and out.exists()
     for args, name in ((["--parameter", "contact[0].fs", "--stop", "0.1"], "--stop = 0.1"),
                        (["--parameter", "mass[0]", "--stop", "1"], "--parameter"),
                        (["--parameter", "contact[0].fs", "--stop", "0.9", "--x0", "1"], "--x0"),

@@ -81,5 +81,8 @@ SYSTEM = Domain("system", units="SI (or any consistent units)", quantities=[
     Q("event", "1", "number of an event along the branch"),
     Q("event_value", "1", "value of the parameter where the branch changes"),
     Q("event_kind", "", "what changes: event sequence (a grazing), cycle lost, stability"),
+    Q("change", "", "what changes there: event sequence (a grazing), cycle lost, stability"),
+    Q("before", "", "the cycle's contact events (or its stability) before the value"),
+    Q("after", "", "the same after it"),
     Q("stopped", "", "why the branch ends"),
 ])

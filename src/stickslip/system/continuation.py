@@ -78,7 +78,7 @@ class SystemBranch(Result):
     value; with the contact ``states`` there, a `simulate` of one period draws the orbit), the moduli of their largest
     ``multipliers`` (the flow's own 1 removed; NaN-padded), ``stable`` and the sequence of
     contact events of each (``"0:stick 1:slip ..."``); ``events``, the changes located along
-    the branch (dicts with ``kind``, ``value``, ``before``, ``after``), and why it ``stopped``."""
+    the branch (dicts with ``change``, ``value``, ``before``, ``after``), and why it ``stopped``."""
 
     parameter: str
     values: np.ndarray
@@ -105,7 +105,7 @@ class SystemBranch(Result):
              "multiplier_abs": (("point", "multiplier"), self.multipliers),
              "sequence": ("point", np.array(self.sequence, dtype=str)),
              "event_value": ("event", np.array([e["value"] for e in self.events], dtype=float)),
-             "event_kind": ("event", np.array([e["kind"] for e in self.events], dtype=str))},
+             "event_kind": ("event", np.array([e["change"] for e in self.events], dtype=str))},
             coords={"value": ("point", self.values), "point": np.arange(self.values.size),
                     "dof": np.arange(self.x0.shape[1]),
                     "multiplier": np.arange(self.multipliers.shape[1]), "event": np.arange(len(self.events))},
@@ -171,15 +171,15 @@ def continue_system(build: Callable[[float], System], start: float, stop: float,
             except (NoSolutionError, ParameterError):
                 now = None
         if now is None:
-            events.append({"kind": "cycle lost", "value": value, "before": prev[4], "after": ""})
+            events.append({"change": "cycle lost", "value": value, "before": prev[4], "after": ""})
             stopped = (f"no cycle beyond {parameter} = {value:.10g} (the cycle {prev[4]!r} meets a switching line: a "
                        "grazing fold, or the motion leaves for another attractor)")
             break
         if now[3] != prev[4]:
             value = _bisect(build, prev, p, state[2], tol, lambda r: r is not None and r[3] == prev[4])[0]
-            events.append({"kind": "event sequence", "value": value, "before": prev[4], "after": now[3]})
+            events.append({"change": "event sequence", "value": value, "before": prev[4], "after": now[3]})
         if (now[4][0] < 1.0) != (prev[5][0] < 1.0):
-            events.append({"kind": "stability", "value": 0.5 * (prev[0] + p), "before": "stable" if prev[5][0] < 1
+            events.append({"change": "stability", "value": 0.5 * (prev[0] + p), "before": "stable" if prev[5][0] < 1
                            else "unstable", "after": "stable" if now[4][0] < 1 else "unstable"})
         rows.append((p, *now))
     width = max(1, min(8, 2 * n - 1))
