@@ -98,6 +98,33 @@ def test_a_stick_phase_is_born_where_the_orbit_touches_zero_slip_velocity():
     assert abs(at_p_star) < 1e-6 * slope  # zero at the located value: within 1e-6 in the parameter
 
 
+def test_a_period_doubling_is_located_where_a_multiplier_reaches_minus_one():
+    """Along the coupling stiffness K[0][1] of the two-block chain a multiplier leaves the unit circle
+    at -1: on each side of the located value the return map differentiated by central differences of
+    whole runs (`return_map_moduli`) has its largest modulus below and above 1, by about the slope."""
+    from types import SimpleNamespace
+
+    from stickslip.system import limit_cycle
+
+    from .test_floquet import return_map_moduli
+
+    data = tomllib.loads((ROOT / "examples" / "two_blocks" / "two_blocks.toml").read_text())
+    build, start = file_parameter(data, "stiffness[0][1]")
+    branch = continue_system(build, start, 0.5, points=9, x0=[0.1, 0.0], v0=[0.0, 0.0], transient=60.0)
+    changes = [e for e in branch.events if e["change"] == "stability"]
+    assert len(changes) == 1 and changes[0]["before"] == "stable" and "period doubling" in changes[0]["crossing"]
+    p_star = changes[0]["value"]
+    first = limit_cycle(build(start), [0.1, 0.0], [0.0, 0.0], transient=60.0)
+    largest = {}
+    for d in (-2e-3, 2e-3):
+        near = continue_system(build, start, p_star + d, points=9, x0=[0.1, 0.0], v0=[0.0, 0.0], transient=60.0)
+        cycle = SimpleNamespace(x0=near.x0[-1], v0=near.v0[-1], states=near.states[-1], period=near.period[-1],
+                                contact=first.contact, state=first.state)
+        largest[d] = return_map_moduli(build(p_star + d), cycle, [0, 1, 2])[-1]
+    assert largest[-2e-3] < 1.0 < largest[2e-3]
+    assert abs(largest[2e-3] + largest[-2e-3] - 2.0) < 0.1 * (largest[2e-3] - largest[-2e-3])  # 1 at the middle
+
+
 @pytest.mark.parametrize("key, message", [("contact[0].colour", "parameter = 'contact\\[0\\].colour'"),
                                           ("contact[3].fs", "not in it"), ("stiffness[0]", "a number of the file"),
                                           ("contact[0].direction", "a number of the file"), (3, "parameter = 3")])

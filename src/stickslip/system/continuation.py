@@ -8,7 +8,8 @@ enters which state, in order over a period). Where that sequence changes between
 a stick phase born or gone, a slip reversal appearing: a grazing of a switching line — the
 value is located by bisection, as is the value beyond which no cycle is found (a cycle lost at
 a grazing fold, where it meets a switching line tangentially); the branch ends there. A change
-of stability is marked between the two values that bracket it.
+of stability (the largest multiplier but the flow's own crossing the unit circle) is located by
+bisection too, with how it crosses: at +1, at -1 (a period doubling), or as a complex pair.
 
 `file_parameter(data, key)` makes ``build`` from a system's TOML table and one of its numbers
 named as the file writes it (``contact[0].surface_speed``, ``stiffness[0][1]``, ``force[1]``).
@@ -78,7 +79,8 @@ class SystemBranch(Result):
     value; with the contact ``states`` there, a `simulate` of one period draws the orbit), the moduli of their largest
     ``multipliers`` (the flow's own 1 removed; NaN-padded), ``stable`` and the sequence of
     contact events of each (``"0:stick 1:slip ..."``); ``events``, the changes located along
-    the branch (dicts with ``change``, ``value``, ``before``, ``after``), and why it ``stopped``."""
+    the branch (dicts with ``change``, ``value``, ``before``, ``after``; a stability change also says
+    its multiplier's ``crossing``), and why it ``stopped``."""
 
     parameter: str
     values: np.ndarray
@@ -131,7 +133,7 @@ def _solve(build, p, start, horizon, tol):
     period, z, states, segments = return_fixed_point(system, z, states, signature, horizon, tol, 50, newton_after=0)
     mult = np.linalg.eigvals(monodromy(system, segments))
     mult = np.delete(mult, np.argmin(np.abs(mult - 1.0)))
-    return period, z, states, _sequence(segments), np.sort(np.abs(mult))[::-1]
+    return period, z, states, _sequence(segments), mult[np.argsort(-np.abs(mult))]
 
 
 def continue_system(build: Callable[[float], System], start: float, stop: float, *, points: int = 41, x0=None,
@@ -178,19 +180,31 @@ def continue_system(build: Callable[[float], System], start: float, stop: float,
         if now[3] != prev[4]:
             value = _bisect(build, prev, p, state[2], tol, lambda r: r is not None and r[3] == prev[4])[0]
             events.append({"change": "event sequence", "value": value, "before": prev[4], "after": now[3]})
-        if (now[4][0] < 1.0) != (prev[5][0] < 1.0):
-            events.append({"change": "stability", "value": 0.5 * (prev[0] + p), "before": "stable" if prev[5][0] < 1
-                           else "unstable", "after": "stable" if now[4][0] < 1 else "unstable"})
+        if (abs(now[4][0]) < 1.0) != (abs(prev[5][0]) < 1.0):
+            was = abs(prev[5][0]) < 1.0
+            value, near = _bisect(build, prev, p, state[2], tol,
+                                  lambda r: r is not None and r[3] == prev[4] and (abs(r[4][0]) < 1.0) == was)
+            at = _solve(build, value, near, 3.0 * prev[1], tol)[4][0]
+            events.append({"change": "stability", "value": value, "before": "stable" if was else "unstable",
+                           "after": "unstable" if was else "stable", "crossing": _crossing(at)})
         rows.append((p, *now))
     width = max(1, min(8, 2 * n - 1))
     mult = np.full((len(rows), width), np.nan)
     for i, r in enumerate(rows):
-        mult[i, :min(width, r[5].size)] = r[5][:width]
-    stable = np.array([r[5][0] < 1.0 if r[5].size else True for r in rows])
+        mult[i, :min(width, r[5].size)] = np.abs(r[5][:width])
+    stable = np.array([abs(r[5][0]) < 1.0 if r[5].size else True for r in rows])
     return SystemBranch(parameter, np.array([r[0] for r in rows]), np.array([r[1] for r in rows]),
                         np.array([r[2][:n] for r in rows]), np.array([r[2][n:2 * n] for r in rows]),
                         tuple(r[3] for r in rows), mult, stable,
                         tuple(r[4] for r in rows), tuple(events), stopped)
+
+
+def _crossing(mu: complex) -> str:
+    """How the multiplier ``mu`` crosses the unit circle: at +1 (a fold or pitchfork of cycles), at -1
+    (a period doubling), or as a complex pair (a torus)."""
+    if abs(mu.imag) > 1e-6 * abs(mu):
+        return f"complex pair at angle {np.angle(mu):.4g} rad (a torus)"
+    return "at -1 (period doubling)" if mu.real < 0 else "at +1 (a fold or pitchfork of cycles)"
 
 
 def _bisect(build, prev, bad, signature, tol, good) -> tuple:
