@@ -26,7 +26,27 @@ def test_one_dof_eigenvalues_are_the_roots_of_its_characteristic_polynomial(m, c
     roots = np.roots([m, c - N * fd * tau, k])
     np.testing.assert_allclose(np.sort_complex(result.eigenvalues), np.sort_complex(roots), rtol=1e-12)
     assert result.x[0] == pytest.approx(N * np.sign(V) * fd * (1 - tau * abs(V)) / k, rel=1e-13)
-    assert result.stable == (c - N * fd * tau > 0)
+    assert result.stable == (c - N * fd * tau > 0) and result.marginal == (c - N * fd * tau == 0)
+
+
+@pytest.mark.parametrize("c, tau", [(0.0, 0.0), (0.2 * 0.4 * 0.5, 0.5)])
+def test_undamped_or_exactly_cancelled_damping_is_marginal_not_stable(c, tau):
+    """Eigenvalues +-i omega (no damping, Coulomb; or a damping that the falling law cancels): the
+    verdict is 'marginal', not a sign of round-off (it was True or False by the rounding)."""
+    for k in (1.0, 3.0, 7.0, 1e6):
+        result = steady_sliding(System([[1.0]], [[k]], [Contact([1.0], 0.2, LinearWeakening(0.5, 0.4, tau), 0.3)],
+                                       damping=[[c]]))
+        assert result.marginal and not result.stable
+        assert result.to_dict()["marginal"] is True
+    rng = np.random.default_rng(0)  # seeded: 3-DOF undamped structures, one Coulomb contact; in some all real
+    for _ in range(40):              # parts come out below zero by round-off (trial 24: -4.2e-17)
+        B = rng.normal(size=(3, 3))
+        undamped = steady_sliding(System(np.eye(3), B @ B.T + 3 * np.eye(3), [Contact(np.eye(3)[0], 1.0,
+                                                                                        Coulomb(0.5, 0.4), 0.3)]))
+        assert undamped.marginal and not undamped.stable
+    damped = steady_sliding(System([[1.0]], [[1.0]], [Contact([1.0], 0.2, LinearWeakening(0.5, 0.4, tau), 0.3)],
+                                   damping=[[c + 0.01]]))
+    assert not damped.marginal and damped.stable
 
 
 def _field(M, C, K, f, contacts, y):

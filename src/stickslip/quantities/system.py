@@ -55,6 +55,8 @@ SYSTEM = Domain("system", units="SI (or any consistent units)", quantities=[
     Q("multipliers_abs", "1", "moduli of the Floquet multipliers of the cycle"),
     Q("stable", "1", "1 if stable: a cycle's multipliers but the flow's own inside the unit circle, steady "
       "sliding's eigenvalues in the left half-plane"),
+    Q("marginal", "1", "1 if steady sliding's largest real part is zero to round-off: linear stability does not "
+      "decide (an undamped structure under Coulomb contacts)"),
     Q("events", "1", "contact events (of a run, or of one period of a cycle)"),
     Q("x_end", "m", "displacement at the end of the run"),
     Q("v_end", "m/s", "velocity at the end of the run"),

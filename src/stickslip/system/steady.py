@@ -41,9 +41,17 @@ class SteadySliding(Result):
     MODEL = "system"
 
     @property
+    def marginal(self) -> bool:
+        """The largest real part is zero to round-off (``1e3 eps`` of the largest eigenvalue): an
+        undamped structure under Coulomb contacts, a damping that friction cancels exactly. Linear
+        stability does not decide then."""
+        scale = float(np.abs(self.eigenvalues).max()) if self.eigenvalues.size else 0.0
+        return bool(abs(self.growth_rate) <= 1e3 * np.finfo(float).eps * scale)
+
+    @property
     def stable(self) -> bool:
-        """Every eigenvalue with a negative real part."""
-        return bool(np.all(self.eigenvalues.real < 0))
+        """Every eigenvalue with a negative real part, beyond round-off (False when `marginal`)."""
+        return bool(np.all(self.eigenvalues.real < 0)) and not self.marginal
 
     @property
     def growth_rate(self) -> float:
@@ -51,7 +59,7 @@ class SteadySliding(Result):
         return float(self.eigenvalues.real.max())
 
     def to_dict(self) -> dict:
-        return {"stable": self.stable, "growth_rate": self.growth_rate, "x": self.x.tolist(),
+        return {"stable": self.stable, "marginal": self.marginal, "growth_rate": self.growth_rate, "x": self.x.tolist(),
                 "friction_force": self.friction_force.tolist(),
                 "eigenvalue_real": self.eigenvalues.real.tolist(), "eigenvalue_imag": self.eigenvalues.imag.tolist()}
 
@@ -62,7 +70,7 @@ class SteadySliding(Result):
              "eigenvalue_real": ("mode", self.eigenvalues.real), "eigenvalue_imag": ("mode", self.eigenvalues.imag)},
             coords={"dof": np.arange(self.x.size), "contact": np.arange(self.friction_force.size),
                     "mode": np.arange(self.eigenvalues.size)},
-            attrs={"stable": int(self.stable), "growth_rate": self.growth_rate})
+            attrs={"stable": int(self.stable), "marginal": int(self.marginal), "growth_rate": self.growth_rate})
         return finish(ds, "system with frictional contacts: steady sliding and its linear stability", "system")
 
 
