@@ -158,3 +158,17 @@ def test_the_command_line_continues_a_file_and_refuses_what_it_cannot(tmp_path, 
         assert run(["system", "continue", path, *args, "--json"]) == 2
         captured = capsys.readouterr()
         assert captured.out == "" and captured.err.count("\n") == 1 and name in captured.err, captured.err
+
+
+def test_a_motion_that_settles_is_said_to_have_settled():
+    """Block 2's belt at 0.32 m/s: from this start the chain settles on steady sliding (the
+    stick-slip cycle exists too, found by continuation, but does not attract it)."""
+    from stickslip.errors import NoSolutionError
+    from stickslip.system import limit_cycle
+
+    data = tomllib.loads((ROOT / "examples" / "two_blocks" / "two_blocks.toml").read_text())
+    build, _ = file_parameter(data, "contact[1].surface_speed")
+    with pytest.raises(NoSolutionError, match="the motion settled"):
+        limit_cycle(build(0.32), [0.1, 0.0], [0.0, 0.0], transient=200.0)
+    branch = continue_system(build, 0.1, 0.32, points=6, x0=[0.1, 0.0], v0=[0.0, 0.0], transient=60.0)
+    assert branch.stopped.startswith("reached") and branch.values[-1] == 0.32

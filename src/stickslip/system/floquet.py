@@ -237,6 +237,11 @@ def limit_cycle(system: System, x0=None, v0=None, *, transient: float = 100.0, t
         raise ParameterError("transient", transient, err.allowed, also=err.also) from None
     if run.event_time.size < 2:
         raise NoSolutionError(f"no contact events within transient = {transient:g} s: no stick-slip cycle to follow")
+    spacing = float(np.diff(run.event_time[-16:]).max())
+    if transient - run.event_time[-1] > 10.0 * spacing:  # a cycle's events are never that far apart
+        raise NoSolutionError(f"no contact event in the last {transient - run.event_time[-1]:.6g} s of the transient "
+                              f"(the last at t = {run.event_time[-1]:.6g} s, {run.event_time.size} in all): the motion "
+                              "settled (steady sliding, or rest) and no stick-slip cycle follows from this start")
     signature = (int(run.event_contact[-1]), int(run.event_state[-1]))
     crossings = _after(run, signature)
     n = system.dofs
