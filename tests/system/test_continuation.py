@@ -151,6 +151,9 @@ def test_the_command_line_continues_a_file_and_refuses_what_it_cannot(tmp_path, 
                 "8", "--x0", "0.1,0", "--json", "--out", str(out)]) == 0
     data = json.loads(capsys.readouterr().out)
     assert data["points"] == 8 and [e["change"] for e in data["events"]] == ["event sequence"] and out.exists()
+    from stickslip.cf import load_result
+
+    assert load_result(out)["value"].attrs["units"] == "m/s"  # the units of the number the key names
     for args, name in ((["--parameter", "contact[0].fs", "--stop", "0.1"], "--stop = 0.1"),
                        (["--parameter", "mass[0]", "--stop", "1"], "--parameter"),
                        (["--parameter", "contact[0].fs", "--stop", "0.9", "--x0", "1"], "--x0"),

@@ -27,13 +27,13 @@ import xarray as xr
 
 from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
-from ..quantities import SYSTEM as Q
+from ..quantities import OSCILLATOR, SYSTEM as Q
 from ..results import Result
 from .config import as_file_keys, system_from_dict
 from .floquet import limit_cycle, monodromy, return_fixed_point
 from .model import System
 
-__all__ = ["SystemBranch", "continue_system", "file_parameter"]
+__all__ = ["SystemBranch", "continue_system", "file_parameter", "parameter_units"]
 
 #: Bisection steps locating an event along the branch (2^-40 of the step between two values).
 BISECTIONS = 40
@@ -73,6 +73,18 @@ def file_parameter(data: dict, key: str) -> tuple[Callable[[float], System], flo
     return build, float(value)
 
 
+def parameter_units(key: str) -> str:
+    """The units of the number a file key names (``contact[0].surface_speed``: ``m/s``), from the
+    declarations; ``1`` for a name that is not a file key."""
+    match = re.fullmatch(r"contact\[\d+\]\.(\w+)|(mass|stiffness|damping|force)\[.*", str(key))
+    if match is None:
+        return "1"
+    name = match[1] or {"mass": "mass_matrix", "stiffness": "stiffness_matrix", "damping": "damping_matrix",
+                        "force": "force"}[match[2]]
+    domain = OSCILLATOR if name in ("fs", "fd", "tau") else Q
+    return domain[name].units if name in domain else "1"
+
+
 @dataclass(frozen=True, eq=False, repr=False)
 class SystemBranch(Result):
     """Cycles at the ``values`` of ``parameter``: their ``period``, start ``x0``, ``v0`` (one row a
@@ -106,9 +118,12 @@ class SystemBranch(Result):
              "x0": (("point", "dof"), self.x0), "v0": (("point", "dof"), self.v0),
              "multiplier_abs": (("point", "multiplier"), self.multipliers),
              "sequence": ("point", np.array(self.sequence, dtype=str)),
-             "event_value": ("event", np.array([e["value"] for e in self.events], dtype=float)),
+             "event_value": ("event", np.array([e["value"] for e in self.events], dtype=float),
+                             {"units": parameter_units(self.parameter)}),
              "event_kind": ("event", np.array([e["change"] for e in self.events], dtype=str))},
-            coords={"value": ("point", self.values), "point": np.arange(self.values.size),
+            coords={"value": ("point", self.values, {"units": parameter_units(self.parameter),
+                                                     "long_name": f"value of {self.parameter}"}),
+                    "point": np.arange(self.values.size),
                     "dof": np.arange(self.x0.shape[1]),
                     "multiplier": np.arange(self.multipliers.shape[1]), "event": np.arange(len(self.events))},
             attrs={"parameter": self.parameter, "stopped": self.stopped})
