@@ -28,17 +28,22 @@ def finite_differences(system, z0, t_end, eps=1e-6):
     return out
 
 
-def return_map_moduli(system, cycle, free, eps=1e-6):
+def return_map_moduli(system, cycle, free, eps=1e-6, *, period=None, target=None, back=None):
     """The moduli (sorted) of the eigenvalues of the cycle's return map to its section (its
     contact entering its state), differentiated by central differences in the coordinates
-    ``free`` of the state (those that stay free on the section)."""
+    ``free`` of the state (those that stay free on the section). For a wave moving by one cell:
+    the return is contact ``target``'s, the state there mapped back by ``z[back]``, within a
+    few ``period`` (the cell's time)."""
     n, z0 = system.dofs, np.concatenate([cycle.x0, cycle.v0])
+    period = cycle.period if period is None else period
+    target = cycle.contact if target is None else target
+    back = np.arange(2 * n) if back is None else back
 
     def return_map(z):
-        run = simulate(system, z[:n], z[n:], 3 * cycle.period, samples=2, segments=True, states=cycle.states)
+        run = simulate(system, z[:n], z[n:], 3 * period, samples=2, segments=True, states=cycle.states)
         for seg, nxt in zip(run.segments, run.segments[1:]):
-            if seg.after[cycle.contact] == cycle.state != seg.states[cycle.contact]:
-                return nxt.z[:2 * n]
+            if seg.after[target] == cycle.state != seg.states[target]:
+                return nxt.z[:2 * n][back]
         raise AssertionError("no return")
 
     J = np.zeros((len(free), len(free)))

@@ -12,7 +12,7 @@ freedom is the oscillator of `stickslip.oscillator`.
 from .chains import burridge_knopoff
 from .config import load_system, system_from_dict
 from .continuation import SystemBranch, continue_system, file_parameter
-from .floquet import SystemCycle, limit_cycle, monodromy, saltation
+from .floquet import SystemCycle, limit_cycle, monodromy, saltation, without_own
 from .flow import Flow
 from .model import Contact, System
 from .simulate import Segment, SystemRun, choose_states, simulate
@@ -22,4 +22,4 @@ from .symmetry import RelativeCycle, cell_symmetry, relative_cycle
 __all__ = ["Contact", "System", "Flow", "SystemRun", "Segment", "simulate", "choose_states", "monodromy",
            "saltation", "SystemCycle", "limit_cycle", "load_system", "system_from_dict",
            "SteadySliding", "steady_sliding", "burridge_knopoff", "RelativeCycle", "cell_symmetry",
-           "relative_cycle", "SystemBranch", "continue_system", "file_parameter"]
+           "relative_cycle", "without_own", "SystemBranch", "continue_system", "file_parameter"]

@@ -30,7 +30,7 @@ from ..errors import NoSolutionError, ParameterError
 from ..quantities import OSCILLATOR, SYSTEM as Q
 from ..results import Result
 from .config import as_file_keys, system_from_dict
-from .floquet import limit_cycle, monodromy, return_fixed_point
+from .floquet import limit_cycle, monodromy, return_fixed_point, without_own
 from .model import System
 
 __all__ = ["SystemBranch", "continue_system", "file_parameter", "parameter_units"]
@@ -51,10 +51,7 @@ def file_parameter(data: dict, key: str) -> tuple[Callable[[float], System], flo
     path = ([match[1], int(match[2]), match[3]] if match[1] else
             [match[4], int(match[5]), int(match[6])] if match[4] else [match[7], int(match[8])])
     try:
-        holder = data
-        for step in path[:-1]:
-            holder = holder[step]
-        value = holder[path[-1]]
+        value = _holder(data, path)[path[-1]]
     except (KeyError, IndexError, TypeError):
         raise ParameterError("parameter", key, "a number the file gives (this one is not in it)") from None
     if isinstance(value, bool) or not isinstance(value, (int, float)):
@@ -62,15 +59,19 @@ def file_parameter(data: dict, key: str) -> tuple[Callable[[float], System], flo
 
     def build(p: float) -> System:
         table = copy.deepcopy(data)
-        holder = table
-        for step in path[:-1]:
-            holder = holder[step]
-        holder[path[-1]] = float(p)
+        _holder(table, path)[path[-1]] = float(p)
         try:
             return system_from_dict(table)
         except ParameterError as err:
             raise as_file_keys(err) from None
     return build, float(value)
+
+
+def _holder(table, path: list):
+    """The table or list that holds the number at ``path`` (its last step) in ``table``."""
+    for step in path[:-1]:
+        table = table[step]
+    return table
 
 
 def parameter_units(key: str) -> str:
@@ -146,8 +147,7 @@ def _solve(build, p, start, horizon, tol):
     system = build(p)
     z, states, signature = start
     period, z, states, segments = return_fixed_point(system, z, states, signature, horizon, tol, 50, newton_after=0)
-    mult = np.linalg.eigvals(monodromy(system, segments))
-    mult = np.delete(mult, np.argmin(np.abs(mult - 1.0)))
+    mult = without_own(np.linalg.eigvals(monodromy(system, segments)))
     return period, z, states, _sequence(segments), mult[np.argsort(-np.abs(mult))]
 
 

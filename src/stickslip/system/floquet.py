@@ -28,7 +28,8 @@ from .flow import STATE_FLAGS, Flow
 from .model import System
 from .simulate import SystemRun, simulate, zero_slip
 
-__all__ = ["monodromy", "saltation", "jump", "SystemCycle", "limit_cycle", "return_fixed_point"]
+__all__ = ["monodromy", "saltation", "jump", "SystemCycle", "limit_cycle", "return_fixed_point", "without_own",
+           "cycle_dataset", "period_events", "entries"]
 
 
 def saltation(f_minus: np.ndarray, f_plus: np.ndarray, normal: np.ndarray) -> np.ndarray:
@@ -83,6 +84,33 @@ def monodromy(system: System, run: SystemRun | tuple) -> np.ndarray:
     return out
 
 
+def without_own(multipliers: np.ndarray) -> np.ndarray:
+    """The multipliers but the flow's own (the one nearest 1), in their order."""
+    return np.delete(multipliers, np.argmin(np.abs(multipliers - 1.0)))
+
+
+def cycle_dataset(cycle, attrs: dict, title: str) -> xr.Dataset:
+    """A cycle's multipliers, start and events as a dataset (`SystemCycle`, `RelativeCycle`),
+    with ``attrs``; units and meanings from the declarations (`stickslip.cf.finish`)."""
+    m = cycle.multipliers
+    ds = xr.Dataset(
+        {"multiplier_real": ("multiplier", m.real), "multiplier_imag": ("multiplier", m.imag),
+         "x0": ("dof", cycle.x0), "v0": ("dof", cycle.v0),
+         "event_time": ("event", cycle.event_time), "event_contact": ("event", cycle.event_contact),
+         "event_state": ("event", cycle.event_state.astype(np.int8), STATE_FLAGS)},
+        coords={"dof": np.arange(cycle.x0.size), "event": np.arange(cycle.event_time.size)},
+        attrs={**attrs, "stable": int(cycle.stable), "section_contact": cycle.contact, "section_state": cycle.state})
+    return finish(ds, title, "system")
+
+
+def period_events(system: System, z: np.ndarray, states: tuple, period: float) -> tuple:
+    """``(time, contact, state)`` of the events of one period from ``z`` (the section's own last)."""
+    n = system.dofs
+    run = simulate(system, z[:n], z[n:2 * n], period * (1 + 1e-9), samples=2, states=states)
+    inside = run.event_time <= period * (1 + 1e-12)
+    return run.event_time[inside], run.event_contact[inside], run.event_state[inside]
+
+
 @dataclass(frozen=True, eq=False, repr=False)
 class SystemCycle(Result):
     """A periodic orbit: its ``period``, the state ``x0``, ``v0`` just after the event that starts
@@ -105,8 +133,7 @@ class SystemCycle(Result):
     @property
     def stable(self) -> bool:
         """All multipliers but the flow's own (the one nearest 1) inside the unit circle."""
-        others = np.delete(self.multipliers, np.argmin(np.abs(self.multipliers - 1.0)))
-        return bool(np.all(np.abs(others) < 1.0))
+        return bool(np.all(np.abs(without_own(self.multipliers)) < 1.0))
 
     def to_dict(self) -> dict:
         return {"period": self.period, "stable": self.stable, "multipliers_abs": np.abs(self.multipliers).tolist(),
@@ -114,19 +141,11 @@ class SystemCycle(Result):
 
     def to_xarray(self) -> xr.Dataset:
         """Units and meanings from the declarations (`stickslip.cf.finish`)."""
-        m = self.multipliers
-        ds = xr.Dataset(
-            {"multiplier_real": ("multiplier", m.real), "multiplier_imag": ("multiplier", m.imag),
-             "x0": ("dof", self.x0), "v0": ("dof", self.v0),
-             "event_time": ("event", self.event_time), "event_contact": ("event", self.event_contact),
-             "event_state": ("event", self.event_state.astype(np.int8), STATE_FLAGS)},
-            coords={"dof": np.arange(self.x0.size), "event": np.arange(self.event_time.size)},
-            attrs={"period": self.period, "stable": int(self.stable), "section_contact": self.contact,
-                   "section_state": self.state})
-        return finish(ds, "system with frictional contacts: limit cycle and its Floquet multipliers", "system")
+        return cycle_dataset(self, {"period": self.period},
+                             "system with frictional contacts: limit cycle and its Floquet multipliers")
 
 
-def _after(run: SystemRun, signature) -> list[tuple]:
+def entries(run: SystemRun, signature) -> list[tuple]:
     """``(time, state just after, segment number, contact states after)`` of each event of ``run`` where a contact
     entered a state, as ``signature`` = (contact, state) says."""
     out = []
@@ -189,7 +208,7 @@ def return_fixed_point(system: System, z: np.ndarray, states: tuple, signature: 
         try:
             one = simulate(system, z[:n], z[n:2 * n], horizon, samples=2, segments=True, states=states,
                            stop_at=(target, signature[1]))
-            ret = [r for r in _after(one, (target, signature[1])) if r[0] > 0.0]
+            ret = [r for r in entries(one, (target, signature[1])) if r[0] > 0.0]
         except (ParameterError, NoSolutionError):
             if not newton:
                 raise
@@ -243,14 +262,12 @@ def limit_cycle(system: System, x0=None, v0=None, *, transient: float = 100.0, t
                               f"(the last at t = {run.event_time[-1]:.6g} s, {run.event_time.size} in all): the motion "
                               "settled (steady sliding, or rest) and no stick-slip cycle follows from this start")
     signature = (int(run.event_contact[-1]), int(run.event_state[-1]))
-    crossings = _after(run, signature)
+    crossings = entries(run, signature)
     n = system.dofs
     z, states = crossings[-1][1], crossings[-1][3]
     horizon = transient if len(crossings) < 2 else 4.0 * (crossings[-1][0] - crossings[-2][0])
     period, z, start, segments = return_fixed_point(system, z, states, signature, horizon, tol, max_iter)
     mult = np.linalg.eigvals(monodromy(system, segments))
     mult = mult[np.argsort(-np.abs(mult))]
-    one = simulate(system, z[:n], z[n:2 * n], period * (1 + 1e-9), samples=2, states=start)
-    inside = one.event_time <= period * (1 + 1e-12)  # the events of one period, the section's own last
-    return SystemCycle(period, z[:n], z[n:2 * n], signature[0], signature[1], start, mult, one.event_time[inside],
-                       one.event_contact[inside], one.event_state[inside])
+    return SystemCycle(period, z[:n], z[n:2 * n], signature[0], signature[1], start, mult,
+                       *period_events(system, z, start, period))

@@ -88,8 +88,7 @@ class Flow:
             force_rows[j, n:2 * n] = N * mu1 * w
             force_rows[j, -1] = N * (s * mu0 - mu1 * V)
         if push.any():
-            unit = np.array([c.normal_direction if c.unilateral else np.zeros(n) for c in system.contacts]).T
-            k_eff += (unit * push) @ kn.T
+            k_eff += (system.normal_units * push) @ kn.T
         if fric.any():
             k_eff += (W * fric) @ kn.T
         if stuck:

@@ -184,17 +184,22 @@ class System:
     @property
     def directions(self) -> np.ndarray:
         """``W``: one column per contact (computed once)."""
-        if "W" not in self._cache:
-            self._cache["W"] = np.stack([c.direction for c in self.contacts], axis=1)
-            self._cache["W"].setflags(write=False)
-        return self._cache["W"]
+        return self._columns("W", lambda c: c.direction)
+
+    @property
+    def normal_units(self) -> np.ndarray:
+        """Each contact's normal direction ``n`` as a column (zero without one; computed once)."""
+        return self._columns("n", lambda c: c.normal_direction if c.unilateral else np.zeros(self.dofs))
 
     @property
     def normal_directions(self) -> np.ndarray:
         """``k_n n`` of each contact as a column (zero without a normal direction; computed once)."""
-        if "Kn" not in self._cache:
-            cols = [c.normal_stiffness * c.normal_direction if c.unilateral else np.zeros(self.dofs)
-                    for c in self.contacts]
-            self._cache["Kn"] = np.stack(cols, axis=1)
-            self._cache["Kn"].setflags(write=False)
-        return self._cache["Kn"]
+        return self._columns("Kn", lambda c: c.normal_stiffness * c.normal_direction if c.unilateral
+                             else np.zeros(self.dofs))
+
+    def _columns(self, key: str, column) -> np.ndarray:
+        """``column(contact)`` of every contact side by side, made once and read-only."""
+        if key not in self._cache:
+            self._cache[key] = np.stack([column(c) for c in self.contacts], axis=1)
+            self._cache[key].setflags(write=False)
+        return self._cache[key]

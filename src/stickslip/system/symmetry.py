@@ -22,12 +22,10 @@ from dataclasses import dataclass
 import numpy as np
 import xarray as xr
 
-from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import SYSTEM as Q
 from ..results import Result
-from .floquet import monodromy, return_fixed_point
-from .flow import STATE_FLAGS
+from .floquet import cycle_dataset, entries, monodromy, period_events, return_fixed_point, without_own
 from .model import System
 from .simulate import simulate
 
@@ -108,7 +106,7 @@ class RelativeCycle(Result):
     @property
     def leading(self) -> complex:
         """The largest multiplier but the wave's own (the one nearest 1)."""
-        others = np.delete(self.multipliers, np.argmin(np.abs(self.multipliers - 1.0)))
+        others = without_own(self.multipliers)
         return complex(others[0]) if others.size else 0.0
 
     @property
@@ -121,16 +119,8 @@ class RelativeCycle(Result):
                 "multipliers_abs": np.abs(self.multipliers[:16]).tolist(), "events": int(self.event_time.size)}
 
     def to_xarray(self) -> xr.Dataset:
-        m = self.multipliers
-        ds = xr.Dataset(
-            {"multiplier_real": ("multiplier", m.real), "multiplier_imag": ("multiplier", m.imag),
-             "x0": ("dof", self.x0), "v0": ("dof", self.v0),
-             "event_time": ("event", self.event_time), "event_contact": ("event", self.event_contact),
-             "event_state": ("event", self.event_state.astype(np.int8), STATE_FLAGS)},
-            coords={"dof": np.arange(self.x0.size), "event": np.arange(self.event_time.size)},
-            attrs={"shift_time": self.shift_time, "stable": int(self.stable), "section_contact": self.contact,
-                   "section_state": self.state})
-        return finish(ds, "system with frictional contacts: wave moving by one cell, its multipliers", "system")
+        return cycle_dataset(self, {"shift_time": self.shift_time},
+                             "system with frictional contacts: wave moving by one cell, its multipliers")
 
 
 def relative_cycle(system: System, x0, v0, shift, *, contact: int, state: int, states=None, horizon: float,
@@ -149,18 +139,15 @@ def relative_cycle(system: System, x0, v0, shift, *, contact: int, state: int, s
         raise ParameterError("state", state, "-1 (reverse slip), 0 (stick) or 1 (slip)")
     horizon, tol, max_iter = Q.check("transient", horizon, "horizon"), Q.check("tol", tol), Q.check("max_iter", max_iter)
     run = simulate(system, x0, v0, horizon, samples=2, segments=True, states=states, stop_at=(contact, state))
-    first = next(((seg.t + seg.duration, nxt.z, nxt.states) for seg, nxt in zip(run.segments, run.segments[1:])
-                  if seg.rows and seg.after[contact] == state != seg.states[contact]), None)
-    if first is None:
+    first = entries(run, (contact, state))
+    if not first:
         raise NoSolutionError(f"contact {contact} did not enter state {state} within horizon = {horizon:g} s")
     p = np.asarray(shift)
     back = np.concatenate([p, n + p])
-    tau, z, start, segments = return_fixed_point(system, first[1], first[2], (int(contact), int(state)), horizon,
+    tau, z, start, segments = return_fixed_point(system, first[0][1], first[0][3], (int(contact), int(state)), horizon,
                                                  tol, max_iter, symmetry=(int(image[contact]), back, image),
                                                  newton_after=0)
     mult = np.linalg.eigvals(monodromy(system, segments)[back])
     mult = mult[np.argsort(-np.abs(mult))]
-    ev = simulate(system, z[:n], z[n:2 * n], tau * (1 + 1e-9), samples=2, states=start)
-    inside = ev.event_time <= tau * (1 + 1e-12)
-    return RelativeCycle(tau, z[:n], z[n:2 * n], int(contact), int(state), start, mult, ev.event_time[inside],
-                         ev.event_contact[inside], ev.event_state[inside])
+    return RelativeCycle(tau, z[:n], z[n:2 * n], int(contact), int(state), start, mult,
+                         *period_events(system, z, start, tau))

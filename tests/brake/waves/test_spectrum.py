@@ -18,6 +18,8 @@ from stickslip.brake.waves import Scaling, ring_system, wave_spectra, wave_spect
 from stickslip.errors import ParameterError
 from stickslip.system import Flow, cell_symmetry, monodromy, relative_cycle, simulate
 
+from ...system.test_floquet import return_map_moduli
+
 #: Figure 5's wave at Omega = 100 rad/s: stick and slip, four waves around the ring.
 PARAMS = BrakeParams.from_physical(100.0, 1e-4, 0.2)
 
@@ -54,45 +56,26 @@ def test_the_discrete_wave_speed_tends_to_the_continuous_one_at_second_order(wav
     assert 1.8 <= float(ds["observed_order"].sel(nodes=64)) <= 2.2
 
 
-def _shift_map_moduli(system, cycle, shift, eps=1e-6):
-    """Moduli (sorted) of the eigenvalues of the node-shift return map, by central differences
-    of whole runs in the coordinates that stay free on the section (the positions and the
-    velocities of the nodes not sticking)."""
-    n = system.dofs
-    back = np.concatenate([shift, n + shift])
-    z0 = np.concatenate([cycle.x0, cycle.v0])
-    target = int(cell_symmetry(system, shift)[cycle.contact])
-    free = list(range(n)) + [n + i for i, s in enumerate(cycle.states) if s != 0]
-
-    def shift_map(z):
-        run = simulate(system, z[:n], z[n:], 3 * cycle.shift_time, samples=2, segments=True, states=cycle.states)
-        for seg, nxt in zip(run.segments, run.segments[1:]):
-            if seg.after[target] == cycle.state != seg.states[target]:
-                return nxt.z[:2 * n][back]
-        raise AssertionError("no return")
-
-    J = np.zeros((len(free), len(free)))
-    for j, c in enumerate(free):
-        d = np.zeros(2 * n)
-        d[c] = eps
-        J[:, j] = (shift_map(z0 + d)[free] - shift_map(z0 - d)[free]) / (2 * eps)
-    return np.sort(np.abs(np.linalg.eigvals(J)))
+def _ring_wave(wave, N):
+    """The ring of ``N`` nodes, its wave moving by one node (from the sampled shooting wave) and
+    the node shift."""
+    system = ring_system(PARAMS, N)
+    r, c = Scaling(PARAMS).root_gamma, float(wave.x[0])
+    prof = wave.evaluate(2 * math.pi * (np.arange(N) + 0.5) / N)
+    shift = (np.arange(N) + (1 if c > 0 else -1)) % N
+    cycle = relative_cycle(system, prof["V"] / r, -c * prof["dV"] / r, shift, contact=0, state=0,
+                           horizon=2 * math.pi / wave.n / abs(c))
+    return system, cycle, shift
 
 
 def test_the_multipliers_are_those_of_the_node_shift_map_by_differences(wave):
     """The multipliers (monodromy over one node's time with the saltation matrices of every
     switch, simultaneous ones included, mapped back by the shift) against central differences
     of the map from one stick onset to the next node's: the largest ten moduli to 1e-6."""
-    N = 32
-    system = ring_system(PARAMS, N)
-    r = Scaling(PARAMS).root_gamma
-    c = float(wave.x[0])
-    theta = 2 * math.pi * (np.arange(N) + 0.5) / N
-    prof = wave.evaluate(theta)
-    shift = (np.arange(N) + (1 if c > 0 else -1)) % N
-    cycle = relative_cycle(system, prof["V"] / r, -c * prof["dV"] / r, shift, contact=0, state=0,
-                           horizon=2 * math.pi / 4 / abs(c))
-    fd = _shift_map_moduli(system, cycle, shift)[::-1]
+    system, cycle, shift = _ring_wave(wave, 32)
+    free = list(range(32)) + [32 + i for i, s in enumerate(cycle.states) if s != 0]  # free on the section
+    fd = return_map_moduli(system, cycle, free, period=cycle.shift_time, back=np.concatenate([shift, 32 + shift]),
+                           target=int(cell_symmetry(system, shift)[cycle.contact]))[::-1]
     ours = np.abs(cycle.multipliers)
     ours = np.delete(ours, np.argmin(np.abs(cycle.multipliers - 1.0)))
     np.testing.assert_allclose(ours[:10], fd[:10], atol=1e-6)
@@ -105,14 +88,7 @@ def test_a_wave_period_has_the_multipliers_of_the_node_shift_map_to_the_power_of
     modulus): the simultaneous switches' saltations are all applied."""
     N, n = 32, 4
     sp = wave_spectrum(wave, N)
-    system = ring_system(PARAMS, N)
-    r = Scaling(PARAMS).root_gamma
-    c = float(wave.x[0])
-    theta = 2 * math.pi * (np.arange(N) + 0.5) / N
-    prof = wave.evaluate(theta)
-    shift = (np.arange(N) + (1 if c > 0 else -1)) % N
-    cycle = relative_cycle(system, prof["V"] / r, -c * prof["dV"] / r, shift, contact=0, state=0,
-                           horizon=2 * math.pi / n / abs(c))
+    system, cycle, _ = _ring_wave(wave, N)
     run = simulate(system, cycle.x0, cycle.v0, (N // n) * cycle.shift_time, samples=2, segments=True,
                    states=cycle.states)
     period_moduli = np.sort(np.abs(np.linalg.eigvals(monodromy(system, run))))[::-1]

@@ -35,7 +35,7 @@ from ...errors import NoSolutionError, ParameterError
 from ...friction import Coulomb
 from ...quantities import BRAKE as Q, SYSTEM as SYSTEM_Q
 from ...results import Result
-from ...system import Contact, System, relative_cycle
+from ...system import Contact, System, relative_cycle, without_own
 from ..reduced.params import BrakeParams
 from .result import TravellingWave
 from .zones import SEPARATION, STICK, Scaling
@@ -86,8 +86,7 @@ class WaveSpectrum(Result):
     @property
     def leading(self) -> complex:
         """The largest multiplier but the wave's own (the one nearest 1)."""
-        others = np.delete(self.multipliers, np.argmin(np.abs(self.multipliers - 1.0)))
-        return complex(others[0])
+        return complex(without_own(self.multipliers)[0])
 
     @property
     def growth_per_period(self) -> float:
