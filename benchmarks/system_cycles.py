@@ -1,9 +1,9 @@
 """Stick-slip cycles of a 2-DOF system with two Coulomb contacts: exact switching vs solve_ivp.
 
 Ours: `stickslip.system.simulate` on the two-block chain of `examples/two_blocks/two_blocks.toml`
-(closed-form flows between events, Python event loop). Baseline: `scipy.integrate.solve_ivp`
-(DOP853, rtol 1e-10) with terminal events at every switch, one call per segment, the equations
-of this chain written here (each contact on its own block, so a sticking block moves with its
+(closed-form flows between events; the search for each event compiled, the choice of states at
+it in Python). Baseline: `scipy.integrate.solve_ivp` (DOP853, rtol 1e-10) with terminal events at
+every switch, one call per segment, the equations of this chain written here (each contact on its own block, so a sticking block moves with its
 belt and its friction force is the rest of the forces on it). Both run the same cycles from the
 same start in this process; the period (mean time between the stick onsets of block 2) of each
 is compared with a baseline at rtol 1e-13. Prints both times and both ratios (target: >= 100x
@@ -101,7 +101,7 @@ def main():
     p_ref = period(ref)
     e_ours, e_base = abs(period(mine) - p_ref), abs(period(base) - p_ref)
     print(f"cycles: ours {mine.size}, baseline {base.size}, reference (rtol 1e-13) {ref.size}")
-    print(f"time: ours {t_ours:.2f} s ({t_ours / mine.size * 1e3:.2f} ms a cycle), "
+    print(f"time: ours {t_ours:.3f} s ({t_ours / mine.size * 1e3:.3f} ms a cycle), "
           f"solve_ivp+events {t_base:.2f} s ({t_base / base.size * 1e3:.2f} ms a cycle)")
     print(f"period {p_ref:.15f} s; error against the reference: ours {e_ours:.2e} s, baseline {e_base:.2e} s")
     print(f"speed-up: {t_base / t_ours:.2f}x   error ratio: {e_base / max(e_ours, np.spacing(p_ref)):.2e}x "

@@ -13,7 +13,8 @@ Every switching function is linear in ``z``: a slipping contact's ``s_j v_r``, a
 force ``N(x) = N_0 - k_n n . x`` adds ``k_n n n^T`` to the stiffness and, slipping, the friction
 ``s mu0 k_n w n^T``). The first time one of them reaches zero is found on the exact flow, at steps
 of a fraction of the fastest time scale of ``A`` (a sign change, or a dip between two steps
-seen by the derivative, which is linear in ``z`` too), then by Brent's method to round-off.
+seen by the derivative, which is linear in ``z`` too), then on the step's Taylor series to
+round-off: compiled, in `stickslip.system.search`.
 """
 
 from __future__ import annotations
@@ -22,13 +23,13 @@ import math
 
 import numpy as np
 from scipy.linalg import expm
-from scipy.optimize import brentq
 
 from .model import System
+from .search import EVENT, NO_EVENT, search
 
 __all__ = ["Flow", "SLIP_ZERO", "STICK_LIMIT", "LAW_LIMIT", "OPENING", "CLOSING", "OPEN", "STATE_FLAGS"]
 
-_EPS = np.finfo(float).eps
+_NO_STEP, _EMPTY = np.zeros((1, 1)), np.zeros(0)
 #: Steps per fastest time scale ``1/max|eig(A)|`` of the event search: a switching function
 #: is a sum of the flow's modes, so it changes sign at most about once within such a step
 #: (a dip that returns within it is seen by the derivative's sign change).
@@ -46,10 +47,6 @@ OPEN = 2
 STATE_FLAGS = {"flag_values": np.array([-1, 0, 1, OPEN], dtype=np.int8), "flag_meanings": "reverse_slip stick slip open"}
 
 
-def _root(fun, a: float, b: float) -> float:
-    return brentq(fun, a, b, xtol=1e-300, rtol=4 * _EPS, maxiter=200)
-
-
 class Flow:
     """The flow of the contact state ``states`` (a tuple of -1, 0, 1 per contact)."""
 
@@ -62,7 +59,7 @@ class Flow:
         k_eff = system.stiffness.copy()
         g = system.force.copy()
         force_rows = np.zeros((len(self.states), 2 * n + 1))
-        normal = np.array([c.normal_row(n) for c in system.contacts])
+        normal = system.normal_rows.copy()
         kn = system.normal_directions  # k_n n per contact (columns)
         push = np.zeros(len(self.states))  # N(x) n on the structure: k_n n n^T, N_0 n
         fric = np.zeros(len(self.states))  # a unilateral contact slipping: F = s mu0 N(x): s mu0 k_n w n^T, ...
@@ -95,11 +92,13 @@ class Flow:
             Ws = W[:, stuck]
             L = np.linalg.pinv(Ws.T @ Minv @ Ws) @ Ws.T @ Minv  # lam = -L r
             P = Minv - Minv @ Ws @ L
+            self._stick = (L, Ws, np.array([system.contacts[i].surface_speed for i in stuck]))
             force_rows[stuck, :n] = L @ k_eff
             force_rows[stuck, n:2 * n] = L @ c_eff
             force_rows[stuck, -1] = -L @ g
         else:
             P = Minv
+            self._stick = None
         A = np.zeros((2 * n + 1, 2 * n + 1))
         A[:n, n:2 * n] = np.eye(n)
         A[n:2 * n, :n] = -P @ k_eff
@@ -159,105 +158,38 @@ class Flow:
         """``expm(t A) z``."""
         return expm(t * self.A) @ z
 
+    def stick(self, z: np.ndarray) -> np.ndarray:
+        """``z`` with the slip velocity of this state's sticking contacts exactly zero: the smallest
+        change of the velocity in the metric of M (`simulate.zero_slip`), ``v + L^T (V_S - W_S^T v)``
+        with the flow's ``L = D^-1 W_S^T M^-1``."""
+        if self._stick is None:
+            return z
+        L, Ws, V = self._stick
+        n = self.n
+        z = z.copy()
+        z[n:2 * n] += L.T @ (V - Ws.T @ z[n:2 * n])
+        return z
+
     def acceleration(self, z: np.ndarray) -> np.ndarray:
         return (self.A @ z)[self.n:2 * self.n]
-
-    def _series(self, z: np.ndarray, dt: float) -> np.ndarray | None:
-        """``P`` with ``z(s) = sum_k (s/dt)^k P[k]`` on ``[0, dt]`` (``P[k] = (dt A)^k z / k!``), to
-        round-off; None if the series does not fall below it within 60 terms."""
-        terms, term = [z], z
-        big = float(np.abs(z).max())
-        for k in range(1, 60):
-            term = (dt / k) * (self.A @ term)
-            terms.append(term)
-            size = float(np.abs(term).max())
-            big = max(big, size)
-            if size <= 1e-20 * big and float(np.abs(terms[-2]).max()) <= 1e-17 * big:
-                return np.array(terms)
-        return None
 
     def first_event(self, z0: np.ndarray, t_max: float):
         """``(t, z(t), rows)``: the first switching time within ``(0, t_max]`` and the switching
         functions (indices of ``rows``: their contact in ``owners``, what they mean in ``kinds``)
-        that reached zero there; ``(t_max, z(t_max), ())`` if none. Within a step the flow is
-        its Taylor series (``|dt A|`` is about a quarter: 20-odd terms reach round-off), so the
-        roots are found on a polynomial rather than on matrix exponentials."""
-        G, A = self.rows, self.A
-        h = min(self.h, t_max)
-        t, z = 0.0, z0
-        g, dg = G @ z, G @ (A @ z)
-        scale = np.abs(G[:, :-1]) @ np.abs(z0[:-1]) + np.abs(G[:, -1])
-        while t < t_max:
-            dt = min(h, t_max - t)
-            self._taken += 1
-            if dt == h and (self._step is not None and self._step[0] == h or self._taken > EXPM_AFTER):
-                if self._step is None or self._step[0] != h:
-                    self._step = (h, expm(h * A))
-                z1, at = self._step[1] @ z, self._within(z, dt)
-            else:  # a flow visited for a few steps: its series, not the exponential of a large matrix
-                series = self._series(z, dt)
-                z1 = series.sum(axis=0) if series is not None else expm(dt * A) @ z
-                at = self._within(z, dt, series)
-            g1, dg1 = G @ z1, G @ (A @ z1)
-            tol = 64 * _EPS * (np.abs(G[:, :-1]) @ np.abs(z1[:-1]) + np.abs(G[:, -1]) + scale)
-            hits = []
-            for r in range(len(G)):
-                found = self._crossing(r, at, dt, g[r], dg[r], g1[r], dg1[r], tol[r])
-                if found is not None:
-                    hits.append((found, r))
-            if hits:
-                first = min(s for s, _ in hits)
-                ze = at(first)
-                ge = G @ ze
-                rows = sorted({r for s, r in hits if s <= first * (1 + 1e-9) + 1e-300}
-                              | {r for r in range(len(G)) if ge[r] <= tol[r]})
-                return t + first, ze, tuple(rows)
-            t, z, g, dg = t + dt, z1, g1, dg1
-        return t_max, z, ()
-
-    def _within(self, z: np.ndarray, dt: float, series=False):
-        """``s -> z(s)`` on ``[0, dt]``: by the Taylor series of the step (``series``, or made at
-        the first call), or by matrix exponentials where it does not converge."""
-        cache = [] if series is False else [series]
-
-        def at(s: float) -> np.ndarray:
-            if not cache:
-                cache.append(self._series(z, dt))
-            P = cache[0]
-            if P is None:
-                return expm(s * self.A) @ z
-            return (s / dt) ** np.arange(P.shape[0]) @ P
-        return at
-
-    def _crossing(self, r, at, dt, g0, dg0, g1, dg1, tol):
-        """The time in ``(0, dt]`` when row ``r`` first reaches zero from above, or None (``at(s)``
-        is the state at ``s``)."""
-        row, A = self.rows[r], self.A
-
-        def value(s):
-            return float(row @ at(s))
-
-        def slope(s):
-            return float(row @ (A @ at(s)))
-
-        start = 0.0
-        if g0 <= tol:  # on the switching line at the start: departing (rising) or leaving at once
-            if dg0 <= 0 and g1 <= tol:
-                return 0.0
-            if g1 > tol and dg1 >= 0:
-                return None
-            if dg0 > 0 and dg1 < 0:  # rose, then fell: from its top
-                start = _root(slope, 0.0, dt)
-                if value(start) <= tol:
-                    return None
-            elif g1 > tol:
-                return None
-        if g1 <= 0 and value(start) > 0:
-            return _root(value, start, dt)
-        if g1 <= 0:
-            return start
-        if dg0 < 0 < dg1 and g0 > tol:  # a dip between the steps: below zero at its bottom?
-            bottom = _root(slope, 0.0, dt)
-            if value(bottom) <= 0:
-                return _root(value, 0.0, bottom)
-        return None
+        that reached zero there; ``(t_max, z(t_max), ())`` if none. Compiled (`search`): within a
+        step the flow is its Taylor series, so the roots are found on polynomials; a flow
+        searched for more than `EXPM_AFTER` steps has its step's matrix exponential made and kept."""
+        t, z, scale = 0.0, np.ascontiguousarray(z0, dtype=float), _EMPTY
+        while True:
+            E = self._step if self._step is not None else _NO_STEP
+            status, dt, z, hit, taken = search(self.A, self.rows, E, self._step is not None, z, t_max - t,
+                                               self.h if np.isfinite(self.h) else t_max, scale,
+                                               max(1, EXPM_AFTER - self._taken))
+            self._taken += taken
+            t += dt
+            if status == EVENT:
+                return t, z, tuple(hit.tolist())
+            if status == NO_EVENT:
+                return t_max, z, ()
+            scale = np.abs(self.rows) @ np.abs(z0)  # the start's
+            self._step = expm(self.h * self.A)

@@ -197,6 +197,11 @@ class System:
         return self._columns("Kn", lambda c: c.normal_stiffness * c.normal_direction if c.unilateral
                              else np.zeros(self.dofs))
 
+    @property
+    def normal_rows(self) -> np.ndarray:
+        """Each contact's normal force ``N(x)`` as a row on ``z = (x, v, 1)`` (`Contact.normal_row`; computed once)."""
+        return self._columns("N", lambda c: c.normal_row(self.dofs)).T
+
     def _columns(self, key: str, column) -> np.ndarray:
         """``column(contact)`` of every contact side by side, made once and read-only."""
         if key not in self._cache:

@@ -106,6 +106,8 @@ def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, relea
     st = list(states)
     for i in zero:
         st[i] = released.get(i, 0)
+    n = system.dofs
+    normals = system.normal_rows @ z
     for _ in range(len(zero) + 1):
         flow = Flow.cached(system, tuple(st), flows)
         forces = flow.force_rows @ z
@@ -113,21 +115,19 @@ def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, relea
         for i in zero:
             if st[i] != 0:
                 continue
-            c = system.contacts[i]
-            limit = max(0.0, c.friction.static * float(c.normal_row(system.dofs) @ z))
+            limit = max(0.0, system.contacts[i].friction.static * float(normals[i]))
             excess = abs(forces[i]) - limit
             if excess > 1e-12 * max(limit, abs(forces[i])) and excess > over:
                 worst, over = i, excess
         if worst is None:
             break
         st[worst] = 1 if forces[worst] > 0 else -1
-    flow = Flow.cached(system, tuple(st), flows)
-    a = flow.acceleration(z)
-    n = system.dofs
-    terms = np.abs(flow.A[n:2 * n]) @ np.abs(z)  # the size of what the accelerations sum (their round-off)
-    for i in zero:
-        if st[i] == 0:
-            continue
+    moving = [i for i in zero if st[i] != 0]
+    if moving:  # released ones: do they slip the way they were released?
+        flow = Flow.cached(system, tuple(st), flows)
+        a = flow.acceleration(z)
+        terms = np.abs(flow.A[n:2 * n]) @ np.abs(z)  # the size of what the accelerations sum (their round-off)
+    for i in moving:
         c = system.contacts[i]
         rate = -c.direction @ a  # d v_r / dt
         size = np.abs(c.direction) @ terms + 1e-300
@@ -280,7 +280,7 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
         zero = set(hit) | {i for i in range(k) if before[i] == 0}
         zero |= {i for i in range(k) if abs(vr[i]) <= 1e-13 * speed and before[i] != OPEN}
         new = choose_states(system, z, tuple(before), zero, released, flows)
-        z = zero_slip(system, z, [i for i in range(k) if new[i] == 0])
+        z = Flow.cached(system, new, flows).stick(z)
         for i in range(k):
             if new[i] != states[i]:
                 ev_t.append(t), ev_c.append(i), ev_s.append(new[i])
