@@ -25,11 +25,12 @@ ALLOWED = {
     "cf": {"quantities", "__init__"},
     "results": {"cf", "quantities"},
     "friction": BASE,
+    "lawkernel": {"friction"},
     "files": BASE,
     "contact": BASE | {"files"},
     "cluster": {"errors"},
     "sweep": BASE | {"files", "cluster"},
-    "oscillator": BASE | {"friction", "sweep"},
+    "oscillator": BASE | {"friction", "lawkernel", "sweep"},
     "brake": BASE | {"contact", "sweep", "files", "system", "friction"},  # the waves' spectrum: a ring of contacts
     "halfspace": BASE,
     "fem": BASE | {"contact", "friction", "sweep", "files"},

@@ -137,7 +137,10 @@ def _x_max(engine: Engine, traj: Trajectory) -> float:
 
 
 def _v_extreme(traj: Trajectory, sign: int) -> float:
-    """Largest (``sign=+1``) or smallest (``-1``) velocity: sampled, then refined."""
+    """Largest (``sign=+1``) or smallest (``-1``) velocity: from the segments' ranges where the
+    numeric flows found them, else sampled, then refined."""
+    if traj.speed_ranges is not None and len(traj.speed_ranges) == len(traj.modes):
+        return float(max(r[1] for r in traj.speed_ranges) if sign > 0 else min(r[0] for r in traj.speed_ranges))
     t, _, v, _ = traj.sample(4001)
     i = int(np.argmax(sign * v))
     seg = next(s for s in traj.segments if s.t0 <= t[i] <= s.t1)
@@ -216,7 +219,8 @@ def limit_cycle(osc: Oscillator, x0: float | None = None, v0: float | None = Non
         Starting state. Default: the end of the stick segment ``(x_hi, V)``, which lies
         on every stick-slip cycle. A start on the section (``v0 = 0``, ``x0 < x_e``)
         is the first Newton iterate, which also finds unstable cycles.
-    method : {"auto", "closed-form", "numeric"}
+    method : {"auto", "closed-form", "numeric", "python"}
+        As `simulate`'s.
     rtol : float
         Tolerance of the numeric flow.
     tol : float

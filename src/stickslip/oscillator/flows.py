@@ -1,6 +1,7 @@
-"""Flows of one slip mode: closed form for affine laws, DOP853 otherwise.
+"""Flows of one slip mode: closed form for affine laws, DOP853 otherwise (compiled with the law
+where numba can compile it, `CompiledSlip`; in Python, `NumericSlip`).
 
-Both classes answer the same three questions for a slip segment that starts at
+The classes answer the same three questions for a slip segment that starts at
 ``(x0, v0)`` at local time 0:
 
 * ``first_crossing(x0, v0, t_max, levels)``: the first time ``v(t)`` crosses one of
@@ -20,8 +21,9 @@ import numpy as np
 from scipy.integrate import DOP853
 from scipy.optimize import brentq
 
-from ..errors import NoSolutionError
-from . import kernel
+from ..errors import NoSolutionError, ParameterError
+from ..quantities import OSCILLATOR as Q
+from . import kernel, slipkernel
 from .model import Mode, Oscillator
 
 _EPS = np.finfo(float).eps
@@ -184,8 +186,88 @@ class NumericSlip:
     def speed_extremes(self):
         return np.asarray(self._extremes)
 
+    def end(self):
+        """``(x, v)`` at the end of the last segment."""
+        return float(self._end[0]), float(self._end[1])
+
     def jacobian(self, t=None):
         """Derivative of the end state of the last segment w.r.t. its start state."""
         if not self.variational:
             raise RuntimeError("jacobian needs variational=True")
         return np.asarray(self._end[2:]).reshape(2, 2)
+
+
+class CompiledSlip:
+    """`NumericSlip`'s DOP853 at the same tolerances, compiled with the law (`slipkernel`):
+    ``law = (mu, slope, numbers)`` from `stickslip.lawkernel.compiled`."""
+
+    def __init__(self, osc: Oscillator, mode: Mode, law, rtol=1e-12, atol=1e-14, variational=False):
+        self.osc, self.mode, self.rtol, self.atol = osc, mode, rtol, atol
+        self.variational = variational
+        self.mu, self.slope = law[0], law[1]
+        self.params = np.array(law[2], dtype=float)
+        allowed = Q["fd"].range
+        self.p = np.array([osc.mass, osc.stiffness, osc.damping, osc.normal_force, osc.belt_speed, int(mode),
+                           allowed.lo, allowed.hi])
+        self._run, self._h = None, 0.01 / osc.omega  # the first step to try: the last segment's next
+
+    def first_crossing(self, x0, v0, t_max, levels):
+        y0 = np.array([x0, v0] + ([1.0, 0.0, 0.0, 1.0] if self.variational else []))
+        scale = max(abs(v0), self.osc.omega * abs(x0), *(abs(l) for l, _ in levels), 1e-300)
+        atol = self.atol * max(scale, self.osc.belt_speed)
+        values = np.array([float(l) for l, _ in levels])
+        sides = np.array([int(d) for _, d in levels], dtype=np.int64)
+        h0 = min(t_max, self._h)
+        run = slipkernel.segment(self.mu, self.slope, self.params, self.p, y0, float(t_max), values, sides,
+                                 self.rtol, atol, 16 * _EPS * scale, h0, 64)
+        status, index, t, y = run[:4]
+        if status == slipkernel.BAD_LAW:
+            raise ParameterError("mu(v_r)", float(run[10]), f"a friction coefficient {Q['fd'].allowed}")
+        if status == slipkernel.STEP_TOO_SMALL:
+            raise NoSolutionError("the slip flow could not be integrated (DOP853: the step fell below the round-off "
+                                  "of the time): the friction law changes faster than double precision resolves")
+        self._run, self._end, self._h = run, y, run[11]
+        return (t, int(index)) if status == slipkernel.CROSSED else (t_max, None)
+
+    def evaluator(self):
+        """Callable ``t -> (x, v)`` on the last segment (local time)."""
+        run = self._run  # (a new run's arrays: the next search makes its own)
+        steps = run[4]
+        return StepPieces(self.mu, self.slope, self.params, self.p, run[5][:steps], run[6][:steps], run[7][:steps],
+                          run[2], run[3][:2])
+
+    def speed_extremes(self):
+        return np.array([self._run[8], self._run[9]])
+
+    def end(self):
+        """``(x, v)`` at the end of the last segment."""
+        return float(self._end[0]), float(self._end[1])
+
+    def jacobian(self, t=None):
+        """Derivative of the end state of the last segment w.r.t. its start state."""
+        if not self.variational:
+            raise RuntimeError("jacobian needs variational=True")
+        return np.asarray(self._end[2:]).reshape(2, 2)
+
+
+class StepPieces:
+    """``t -> (x, v)`` on a segment of the compiled flow, from its accepted steps (start times
+    ``starts``, states, slopes): a step from the start of the step ``t`` falls in; its end
+    (``end_t``, ``end``) as the search found it."""
+
+    def __init__(self, mu, slope, params, p, starts, states, slopes, end_t, end):
+        self._args = (mu, slope, params, p)
+        self._steps = (np.ascontiguousarray(starts), states, slopes)
+        self.end_t, self.end = float(end_t), (float(end[0]), float(end[1]))
+        self._two = None
+
+    def __call__(self, t):
+        t = np.atleast_1d(np.asarray(t, dtype=float))
+        starts, states, slopes = self._steps
+        if self._two is None:  # the states without the variational part, made at the first call
+            self._two = np.ascontiguousarray(states[:, :2]), np.ascontiguousarray(slopes[:, :2])
+        flat = np.ascontiguousarray(t.ravel())
+        x, v = slipkernel.evaluate(*self._args, starts, *self._two, starts.size, flat)
+        at_end = flat >= self.end_t  # the end itself: the state the search stopped at
+        x[at_end], v[at_end] = self.end
+        return x, v

@@ -22,15 +22,19 @@ import xarray as xr
 from ..results import Result
 from ..cf import finish
 from ..quantities import OSCILLATOR as Q
-from ..errors import ParameterError
+from ..errors import NoSolutionError, ParameterError
 from .kernel import run_affine
-from .flows import AffineSlip, NumericSlip
+from .. import lawkernel
+from . import slipkernel
+from .flows import AffineSlip, CompiledSlip, NumericSlip, StepPieces
 from .model import Mode, Oscillator
 
 __all__ = ["Segment", "Trajectory", "simulate", "Engine"]
 
 #: The longest simulation accepted, in natural periods ``2 pi sqrt(m/k)`` (refused up front, not left to hang).
 MAX_PERIODS = 1e7
+#: The slip flows `simulate` and `Engine` take (see `Engine`).
+METHODS = ("auto", "closed-form", "numeric", "python")
 
 _STATUS = {0: "reached t_end", 1: "reached the Poincare section", -2: "stopped after max_events segments",
            -3: "Zeno: more than 100 consecutive vanishing segments"}
@@ -72,8 +76,11 @@ class Trajectory(Result):
 
     MODEL: ClassVar[str] = "oscillator"
 
-    def __init__(self, oscillator, modes, t, x, v, status, message, evaluators, jacobians=None):
+    def __init__(self, oscillator, modes, t, x, v, status, message, evaluators, jacobians=None, speed_ranges=None):
         self.oscillator = oscillator
+        #: Numeric flows: ``(lowest, highest)`` velocity of each segment, found on the way (the
+        #: velocity's extrema located to round-off); None for the closed form.
+        self.speed_ranges = speed_ranges
         self.modes, self.t, self.x, self.v = np.asarray(modes, np.int8), np.asarray(t), np.asarray(x), np.asarray(v)
         self.status, self.message = status, message
         self._evaluators = evaluators  # mode -> flow (closed form) or index -> evaluator (numeric)
@@ -204,27 +211,63 @@ def _saltation(osc: Oscillator, x, v, before: Mode, after: Mode) -> np.ndarray:
 class Engine:
     """Runs segments for one oscillator; reused by simulation, cycles and continuation.
 
-    ``method`` is ``"auto"`` (closed form when the law is affine), ``"closed-form"``
-    or ``"numeric"`` (DOP853 with tolerance ``rtol``). ``variational=True`` integrates
-    the variational equations along numeric segments (for `Trajectory.monodromy`).
+    ``method`` is ``"auto"`` (closed form when the law is affine), ``"closed-form"``,
+    ``"numeric"`` (DOP853 with tolerance ``rtol``, compiled with the law where numba can
+    compile it: `CompiledSlip`) or ``"python"`` (the same DOP853, scipy's, in Python:
+    `NumericSlip`, the reference of the compiled one). ``variational=True`` integrates the
+    variational equations along numeric segments (for `Trajectory.monodromy`).
     """
 
     def __init__(self, osc: Oscillator, method: str = "auto", rtol: float = 1e-12, variational=False):
-        if method not in ("auto", "closed-form", "numeric"):
-            raise ParameterError("method", method, "one of auto, closed-form, numeric")
+        if method not in METHODS:
+            raise ParameterError("method", method, "one of " + ", ".join(METHODS))
         if method == "closed-form" and osc.friction.affine is None:
             raise ParameterError("method", method, "'numeric' or 'auto' for a law that is not affine")
-        self.closed = method != "numeric" and osc.friction.affine is not None
+        self.closed = method in ("auto", "closed-form") and osc.friction.affine is not None
         self.osc, self.variational = osc, variational
-        self.flows = {m: AffineSlip(osc, m) if self.closed else NumericSlip(osc, m, rtol=rtol, variational=variational)
-                      for m in (Mode.SLIP_POS, Mode.SLIP_NEG)}
+        law = None if self.closed or method == "python" else lawkernel.compiled(osc.friction)
+        self.compiled, self._law, self._rtol = law is not None, law, rtol
+
+        def flow(m):
+            if self.closed:
+                return AffineSlip(osc, m)
+            if law is not None:
+                return CompiledSlip(osc, m, law, rtol=rtol, variational=variational)
+            return NumericSlip(osc, m, rtol=rtol, variational=variational)
+        self.flows = {m: flow(m) for m in (Mode.SLIP_POS, Mode.SLIP_NEG)}
 
     def run(self, x0, v0, t_end, *, section: float | None = None, max_events: int = 10**7) -> Trajectory:
         """Integrate from ``(x0, v0)`` to ``t_end`` or to the first upward crossing of
         ``v = section`` (a Poincare section), whichever comes first."""
         if self.closed:
             return self._run_closed(float(x0), float(v0), t_end, section, max_events)
+        if self.compiled:
+            return self._run_compiled(float(x0), float(v0), t_end, section, max_events)
         return self._run_numeric(float(x0), float(v0), t_end, section, max_events)
+
+    def _run_compiled(self, x0, v0, t_end, section, max_events):
+        """`_run_numeric`'s loop in one compiled call (`slipkernel.run`)."""
+        osc, (mu, slope, numbers) = self.osc, self._law
+        allowed = Q["fd"].range
+        lo, hi = osc.stick_limits
+        numbers = np.array(numbers, dtype=float)
+        out = slipkernel.run(mu, slope, numbers, np.array([osc.mass, osc.stiffness, osc.damping, osc.normal_force,
+                                                           osc.belt_speed, allowed.lo, allowed.hi, lo, hi, osc.omega]),
+                             x0, v0, int(osc.initial_mode(x0, v0)), float(t_end),
+                             0.0 if section is None else float(section), section is not None, bool(self.variational),
+                             self._rtol, 1e-14, int(max_events), float(osc.friction.max_speed))
+        status, value, modes, t, x, v, jac, ranges, first, starts, states, slopes, ends = out
+        if status == 2:
+            raise ParameterError("mu(v_r)", float(value), f"a friction coefficient {Q['fd'].allowed}")
+        if status == 3:
+            raise NoSolutionError("the slip flow could not be integrated (DOP853: the step fell below the round-off "
+                                  "of the time): the friction law changes faster than double precision resolves")
+        evaluators = {("segment", i): StepPieces(mu, slope, numbers, self.flows[Mode(int(m))].p,
+                                                       starts[first[i]:first[i + 1]], states[first[i]:first[i + 1]],
+                                                       slopes[first[i]:first[i + 1]], ends[i], (x[i + 1], v[i + 1]))
+                      for i, m in enumerate(modes) if m != 0}
+        return Trajectory(osc, modes, t, x, v, status, _STATUS.get(status) or _validity_message(osc), evaluators,
+                          jac if self.variational else None, [tuple(r) for r in ranges])
 
     def _run_closed(self, x0, v0, t_end, section, max_events):
         osc = self.osc
@@ -250,7 +293,7 @@ class Engine:
         mode = osc.initial_mode(x0, v0)
         clock = _Clock()
         t, x, v = 0.0, x0, v0
-        modes, ts, xs, vs, evaluators, jacs = [], [t], [x], [v], {}, []
+        modes, ts, xs, vs, evaluators, jacs, ranges = [], [t], [x], [v], {}, [], []
         status = 0
         tiny_in_a_row = 0
         while t < t_end:
@@ -264,7 +307,7 @@ class Engine:
                 if not hit:
                     dt = t_end - t
                 t, x, v = clock.add(dt), (x_hi if hit else x + V * dt), V
-                ts.append(t), xs.append(x), vs.append(v), jacs.append(None)
+                ts.append(t), xs.append(x), vs.append(v), jacs.append(None), ranges.append((V, V))
                 if not hit:
                     break
                 mode = Mode.SLIP_POS
@@ -274,14 +317,16 @@ class Engine:
             if section is not None and mode == Mode.SLIP_POS:
                 levels.append((section, 1))
             dt, hit = flow.first_crossing(x, v, t_end - t, levels)
-            x1, v1 = (float(a) for a in np.ravel(flow.evaluator()(dt)))
+            x1, v1 = flow.end()
             if hit is not None:
                 v1 = levels[hit][0]  # snap onto the line that was crossed
             evaluators[("segment", len(modes) - 1)] = flow.evaluator()
             jacs.append(flow.jacobian() if self.variational else None)
             t, x, v = clock.add(dt), x1, v1
             ts.append(t), xs.append(x), vs.append(v)
-            speed = float(np.max(np.abs(V - flow.speed_extremes())))
+            extremes = flow.speed_extremes()
+            ranges.append((float(np.min(extremes)), float(np.max(extremes))))
+            speed = float(np.max(np.abs(V - extremes)))
             if speed > osc.friction.max_speed * (1 + 1e-12):
                 status = -1
                 break
@@ -297,7 +342,7 @@ class Engine:
             mode = osc.mode_at_switch(x)
         message = _STATUS.get(status) or _validity_message(osc)
         return Trajectory(osc, modes, ts, xs, vs, status, message, evaluators,
-                          jacs if self.variational else None)
+                          jacs if self.variational else None, ranges)
 
 
 def _validity_message(osc: Oscillator) -> str:
@@ -332,8 +377,9 @@ def simulate(osc: Oscillator, t_end: float, x0: float | None = None, v0: float =
         Final time [s], > 0.
     x0, v0 : float
         Initial displacement [m] (default: the steady-sliding equilibrium) and velocity [m/s].
-    method : {"auto", "closed-form", "numeric"}
-        Slip flow: closed form (affine laws only) or DOP853 event location.
+    method : {"auto", "closed-form", "numeric", "python"}
+        Slip flow: closed form (affine laws only) or DOP853 event location (compiled with the
+        law where numba can compile it; ``"python"``: scipy's, the reference).
     rtol : float
         Relative tolerance of the numeric flow, in (0, 1e-3].
     max_events : int

@@ -1,0 +1,90 @@
+"""The compiled DOP853 of laws that are not affine (`stickslip.oscillator.slipkernel`): checked
+against scipy's DOP853 (the same method, written by others), solve_ivp with events, Liouville's
+formula and the closed form of a constant law; a user's law compiled by numba or, where numba
+cannot, run in Python."""
+
+import math
+
+import numpy as np
+import pytest
+
+from stickslip.errors import ParameterError
+from stickslip.friction import Coulomb, Stribeck, UserLaw
+from stickslip.oscillator import Oscillator, limit_cycle, simulate
+from stickslip.oscillator.baseline import solve_ivp_switches
+from stickslip.oscillator.simulate import Engine
+
+STRIBECK = Oscillator(1.0, 1.0, 1.0, 0.2, Stribeck(0.6, 0.4, 0.1), damping=0.05)
+
+
+def test_stribeck_runs_compiled_and_switches_where_scipys_dop853_does():
+    compiled, python = Engine(STRIBECK), Engine(STRIBECK, "python")
+    assert compiled.compiled and not python.compiled
+    a = simulate(STRIBECK, 200.0, x0=0.0, v0=0.0)
+    b = simulate(STRIBECK, 200.0, x0=0.0, v0=0.0, method="python")
+    assert list(a.modes) == list(b.modes) and len(a.modes) > 40
+    assert np.max(np.abs(np.asarray(a.t) - np.asarray(b.t))) < 1e-9  # two DOP853 at rtol 1e-12
+    sa, sb = a.sample(2001), b.sample(2001)
+    assert np.max(np.abs(sa[1] - sb[1])) < 1e-9 and np.max(np.abs(sa[2] - sb[2])) < 1e-9
+
+
+def test_stribeck_switch_times_against_solve_ivp_with_events():
+    traj = simulate(STRIBECK, 30.0, x0=0.0, v0=0.0)
+    ref = solve_ivp_switches(STRIBECK, 0.0, 0.0, 30.0, rtol=1e-12)
+    assert [int(e[4]) for e in traj.events] == [m for *_, m in ref]
+    assert max(abs(e[0] - r[0]) for e, r in zip(traj.events, ref)) < 1e-8
+
+
+def test_a_constant_user_law_converges_to_the_closed_form_at_order_of_the_tolerance():
+    """mu = 0.4 as a numba-compiled callable: the Coulomb oscillator's exact switches, closer as rtol falls."""
+    exact_osc = Oscillator(1.0, 1.0, 1.0, 0.2, Coulomb(0.6, 0.4))
+    user = exact_osc.replace(friction=UserLaw(lambda v: 0.4, 0.6))
+    assert Engine(user).compiled
+    exact = simulate(exact_osc, 30.0, x0=-0.5, v0=0.0)
+    errors = []
+    for rtol in (1e-6, 1e-9, 1e-12):
+        approx = simulate(user, 30.0, x0=-0.5, v0=0.0, rtol=rtol)
+        assert list(approx.modes) == list(exact.modes)
+        errors.append(np.max(np.abs(approx.t - exact.t)))
+    assert errors[2] < 1e-10 and errors[0] > errors[1] > errors[2]
+
+
+def test_a_compiled_user_laws_multipliers_obey_liouville():
+    """A Stribeck law written by a user (numba compiles it; its slope a central difference): an
+    unstable pure-slip cycle whose multipliers' product is exp of the trace's integral, the
+    trace from the law's slope in closed form."""
+    law = UserLaw(lambda v: 0.4 + 0.2 * np.exp(-abs(v) / 0.1), 0.6)
+    osc = Oscillator(1.0, 1.0, 1.0, 0.6, law, damping=0.05)
+    assert Engine(osc).compiled
+    cycle = limit_cycle(osc, x0=osc.equilibrium - 0.45, v0=0.0)
+    assert not cycle.touches_stick
+    t, x, v, _ = cycle.trajectory.sample(20001)
+    slope = Stribeck(0.6, 0.4, 0.1).slope(osc.belt_speed - v)
+    trace = -(osc.damping + osc.normal_force * slope) / osc.mass
+    assert np.prod(cycle.floquet_multipliers).real == pytest.approx(math.exp(np.trapezoid(trace, t)), rel=1e-6)
+
+
+class _Table:
+    """A law numba cannot compile (a Python object's method)."""
+
+    def __call__(self, v):
+        return {True: 0.4, False: 0.45}[abs(v) > 0.1]
+
+
+def test_a_user_law_numba_cannot_compile_runs_in_python():
+    osc = Oscillator(1.0, 1.0, 1.0, 0.2, UserLaw(_Table(), 0.6))
+    assert not Engine(osc).compiled
+    traj = simulate(osc, 20.0, x0=0.0, v0=0.0)
+    assert traj.status == 0 and len(traj.modes) > 3
+
+
+@pytest.mark.parametrize("mu", [lambda v: -0.1, lambda v: math.nan, lambda v: 1e300, lambda v: 0.5 - 2 * abs(v)],
+                         ids=["negative", "nan", "huge", "negative-once-slipping-faster"])
+def test_a_compiled_user_law_out_of_range_is_refused_as_in_python(mu):
+    osc = Oscillator(1.0, 1.0, 1.0, 0.2, UserLaw(mu, 0.6))
+    assert Engine(osc).compiled
+    with pytest.raises(ParameterError, match=r"mu\(v_r\)") as compiled:
+        simulate(osc, 10.0, x0=-1.0, v0=0.0)
+    with pytest.raises(ParameterError, match=r"mu\(v_r\)") as python:
+        simulate(osc, 10.0, x0=-1.0, v0=0.0, method="python")
+    assert str(compiled.value).split("=")[0] == str(python.value).split("=")[0]
