@@ -34,7 +34,7 @@ ALLOWED = {
     "brake": BASE | {"contact", "sweep", "files", "system", "friction"},  # the waves' spectrum: a ring of contacts
     "halfspace": BASE,
     "fem": BASE | {"contact", "friction", "sweep", "files"},
-    "system": BASE | {"friction"},
+    "system": BASE | {"friction", "rsf"},
     "rsf": BASE,
     "plotting": set(),
     "errata": set(),

@@ -118,10 +118,13 @@ def test_readme_command_lines_use_only_options_their_commands_have():
         assert not unknown, (line, unknown)
 
 
-def test_rsf_page_runs():
+def test_rsf_page_runs(monkeypatch):
+    monkeypatch.chdir(ROOT)  # it reads an example file by its path in the repository
     namespace = {}
     for block in _blocks("docs/rsf.md"):
         exec(block, namespace)
     assert round(namespace["stability"].critical_stiffness / 5e9, 9) == 1.0 and namespace["stability"].stable
     assert round(namespace["cycle"].period) == 181
     assert set(namespace["ds"].data_vars) >= {"slip_rate", "theta", "friction", "shear_stress", "slip", "load_point"}
+    assert not namespace["steady"].stable and round(namespace["steady"].growth_rate, 5) == 0.00308
+    assert namespace["burst"].slip_rate.max() > 1.2e-6

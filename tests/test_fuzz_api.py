@@ -25,7 +25,7 @@ from stickslip.system import steady_sliding as system_steady
 from stickslip.system import burridge_knopoff
 from stickslip.rsf import RateState, SpringSlider, linear_stability, slide, slider_cycle
 from stickslip.brake.waves import ring_system, wave_spectra, wave_spectrum
-from stickslip.system import continue_system, file_parameter, relative_cycle
+from stickslip.system import continue_system, file_parameter, rate_state_simulate, rate_state_steady, relative_cycle
 
 FIG5 = BrakeParams.from_physical(100.0, 1e-4, 0.2)
 
@@ -67,7 +67,13 @@ CONTACT = dict(direction=[1.0, 0.0], normal_force=1.0, friction=Coulomb(0.6, 0.4
 SYSTEM = dict(mass=[[1.0, 0.0], [0.0, 2.0]], stiffness=[[2.0, -1.0], [-1.0, 1.0]], contacts=[Contact(**CONTACT)])
 RSF_LAW = dict(a=0.01, b=0.015, dc=1e-5)
 SLIDER = dict(law=RateState(**RSF_LAW), normal_stress=1e7, stiffness=1e10)
+RSF_SYSTEM = dict(mass=[[1.0]], stiffness=[[4000.0]],
+                  contacts=[Contact([1.0], 10.0, RateState(**RSF_LAW), surface_speed=1e-6)])
 CALLS = {
+    "rate_state_simulate": (lambda **k: rate_state_simulate(**{"system": System(**RSF_SYSTEM), "t_end": 5.0,
+                                                               "samples": 11, **k}),
+                            ["system", "x0", "v0", "t_end", "psi0", "samples", "rtol"]),
+    "rate_state_steady": (lambda **k: rate_state_steady(**{"system": System(**RSF_SYSTEM), **k}), ["system"]),
     "system steady_sliding": (lambda **k: system_steady(**{"system": System(**SYSTEM), **k}), ["system"]),
     "burridge_knopoff": (lambda **k: burridge_knopoff(**{"blocks": 3, "friction": Coulomb(0.6, 0.4), **k}),
                          ["blocks", "friction", "mass", "coupling", "pull", "normal_force", "plate_speed", "damping"]),
@@ -228,7 +234,8 @@ DOMAIN = {**{n: "oscillator" for n in ("Oscillator", "Coulomb", "Stribeck", "sim
                                       "direct_map", "fields")},
           **{n: "fem" for n in ("contact_frames", "ContactProblem")},
           **{n: "system" for n in ("System", "Contact", "system simulate", "system limit_cycle", "load_system",
-                                   "system steady_sliding", "burridge_knopoff")},
+                                   "system steady_sliding", "burridge_knopoff", "rate_state_simulate",
+                                   "rate_state_steady")},
           **{n: "rsf" for n in ("RateState", "SpringSlider", "slide", "linear_stability", "slider_cycle")}}
 
 

@@ -60,6 +60,25 @@ def _numbers(option: str, text: str | None, n: int):
     return values
 
 
+def _psi(text: str | None, system):
+    """``--psi0 "0.1, 0.2"``: the contacts' state variables in order, grouped per contact."""
+    if text is None:
+        return None
+    counts = [c.friction.states for c in system.contacts]
+    try:
+        values = [float(part) for part in text.split(",")]
+    except ValueError:
+        values = None
+    if values is None or len(values) != sum(counts):
+        raise ParameterError("--psi0", text, f"{sum(counts)} numbers separated by commas (the contacts' state "
+                             "variables, in order)")
+    rows, at = [], 0
+    for k in counts:
+        rows.append(values[at:at + k])
+        at += k
+    return rows
+
+
 def _out(out: Path | None, overwrite: bool) -> Path | None:
     overwrite_needs(overwrite, "--out", out)
     return output_path("--out", out, ".nc", overwrite)
@@ -70,16 +89,28 @@ def simulate_cmd(file: File, t_end: Annotated[float, declared(Q["t_end"], "--t-e
                  x0: X0 = None, v0: V0 = None,
                  samples: Annotated[int, declared(Q["samples"], "--samples")] = 1001,
                  max_events: Annotated[int, declared(Q["max_events"], "--max-events")] = 1_000_000,
+                 psi0: Annotated[Optional[str], typer.Option(
+                     "--psi0", help="Rate-and-state contacts: their state variables ln(V_0 theta / D_c) at the start, "
+                                    "separated by commas, in the order of the contacts (two for a law with two). "
+                                    "Default: steady at the start's slip rates.")] = None,
                  json: Json = False, out: Out = None, overwrite: Replace = False):
-    """Event-driven simulation with exact stick/slip switching at every contact."""
+    """Event-driven simulation with exact stick/slip switching at every contact (with rate-and-state
+    laws: their smooth motion, Radau IIA; the start at steady sliding's position unless --x0)."""
     out = _out(out, overwrite)
-    from ..system import simulate
+    from ..system import is_rate_state, rate_state_simulate, simulate
 
     system = _load(file)
     n = system.dofs
     with _file_keys():
-        run = simulate(system, _numbers("--x0", x0, n), _numbers("--v0", v0, n), t_end, samples=samples,
-                       max_events=max_events)
+        if is_rate_state(system):
+            run = rate_state_simulate(system, _numbers("--x0", x0, n), _numbers("--v0", v0, n), t_end,
+                                      psi0=_psi(psi0, system), samples=samples)
+        else:
+            if psi0 is not None:
+                raise ParameterError("--psi0", psi0, "left out: it is the state of rate-and-state contacts, and this "
+                                     "system has none")
+            run = simulate(system, _numbers("--x0", x0, n), _numbers("--v0", v0, n), t_end, samples=samples,
+                           max_events=max_events)
     _emit(run.to_dict(), json, "simulation")
     if out is not None:
         write_netcdf(run.to_xarray(), out)
@@ -107,13 +138,14 @@ def cycle(file: File, x0: X0 = None, v0: V0 = None,
 
 @app.command()
 def stability(file: File, json: Json = False, out: Out = None, overwrite: Replace = False):
-    """Steady sliding (every contact slipping, the structure at rest) and its linear stability."""
+    """Steady sliding (every contact slipping, the structure at rest) and its linear stability (with
+    rate-and-state laws, in the displacements, velocities and the contacts' state variables)."""
     out = _out(out, overwrite)
-    from ..system import steady_sliding
+    from ..system import is_rate_state, rate_state_steady, steady_sliding
 
     system = _load(file)
     with _file_keys():
-        result = steady_sliding(system)
+        result = rate_state_steady(system) if is_rate_state(system) else steady_sliding(system)
     _emit(result.to_dict(), json, "steady sliding")
     if out is not None:
         write_netcdf(result.to_xarray(), out)

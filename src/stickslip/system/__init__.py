@@ -5,8 +5,10 @@ through closed-form flows between contact events (`Flow`); `monodromy` different
 (saltation matrices at its events) and `limit_cycle` finds the periodic orbit a motion settles
 on, with its Floquet multipliers; `steady_sliding` the resting state under sliding contacts and its
 linear stability; `relative_cycle` a wave moving by one cell of a symmetric structure and
-its multipliers; `continue_system` follows a cycle along a parameter; `load_system` reads a system from a TOML file. One contact on one degree of
-freedom is the oscillator of `stickslip.oscillator`.
+its multipliers; `continue_system` follows a cycle along a parameter; `load_system` reads a
+system from a TOML file. With rate-and-state laws (`stickslip.rsf.RateState`) at its contacts,
+`rate_state_simulate` and `rate_state_steady` give its motion and its steady sliding. One contact
+on one degree of freedom is the oscillator of `stickslip.oscillator`.
 """
 
 from .chains import burridge_knopoff
@@ -15,6 +17,7 @@ from .continuation import SystemBranch, continue_system, file_parameter
 from .floquet import SystemCycle, limit_cycle, monodromy, saltation, without_own
 from .flow import Flow
 from .model import Contact, System
+from .rate_state import RateStateRun, RateStateSteady, is_rate_state, rate_state_simulate, rate_state_steady
 from .simulate import Segment, SystemRun, choose_states, simulate
 from .steady import SteadySliding, steady_sliding
 from .symmetry import RelativeCycle, cell_symmetry, relative_cycle
@@ -22,4 +25,5 @@ from .symmetry import RelativeCycle, cell_symmetry, relative_cycle
 __all__ = ["Contact", "System", "Flow", "SystemRun", "Segment", "simulate", "choose_states", "monodromy",
            "saltation", "SystemCycle", "limit_cycle", "load_system", "system_from_dict",
            "SteadySliding", "steady_sliding", "burridge_knopoff", "RelativeCycle", "cell_symmetry",
-           "relative_cycle", "without_own", "SystemBranch", "continue_system", "file_parameter"]
+           "relative_cycle", "without_own", "SystemBranch", "continue_system", "file_parameter", "RateStateRun",
+           "RateStateSteady", "is_rate_state", "rate_state_simulate", "rate_state_steady"]

@@ -17,6 +17,19 @@ fd = 0.4
 # normal_stiffness = 0.5                 # N/m; it opens where N would pull (Coulomb only)
 ```
 
+A rate-and-state contact (every contact then: `stickslip.system.rate_state`) gives, instead of
+``fs``, ``fd`` and ``tau``, the fields of `stickslip.rsf.RateState`:
+
+```toml
+law = "rate-state"
+a = 0.01                                 # direct effect
+b = 0.015                                # evolution effect (b2, dc2: a second state variable)
+dc = 1e-5                                # m, the state's slip distance
+f0 = 0.6                                 # friction at the reference rate v_ref (m/s, default 1e-6)
+evolution = "aging"                      # aging | slip | prz
+regularized = false                      # true: the asinh form, which holds through zero slip rate
+```
+
 Every problem is a `ParameterError` naming the key as the file writes it (``contact[1].fs``).
 """
 
@@ -28,6 +41,7 @@ from pathlib import Path
 
 from ..errors import MISSING, ParameterError
 from ..friction import make_law
+from ..rsf import RateState
 from .model import Contact, System
 
 __all__ = ["load_system", "read_table", "system_from_dict", "as_file_keys"]
@@ -35,7 +49,9 @@ __all__ = ["load_system", "read_table", "system_from_dict", "as_file_keys"]
 _TOP = ("mass", "stiffness", "damping", "force", "contact")
 _CONTACT = ("direction", "normal_force", "surface_speed", "law", "fs", "fd", "tau", "name", "normal_direction",
             "normal_stiffness")
-_LAWS = ("coulomb", "linear-weakening")
+#: The keys of a rate-and-state law (`stickslip.rsf.RateState`'s fields), with ``law = "rate-state"``.
+_RATE_STATE = ("a", "b", "dc", "f0", "v_ref", "evolution", "b2", "dc2", "regularized")
+_LAWS = ("coulomb", "linear-weakening", "rate-state")
 
 
 def _renamed(err: ParameterError, prefix: str) -> ParameterError:
@@ -47,17 +63,27 @@ def _contact(i: int, table) -> Contact:
     where = f"contact[{i}]."
     if not isinstance(table, dict):
         raise ParameterError(f"contact[{i}]", table, "a table of direction, normal_force, law, fs, fd, ...")
-    unknown = sorted(set(table) - set(_CONTACT))
-    if unknown:
-        raise ParameterError(where + unknown[0], table[unknown[0]], "a key of a contact: " + ", ".join(_CONTACT))
-    for key in ("direction", "normal_force", "fs", "fd"):
-        if key not in table:
-            raise ParameterError(where + key, MISSING, "given")
     law = table.get("law", "coulomb")
     if law not in _LAWS:
-        raise ParameterError(where + "law", law, "one of " + ", ".join(_LAWS) + " (laws affine in the slip speed)")
+        raise ParameterError(where + "law", law, "one of " + ", ".join(_LAWS) + " (laws affine in the slip speed, "
+                             "or rate-and-state)")
+    rate_state = law == "rate-state"
+    keys = _CONTACT + _RATE_STATE if rate_state else _CONTACT
+    unknown = sorted(set(table) - set(keys))
+    if unknown:
+        raise ParameterError(where + unknown[0], table[unknown[0]], f"a key of a contact with law {law!r}: "
+                             + ", ".join(k for k in keys if not (rate_state and k in ("fs", "fd", "tau"))))
+    for key in ("direction", "normal_force") + (("a", "b", "dc") if rate_state else ("fs", "fd")):
+        if key not in table:
+            raise ParameterError(where + key, MISSING, "given")
     try:
-        friction = make_law(law, fs=table["fs"], fd=table["fd"], tau=table.get("tau"))
+        if rate_state:
+            if "fs" in table or "fd" in table or "tau" in table:
+                key = next(k for k in ("fs", "fd", "tau") if k in table)
+                raise ParameterError(key, table[key], "left out with law 'rate-state' (its friction is f0, a, b, ...)")
+            friction = RateState(**{k: table[k] for k in _RATE_STATE if k in table})
+        else:
+            friction = make_law(law, fs=table["fs"], fd=table["fd"], tau=table.get("tau"))
         return Contact(table["direction"], table["normal_force"], friction, table.get("surface_speed", 0.0),
                        table.get("name", ""), table.get("normal_direction"), table.get("normal_stiffness", 0.0))
     except ParameterError as err:

@@ -23,6 +23,7 @@ import scipy.linalg
 
 from ..errors import ParameterError
 from ..friction import FrictionLaw
+from ..rsf import RateState
 from ..quantities import MAX_CONTACTS, MAX_SYSTEM_DOFS, SYSTEM as Q
 
 __all__ = ["Contact", "System"]
@@ -76,8 +77,9 @@ class Contact:
         object.__setattr__(self, "direction", w)
         object.__setattr__(self, "normal_force", Q.check("normal_force", self.normal_force))
         object.__setattr__(self, "surface_speed", Q.check("surface_speed", self.surface_speed))
-        if not isinstance(self.friction, FrictionLaw):
-            raise ParameterError("friction", self.friction, "a stickslip.friction.FrictionLaw")
+        if not isinstance(self.friction, (FrictionLaw, RateState)):
+            raise ParameterError("friction", self.friction, "a stickslip.friction.FrictionLaw or a "
+                                 "stickslip.rsf.RateState")
         if not isinstance(self.name, str):
             raise ParameterError("name", self.name, "a text")
         if not isinstance(self.normal_on_structure, (bool, np.bool_)):
@@ -92,7 +94,7 @@ class Contact:
         if not np.any(nv):
             raise ParameterError("normal_direction", self.normal_direction, "a vector with at least one entry not zero")
         object.__setattr__(self, "normal_direction", nv)
-        mu = self.friction.affine
+        mu = getattr(self.friction, "affine", None)
         if mu is None or mu[1] != 0.0:
             raise ParameterError("friction", type(self.friction).__name__, "Coulomb with a normal direction (the "
                                  "friction force of a law of the slip speed times N(x) is not linear)")

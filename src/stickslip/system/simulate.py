@@ -176,9 +176,10 @@ def _check(system, x0, v0, t_end, samples, max_events, flows):
     if not isinstance(system, System):
         raise ParameterError("system", system, "a stickslip.system.System")
     for i, c in enumerate(system.contacts):
-        if c.friction.affine is None:
+        if getattr(c.friction, "affine", None) is None:
             raise ParameterError(f"contacts[{i}].friction", type(c.friction).__name__,
-                                 "a law affine in the slip speed (Coulomb, linear weakening) in this version")
+                                 "a law affine in the slip speed (Coulomb, linear weakening) in this version; a system "
+                                 "with rate-and-state laws moves by stickslip.system.rate_state_simulate")
     n = system.dofs
     x0 = np.zeros(n) if x0 is None else np.asarray(Q["x0"].check_array(x0, "x0"), dtype=float).reshape(-1)
     v0 = np.zeros(n) if v0 is None else np.asarray(Q["v0"].check_array(v0, "v0"), dtype=float).reshape(-1)

@@ -78,6 +78,10 @@ def steady_sliding(system: System) -> SteadySliding:
     """Steady sliding of ``system`` (every contact's surface moving) and its linear stability."""
     if not isinstance(system, System):
         raise ParameterError("system", system, "a stickslip.system.System")
+    for i, c in enumerate(system.contacts):
+        if not hasattr(c.friction, "kinetic"):
+            raise ParameterError(f"contacts[{i}].friction", type(c.friction).__name__, "a law of the slip speed; "
+                                 "steady sliding with rate-and-state laws: stickslip.system.rate_state_steady")
     n = system.dofs
     forces = np.empty(len(system.contacts))
     c_eff = system.damping.copy()

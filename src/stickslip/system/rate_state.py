@@ -1,0 +1,315 @@
+"""Systems whose contacts follow rate-and-state friction: their motion, steady sliding and its stability.
+
+With a rate-and-state law at every contact (`stickslip.rsf.RateState`) the friction force is a
+smooth function of the slip rate and of the contact's state variables, and no contact sticks:
+
+    M x'' + C x' + K x = f + sum_i w_i N_i sign(v_i) mu_i(|v_i|, psi_i),   v_i = V_i - w_i . x',
+    psi_i' = g_i(|v_i|, psi_i)
+
+(``psi = ln(V_0 theta / D_c)``, one or two per contact; ``g`` the law's evolution). The motion is
+integrated by Radau IIA (scipy; the state variables make it stiff). The law as written,
+``mu = f_0 + a ln(v / V_0) + b psi``, has no value at ``v = 0``: a run whose slip rate reaches zero
+stops and says so; the regularised law (``asinh``) holds through ``v = 0`` in either direction.
+
+Steady sliding: the structure rests (``x' = 0``) with every contact slipping at ``v_i = V_i`` and
+its state steady, ``K x = f + sum_i w_i N_i sign(V_i) mu_ss,i(|V_i|)``; its stability is that of the
+equations linearised there (complex steps), in ``(x, x', psi)``. For one block on one contact the
+leading pair crosses the imaginary axis at the closed-form critical stiffness
+``k_c = N (b - a) / D_c (1 + m V^2 / (N a D_c))`` (Ruina 1983, Rice & Ruina 1983).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import xarray as xr
+from scipy.integrate import solve_ivp
+
+from ..cf import finish
+from ..errors import NoSolutionError, ParameterError
+from ..quantities import SYSTEM as Q
+from ..results import Result
+from ..rsf import RateState
+from ..rsf.slider import MAX_CALLS
+from .model import System
+from .simulate import MAX_NUMBERS
+from .steady import SteadySliding
+
+__all__ = ["RateStateRun", "RateStateSteady", "rate_state_simulate", "rate_state_steady", "is_rate_state"]
+
+#: The complex step of the linearisation.
+_STEP = 1e-30
+#: A slip rate taken for zero (m/s): the regularised law's friction is 0 to round-off there.
+_TINY = 1e-300
+#: The longest run, in the slowest time scale ``D_c / V`` of the contacts' states (refused up front,
+#: not left to use up the evaluations: a cycle of stick-slip takes a few of them and hundreds of steps).
+LONGEST = 1e4
+
+
+def is_rate_state(system: System) -> bool:
+    """True when every contact's law is rate-and-state (False when none is; mixed: an error)."""
+    rsf = [isinstance(c.friction, RateState) for c in system.contacts]
+    if any(rsf) and not all(rsf):
+        i = rsf.index(False) if rsf[0] else rsf.index(True)
+        raise ParameterError(f"contacts[{i}].friction", type(system.contacts[i].friction).__name__,
+                             "the same kind of law at every contact: all rate-and-state, or none (a system mixing "
+                             "laws that stick with rate-and-state ones is not in this version)")
+    return all(rsf)
+
+
+def _laws(system) -> list[RateState]:
+    if not isinstance(system, System):
+        raise ParameterError("system", system, "a stickslip.system.System")
+    if not is_rate_state(system):
+        raise ParameterError("contacts", [type(c.friction).__name__ for c in system.contacts],
+                             "rate-and-state laws (stickslip.rsf.RateState) at every contact")
+    return [c.friction for c in system.contacts]
+
+
+class _Equations:
+    """The right-hand side in ``y = (x, x', psi of contact 0, psi of contact 1, ...)``."""
+
+    def __init__(self, system: System):
+        self.system, self.laws = system, _laws(system)
+        self.n = system.dofs
+        self.offsets = np.cumsum([0] + [law.states for law in self.laws])
+        self.size = 2 * self.n + int(self.offsets[-1])
+        self.V = np.array([c.surface_speed for c in system.contacts])
+        self.N = np.array([c.normal_force for c in system.contacts])
+
+    def psi(self, y, i):
+        return y[2 * self.n + self.offsets[i]:2 * self.n + self.offsets[i + 1]]
+
+    def forces(self, y):
+        """``(slip rates, friction forces, d psi / dt)`` at ``y`` (complex ``y`` for complex steps)."""
+        n, W = self.n, self.system.directions
+        vr = self.V - W.T @ y[n:2 * n]
+        forces = np.empty(len(self.laws), dtype=np.result_type(y, float))
+        rates = np.empty(self.size - 2 * n, dtype=forces.dtype)
+        for i, law in enumerate(self.laws):
+            s = 1.0 if vr[i].real >= 0 else -1.0
+            if not law.regularized and vr[i].real <= 0.0:
+                raise _Stopped(i)
+            log_v = np.log(s * vr[i]) if abs(vr[i]) > _TINY else np.log(_TINY)  # (regularised: mu(0) = 0)
+            psi = self.psi(y, i)
+            mu, _, _ = law.friction(log_v, psi)
+            forces[i] = s * self.N[i] * mu
+            rates[self.offsets[i]:self.offsets[i + 1]] = law.state_rate(log_v, psi)
+        return vr, forces, rates
+
+    def jacobian(self, t, y):
+        """``d y' / d y`` by complex steps (exact to round-off: the laws take complex arguments)."""
+        out = np.empty((self.size, self.size))
+        for j in range(self.size):
+            step = y.astype(complex)
+            step[j] += 1j * _STEP
+            out[:, j] = self(t, step).imag / _STEP
+        return out
+
+    def __call__(self, t, y):
+        sysm, n = self.system, self.n
+        _, forces, rates = self.forces(y)
+        rest = sysm.force - sysm.stiffness @ y[:n] - sysm.damping @ y[n:2 * n] + sysm.directions @ forces
+        return np.concatenate([y[n:2 * n], sysm.inverse_mass @ rest, rates])
+
+
+class _Budget(Exception):
+    """`MAX_CALLS` evaluations of the equations used up."""
+
+
+class _Stopped(Exception):
+    def __init__(self, contact: int):
+        self.contact = contact
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class RateStateRun(Result):
+    """A motion of a system with rate-and-state contacts: samples of the displacements ``x``, the
+    velocities ``v``, each contact's ``slip_rate``, ``friction_force`` and state variables ``psi``
+    (``ln(V_0 theta / D_c)``; a second one NaN where a law has one)."""
+
+    t: np.ndarray
+    x: np.ndarray
+    v: np.ndarray
+    slip_rate: np.ndarray
+    friction_force: np.ndarray
+    psi: np.ndarray
+    MODEL = "system"
+
+    def to_dict(self) -> dict:
+        return {"t_end": float(self.t[-1]), "x_end": self.x[-1].tolist(), "v_end": self.v[-1].tolist(),
+                "slip_rate_end": self.slip_rate[-1].tolist(), "slip_rate_max": self.slip_rate.max(axis=0).tolist(),
+                "slip_rate_min": self.slip_rate.min(axis=0).tolist()}
+
+    def to_xarray(self) -> xr.Dataset:
+        """Units and meanings from the declarations (`stickslip.cf.finish`)."""
+        n, k = self.x.shape[1], self.slip_rate.shape[1]
+        ds = xr.Dataset(
+            {"x": (("t", "dof"), self.x), "v": (("t", "dof"), self.v),
+             "slip_rate": (("t", "contact"), self.slip_rate,
+                           {"units": "m/s", "long_name": "slip velocity V - w . x' of the contact"}),
+             "friction_force": (("t", "contact"), self.friction_force),
+             "psi": (("t", "contact", "state"), self.psi,
+                     {"units": "1", "long_name": "state variable ln(V_0 theta / D_c) of the contact's law"})},
+            coords={"t": self.t, "dof": np.arange(n), "contact": np.arange(k), "state": np.arange(self.psi.shape[2])})
+        return finish(ds, "system with rate-and-state contacts: a motion", "system")
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class RateStateSteady(SteadySliding):
+    """`SteadySliding` of a system with rate-and-state contacts: the resting position, the friction
+    forces, the direct effect's damping ``C + sum_i N_i (d mu_i / d v) w_i w_i^T``, the eigenvalues
+    of the equations linearised in ``(x, x', psi)`` and each contact's steady ``psi``."""
+
+    psi: tuple = ()
+
+    def to_dict(self) -> dict:
+        return {**super().to_dict(), "psi": [p.tolist() for p in self.psi]}
+
+
+def _steady_state(eq: _Equations) -> np.ndarray:
+    sysm = eq.system
+    if np.any(eq.V == 0.0):
+        i = int(np.flatnonzero(eq.V == 0.0)[0])
+        raise ParameterError(f"contacts[{i}].surface_speed", 0.0, "not 0 for steady sliding (a rate-and-state "
+                             "contact at rest has no steady state: its state grows without end)")
+    y = np.zeros(eq.size)
+    for i, law in enumerate(eq.laws):
+        y[2 * eq.n + eq.offsets[i]:2 * eq.n + eq.offsets[i + 1]] = law.steady_psi(abs(eq.V[i]))
+    _, forces, _ = eq.forces(y)
+    try:
+        y[:eq.n] = np.linalg.solve(sysm.stiffness, sysm.force + sysm.directions @ forces.real)
+    except np.linalg.LinAlgError:
+        raise ParameterError("stiffness", sysm.stiffness.tolist(), "an invertible matrix for steady sliding (the "
+                             "structure held in place by its springs)") from None
+    return y
+
+
+def rate_state_steady(system: System) -> RateStateSteady:
+    """Steady sliding of ``system`` (every contact rate-and-state, every surface moving) and its
+    linear stability."""
+    eq = _Equations(system)
+    y = _steady_state(eq)
+    jac = eq.jacobian(0.0, y)
+    if not np.all(np.isfinite(jac)):
+        raise NoSolutionError("the equations overflow about steady sliding (a slip rate, a or D_c too small "
+                              "for the rest of the system)")
+    eig = np.linalg.eigvals(jac)
+    eig = eig[np.lexsort((-eig.imag, -eig.real))]
+    vr, forces, _ = eq.forces(y)
+    W, n = system.directions, eq.n
+    slopes = [eq.N[i] * float(np.real(law.friction(np.log(abs(vr[i])), eq.psi(y, i))[1])) / abs(vr[i])
+              for i, law in enumerate(eq.laws)]  # N d mu / d v: (d mu / d ln v) / v
+    direct = system.damping + (W * np.array(slopes)) @ W.T
+    return RateStateSteady(y[:n].copy(), forces.real.copy(), direct, eig,
+                           tuple(eq.psi(y, i).copy() for i in range(len(eq.laws))))
+
+
+def _given_psi(psi0, eq: _Equations) -> np.ndarray:
+    """``psi0``: one entry per contact, a number or a list of its law's state variables."""
+    want = f"{len(eq.laws)} entries, one per contact: its state variable ln(V_0 theta / D_c) (a list of two for a " \
+           "law with two), each finite"
+    try:
+        rows = [np.atleast_1d(np.asarray(p, dtype=float)) for p in psi0]
+    except (TypeError, ValueError):
+        raise ParameterError("psi0", psi0, want) from None
+    if len(rows) != len(eq.laws) or any(r.shape != (law.states,) for r, law in zip(rows, eq.laws)):
+        raise ParameterError("psi0", psi0, want)
+    return np.concatenate([np.asarray(Q["psi0"].check_array(r, "psi0"), dtype=float) for r in rows])
+
+
+def rate_state_simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, psi0=None, samples: int = 1001,
+                        rtol: float = 1e-10) -> RateStateRun:
+    """The motion of ``system`` (every contact rate-and-state) from ``(x0, v0)`` (default: steady
+    sliding's position, at rest) with the contacts' state variables ``psi0`` (one list per contact;
+    default: steady at the slip rate of the start), over ``t_end`` with ``samples`` samples;
+    Radau IIA at relative tolerance ``rtol``."""
+    eq = _Equations(system)
+    n = eq.n
+    t_end, samples, rtol = Q.check("t_end", t_end), Q.check("samples", samples), Q.check("rtol", rtol)
+    scale = max(float(law.dc_values.max()) / max(abs(V), law.v_ref) for law, V in zip(eq.laws, eq.V))
+    if t_end > LONGEST * scale:
+        raise ParameterError("t_end", t_end, f"<= {LONGEST * scale:.6g} s ({LONGEST:.0e} times the slowest time "
+                             f"D_c / V of the contacts' states, {scale:.3g} s; simulate in pieces from the last "
+                             "state for more)", also=("contacts",))
+    if samples * (2 * n + 2 * len(eq.laws) + eq.size) > MAX_NUMBERS:
+        raise ParameterError("samples", samples, f"<= {int(MAX_NUMBERS // (2 * n + 2 * len(eq.laws) + eq.size))} for "
+                             "this system (the samples hold at most 1.25e8 numbers, 1 GB)")
+    y = np.zeros(eq.size)
+    if x0 is None:
+        y[:n] = _steady_state(eq)[:n] if np.all(eq.V != 0.0) else 0.0
+    if x0 is not None or v0 is not None:
+        for name, value, at in (("x0", x0, slice(0, n)), ("v0", v0, slice(n, 2 * n))):
+            if value is None:
+                continue
+            arr = np.asarray(Q[name].check_array(value, name), dtype=float).reshape(-1)
+            if arr.shape != (n,):
+                raise ParameterError(name, arr.tolist(), f"{n} numbers (one per degree of freedom)")
+            y[at] = arr
+    vr = eq.V - system.directions.T @ y[n:2 * n]
+    for i, law in enumerate(eq.laws):
+        if psi0 is None:
+            if vr[i] == 0.0:
+                raise ParameterError("psi0", None, f"given: contact {i} starts at zero slip rate, where no state "
+                                     "is steady", also=("v0",))
+            y[2 * n + eq.offsets[i]:2 * n + eq.offsets[i + 1]] = law.steady_psi(abs(vr[i]))
+    if psi0 is not None:
+        y[2 * n:] = _given_psi(psi0, eq)
+    try:
+        eq.forces(y)
+    except _Stopped as stop:
+        raise ParameterError("v0", y[n:2 * n].tolist(), f"a start at which contact {stop.contact} slips forward "
+                             "(the law without regularisation has no value at zero or negative slip rate)") from None
+    times = np.linspace(0.0, t_end, samples)
+
+    last = [0.0, y, 0]  # the latest state the equations were evaluated at (where a failed run got to), calls
+
+    def rhs(t, state):
+        last[2] += 1
+        if last[2] > MAX_CALLS:
+            raise _Budget
+        try:
+            out = eq(t, state)
+        except _Stopped:  # a trial state beyond zero slip rate: Radau's Newton iteration fails, the step shrinks
+            return np.full(state.size, np.nan)
+        last[:2] = t, state
+        return out
+
+    def jac(t, state):
+        try:
+            return eq.jacobian(t, state)
+        except _Stopped:
+            return np.zeros((state.size, state.size))
+
+    try:
+        sol = solve_ivp(rhs, (0.0, t_end), y, method="Radau", t_eval=times, rtol=rtol, jac=jac,
+                        atol=rtol * np.maximum(1.0, np.abs(y)) * 1e-3)
+    except _Budget:
+        raise NoSolutionError(f"more than {MAX_CALLS:.0e} evaluations of the equations by t = {last[0]:.6g} s of "
+                              f"t_end = {t_end:g} s: a shorter t_end, or a looser rtol") from None
+    except ValueError:  # scipy refuses a step or a Jacobian that is not finite
+        sol = None
+    if sol is None or sol.status != 0 or sol.y.shape[1] != samples or not np.all(np.isfinite(sol.y)):
+        slow = [i for i, v in enumerate(eq.V - system.directions.T @ last[1][n:2 * n])
+                if not eq.laws[i].regularized and v <= 1e-3 * abs(eq.V[i])]
+        if slow:
+            raise NoSolutionError(f"the slip rate of contact {slow[0]} fell to zero at t = {last[0]:.6g} s: the law "
+                                  "as written (mu = f0 + a ln(v / V0) + ...) has no value there; give it "
+                                  "regularized = true")
+        why = "its numbers left the range of floats" if sol is None else sol.message
+        raise NoSolutionError(f"the motion could not be integrated beyond t = {last[0]:.6g} s of t_end = {t_end:g} s "
+                              f"(Radau: {why}); a regularised contact held near zero slip rate (a "
+                              "stick, where the law's slope a exp(Psi/a)/(2 V0) makes the equations too stiff) "
+                              "stops it too")
+    Y = sol.y.T
+    k, states = len(eq.laws), max(law.states for law in eq.laws)
+    slip, force = np.empty((samples, k)), np.empty((samples, k))
+    psi = np.full((samples, k, states), np.nan)
+    for j in range(samples):
+        slip[j], f, _ = (np.real(a) for a in eq.forces(Y[j]))
+        force[j] = f
+        for i in range(k):
+            p = eq.psi(Y[j], i)
+            psi[j, i, :p.size] = p
+    return RateStateRun(times, Y[:, :n].copy(), Y[:, n:2 * n].copy(), slip, force, psi)
