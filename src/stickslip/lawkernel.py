@@ -13,9 +13,11 @@ functions, plain arithmetic); its slope is then a central difference, as `UserLa
 
 from __future__ import annotations
 
+import hashlib
 import math
 import weakref
 
+import numpy as np
 from numba import cfunc, njit, types
 from numba.core.errors import NumbaError
 
@@ -43,7 +45,8 @@ def user_law(mu):
     """``(mu, slope)`` callbacks for a user's function ``mu`` compiled by numba (``a`` of the three
     numbers is the relative step of the slope's central difference, taken on the side of
     ``v_r = 0`` the slip is on); None when numba cannot compile ``mu`` for one float (the flows
-    then stay in Python)."""
+    then stay in Python). Where ``mu`` raises (a division by zero too) the callbacks give NaN:
+    the compiled flows stop there as at a coefficient out of range."""
     try:
         fn = njit(types.float64(types.float64))(mu)
     except (NumbaError, TypeError, ValueError, NotImplementedError):
@@ -51,19 +54,49 @@ def user_law(mu):
 
     @cfunc(LAW)
     def value(v_r, step, b, c):
-        return fn(v_r)
+        try:
+            return fn(v_r)
+        except Exception:  # noqa: BLE001 - whatever the user's function raises: no value (the run stops, see _run_compiled)
+            return math.nan
 
     @cfunc(LAW)
     def slope(v_r, step, b, c):
         h = step * max(1.0, abs(v_r))
         lo = max(v_r - h, 0.5 * v_r) if v_r > 0 else v_r - h
         hi = min(v_r + h, 0.5 * v_r) if v_r < 0 else v_r + h
-        return (fn(hi) - fn(lo)) / (hi - lo)
+        try:
+            return (fn(hi) - fn(lo)) / (hi - lo)
+        except Exception:  # noqa: BLE001
+            return math.nan
 
     return value, slope
 
 
-_USER: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()  # a user's function -> its callbacks (or None)
+_USER: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()  # a user's function -> {its numbers: callbacks}
+
+
+def _numbers(mu) -> tuple:
+    """The numbers (and arrays) ``mu`` reads from its globals and closure: numba freezes them when it
+    compiles ``mu``, so the callbacks are made again when one of them changes (a global set in a
+    loop of runs), as the Python path would read it afresh."""
+    found = []
+    names = getattr(getattr(mu, "__code__", None), "co_names", ())
+    scope = getattr(mu, "__globals__", {})
+    cells = [c.cell_contents for c in (getattr(mu, "__closure__", None) or ()) if _readable(c)]
+    for value in [scope.get(n) for n in names] + cells:
+        if isinstance(value, (bool, int, float, complex, np.number)):
+            found.append(value)
+        elif isinstance(value, np.ndarray):
+            found.append((value.shape, value.dtype.str, hashlib.sha256(value.tobytes()).hexdigest()))
+    return tuple(found)
+
+
+def _readable(cell) -> bool:
+    try:
+        cell.cell_contents
+    except ValueError:  # an empty cell
+        return False
+    return True
 
 
 def compiled(law: FrictionLaw):
@@ -73,11 +106,13 @@ def compiled(law: FrictionLaw):
     if isinstance(law, Stribeck):
         return stribeck_mu, stribeck_slope, (law.fs, law.fd, law.vs)
     if isinstance(law, UserLaw):
+        key = _numbers(law.mu)
         try:
-            pair = _USER[law.mu]
-        except KeyError:
-            pair = _USER[law.mu] = user_law(law.mu)
+            made = _USER.setdefault(law.mu, {})
         except TypeError:  # not weakly referable: compiled every time
-            pair = user_law(law.mu)
+            made = {}
+        if key not in made:
+            made[key] = user_law(law.mu)
+        pair = made[key]
         return None if pair is None else (*pair, (law.step, 0.0, 0.0))
     return None

@@ -88,3 +88,46 @@ def test_a_compiled_user_law_out_of_range_is_refused_as_in_python(mu):
     with pytest.raises(ParameterError, match=r"mu\(v_r\)") as python:
         simulate(osc, 10.0, x0=-1.0, v0=0.0, method="python")
     assert str(compiled.value).split("=")[0] == str(python.value).split("=")[0]
+
+
+def test_an_end_a_few_ulps_after_an_accepted_step_is_reached_as_in_python():
+    """A run whose t_end falls within round-off of a step's start (found on the kernel's steps)."""
+    from stickslip.lawkernel import compiled
+    from stickslip.oscillator import slipkernel
+
+    mu, slope, numbers = compiled(STRIBECK.friction)
+    p = np.array([1.0, 1.0, 0.05, 1.0, 0.2, 1.0, 0.0, 10.0])
+    out = slipkernel.segment(mu, slope, np.array(numbers), p, np.zeros(2), 5.0, np.array([0.2]),  # as Engine does
+                             np.array([1]), 1e-12, 1e-14 * 0.2, 16 * np.finfo(float).eps * 0.2, 0.01, 64)
+    t_end = np.nextafter(np.nextafter(out[5][3], 1.0), 1.0)
+    a = simulate(STRIBECK, t_end, x0=0.0, v0=0.0)
+    b = simulate(STRIBECK, t_end, x0=0.0, v0=0.0, method="python")
+    assert a.status == b.status == 0 and a.x[-1] == pytest.approx(b.x[-1], abs=1e-14)
+
+
+def test_a_user_law_that_raises_is_refused_as_in_python_not_taken_for_zero():
+    def mu(v):
+        if abs(v) > 0.3:
+            raise ValueError("too fast")
+        return 0.4
+
+    osc = Oscillator(1.0, 1.0, 1.0, 0.2, UserLaw(mu, 0.6))
+    assert Engine(osc).compiled
+    with pytest.raises(ParameterError, match="too fast"):
+        simulate(osc, 20.0, x0=-2.0)
+
+
+def test_a_user_law_reading_a_global_that_changed_is_compiled_again():
+    """numba freezes the globals a function reads when it compiles it: a run after the global changed
+    must see the new value, as the Python path does."""
+    global _SHIFT
+    _SHIFT = 0.0
+    shifted = lambda v: 0.4 + _SHIFT + 0.1 * math.exp(-abs(v) / 0.1)  # noqa: E731
+    first = simulate(Oscillator(1.0, 1.0, 1.0, 0.2, UserLaw(shifted, 0.6)), 20.0, x0=-1.0).t[1]
+    _SHIFT = 0.05
+    osc = Oscillator(1.0, 1.0, 1.0, 0.2, UserLaw(shifted, 0.6))
+    again, python = simulate(osc, 20.0, x0=-1.0).t[1], simulate(osc, 20.0, x0=-1.0, method="python").t[1]
+    assert again == pytest.approx(python, rel=1e-9) and abs(again - first) > 1e-3
+
+
+_SHIFT = 0.0

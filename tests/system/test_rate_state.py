@@ -42,6 +42,17 @@ def test_steady_sliding_loses_stability_at_the_closed_form_critical_stiffness(ev
     assert rate_state_steady(_block(1.01 * kc, law, mass)).stable
 
 
+def test_slow_steady_sliding_is_decided_by_its_slow_pair_not_called_marginal():
+    """At V = 1e-9 m/s the direct effect's eigenvalue, -N a / (m V) = -1e11 1/s, dwarfs the slow pair
+    (real part 2.5e-5 1/s): stable at twice k_c, unstable at half of it."""
+    law = RateState(a=A, b=B, dc=DC, f0=F0, v_ref=1e-9)
+    kc = 1e4 * (B - A) / DC * (1 + 1e-18 / (1e4 * A * DC))
+    for k, stable in ((2 * kc, True), (0.5 * kc, False)):
+        st = rate_state_steady(System(mass=[[1.0]], stiffness=[[k]],
+                                      contacts=[Contact([1.0], 1e4, law, surface_speed=1e-9)]))
+        assert st.stable == stable and not st.marginal and abs(st.growth_rate) > 1e-5
+
+
 def test_steady_position_and_friction_are_those_of_steady_sliding():
     law = RateState(a=A, b=B, dc=DC, f0=F0, v_ref=V0)
     k = 3000.0
@@ -145,6 +156,13 @@ def test_bad_combinations_are_refused_with_the_names_the_user_gave():
             rate_state_simulate(_block(1e3, law), t_end=1.0, psi0=bad)
     with pytest.raises(ParameterError, match="stiffness"):
         rate_state_steady(System(mass=[[1.0]], stiffness=[[0.0]], contacts=[Contact([1.0], N, law, surface_speed=V)]))
+    backward = System(mass=[[1.0]], stiffness=[[1e3]], contacts=[Contact([1.0], N, law, surface_speed=-V)])
+    for call in (lambda: rate_state_steady(backward), lambda: rate_state_simulate(backward, t_end=1.0)):
+        with pytest.raises(ParameterError, match=r"contacts\[0\]\.surface_speed.*regularized"):
+            call()
+    for bad in ("0", {0: 1.0}, 0.5):
+        with pytest.raises(ParameterError, match="psi0"):
+            rate_state_simulate(_block(1e3, law), t_end=1.0, psi0=bad)
 
 
 def test_a_toml_table_makes_a_rate_and_state_contact():

@@ -257,7 +257,9 @@ class Engine:
                              0.0 if section is None else float(section), section is not None, bool(self.variational),
                              self._rtol, 1e-14, int(max_events), float(osc.friction.max_speed))
         status, value, modes, t, x, v, jac, ranges, first, starts, states, slopes, ends = out
-        if status == 2:
+        if status == 2:  # a coefficient out of range, or none (the user's function raised): the Python path says why
+            Engine(osc, "python", self._rtol, self.variational).run(x0, v0, t_end, section=section,
+                                                                      max_events=max_events)
             raise ParameterError("mu(v_r)", float(value), f"a friction coefficient {Q['fd'].allowed}")
         if status == 3:
             raise NoSolutionError("the slip flow could not be integrated (DOP853: the step fell below the round-off "

@@ -163,6 +163,8 @@ def segment(mu, dmu, lp, p, y0, t_max, levels, directions, rtol, atol, tol, h, c
         return BAD_LAW, -1, 0.0, y, 0, starts, states, slopes, v_low, v_high, coefficient, h
     t, steps, rejected = 0.0, 0, False
     while t < t_max:
+        if t_max - t <= 10 * _EPS * abs(t):  # t_max within round-off of this step's start: reached
+            break
         h = min(h, t_max - t)
         if h <= 10 * _EPS * max(abs(t), 1e-300):
             return STEP_TOO_SMALL, -1, t, y, steps, starts, states, slopes, v_low, v_high, 0.0, h
@@ -290,7 +292,7 @@ def run(mu, dmu, lp, osc, x0, v0, mode, t_end, section, use_section, variational
         now = tsum + comp
         if mode == 0:  # stick: to the release at x_hi, in closed form
             dt = max(0.0, (x_hi - x[count]) / V)
-            hit = now + dt <= t_end
+            hit = tsum + (dt + comp) <= t_end
             if not hit:
                 dt = t_end - now
             s = tsum + dt

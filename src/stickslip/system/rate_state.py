@@ -164,6 +164,14 @@ class RateStateSteady(SteadySliding):
 
     psi: tuple = ()
 
+    @property
+    def marginal(self) -> bool:
+        """The leading eigenvalue's real part is zero to round-off of that eigenvalue (``1e3 eps`` of its
+        modulus): the direct effect's eigenvalues, ``-N a / (m V)``, dwarf the slow pair whose real part
+        decides, so the largest modulus is no scale for it."""
+        lead = self.eigenvalues[0] if self.eigenvalues.size else 0.0
+        return bool(abs(lead.real) <= 1e3 * np.finfo(float).eps * abs(lead))
+
     def to_dict(self) -> dict:
         return {**super().to_dict(), "psi": [p.tolist() for p in self.psi]}
 
@@ -176,6 +184,9 @@ def _steady_state(eq: _Equations) -> np.ndarray:
                              "contact at rest has no steady state: its state grows without end)")
     y = np.zeros(eq.size)
     for i, law in enumerate(eq.laws):
+        if eq.V[i] < 0 and not law.regularized:
+            raise ParameterError(f"contacts[{i}].surface_speed", float(eq.V[i]), "> 0 for the law as written, which "
+                                 "has no value at a backward slip (or the law regularized)")
         y[2 * eq.n + eq.offsets[i]:2 * eq.n + eq.offsets[i + 1]] = law.steady_psi(abs(eq.V[i]))
     _, forces, _ = eq.forces(y)
     try:
@@ -210,6 +221,8 @@ def _given_psi(psi0, eq: _Equations) -> np.ndarray:
     """``psi0``: one entry per contact, a number or a list of its law's state variables."""
     want = f"{len(eq.laws)} entries, one per contact: its state variable ln(V_0 theta / D_c) (a list of two for a " \
            "law with two), each finite"
+    if not isinstance(psi0, (list, tuple, np.ndarray)):
+        raise ParameterError("psi0", psi0, "a list of " + want)
     try:
         rows = [np.atleast_1d(np.asarray(p, dtype=float)) for p in psi0]
     except (TypeError, ValueError):
