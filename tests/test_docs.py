@@ -127,4 +127,5 @@ def test_rsf_page_runs(monkeypatch):
     assert round(namespace["cycle"].period) == 181
     assert set(namespace["ds"].data_vars) >= {"slip_rate", "theta", "friction", "shear_stress", "slip", "load_point"}
     assert not namespace["steady"].stable and round(namespace["steady"].growth_rate, 5) == 0.00308
+    assert namespace["hopf"].criticality == "degenerate" and abs(namespace["hopf"].l1) < 1e-6
     assert namespace["burst"].slip_rate.max() > 1.2e-6

@@ -23,7 +23,7 @@ from stickslip.system import load_system
 from stickslip.system import simulate as system_simulate
 from stickslip.system import steady_sliding as system_steady
 from stickslip.system import burridge_knopoff
-from stickslip.rsf import RateState, SpringSlider, linear_stability, slide, slider_cycle
+from stickslip.rsf import RateState, SpringSlider, hopf_criticality, linear_stability, slide, slider_cycle
 from stickslip.brake.waves import ring_system, wave_spectra, wave_spectrum
 from stickslip.system import continue_system, file_parameter, rate_state_simulate, rate_state_steady, relative_cycle
 
@@ -83,6 +83,8 @@ CALLS = {
     "slide": (lambda **k: slide(**{"slider": SpringSlider(**SLIDER), "load_velocity": 1e-6, "t_end": 10.0, **k}),
               ["slider", "load_velocity", "t_end", "times", "v_init", "samples", "rtol", "start"]),
     "linear_stability": (lambda **k: linear_stability(**{"slider": SpringSlider(**SLIDER), "load_velocity": 1e-6, **k}),
+                         ["slider", "load_velocity"]),
+    "hopf_criticality": (lambda **k: hopf_criticality(**{"slider": SpringSlider(**SLIDER), "load_velocity": 1e-6, **k}),
                          ["slider", "load_velocity"]),
     "slider_cycle": (lambda **k: slider_cycle(**{"slider": SpringSlider(**SLIDER), "load_velocity": 1e-6, **k}),
                      ["slider", "load_velocity", "transient", "cycles", "rtol", "tol"]),
@@ -236,7 +238,8 @@ DOMAIN = {**{n: "oscillator" for n in ("Oscillator", "Coulomb", "Stribeck", "sim
           **{n: "system" for n in ("System", "Contact", "system simulate", "system limit_cycle", "load_system",
                                    "system steady_sliding", "burridge_knopoff", "rate_state_simulate",
                                    "rate_state_steady")},
-          **{n: "rsf" for n in ("RateState", "SpringSlider", "slide", "linear_stability", "slider_cycle")}}
+          **{n: "rsf" for n in ("RateState", "SpringSlider", "slide", "linear_stability", "slider_cycle",
+                                "hopf_criticality")}}
 
 
 @pytest.mark.parametrize("name, param", CASES, ids=[f"{n} {p}" for n, p in CASES])

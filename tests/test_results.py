@@ -15,10 +15,14 @@ from stickslip.halfspace import Material, direct_problem, inverse_problem, loadi
 from stickslip.oscillator import (Oscillator, continue_cycle, equilibrium_stability, hopf_points, limit_cycle,
                                   simulate)
 from stickslip.results import Result
+from stickslip.rsf import RateState, SpringSlider, hopf_criticality
+from stickslip.system import Contact, System, rate_state_simulate, rate_state_steady
 
 from .cf_rules import problems
 
 CASE = BrakeParams.from_physical(50.0, 1e-4, 0.7)
+_RSF_BLOCK = System(mass=[[1.0]], stiffness=[[4000.0]],
+                    contacts=[Contact([1.0], 10.0, RateState(a=0.01, b=0.015, dc=1e-5), surface_speed=1e-6)])
 
 
 @pytest.fixture(scope="module")
@@ -46,13 +50,18 @@ def results():
         "InterfaceFields": field_wave.fields(n=101), "StickSlipWave": field_wave,
         "Loading": loading_from_wave(-0.7, 0.001, nu=0.25, mu=0.5, mu_star=0.4),
         "Material": Material(2.1e11, 0.3, 7850.0),
+        "RateStateRun": rate_state_simulate(_RSF_BLOCK, t_end=10.0, samples=11),
+        "RateStateSteady": rate_state_steady(_RSF_BLOCK),
+        "HopfCriticality": hopf_criticality(SpringSlider(RateState(a=0.01, b=0.015, dc=1e-5), normal_stress=1e7,
+                                                         stiffness=1e9), 1e-6),
     }
 
 
 NAMES = ["Trajectory", "LimitCycle", "Branch", "EquilibriumStability", "HopfPoint", "ReducedCoefficients",
          "SteadySliding", "GrowthRates", "ModeGrowth", "TravellingWave", "Zone", "WaveBranch", "WavePersistence",
          "RingRun", "RegimeResult", "FemRun", "FemRegime", "FemSteady", "FemGrowth", "InverseSolution",
-         "DirectSolution", "InterfaceFields", "StickSlipWave", "Loading", "Material"]
+         "DirectSolution", "InterfaceFields", "StickSlipWave", "Loading", "Material", "RateStateRun", "RateStateSteady",
+         "HopfCriticality"]
 
 
 @pytest.mark.parametrize("name", NAMES)

@@ -54,6 +54,10 @@ RSF = Domain("rsf", units="SI, per unit area of the interface", quantities=[
     Q("critical_stiffness", "Pa/m", "critical stiffness k_c: steady sliding is unstable below it"),
     Q("critical_stiffness_quasi_static", "Pa/m", "critical stiffness without inertia, sigma (b - a) / D_c"),
     Q("hopf_frequency", "rad/s", "angular frequency of the oscillation at the critical stiffness"),
+    Q("l1", "1/s", "first Lyapunov coefficient of the Hopf point (in ln V, psi and tau / sigma; > 0: subcritical)"),
+    Q("l1_error", "1/s", "numerical error of the first Lyapunov coefficient (two difference steps)"),
+    Q("criticality", "", "the Hopf bifurcation is subcritical, supercritical, or degenerate (l1 zero within its "
+      "error)"),
     Q("hopf_period", "s", "period of the oscillation at the critical stiffness"),
     Q("eigenvalue_real", "1/s", "real part of an eigenvalue of the slider linearised about steady sliding"),
     Q("eigenvalue_imag", "rad/s", "imaginary part of an eigenvalue of the slider linearised about steady sliding"),

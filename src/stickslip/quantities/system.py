@@ -57,7 +57,7 @@ SYSTEM = Domain("system", units="SI (or any consistent units)", quantities=[
     Q("slip_rate_max", "m/s", "largest slip velocity of each rate-and-state contact over the samples"),
     Q("slip_rate_min", "m/s", "smallest slip velocity of each rate-and-state contact over the samples"),
     Q("psi", "1", "state variable ln(V_0 theta / D_c) of a rate-and-state contact (steady: ln(V_0 / V))"),
-    Q("state", "1", "number of a state variable of a rate-and-state contact"),
+    Q("state_variable", "1", "number of a state variable of a rate-and-state contact"),
     Q("event_time", "s", "time of a contact event"),
     Q("event_contact", "1", "contact whose state changed at the event"),
     Q("event_state", "1", "its state after the event (1 slip, 0 stick, -1 reverse slip, 2 open)"),

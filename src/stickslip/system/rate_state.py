@@ -150,9 +150,10 @@ class RateStateRun(Result):
              "slip_rate": (("t", "contact"), self.slip_rate,
                            {"units": "m/s", "long_name": "slip velocity V - w . x' of the contact"}),
              "friction_force": (("t", "contact"), self.friction_force),
-             "psi": (("t", "contact", "state"), self.psi,
+             "psi": (("t", "contact", "state_variable"), self.psi,
                      {"units": "1", "long_name": "state variable ln(V_0 theta / D_c) of the contact's law"})},
-            coords={"t": self.t, "dof": np.arange(n), "contact": np.arange(k), "state": np.arange(self.psi.shape[2])})
+            coords={"t": self.t, "dof": np.arange(n), "contact": np.arange(k),
+                    "state_variable": np.arange(self.psi.shape[2])})
         return finish(ds, "system with rate-and-state contacts: a motion", "system")
 
 
