@@ -56,7 +56,7 @@ def user_law(mu):
     def value(v_r, step, b, c):
         try:
             return fn(v_r)
-        except Exception:  # noqa: BLE001 - whatever the user's function raises: no value (the run stops, see _run_compiled)
+        except Exception:  # noqa: BLE001 - whatever the user's function raises: no value (the run stops there)
             return math.nan
 
     @cfunc(LAW)

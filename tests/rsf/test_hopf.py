@@ -26,7 +26,9 @@ def _planar(w, a0, fxy, fxx, gxy, gyy):
 def test_the_coefficient_of_a_planar_field_is_its_closed_form(w, a0, fxy, fxx, gxy, gyy):
     """GH 3.4.11: a = (f_xxx + f_xyy + g_xxy + g_yyy)/16 + (f_xy (f_xx + f_yy) - g_xy (g_xx + g_yy) - f_xx g_xx
     + f_yy g_yy)/(16 w); with Kuznetsov's unit eigenvector (u = z q + conj(z q), |q| = 1) l1 = 2 a / w."""
-    a = (6 * a0 + 2 * a0 + 2 * a0 + 6 * a0) / 16 + (fxy * (fxx + 0.0) - gxy * (0.0 + gyy) - fxx * 0.0 + 0.0 * gyy) / (16 * w)
+    f_yy = g_xx = 0.0
+    a = (6 * a0 + 2 * a0 + 2 * a0 + 6 * a0) / 16 + (fxy * (fxx + f_yy) - gxy * (g_xx + gyy) - fxx * g_xx
+                                                    + f_yy * gyy) / (16 * w)
     l1, error, omega = first_lyapunov_coefficient(_planar(w, a0, fxy, fxx, gxy, gyy), [0.0, 0.0])
     assert omega == pytest.approx(w, rel=1e-14)
     assert l1 == pytest.approx(2 * a / w, rel=1e-8) and error < 1e-8

@@ -69,7 +69,8 @@ def _coefficient(field, x0, h) -> tuple[float, float]:
 
     def C(u, v, s):  # d2/de dd [J(x0 + e v + d s) u], central
         return (_jacobian_times(field, x0 + h * (v + s), u) - _jacobian_times(field, x0 + h * (v - s), u)
-                - _jacobian_times(field, x0 - h * (v - s), u) + _jacobian_times(field, x0 - h * (v + s), u)) / (4 * h * h)
+                - _jacobian_times(field, x0 - h * (v - s), u)
+                + _jacobian_times(field, x0 - h * (v + s), u)) / (4 * h * h)
 
     qc = np.conj(q)
     b_qqc = _bilinear(B, q, qc)
