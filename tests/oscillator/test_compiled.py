@@ -1,7 +1,7 @@
 """The compiled DOP853 of laws that are not affine (`stickslip.oscillator.slipkernel`): checked
-against scipy's DOP853 (the same method, written by others), solve_ivp with events, Liouville's
-formula and the closed form of a constant law; a user's law compiled by numba or, where numba
-cannot, run in Python."""
+against scipy's DOP853 (the same method, written by others), solve_ivp with events and Liouville's
+formula (the closed form of a constant law: tests/oscillator/test_simulate.py); a user's law
+compiled by numba or, where numba cannot, run in Python."""
 
 import math
 
@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from stickslip.errors import ParameterError
-from stickslip.friction import Coulomb, Stribeck, UserLaw
+from stickslip.friction import Stribeck, UserLaw
 from stickslip.oscillator import Oscillator, limit_cycle, simulate
 from stickslip.oscillator.baseline import solve_ivp_switches
 from stickslip.oscillator.simulate import Engine
@@ -33,20 +33,6 @@ def test_stribeck_switch_times_against_solve_ivp_with_events():
     ref = solve_ivp_switches(STRIBECK, 0.0, 0.0, 30.0, rtol=1e-12)
     assert [int(e[4]) for e in traj.events] == [m for *_, m in ref]
     assert max(abs(e[0] - r[0]) for e, r in zip(traj.events, ref)) < 1e-8
-
-
-def test_a_constant_user_law_converges_to_the_closed_form_at_order_of_the_tolerance():
-    """mu = 0.4 as a numba-compiled callable: the Coulomb oscillator's exact switches, closer as rtol falls."""
-    exact_osc = Oscillator(1.0, 1.0, 1.0, 0.2, Coulomb(0.6, 0.4))
-    user = exact_osc.replace(friction=UserLaw(lambda v: 0.4, 0.6))
-    assert Engine(user).compiled
-    exact = simulate(exact_osc, 30.0, x0=-0.5, v0=0.0)
-    errors = []
-    for rtol in (1e-6, 1e-9, 1e-12):
-        approx = simulate(user, 30.0, x0=-0.5, v0=0.0, rtol=rtol)
-        assert list(approx.modes) == list(exact.modes)
-        errors.append(np.max(np.abs(approx.t - exact.t)))
-    assert errors[2] < 1e-10 and errors[0] > errors[1] > errors[2]
 
 
 def test_a_compiled_user_laws_multipliers_obey_liouville():

@@ -64,13 +64,15 @@ def test_stick_slip_multipliers_are_one_and_zero(law):
     assert cycle.touches_stick and cycle.stable
 
 
-def test_nontrivial_multiplier_is_the_slope_of_the_return_map():
+@pytest.mark.parametrize("method", ["numeric", "python"])
+def test_nontrivial_multiplier_is_the_slope_of_the_return_map(method):
     """An unstable pure-slip cycle (Stribeck, between Hopf and grazing): the saltation-free
-    monodromy multiplier equals P'(x*) measured by finite differences of the return map."""
+    monodromy multiplier equals P'(x*) measured by finite differences of the return map (on both
+    DOP853 paths: compiled with the law, and scipy's in Python)."""
     osc = Oscillator(1.0, 1.0, 1.0, 0.6, Stribeck(0.6, 0.4, 0.1), damping=0.05)
-    cycle = limit_cycle(osc, x0=osc.equilibrium - 0.45, v0=0.0)
+    cycle = limit_cycle(osc, x0=osc.equilibrium - 0.45, v0=0.0, method=method)
     assert not cycle.touches_stick and not cycle.stable
-    engine = Engine(osc)
+    engine = Engine(osc, method)
     h = 1e-6
     slope = (return_map(engine, cycle.section_x + h).x_next - return_map(engine, cycle.section_x - h).x_next) / (2 * h)
     assert cycle.nontrivial_multiplier.real == pytest.approx(slope, rel=1e-5)

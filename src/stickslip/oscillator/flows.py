@@ -111,7 +111,22 @@ class AffineSlip:
         return np.array([[c - self.sigma * s, s], [-self.w02 * s, c + self.sigma * s]])
 
 
-class NumericSlip:
+class _Integrated:
+    """What the numerical flows share: the end of the last segment (``_end``: ``x, v`` and, with
+    ``variational``, the 2 x 2 derivative by rows) and its Jacobian."""
+
+    def end(self):
+        """``(x, v)`` at the end of the last segment."""
+        return float(self._end[0]), float(self._end[1])
+
+    def jacobian(self, t=None):
+        """Derivative of the end state of the last segment w.r.t. its start state."""
+        if not self.variational:
+            raise RuntimeError("jacobian needs variational=True")
+        return np.asarray(self._end[2:]).reshape(2, 2)
+
+
+class NumericSlip(_Integrated):
     """Flow of a slip mode for a general law: DOP853 (order 8) with dense output.
 
     Crossings are located with Brent's method on the dense output of the step where
@@ -186,18 +201,17 @@ class NumericSlip:
     def speed_extremes(self):
         return np.asarray(self._extremes)
 
-    def end(self):
-        """``(x, v)`` at the end of the last segment."""
-        return float(self._end[0]), float(self._end[1])
-
-    def jacobian(self, t=None):
-        """Derivative of the end state of the last segment w.r.t. its start state."""
-        if not self.variational:
-            raise RuntimeError("jacobian needs variational=True")
-        return np.asarray(self._end[2:]).reshape(2, 2)
 
 
-class CompiledSlip:
+def compiled_failure(status: int, value: float):
+    """Raise what a compiled run's failure ``status`` (`slipkernel`) means (``value``: the coefficient met)."""
+    if status == slipkernel.BAD_LAW:
+        raise ParameterError("mu(v_r)", float(value), f"a friction coefficient {Q['fd'].allowed}")
+    raise NoSolutionError("the slip flow could not be integrated (DOP853: the step fell below the round-off of the "
+                          "time): the friction law changes faster than double precision resolves")
+
+
+class CompiledSlip(_Integrated):
     """`NumericSlip`'s DOP853 at the same tolerances, compiled with the law (`slipkernel`):
     ``law = (mu, slope, numbers)`` from `stickslip.lawkernel.compiled`."""
 
@@ -221,11 +235,8 @@ class CompiledSlip:
         run = slipkernel.segment(self.mu, self.slope, self.params, self.p, y0, float(t_max), values, sides,
                                  self.rtol, atol, 16 * _EPS * scale, h0, 64)
         status, index, t, y = run[:4]
-        if status == slipkernel.BAD_LAW:
-            raise ParameterError("mu(v_r)", float(run[10]), f"a friction coefficient {Q['fd'].allowed}")
-        if status == slipkernel.STEP_TOO_SMALL:
-            raise NoSolutionError("the slip flow could not be integrated (DOP853: the step fell below the round-off "
-                                  "of the time): the friction law changes faster than double precision resolves")
+        if status in (slipkernel.BAD_LAW, slipkernel.STEP_TOO_SMALL):
+            compiled_failure(status, run[10])
         self._run, self._end, self._h = run, y, run[11]
         return (t, int(index)) if status == slipkernel.CROSSED else (t_max, None)
 
@@ -239,15 +250,6 @@ class CompiledSlip:
     def speed_extremes(self):
         return np.array([self._run[8], self._run[9]])
 
-    def end(self):
-        """``(x, v)`` at the end of the last segment."""
-        return float(self._end[0]), float(self._end[1])
-
-    def jacobian(self, t=None):
-        """Derivative of the end state of the last segment w.r.t. its start state."""
-        if not self.variational:
-            raise RuntimeError("jacobian needs variational=True")
-        return np.asarray(self._end[2:]).reshape(2, 2)
 
 
 class StepPieces:

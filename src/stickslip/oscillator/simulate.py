@@ -26,7 +26,7 @@ from ..errors import NoSolutionError, ParameterError
 from .kernel import run_affine
 from .. import lawkernel
 from . import slipkernel
-from .flows import AffineSlip, CompiledSlip, NumericSlip, StepPieces
+from .flows import AffineSlip, CompiledSlip, NumericSlip, StepPieces, compiled_failure
 from .model import Mode, Oscillator
 
 __all__ = ["Segment", "Trajectory", "simulate", "Engine"]
@@ -260,10 +260,8 @@ class Engine:
         if status == 2:  # a coefficient out of range, or none (the user's function raised): the Python path says why
             Engine(osc, "python", self._rtol, self.variational).run(x0, v0, t_end, section=section,
                                                                       max_events=max_events)
-            raise ParameterError("mu(v_r)", float(value), f"a friction coefficient {Q['fd'].allowed}")
-        if status == 3:
-            raise NoSolutionError("the slip flow could not be integrated (DOP853: the step fell below the round-off "
-                                  "of the time): the friction law changes faster than double precision resolves")
+        if status in (2, 3):
+            compiled_failure(slipkernel.BAD_LAW if status == 2 else slipkernel.STEP_TOO_SMALL, value)
         evaluators = {("segment", i): StepPieces(mu, slope, numbers, self.flows[Mode(int(m))].p,
                                                        starts[first[i]:first[i + 1]], states[first[i]:first[i + 1]],
                                                        slopes[first[i]:first[i + 1]], ends[i], (x[i + 1], v[i + 1]))

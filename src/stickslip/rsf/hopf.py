@@ -24,18 +24,10 @@ import numpy as np
 
 from ..errors import NoSolutionError, ParameterError
 from ..results import Result
-from .slider import SpringSlider
+from .slider import SpringSlider, complex_jacobian, directional
 from .stability import linear_stability
 
 __all__ = ["first_lyapunov_coefficient", "HopfCriticality", "hopf_criticality"]
-
-_STEP = 1e-30
-
-
-def _jacobian_times(field: Callable, x: np.ndarray, u: np.ndarray) -> np.ndarray:
-    """``J(x) u`` for a real ``u`` by one complex step."""
-    return np.imag(field(x + 1j * _STEP * u)) / _STEP
-
 
 def _bilinear(form, x, y):
     """A real bilinear ``form`` extended to complex arguments."""
@@ -53,7 +45,7 @@ def _trilinear(form, x, y, z):
 
 
 def _coefficient(field, x0, h) -> tuple[float, float]:
-    J = np.stack([_jacobian_times(field, x0, e) for e in np.eye(x0.size)], axis=1)
+    J = complex_jacobian(field, x0)
     eig, right = np.linalg.eig(J)
     pick = int(np.argmax(eig.imag))
     w = float(eig[pick].imag)
@@ -65,12 +57,12 @@ def _coefficient(field, x0, h) -> tuple[float, float]:
     p = p / np.conj(np.conj(p) @ q)  # conj(p) . q = 1
 
     def B(u, v):  # d/de [J(x0 + e v) u], central
-        return (_jacobian_times(field, x0 + h * v, u) - _jacobian_times(field, x0 - h * v, u)) / (2 * h)
+        return (directional(field, x0 + h * v, u) - directional(field, x0 - h * v, u)) / (2 * h)
 
     def C(u, v, s):  # d2/de dd [J(x0 + e v + d s) u], central
-        return (_jacobian_times(field, x0 + h * (v + s), u) - _jacobian_times(field, x0 + h * (v - s), u)
-                - _jacobian_times(field, x0 - h * (v - s), u)
-                + _jacobian_times(field, x0 - h * (v + s), u)) / (4 * h * h)
+        return (directional(field, x0 + h * (v + s), u) - directional(field, x0 + h * (v - s), u)
+                - directional(field, x0 - h * (v - s), u)
+                + directional(field, x0 - h * (v + s), u)) / (4 * h * h)
 
     qc = np.conj(q)
     b_qqc = _bilinear(B, q, qc)

@@ -32,7 +32,7 @@ from ..quantities import RSF as Q
 from ..results import Result
 from .law import RateState
 
-__all__ = ["SpringSlider", "SliderRun", "slide", "load_history", "MAX_CALLS"]
+__all__ = ["SpringSlider", "SliderRun", "slide", "load_history", "MAX_CALLS", "directional", "complex_jacobian"]
 
 #: The most evaluations of the equations per piece of a history (about 25 s; some 250 stick-slip cycles).
 MAX_CALLS = 1_000_000
@@ -196,12 +196,21 @@ def slide(slider: SpringSlider, load_velocity, t_end: float, *, times=None, v_in
     return result
 
 
+#: The complex step of `directional` and `complex_jacobian`.
+COMPLEX_STEP = 1e-30
+
+
+def directional(func, y: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """``J(y) u`` of a function that takes complex arguments, for a real ``u``, by one complex step
+    (exact to round-off: no difference is taken)."""
+    return np.imag(func(y + 1j * COMPLEX_STEP * u)) / COMPLEX_STEP
+
+
+def complex_jacobian(func, y: np.ndarray) -> np.ndarray:
+    """``d func / d y`` by complex steps, one column per entry of ``y``."""
+    return np.stack([directional(func, y, e) for e in np.eye(y.size)], axis=1)
+
+
 def jacobian(slider: SpringSlider, y: np.ndarray, v_load: float) -> np.ndarray:
     """``d y' / d y`` by complex steps (exact to round-off: no difference is taken)."""
-    h = 1e-30
-    cols = []
-    for j in range(y.size):
-        z = y.astype(complex)
-        z[j] += 1j * h
-        cols.append(np.imag(slider.rhs(z, v_load)) / h)
-    return np.stack(cols, axis=1)
+    return complex_jacobian(lambda z: slider.rhs(z, v_load), y)

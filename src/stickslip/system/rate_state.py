@@ -31,15 +31,13 @@ from ..errors import NoSolutionError, ParameterError
 from ..quantities import SYSTEM as Q
 from ..results import Result
 from ..rsf import RateState
-from ..rsf.slider import MAX_CALLS
+from ..rsf.slider import MAX_CALLS, complex_jacobian
 from .model import System
 from .simulate import MAX_NUMBERS
 from .steady import SteadySliding
 
 __all__ = ["RateStateRun", "RateStateSteady", "rate_state_simulate", "rate_state_steady", "is_rate_state"]
 
-#: The complex step of the linearisation.
-_STEP = 1e-30
 #: A slip rate taken for zero (m/s): the regularised law's friction is 0 to round-off there.
 _TINY = 1e-300
 #: The longest run, in the slowest time scale ``D_c / V`` of the contacts' states (refused up front,
@@ -100,12 +98,7 @@ class _Equations:
 
     def jacobian(self, t, y):
         """``d y' / d y`` by complex steps (exact to round-off: the laws take complex arguments)."""
-        out = np.empty((self.size, self.size))
-        for j in range(self.size):
-            step = y.astype(complex)
-            step[j] += 1j * _STEP
-            out[:, j] = self(t, step).imag / _STEP
-        return out
+        return complex_jacobian(lambda z: self(t, z), y)
 
     def __call__(self, t, y):
         sysm, n = self.system, self.n
