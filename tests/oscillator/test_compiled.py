@@ -117,3 +117,20 @@ def test_a_user_law_reading_a_global_that_changed_is_compiled_again():
 
 
 _SHIFT = 0.0
+
+
+def test_a_sharp_law_switches_where_an_independent_fine_step_solver_does():
+    """A Stribeck speed of 1e-4 m/s: the friction rises from f_d to f_s within a thousandth of a
+    second before the block reaches the belt's speed. The step that holds the crossing was once
+    accepted on its whole length and the crossing found inside it 2.7e-4 s early; the events are
+    checked against Radau with steps of at most 1e-3 s (scipy, the equations written here)."""
+    from scipy.integrate import solve_ivp
+
+    osc = Oscillator(1.0, 1.0, 1.0, 0.2, Stribeck(0.6, 0.4, 1e-4))
+    reach = lambda t, y: y[1] - 0.2  # noqa: E731
+    reach.terminal, reach.direction = True, 1
+    ref = solve_ivp(lambda t, y: [y[1], -y[0] + 0.4 + 0.2 * math.exp(-abs(0.2 - y[1]) / 1e-4)], (0, 3), [0.0, 0.0],
+                    method="Radau", rtol=1e-13, atol=1e-16, events=reach, max_step=1e-3)
+    for t_end in (3.0, 50.0):
+        first = simulate(osc, t_end, x0=0.0, v0=0.0).events[0][0]
+        assert first == pytest.approx(ref.t_events[0][0], abs=1e-8)

@@ -187,7 +187,7 @@ def segment(mu, dmu, lp, p, y0, t_max, levels, directions, rtol, atol, tol, h, c
         cut = -1.0
         if f[1] * f_new[1] < 0:
             cut = _root(mu, dmu, lp, p, y, f, 0.0, h, 0.0, 1, t, K, tmp, w, dw)
-        a, va = 0.0, y[1]
+        a, va, again = 0.0, y[1], False
         for piece in range(2):
             b = cut if (piece == 0 and cut > 0) else h
             if b == h:
@@ -204,12 +204,22 @@ def segment(mu, dmu, lp, p, y0, t_max, levels, directions, rtol, atol, tol, h, c
                         best, index = s, i
             if index >= 0:
                 _at(mu, dmu, lp, p, y, f, best, K, tmp, w, dw)
+                short = _error(K, best, y, w, rtol, atol) if best > 0 else 0.0
+                if short > 1.0 and best > 10 * _EPS * abs(t):
+                    # the step to the crossing is not resolved (a law that changes within the step: its
+                    # error was judged on the whole step): steps up to it, shorter, under the error control
+                    steps -= 1
+                    h = best * max(_MIN_FACTOR, _SAFETY * short ** _EXPONENT)
+                    rejected, again = True, True
+                    break
                 v_low, v_high = min(v_low, w[1]), max(v_high, w[1])
                 return CROSSED, index, t + best, w.copy(), steps, starts, states, slopes, v_low, v_high, 0.0, h
             v_low, v_high = min(v_low, vb), max(v_high, vb)
             if b == h:
                 break
             a, va = b, vb
+        if again:
+            continue
         y[:] = y_new
         f[:] = f_new
         t += h
