@@ -16,11 +16,15 @@ from .common import Replace, declared, emit, output_path, overwrite_needs, write
 _emit = functools.partial(emit, model="system")
 
 app = typer.Typer(no_args_is_help=True, rich_markup_mode=None,
-                  help="Structures M x'' + C x' + K x = f + sum of contact forces, with several frictional contacts "
-                       "(a TOML file: docs/systems.md).")
+                  help="Structures M x'' + C x' + K x = f(t) + sum of contact forces, with several frictional "
+                       "contacts and harmonic forces (a TOML file: docs/systems.md).")
 
-File = Annotated[Path, typer.Argument(help="The system: a TOML file of mass, stiffness, [damping, force] and one "
-                                           "[[contact]] table per contact (docs/systems.md).", show_default=False)]
+File = Annotated[Path, typer.Argument(help="The system: a TOML file of mass, stiffness, [damping, force], one "
+                                           "[[contact]] table per contact and one [[harmonic]] per harmonic force "
+                                           "(docs/systems.md).", show_default=False)]
+Periods = Annotated[int, declared(Q["periods"], "--periods", "With a periodic force: the forcing periods over "
+                                                             "which the response repeats (more than 1: a "
+                                                             "subharmonic).")]
 Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
 Out = Annotated[Optional[Path], typer.Option("--out", help="Write the data to this netCDF file (.nc).")]
 X0 = Annotated[Optional[str], typer.Option("--x0", help=f"Initial displacement: one number per degree of freedom, "
@@ -121,17 +125,26 @@ def cycle(file: File, x0: X0 = None, v0: V0 = None,
           transient: Annotated[float, declared(Q["transient"], "--transient")] = 100.0,
           tol: Annotated[float, declared(COMMON["tol"], "--tol")] = 1e-10,
           max_iter: Annotated[int, declared(Q["max_iter"], "--max-iter")] = 200,
+          periods: Periods = 1,
           json: Json = False, out: Out = None, overwrite: Replace = False):
-    """Limit cycle the motion settles on: period, events, Floquet multipliers (with saltation matrices)."""
+    """Limit cycle the motion settles on: period, events, Floquet multipliers (with saltation matrices).
+    With harmonic forces: the periodic response (at phase zero of the force), its amplitude and multipliers."""
     out = _out(out, overwrite)
-    from ..system import limit_cycle
+    from ..system import forced_response, limit_cycle
 
     system = _load(file)
     n = system.dofs
     with _file_keys():
-        result = limit_cycle(system, _numbers("--x0", x0, n), _numbers("--v0", v0, n), transient=transient,
-                             tol=tol, max_iter=max_iter)
-    _emit(result.to_dict(), json, "limit cycle")
+        if system.harmonics:
+            result = forced_response(system, _numbers("--x0", x0, n), _numbers("--v0", v0, n), periods=periods,
+                                     transient=transient, tol=tol, max_iter=max_iter)
+        else:
+            if periods != 1:
+                raise ParameterError("--periods", periods, "1 (left out): it counts forcing periods, and this system "
+                                     "has no [[harmonic]] force")
+            result = limit_cycle(system, _numbers("--x0", x0, n), _numbers("--v0", v0, n), transient=transient,
+                                 tol=tol, max_iter=max_iter)
+    _emit(result.to_dict(), json, "periodic response" if system.harmonics else "limit cycle")
     if out is not None:
         write_netcdf(result.to_xarray(), out)
 
@@ -156,15 +169,18 @@ def continue_cmd(file: File,
                  parameter: Annotated[str, typer.Option(help="The number of the file to vary, as the file names it: "
                                                              "contact[0].surface_speed (normal_force, fs, fd, tau, "
                                                              "normal_stiffness), stiffness[0][1] (mass, damping), "
-                                                             "force[1].", show_default=False)],
+                                                             "force[1], harmonic[0].frequency, harmonic[0].cos[1] "
+                                                             "(sin).", show_default=False)],
                  stop: Annotated[float, declared(Q["parameter_value"], "--stop", "The value the branch heads for.")],
                  points: Annotated[int, declared(Q["points"], "--points")] = 41,
                  x0: X0 = None, v0: V0 = None,
                  transient: Annotated[float, declared(Q["transient"], "--transient")] = 100.0,
                  tol: Annotated[float, declared(COMMON["tol"], "--tol")] = 1e-10,
+                 periods: Periods = 1,
                  json: Json = False, out: Out = None, overwrite: Replace = False):
     """The limit cycle followed along one number of the file, with the values where its events change
-    (a stick phase born or gone: grazing), where it is lost, and where its stability changes."""
+    (a stick phase born or gone: grazing), where it is lost, and where its stability changes. With
+    harmonic forces: the periodic response (harmonic[0].frequency: a frequency response curve)."""
     out = _out(out, overwrite)
     from ..system import continue_system, file_parameter
     from ..system.config import read_table
@@ -173,7 +189,8 @@ def continue_cmd(file: File,
     n = build(start).dofs
     with _file_keys():
         branch = continue_system(build, start, stop, points=points, x0=_numbers("--x0", x0, n),
-                                 v0=_numbers("--v0", v0, n), transient=transient, tol=tol, parameter=parameter)
+                                 v0=_numbers("--v0", v0, n), transient=transient, tol=tol, parameter=parameter,
+                                 periods=periods)
     _emit(branch.to_dict(), json, "continuation")
     if out is not None:
         write_netcdf(branch.to_xarray(), out)

@@ -21,6 +21,10 @@ SYSTEM = Domain("system", units="SI (or any consistent units)", quantities=[
     Q("stiffness_matrix", "N/m", "entry of the stiffness matrix K", "[-1e15, 1e15]", symbol="K"),
     Q("damping_matrix", "N s/m", "entry of the damping matrix C", "[-1e15, 1e15]", symbol="C"),
     Q("force", "N", "entry of the constant external force f", "[-1e15, 1e15]", symbol="f"),
+    Q("forcing_frequency", "rad/s", "angular frequency W of a harmonic part of the external force", "(0, 1e15]",
+      symbol="W", why="from a tide to ultrasound and beyond; the event search steps a quarter of 1/W at most"),
+    Q("harmonic_force", "N", "entry of the amplitude of a harmonic part of the external force (cos or sin)",
+      "[-1e15, 1e15]"),
     Q("direction", "1", "entry of a contact's direction w (its slip velocity is V - w . x')", "[-1e6, 1e6]",
       symbol="w", why="a lever arm of up to a million: beyond it the contact's force dwarfs every other"),
     Q("surface_speed", "m/s", "speed of the surface a contact rubs on", "[-1e4, 1e4]", symbol="V",
@@ -38,6 +42,8 @@ SYSTEM = Domain("system", units="SI (or any consistent units)", quantities=[
       why="from near round-off to a quick look"),
     Q("max_events", "1", "most contact events of a simulation", "[1, 1e9]", integer=True),
     Q("transient", "s", "time simulated before a cycle is looked for", "(0, 1e300]"),
+    Q("periods", "1", "forcing periods over which a periodic response repeats (1: at the forcing period; more: a "
+      "subharmonic)", "[1, 1000]", integer=True),
     Q("max_iter", "1", "most returns to the section while a cycle is looked for", "[1, 1e6]", integer=True),
     Q("states", "1", "contact states to start in: 1 slip, 0 stick, -1 reverse slip, one per contact"),
     Q("parameter_value", "1", "a value of the continued parameter, in the units of the number it sets",
@@ -61,10 +67,14 @@ SYSTEM = Domain("system", units="SI (or any consistent units)", quantities=[
     Q("event_time", "s", "time of a contact event"),
     Q("event_contact", "1", "contact whose state changed at the event"),
     Q("event_state", "1", "its state after the event (1 slip, 0 stick, -1 reverse slip, 2 open)"),
-    Q("period", "s", "period of the limit cycle"),
+    Q("period", "s", "period of the limit cycle (of a periodic response: the periods times the forcing period)"),
+    Q("amplitude", "m", "half the peak-to-peak displacement of each degree of freedom over a period"),
+    Q("x_min", "m", "least displacement of a degree of freedom over a period"),
+    Q("x_max", "m", "largest displacement of a degree of freedom over a period"),
+    Q("forced", "1", "1 for a branch of periodic responses to a periodic force (every multiplier kept)"),
     Q("multipliers_abs", "1", "moduli of the Floquet multipliers of the cycle"),
-    Q("stable", "1", "1 if stable: a cycle's multipliers but the flow's own inside the unit circle, steady "
-      "sliding's eigenvalues in the left half-plane"),
+    Q("stable", "1", "1 if stable: a cycle's multipliers but the flow's own inside the unit circle (a periodic "
+      "response's: all of them), steady sliding's eigenvalues in the left half-plane"),
     Q("marginal", "1", "1 if steady sliding's largest real part is zero to round-off: linear stability does not "
       "decide (an undamped structure under Coulomb contacts)"),
     Q("events", "1", "contact events (of a run, or of one period of a cycle)"),
@@ -88,7 +98,8 @@ SYSTEM = Domain("system", units="SI (or any consistent units)", quantities=[
     Q("values", "1", "values of the continued parameter, in the units of the number it sets"),
     Q("value", "1", "value of the continued parameter"),
     Q("point", "1", "number of a point of the branch"),
-    Q("multiplier_abs", "1", "modulus of a Floquet multiplier of the cycle (the flow's own 1 removed)"),
+    Q("multiplier_abs", "1", "modulus of a Floquet multiplier of the cycle (the flow's own 1 removed; a periodic "
+      "response has none)"),
     Q("sequence", "", "the cycle's contact events over a period, in order: contact:state entered"),
     Q("event", "1", "number of an event along the branch"),
     Q("event_value", "1", "value of the parameter where the branch changes"),

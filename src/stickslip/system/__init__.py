@@ -15,15 +15,17 @@ from .chains import burridge_knopoff
 from .config import load_system, system_from_dict
 from .continuation import SystemBranch, continue_system, file_parameter
 from .floquet import SystemCycle, limit_cycle, monodromy, saltation, without_own
+from .forced import ForcedResponse, forced_response
 from .flow import Flow
-from .model import Contact, System
+from .model import Contact, Harmonic, System
 from .rate_state import RateStateRun, RateStateSteady, is_rate_state, rate_state_simulate, rate_state_steady
 from .simulate import Segment, SystemRun, choose_states, simulate
 from .steady import SteadySliding, steady_sliding
 from .symmetry import RelativeCycle, cell_symmetry, relative_cycle
 
-__all__ = ["Contact", "System", "Flow", "SystemRun", "Segment", "simulate", "choose_states", "monodromy",
+__all__ = ["Contact", "System", "Harmonic", "Flow", "SystemRun", "Segment", "simulate", "choose_states", "monodromy",
            "saltation", "SystemCycle", "limit_cycle", "load_system", "system_from_dict",
            "SteadySliding", "steady_sliding", "burridge_knopoff", "RelativeCycle", "cell_symmetry",
            "relative_cycle", "without_own", "SystemBranch", "continue_system", "file_parameter", "RateStateRun",
-           "RateStateSteady", "is_rate_state", "rate_state_simulate", "rate_state_steady"]
+           "RateStateSteady", "is_rate_state", "rate_state_simulate", "rate_state_steady", "ForcedResponse",
+           "forced_response"]

@@ -15,6 +15,10 @@ fs = 0.6
 fd = 0.4
 # normal_direction = [0.0, 1.0]          # optional: a unilateral contact, N = normal_force - k_n n . x,
 # normal_stiffness = 0.5                 # N/m; it opens where N would pull (Coulomb only)
+
+[[harmonic]]                             # optional, any number: a force cos cos(W t) + sin sin(W t)
+frequency = 1.1                          # rad/s
+cos = [0.5, 0.0]                         # N, one per degree of freedom (cos, sin or both)
 ```
 
 A rate-and-state contact (every contact then: `stickslip.system.rate_state`) gives, instead of
@@ -42,11 +46,12 @@ from pathlib import Path
 from ..errors import MISSING, ParameterError
 from ..friction import make_law
 from ..rsf import RateState
-from .model import Contact, System
+from .model import Contact, Harmonic, System
 
 __all__ = ["load_system", "read_table", "system_from_dict", "as_file_keys"]
 
-_TOP = ("mass", "stiffness", "damping", "force", "contact")
+_TOP = ("mass", "stiffness", "damping", "force", "contact", "harmonic")
+_HARMONIC = ("frequency", "cos", "sin")
 _CONTACT = ("direction", "normal_force", "surface_speed", "law", "fs", "fd", "tau", "name", "normal_direction",
             "normal_stiffness")
 #: The keys of a rate-and-state law (`stickslip.rsf.RateState`'s fields), with ``law = "rate-state"``.
@@ -90,6 +95,21 @@ def _contact(i: int, table) -> Contact:
         raise _renamed(err, where) from None
 
 
+def _harmonic(i: int, table) -> Harmonic:
+    where = f"harmonic[{i}]."
+    if not isinstance(table, dict):
+        raise ParameterError(f"harmonic[{i}]", table, "a table of frequency, cos, sin")
+    unknown = sorted(set(table) - set(_HARMONIC))
+    if unknown:
+        raise ParameterError(where + unknown[0], table[unknown[0]], "a key of a harmonic: " + ", ".join(_HARMONIC))
+    if "frequency" not in table:
+        raise ParameterError(where + "frequency", MISSING, "given")
+    try:
+        return Harmonic(table["frequency"], table.get("cos"), table.get("sin"))
+    except ParameterError as err:
+        raise _renamed(err, where) from None
+
+
 def system_from_dict(data: dict) -> System:
     """The `System` a parsed TOML file describes (see the module's docstring)."""
     if not isinstance(data, dict):
@@ -104,19 +124,25 @@ def system_from_dict(data: dict) -> System:
     if not isinstance(data["contact"], list) or not data["contact"]:
         raise ParameterError("contact", data["contact"], "one [[contact]] table per contact, at least one")
     contacts = [_contact(i, t) for i, t in enumerate(data["contact"])]
+    tables = data.get("harmonic", [])
+    if not isinstance(tables, list):
+        raise ParameterError("harmonic", tables, "one [[harmonic]] table per harmonic force")
+    harmonics = [_harmonic(i, t) for i, t in enumerate(tables)]
     try:
         return System(data["mass"], data["stiffness"], contacts, damping=data.get("damping"),
-                      force=data.get("force"))
+                      force=data.get("force"), harmonics=harmonics)
     except ParameterError as err:
         raise as_file_keys(err) from None
 
 
 def as_file_keys(err: ParameterError) -> ParameterError:
     """``err`` naming a contact as the file does (``contact[1].surface_speed``, not the Python
-    ``contacts[1].surface_speed``): for the errors of a system read from a file."""
-    if not err.name.startswith("contacts["):
-        return err
-    return ParameterError(err.name.replace("contacts[", "contact[", 1), err.value, err.allowed, also=err.also)
+    ``contacts[1].surface_speed``; ``harmonic[0].cos``, not ``harmonics[0].cos``): for the errors
+    of a system read from a file."""
+    for python, file in (("contacts[", "contact["), ("harmonics", "harmonic")):
+        if err.name.startswith(python):
+            return ParameterError(err.name.replace(python, file, 1), err.value, err.allowed, also=err.also)
+    return err
 
 
 def load_system(path) -> System:

@@ -11,8 +11,15 @@ a grazing fold, where it meets a switching line tangentially); the branch ends t
 of stability (the largest multiplier but the flow's own crossing the unit circle) is located by
 bisection too, with how it crosses: at +1, at -1 (a period doubling), or as a complex pair.
 
+A system with a periodic force (`Harmonic`) has no limit cycle but a periodic response
+(`forced_response`): the same branch follows it, found at each value by Newton's method on the
+stroboscopic map over ``periods`` forcing periods, its multipliers all of them (no flow's own):
+with the frequency of a harmonic as the parameter, a frequency response curve, with the
+amplitude of each degree of freedom along it.
+
 `file_parameter(data, key)` makes ``build`` from a system's TOML table and one of its numbers
-named as the file writes it (``contact[0].surface_speed``, ``stiffness[0][1]``, ``force[1]``).
+named as the file writes it (``contact[0].surface_speed``, ``stiffness[0][1]``, ``force[1]``,
+``harmonic[0].frequency``, ``harmonic[0].cos[1]``).
 """
 
 from __future__ import annotations
@@ -31,25 +38,33 @@ from ..quantities import OSCILLATOR, SYSTEM as Q
 from ..results import Result
 from .config import as_file_keys, system_from_dict
 from .floquet import limit_cycle, monodromy, return_fixed_point, without_own
+from .forced import extent, forced_response, forcing_period, stroboscopic_fixed_point
 from .model import System
 
 __all__ = ["SystemBranch", "continue_system", "file_parameter", "parameter_units"]
 
 #: Bisection steps locating an event along the branch (2^-40 of the step between two values).
 BISECTIONS = 40
+#: The section of a forced system's branch: ``(FORCED, periods)`` in place of a cycle's (contact, state).
+FORCED = "forcing periods"
+#: Uniform samples of each orbit of a branch from which its amplitude is taken.
+AMPLITUDE_SAMPLES = 401
 
 
 def file_parameter(data: dict, key: str) -> tuple[Callable[[float], System], float]:
     """``(build, value)``: the system of the TOML table ``data`` with its number ``key`` set to a
     value, and that number's value in ``data``. A `ParameterError` naming ``parameter`` if the
     key names no number of the table."""
-    match = re.fullmatch(r"(contact)\[(\d+)\]\.(\w+)|(mass|stiffness|damping)\[(\d+)\]\[(\d+)\]|(force)\[(\d+)\]",
+    match = re.fullmatch(r"(contact)\[(\d+)\]\.(\w+)|(mass|stiffness|damping)\[(\d+)\]\[(\d+)\]|(force)\[(\d+)\]"
+                         r"|(harmonic)\[(\d+)\]\.(frequency|cos|sin)(?:\[(\d+)\])?",
                          key) if isinstance(key, str) else None
-    if match is None:
+    if match is None or (match[9] and (match[11] == "frequency") != (match[12] is None)):
         raise ParameterError("parameter", key, "a number of the file: contact[i].surface_speed (or normal_force, fs, "
-                             "fd, tau, normal_stiffness), stiffness[i][j] (mass, damping), force[i]")
+                             "fd, tau, normal_stiffness), stiffness[i][j] (mass, damping), force[i], "
+                             "harmonic[i].frequency, harmonic[i].cos[j] (sin)")
     path = ([match[1], int(match[2]), match[3]] if match[1] else
-            [match[4], int(match[5]), int(match[6])] if match[4] else [match[7], int(match[8])])
+            [match[4], int(match[5]), int(match[6])] if match[4] else [match[7], int(match[8])] if match[7] else
+            [match[9], int(match[10]), match[11]] + ([] if match[12] is None else [int(match[12])]))
     try:
         value = _holder(data, path)[path[-1]]
     except (KeyError, IndexError, TypeError):
@@ -77,11 +92,13 @@ def _holder(table, path: list):
 def parameter_units(key: str) -> str:
     """The units of the number a file key names (``contact[0].surface_speed``: ``m/s``), from the
     declarations; ``1`` for a name that is not a file key."""
-    match = re.fullmatch(r"contact\[\d+\]\.(\w+)|(mass|stiffness|damping|force)\[.*", str(key))
+    match = re.fullmatch(r"contact\[\d+\]\.(\w+)|(mass|stiffness|damping|force)\[.*|harmonic\[\d+\]\.(\w+).*",
+                         str(key))
     if match is None:
         return "1"
-    name = match[1] or {"mass": "mass_matrix", "stiffness": "stiffness_matrix", "damping": "damping_matrix",
-                        "force": "force"}[match[2]]
+    name = match[1] or ({"frequency": "forcing_frequency"}.get(match[3], "harmonic_force") if match[3] else
+                        {"mass": "mass_matrix", "stiffness": "stiffness_matrix", "damping": "damping_matrix",
+                         "force": "force"}[match[2]])
     domain = OSCILLATOR if name in ("fs", "fd", "tau") else Q
     return domain[name].units if name in domain else "1"
 
@@ -93,7 +110,10 @@ class SystemBranch(Result):
     ``multipliers`` (the flow's own 1 removed; NaN-padded), ``stable`` and the sequence of
     contact events of each (``"0:stick 1:slip ..."``); ``events``, the changes located along
     the branch (dicts with ``change``, ``value``, ``before``, ``after``; a stability change also says
-    its multiplier's ``crossing``), and why it ``stopped``."""
+    its multiplier's ``crossing``), and why it ``stopped``; ``amplitude``, half the peak-to-peak
+    displacement of each degree of freedom over each orbit (from `AMPLITUDE_SAMPLES` samples and its
+    events). A forced system's branch (``forced``) starts its orbits at phase zero of the force and
+    keeps every multiplier."""
 
     parameter: str
     values: np.ndarray
@@ -106,17 +126,21 @@ class SystemBranch(Result):
     sequence: tuple
     events: tuple
     stopped: str
+    amplitude: np.ndarray
+    forced: bool = False
     MODEL = "system"
 
     def to_dict(self) -> dict:
         return {"parameter": self.parameter, "values": self.values.tolist(), "period": self.period.tolist(),
                 "stable": [bool(s) for s in self.stable], "events": [dict(e) for e in self.events],
-                "stopped": self.stopped, "points": int(self.values.size)}
+                "stopped": self.stopped, "points": int(self.values.size), "forced": self.forced,
+                "amplitude": self.amplitude.tolist()}
 
     def to_xarray(self) -> xr.Dataset:
         ds = xr.Dataset(
             {"period": ("point", self.period), "stable": ("point", self.stable.astype(np.int8)),
              "x0": (("point", "dof"), self.x0), "v0": (("point", "dof"), self.v0),
+             "amplitude": (("point", "dof"), self.amplitude),
              "multiplier_abs": (("point", "multiplier"), self.multipliers),
              "sequence": ("point", np.array(self.sequence, dtype=str)),
              "event_value": ("event", np.array([e["value"] for e in self.events], dtype=float),
@@ -127,7 +151,7 @@ class SystemBranch(Result):
                     "point": np.arange(self.values.size),
                     "dof": np.arange(self.x0.shape[1]),
                     "multiplier": np.arange(self.multipliers.shape[1]), "event": np.arange(len(self.events))},
-            attrs={"parameter": self.parameter, "stopped": self.stopped})
+            attrs={"parameter": self.parameter, "stopped": self.stopped, "forced": int(self.forced)})
         return finish(ds, "system with frictional contacts: limit cycles along a parameter", "system")
 
 
@@ -143,20 +167,31 @@ def _sequence(segments: tuple) -> str:
 
 def _solve(build, p, start, horizon, tol):
     """The cycle of ``build(p)`` from ``start`` = (z, states, signature): ``(period, z, states,
-    sequence, multipliers)``; NoSolutionError or ParameterError if none near."""
+    sequence, multipliers)``; NoSolutionError or ParameterError if none near. A signature
+    ``(FORCED, periods)``: the periodic response over that many forcing periods (``horizon`` unused)."""
     system = build(p)
     z, states, signature = start
-    period, z, states, segments = return_fixed_point(system, z, states, signature, horizon, tol, 50, newton_after=0)
-    mult = without_own(np.linalg.eigvals(monodromy(system, segments)))
+    if signature[0] == FORCED:
+        period = signature[1] * forcing_period(system)
+        n = system.dofs
+        y, states, run = stroboscopic_fixed_point(system, z[:2 * n], states, period, tol, 50, newton_after=0)
+        z, segments = np.concatenate([y, [1.0]]), run.segments
+        mult = np.linalg.eigvals(monodromy(system, run))
+    else:
+        period, z, states, segments = return_fixed_point(system, z, states, signature, horizon, tol, 50,
+                                                         newton_after=0)
+        mult = without_own(np.linalg.eigvals(monodromy(system, segments)))
     return period, z, states, _sequence(segments), mult[np.argsort(-np.abs(mult))]
 
 
 def continue_system(build: Callable[[float], System], start: float, stop: float, *, points: int = 41, x0=None,
-                    v0=None, transient: float = 100.0, tol: float = 1e-10, parameter: str = "parameter"
-                    ) -> SystemBranch:
+                    v0=None, transient: float = 100.0, tol: float = 1e-10, parameter: str = "parameter",
+                    periods: int = 1) -> SystemBranch:
     """Follow the limit cycle of ``build(start)`` (the one the motion from ``x0``, ``v0`` settles on
     after ``transient`` seconds, as `limit_cycle` finds it) over ``points`` equally spaced values
-    to ``stop`` (see the module). ``parameter`` names the parameter in messages and results."""
+    to ``stop`` (see the module). ``parameter`` names the parameter in messages and results. A
+    system with a periodic force: its periodic response over ``periods`` forcing periods
+    (`forced_response`)."""
     if not callable(build):
         raise ParameterError("build", build, "a function of the parameter's value returning a System")
     start, stop = Q.check("parameter_value", start, "start"), Q.check("parameter_value", stop, "stop")
@@ -168,9 +203,17 @@ def continue_system(build: Callable[[float], System], start: float, stop: float,
         build(stop)
     except ParameterError as err:
         raise ParameterError("stop", stop, f"a value {parameter} can take ({err.name}: {err.allowed})") from None
-    cycle = limit_cycle(first, x0, v0, transient=transient, tol=tol)
-    n = first.dofs
-    state = (np.concatenate([cycle.x0, cycle.v0, [1.0]]), cycle.states, (cycle.contact, cycle.state))
+    n, forced = first.dofs, bool(first.harmonics)
+    periods = Q.check("periods", periods)
+    if periods != 1 and not forced:
+        raise ParameterError("periods", periods, "1: it counts forcing periods, and this system has no harmonic force")
+    if forced:
+        cycle = forced_response(first, x0, v0, periods=periods, transient=transient, tol=tol, samples=2)
+        section = (FORCED, cycle.periods)
+    else:
+        cycle = limit_cycle(first, x0, v0, transient=transient, tol=tol)
+        section = (cycle.contact, cycle.state)
+    state = (np.concatenate([cycle.x0, cycle.v0, [1.0]]), cycle.states, section)
     here = _solve(build, start, state, 3.0 * cycle.period, tol)
     values = np.linspace(start, stop, points)
     rows, events, stopped = [(start, *here)], [], f"reached stop = {stop:g}"
@@ -203,15 +246,22 @@ def continue_system(build: Callable[[float], System], start: float, stop: float,
             events.append({"change": "stability", "value": value, "before": "stable" if was else "unstable",
                            "after": "unstable" if was else "stable", "crossing": _crossing(at)})
         rows.append((p, *now))
-    width = max(1, min(8, 2 * n - 1))
+    width = max(1, min(8, 2 * n - (0 if forced else 1)))
     mult = np.full((len(rows), width), np.nan)
     for i, r in enumerate(rows):
         mult[i, :min(width, r[5].size)] = np.abs(r[5][:width])
     stable = np.array([abs(r[5][0]) < 1.0 if r[5].size else True for r in rows])
+    amplitude = np.array([_amplitude(build(r[0]), r[2][:2 * n], r[3], r[1]) for r in rows])
     return SystemBranch(parameter, np.array([r[0] for r in rows]), np.array([r[1] for r in rows]),
                         np.array([r[2][:n] for r in rows]), np.array([r[2][n:2 * n] for r in rows]),
                         tuple(r[3] for r in rows), mult, stable,
-                        tuple(r[4] for r in rows), tuple(events), stopped)
+                        tuple(r[4] for r in rows), tuple(events), stopped, amplitude, forced)
+
+
+def _amplitude(system: System, y: np.ndarray, states: tuple, period: float) -> np.ndarray:
+    """Half the peak-to-peak displacement of each degree of freedom over one period from ``y``."""
+    low, high, _ = extent(system, y, states, period, AMPLITUDE_SAMPLES)
+    return 0.5 * (high - low)
 
 
 def _crossing(mu: complex) -> str:

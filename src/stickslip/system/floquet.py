@@ -32,9 +32,11 @@ __all__ = ["monodromy", "saltation", "jump", "SystemCycle", "limit_cycle", "retu
            "cycle_dataset", "period_events", "entries"]
 
 
-def saltation(f_minus: np.ndarray, f_plus: np.ndarray, normal: np.ndarray) -> np.ndarray:
-    """``I + (f+ - f-) n^T / (n . f-)``: the jump of the linearised flow at a transversal crossing."""
-    rate = float(normal @ f_minus)
+def saltation(f_minus: np.ndarray, f_plus: np.ndarray, normal: np.ndarray, rate: float | None = None) -> np.ndarray:
+    """``I + (f+ - f-) n^T / (n . f-)``: the jump of the linearised flow at a transversal crossing.
+    Where the switching function depends on time too (a forced system), ``rate`` is its whole
+    rate of change before the crossing, ``n . f- + dh/dt``."""
+    rate = float(normal @ f_minus) if rate is None else float(rate)
     if rate == 0.0:
         raise NoSolutionError("a grazing event (the switching function is tangent to the flow): the monodromy "
                               "is not defined there")
@@ -52,7 +54,7 @@ def jump(system: System, segment, z: np.ndarray, flows: dict, skip: int | None =
     flow = Flow.cached(system, segment.states, flows)
     states = list(segment.states)
     out = np.eye(2 * n)
-    f_minus = (flow.A @ z)[:2 * n]
+    f_minus = flow.A @ z  # the whole field: with harmonic forces the switching functions move in time too
     done = set()
     for r in segment.rows:
         owner = int(flow.owners[r])
@@ -60,10 +62,11 @@ def jump(system: System, segment, z: np.ndarray, flows: dict, skip: int | None =
             continue
         done.add(owner)
         states[owner] = segment.after[owner]
-        f_plus = (Flow.cached(system, tuple(states), flows).A @ z)[:2 * n]
-        out = saltation(f_minus, f_plus, flow.rows[r][:2 * n]) @ out
+        f_plus = Flow.cached(system, tuple(states), flows).A @ z
+        rate = flow.rows[r] @ f_minus
+        out = saltation(f_minus[:2 * n], f_plus[:2 * n], flow.rows[r][:2 * n], rate) @ out
         f_minus = f_plus
-    return out, f_minus
+    return out, f_minus[:2 * n]
 
 
 def monodromy(system: System, run: SystemRun | tuple) -> np.ndarray:
@@ -246,6 +249,8 @@ def limit_cycle(system: System, x0=None, v0=None, *, transient: float = 100.0, t
     solved by Newton's method with the monodromy as its derivative, until the state repeats to
     ``tol`` (relative); the multipliers are those of the monodromy over one period (with
     saltation matrices)."""
+    if isinstance(system, System):
+        system.unforced("a limit cycle")
     transient = Q.check("transient", transient)
     tol, max_iter = Q.check("tol", tol), Q.check("max_iter", max_iter)
     try:

@@ -7,7 +7,9 @@ with laws affine in the slip speed (``mu = mu0 - mu1 |v_r|``), the motion is lin
     C_eff = C - sum_slip N_j mu1_j w_j w_j^T,   W_S^T a = 0,
 
 so ``lam = -D^-1 W_S^T M^-1 r`` (``D = W_S^T M^-1 W_S``, minimum-norm where sticking contacts are
-redundant) and ``z = (x, v, 1)`` obeys ``z' = A z``: ``z(t) = expm(t A) z(0)``, exact to round-off.
+redundant) and ``z = (x, v, e, 1)`` obeys ``z' = A z``: ``z(t) = expm(t A) z(0)``, exact to round-off.
+The harmonic forces ``B e`` (`System.harmonics`) ride on ``e = (cos W t, sin W t, ...)``, whose
+motion ``e' = G e`` is a rotation: ``f`` above is ``f + B e``, affine in ``z`` as the rest.
 Every switching function is linear in ``z``: a slipping contact's ``s_j v_r``, a sticking one's
 ``f_s N -+ F``, a unilateral contact's ``N(x)`` (opening; ``-N(x)`` while open: closing; a normal
 force ``N(x) = N_0 - k_n n . x`` adds ``k_n n n^T`` to the stiffness and, slipping, the friction
@@ -51,14 +53,16 @@ class Flow:
     """The flow of the contact state ``states`` (a tuple of -1, 0, 1 per contact)."""
 
     def __init__(self, system: System, states: tuple[int, ...]):
-        n = system.dofs
+        n, size = system.dofs, system.size
         self.states = tuple(int(s) for s in states)
         W, Minv = system.directions, system.inverse_mass
         stuck = [i for i, s in enumerate(self.states) if s == 0]
         c_eff = system.damping.copy()
         k_eff = system.stiffness.copy()
         g = system.force.copy()
-        force_rows = np.zeros((len(self.states), 2 * n + 1))
+        B = system.forcing_matrix  # the harmonic forces B e: carried with g (columns 2n:-1 of z)
+        e = slice(2 * n, size - 1)
+        force_rows = np.zeros((len(self.states), size))
         normal = system.normal_rows.copy()
         kn = system.normal_directions  # k_n n per contact (columns)
         push = np.zeros(len(self.states))  # N(x) n on the structure: k_n n n^T, N_0 n
@@ -96,24 +100,27 @@ class Flow:
             force_rows[stuck, :n] = L @ k_eff
             force_rows[stuck, n:2 * n] = L @ c_eff
             force_rows[stuck, -1] = -L @ g
+            force_rows[stuck, e] = -L @ B
         else:
             P = Minv
             self._stick = None
-        A = np.zeros((2 * n + 1, 2 * n + 1))
+        A = np.zeros((size, size))
         A[:n, n:2 * n] = np.eye(n)
         A[n:2 * n, :n] = -P @ k_eff
         A[n:2 * n, n:2 * n] = -P @ c_eff
         A[n:2 * n, -1] = P @ g
+        A[n:2 * n, e] = P @ B
+        A[e, e] = system.rotation
         self.A, self.n = A, n
         self.force_rows = force_rows
-        slip = np.zeros((len(self.states), 2 * n + 1))  # v_r = V - w . v
+        slip = np.zeros((len(self.states), size))  # v_r = V - w . v
         slip[:, n:2 * n] = -W.T
         slip[:, -1] = [c.surface_speed for c in system.contacts]
         self.slip_rows = slip
         rows, owners, kinds = [], [], []  # switching functions: an event when one reaches zero from above
         for i, (c, s) in enumerate(zip(system.contacts, self.states)):
             if s == OPEN:
-                rows.append(-c.normal_row(n))  # N(x) < 0 while open: closes where it comes back to 0
+                rows.append(-c.normal_row(n, system.extra))  # N(x) < 0 while open: closes where it comes back to 0
                 owners.append(i)
                 kinds.append(CLOSING)
                 continue
@@ -141,7 +148,7 @@ class Flow:
         # (at least the spectral radius, and equal to it for a chain's Laplacian; no eigensolve)
         stiff = float(np.abs(A[n:2 * n, :n]).sum(axis=1).max()) if n else 0.0
         damp = float(np.abs(A[n:2 * n, n:2 * n]).sum(axis=1).max()) if n else 0.0
-        rho = math.sqrt(stiff) + damp
+        rho = max(math.sqrt(stiff) + damp, max((h.frequency for h in system.harmonics), default=0.0))
         self.h = STEPS_PER_SCALE ** -1 / rho if rho > 0 else math.inf
         self._step = None
         self._taken = 0  # steps of the event search on this flow (its step's exponential once many)

@@ -1,8 +1,8 @@
 """A linear structure with several frictional contacts.
 
-    M x'' + C x' + K x = f + sum_i w_i F_i,
+    M x'' + C x' + K x = f(t) + sum_i w_i F_i,   f(t) = f + sum_k (c_k cos W_k t + s_k sin W_k t),
 
-``x`` the ``n`` degrees of freedom. Contact ``i`` acts along its direction ``w_i`` (a vector
+``x`` the ``n`` degrees of freedom, ``f(t)`` a constant force and any number of `Harmonic` s. Contact ``i`` acts along its direction ``w_i`` (a vector
 of ``n`` numbers: a unit vector for a contact on one degree of freedom, a lever arm or a
 difference of two for others) against a surface moving at ``V_i``: its slip velocity is
 ``v_r = V_i - w_i . x'`` and its friction force follows the paper's convention (eq. [1]),
@@ -26,7 +26,10 @@ from ..friction import FrictionLaw
 from ..rsf import RateState
 from ..quantities import MAX_CONTACTS, MAX_SYSTEM_DOFS, SYSTEM as Q
 
-__all__ = ["Contact", "System"]
+__all__ = ["Contact", "System", "Harmonic", "MAX_HARMONICS"]
+
+#: The most harmonics of the external force (each adds two states to the flows).
+MAX_HARMONICS = 64
 
 
 def _vector(name: str, value, n: int | None, quantity: str) -> np.ndarray:
@@ -110,9 +113,10 @@ class Contact:
         """True with a normal direction: the normal force follows the structure and may vanish."""
         return self.normal_direction is not None
 
-    def normal_row(self, n: int) -> np.ndarray:
-        """``N(x)`` as a row on ``z = (x, v, 1)``: ``N_0 - k_n n . x`` (``N_0`` without a normal direction)."""
-        row = np.zeros(2 * n + 1)
+    def normal_row(self, n: int, extra: int = 0) -> np.ndarray:
+        """``N(x)`` as a row on ``z = (x, v, e, 1)`` (``e`` the ``extra`` states of the harmonic
+        forces): ``N_0 - k_n n . x`` (``N_0`` without a normal direction)."""
+        row = np.zeros(2 * n + extra + 1)
         row[-1] = self.normal_force
         if self.unilateral:
             row[:n] = -self.normal_stiffness * self.normal_direction
@@ -124,16 +128,38 @@ class Contact:
 
 
 @dataclass(frozen=True, eq=False)
+class Harmonic:
+    """A harmonic part of the external force: ``cos * cos(frequency t) + sin * sin(frequency t)``,
+    ``frequency`` in rad/s, ``cos`` and ``sin`` [N] one entry per degree of freedom (either may be
+    left out: zero). In the flows it is two more states, ``(cos W t, sin W t)``, whose motion is a
+    rotation: a forced system stays affine and its flows exact."""
+
+    frequency: float
+    cos: np.ndarray | None = None
+    sin: np.ndarray | None = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "frequency", Q.check("forcing_frequency", self.frequency, "frequency"))
+        if self.cos is None and self.sin is None:
+            raise ParameterError("cos", None, "an amplitude (cos, sin or both)", also=("sin",))
+        for name in ("cos", "sin"):
+            if getattr(self, name) is not None:
+                object.__setattr__(self, name, _vector(name, getattr(self, name), None, "harmonic_force"))
+
+
+@dataclass(frozen=True, eq=False)
 class System:
     """Matrices ``mass`` M (symmetric positive definite), ``stiffness`` K and ``damping`` C
-    (any n x n; default none), a constant ``force`` f (n numbers; default none) and the
-    ``contacts``. K and C need not be symmetric (follower forces, gyroscopic terms)."""
+    (any n x n; default none), a constant ``force`` f (n numbers; default none), the
+    ``contacts``, and ``harmonics``: `Harmonic` parts of the force (default none). K and C need
+    not be symmetric (follower forces, gyroscopic terms)."""
 
     mass: np.ndarray
     stiffness: np.ndarray
     contacts: tuple = ()
     damping: np.ndarray | None = None
     force: np.ndarray | None = None
+    harmonics: tuple = ()
     _chol: np.ndarray = field(init=False, repr=False)
     _cache: dict = field(init=False, repr=False, default_factory=dict)
 
@@ -171,10 +197,81 @@ class System:
                 if vec is not None and vec.shape != (n,):
                     raise ParameterError(f"contacts[{i}].{name}", vec.tolist(), f"{n} numbers (one per degree of freedom)")
         object.__setattr__(self, "contacts", contacts)
+        harmonics = tuple(self.harmonics) if isinstance(self.harmonics, (list, tuple)) else None
+        if harmonics is None or len(harmonics) > MAX_HARMONICS:
+            raise ParameterError("harmonics", self.harmonics, f"a list of at most {MAX_HARMONICS} Harmonic")
+        for i, h in enumerate(harmonics):
+            if not isinstance(h, Harmonic):
+                raise ParameterError(f"harmonics[{i}]", h, "a stickslip.system.Harmonic")
+            for name in ("cos", "sin"):
+                vec = getattr(h, name)
+                if vec is not None and vec.shape != (n,):
+                    raise ParameterError(f"harmonics[{i}].{name}", vec.tolist(),
+                                         f"{n} numbers (one per degree of freedom)")
+        object.__setattr__(self, "harmonics", harmonics)
 
     @property
     def dofs(self) -> int:
         return self.mass.shape[0]
+
+    @property
+    def extra(self) -> int:
+        """The states ``e = (cos W_1 t, sin W_1 t, ...)`` of the harmonic forces: two per `Harmonic`."""
+        return 2 * len(self.harmonics)
+
+    @property
+    def size(self) -> int:
+        """The length of the flows' state ``z = (x, v, e, 1)``."""
+        return 2 * self.dofs + self.extra + 1
+
+    @property
+    def forcing_matrix(self) -> np.ndarray:
+        """``B``, the harmonic forces ``B e`` (n x `extra`: each harmonic's cos and sin amplitudes)."""
+        def column(h, name):
+            vec = getattr(h, name)
+            return np.zeros(self.dofs) if vec is None else vec
+        cols = [column(h, name) for h in self.harmonics for name in ("cos", "sin")]
+        return np.stack(cols, axis=1) if cols else np.zeros((self.dofs, 0))
+
+    @property
+    def rotation(self) -> np.ndarray:
+        """``G``, the motion ``e' = G e`` of the harmonic states (a rotation at each frequency)."""
+        G = np.zeros((self.extra, self.extra))
+        for k, h in enumerate(self.harmonics):
+            G[2 * k, 2 * k + 1], G[2 * k + 1, 2 * k] = -h.frequency, h.frequency
+        return G
+
+    def phases(self, t: float) -> np.ndarray:
+        """``e(t) = (cos W_1 t, sin W_1 t, ...)``."""
+        return np.array([f(h.frequency * t) for h in self.harmonics for f in (np.cos, np.sin)])
+
+    def state(self, x: np.ndarray, v: np.ndarray, t: float = 0.0) -> np.ndarray:
+        """``z = (x, v, e(t), 1)``: the flows' state at time ``t``."""
+        return np.concatenate([x, v, self.phases(t), [1.0]])
+
+    def external_force(self, t: float) -> np.ndarray:
+        """``f(t)``, the external force at time ``t``."""
+        return self.force + self.forcing_matrix @ self.phases(t)
+
+    @property
+    def forcing_period(self) -> float | None:
+        """The period of ``f(t)``: ``2 pi / W`` with ``W`` the lowest frequency when every other is
+        a whole multiple of it (to 1e-12); ``None`` without harmonics or when they are not."""
+        if not self.harmonics:
+            return None
+        low = min(h.frequency for h in self.harmonics)
+        ratios = [h.frequency / low for h in self.harmonics]
+        if any(abs(r - round(r)) > 1e-12 * r for r in ratios):
+            return None
+        return 2.0 * np.pi / low
+
+    def unforced(self, what: str) -> None:
+        """A `ParameterError` naming ``harmonics`` when the system has harmonic forces: ``what``
+        (a steady state, a cycle found on an event section) needs a force constant in time."""
+        if self.harmonics:
+            raise ParameterError("harmonics", [h.frequency for h in self.harmonics],
+                                 f"none for {what} (a force constant in time); the periodic response to a periodic "
+                                 "force is stickslip.system.forced_response")
 
     @property
     def inverse_mass(self) -> np.ndarray:
@@ -201,8 +298,8 @@ class System:
 
     @property
     def normal_rows(self) -> np.ndarray:
-        """Each contact's normal force ``N(x)`` as a row on ``z = (x, v, 1)`` (`Contact.normal_row`; computed once)."""
-        return self._columns("N", lambda c: c.normal_row(self.dofs)).T
+        """Each contact's normal force ``N(x)`` as a row on ``z = (x, v, e, 1)`` (`Contact.normal_row`; computed once)."""
+        return self._columns("N", lambda c: c.normal_row(self.dofs, self.extra)).T
 
     def _columns(self, key: str, column) -> np.ndarray:
         """``column(contact)`` of every contact side by side, made once and read-only."""

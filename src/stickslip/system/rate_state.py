@@ -103,7 +103,7 @@ class _Equations:
     def __call__(self, t, y):
         sysm, n = self.system, self.n
         _, forces, rates = self.forces(y)
-        rest = sysm.force - sysm.stiffness @ y[:n] - sysm.damping @ y[n:2 * n] + sysm.directions @ forces
+        rest = sysm.external_force(t) - sysm.stiffness @ y[:n] - sysm.damping @ y[n:2 * n] + sysm.directions @ forces
         return np.concatenate([y[n:2 * n], sysm.inverse_mass @ rest, rates])
 
 
@@ -195,6 +195,7 @@ def rate_state_steady(system: System) -> RateStateSteady:
     """Steady sliding of ``system`` (every contact rate-and-state, every surface moving) and its
     linear stability."""
     eq = _Equations(system)
+    system.unforced("steady sliding")
     y = _steady_state(eq)
     jac = eq.jacobian(0.0, y)
     if not np.all(np.isfinite(jac)):

@@ -219,10 +219,10 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
         raise ParameterError("stop_at", stop_at, f"(contact, state): a contact from 0 to {len(system.contacts) - 1} "
                              "and a state -1, 0, 1 or 2")
     n, k = system.dofs, len(system.contacts)
-    z = np.concatenate([x0, v0, [1.0]])
+    z = system.state(x0, v0)
     vr = [c.slip_velocity(v0) for c in system.contacts]
     speed = max(1.0, *(abs(c.surface_speed) for c in system.contacts))
-    opened = {i for i, c in enumerate(system.contacts) if c.unilateral and c.normal_row(n) @ z <= 0.0}
+    opened = {i for i, c in enumerate(system.contacts) if c.unilateral and c.normal_row(n, system.extra) @ z <= 0.0}
     zero = {i for i in range(k) if abs(vr[i]) <= 1e-14 * speed} - opened
     if states is None:
         states = tuple(OPEN if i in opened else 0 if i in zero else (1 if vr[i] > 0 else -1) for i in range(k))
@@ -248,7 +248,7 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
             j1 += 1
         if j1 > j:
             zs = _sampled(flow, z, ts[j:j1] - t, ts[1] - ts[0])
-            out[j:j1], st_out[j:j1], f_out[j:j1] = zs[:, :-1], states, zs @ flow.force_rows.T
+            out[j:j1], st_out[j:j1], f_out[j:j1] = zs[:, :2 * n], states, zs @ flow.force_rows.T
             j = j1
         if not hit:
             break

@@ -78,6 +78,7 @@ def steady_sliding(system: System) -> SteadySliding:
     """Steady sliding of ``system`` (every contact's surface moving) and its linear stability."""
     if not isinstance(system, System):
         raise ParameterError("system", system, "a stickslip.system.System")
+    system.unforced("steady sliding")
     for i, c in enumerate(system.contacts):
         if not hasattr(c.friction, "kinetic"):
             raise ParameterError(f"contacts[{i}].friction", type(c.friction).__name__, "a law of the slip speed; "

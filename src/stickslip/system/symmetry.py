@@ -131,6 +131,7 @@ def relative_cycle(system: System, x0, v0, shift, *, contact: int, state: int, s
     ``horizon`` seconds of the start is the section; Newton's method on the map (a near guess
     is needed: an unstable wave repels the iterates) until it returns to ``tol`` (relative)."""
     image = cell_symmetry(system, shift)
+    system.unforced("a wave moving by one cell")
     n = system.dofs
     k = len(system.contacts)
     if isinstance(contact, bool) or not isinstance(contact, (int, np.integer)) or not 0 <= contact < k:

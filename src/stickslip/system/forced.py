@@ -1,0 +1,182 @@
+"""The periodic response of a system under a periodic force, and its Floquet multipliers.
+
+With harmonic forces (`Harmonic`) whose frequencies are whole multiples of the lowest ``W``, the
+force repeats every ``T = 2 pi / W`` and a steady motion repeats every ``p T`` (``p = 1``: the
+response at the forcing period; ``p > 1``: a subharmonic). It is a fixed point of the
+stroboscopic map ``P``: the state ``(x, v)`` at ``t = 0`` to the state at ``t = p T``, through
+every contact event in between. `forced_response` iterates ``P`` from the end of a transient,
+then solves ``P(y) = y`` by Newton's method with the monodromy (`monodromy`: saltation matrices
+at the events, whose switching functions move with the force) as ``P'``, keeping the slip
+velocity of contacts that stick at ``t = 0`` zero. The section is a fixed time, so no
+multiplier is the flow's own: the motion is stable when every multiplier lies inside the unit
+circle (a contact sticking at ``t = 0`` gives a multiplier 0).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import xarray as xr
+
+from ..cf import finish
+from ..errors import NoSolutionError, ParameterError
+from ..quantities import SYSTEM as Q
+from ..results import Result
+from .floquet import monodromy
+from .flow import STATE_FLAGS
+from .model import System
+from .simulate import SystemRun, simulate
+
+__all__ = ["ForcedResponse", "forced_response", "stroboscopic_fixed_point", "forcing_period", "extent"]
+
+
+def forcing_period(system: System) -> float:
+    """The period ``T`` of the system's force (`System.forcing_period`); a `ParameterError` naming
+    ``harmonics`` where the force is not periodic."""
+    if not isinstance(system, System):
+        raise ParameterError("system", system, "a stickslip.system.System")
+    if not system.harmonics:
+        raise ParameterError("harmonics", [], "at least one Harmonic (a periodic force); the cycle of a system "
+                             "under a constant force is stickslip.system.limit_cycle's")
+    period = system.forcing_period
+    if period is None:
+        raise ParameterError("harmonics", [h.frequency for h in system.harmonics],
+                             "frequencies that are whole multiples of the lowest (a periodic force)")
+    return period
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class ForcedResponse(Result):
+    """A periodic response: its ``period`` ``p T`` (``periods`` = p forcing periods), the state
+    ``x0``, ``v0`` at ``t = 0`` (phase zero of every harmonic force) and the contact ``states``
+    then, the ``multipliers`` (by decreasing size), the smallest and largest displacement of each
+    degree of freedom over a period (``x_min``, ``x_max``, from ``samples`` uniform samples and
+    the events), and the events of one period."""
+
+    period: float
+    periods: int
+    x0: np.ndarray
+    v0: np.ndarray
+    states: tuple
+    multipliers: np.ndarray
+    x_min: np.ndarray
+    x_max: np.ndarray
+    event_time: np.ndarray
+    event_contact: np.ndarray
+    event_state: np.ndarray
+    MODEL = "system"
+
+    @property
+    def stable(self) -> bool:
+        """Every multiplier inside the unit circle."""
+        return bool(np.all(np.abs(self.multipliers) < 1.0))
+
+    @property
+    def amplitude(self) -> np.ndarray:
+        """Half the peak-to-peak displacement of each degree of freedom."""
+        return 0.5 * (self.x_max - self.x_min)
+
+    def to_dict(self) -> dict:
+        return {"period": self.period, "periods": self.periods, "stable": self.stable,
+                "multipliers_abs": np.abs(self.multipliers).tolist(), "amplitude": self.amplitude.tolist(),
+                "events": int(self.event_time.size), "x0": self.x0.tolist(), "v0": self.v0.tolist()}
+
+    def to_xarray(self) -> xr.Dataset:
+        """Units and meanings from the declarations (`stickslip.cf.finish`)."""
+        m = self.multipliers
+        ds = xr.Dataset(
+            {"multiplier_real": ("multiplier", m.real), "multiplier_imag": ("multiplier", m.imag),
+             "x0": ("dof", self.x0), "v0": ("dof", self.v0), "x_min": ("dof", self.x_min),
+             "x_max": ("dof", self.x_max),
+             "event_time": ("event", self.event_time), "event_contact": ("event", self.event_contact),
+             "event_state": ("event", self.event_state.astype(np.int8), STATE_FLAGS)},
+            coords={"dof": np.arange(self.x0.size), "event": np.arange(self.event_time.size)},
+            attrs={"period": self.period, "periods": self.periods, "stable": int(self.stable)})
+        return finish(ds, "system with frictional contacts: periodic response to a periodic force", "system")
+
+
+def _run(system: System, z: np.ndarray, states: tuple, horizon: float, samples: int = 2) -> SystemRun:
+    n = system.dofs
+    return simulate(system, z[:n], z[n:2 * n], horizon, samples=samples, segments=True, states=states)
+
+
+def _newton_step(system: System, run: SystemRun, residual: np.ndarray) -> np.ndarray:
+    """``d`` with ``(P' - I) d = -r`` (least squares: ``P' - I`` is singular at a fold). A contact
+    sticking at the start and the end keeps its slip velocity zero by itself: ``P'`` maps onto the
+    stick (the saltation at the stick's onset removes the velocity along it) and ``r`` lies on it,
+    so ``d = P' d + r`` does too."""
+    n = system.dofs
+    return np.linalg.lstsq(monodromy(system, run) - np.eye(2 * n), -residual, rcond=None)[0]
+
+
+def stroboscopic_fixed_point(system: System, y: np.ndarray, states: tuple, horizon: float, tol: float,
+                             max_iter: int, newton_after: int = 2) -> tuple:
+    """``(y, states, run)``: the state ``y = (x, v)`` at ``t = 0`` (contact states ``states``) that the
+    motion over ``horizon`` (a whole number of forcing periods) brings back to itself within
+    ``tol`` (relative), and that run (with its segments). Iterated, then (once near, the contact
+    states at the end repeating) by Newton's method; a Newton step that changes the contact
+    states at the start or fails goes back to iterating."""
+    newton, fixed, residual = False, None, np.full(1, np.inf)
+    for it in range(max_iter):
+        try:
+            run = _run(system, y, states, horizon)
+        except (ParameterError, NoSolutionError):
+            if not newton or fixed is None:
+                raise
+            (y, states), newton = fixed, False
+            continue
+        y_end, end_states = np.concatenate([run.x[-1], run.v[-1]]), tuple(int(s) for s in run.states[-1])
+        residual = y_end - y
+        size = max(1.0, np.abs(y).max())
+        if np.abs(residual).max() <= tol * size and end_states == states:
+            return y, states, run
+        fixed = (y_end, end_states)
+        newton = it >= newton_after and end_states == states and np.abs(residual).max() < 1e-2 * size
+        if newton:
+            y = y + _newton_step(system, run, residual)
+        else:
+            y, states = y_end, end_states
+    raise NoSolutionError(f"the stroboscopic map over {horizon:.6g} s did not come back to its start within "
+                          f"tol = {tol:g} in {max_iter} iterations (the last return missed it by "
+                          f"{np.abs(residual).max():.3g}): no periodic response of this period near the motion "
+                          "(try more periods, a longer transient, or another start)")
+
+
+def forced_response(system: System, x0=None, v0=None, *, periods: int = 1, transient: float = 100.0,
+                    tol: float = 1e-10, max_iter: int = 200, samples: int = 2001) -> ForcedResponse:
+    """The periodic response of ``system`` under its periodic force that the motion from ``(x0,
+    v0)`` settles on after a ``transient`` of at least that many seconds (a whole number of
+    forcing periods), repeating every ``periods`` forcing periods (see the module). Its
+    multipliers are those of the monodromy over one period; ``x_min``, ``x_max`` from ``samples``
+    uniform samples of that period and the states at its events."""
+    T = forcing_period(system)
+    periods = Q.check("periods", periods)
+    transient = Q.check("transient", transient)
+    tol, max_iter, samples = Q.check("tol", tol), Q.check("max_iter", max_iter), Q.check("samples", samples)
+    whole = max(1, int(np.ceil(transient / T)))
+    try:
+        first = simulate(system, x0, v0, whole * T, samples=2)
+    except ParameterError as err:  # the run's bound on its length is the transient's
+        if err.name != "t_end":
+            raise
+        raise ParameterError("transient", transient, err.allowed, also=err.also) from None
+    y = np.concatenate([first.x[-1], first.v[-1]])
+    states = tuple(int(s) for s in first.states[-1])
+    y, states, run = stroboscopic_fixed_point(system, y, states, periods * T, tol, max_iter)
+    mult = np.linalg.eigvals(monodromy(system, run))
+    mult = mult[np.argsort(-np.abs(mult))]
+    n = system.dofs
+    x_min, x_max, sampled = extent(system, y, states, periods * T, samples)
+    return ForcedResponse(periods * T, periods, y[:n], y[n:], states, mult, x_min, x_max,
+                          sampled.event_time, sampled.event_contact, sampled.event_state)
+
+
+def extent(system: System, y: np.ndarray, states: tuple, duration: float, samples: int) -> tuple:
+    """``(x_min, x_max, run)``: the smallest and largest displacement of each degree of freedom over
+    ``duration`` from ``y = (x, v)`` (contact states ``states``), from ``samples`` uniform samples and
+    the state at every event; the run (its samples, events and segments)."""
+    n = system.dofs
+    run = simulate(system, y[:n], y[n:2 * n], duration, samples=samples, states=states, segments=True)
+    x_all = np.vstack([run.x, np.array([s.z[:n] for s in run.segments])])
+    return x_all.min(axis=0), x_all.max(axis=0), run
