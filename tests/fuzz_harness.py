@@ -36,6 +36,8 @@ import numpy as np
 OSC = ["--mass", "1", "--stiffness", "1", "--normal-force", "1", "--belt-speed", "0.2", "--fs", "0.6", "--fd", "0.4"]
 #: The example system of two blocks on two belts (`stickslip system ...`).
 SYSTEM_FILE = str(pathlib.Path(__file__).resolve().parents[1] / "examples" / "two_blocks" / "two_blocks.toml")
+#: A system with a harmonic force (a friction damper).
+DAMPER_FILE = str(pathlib.Path(__file__).resolve().parents[1] / "examples" / "friction_damper" / "friction_damper.toml")
 RSF = ["--a", "0.01", "--b", "0.015", "--dc", "1e-5", "--normal-stress", "1e7"]
 BRAKE = ["--omega", "50", "--mismatch", "1e-4", "--friction", "0.7"]
 #: A valid, fast invocation of every command ({tmp} is a fresh folder).

@@ -19,7 +19,7 @@ from stickslip.oscillator import Oscillator, continue_cycle, limit_cycle, simula
 from stickslip.sweep import run_sweep
 
 from .cf_rules import compliance_errors, file_problems, problems
-from .fuzz_harness import SYSTEM_FILE, example_config
+from .fuzz_harness import DAMPER_FILE, SYSTEM_FILE, example_config
 
 CASE = BrakeParams.from_physical(50.0, 1e-4, 0.7)
 
@@ -155,6 +155,9 @@ WRITERS = [
     (["system", "stability", SYSTEM_FILE, "--out", "{tmp}/yt.nc"], ["yt.nc"]),
     (["system", "continue", SYSTEM_FILE, "--parameter", "contact[0].surface_speed", "--stop", "0.25", "--points", "3",
       "--transient", "30", "--out", "{tmp}/yb.nc"], ["yb.nc"]),
+    (["system", "cycle", DAMPER_FILE, "--transient", "30", "--out", "{tmp}/yf.nc"], ["yf.nc"]),
+    (["system", "continue", DAMPER_FILE, "--parameter", "harmonic[0].frequency", "--stop", "0.9", "--points", "3",
+      "--transient", "30", "--out", "{tmp}/yr.nc"], ["yr.nc"]),
     (["rsf", "slide", "--a", "0.01", "--b", "0.015", "--dc", "1e-5", "--normal-stress", "1e7", "--stiffness", "1e10",
       "--t-end", "30", "--history", "0:1e-6,10:1e-5", "--out", "{tmp}/rs.nc"], ["rs.nc"]),
 ]

@@ -16,7 +16,7 @@ from stickslip.oscillator import (Oscillator, continue_cycle, equilibrium_stabil
                                   simulate)
 from stickslip.results import Result
 from stickslip.rsf import RateState, SpringSlider, hopf_criticality
-from stickslip.system import Contact, System, rate_state_simulate, rate_state_steady
+from stickslip.system import Contact, Harmonic, System, forced_response, rate_state_simulate, rate_state_steady
 
 from .cf_rules import problems
 
@@ -54,6 +54,8 @@ def results():
         "RateStateSteady": rate_state_steady(_RSF_BLOCK),
         "HopfCriticality": hopf_criticality(SpringSlider(RateState(a=0.01, b=0.015, dc=1e-5), normal_stress=1e7,
                                                          stiffness=1e9), 1e-6),
+        "ForcedResponse": forced_response(System([[1.0]], [[1.0]], [Contact([1.0], 1.0, Coulomb(0.2, 0.2))],
+                                                 damping=[[0.05]], harmonics=[Harmonic(0.6, [1.0])]), transient=30.0),
     }
 
 
@@ -61,7 +63,7 @@ NAMES = ["Trajectory", "LimitCycle", "Branch", "EquilibriumStability", "HopfPoin
          "SteadySliding", "GrowthRates", "ModeGrowth", "TravellingWave", "Zone", "WaveBranch", "WavePersistence",
          "RingRun", "RegimeResult", "FemRun", "FemRegime", "FemSteady", "FemGrowth", "InverseSolution",
          "DirectSolution", "InterfaceFields", "StickSlipWave", "Loading", "Material", "RateStateRun", "RateStateSteady",
-         "HopfCriticality"]
+         "HopfCriticality", "ForcedResponse"]
 
 
 @pytest.mark.parametrize("name", NAMES)

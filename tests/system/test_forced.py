@@ -3,6 +3,8 @@ the release of a stuck mass, the periodic response without stops against its pie
 form (Den Hartog's problem, solved here from the equations), the stroboscopic monodromy against
 finite differences, and the frequency response along a branch."""
 
+import pathlib
+
 import numpy as np
 import pytest
 import scipy.linalg
@@ -11,7 +13,7 @@ from scipy.optimize import brentq
 from stickslip.errors import NoSolutionError, ParameterError
 from stickslip.friction import Coulomb
 from stickslip.system import (Contact, Harmonic, System, continue_system, forced_response, limit_cycle, monodromy,
-                              simulate, steady_sliding, system_from_dict)
+                              load_system, simulate, steady_sliding, system_from_dict)
 from stickslip.system.continuation import file_parameter
 
 from .test_floquet import end_state
@@ -70,12 +72,13 @@ def test_two_harmonics_on_two_degrees_of_freedom_add_up():
     assert np.abs(run.x - x).max() < 1e-11
 
 
-def test_a_stuck_mass_is_released_when_the_harmonic_force_reaches_fs_N():
+@pytest.mark.parametrize("W", [0.8, 40.0])
+def test_a_stuck_mass_is_released_when_the_harmonic_force_reaches_fs_N(W):
     # at rest on a surface at rest, under F sin(W t): the sticking force is -F sin(W t), released at
-    # F sin(W t) = fs N
-    F, W, fs, N = 2.0, 0.8, 0.5, 1.5
+    # F sin(W t) = fs N (a force far faster than the structure sets the event search's step)
+    F, fs, N = 2.0, 0.5, 1.5
     system = damper(N=N, mu=0.3, fs=fs, F=0.0, G=F, W=W, k=1e-6)
-    run = simulate(system, [0.0], [0.0], 3.0, samples=31)
+    run = simulate(system, [0.0], [0.0], 2.4 / W, samples=31)
     released = np.arcsin(fs * N / F) / W
     assert run.event_time[0] == pytest.approx(released, abs=1e-12)
     stuck = run.t < released
@@ -232,3 +235,40 @@ def test_no_response_near_the_motion_says_what_was_tried():
     system = damper(c=0.0, mu=0.01, W=1.0)
     with pytest.raises(NoSolutionError, match="stroboscopic map"):
         forced_response(system, max_iter=5, transient=10.0)
+
+
+EXAMPLE = pathlib.Path(__file__).resolve().parents[2] / "examples" / "friction_damper" / "friction_damper.toml"
+
+
+def test_a_damper_stuck_through_the_period_leaves_its_structure_linear_and_its_position_neutral():
+    # the example's damper block sticks at 0.8 rad/s: the structure moves as m x'' + c x' + (k + k_d) x = F
+    # cos(W t), whose multipliers are exp(lambda T) of s^2 + 0.01 s + 1.5; the block's position is free
+    # (a multiplier 1, neutral) and its velocity is no state (a multiplier 0)
+    response = forced_response(load_system(EXAMPLE))
+    assert response.event_time.size == 0 and response.states == (0,)
+    lam = np.roots([1.0, 0.01, 1.5])
+    expected = np.sort(np.abs(np.exp(lam * response.period)))
+    mult = np.sort(np.abs(response.multipliers))
+    assert mult[0] < 1e-12 and abs(mult[3] - 1.0) < 1e-12
+    assert np.allclose(mult[1:3], expected, rtol=1e-10)
+    assert response.stable and response.neutral
+    X = 0.1 / abs(1.5 - 0.8 ** 2 + 0.01j * 0.8)
+    assert response.amplitude[0] == pytest.approx(X, rel=2e-6)  # 2001 samples of a smooth peak: (2 pi / 2000)^2 / 8
+
+
+def test_a_force_too_slow_for_a_run_names_its_frequency():
+    with pytest.raises(ParameterError) as err:
+        forced_response(damper(W=1e-300))
+    assert err.value.name == "harmonics" and "lowest frequency of at least" in str(err.value)
+
+
+def test_the_command_line_refuses_a_bad_harmonic_in_one_line(tmp_path, capsys):
+    from stickslip.cli import run
+    text = EXAMPLE.read_text().replace("frequency = 0.8", "frequency = -0.8")
+    path = tmp_path / "bad.toml"
+    path.write_text(text)
+    assert run(["system", "cycle", str(path)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "harmonic[0].frequency" in err and "-0.8" in err
+    assert run(["system", "cycle", str(EXAMPLE), "--periods", "0"]) == 2
+    assert "--periods" in capsys.readouterr().err

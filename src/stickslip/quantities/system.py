@@ -71,6 +71,8 @@ SYSTEM = Domain("system", units="SI (or any consistent units)", quantities=[
     Q("amplitude", "m", "half the peak-to-peak displacement of each degree of freedom over a period"),
     Q("x_min", "m", "least displacement of a degree of freedom over a period"),
     Q("x_max", "m", "largest displacement of a degree of freedom over a period"),
+    Q("neutral", "1", "1 if a multiplier of the periodic response lies on the unit circle: a family of responses "
+      "(a contact stuck through the period, anywhere) or a bifurcation"),
     Q("forced", "1", "1 for a branch of periodic responses to a periodic force (every multiplier kept)"),
     Q("multipliers_abs", "1", "moduli of the Floquet multipliers of the cycle"),
     Q("stable", "1", "1 if stable: a cycle's multipliers but the flow's own inside the unit circle (a periodic "

@@ -38,7 +38,7 @@ from ..quantities import OSCILLATOR, SYSTEM as Q
 from ..results import Result
 from .config import as_file_keys, system_from_dict
 from .floquet import limit_cycle, monodromy, return_fixed_point, without_own
-from .forced import extent, forced_response, forcing_period, stroboscopic_fixed_point
+from .forced import extent, forced_response, forcing_period, inside, stroboscopic_fixed_point, stroboscopic_multipliers
 from .model import System
 
 __all__ = ["SystemBranch", "continue_system", "file_parameter", "parameter_units"]
@@ -176,7 +176,7 @@ def _solve(build, p, start, horizon, tol):
         n = system.dofs
         y, states, run = stroboscopic_fixed_point(system, z[:2 * n], states, period, tol, 50, newton_after=0)
         z, segments = np.concatenate([y, [1.0]]), run.segments
-        mult = np.linalg.eigvals(monodromy(system, run))
+        mult = stroboscopic_multipliers(system, run, states)
     else:
         period, z, states, segments = return_fixed_point(system, z, states, signature, horizon, tol, 50,
                                                          newton_after=0)
@@ -238,19 +238,22 @@ def continue_system(build: Callable[[float], System], start: float, stop: float,
         if now[3] != prev[4]:
             value = _bisect(build, prev, p, state[2], tol, lambda r: r is not None and r[3] == prev[4])[0]
             events.append({"change": "event sequence", "value": value, "before": prev[4], "after": now[3]})
-        if (abs(now[4][0]) < 1.0) != (abs(prev[5][0]) < 1.0):
-            was = abs(prev[5][0]) < 1.0
+        if inside(now[4][:1]) != inside(prev[5][:1]):
+            was = inside(prev[5][:1])
             value, near = _bisect(build, prev, p, state[2], tol,
-                                  lambda r: r is not None and r[3] == prev[4] and (abs(r[4][0]) < 1.0) == was)
-            at = _solve(build, value, near, 3.0 * prev[1], tol)[4][0]
+                                  lambda r: r is not None and r[3] == prev[4] and inside(r[4][:1]) == was)
+            try:
+                crossing = _crossing(_solve(build, value, near, 3.0 * prev[1], tol)[4][0])
+            except (NoSolutionError, ParameterError) as err:  # at the change itself (a grazing, a stick's limit)
+                crossing = f"not found: no orbit at the change itself ({err})"
             events.append({"change": "stability", "value": value, "before": "stable" if was else "unstable",
-                           "after": "unstable" if was else "stable", "crossing": _crossing(at)})
+                           "after": "unstable" if was else "stable", "crossing": crossing})
         rows.append((p, *now))
     width = max(1, min(8, 2 * n - (0 if forced else 1)))
     mult = np.full((len(rows), width), np.nan)
     for i, r in enumerate(rows):
         mult[i, :min(width, r[5].size)] = np.abs(r[5][:width])
-    stable = np.array([abs(r[5][0]) < 1.0 if r[5].size else True for r in rows])
+    stable = np.array([inside(r[5][:1]) for r in rows])
     amplitude = np.array([_amplitude(build(r[0]), r[2][:2 * n], r[3], r[1]) for r in rows])
     return SystemBranch(parameter, np.array([r[0] for r in rows]), np.array([r[1] for r in rows]),
                         np.array([r[2][:n] for r in rows]), np.array([r[2][n:2 * n] for r in rows]),

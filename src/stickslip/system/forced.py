@@ -7,9 +7,12 @@ stroboscopic map ``P``: the state ``(x, v)`` at ``t = 0`` to the state at ``t = 
 every contact event in between. `forced_response` iterates ``P`` from the end of a transient,
 then solves ``P(y) = y`` by Newton's method with the monodromy (`monodromy`: saltation matrices
 at the events, whose switching functions move with the force) as ``P'``, keeping the slip
-velocity of contacts that stick at ``t = 0`` zero. The section is a fixed time, so no
-multiplier is the flow's own: the motion is stable when every multiplier lies inside the unit
-circle (a contact sticking at ``t = 0`` gives a multiplier 0).
+velocity of contacts that stick at ``t = 0`` zero: the map and its multipliers are taken on
+that stick (a change of such a contact's slip velocity is not a state the motion can be in; each
+gives a multiplier 0). The section is a fixed time, so no multiplier is the flow's own: the
+motion is stable when no multiplier lies outside the unit circle (beyond `NEUTRAL`). A contact
+that sticks through the whole period may stick anywhere: its position is a multiplier 1, a
+family of responses (``neutral``).
 """
 
 from __future__ import annotations
@@ -17,6 +20,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.linalg
 import xarray as xr
 
 from ..cf import finish
@@ -26,9 +30,41 @@ from ..results import Result
 from .floquet import monodromy
 from .flow import STATE_FLAGS
 from .model import System
-from .simulate import SystemRun, simulate
+from .simulate import SystemRun, longest_run, simulate
 
-__all__ = ["ForcedResponse", "forced_response", "stroboscopic_fixed_point", "forcing_period", "extent"]
+__all__ = ["ForcedResponse", "forced_response", "stroboscopic_fixed_point", "forcing_period", "extent",
+           "stick_basis", "stroboscopic_multipliers", "NEUTRAL", "inside"]
+
+#: A multiplier within this of the unit circle is on it (round-off of a neutral direction).
+NEUTRAL = 1e-9
+
+
+def inside(multipliers: np.ndarray) -> bool:
+    """No multiplier outside the unit circle beyond `NEUTRAL`."""
+    return bool(np.all(np.abs(multipliers) < 1.0 + NEUTRAL))
+
+
+def stick_basis(system: System, states: tuple) -> np.ndarray:
+    """An orthonormal basis (columns) of the changes of ``(x, v)`` that keep the slip velocity of the
+    contacts sticking in ``states`` zero (the identity when none sticks)."""
+    n = system.dofs
+    rows = [np.concatenate([np.zeros(n), system.contacts[i].direction]) for i, s in enumerate(states) if s == 0]
+    return scipy.linalg.null_space(np.array(rows)) if rows else np.eye(2 * n)
+
+
+def _on_stick(system: System, run: SystemRun, states: tuple) -> tuple:
+    """``(Q, Q^T P' Q)``: the stick's basis at the start and the stroboscopic map's derivative on it
+    (``P'`` maps onto the stick: the run ends in the states it started in)."""
+    Q = stick_basis(system, states)
+    return Q, Q.T @ monodromy(system, run) @ Q
+
+
+def stroboscopic_multipliers(system: System, run: SystemRun, states: tuple) -> np.ndarray:
+    """The multipliers of the run's stroboscopic map on the stick of ``states``, a 0 for each sticking
+    contact's slip velocity, by decreasing size."""
+    Q, R = _on_stick(system, run, states)
+    mult = np.concatenate([np.linalg.eigvals(R), np.zeros(2 * system.dofs - Q.shape[1])])
+    return mult[np.argsort(-np.abs(mult))]
 
 
 def forcing_period(system: System) -> float:
@@ -69,8 +105,14 @@ class ForcedResponse(Result):
 
     @property
     def stable(self) -> bool:
-        """Every multiplier inside the unit circle."""
-        return bool(np.all(np.abs(self.multipliers) < 1.0))
+        """No multiplier outside the unit circle (`inside`)."""
+        return inside(self.multipliers)
+
+    @property
+    def neutral(self) -> bool:
+        """A multiplier on the unit circle (within `NEUTRAL`): a family of responses (a contact stuck
+        through the period, anywhere), or a bifurcation."""
+        return bool(np.any(np.abs(np.abs(self.multipliers) - 1.0) < NEUTRAL))
 
     @property
     def amplitude(self) -> np.ndarray:
@@ -78,7 +120,7 @@ class ForcedResponse(Result):
         return 0.5 * (self.x_max - self.x_min)
 
     def to_dict(self) -> dict:
-        return {"period": self.period, "periods": self.periods, "stable": self.stable,
+        return {"period": self.period, "periods": self.periods, "stable": self.stable, "neutral": self.neutral,
                 "multipliers_abs": np.abs(self.multipliers).tolist(), "amplitude": self.amplitude.tolist(),
                 "events": int(self.event_time.size), "x0": self.x0.tolist(), "v0": self.v0.tolist()}
 
@@ -92,7 +134,8 @@ class ForcedResponse(Result):
              "event_time": ("event", self.event_time), "event_contact": ("event", self.event_contact),
              "event_state": ("event", self.event_state.astype(np.int8), STATE_FLAGS)},
             coords={"dof": np.arange(self.x0.size), "event": np.arange(self.event_time.size)},
-            attrs={"period": self.period, "periods": self.periods, "stable": int(self.stable)})
+            attrs={"period": self.period, "periods": self.periods, "stable": int(self.stable),
+                   "neutral": int(self.neutral)})
         return finish(ds, "system with frictional contacts: periodic response to a periodic force", "system")
 
 
@@ -101,13 +144,11 @@ def _run(system: System, z: np.ndarray, states: tuple, horizon: float, samples: 
     return simulate(system, z[:n], z[n:2 * n], horizon, samples=samples, segments=True, states=states)
 
 
-def _newton_step(system: System, run: SystemRun, residual: np.ndarray) -> np.ndarray:
-    """``d`` with ``(P' - I) d = -r`` (least squares: ``P' - I`` is singular at a fold). A contact
-    sticking at the start and the end keeps its slip velocity zero by itself: ``P'`` maps onto the
-    stick (the saltation at the stick's onset removes the velocity along it) and ``r`` lies on it,
-    so ``d = P' d + r`` does too."""
-    n = system.dofs
-    return np.linalg.lstsq(monodromy(system, run) - np.eye(2 * n), -residual, rcond=None)[0]
+def _newton_step(system: System, run: SystemRun, residual: np.ndarray, states: tuple) -> np.ndarray:
+    """``d`` on the stick of ``states`` with ``(P' - I) d = -r`` there (least squares: singular at a
+    fold, or where a contact sticks through the period anywhere)."""
+    Q, R = _on_stick(system, run, states)
+    return Q @ np.linalg.lstsq(R - np.eye(R.shape[0]), -Q.T @ residual, rcond=None)[0]
 
 
 def stroboscopic_fixed_point(system: System, y: np.ndarray, states: tuple, horizon: float, tol: float,
@@ -134,7 +175,7 @@ def stroboscopic_fixed_point(system: System, y: np.ndarray, states: tuple, horiz
         fixed = (y_end, end_states)
         newton = it >= newton_after and end_states == states and np.abs(residual).max() < 1e-2 * size
         if newton:
-            y = y + _newton_step(system, run, residual)
+            y = y + _newton_step(system, run, residual, states)
         else:
             y, states = y_end, end_states
     raise NoSolutionError(f"the stroboscopic map over {horizon:.6g} s did not come back to its start within "
@@ -152,6 +193,13 @@ def forced_response(system: System, x0=None, v0=None, *, periods: int = 1, trans
     uniform samples of that period and the states at its events."""
     T = forcing_period(system)
     periods = Q.check("periods", periods)
+    longest = longest_run(system)[0]
+    if periods * T > longest:
+        low = min(h.frequency for h in system.harmonics)
+        raise ParameterError("harmonics", [h.frequency for h in system.harmonics],
+                             f"a lowest frequency of at least {low * periods * T / longest:.6g} rad/s: "
+                             f"{periods} period(s) of the force, {periods * T:.6g} s, are longer than a run can be "
+                             f"({longest:.6g} s, set by the system's fastest time scale)", also=("periods",))
     transient = Q.check("transient", transient)
     tol, max_iter, samples = Q.check("tol", tol), Q.check("max_iter", max_iter), Q.check("samples", samples)
     whole = max(1, int(np.ceil(transient / T)))
@@ -164,8 +212,7 @@ def forced_response(system: System, x0=None, v0=None, *, periods: int = 1, trans
     y = np.concatenate([first.x[-1], first.v[-1]])
     states = tuple(int(s) for s in first.states[-1])
     y, states, run = stroboscopic_fixed_point(system, y, states, periods * T, tol, max_iter)
-    mult = np.linalg.eigvals(monodromy(system, run))
-    mult = mult[np.argsort(-np.abs(mult))]
+    mult = stroboscopic_multipliers(system, run, states)
     n = system.dofs
     x_min, x_max, sampled = extent(system, y, states, periods * T, samples)
     return ForcedResponse(periods * T, periods, y[:n], y[n:], states, mult, x_min, x_max,

@@ -2,7 +2,8 @@
 
     M x'' + C x' + K x = f(t) + sum_i w_i F_i,   f(t) = f + sum_k (c_k cos W_k t + s_k sin W_k t),
 
-``x`` the ``n`` degrees of freedom, ``f(t)`` a constant force and any number of `Harmonic` s. Contact ``i`` acts along its direction ``w_i`` (a vector
+``x`` the ``n`` degrees of freedom, ``f(t)`` a constant force and any number of `Harmonic` s.
+Contact ``i`` acts along its direction ``w_i`` (a vector
 of ``n`` numbers: a unit vector for a contact on one degree of freedom, a lever arm or a
 difference of two for others) against a surface moving at ``V_i``: its slip velocity is
 ``v_r = V_i - w_i . x'`` and its friction force follows the paper's convention (eq. [1]),
@@ -298,7 +299,8 @@ class System:
 
     @property
     def normal_rows(self) -> np.ndarray:
-        """Each contact's normal force ``N(x)`` as a row on ``z = (x, v, e, 1)`` (`Contact.normal_row`; computed once)."""
+        """Each contact's normal force ``N(x)`` as a row on ``z = (x, v, e, 1)`` (`Contact.normal_row`;
+        computed once)."""
         return self._columns("N", lambda c: c.normal_row(self.dofs, self.extra)).T
 
     def _columns(self, key: str, column) -> np.ndarray:

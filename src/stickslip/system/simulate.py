@@ -26,7 +26,7 @@ from ..results import Result
 from .flow import CLOSING, LAW_LIMIT, OPEN, OPENING, STATE_FLAGS, Flow
 from .model import System
 
-__all__ = ["SystemRun", "Segment", "simulate", "choose_states", "zero_slip"]
+__all__ = ["SystemRun", "Segment", "simulate", "choose_states", "zero_slip", "longest_run"]
 
 #: Events in a row without time passing before the simulation is said to chatter.
 MAX_INSTANT_EVENTS = 64
@@ -192,12 +192,19 @@ def _check(system, x0, v0, t_end, samples, max_events, flows):
         raise ParameterError("samples", samples, f"<= {MAX_NUMBERS // (2 * n + 2 * k)} for {n} degrees of freedom and "
                              f"{k} contacts (the samples hold at most {MAX_NUMBERS:.3g} numbers, 1 GB)",
                              also=("mass", "contacts"))
-    free = Flow.cached(system, tuple(1 for _ in range(k)), flows)  # every contact slipping: the fastest time scale
-    if np.isfinite(free.h) and t_end / free.h > MAX_STEPS:
-        raise ParameterError("t_end", t_end, f"<= {MAX_STEPS * free.h:.6g} s ({MAX_STEPS:.0e} steps of the event "
-                             f"search, {free.h:.3g} s each, set by the fastest time scale of the system)",
+    longest, h = longest_run(system, flows)
+    if t_end > longest:
+        raise ParameterError("t_end", t_end, f"<= {longest:.6g} s ({MAX_STEPS:.0e} steps of the event "
+                             f"search, {h:.3g} s each, set by the fastest time scale of the system)",
                              also=("mass", "stiffness", "damping"))
     return x0, v0, t_end, samples, Q.check("max_events", max_events)
+
+
+def longest_run(system: System, flows: dict | None = None) -> tuple[float, float]:
+    """``(t, h)``: the longest run of ``system`` (`MAX_STEPS` steps of the event search, at most the
+    largest end time) and the search's step ``h`` with every contact slipping (its fastest time scale)."""
+    free = Flow.cached(system, tuple(1 for _ in system.contacts), {} if flows is None else flows)
+    return (min(MAX_STEPS * free.h, Q["t_end"].range.hi) if np.isfinite(free.h) else Q["t_end"].range.hi), free.h
 
 
 def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: int = 1001,
