@@ -15,6 +15,7 @@ from stickslip.friction import Coulomb
 from stickslip.system import (Contact, Harmonic, System, continue_system, forced_response, limit_cycle, monodromy,
                               load_system, simulate, steady_sliding, system_from_dict)
 from stickslip.system.continuation import file_parameter
+from stickslip.system.forced import stick_basis
 
 from .test_floquet import end_state
 
@@ -272,3 +273,75 @@ def test_the_command_line_refuses_a_bad_harmonic_in_one_line(tmp_path, capsys):
     assert len(err.splitlines()) == 1 and "harmonic[0].frequency" in err and "-0.8" in err
     assert run(["system", "cycle", str(EXAMPLE), "--periods", "0"]) == 2
     assert "--periods" in capsys.readouterr().err
+
+
+def test_a_contact_released_because_another_sticks_has_its_saltation():
+    # two contacts share the load: when contact 0 sticks, the force moves to contact 1, which is released at
+    # the same instant without a switching function of its own reaching zero; the field after the event is
+    # that of both changes (finite differences of whole runs on the stick of the start)
+    M = np.diag([1.0, 0.5])
+    K = np.array([[2.0, -1.0], [-1.0, 1.0]])
+    contacts = [Contact([0.0, 1.0], 0.3, Coulomb(0.35, 0.3)), Contact([1.0, -1.0], 0.2, Coulomb(0.4, 0.3))]
+    system = System(M, K, contacts, damping=0.01 * K + 0.005 * M, harmonics=[Harmonic(0.7, [0.15, 0.0], [0.0, 0.05])])
+    response = forced_response(system, tol=1e-12)
+    run = simulate(system, response.x0, response.v0, response.period, samples=2, segments=True, states=response.states)
+    flows = {}
+    from stickslip.system import Flow
+    consequential = [seg for seg in run.segments if seg.rows and any(
+        a != b and i not in {int(Flow.cached(system, seg.states, flows).owners[r]) for r in seg.rows}
+        for i, (a, b) in enumerate(zip(seg.states, seg.after)))]
+    assert consequential  # the case this test is about
+    Q = stick_basis(system, response.states)
+    y = np.concatenate([response.x0, response.v0])
+    fd = np.zeros((4, Q.shape[1]))
+    for j in range(Q.shape[1]):
+        ends = [end_state(simulate(system, (y + s * 1e-6 * Q[:, j])[:2], (y + s * 1e-6 * Q[:, j])[2:], response.period,
+                                   samples=2, states=response.states)) for s in (1, -1)]
+        fd[:, j] = (ends[0] - ends[1]) / 2e-6
+    assert np.abs(monodromy(system, run) @ Q - fd).max() < 1e-6
+    expected = np.sort(np.abs(np.linalg.eigvals(Q.T @ fd)))[::-1]
+    assert np.allclose(np.abs(response.multipliers[:expected.size]), expected, atol=1e-6)
+
+
+def test_the_response_scales_with_the_forces():
+    # Coulomb contacts and a linear structure: forces (harmonic and normal) scaled by s scale the response by s
+    # exactly, down to sizes far below one (the tolerance is relative to the orbit's own size)
+    M = np.diag([1.0, 0.5])
+    K = np.array([[2.0, -1.0], [-1.0, 1.0]])
+
+    def build(s):
+        contacts = [Contact([0.0, 1.0], 0.3 * s, Coulomb(0.35, 0.3)), Contact([1.0, -1.0], 0.2 * s, Coulomb(0.4, 0.3))]
+        return System(M, K, contacts, damping=0.01 * K + 0.005 * M,
+                      harmonics=[Harmonic(0.85, [0.2 * s, 0.0], [0.0, 0.05 * s])])
+    one = forced_response(build(1.0))
+    for s in (1e-4, 1e-8):
+        small = forced_response(build(s))
+        assert np.abs(small.x0 / s - one.x0).max() < 1e-8 * np.abs(one.x0).max()
+        assert np.allclose(np.abs(small.multipliers), np.abs(one.multipliers), atol=1e-8)
+
+
+def test_two_stuck_contacts_are_released_each_when_its_own_harmonic_force_reaches_its_limit():
+    # two masses, uncoupled, each stuck on its own surface at rest under its own F_i sin(W t): released at
+    # arcsin(fs_i N_i / F_i) / W, the sticking forces -F_i sin(W t) before
+    contacts = [Contact([1.0, 0.0], 1.0, Coulomb(0.5, 0.3)), Contact([0.0, 1.0], 2.0, Coulomb(0.4, 0.3))]
+    F, W = np.array([1.5, 1.2]), 0.9
+    system = System(np.eye(2), 1e-6 * np.eye(2), contacts, harmonics=[Harmonic(W, sin=F)])
+    run = simulate(system, [0.0, 0.0], [0.0, 0.0], 2.0 / W, samples=41)
+    released = np.arcsin(np.array([0.5 * 1.0, 0.4 * 2.0]) / F) / W
+    for i in range(2):
+        assert run.event_time[run.event_contact == i][0] == pytest.approx(released[i], abs=1e-12)
+        stuck = run.t < released.min()
+        assert np.allclose(run.friction_force[stuck, i], -F[i] * np.sin(W * run.t[stuck]), atol=1e-12)
+
+
+def test_a_subharmonic_longer_than_a_run_names_the_force_and_its_periods():
+    with pytest.raises(ParameterError) as err:
+        forced_response(damper(W=1e-3), periods=1000)
+    assert err.value.name == "harmonics" and "periods" in err.value.also
+
+
+def test_a_branch_that_makes_the_force_aperiodic_stops_saying_so():
+    table = {**FILE, "harmonic": FILE["harmonic"] + [{"frequency": 1.1, "sin": [0.05]}]}
+    build, start = file_parameter(table, "harmonic[0].frequency")
+    branch = continue_system(build, start, 0.6, points=3, parameter="harmonic[0].frequency")
+    assert branch.values.size == 1 and "whole multiples" in branch.stopped and branch.events[0]["change"] == "refused"

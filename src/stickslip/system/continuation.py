@@ -37,9 +37,10 @@ from ..errors import NoSolutionError, ParameterError
 from ..quantities import OSCILLATOR, SYSTEM as Q
 from ..results import Result
 from .config import as_file_keys, system_from_dict
-from .floquet import limit_cycle, monodromy, return_fixed_point, without_own
-from .forced import extent, forced_response, forcing_period, inside, stroboscopic_fixed_point, stroboscopic_multipliers
+from .floquet import inside, limit_cycle, monodromy, return_fixed_point, without_own
+from .forced import extent, forced_response, forcing_period, stroboscopic_fixed_point, stroboscopic_multipliers
 from .model import System
+from .simulate import longest_run
 
 __all__ = ["SystemBranch", "continue_system", "file_parameter", "parameter_units"]
 
@@ -174,7 +175,8 @@ def _solve(build, p, start, horizon, tol):
     if signature[0] == FORCED:
         period = signature[1] * forcing_period(system)
         n = system.dofs
-        y, states, run = stroboscopic_fixed_point(system, z[:2 * n], states, period, tol, 50, newton_after=0)
+        y, states, run = stroboscopic_fixed_point(system, z[:2 * n], states, period, tol, 50, newton_after=0,
+                                                  near=1.0)
         z, segments = np.concatenate([y, [1.0]]), run.segments
         mult = stroboscopic_multipliers(system, run, states)
     else:
@@ -220,6 +222,11 @@ def continue_system(build: Callable[[float], System], start: float, stop: float,
     for p in values[1:]:
         prev = rows[-1]
         guess = (prev[2], prev[3], state[2])
+        refused = _refused(build, p, section)
+        if refused:
+            events.append({"change": "refused", "value": float(p), "before": prev[4], "after": ""})
+            stopped = f"stopped before {parameter} = {p:.10g}: {refused}"
+            break
         try:
             now = _solve(build, p, guess, 3.0 * prev[1], tol)
         except (NoSolutionError, ParameterError):
@@ -232,7 +239,8 @@ def continue_system(build: Callable[[float], System], start: float, stop: float,
                 now = None
         if now is None:
             events.append({"change": "cycle lost", "value": value, "before": prev[4], "after": ""})
-            stopped = (f"no cycle beyond {parameter} = {value:.10g} (the cycle {prev[4]!r} meets a switching line: a "
+            which = repr(prev[4]) if prev[4] else "without contact events"
+            stopped = (f"no cycle beyond {parameter} = {value:.10g} (the cycle {which} meets a switching line: a "
                        "grazing fold, or the motion leaves for another attractor)")
             break
         if now[3] != prev[4]:
@@ -265,6 +273,22 @@ def _amplitude(system: System, y: np.ndarray, states: tuple, period: float) -> n
     """Half the peak-to-peak displacement of each degree of freedom over one period from ``y``."""
     low, high, _ = extent(system, y, states, period, AMPLITUDE_SAMPLES)
     return 0.5 * (high - low)
+
+
+def _refused(build, p: float, section: tuple) -> str:
+    """Why the system at ``p`` cannot be followed ('' if it can): its `ParameterError` (a value it
+    cannot take, a force that is not periodic, a forcing period longer than a run can be)."""
+    try:
+        system = build(p)
+        if section[0] == FORCED:
+            T = section[1] * forcing_period(system)
+            if T > longest_run(system)[0]:
+                raise ParameterError("harmonics", [h.frequency for h in system.harmonics],
+                                     f"a forcing period whose {section[1]} period(s) a run can span (here {T:.6g} s, "
+                                     f"longer than {longest_run(system)[0]:.6g} s)")
+    except ParameterError as err:
+        return str(err)
+    return ""
 
 
 def _crossing(mu: complex) -> str:

@@ -29,7 +29,16 @@ from .model import System
 from .simulate import SystemRun, simulate, zero_slip
 
 __all__ = ["monodromy", "saltation", "jump", "SystemCycle", "limit_cycle", "return_fixed_point", "without_own",
-           "cycle_dataset", "period_events", "entries"]
+           "cycle_dataset", "period_events", "entries", "NEUTRAL", "inside"]
+
+#: A multiplier within this of the unit circle is on it (round-off of a neutral direction: a contact
+#: that sticks through the period, anywhere).
+NEUTRAL = 1e-9
+
+
+def inside(multipliers: np.ndarray) -> bool:
+    """No multiplier outside the unit circle beyond `NEUTRAL`."""
+    return bool(np.all(np.abs(multipliers) < 1.0 + NEUTRAL))
 
 
 def saltation(f_minus: np.ndarray, f_plus: np.ndarray, normal: np.ndarray, rate: float | None = None) -> np.ndarray:
@@ -48,20 +57,30 @@ def jump(system: System, segment, z: np.ndarray, flows: dict, skip: int | None =
     ``z``) and the field ``f`` after them. Events at the same instant (of contacts a symmetry
     makes switch together) are taken one contact after another, each with its own switching
     function and the fields before and after its own switch; for contacts that do not touch
-    each other's switching functions the order does not matter. Without the contact ``skip``
-    (its own switch is the section's, projected by the caller)."""
+    each other's switching functions the order does not matter. A contact that changes state
+    there without a switching function of its own reaching zero (released because another one
+    stuck: the load moves to it) changes with the last crossing: the field after that crossing
+    is the one of every new state. Without the contact ``skip`` (its own switch is the
+    section's, projected by the caller)."""
     n = system.dofs
     flow = Flow.cached(system, segment.states, flows)
+    crossed, seen = [], set()
+    for r in segment.rows:
+        owner = int(flow.owners[r])
+        if owner != skip and owner not in seen:
+            seen.add(owner)
+            crossed.append((r, owner))
+    final = tuple(s if i == skip else a for i, (a, s) in enumerate(zip(segment.after, segment.states)))
+    steps = [(r, o) for r, o in crossed if segment.after[o] != segment.states[o]]
+    if not steps and crossed and final != segment.states:
+        steps = crossed[-1:]  # only consequential changes: they go with the last crossing
     states = list(segment.states)
     out = np.eye(2 * n)
     f_minus = flow.A @ z  # the whole field: with harmonic forces the switching functions move in time too
-    done = set()
-    for r in segment.rows:
-        owner = int(flow.owners[r])
-        if owner in done or owner == skip or segment.after[owner] == states[owner]:
-            continue
-        done.add(owner)
+    for k, (r, owner) in enumerate(steps):
         states[owner] = segment.after[owner]
+        if k == len(steps) - 1:
+            states = list(final)
         f_plus = Flow.cached(system, tuple(states), flows).A @ z
         rate = flow.rows[r] @ f_minus
         out = saltation(f_minus[:2 * n], f_plus[:2 * n], flow.rows[r][:2 * n], rate) @ out
@@ -135,8 +154,8 @@ class SystemCycle(Result):
 
     @property
     def stable(self) -> bool:
-        """All multipliers but the flow's own (the one nearest 1) inside the unit circle."""
-        return bool(np.all(np.abs(without_own(self.multipliers)) < 1.0))
+        """No multiplier but the flow's own (the one nearest 1) outside the unit circle (`inside`)."""
+        return inside(without_own(self.multipliers))
 
     def to_dict(self) -> dict:
         return {"period": self.period, "stable": self.stable, "multipliers_abs": np.abs(self.multipliers).tolist(),

@@ -27,21 +27,13 @@ from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import SYSTEM as Q
 from ..results import Result
-from .floquet import monodromy
+from .floquet import NEUTRAL, inside, monodromy
 from .flow import STATE_FLAGS
 from .model import System
-from .simulate import SystemRun, longest_run, simulate
+from .simulate import SystemRun, affine_laws, longest_run, simulate
 
 __all__ = ["ForcedResponse", "forced_response", "stroboscopic_fixed_point", "forcing_period", "extent",
-           "stick_basis", "stroboscopic_multipliers", "NEUTRAL", "inside"]
-
-#: A multiplier within this of the unit circle is on it (round-off of a neutral direction).
-NEUTRAL = 1e-9
-
-
-def inside(multipliers: np.ndarray) -> bool:
-    """No multiplier outside the unit circle beyond `NEUTRAL`."""
-    return bool(np.all(np.abs(multipliers) < 1.0 + NEUTRAL))
+           "stick_basis", "stroboscopic_multipliers"]
 
 
 def stick_basis(system: System, states: tuple) -> np.ndarray:
@@ -139,7 +131,11 @@ class ForcedResponse(Result):
         return finish(ds, "system with frictional contacts: periodic response to a periodic force", "system")
 
 
-def _run(system: System, z: np.ndarray, states: tuple, horizon: float, samples: int = 2) -> SystemRun:
+#: Samples of each run of the stroboscopic map, from which (with its events) each variable's size is taken.
+SIZE_SAMPLES = 65
+
+
+def _run(system: System, z: np.ndarray, states: tuple, horizon: float, samples: int = SIZE_SAMPLES) -> SystemRun:
     n = system.dofs
     return simulate(system, z[:n], z[n:2 * n], horizon, samples=samples, segments=True, states=states)
 
@@ -151,13 +147,24 @@ def _newton_step(system: System, run: SystemRun, residual: np.ndarray, states: t
     return Q @ np.linalg.lstsq(R - np.eye(R.shape[0]), -Q.T @ residual, rcond=None)[0]
 
 
+def _sizes(system: System, run: SystemRun) -> np.ndarray:
+    """The size of each of ``(x, v)`` over ``run`` (its largest modulus at its samples and events), at
+    least 1e-12 of the largest of its kind (displacements, velocities): what a residual is relative to."""
+    n = system.dofs
+    Z = np.vstack([np.array([s.z[:2 * n] for s in run.segments]), np.hstack([run.x, run.v])])
+    size = np.abs(Z).max(axis=0)
+    for part in (slice(0, n), slice(n, 2 * n)):
+        size[part] = np.maximum(size[part], 1e-12 * size[part].max())
+    return np.where(size > 0.0, size, 1.0)
+
+
 def stroboscopic_fixed_point(system: System, y: np.ndarray, states: tuple, horizon: float, tol: float,
-                             max_iter: int, newton_after: int = 2) -> tuple:
+                             max_iter: int, newton_after: int = 2, near: float = 1e-2) -> tuple:
     """``(y, states, run)``: the state ``y = (x, v)`` at ``t = 0`` (contact states ``states``) that the
     motion over ``horizon`` (a whole number of forcing periods) brings back to itself within
-    ``tol`` (relative), and that run (with its segments). Iterated, then (once near, the contact
-    states at the end repeating) by Newton's method; a Newton step that changes the contact
-    states at the start or fails goes back to iterating."""
+    ``tol`` of each variable's size over the run (`_sizes`), and that run (with its segments).
+    Iterated, then (once within ``near``, the contact states at the end repeating) by Newton's method;
+    a Newton step that changes the contact states at the start or fails goes back to iterating."""
     newton, fixed, residual = False, None, np.full(1, np.inf)
     for it in range(max_iter):
         try:
@@ -169,18 +176,18 @@ def stroboscopic_fixed_point(system: System, y: np.ndarray, states: tuple, horiz
             continue
         y_end, end_states = np.concatenate([run.x[-1], run.v[-1]]), tuple(int(s) for s in run.states[-1])
         residual = y_end - y
-        size = max(1.0, np.abs(y).max())
-        if np.abs(residual).max() <= tol * size and end_states == states:
+        miss = float(np.abs(residual / _sizes(system, run)).max())
+        if miss <= tol and end_states == states:
             return y, states, run
         fixed = (y_end, end_states)
-        newton = it >= newton_after and end_states == states and np.abs(residual).max() < 1e-2 * size
+        newton = it >= newton_after and end_states == states and miss < near
         if newton:
             y = y + _newton_step(system, run, residual, states)
         else:
             y, states = y_end, end_states
     raise NoSolutionError(f"the stroboscopic map over {horizon:.6g} s did not come back to its start within "
                           f"tol = {tol:g} in {max_iter} iterations (the last return missed it by "
-                          f"{np.abs(residual).max():.3g}): no periodic response of this period near the motion "
+                          f"{np.abs(residual).max():.3g}, absolute): no periodic response of this period near the motion "
                           "(try more periods, a longer transient, or another start)")
 
 
@@ -189,9 +196,10 @@ def forced_response(system: System, x0=None, v0=None, *, periods: int = 1, trans
     """The periodic response of ``system`` under its periodic force that the motion from ``(x0,
     v0)`` settles on after a ``transient`` of at least that many seconds (a whole number of
     forcing periods), repeating every ``periods`` forcing periods (see the module). Its
-    multipliers are those of the monodromy over one period; ``x_min``, ``x_max`` from ``samples``
-    uniform samples of that period and the states at its events."""
+    multipliers are those of the stroboscopic map over ``periods`` forcing periods; ``x_min``,
+    ``x_max`` from ``samples`` uniform samples of that time and the states at its events."""
     T = forcing_period(system)
+    affine_laws(system)
     periods = Q.check("periods", periods)
     longest = longest_run(system)[0]
     if periods * T > longest:

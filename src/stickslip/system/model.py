@@ -142,7 +142,7 @@ class Harmonic:
     def __post_init__(self):
         object.__setattr__(self, "frequency", Q.check("forcing_frequency", self.frequency, "frequency"))
         if self.cos is None and self.sin is None:
-            raise ParameterError("cos", None, "an amplitude (cos, sin or both)", also=("sin",))
+            raise ParameterError("cos", None, "an amplitude: cos, sin or both given")
         for name in ("cos", "sin"):
             if getattr(self, name) is not None:
                 object.__setattr__(self, name, _vector(name, getattr(self, name), None, "harmonic_force"))
@@ -272,7 +272,7 @@ class System:
         if self.harmonics:
             raise ParameterError("harmonics", [h.frequency for h in self.harmonics],
                                  f"none for {what} (a force constant in time); the periodic response to a periodic "
-                                 "force is stickslip.system.forced_response")
+                                 "force is stickslip.system.forced_response (stickslip system cycle)")
 
     @property
     def inverse_mass(self) -> np.ndarray:

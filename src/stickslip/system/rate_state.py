@@ -36,7 +36,8 @@ from .model import System
 from .simulate import MAX_NUMBERS
 from .steady import SteadySliding
 
-__all__ = ["RateStateRun", "RateStateSteady", "rate_state_simulate", "rate_state_steady", "is_rate_state"]
+__all__ = ["RateStateRun", "RateStateSteady", "rate_state_simulate", "rate_state_steady", "is_rate_state",
+           "RateStateEquations", "start_state"]
 
 #: A slip rate taken for zero (m/s): the regularised law's friction is 0 to round-off there.
 _TINY = 1e-300
@@ -65,7 +66,7 @@ def _laws(system) -> list[RateState]:
     return [c.friction for c in system.contacts]
 
 
-class _Equations:
+class RateStateEquations:
     """The right-hand side in ``y = (x, x', psi of contact 0, psi of contact 1, ...)``."""
 
     def __init__(self, system: System):
@@ -99,6 +100,21 @@ class _Equations:
     def jacobian(self, t, y):
         """``d y' / d y`` by complex steps (exact to round-off: the laws take complex arguments)."""
         return complex_jacobian(lambda z: self(t, z), y)
+
+    def guarded(self, t, y):
+        """``y'``, NaN at a state beyond zero slip rate of a law without regularisation (a trial state
+        of an implicit step: the solver's Newton iteration fails there and the step shrinks)."""
+        try:
+            return self(t, y)
+        except _Stopped:
+            return np.full(y.size, np.nan)
+
+    def guarded_jacobian(self, t, y):
+        """`jacobian`, zero at a state beyond zero slip rate (see `guarded`)."""
+        try:
+            return self.jacobian(t, y)
+        except _Stopped:
+            return np.zeros((y.size, y.size))
 
     def __call__(self, t, y):
         sysm, n = self.system, self.n
@@ -170,7 +186,7 @@ class RateStateSteady(SteadySliding):
         return {**super().to_dict(), "psi": [p.tolist() for p in self.psi]}
 
 
-def _steady_state(eq: _Equations) -> np.ndarray:
+def _steady_state(eq: RateStateEquations) -> np.ndarray:
     sysm = eq.system
     if np.any(eq.V == 0.0):
         i = int(np.flatnonzero(eq.V == 0.0)[0])
@@ -194,7 +210,7 @@ def _steady_state(eq: _Equations) -> np.ndarray:
 def rate_state_steady(system: System) -> RateStateSteady:
     """Steady sliding of ``system`` (every contact rate-and-state, every surface moving) and its
     linear stability."""
-    eq = _Equations(system)
+    eq = RateStateEquations(system)
     system.unforced("steady sliding")
     y = _steady_state(eq)
     jac = eq.jacobian(0.0, y)
@@ -212,7 +228,7 @@ def rate_state_steady(system: System) -> RateStateSteady:
                            tuple(eq.psi(y, i).copy() for i in range(len(eq.laws))))
 
 
-def _given_psi(psi0, eq: _Equations) -> np.ndarray:
+def _given_psi(psi0, eq: RateStateEquations) -> np.ndarray:
     """``psi0``: one entry per contact, a number or a list of its law's state variables."""
     want = f"{len(eq.laws)} entries, one per contact: its state variable ln(V_0 theta / D_c) (a list of two for a " \
            "law with two), each finite"
@@ -227,23 +243,10 @@ def _given_psi(psi0, eq: _Equations) -> np.ndarray:
     return np.concatenate([np.asarray(Q["psi0"].check_array(r, "psi0"), dtype=float) for r in rows])
 
 
-def rate_state_simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, psi0=None, samples: int = 1001,
-                        rtol: float = 1e-10) -> RateStateRun:
-    """The motion of ``system`` (every contact rate-and-state) from ``(x0, v0)`` (default: steady
-    sliding's position, at rest) with the contacts' state variables ``psi0`` (one list per contact;
-    default: steady at the slip rate of the start), over ``t_end`` with ``samples`` samples;
-    Radau IIA at relative tolerance ``rtol``."""
-    eq = _Equations(system)
-    n = eq.n
-    t_end, samples, rtol = Q.check("t_end", t_end), Q.check("samples", samples), Q.check("rtol", rtol)
-    scale = max(float(law.dc_values.max()) / max(abs(V), law.v_ref) for law, V in zip(eq.laws, eq.V))
-    if t_end > LONGEST * scale:
-        raise ParameterError("t_end", t_end, f"<= {LONGEST * scale:.6g} s ({LONGEST:.0e} times the slowest time "
-                             f"D_c / V of the contacts' states, {scale:.3g} s; simulate in pieces from the last "
-                             "state for more)", also=("contacts",))
-    if samples * (2 * n + 2 * len(eq.laws) + eq.size) > MAX_NUMBERS:
-        raise ParameterError("samples", samples, f"<= {int(MAX_NUMBERS // (2 * n + 2 * len(eq.laws) + eq.size))} for "
-                             "this system (the samples hold at most 1.25e8 numbers, 1 GB)")
+def start_state(eq: RateStateEquations, x0=None, v0=None, psi0=None) -> np.ndarray:
+    """``y = (x, x', psi)`` at the start: ``x0`` (default: steady sliding's position), ``v0`` (default:
+    rest) and ``psi0`` (one list per contact; default: steady at the start's slip rates), checked."""
+    system, n = eq.system, eq.n
     y = np.zeros(eq.size)
     if x0 is None:
         y[:n] = _steady_state(eq)[:n] if np.all(eq.V != 0.0) else 0.0
@@ -269,6 +272,27 @@ def rate_state_simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *
     except _Stopped as stop:
         raise ParameterError("v0", y[n:2 * n].tolist(), f"a start at which contact {stop.contact} slips forward "
                              "(the law without regularisation has no value at zero or negative slip rate)") from None
+    return y
+
+
+def rate_state_simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, psi0=None, samples: int = 1001,
+                        rtol: float = 1e-10) -> RateStateRun:
+    """The motion of ``system`` (every contact rate-and-state) from ``(x0, v0)`` (default: steady
+    sliding's position, at rest) with the contacts' state variables ``psi0`` (one list per contact;
+    default: steady at the slip rate of the start), over ``t_end`` with ``samples`` samples;
+    Radau IIA at relative tolerance ``rtol``."""
+    eq = RateStateEquations(system)
+    n = eq.n
+    t_end, samples, rtol = Q.check("t_end", t_end), Q.check("samples", samples), Q.check("rtol", rtol)
+    scale = max(float(law.dc_values.max()) / max(abs(V), law.v_ref) for law, V in zip(eq.laws, eq.V))
+    if t_end > LONGEST * scale:
+        raise ParameterError("t_end", t_end, f"<= {LONGEST * scale:.6g} s ({LONGEST:.0e} times the slowest time "
+                             f"D_c / V of the contacts' states, {scale:.3g} s; simulate in pieces from the last "
+                             "state for more)", also=("contacts",))
+    if samples * (2 * n + 2 * len(eq.laws) + eq.size) > MAX_NUMBERS:
+        raise ParameterError("samples", samples, f"<= {int(MAX_NUMBERS // (2 * n + 2 * len(eq.laws) + eq.size))} for "
+                             "this system (the samples hold at most 1.25e8 numbers, 1 GB)")
+    y = start_state(eq, x0, v0, psi0)
     times = np.linspace(0.0, t_end, samples)
 
     last = [0.0, y, 0]  # the latest state the equations were evaluated at (where a failed run got to), calls
@@ -284,14 +308,8 @@ def rate_state_simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *
         last[:2] = t, state
         return out
 
-    def jac(t, state):
-        try:
-            return eq.jacobian(t, state)
-        except _Stopped:
-            return np.zeros((state.size, state.size))
-
     try:
-        sol = solve_ivp(rhs, (0.0, t_end), y, method="Radau", t_eval=times, rtol=rtol, jac=jac,
+        sol = solve_ivp(rhs, (0.0, t_end), y, method="Radau", t_eval=times, rtol=rtol, jac=eq.guarded_jacobian,
                         atol=rtol * np.maximum(1.0, np.abs(y)) * 1e-3)
     except _Budget:
         raise NoSolutionError(f"more than {MAX_CALLS:.0e} evaluations of the equations by t = {last[0]:.6g} s of "

@@ -26,7 +26,7 @@ from ..results import Result
 from .flow import CLOSING, LAW_LIMIT, OPEN, OPENING, STATE_FLAGS, Flow
 from .model import System
 
-__all__ = ["SystemRun", "Segment", "simulate", "choose_states", "zero_slip", "longest_run"]
+__all__ = ["SystemRun", "Segment", "simulate", "choose_states", "zero_slip", "longest_run", "affine_laws"]
 
 #: Events in a row without time passing before the simulation is said to chatter.
 MAX_INSTANT_EVENTS = 64
@@ -173,13 +173,7 @@ def _given_states(states, vr, speed, unilateral) -> tuple:
 
 
 def _check(system, x0, v0, t_end, samples, max_events, flows):
-    if not isinstance(system, System):
-        raise ParameterError("system", system, "a stickslip.system.System")
-    for i, c in enumerate(system.contacts):
-        if getattr(c.friction, "affine", None) is None:
-            raise ParameterError(f"contacts[{i}].friction", type(c.friction).__name__,
-                                 "a law affine in the slip speed (Coulomb, linear weakening) in this version; a system "
-                                 "with rate-and-state laws moves by stickslip.system.rate_state_simulate")
+    affine_laws(system)
     n = system.dofs
     x0 = np.zeros(n) if x0 is None else np.asarray(Q["x0"].check_array(x0, "x0"), dtype=float).reshape(-1)
     v0 = np.zeros(n) if v0 is None else np.asarray(Q["v0"].check_array(v0, "v0"), dtype=float).reshape(-1)
@@ -196,8 +190,20 @@ def _check(system, x0, v0, t_end, samples, max_events, flows):
     if t_end > longest:
         raise ParameterError("t_end", t_end, f"<= {longest:.6g} s ({MAX_STEPS:.0e} steps of the event "
                              f"search, {h:.3g} s each, set by the fastest time scale of the system)",
-                             also=("mass", "stiffness", "damping"))
+                             also=("mass", "stiffness", "damping") + (("harmonics",) if system.harmonics else ()))
     return x0, v0, t_end, samples, Q.check("max_events", max_events)
+
+
+def affine_laws(system: System) -> None:
+    """A `ParameterError` unless ``system`` is a `System` whose contacts' laws are affine in the slip
+    speed (what the exact flows take)."""
+    if not isinstance(system, System):
+        raise ParameterError("system", system, "a stickslip.system.System")
+    for i, c in enumerate(system.contacts):
+        if getattr(c.friction, "affine", None) is None:
+            raise ParameterError(f"contacts[{i}].friction", type(c.friction).__name__,
+                                 "a law affine in the slip speed (Coulomb, linear weakening) in this version; a system "
+                                 "with rate-and-state laws moves by stickslip.system.rate_state_simulate")
 
 
 def longest_run(system: System, flows: dict | None = None) -> tuple[float, float]:
