@@ -26,6 +26,7 @@ ALLOWED = {
     "results": {"cf", "quantities"},
     "friction": BASE,
     "lawkernel": {"friction"},
+    "orbits": {"errors"},
     "files": BASE,
     "contact": BASE | {"files"},
     "cluster": {"errors"},
@@ -34,7 +35,7 @@ ALLOWED = {
     "brake": BASE | {"contact", "sweep", "files", "system", "friction"},  # the waves' spectrum: a ring of contacts
     "halfspace": BASE,
     "fem": BASE | {"contact", "friction", "sweep", "files"},
-    "system": BASE | {"friction", "rsf"},
+    "system": BASE | {"friction", "rsf", "orbits"},
     "rsf": BASE,
     "plotting": set(),
     "errata": set(),

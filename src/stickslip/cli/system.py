@@ -33,6 +33,12 @@ V0 = Annotated[Optional[str], typer.Option("--v0", help=f"Initial velocity: one 
                                                         f"separated by commas ({Q['v0'].units}). Default: zeros.")]
 
 
+Psi0 = Annotated[Optional[str], typer.Option(
+    "--psi0", help="Rate-and-state contacts: their state variables ln(V_0 theta / D_c) at the start, separated by "
+                   "commas, in the order of the contacts (two for a law with two). Default: steady at the start's "
+                   "slip rates (cycle: steady sliding with the first raised by 0.01).")]
+
+
 def _load(path: Path):
     from ..system import load_system
 
@@ -122,28 +128,40 @@ def simulate_cmd(file: File, t_end: Annotated[float, declared(Q["t_end"], "--t-e
 
 @app.command()
 def cycle(file: File, x0: X0 = None, v0: V0 = None,
-          transient: Annotated[float, declared(Q["transient"], "--transient")] = 100.0,
-          tol: Annotated[float, declared(COMMON["tol"], "--tol")] = 1e-10,
+          transient: Annotated[Optional[float], declared(Q["transient"], "--transient", "Default: 100 s (with "
+                                                          "rate-and-state contacts: see below).")] = None,
+          tol: Annotated[Optional[float], declared(COMMON["tol"], "--tol", "Default: 1e-10 (with rate-and-state "
+                                                                         "contacts 1e-7).")] = None,
           max_iter: Annotated[int, declared(Q["max_iter"], "--max-iter")] = 200,
           periods: Periods = 1,
+          psi0: Psi0 = None,
           json: Json = False, out: Out = None, overwrite: Replace = False):
     """Limit cycle the motion settles on: period, events, Floquet multipliers (with saltation matrices).
-    With harmonic forces: the periodic response (at phase zero of the force), its amplitude and multipliers."""
+    With harmonic forces: the periodic response (at phase zero of the force), its amplitude and multipliers.
+    With rate-and-state contacts: the cycle by Newton's method on the smooth equations (multipliers by
+    central differences); --transient then defaults to the growth of a small perturbation."""
     out = _out(out, overwrite)
-    from ..system import forced_response, limit_cycle
+    from ..system import forced_response, is_rate_state, limit_cycle, rate_state_cycle
 
     system = _load(file)
     n = system.dofs
     with _file_keys():
-        if system.harmonics:
-            result = forced_response(system, _numbers("--x0", x0, n), _numbers("--v0", v0, n), periods=periods,
-                                     transient=transient, tol=tol, max_iter=max_iter)
+        x0, v0 = _numbers("--x0", x0, n), _numbers("--v0", v0, n)
+        rate_state = is_rate_state(system)
+        if psi0 is not None and not rate_state:
+            raise ParameterError("--psi0", psi0, "left out: it is the state of rate-and-state contacts, and this "
+                                 "system has none")
+        if periods != 1 and not system.harmonics:
+            raise ParameterError("--periods", periods, "1 (left out): it counts forcing periods, and this system "
+                                 "has no [[harmonic]] force")
+        if rate_state:
+            result = rate_state_cycle(system, x0, v0, psi0=_psi(psi0, system), transient=transient,
+                                      tol=1e-7 if tol is None else tol, max_iter=max_iter)
         else:
-            if periods != 1:
-                raise ParameterError("--periods", periods, "1 (left out): it counts forcing periods, and this system "
-                                     "has no [[harmonic]] force")
-            result = limit_cycle(system, _numbers("--x0", x0, n), _numbers("--v0", v0, n), transient=transient,
-                                 tol=tol, max_iter=max_iter)
+            common = {"transient": 100.0 if transient is None else transient, "tol": 1e-10 if tol is None else tol,
+                      "max_iter": max_iter}
+            result = (forced_response(system, x0, v0, periods=periods, **common) if system.harmonics
+                      else limit_cycle(system, x0, v0, **common))
     _emit(result.to_dict(), json, "periodic response" if system.harmonics else "limit cycle")
     if out is not None:
         write_netcdf(result.to_xarray(), out)

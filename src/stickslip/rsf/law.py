@@ -90,7 +90,10 @@ class RateState:
         if not self.regularized:
             return self.f0 + self.a * (log_v - math.log(self.v_ref)) + self.b_values @ psi, self.a, 1.0
         log_z = log_v - math.log(2.0 * self.v_ref) + big_psi / self.a
-        if np.real(log_z) > _LARGE_LOG:
+        if np.ndim(log_z):  # many states at once (a run's samples)
+            big = np.real(log_z) > _LARGE_LOG
+            mu = self.a * np.where(big, log_z + math.log(2.0), np.arcsinh(np.exp(np.where(big, 0.0, log_z))))
+        elif np.real(log_z) > _LARGE_LOG:
             mu = self.a * (log_z + math.log(2.0))
         else:
             mu = self.a * np.arcsinh(np.exp(log_z))

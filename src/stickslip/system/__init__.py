@@ -19,6 +19,7 @@ from .forced import ForcedResponse, forced_response
 from .flow import Flow
 from .model import Contact, Harmonic, System
 from .rate_state import RateStateRun, RateStateSteady, is_rate_state, rate_state_simulate, rate_state_steady
+from .rate_state_cycle import RateStateCycle, rate_state_cycle
 from .simulate import Segment, SystemRun, choose_states, simulate
 from .steady import SteadySliding, steady_sliding
 from .symmetry import RelativeCycle, cell_symmetry, relative_cycle
@@ -28,4 +29,4 @@ __all__ = ["Contact", "System", "Harmonic", "Flow", "SystemRun", "Segment", "sim
            "SteadySliding", "steady_sliding", "burridge_knopoff", "RelativeCycle", "cell_symmetry",
            "relative_cycle", "without_own", "SystemBranch", "continue_system", "file_parameter", "RateStateRun",
            "RateStateSteady", "is_rate_state", "rate_state_simulate", "rate_state_steady", "ForcedResponse",
-           "forced_response"]
+           "forced_response", "RateStateCycle", "rate_state_cycle"]

@@ -97,6 +97,18 @@ class RateStateEquations:
             rates[self.offsets[i]:self.offsets[i + 1]] = law.state_rate(log_v, psi)
         return vr, forces, rates
 
+    def sampled(self, Y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``(slip rates, friction forces)`` at each row of ``Y`` (states a run accepted: at once)."""
+        n = self.n
+        vr = self.V[None, :] - Y[:, n:2 * n] @ self.system.directions
+        forces = np.empty_like(vr)
+        for i, law in enumerate(self.laws):
+            log_v = np.log(np.maximum(np.abs(vr[:, i]), _TINY))
+            psi = Y[:, 2 * n + self.offsets[i]:2 * n + self.offsets[i + 1]].T
+            mu = np.broadcast_to(law.friction(log_v, psi)[0], log_v.shape)
+            forces[:, i] = np.where(vr[:, i] >= 0, 1.0, -1.0) * self.N[i] * mu
+        return vr, forces
+
     def jacobian(self, t, y):
         """``d y' / d y`` by complex steps (exact to round-off: the laws take complex arguments)."""
         return complex_jacobian(lambda z: self(t, z), y)
@@ -330,12 +342,8 @@ def rate_state_simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *
                               "stops it too")
     Y = sol.y.T
     k, states = len(eq.laws), max(law.states for law in eq.laws)
-    slip, force = np.empty((samples, k)), np.empty((samples, k))
+    slip, force = eq.sampled(Y)
     psi = np.full((samples, k, states), np.nan)
-    for j in range(samples):
-        slip[j], f, _ = (np.real(a) for a in eq.forces(Y[j]))
-        force[j] = f
-        for i in range(k):
-            p = eq.psi(Y[j], i)
-            psi[j, i, :p.size] = p
+    for i in range(k):
+        psi[:, i, :eq.laws[i].states] = Y[:, 2 * n + eq.offsets[i]:2 * n + eq.offsets[i + 1]]
     return RateStateRun(times, Y[:, :n].copy(), Y[:, n:2 * n].copy(), slip, force, psi)

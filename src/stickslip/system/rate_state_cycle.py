@@ -1,0 +1,150 @@
+"""Limit cycles of systems with rate-and-state contacts, and their Floquet multipliers.
+
+The motion is smooth (no contact sticks), so a cycle is a periodic orbit of the equations in
+``y = (x, x', psi)``: found by shooting with Newton's method, its monodromy from the
+variational equations (`stickslip.orbits`). The start: the motion from a perturbed steady
+sliding (or a given start) after a transient, the period between its last two upward crossings
+of contact 0's slip rate through its surface speed. An unstable cycle (beyond a subcritical Hopf
+point) is found too when the start is near it; from a transient, a motion settles only on a
+stable one.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import xarray as xr
+
+from ..cf import finish
+from ..errors import NoSolutionError, ParameterError
+from ..orbits import periodic_orbit
+from ..quantities import COMMON, SYSTEM as Q
+from ..results import Result
+from .floquet import without_own
+from .model import System
+from .rate_state import LONGEST, RateStateEquations, RateStateRun, rate_state_simulate, rate_state_steady
+
+__all__ = ["RateStateCycle", "rate_state_cycle"]
+
+#: Samples per period of the linear oscillation in the transient (where the period is read).
+SAMPLES_PER_PERIOD = 200
+#: A swing of the slip rate smaller by this fraction than a period before: the motion still decays.
+DECAY = 1e-3
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class RateStateCycle(Result):
+    """A limit cycle of a system with rate-and-state contacts: its ``period``, the state ``x0``,
+    ``v0``, ``psi0`` (one array per contact) where contact 0's slip rate crosses its surface speed
+    upward, the ``multipliers`` (by decreasing modulus; one is the flow's own 1), each contact's
+    smallest and largest slip rate over the cycle (``slip_rate_min``, ``slip_rate_max``) and the
+    half peak-to-peak ``amplitude`` of each degree of freedom."""
+
+    period: float
+    x0: np.ndarray
+    v0: np.ndarray
+    psi0: tuple
+    multipliers: np.ndarray
+    slip_rate_min: np.ndarray
+    slip_rate_max: np.ndarray
+    amplitude: np.ndarray
+    MODEL = "system"
+
+    @property
+    def stable(self) -> bool:
+        """Every multiplier but the flow's own inside the unit circle."""
+        return bool(np.all(np.abs(without_own(self.multipliers)) < 1.0))
+
+    def to_dict(self) -> dict:
+        return {"period": self.period, "stable": self.stable, "multipliers_abs": np.abs(self.multipliers).tolist(),
+                "amplitude": self.amplitude.tolist(), "slip_rate_min": self.slip_rate_min.tolist(),
+                "slip_rate_max": self.slip_rate_max.tolist(), "x0": self.x0.tolist(), "v0": self.v0.tolist(),
+                "psi0": [p.tolist() for p in self.psi0]}
+
+    def to_xarray(self) -> xr.Dataset:
+        """Units and meanings from the declarations (`stickslip.cf.finish`)."""
+        m = self.multipliers
+        ds = xr.Dataset(
+            {"multiplier_real": ("multiplier", m.real), "multiplier_imag": ("multiplier", m.imag),
+             "x0": ("dof", self.x0), "v0": ("dof", self.v0), "amplitude": ("dof", self.amplitude),
+             "slip_rate_min": ("contact", self.slip_rate_min), "slip_rate_max": ("contact", self.slip_rate_max)},
+            coords={"dof": np.arange(self.x0.size), "contact": np.arange(self.slip_rate_min.size)},
+            attrs={"period": self.period, "stable": int(self.stable)})
+        return finish(ds, "system with rate-and-state contacts: limit cycle and its Floquet multipliers", "system")
+
+
+def _states(eq: RateStateEquations, run: RateStateRun) -> np.ndarray:
+    """The samples of ``run`` as rows of ``y = (x, x', psi)``."""
+    psi = [run.psi[:, i, :law.states] for i, law in enumerate(eq.laws)]
+    return np.hstack([run.x, run.v, *psi])
+
+
+def _crossings(run: RateStateRun, V: float) -> np.ndarray:
+    """Sample indices after which contact 0's slip rate crosses ``V`` upward (log scale)."""
+    r = np.log(np.maximum(run.slip_rate[:, 0], 1e-300) / V) if V > 0 else run.slip_rate[:, 0] - V
+    return np.nonzero((r[:-1] < 0) & (r[1:] >= 0))[0]
+
+
+def _psi_lists(eq: RateStateEquations, y: np.ndarray) -> list:
+    return [eq.psi(y, i).copy() for i in range(len(eq.laws))]
+
+
+def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: float | None = None,
+                     rtol: float = 1e-9, tol: float = 1e-7, max_iter: int = 30) -> RateStateCycle:
+    """The limit cycle the motion from ``(x0, v0, psi0)`` (default: steady sliding with contact 0's
+    first state variable raised by 0.01) settles on after ``transient`` seconds (default: the time
+    for steady sliding's leading growth rate to multiply it by 1000, and 20 periods), solved by
+    Newton's method to ``tol`` (of each variable's range over the cycle; the runs by Radau IIA at
+    ``rtol``, the monodromy by central differences: multipliers to about ``1e4 rtol``)."""
+    eq = RateStateEquations(system)
+    system.unforced("a limit cycle")
+    rtol, tol, max_iter = Q.check("rtol", rtol), COMMON["tol"].check(tol, "tol"), Q.check("max_iter", max_iter)
+    steady = rate_state_steady(system)
+    lead = steady.eigenvalues[0]
+    if abs(lead.imag) == 0.0:
+        raise NoSolutionError("steady sliding's leading eigenvalue is real: no oscillation to follow to a cycle")
+    linear = 2.0 * math.pi / abs(lead.imag)
+    scale = max(float(law.dc_values.max()) / max(abs(V), law.v_ref) for law, V in zip(eq.laws, eq.V))
+    if transient is None:  # the perturbation's growth to the cycle's size, then 20 periods to settle
+        transient = min(math.log(1e3) / max(lead.real, 1e-300) + 20.0 * linear, 0.9 * LONGEST * scale)
+    transient = Q.check("transient", transient)
+    if x0 is None and v0 is None and psi0 is None:
+        psi0 = [p.copy() for p in steady.psi]
+        psi0[0][0] += 0.01
+    samples = int(min(2e5, max(2001, SAMPLES_PER_PERIOD * transient / linear)))
+    try:
+        run = rate_state_simulate(system, x0, v0, transient, psi0=psi0, samples=samples, rtol=rtol)
+    except ParameterError as err:
+        if err.name != "t_end":
+            raise
+        raise ParameterError("transient", transient, err.allowed, also=err.also) from None
+    V0 = float(eq.V[0])
+    up = _crossings(run, abs(V0))
+    if up.size < 3:
+        raise NoSolutionError(f"fewer than three oscillations of contact 0's slip rate about its surface speed in the "
+                              f"transient of {transient:.6g} s: the motion settled (steady sliding is stable, or the "
+                              "cycle is far from this start), no cycle to follow")
+    Y = _states(eq, run)
+    swing = [np.ptp(np.log(run.slip_rate[a + 1:b + 2, 0])) for a, b in zip(up[-3:-1], up[-2:])]
+    if swing[-1] < (1.0 - DECAY) * swing[0]:
+        raise NoSolutionError(f"the oscillation still decays at the end of the transient of {transient:.6g} s (contact "
+                              f"0's slip rate swings {swing[-1]:.3g} in its logarithm, {swing[0]:.3g} a period "
+                              "before): toward steady sliding, no cycle to settle on (a longer transient if it is "
+                              "still settling)")
+    last = Y[up[-1] + 1]
+    period = float(run.t[up[-1] + 1] - run.t[up[-2] + 1])
+    span = Y[up[-2] + 1:up[-1] + 2]
+    size = np.maximum(np.ptp(span, axis=0), 1e-9 * np.maximum(np.abs(span).max(axis=0), 1e-300))
+    if np.all(np.ptp(span[:, :eq.n], axis=0) <= 1e-9 * np.maximum(np.abs(span[:, :eq.n]).max(axis=0), 1e-300)):
+        raise NoSolutionError("the motion settled to steady sliding in the transient: no cycle to follow")
+    y0, period, mult = periodic_orbit(eq.guarded, eq.guarded_jacobian, last, period, size, rtol=rtol, tol=tol,
+                                      max_iter=max_iter)
+    n = eq.n
+    if np.all(np.abs(mult - 1.0) > 1e-3) or np.max(np.abs((y0 - last) / size)) > 1e3:
+        raise NoSolutionError("Newton's method left the cycle for steady sliding (no multiplier is the flow's own 1): "
+                              "no cycle near the motion after the transient")
+    one = rate_state_simulate(system, y0[:n], y0[n:2 * n], period, psi0=_psi_lists(eq, y0), samples=2001, rtol=rtol)
+    return RateStateCycle(period, y0[:n].copy(), y0[n:2 * n].copy(), tuple(_psi_lists(eq, y0)), mult,
+                          one.slip_rate.min(axis=0), one.slip_rate.max(axis=0), 0.5 * np.ptp(one.x, axis=0))
