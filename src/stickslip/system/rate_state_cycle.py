@@ -122,17 +122,17 @@ def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: 
         raise ParameterError("transient", transient, err.allowed, also=err.also) from None
     V0 = float(eq.V[0])
     up = _crossings(run, abs(V0))
-    if up.size < 3:
-        raise NoSolutionError(f"fewer than three oscillations of contact 0's slip rate about its surface speed in the "
+    if up.size < 5:
+        raise NoSolutionError(f"fewer than five oscillations of contact 0's slip rate about its surface speed in the "
                               f"transient of {transient:.6g} s: the motion settled (steady sliding is stable, or the "
                               "cycle is far from this start), no cycle to follow")
     Y = _states(eq, run)
-    swing = [np.ptp(np.log(run.slip_rate[a + 1:b + 2, 0])) for a, b in zip(up[-3:-1], up[-2:])]
-    if swing[-1] < (1.0 - DECAY) * swing[0]:
+    swing = np.array([np.ptp(np.log(run.slip_rate[a + 1:b + 2, 0])) for a, b in zip(up[-5:-1], up[-4:])])
+    if swing.size >= 3 and np.all(swing[1:] < (1.0 - DECAY) * swing[:-1]):  # shrinking period after period
         raise NoSolutionError(f"the oscillation still decays at the end of the transient of {transient:.6g} s (contact "
-                              f"0's slip rate swings {swing[-1]:.3g} in its logarithm, {swing[0]:.3g} a period "
-                              "before): toward steady sliding, no cycle to settle on (a longer transient if it is "
-                              "still settling)")
+                              f"0's slip rate swings {swing[-1]:.3g} in its logarithm, {swing[0]:.3g} "
+                              f"{swing.size - 1} periods before): toward steady sliding, no cycle to settle on (a "
+                              "longer transient if it is still settling)")
     last = Y[up[-1] + 1]
     period = float(run.t[up[-1] + 1] - run.t[up[-2] + 1])
     span = Y[up[-2] + 1:up[-1] + 2]
