@@ -281,11 +281,11 @@ def _refused(build, p: float, section: tuple) -> str:
     try:
         system = build(p)
         if section[0] == FORCED:
-            T = section[1] * forcing_period(system)
-            if T > longest_run(system)[0]:
+            T, longest = section[1] * forcing_period(system), longest_run(system)[0]
+            if T > longest:
                 raise ParameterError("harmonics", [h.frequency for h in system.harmonics],
                                      f"a forcing period whose {section[1]} period(s) a run can span (here {T:.6g} s, "
-                                     f"longer than {longest_run(system)[0]:.6g} s)")
+                                     f"longer than {longest:.6g} s)")
     except ParameterError as err:
         return str(err)
     return ""

@@ -49,6 +49,23 @@ def _matrix(name: str, value, n: int, quantity: str) -> np.ndarray:
     return arr
 
 
+def _members(name: str, value, kind: type, vectors: tuple, n: int, least: int, most: int, allowed: str) -> tuple:
+    """``value`` as a tuple of ``least`` to ``most`` ``kind`` s whose ``vectors`` (fields, None or
+    arrays) have ``n`` entries; a `ParameterError` naming ``name[i].field`` otherwise."""
+    items = tuple(value) if isinstance(value, (list, tuple)) else None
+    if items is None or not least <= len(items) <= most:
+        raise ParameterError(name, value, allowed)
+    for i, item in enumerate(items):
+        if not isinstance(item, kind):
+            raise ParameterError(f"{name}[{i}]", item, f"a stickslip.system.{kind.__name__}")
+        for field_name in vectors:
+            vec = getattr(item, field_name)
+            if vec is not None and vec.shape != (n,):
+                raise ParameterError(f"{name}[{i}].{field_name}", vec.tolist(),
+                                     f"{n} numbers (one per degree of freedom)")
+    return items
+
+
 @dataclass(frozen=True, eq=False)
 class Contact:
     """One frictional contact: ``direction`` ``w`` (n numbers), ``normal_force`` ``N`` [N] > 0,
@@ -187,29 +204,11 @@ class System:
         object.__setattr__(self, "damping", C)
         f = np.zeros(n) if self.force is None else _vector("force", self.force, n, "force")
         object.__setattr__(self, "force", f)
-        contacts = tuple(self.contacts) if isinstance(self.contacts, (list, tuple)) else None
-        if contacts is None or not 1 <= len(contacts) <= MAX_CONTACTS:
-            raise ParameterError("contacts", self.contacts, f"a list of 1 to {MAX_CONTACTS} Contact")
-        for i, c in enumerate(contacts):
-            if not isinstance(c, Contact):
-                raise ParameterError(f"contacts[{i}]", c, "a stickslip.system.Contact")
-            for name in ("direction", "normal_direction"):
-                vec = getattr(c, name)
-                if vec is not None and vec.shape != (n,):
-                    raise ParameterError(f"contacts[{i}].{name}", vec.tolist(), f"{n} numbers (one per degree of freedom)")
-        object.__setattr__(self, "contacts", contacts)
-        harmonics = tuple(self.harmonics) if isinstance(self.harmonics, (list, tuple)) else None
-        if harmonics is None or len(harmonics) > MAX_HARMONICS:
-            raise ParameterError("harmonics", self.harmonics, f"a list of at most {MAX_HARMONICS} Harmonic")
-        for i, h in enumerate(harmonics):
-            if not isinstance(h, Harmonic):
-                raise ParameterError(f"harmonics[{i}]", h, "a stickslip.system.Harmonic")
-            for name in ("cos", "sin"):
-                vec = getattr(h, name)
-                if vec is not None and vec.shape != (n,):
-                    raise ParameterError(f"harmonics[{i}].{name}", vec.tolist(),
-                                         f"{n} numbers (one per degree of freedom)")
-        object.__setattr__(self, "harmonics", harmonics)
+        object.__setattr__(self, "contacts", _members("contacts", self.contacts, Contact,
+                                                      ("direction", "normal_direction"), n, 1, MAX_CONTACTS,
+                                                      f"a list of 1 to {MAX_CONTACTS} Contact"))
+        object.__setattr__(self, "harmonics", _members("harmonics", self.harmonics, Harmonic, ("cos", "sin"), n, 0,
+                                                       MAX_HARMONICS, f"a list of at most {MAX_HARMONICS} Harmonic"))
 
     @property
     def dofs(self) -> int:
@@ -227,12 +226,14 @@ class System:
 
     @property
     def forcing_matrix(self) -> np.ndarray:
-        """``B``, the harmonic forces ``B e`` (n x `extra`: each harmonic's cos and sin amplitudes)."""
-        def column(h, name):
-            vec = getattr(h, name)
-            return np.zeros(self.dofs) if vec is None else vec
-        cols = [column(h, name) for h in self.harmonics for name in ("cos", "sin")]
-        return np.stack(cols, axis=1) if cols else np.zeros((self.dofs, 0))
+        """``B``, the harmonic forces ``B e`` (n x `extra`: each harmonic's cos and sin amplitudes;
+        computed once)."""
+        if "B" not in self._cache:
+            cols = [np.zeros(self.dofs) if getattr(h, name) is None else getattr(h, name)
+                    for h in self.harmonics for name in ("cos", "sin")]
+            self._cache["B"] = np.stack(cols, axis=1) if cols else np.zeros((self.dofs, 0))
+            self._cache["B"].setflags(write=False)
+        return self._cache["B"]
 
     @property
     def rotation(self) -> np.ndarray:
@@ -251,7 +252,10 @@ class System:
         return np.concatenate([x, v, self.phases(t), [1.0]])
 
     def external_force(self, t: float) -> np.ndarray:
-        """``f(t)``, the external force at time ``t``."""
+        """``f(t)``, the external force at time ``t`` (the constant ``force`` itself without harmonics:
+        the rate-and-state equations ask for it at every evaluation)."""
+        if not self.harmonics:
+            return self.force
         return self.force + self.forcing_matrix @ self.phases(t)
 
     @property
