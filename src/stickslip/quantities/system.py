@@ -25,6 +25,8 @@ SYSTEM = Domain("system", units="SI (or any consistent units)", quantities=[
       symbol="W", why="from a tide to ultrasound and beyond; the event search steps a quarter of 1/W at most"),
     Q("harmonic_force", "N", "entry of the amplitude of a harmonic part of the external force (cos or sin)",
       "[-1e15, 1e15]"),
+    Q("history_time", "s", "time of a point of a force history (the force linear between points)", "[0, 1e15]",
+      why="a run starts at t = 0; 1e15 s is thirty million years"),
     Q("direction", "1", "entry of a contact's direction w (its slip velocity is V - w . x')", "[-1e6, 1e6]",
       symbol="w", why="a lever arm of up to a million: beyond it the contact's force dwarfs every other"),
     Q("surface_speed", "m/s", "speed of the surface a contact rubs on", "[-1e4, 1e4]", symbol="V",

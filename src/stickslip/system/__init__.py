@@ -1,6 +1,7 @@
 """Linear structures with several frictional contacts: exact event-driven switching.
 
-`System` (``M x'' + C x' + K x = f + sum_i w_i F_i``) with its `Contact` s; `simulate` advances it
+`System` (``M x'' + C x' + K x = f(t) + sum_i w_i F_i``) with its `Contact` s (and a force in
+time: `Harmonic` s, a `ForceHistory`); `simulate` advances it
 through closed-form flows between contact events (`Flow`); `monodromy` differentiates a run
 (saltation matrices at its events) and `limit_cycle` finds the periodic orbit a motion settles
 on, with its Floquet multipliers; `steady_sliding` the resting state under sliding contacts and its
@@ -17,14 +18,14 @@ from .continuation import SystemBranch, continue_system, file_parameter
 from .floquet import SystemCycle, limit_cycle, monodromy, saltation, without_own
 from .forced import ForcedResponse, forced_response
 from .flow import Flow
-from .model import Contact, Harmonic, System
+from .model import Contact, ForceHistory, Harmonic, System
 from .rate_state import RateStateRun, RateStateSteady, is_rate_state, rate_state_simulate, rate_state_steady
 from .rate_state_cycle import RateStateCycle, rate_state_cycle
 from .simulate import Segment, SystemRun, choose_states, simulate
 from .steady import SteadySliding, steady_sliding
 from .symmetry import RelativeCycle, cell_symmetry, relative_cycle
 
-__all__ = ["Contact", "System", "Harmonic", "Flow", "SystemRun", "Segment", "simulate", "choose_states", "monodromy",
+__all__ = ["Contact", "System", "Harmonic", "ForceHistory", "Flow", "SystemRun", "Segment", "simulate", "choose_states", "monodromy",
            "saltation", "SystemCycle", "limit_cycle", "load_system", "system_from_dict",
            "SteadySliding", "steady_sliding", "burridge_knopoff", "RelativeCycle", "cell_symmetry",
            "relative_cycle", "without_own", "SystemBranch", "continue_system", "file_parameter", "RateStateRun",

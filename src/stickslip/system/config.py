@@ -19,6 +19,10 @@ fd = 0.4
 [[harmonic]]                             # optional, any number: a force cos cos(W t) + sin sin(W t)
 frequency = 1.1                          # rad/s
 cos = [0.5, 0.0]                         # N, one per degree of freedom (cos, sin or both)
+
+[history]                                # optional: a force given in time, linear between the points
+times = [0.0, 10.0, 20.0]                # s, increasing
+forces = [[0.0, 0.0], [1.0, 0.0], [1.0, 0.0]]   # N, one list per time, one number per degree of freedom
 ```
 
 A rate-and-state contact (every contact then: `stickslip.system.rate_state`) gives, instead of
@@ -46,12 +50,13 @@ from pathlib import Path
 from ..errors import MISSING, ParameterError
 from ..friction import make_law
 from ..rsf import RateState
-from .model import Contact, Harmonic, System
+from .model import Contact, ForceHistory, Harmonic, System
 
 __all__ = ["load_system", "read_table", "system_from_dict", "as_file_keys"]
 
-_TOP = ("mass", "stiffness", "damping", "force", "contact", "harmonic")
+_TOP = ("mass", "stiffness", "damping", "force", "contact", "harmonic", "history")
 _HARMONIC = ("frequency", "cos", "sin")
+_HISTORY = ("times", "forces")
 _CONTACT = ("direction", "normal_force", "surface_speed", "law", "fs", "fd", "tau", "name", "normal_direction",
             "normal_stiffness")
 #: The keys of a rate-and-state law (`stickslip.rsf.RateState`'s fields), with ``law = "rate-state"``.
@@ -110,6 +115,23 @@ def _harmonic(i: int, table) -> Harmonic:
         raise _renamed(err, where) from None
 
 
+def _history(table) -> ForceHistory | None:
+    if table is None:
+        return None
+    if not isinstance(table, dict):
+        raise ParameterError("history", table, "a [history] table of times and forces")
+    unknown = sorted(set(table) - set(_HISTORY))
+    if unknown:
+        raise ParameterError("history." + unknown[0], table[unknown[0]], "a key of a history: times, forces")
+    for key in _HISTORY:
+        if key not in table:
+            raise ParameterError("history." + key, MISSING, "given")
+    try:
+        return ForceHistory(table["times"], table["forces"])
+    except ParameterError as err:
+        raise _renamed(err, "history.") from None
+
+
 def system_from_dict(data: dict) -> System:
     """The `System` a parsed TOML file describes (see the module's docstring)."""
     if not isinstance(data, dict):
@@ -128,9 +150,10 @@ def system_from_dict(data: dict) -> System:
     if not isinstance(tables, list):
         raise ParameterError("harmonic", tables, "one [[harmonic]] table per harmonic force")
     harmonics = [_harmonic(i, t) for i, t in enumerate(tables)]
+    history = _history(data.get("history"))
     try:
         return System(data["mass"], data["stiffness"], contacts, damping=data.get("damping"),
-                      force=data.get("force"), harmonics=harmonics)
+                      force=data.get("force"), harmonics=harmonics, history=history)
     except ParameterError as err:
         raise as_file_keys(err) from None
 

@@ -9,7 +9,9 @@ with laws affine in the slip speed (``mu = mu0 - mu1 |v_r|``), the motion is lin
 so ``lam = -D^-1 W_S^T M^-1 r`` (``D = W_S^T M^-1 W_S``, minimum-norm where sticking contacts are
 redundant) and ``z = (x, v, e, 1)`` obeys ``z' = A z``: ``z(t) = expm(t A) z(0)``, exact to round-off.
 The harmonic forces ``B e`` (`System.harmonics`) ride on ``e = (cos W t, sin W t, ...)``, whose
-motion ``e' = G e`` is a rotation: ``f`` above is ``f + B e``, affine in ``z`` as the rest.
+motion ``e' = G e`` is a rotation: ``f`` above is ``f + B e``, affine in ``z`` as the rest. A
+`ForceHistory` adds the time to ``e`` (``t' = 1``) and, on each of its pieces, ``offset + rate t``
+to ``f``: a flow is then that of one piece.
 Every switching function is linear in ``z``: a slipping contact's ``s_j v_r``, a sticking one's
 ``f_s N -+ F``, a unilateral contact's ``N(x)`` (opening; ``-N(x)`` while open: closing; a normal
 force ``N(x) = N_0 - k_n n . x`` adds ``k_n n n^T`` to the stiffness and, slipping, the friction
@@ -50,9 +52,10 @@ STATE_FLAGS = {"flag_values": np.array([-1, 0, 1, OPEN], dtype=np.int8), "flag_m
 
 
 class Flow:
-    """The flow of the contact state ``states`` (a tuple of -1, 0, 1 per contact)."""
+    """The flow of the contact state ``states`` (a tuple of -1, 0, 1 per contact), on the ``piece``
+    of the system's `ForceHistory` (if it has one)."""
 
-    def __init__(self, system: System, states: tuple[int, ...]):
+    def __init__(self, system: System, states: tuple[int, ...], piece: int = 0):
         n, size = system.dofs, system.size
         self.states = tuple(int(s) for s in states)
         W, Minv = system.directions, system.inverse_mass
@@ -61,6 +64,11 @@ class Flow:
         k_eff = system.stiffness.copy()
         g = system.force.copy()
         B = system.forcing_matrix  # the harmonic forces B e: carried with g (columns 2n:-1 of z)
+        if system.history is not None:  # this piece's offset + rate t (t: the last of e)
+            offset, rate, _ = system.history.piece(piece)
+            g += offset
+            B = B.copy()
+            B[:, -1] = rate
         e = slice(2 * n, size - 1)
         force_rows = np.zeros((len(self.states), size))
         normal = system.normal_rows.copy()
@@ -111,6 +119,7 @@ class Flow:
         A[n:2 * n, -1] = P @ g
         A[n:2 * n, e] = P @ B
         A[e, e] = system.rotation
+        A[e, -1] = system.clock
         self.A, self.n = A, n
         self.force_rows = force_rows
         slip = np.zeros((len(self.states), size))  # v_r = V - w . v
@@ -154,11 +163,12 @@ class Flow:
         self._taken = 0  # steps of the event search on this flow (its step's exponential once many)
 
     @classmethod
-    def cached(cls, system: System, states: tuple, cache: dict) -> "Flow":
-        """The flow of ``states``, built once per ``cache`` (a run or a monodromy revisits few states)."""
+    def cached(cls, system: System, states: tuple, cache: dict, piece: int = 0) -> "Flow":
+        """The flow of ``states``, built once per ``cache`` (a run or a monodromy revisits few states;
+        one cache per ``piece`` of a force history)."""
         flow = cache.get(states)
         if flow is None:
-            flow = cache[states] = cls(system, states)
+            flow = cache[states] = cls(system, states, piece)
         return flow
 
     def propagate(self, z: np.ndarray, t: float) -> np.ndarray:

@@ -61,9 +61,11 @@ def stroboscopic_multipliers(system: System, run: SystemRun, states: tuple) -> n
 
 def forcing_period(system: System) -> float:
     """The period ``T`` of the system's force (`System.forcing_period`); a `ParameterError` naming
-    ``harmonics`` where the force is not periodic."""
+    ``harmonics`` where the force is not periodic (``history`` with a `ForceHistory`)."""
     if not isinstance(system, System):
         raise ParameterError("system", system, "a stickslip.system.System")
+    if system.history is not None:
+        system.unforced("a periodic response")
     if not system.harmonics:
         raise ParameterError("harmonics", [], "at least one Harmonic (a periodic force); the cycle of a system "
                              "under a constant force is stickslip.system.limit_cycle's")

@@ -1,8 +1,9 @@
 """A linear structure with several frictional contacts.
 
-    M x'' + C x' + K x = f(t) + sum_i w_i F_i,   f(t) = f + sum_k (c_k cos W_k t + s_k sin W_k t),
+    M x'' + C x' + K x = f(t) + sum_i w_i F_i,   f(t) = f + sum_k (c_k cos W_k t + s_k sin W_k t) + h(t),
 
-``x`` the ``n`` degrees of freedom, ``f(t)`` a constant force and any number of `Harmonic` s.
+``x`` the ``n`` degrees of freedom, ``f(t)`` a constant force, any number of `Harmonic` s and a
+`ForceHistory` ``h(t)``, linear between given points (any force in time, to second order in its spacing).
 Contact ``i`` acts along its direction ``w_i`` (a vector
 of ``n`` numbers: a unit vector for a contact on one degree of freedom, a lever arm or a
 difference of two for others) against a surface moving at ``V_i``: its slip velocity is
@@ -27,10 +28,12 @@ from ..friction import FrictionLaw
 from ..rsf import RateState
 from ..quantities import MAX_CONTACTS, MAX_SYSTEM_DOFS, SYSTEM as Q
 
-__all__ = ["Contact", "System", "Harmonic", "MAX_HARMONICS"]
+__all__ = ["Contact", "System", "Harmonic", "ForceHistory", "MAX_HARMONICS", "MAX_HISTORY_POINTS"]
 
 #: The most harmonics of the external force (each adds two states to the flows).
 MAX_HARMONICS = 64
+#: The most points of a force history (each piece between two is a flow of its own).
+MAX_HISTORY_POINTS = 1_000_000
 
 
 def _vector(name: str, value, n: int | None, quantity: str) -> np.ndarray:
@@ -166,11 +169,62 @@ class Harmonic:
 
 
 @dataclass(frozen=True, eq=False)
+class ForceHistory:
+    """A force given in time: ``forces[k]`` (n numbers [N]) at ``times[k]`` [s] (increasing), linear
+    in between, ``forces[0]`` before the first time and ``forces[-1]`` after the last. Any force
+    ``f(t)`` sampled every ``dt`` is followed to ``O(dt^2)``; between the points the motion stays
+    exact: the time is one more state of the flows and each piece's force is affine in it."""
+
+    times: np.ndarray
+    forces: np.ndarray
+
+    def __post_init__(self):
+        t = np.asarray(Q["history_time"].check_array(self.times, "times"), dtype=float)
+        if t.ndim != 1 or not 1 <= t.size <= MAX_HISTORY_POINTS:
+            raise ParameterError("times", self.times, f"a list of 1 to {MAX_HISTORY_POINTS} times")
+        if t.size > 1 and not np.all(np.diff(t) > 0):
+            k = int(np.argmin(np.diff(t) > 0))
+            raise ParameterError("times", self.times, f"increasing (times[{k + 1}] = {t[k + 1]:.17g} follows "
+                                 f"times[{k}] = {t[k]:.17g})")
+        f = np.asarray(Q["force"].check_array(self.forces, "forces"), dtype=float)
+        if f.ndim == 1 and t.size == 1:
+            f = f[None, :]
+        if f.ndim != 2 or f.shape[0] != t.size:
+            raise ParameterError("forces", self.forces, f"one list of forces per time ({t.size} lists of one number "
+                                 "per degree of freedom)", also=("times",))
+        for name, arr in (("times", t), ("forces", f)):
+            arr.setflags(write=False)
+            object.__setattr__(self, name, arr)
+
+    @property
+    def pieces(self) -> int:
+        """The pieces of ``h(t)``: before the first time, between each two, after the last."""
+        return self.times.size + 1
+
+    def piece(self, k: int) -> tuple[np.ndarray, np.ndarray, float]:
+        """``(offset, rate, end)``: ``h(t) = offset + rate t`` on piece ``k``, which lasts until ``end``."""
+        t, f = self.times, self.forces
+        if k == 0 or k >= t.size:
+            return f[min(k, t.size) - 1 if k else 0], np.zeros(f.shape[1]), (t[0] if k == 0 else np.inf)
+        rate = (f[k] - f[k - 1]) / (t[k] - t[k - 1])
+        return f[k - 1] - rate * t[k - 1], rate, t[k]
+
+    def piece_at(self, t: float) -> int:
+        """The piece that holds the time ``t`` (a time on a point begins the next piece)."""
+        return int(np.searchsorted(self.times, t, side="right"))
+
+    def __call__(self, t: float) -> np.ndarray:
+        """``h(t)``."""
+        return np.array([np.interp(t, self.times, col) for col in self.forces.T])
+
+
+@dataclass(frozen=True, eq=False)
 class System:
     """Matrices ``mass`` M (symmetric positive definite), ``stiffness`` K and ``damping`` C
     (any n x n; default none), a constant ``force`` f (n numbers; default none), the
-    ``contacts``, and ``harmonics``: `Harmonic` parts of the force (default none). K and C need
-    not be symmetric (follower forces, gyroscopic terms)."""
+    ``contacts``, ``harmonics``: `Harmonic` parts of the force (default none), and a ``history``:
+    a `ForceHistory` added to the force (default none). K and C need not be symmetric (follower
+    forces, gyroscopic terms)."""
 
     mass: np.ndarray
     stiffness: np.ndarray
@@ -178,6 +232,7 @@ class System:
     damping: np.ndarray | None = None
     force: np.ndarray | None = None
     harmonics: tuple = ()
+    history: ForceHistory | None = None
     _chol: np.ndarray = field(init=False, repr=False)
     _cache: dict = field(init=False, repr=False, default_factory=dict)
 
@@ -209,6 +264,12 @@ class System:
                                                       f"a list of 1 to {MAX_CONTACTS} Contact"))
         object.__setattr__(self, "harmonics", _members("harmonics", self.harmonics, Harmonic, ("cos", "sin"), n, 0,
                                                        MAX_HARMONICS, f"a list of at most {MAX_HARMONICS} Harmonic"))
+        if self.history is not None:
+            if not isinstance(self.history, ForceHistory):
+                raise ParameterError("history", self.history, "a stickslip.system.ForceHistory")
+            if self.history.forces.shape[1] != n:
+                raise ParameterError("history.forces", self.history.forces.tolist(),
+                                     f"{n} numbers per time (one per degree of freedom)")
 
     @property
     def dofs(self) -> int:
@@ -216,8 +277,9 @@ class System:
 
     @property
     def extra(self) -> int:
-        """The states ``e = (cos W_1 t, sin W_1 t, ...)`` of the harmonic forces: two per `Harmonic`."""
-        return 2 * len(self.harmonics)
+        """The states ``e = (cos W_1 t, sin W_1 t, ..., t)`` of a force changing in time: two per
+        `Harmonic`, and the time itself with a `ForceHistory`."""
+        return 2 * len(self.harmonics) + (self.history is not None)
 
     @property
     def size(self) -> int:
@@ -226,26 +288,37 @@ class System:
 
     @property
     def forcing_matrix(self) -> np.ndarray:
-        """``B``, the harmonic forces ``B e`` (n x `extra`: each harmonic's cos and sin amplitudes;
-        computed once)."""
+        """``B``, the harmonic forces ``B e`` (n x `extra`: each harmonic's cos and sin amplitudes, and
+        a column of zeros for the time: a history's rate is its piece's, `ForceHistory.piece`; computed once)."""
         if "B" not in self._cache:
             cols = [np.zeros(self.dofs) if getattr(h, name) is None else getattr(h, name)
                     for h in self.harmonics for name in ("cos", "sin")]
+            cols += [np.zeros(self.dofs)] * (self.history is not None)
             self._cache["B"] = np.stack(cols, axis=1) if cols else np.zeros((self.dofs, 0))
             self._cache["B"].setflags(write=False)
         return self._cache["B"]
 
     @property
+    def clock(self) -> np.ndarray:
+        """``e' = G e + clock``: 1 for the time state of a history, 0 for the harmonics' states."""
+        out = np.zeros(self.extra)
+        if self.history is not None:
+            out[-1] = 1.0
+        return out
+
+    @property
     def rotation(self) -> np.ndarray:
-        """``G``, the motion ``e' = G e`` of the harmonic states (a rotation at each frequency)."""
+        """``G``, the motion ``e' = G e`` of the harmonic states (a rotation at each frequency; the
+        time state of a history moves by `clock`)."""
         G = np.zeros((self.extra, self.extra))
         for k, h in enumerate(self.harmonics):
             G[2 * k, 2 * k + 1], G[2 * k + 1, 2 * k] = -h.frequency, h.frequency
         return G
 
     def phases(self, t: float) -> np.ndarray:
-        """``e(t) = (cos W_1 t, sin W_1 t, ...)``."""
-        return np.array([f(h.frequency * t) for h in self.harmonics for f in (np.cos, np.sin)])
+        """``e(t) = (cos W_1 t, sin W_1 t, ..., t)`` (the time with a history)."""
+        out = [f(h.frequency * t) for h in self.harmonics for f in (np.cos, np.sin)]
+        return np.array(out + [t] * (self.history is not None), dtype=float)
 
     def state(self, x: np.ndarray, v: np.ndarray, t: float = 0.0) -> np.ndarray:
         """``z = (x, v, e(t), 1)``: the flows' state at time ``t``."""
@@ -254,15 +327,14 @@ class System:
     def external_force(self, t: float) -> np.ndarray:
         """``f(t)``, the external force at time ``t`` (the constant ``force`` itself without harmonics:
         the rate-and-state equations ask for it at every evaluation)."""
-        if not self.harmonics:
-            return self.force
-        return self.force + self.forcing_matrix @ self.phases(t)
+        f = self.force if not self.harmonics else self.force + self.forcing_matrix @ self.phases(t)
+        return f if self.history is None else f + self.history(t)
 
     @property
     def forcing_period(self) -> float | None:
         """The period of ``f(t)``: ``2 pi / W`` with ``W`` the lowest frequency when every other is
-        a whole multiple of it (to 1e-12); ``None`` without harmonics or when they are not."""
-        if not self.harmonics:
+        a whole multiple of it (to 1e-12); ``None`` without harmonics, when they are not, or with a history."""
+        if not self.harmonics or self.history is not None:
             return None
         low = min(h.frequency for h in self.harmonics)
         ratios = [h.frequency / low for h in self.harmonics]
@@ -272,7 +344,11 @@ class System:
 
     def unforced(self, what: str) -> None:
         """A `ParameterError` naming ``harmonics`` when the system has harmonic forces: ``what``
-        (a steady state, a cycle found on an event section) needs a force constant in time."""
+        (a steady state, a cycle found on an event section) needs a force constant in time; naming
+        ``history`` with a `ForceHistory`."""
+        if self.history is not None:
+            raise ParameterError("history", f"{self.history.times.size} points", f"none for {what} (a force given in "
+                                 "time has no steady state nor periodic motion; stickslip.system.simulate follows it)")
         if self.harmonics:
             raise ParameterError("harmonics", [h.frequency for h in self.harmonics],
                                  f"none for {what} (a force constant in time); the periodic response to a periodic "

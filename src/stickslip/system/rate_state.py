@@ -212,7 +212,7 @@ def _steady_state(eq: RateStateEquations) -> np.ndarray:
         y[2 * eq.n + eq.offsets[i]:2 * eq.n + eq.offsets[i + 1]] = law.steady_psi(abs(eq.V[i]))
     _, forces, _ = eq.forces(y)
     try:
-        y[:eq.n] = np.linalg.solve(sysm.stiffness, sysm.force + sysm.directions @ forces.real)
+        y[:eq.n] = np.linalg.solve(sysm.stiffness, sysm.external_force(0.0) + sysm.directions @ forces.real)
     except np.linalg.LinAlgError:
         raise ParameterError("stiffness", sysm.stiffness.tolist(), "an invertible matrix for steady sliding (the "
                              "structure held in place by its springs)") from None
@@ -256,7 +256,8 @@ def _given_psi(psi0, eq: RateStateEquations) -> np.ndarray:
 
 
 def start_state(eq: RateStateEquations, x0=None, v0=None, psi0=None) -> np.ndarray:
-    """``y = (x, x', psi)`` at the start: ``x0`` (default: steady sliding's position), ``v0`` (default:
+    """``y = (x, x', psi)`` at the start: ``x0`` (default: steady sliding's position under the force at
+    ``t = 0``), ``v0`` (default:
     rest) and ``psi0`` (one list per contact; default: steady at the start's slip rates), checked."""
     system, n = eq.system, eq.n
     y = np.zeros(eq.size)

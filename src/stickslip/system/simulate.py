@@ -99,17 +99,19 @@ def zero_slip(system: System, z: np.ndarray, stuck: list[int]) -> np.ndarray:
     return z
 
 
-def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, released: dict, flows: dict) -> tuple:
+def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, released: dict, flows: dict,
+                  piece: int = 0) -> tuple:
     """The contact states from ``z`` on: contacts not in ``zero`` keep ``states``; those in
     ``zero`` (at zero slip velocity) stick unless their sticking force exceeds ``f_s N``
-    (released in the force's direction), ``released`` (contact -> sign) slip at once."""
+    (released in the force's direction), ``released`` (contact -> sign) slip at once. ``flows``
+    caches the flows of the force history's ``piece``."""
     st = list(states)
     for i in zero:
         st[i] = released.get(i, 0)
     n = system.dofs
     normals = system.normal_rows @ z
     for _ in range(len(zero) + 1):
-        flow = Flow.cached(system, tuple(st), flows)
+        flow = Flow.cached(system, tuple(st), flows, piece)
         forces = flow.force_rows @ z
         worst, over = None, 0.0
         for i in zero:
@@ -124,7 +126,7 @@ def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, relea
         st[worst] = 1 if forces[worst] > 0 else -1
     moving = [i for i in zero if st[i] != 0]
     if moving:  # released ones: do they slip the way they were released?
-        flow = Flow.cached(system, tuple(st), flows)
+        flow = Flow.cached(system, tuple(st), flows, piece)
         a = flow.acceleration(z)
         terms = np.abs(flow.A[n:2 * n]) @ np.abs(z)  # the size of what the accelerations sum (their round-off)
     for i in moving:
@@ -221,11 +223,14 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
     contact ``states`` to start in (1 slip, 0 stick, -1 reverse slip; default: chosen from the
     start, as at an event) are for a start on a switching line, such as just after an event.
     ``stop_at = (contact, state)`` ends the run just after that contact first enters that state
-    (its samples those before; a return map's run)."""
+    (its samples those before; a return map's run). A `ForceHistory` is followed piece by piece
+    (the flows of one piece at a time are kept)."""
     flows: dict = {}
     x0, v0, t_end, samples, max_events = _check(system, x0, v0, t_end, samples, max_events, flows)
     if not isinstance(segments, (bool, np.bool_)):
         raise ParameterError("segments", segments, "True or False")
+    if segments and system.history is not None:
+        system.unforced("segments (a monodromy's pieces of flow)")
     if stop_at is not None and not (isinstance(stop_at, tuple) and len(stop_at) == 2 and all(
             isinstance(v, (int, np.integer)) and not isinstance(v, bool) for v in stop_at)
             and 0 <= stop_at[0] < len(system.contacts) and stop_at[1] in (-1, 0, 1, OPEN)):
@@ -233,13 +238,17 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
                              "and a state -1, 0, 1 or 2")
     n, k = system.dofs, len(system.contacts)
     z = system.state(x0, v0)
+    piece = 0 if system.history is None else system.history.piece_at(0.0)
+    if piece:
+        flows = {}
+    end = np.inf if system.history is None else system.history.piece(piece)[2]
     vr = [c.slip_velocity(v0) for c in system.contacts]
     speed = max(1.0, *(abs(c.surface_speed) for c in system.contacts))
     opened = {i for i, c in enumerate(system.contacts) if c.unilateral and c.normal_row(n, system.extra) @ z <= 0.0}
     zero = {i for i in range(k) if abs(vr[i]) <= 1e-14 * speed} - opened
     if states is None:
         states = tuple(OPEN if i in opened else 0 if i in zero else (1 if vr[i] > 0 else -1) for i in range(k))
-        states = choose_states(system, z, states, zero, {}, flows)
+        states = choose_states(system, z, states, zero, {}, flows, piece)
     else:
         states = _given_states(states, vr, speed, [c.unilateral for c in system.contacts])
         zero = {i for i in range(k) if states[i] == 0}
@@ -251,9 +260,10 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
     ev_t, ev_c, ev_s, pieces = [], [], [], []
     t, j, instant, released = 0.0, 0, 0, {}
     while True:
-        flow = Flow.cached(system, states, flows)
-        t_next, z_next, hit = flow.first_event(z, t_end - t)
-        t_next = t + t_next if t_next < t_end - t else t_end
+        flow = Flow.cached(system, states, flows, piece)
+        stop = min(t_end, end)
+        t_next, z_next, hit = flow.first_event(z, stop - t)
+        t_next = t + t_next if t_next < stop - t else stop
         if segments:
             pieces.append(Segment(states, t, z, t_next - t, tuple(hit), states))
         j1 = j
@@ -263,6 +273,11 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
             zs = _sampled(flow, z, ts[j:j1] - t, ts[1] - ts[0])
             out[j:j1], st_out[j:j1], f_out[j:j1] = zs[:, :2 * n], states, zs @ flow.force_rows.T
             j = j1
+        if not hit and t_next < t_end:  # the force history's next piece (the force is continuous there)
+            t, z, flows = t_next, z_next, {}
+            piece += 1
+            end = system.history.piece(piece)[2]
+            continue
         if not hit:
             break
         instant = instant + 1 if t_next == t else 0
@@ -293,8 +308,8 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
             before[i] = 1 if vr[i] > 0 else -1
         zero = set(hit) | {i for i in range(k) if before[i] == 0}
         zero |= {i for i in range(k) if abs(vr[i]) <= 1e-13 * speed and before[i] != OPEN}
-        new = choose_states(system, z, tuple(before), zero, released, flows)
-        z = Flow.cached(system, new, flows).stick(z)
+        new = choose_states(system, z, tuple(before), zero, released, flows, piece)
+        z = Flow.cached(system, new, flows, piece).stick(z)
         for i in range(k):
             if new[i] != states[i]:
                 ev_t.append(t), ev_c.append(i), ev_s.append(new[i])
