@@ -345,3 +345,25 @@ def test_a_branch_that_makes_the_force_aperiodic_stops_saying_so():
     build, start = file_parameter(table, "harmonic[0].frequency")
     branch = continue_system(build, start, 0.6, points=3, parameter="harmonic[0].frequency")
     assert branch.values.size == 1 and "whole multiples" in branch.stopped and branch.events[0]["change"] == "refused"
+
+
+def test_engine_orders_scale_every_harmonic_with_the_lowest_along_the_branch():
+    # a belt so fast the contact always slips (a constant friction N fd): the periodic response to
+    # 0.5 cos(W t) + 0.3 sin(2 W t) is the sum of the linear closed forms at W and 2 W, with W the parameter
+    m, c, k, N, fd = 1.0, 0.1, 1.0, 0.5, 0.3
+    data = {"mass": [[m]], "stiffness": [[k]], "damping": [[c]],
+            "contact": [{"direction": [1.0], "normal_force": N, "fs": 0.4, "fd": fd, "surface_speed": 1e3}],
+            "harmonic": [{"frequency": 1.4, "sin": [0.3]}, {"frequency": 0.7, "cos": [0.5]}]}
+    build, start = file_parameter(data, "harmonic.frequency")
+    assert start == 0.7
+    branch = continue_system(build, start, 1.3, points=4, parameter="harmonic.frequency")
+    assert branch.forced and branch.stopped.startswith("reached") and branch.values.size == 4
+    for W, x0, v0 in zip(branch.values, branch.x0[:, 0], branch.v0[:, 0]):
+        one = 0.5 / (k - m * W ** 2 + 1j * c * W)
+        two = -0.3j / (k - m * (2 * W) ** 2 + 1j * c * 2 * W)
+        assert x0 == pytest.approx(one.real + two.real + N * fd / k, rel=1e-9)
+        assert v0 == pytest.approx((1j * W * one).real + (2j * W * two).real, rel=1e-9)
+    assert branch.to_xarray()["value"].attrs["units"] == "rad/s"
+    with pytest.raises(ParameterError) as err:
+        file_parameter({**data, "harmonic": [{"cos": [1.0]}]}, "harmonic.frequency")
+    assert err.value.name == "parameter"

@@ -188,7 +188,8 @@ def continue_cmd(file: File,
                                                              "contact[0].surface_speed (normal_force, fs, fd, tau, "
                                                              "normal_stiffness), stiffness[0][1] (mass, damping), "
                                                              "force[1], harmonic[0].frequency, harmonic[0].cos[1] "
-                                                             "(sin).", show_default=False)],
+                                                             "(sin), harmonic.frequency (every harmonic's frequency "
+                                                             "scaled together).", show_default=False)],
                  stop: Annotated[float, declared(Q["parameter_value"], "--stop", "The value the branch heads for.")],
                  points: Annotated[int, declared(Q["points"], "--points")] = 41,
                  x0: X0 = None, v0: V0 = None,
@@ -198,7 +199,8 @@ def continue_cmd(file: File,
                  json: Json = False, out: Out = None, overwrite: Replace = False):
     """The limit cycle followed along one number of the file, with the values where its events change
     (a stick phase born or gone: grazing), where it is lost, and where its stability changes. With
-    harmonic forces: the periodic response (harmonic[0].frequency: a frequency response curve)."""
+    harmonic forces: the periodic response (harmonic[0].frequency: a frequency response curve;
+    harmonic.frequency: engine orders, every harmonic scaled with the lowest)."""
     out = _out(out, overwrite)
     from ..system import continue_system, file_parameter
     from ..system.config import read_table

@@ -15,11 +15,13 @@ A system with a periodic force (`Harmonic`) has no limit cycle but a periodic re
 (`forced_response`): the same branch follows it, found at each value by Newton's method on the
 stroboscopic map over ``periods`` forcing periods, its multipliers all of them (no flow's own):
 with the frequency of a harmonic as the parameter, a frequency response curve, with the
-amplitude of each degree of freedom along it.
+amplitude of each degree of freedom along it; with ``harmonic.frequency``, every harmonic's
+frequency scaled together (the lowest is the parameter, the others keep their ratios to it: the
+engine orders of a rotating machine).
 
 `file_parameter(data, key)` makes ``build`` from a system's TOML table and one of its numbers
 named as the file writes it (``contact[0].surface_speed``, ``stiffness[0][1]``, ``force[1]``,
-``harmonic[0].frequency``, ``harmonic[0].cos[1]``).
+``harmonic[0].frequency``, ``harmonic[0].cos[1]``; ``harmonic.frequency``: all harmonics together).
 """
 
 from __future__ import annotations
@@ -56,13 +58,15 @@ def file_parameter(data: dict, key: str) -> tuple[Callable[[float], System], flo
     """``(build, value)``: the system of the TOML table ``data`` with its number ``key`` set to a
     value, and that number's value in ``data``. A `ParameterError` naming ``parameter`` if the
     key names no number of the table."""
+    if key == "harmonic.frequency":
+        return _base_frequency(data)
     match = re.fullmatch(r"(contact)\[(\d+)\]\.(\w+)|(mass|stiffness|damping)\[(\d+)\]\[(\d+)\]|(force)\[(\d+)\]"
                          r"|(harmonic)\[(\d+)\]\.(frequency|cos|sin)(?:\[(\d+)\])?",
                          key) if isinstance(key, str) else None
     if match is None or (match[9] and (match[11] == "frequency") != (match[12] is None)):
         raise ParameterError("parameter", key, "a number of the file: contact[i].surface_speed (or normal_force, fs, "
                              "fd, tau, normal_stiffness), stiffness[i][j] (mass, damping), force[i], "
-                             "harmonic[i].frequency, harmonic[i].cos[j] (sin)")
+                             "harmonic[i].frequency, harmonic[i].cos[j] (sin), harmonic.frequency (all together)")
     path = ([match[1], int(match[2]), match[3]] if match[1] else
             [match[4], int(match[5]), int(match[6])] if match[4] else [match[7], int(match[8])] if match[7] else
             [match[9], int(match[10]), match[11]] + ([] if match[12] is None else [int(match[12])]))
@@ -83,6 +87,29 @@ def file_parameter(data: dict, key: str) -> tuple[Callable[[float], System], flo
     return build, float(value)
 
 
+def _base_frequency(data: dict) -> tuple[Callable[[float], System], float]:
+    """`file_parameter` for ``harmonic.frequency``: the lowest frequency, the others scaled with it."""
+    tables = data.get("harmonic")
+    try:
+        freqs = [float(t["frequency"]) for t in tables]
+        low = min(freqs)
+    except (KeyError, TypeError, ValueError):
+        raise ParameterError("parameter", "harmonic.frequency", "the frequency of a file's [[harmonic]] tables (each "
+                             "with a frequency)") from None
+    if not low > 0:
+        raise ParameterError("harmonic[0].frequency", low, "> 0")
+
+    def build(p: float) -> System:
+        table = copy.deepcopy(data)
+        for t, f in zip(table["harmonic"], freqs):
+            t["frequency"] = float(p) * (f / low)
+        try:
+            return system_from_dict(table)
+        except ParameterError as err:
+            raise as_file_keys(err) from None
+    return build, low
+
+
 def _holder(table, path: list):
     """The table or list that holds the number at ``path`` (its last step) in ``table``."""
     for step in path[:-1]:
@@ -93,7 +120,7 @@ def _holder(table, path: list):
 def parameter_units(key: str) -> str:
     """The units of the number a file key names (``contact[0].surface_speed``: ``m/s``), from the
     declarations; ``1`` for a name that is not a file key."""
-    match = re.fullmatch(r"contact\[\d+\]\.(\w+)|(mass|stiffness|damping|force)\[.*|harmonic\[\d+\]\.(\w+).*",
+    match = re.fullmatch(r"contact\[\d+\]\.(\w+)|(mass|stiffness|damping|force)\[.*|harmonic(?:\[\d+\])?\.(\w+).*",
                          str(key))
     if match is None:
         return "1"
