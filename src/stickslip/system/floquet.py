@@ -28,8 +28,8 @@ from .flow import STATE_FLAGS, Flow
 from .model import System
 from .simulate import SystemRun, simulate, zero_slip
 
-__all__ = ["monodromy", "saltation", "jump", "SystemCycle", "limit_cycle", "return_fixed_point", "without_own",
-           "cycle_dataset", "period_events", "entries", "NEUTRAL", "inside"]
+__all__ = ["monodromy", "saltation", "jump", "SystemCycle", "limit_cycle", "return_fixed_point", "orbit_scale",
+           "without_own", "cycle_dataset", "period_events", "entries", "NEUTRAL", "inside"]
 
 #: A multiplier within this of the unit circle is on it (round-off of a neutral direction: a contact
 #: that sticks through the period, anywhere).
@@ -209,11 +209,21 @@ def _newton_step(system: System, segments: tuple, residual: np.ndarray, states: 
     return np.concatenate([d, [0.0]])
 
 
+def orbit_scale(system: System, segments) -> np.ndarray:
+    """What a return's residual in ``(x, v)`` is relative to: the largest displacement and the largest
+    velocity at the starts of ``segments`` (a return's pieces: its events), each for its kind (1 where
+    that is 0). A small orbit converges as well as a large one."""
+    n = system.dofs
+    Z = np.abs(np.array([s.z[:2 * n] for s in segments]))
+    sx, sv = Z[:, :n].max(), Z[:, n:].max()
+    return np.repeat([sx if sx > 0 else 1.0, sv if sv > 0 else 1.0], n)
+
+
 def return_fixed_point(system: System, z: np.ndarray, states: tuple, signature: tuple, horizon: float, tol: float,
                        max_iter: int, symmetry: tuple | None = None, newton_after: int = 2) -> tuple:
     """The start ``z`` (``(x, v, 1)`` just after contact ``signature[0]`` entered the state
     ``signature[1]``, every contact's state ``states``) to which the return map comes back to
-    ``tol`` (relative): ``(time of the return, z, states, segments of the return)``.
+    ``tol`` of the orbit's size (`orbit_scale`): ``(time of the return, z, states, segments of the return)``.
 
     The return is the next such event of the same contact, or with ``symmetry`` =
     ``(target, back, contacts_back)`` of the contact ``target``, the state at it mapped back
@@ -246,17 +256,18 @@ def return_fixed_point(system: System, z: np.ndarray, states: tuple, signature: 
         z_next = np.concatenate([z_next[:2 * n][back], [1.0]])
         next_states = tuple(next_states[i] for i in contacts_back)
         residual = z_next - z
-        size = max(1.0, np.abs(z).max())
-        if np.abs(residual).max() <= tol * size:
+        miss = float(np.abs(residual[:2 * n] / orbit_scale(system, one.segments[:last + 1])).max())
+        if miss <= tol:
             return period, z, states, one.segments[:last + 1]
         fixed = (z_next, next_states)
-        newton = it >= newton_after and next_states == states and np.abs(residual).max() < 1e-2 * size
+        near = np.abs(residual).max() < 1e-2 * max(1.0, np.abs(z).max())  # Newton's start: as large orbits had it
+        newton = it >= newton_after and next_states == states and (near or miss < 1e-2)
         if newton:
             z = z + _newton_step(system, one.segments[:last + 1], residual, states, target, back)
         else:
             z, states = z_next, next_states
     raise NoSolutionError(f"the return map did not come back to its start within tol = {tol:g} in {max_iter} "
-                          f"iterations (the last return missed it by {np.abs(residual).max():.3g})")
+                          f"iterations (the last return missed it by {miss:.3g} of the orbit's size)")
 
 
 def limit_cycle(system: System, x0=None, v0=None, *, transient: float = 100.0, tol: float = 1e-10,
