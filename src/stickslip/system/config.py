@@ -15,6 +15,8 @@ fs = 0.6
 fd = 0.4
 # normal_direction = [0.0, 1.0]          # optional: a unilateral contact, N = normal_force - k_n n . x,
 # normal_stiffness = 0.5                 # N/m; it opens where N would pull (Coulomb only)
+# rigid = true                           # instead: the constraint n . x >= 0, its normal force a reaction
+#                                        # (no normal_force, no normal_stiffness); plastic landings
 
 [[harmonic]]                             # optional, any number: a force cos cos(W t) + sin sin(W t)
 frequency = 1.1                          # rad/s
@@ -58,7 +60,7 @@ _TOP = ("mass", "stiffness", "damping", "force", "contact", "harmonic", "history
 _HARMONIC = ("frequency", "cos", "sin")
 _HISTORY = ("times", "forces")
 _CONTACT = ("direction", "normal_force", "surface_speed", "law", "fs", "fd", "tau", "name", "normal_direction",
-            "normal_stiffness")
+            "normal_stiffness", "rigid")
 #: The keys of a rate-and-state law (`stickslip.rsf.RateState`'s fields), with ``law = "rate-state"``.
 _RATE_STATE = ("a", "b", "dc", "f0", "v_ref", "evolution", "b2", "dc2", "regularized")
 _LAWS = ("coulomb", "linear-weakening", "rate-state")
@@ -83,7 +85,9 @@ def _contact(i: int, table) -> Contact:
     if unknown:
         raise ParameterError(where + unknown[0], table[unknown[0]], f"a key of a contact with law {law!r}: "
                              + ", ".join(k for k in keys if not (rate_state and k in ("fs", "fd", "tau"))))
-    for key in ("direction", "normal_force") + (("a", "b", "dc") if rate_state else ("fs", "fd")):
+    rigid = table.get("rigid", False)
+    for key in ("direction",) + (() if rigid is True else ("normal_force",)) + (("a", "b", "dc") if rate_state
+                                                                                else ("fs", "fd")):
         if key not in table:
             raise ParameterError(where + key, MISSING, "given")
     try:
@@ -94,8 +98,9 @@ def _contact(i: int, table) -> Contact:
             friction = RateState(**{k: table[k] for k in _RATE_STATE if k in table})
         else:
             friction = make_law(law, fs=table["fs"], fd=table["fd"], tau=table.get("tau"))
-        return Contact(table["direction"], table["normal_force"], friction, table.get("surface_speed", 0.0),
-                       table.get("name", ""), table.get("normal_direction"), table.get("normal_stiffness", 0.0))
+        return Contact(table["direction"], table.get("normal_force"), friction, table.get("surface_speed", 0.0),
+                       table.get("name", ""), table.get("normal_direction"), table.get("normal_stiffness", 0.0),
+                       rigid=rigid)
     except ParameterError as err:
         raise _renamed(err, where) from None
 

@@ -24,7 +24,7 @@ from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import SYSTEM as Q
 from ..results import Result
-from .flow import STATE_FLAGS, Flow
+from .flow import CLOSING, STATE_FLAGS, Flow
 from .model import System
 from .simulate import SystemRun, simulate, zero_slip
 
@@ -81,9 +81,19 @@ def jump(system: System, segment, z: np.ndarray, flows: dict, skip: int | None =
         states[owner] = segment.after[owner]
         if k == len(steps) - 1:
             states = list(final)
-        f_plus = Flow.cached(system, tuple(states), flows).A @ z
+        after = Flow.cached(system, tuple(states), flows)
         rate = flow.rows[r] @ f_minus
-        out = saltation(f_minus[:2 * n], f_plus[:2 * n], flow.rows[r][:2 * n], rate) @ out
+        if flow.kinds[r] == CLOSING and system.contacts[owner].rigid:  # a plastic impact: z+ = R z-
+            R, z = after.projection(), after.stick(z)
+            f_plus = after.A @ z
+            if rate == 0.0:
+                raise NoSolutionError(f"contact {owner} touches its surface with no normal velocity (a grazing "
+                                      "impact): the monodromy is not defined there")
+            step = R + np.outer(f_plus[:2 * n] - R @ f_minus[:2 * n], flow.rows[r][:2 * n]) / rate
+        else:
+            f_plus = after.A @ z
+            step = saltation(f_minus[:2 * n], f_plus[:2 * n], flow.rows[r][:2 * n], rate)
+        out = step @ out
         f_minus = f_plus
     return out, f_minus[:2 * n]
 

@@ -75,9 +75,14 @@ class Flow:
         kn = system.normal_directions  # k_n n per contact (columns)
         push = np.zeros(len(self.states))  # N(x) n on the structure: k_n n n^T, N_0 n
         fric = np.zeros(len(self.states))  # a unilateral contact slipping: F = s mu0 N(x): s mu0 k_n w n^T, ...
+        closed = [j for j, (c, s) in enumerate(zip(system.contacts, self.states)) if c.rigid and s != OPEN]
+        pressed = []  # the force direction of each closed rigid contact's reaction: n (+ s mu0 w slipping)
         for j, (c, s) in enumerate(zip(system.contacts, self.states)):
             if s == OPEN:
                 normal[j] = 0.0
+                continue
+            if c.rigid:
+                pressed.append(c.normal_direction + (s * c.friction.affine[0] * c.direction if s else 0.0))
                 continue
             if c.pushes:
                 push[j] = 1.0
@@ -100,18 +105,27 @@ class Flow:
             k_eff += (system.normal_units * push) @ kn.T
         if fric.any():
             k_eff += (W * fric) @ kn.T
-        if stuck:
-            Ws = W[:, stuck]
-            L = np.linalg.pinv(Ws.T @ Minv @ Ws) @ Ws.T @ Minv  # lam = -L r
-            P = Minv - Minv @ Ws @ L
-            self._stick = (L, Ws, np.array([system.contacts[i].surface_speed for i in stuck]))
-            force_rows[stuck, :n] = L @ k_eff
-            force_rows[stuck, n:2 * n] = L @ c_eff
-            force_rows[stuck, -1] = -L @ g
-            force_rows[stuck, e] = -L @ B
+        if stuck or closed:
+            # M a = r + E mu, G^T a = 0 (sticking: w . a = 0; closed: n . a = 0): mu = -L r
+            G = np.hstack([W[:, stuck], system.normal_units[:, closed]])
+            E = np.hstack([W[:, stuck], np.array(pressed).T.reshape(n, len(closed))])
+            L = np.linalg.pinv(G.T @ Minv @ E) @ G.T @ Minv
+            P = Minv - Minv @ E @ L
+            mu = np.zeros((len(stuck) + len(closed), size))
+            mu[:, :n], mu[:, n:2 * n], mu[:, -1], mu[:, e] = L @ k_eff, L @ c_eff, -L @ g, -L @ B
+            force_rows[stuck] = mu[:len(stuck)]
+            normal[closed] = mu[len(stuck):]
+            for k, j in enumerate(closed):
+                if self.states[j] != 0:
+                    force_rows[j] = self.states[j] * system.contacts[j].friction.affine[0] * normal[j]
+            # the velocity on the constraints: the smallest change in the metric of M (plastic impacts too)
+            Lv = np.linalg.pinv(G.T @ Minv @ G) @ G.T @ Minv
+            target = np.array([system.contacts[i].surface_speed for i in stuck] + [0.0] * len(closed))
+            self._stick = (Lv, G, target)
         else:
             P = Minv
             self._stick = None
+        self.normal_rows = normal
         A = np.zeros((size, size))
         A[:n, n:2 * n] = np.eye(n)
         A[n:2 * n, :n] = -P @ k_eff
@@ -128,8 +142,8 @@ class Flow:
         self.slip_rows = slip
         rows, owners, kinds = [], [], []  # switching functions: an event when one reaches zero from above
         for i, (c, s) in enumerate(zip(system.contacts, self.states)):
-            if s == OPEN:
-                rows.append(-c.normal_row(n, system.extra))  # N(x) < 0 while open: closes where it comes back to 0
+            if s == OPEN:  # N(x) < 0 while open (a rigid contact: the gap n . x > 0): closes where it reaches 0
+                rows.append((1.0 if c.rigid else -1.0) * c.normal_row(n, system.extra))
                 owners.append(i)
                 kinds.append(CLOSING)
                 continue
@@ -176,9 +190,10 @@ class Flow:
         return expm(t * self.A) @ z
 
     def stick(self, z: np.ndarray) -> np.ndarray:
-        """``z`` with the slip velocity of this state's sticking contacts exactly zero: the smallest
-        change of the velocity in the metric of M (`simulate.zero_slip`), ``v + L^T (V_S - W_S^T v)``
-        with the flow's ``L = D^-1 W_S^T M^-1``."""
+        """``z`` with the slip velocity of this state's sticking contacts exactly zero (and the normal
+        velocity of its closed rigid contacts: after an impact, the plastic one): the smallest change
+        of the velocity in the metric of M (`simulate.zero_slip`), ``v + L^T (V - G^T v)`` with
+        ``L = (G^T M^-1 G)^+ G^T M^-1``, ``G`` the constraints' directions, ``V`` their speeds."""
         if self._stick is None:
             return z
         L, Ws, V = self._stick
@@ -186,6 +201,15 @@ class Flow:
         z = z.copy()
         z[n:2 * n] += L.T @ (V - Ws.T @ z[n:2 * n])
         return z
+
+    def projection(self) -> np.ndarray:
+        """The linear part of `stick` on ``(x, v)`` (2n x 2n): the reset of a plastic impact."""
+        n = self.n
+        out = np.eye(2 * n)
+        if self._stick is not None:
+            L, G, _ = self._stick
+            out[n:, n:] -= L.T @ G.T
+        return out
 
     def acceleration(self, z: np.ndarray) -> np.ndarray:
         return (self.A @ z)[self.n:2 * self.n]

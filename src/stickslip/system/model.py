@@ -83,23 +83,45 @@ class Contact:
     these degrees of freedom: the normal motion is held by a rigid constraint eliminated from
     the model, whose reaction ``N(x)`` depends on the state (the paper's ring, where ``U = delta``
     in contact and ``P = g delta - D V_theta``); such a contact opening is the constraint
-    letting go, which the model does not follow (the run says so)."""
+    letting go, which the model does not follow (the run says so).
+
+    With ``rigid=True`` (and ``normal_force=None``) the contact is a rigid unilateral constraint
+    ``n . x >= 0`` (the surface at ``n . x = 0``): while closed, ``n . x = 0`` and the normal force is
+    the constraint's reaction, whatever keeps it closed; it opens where that reaction reaches zero,
+    and closes where the gap ``n . x`` does, by a plastic impact: the velocity along ``n`` is
+    lost (the smallest change of the velocity in the metric of M keeping the other constraints;
+    no friction impulse)."""
 
     direction: np.ndarray
-    normal_force: float
+    normal_force: float | None
     friction: FrictionLaw
     surface_speed: float = 0.0
     name: str = ""
     normal_direction: np.ndarray | None = None
     normal_stiffness: float = 0.0
     normal_on_structure: bool = True
+    rigid: bool = False
 
     def __post_init__(self):
         w = _vector("direction", self.direction, None, "direction")
         if not np.any(w):
             raise ParameterError("direction", self.direction, "a vector with at least one entry not zero")
         object.__setattr__(self, "direction", w)
-        object.__setattr__(self, "normal_force", Q.check("normal_force", self.normal_force))
+        if not isinstance(self.rigid, (bool, np.bool_)):
+            raise ParameterError("rigid", self.rigid, "true or false")
+        if self.rigid:
+            if self.normal_force is not None:
+                raise ParameterError("normal_force", self.normal_force, "None for a rigid contact (its normal force "
+                                     "is the constraint's reaction)", also=("rigid",))
+            if self.normal_direction is None:
+                raise ParameterError("normal_direction", None, "given for a rigid contact (the constraint is "
+                                     "n . x >= 0)", also=("rigid",))
+            if self.normal_stiffness != 0.0 or not self.normal_on_structure:
+                raise ParameterError("normal_stiffness" if self.normal_stiffness != 0.0 else "normal_on_structure",
+                                     self.normal_stiffness if self.normal_stiffness != 0.0 else False,
+                                     "left at its default for a rigid contact", also=("rigid",))
+        else:
+            object.__setattr__(self, "normal_force", Q.check("normal_force", self.normal_force))
         object.__setattr__(self, "surface_speed", Q.check("surface_speed", self.surface_speed))
         if not isinstance(self.friction, (FrictionLaw, RateState)):
             raise ParameterError("friction", self.friction, "a stickslip.friction.FrictionLaw or a "
@@ -136,8 +158,12 @@ class Contact:
 
     def normal_row(self, n: int, extra: int = 0) -> np.ndarray:
         """``N(x)`` as a row on ``z = (x, v, e, 1)`` (``e`` the ``extra`` states of the harmonic
-        forces): ``N_0 - k_n n . x`` (``N_0`` without a normal direction)."""
+        forces): ``N_0 - k_n n . x`` (``N_0`` without a normal direction); for a rigid contact the
+        gap ``n . x`` (its normal force is a reaction: `stickslip.system.Flow.normal_rows`)."""
         row = np.zeros(2 * n + extra + 1)
+        if self.rigid:
+            row[:n] = self.normal_direction
+            return row
         row[-1] = self.normal_force
         if self.unilateral:
             row[:n] = -self.normal_stiffness * self.normal_direction

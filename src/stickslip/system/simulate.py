@@ -109,10 +109,14 @@ def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, relea
     for i in zero:
         st[i] = released.get(i, 0)
     n = system.dofs
-    normals = system.normal_rows @ z
-    for _ in range(len(zero) + 1):
+    rigid = [i for i, c in enumerate(system.contacts) if c.rigid]
+    for _ in range(len(zero) + len(rigid) + 1):
         flow = Flow.cached(system, tuple(st), flows, piece)
-        forces = flow.force_rows @ z
+        forces, normals = flow.force_rows @ z, flow.normal_rows @ z
+        pulling = [i for i in rigid if st[i] != OPEN and normals[i] < -1e-12 * np.abs(normals).max()]
+        if pulling:  # a closed rigid contact whose reaction would pull opens (the most pulling first)
+            st[min(pulling, key=lambda i: normals[i])] = OPEN
+            continue
         worst, over = None, 0.0
         for i in zero:
             if st[i] != 0:
@@ -244,7 +248,16 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
     end = np.inf if system.history is None else system.history.piece(piece)[2]
     vr = [c.slip_velocity(v0) for c in system.contacts]
     speed = max(1.0, *(abs(c.surface_speed) for c in system.contacts))
-    opened = {i for i, c in enumerate(system.contacts) if c.unilateral and c.normal_row(n, system.extra) @ z <= 0.0}
+    opened = {i for i, c in enumerate(system.contacts) if c.unilateral and not c.rigid
+              and c.normal_row(n, system.extra) @ z <= 0.0}
+    for i, c in enumerate(system.contacts):
+        if c.rigid:  # open with a gap n . x > 0; closed on the surface; never inside it
+            gap, scale = float(c.normal_direction @ x0), float(np.abs(c.normal_direction).max() * np.abs(x0).max())
+            if gap < -1e-12 * scale:
+                raise ParameterError("x0", x0.tolist(), f"outside the rigid contact {i} (its gap n . x0 = {gap:.6g} "
+                                     "< 0)")
+            if gap > 1e-12 * scale or (gap >= 0 and c.normal_direction @ v0 > 0):
+                opened.add(i)
     zero = {i for i in range(k) if abs(vr[i]) <= 1e-14 * speed} - opened
     if states is None:
         states = tuple(OPEN if i in opened else 0 if i in zero else (1 if vr[i] > 0 else -1) for i in range(k))

@@ -83,6 +83,9 @@ def steady_sliding(system: System) -> SteadySliding:
         if not hasattr(c.friction, "kinetic"):
             raise ParameterError(f"contacts[{i}].friction", type(c.friction).__name__, "a law of the slip speed; "
                                  "steady sliding with rate-and-state laws: stickslip.system.rate_state_steady")
+        if c.rigid:
+            raise ParameterError(f"contacts[{i}].rigid", True, "false for steady sliding in this version (a rigid "
+                                 "contact's motion: simulate, limit_cycle)")
     n = system.dofs
     forces = np.empty(len(system.contacts))
     c_eff = system.damping.copy()

@@ -71,7 +71,8 @@ def cell_symmetry(system: System, shift) -> np.ndarray:
 
 def _same(c, d) -> bool:
     return (c.friction == d.friction and c.normal_force == d.normal_force and c.surface_speed == d.surface_speed
-            and c.normal_stiffness == d.normal_stiffness and c.normal_on_structure == d.normal_on_structure)
+            and c.normal_stiffness == d.normal_stiffness and c.normal_on_structure == d.normal_on_structure
+            and c.rigid == d.rigid)
 
 
 def _short(p: np.ndarray) -> str:

@@ -1,0 +1,123 @@
+"""Rigid unilateral contacts (``Contact(..., None, ..., normal_direction=n, rigid=True)``): a block
+dropped on a moving belt against the closed forms of its flight, plastic landing, slip and stick;
+lift-off under a growing pull at the closed-form instant; the monodromy across impacts and
+lift-offs against central differences of whole runs; the refusals."""
+
+import numpy as np
+import pytest
+
+from stickslip.errors import NoSolutionError, ParameterError
+from stickslip.friction import Coulomb
+from stickslip.system import (Contact, ForceHistory, Harmonic, System, monodromy, simulate, steady_sliding,
+                              system_from_dict)
+
+from .test_floquet import end_state
+
+M, K, G, F, V = 2.0, 3.0, 9.81, 0.3, 0.5
+
+
+def block(force_history=None, harmonics=(), fs=F, ky=0.0, cy=0.0):
+    """A block (x along the belt, y up) on a spring along x, under its weight, on a belt at y = 0
+    moving at V: a rigid contact, n = (0, 1), w = (1, 0)."""
+    contact = Contact([1.0, 0.0], None, Coulomb(fs, F), V, normal_direction=[0.0, 1.0], rigid=True)
+    return System(np.eye(2) * M, np.diag([K, ky]), [contact], force=[0.0, -M * G], damping=np.diag([0.0, cy]),
+                  history=force_history, harmonics=harmonics)
+
+
+def test_a_dropped_block_lands_plastically_slips_then_sticks_as_the_closed_forms_say():
+    x0, y0 = 0.1, 0.2
+    run = simulate(block(), x0=[x0, y0], v0=[0.0, 0.0], t_end=2.0, samples=2001)
+    w = np.sqrt(K / M)
+    landing = np.sqrt(2 * y0 / G)  # free fall
+    assert run.event_time[0] == pytest.approx(landing, rel=1e-13) and run.event_state[0] == 1  # lands slipping
+    flight = run.t < landing
+    assert np.allclose(run.x[flight, 1], y0 - G * run.t[flight] ** 2 / 2, rtol=0, atol=1e-14)
+    assert np.allclose(run.x[flight, 0], x0 * np.cos(w * run.t[flight]), rtol=0, atol=1e-14)
+    assert np.all(run.friction_force[flight, 0] == 0.0)
+    # on the belt: y = 0, y' = 0 (the landing velocity lost), the friction +F M G (the belt is faster)
+    x1, v1 = x0 * np.cos(w * landing), -x0 * w * np.sin(w * landing)
+    xe = F * M * G / K
+    stick = landing + min(t for t in np.linspace(0, 2, 200001)[1:] if  # first time x' = V
+                          (x1 - xe) * -w * np.sin(w * t) + v1 * np.cos(w * t) >= V)
+    assert run.event_time[1] == pytest.approx(stick, abs=1e-5) and run.event_state[1] == 0
+    slip = (run.t > landing) & (run.t < run.event_time[1])
+    s = run.t[slip] - landing
+    assert np.allclose(run.x[slip, 0], xe + (x1 - xe) * np.cos(w * s) + v1 / w * np.sin(w * s), rtol=0, atol=1e-13)
+    assert np.all(run.x[run.t > landing, 1] == pytest.approx(0.0, abs=1e-15))
+    assert np.all(run.v[run.t > landing, 1] == pytest.approx(0.0, abs=1e-14))
+    assert np.allclose(run.friction_force[slip, 0], F * M * G, rtol=1e-13)
+    # stuck on the belt: x' = V, the friction holds the spring, K x < f_s M G
+    late = run.t > run.event_time[1]
+    assert np.allclose(run.v[late, 0], V, rtol=1e-13) and np.allclose(run.friction_force[late, 0], K * run.x[late, 0],
+                                                                        rtol=1e-12)
+
+
+def test_a_block_pulled_up_by_a_growing_force_lifts_off_when_the_pull_equals_its_weight():
+    r = 7.0  # N/s
+    lift = M * G / r
+    system = block(ForceHistory([0.0, 10.0], [[0.0, 0.0], [0.0, 10.0 * r]]), fs=0.6)
+    run = simulate(system, x0=[0.0, 0.0], v0=[V, 0.0], t_end=lift + 1.0, samples=101)
+    opened = run.event_time[run.event_state == 2]
+    assert opened.size == 1 and opened[0] == pytest.approx(lift, rel=1e-12)
+    up = run.t > lift
+    assert np.allclose(run.x[up, 1], r * (run.t[up] - lift) ** 3 / (6 * M), rtol=1e-11, atol=1e-15)
+    # before: stuck on the belt (x' = V) while K x < f_s (M G - r t), then slipping back
+    assert np.all(run.x[~up, 1] == 0.0)
+
+
+def test_the_monodromy_across_landings_and_lift_offs_matches_finite_differences():
+    # a block on a vertical spring pressed onto the belt, lifted by a harmonic force: it lifts off,
+    # flies, lands plastically, slips and sticks, several times
+    system = block(harmonics=[Harmonic(5.0, sin=[0.0, 1.6 * M * G])], fs=0.5, ky=20.0, cy=0.3)
+    z0 = np.array([0.05, 0.01, 0.2, 0.1])
+    t_end = 3.0
+    run = simulate(system, z0[:2], z0[2:], t_end, samples=2, segments=True)
+    kinds = set(run.event_state.tolist())
+    assert {2, 1}.issubset(kinds) and (run.event_state == 2).sum() >= 2  # lift-offs and landings
+    Phi = monodromy(system, run)
+    fd = np.zeros((4, 4))
+    for j in range(4):
+        h = 1e-7 * np.eye(4)[j]
+        ends = [end_state(simulate(system, (z0 + s * h)[:2], (z0 + s * h)[2:], t_end, samples=2)) for s in (1, -1)]
+        fd[:, j] = (ends[0] - ends[1]) / 2e-7
+    assert np.abs(Phi - fd).max() < 1e-5 * np.abs(fd).max()
+    assert abs(np.linalg.det(Phi)) < 1e-8  # each landing collapses the normal velocity
+
+
+def test_a_start_inside_the_surface_or_a_rigid_contact_with_a_normal_force_is_refused():
+    with pytest.raises(ParameterError) as err:
+        simulate(block(), x0=[0.0, -1e-3], t_end=1.0)
+    assert err.value.name == "x0" and "gap" in str(err.value)
+    with pytest.raises(ParameterError) as err:
+        Contact([1.0, 0.0], 1.0, Coulomb(F, F), V, normal_direction=[0.0, 1.0], rigid=True)
+    assert err.value.name == "normal_force"
+    with pytest.raises(ParameterError) as err:
+        Contact([1.0, 0.0], None, Coulomb(F, F), V, rigid=True)
+    assert err.value.name == "normal_direction"
+    with pytest.raises(ParameterError) as err:
+        Contact([1.0, 0.0], None, Coulomb(F, F), V, normal_direction=[0.0, 1.0], normal_stiffness=2.0, rigid=True)
+    assert err.value.name == "normal_stiffness"
+    with pytest.raises(ParameterError) as err:
+        Contact([1.0, 0.0], None, Coulomb(F, F), V)
+    assert err.value.name == "normal_force"
+    with pytest.raises(ParameterError) as err:
+        steady_sliding(block())
+    assert err.value.name == "contacts[0].rigid"
+
+
+def test_a_file_gives_a_rigid_contact():
+    data = {"mass": [[M, 0.0], [0.0, M]], "stiffness": [[K, 0.0], [0.0, 0.0]], "force": [0.0, -M * G],
+            "contact": [{"direction": [1.0, 0.0], "normal_direction": [0.0, 1.0], "rigid": True, "fs": F, "fd": F,
+                         "surface_speed": V}]}
+    run = simulate(system_from_dict(data), x0=[0.1, 0.2], t_end=1.0)
+    assert run.event_time[0] == pytest.approx(np.sqrt(0.4 / G), rel=1e-13)
+    with pytest.raises(ParameterError) as err:
+        system_from_dict({**data, "contact": [{**data["contact"][0], "normal_force": 3.0}]})
+    assert err.value.name == "contact[0].normal_force"
+
+
+def test_a_block_on_the_surface_pulled_harder_than_its_weight_leaves_at_once():
+    system = block(ForceHistory([0.0], [[0.0, 2.0 * M * G]]))  # a constant pull of twice its weight
+    run = simulate(system, x0=[0.0, 0.0], v0=[0.0, 0.0], t_end=1.0, samples=11)
+    assert np.all(run.states == 2) and run.event_time.size == 0
+    assert np.allclose(run.x[:, 1], G * run.t ** 2 / 2, rtol=1e-13, atol=0.0)
