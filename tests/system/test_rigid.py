@@ -24,8 +24,11 @@ def block(force_history=None, harmonics=(), fs=F, ky=0.0, cy=0.0):
                   history=force_history, harmonics=harmonics)
 
 
-def test_a_dropped_block_lands_plastically_slips_then_sticks_as_the_closed_forms_say():
-    x0, y0 = 0.1, 0.2
+def test_a_dropped_block_lands_plastically_with_its_friction_impulse_slips_then_sticks():
+    # landing at v_y = -sqrt(2 g y0): the normal impulse M sqrt(2 g y0) stops it, the friction impulse
+    # f times that (the belt is faster: forwards) adds f sqrt(2 g y0) to v_x; then the spring-mass slips
+    # under the constant friction f M G until x' = V, and sticks
+    x0, y0 = 0.1, 0.02
     run = simulate(block(), x0=[x0, y0], v0=[0.0, 0.0], t_end=2.0, samples=2001)
     w = np.sqrt(K / M)
     landing = np.sqrt(2 * y0 / G)  # free fall
@@ -34,8 +37,7 @@ def test_a_dropped_block_lands_plastically_slips_then_sticks_as_the_closed_forms
     assert np.allclose(run.x[flight, 1], y0 - G * run.t[flight] ** 2 / 2, rtol=0, atol=1e-14)
     assert np.allclose(run.x[flight, 0], x0 * np.cos(w * run.t[flight]), rtol=0, atol=1e-14)
     assert np.all(run.friction_force[flight, 0] == 0.0)
-    # on the belt: y = 0, y' = 0 (the landing velocity lost), the friction +F M G (the belt is faster)
-    x1, v1 = x0 * np.cos(w * landing), -x0 * w * np.sin(w * landing)
+    x1, v1 = x0 * np.cos(w * landing), -x0 * w * np.sin(w * landing) + F * np.sqrt(2 * G * y0)
     xe = F * M * G / K
     stick = landing + min(t for t in np.linspace(0, 2, 200001)[1:] if  # first time x' = V
                           (x1 - xe) * -w * np.sin(w * t) + v1 * np.cos(w * t) >= V)
@@ -50,6 +52,16 @@ def test_a_dropped_block_lands_plastically_slips_then_sticks_as_the_closed_forms
     late = run.t > run.event_time[1]
     assert np.allclose(run.v[late, 0], V, rtol=1e-13) and np.allclose(run.friction_force[late, 0], K * run.x[late, 0],
                                                                         rtol=1e-12)
+
+
+def test_a_block_dropped_from_higher_lands_stuck_its_friction_impulse_more_than_the_slip_needs():
+    # f sqrt(2 g y0) = 0.59 m/s > V - v_x: the impulse that stops the slip is within f times the normal one
+    x0, y0 = 0.1, 0.2
+    run = simulate(block(), x0=[x0, y0], v0=[0.0, 0.0], t_end=0.5, samples=501)
+    landing = np.sqrt(2 * y0 / G)
+    assert run.event_time[0] == pytest.approx(landing, rel=1e-13) and run.event_state[0] == 0
+    late = run.t > landing
+    assert np.allclose(run.v[late, 0], V, rtol=1e-13) and np.allclose(run.v[late, 1], 0.0, atol=1e-14)
 
 
 def test_a_block_pulled_up_by_a_growing_force_lifts_off_when_the_pull_equals_its_weight():

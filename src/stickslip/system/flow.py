@@ -118,10 +118,12 @@ class Flow:
             for k, j in enumerate(closed):
                 if self.states[j] != 0:
                     force_rows[j] = self.states[j] * system.contacts[j].friction.affine[0] * normal[j]
-            # the velocity on the constraints: the smallest change in the metric of M (plastic impacts too)
-            Lv = np.linalg.pinv(G.T @ Minv @ G) @ G.T @ Minv
+            # the velocity put on the constraints by impulses along the forces' directions: v + Q (V - G^T v),
+            # Q = M^-1 E (G^T M^-1 E)^+ (sticking: the smallest change in the metric of M; a rigid contact
+            # landing: a plastic impact with the friction impulse of its state)
+            Q = Minv @ E @ np.linalg.pinv(G.T @ Minv @ E)
             target = np.array([system.contacts[i].surface_speed for i in stuck] + [0.0] * len(closed))
-            self._stick = (Lv, G, target)
+            self._stick = (Q, G, target)
         else:
             P = Minv
             self._stick = None
@@ -190,16 +192,18 @@ class Flow:
         return expm(t * self.A) @ z
 
     def stick(self, z: np.ndarray) -> np.ndarray:
-        """``z`` with the slip velocity of this state's sticking contacts exactly zero (and the normal
-        velocity of its closed rigid contacts: after an impact, the plastic one): the smallest change
-        of the velocity in the metric of M (`simulate.zero_slip`), ``v + L^T (V - G^T v)`` with
-        ``L = (G^T M^-1 G)^+ G^T M^-1``, ``G`` the constraints' directions, ``V`` their speeds."""
+        """``z`` with the slip velocity of this state's sticking contacts exactly zero and the normal
+        velocity of its closed rigid contacts too: ``v + Q (V - G^T v)``, ``G`` the constraints'
+        directions, ``V`` their speeds, by impulses along the constraint forces' directions ``E``,
+        ``Q = M^-1 E (G^T M^-1 E)^+`` (without rigid contacts the smallest change of the velocity in
+        the metric of M, `simulate.zero_slip`; a rigid contact landing: its plastic impact, with the
+        friction impulse ``s f_d`` times the normal one slipping)."""
         if self._stick is None:
             return z
-        L, Ws, V = self._stick
+        Q, G, V = self._stick
         n = self.n
         z = z.copy()
-        z[n:2 * n] += L.T @ (V - Ws.T @ z[n:2 * n])
+        z[n:2 * n] += Q @ (V - G.T @ z[n:2 * n])
         return z
 
     def projection(self) -> np.ndarray:
@@ -207,8 +211,8 @@ class Flow:
         n = self.n
         out = np.eye(2 * n)
         if self._stick is not None:
-            L, G, _ = self._stick
-            out[n:, n:] -= L.T @ G.T
+            Q, G, _ = self._stick
+            out[n:, n:] -= Q @ G.T
         return out
 
     def acceleration(self, z: np.ndarray) -> np.ndarray:

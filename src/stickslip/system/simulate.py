@@ -319,6 +319,14 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
             before[i] = OPEN
         for i in closing:  # touching again, with no normal force yet: slips the way the surface moves under it
             before[i] = 1 if vr[i] > 0 else -1
+        landing = [i for i in closing if system.contacts[i].rigid]
+        if landing:  # a plastic impact; a friction impulse that would reverse the slip sticks the contact instead
+            after = flow.slip_rows @ Flow.cached(system, tuple(before), flows, piece).stick(z)
+            for i in landing:
+                if after[i] * before[i] <= 1e-13 * speed:
+                    before[i] = 0
+            z = Flow.cached(system, tuple(before), flows, piece).stick(z)
+            vr = flow.slip_rows @ z
         zero = set(hit) | {i for i in range(k) if before[i] == 0}
         zero |= {i for i in range(k) if abs(vr[i]) <= 1e-13 * speed and before[i] != OPEN}
         new = choose_states(system, z, tuple(before), zero, released, flows, piece)
