@@ -133,3 +133,24 @@ def test_a_block_on_the_surface_pulled_harder_than_its_weight_leaves_at_once():
     run = simulate(system, x0=[0.0, 0.0], v0=[0.0, 0.0], t_end=1.0, samples=11)
     assert np.all(run.states == 2) and run.event_time.size == 0
     assert np.allclose(run.x[:, 1], G * run.t ** 2 / 2, rtol=1e-13, atol=0.0)
+
+
+def test_a_block_let_go_at_rest_hops_and_lands_within_one_step_of_the_search():
+    # lifted by F sin(W t), F = 1.001 M G: it leaves where F sin(W t_o) = M G, with no velocity, and lands
+    # where the closed-form height comes back to 0, 0.036 s later: within a step of the search (0.05 s)
+    # (the search once took the gap's zero slope at the start for a landing at once, and chattered)
+    from scipy.optimize import brentq
+
+    from stickslip.system import Flow
+    W, Fh = 5.0, 1.001 * M * G
+    system = block(harmonics=[Harmonic(W, sin=[0.0, Fh])], fs=0.6)
+    run = simulate(system, x0=[0.0, 0.0], v0=[V, 0.0], t_end=1.2, samples=2)
+    t_o = np.arcsin(M * G / Fh) / W
+
+    def height(t):
+        return -(Fh / (M * W ** 2)) * (np.sin(W * t) - np.sin(W * t_o) - W * np.cos(W * t_o) * (t - t_o)) \
+            - G * (t - t_o) ** 2 / 2
+    t_l = brentq(height, t_o + 1e-4, t_o + 1.0)
+    assert t_l - t_o < Flow(system, (2,)).h
+    opened, landed = run.event_time[run.event_state == 2], run.event_time[run.event_state != 2]
+    assert opened[0] == pytest.approx(t_o, rel=1e-12) and landed[landed > t_o][0] == pytest.approx(t_l, rel=1e-10)

@@ -21,6 +21,9 @@ __all__ = ["search", "MAX_TERMS", "NO_EVENT", "EVENT", "WANTS_EXPONENTIAL"]
 _EPS = 2.220446049250313e-16
 #: Terms of a step's Taylor series at most (a step whose series is not at round-off by then is halved).
 MAX_TERMS = 60
+#: Points of a step at which a switching function that starts on its line without rising and ends
+#: below it is looked at: above the line at one of them, it rose first (its zero is the one after).
+RISE_SAMPLES = 32
 _SUMS = {"reassoc", "contract"}
 #: What `search` found: nothing up to ``t_max``; events at ``t``; ``budget`` steps taken without
 #: ``E`` (at a step's end ``t``: the caller may make ``E`` and search on from there).
@@ -132,7 +135,12 @@ def _crossing(P, K, row, c, dt, g0, dg0, g1, dg1, tol):
     start = 0.0
     made = False
     if g0 <= tol:  # on the switching line at the start: departing (rising) or leaving at once
-        if dg0 <= 0 and g1 <= tol:
+        if dg0 <= 0 and g1 <= tol:  # leaving at once, unless it rises first (at rest on it: a contact let go
+            _coefficients(P, K, dt, row, c)  # with no velocity departs by its curvature) and comes back
+            for i in range(1, RISE_SAMPLES + 1):
+                u = i / RISE_SAMPLES
+                if _value(c[0], K, u)[0] > tol:
+                    return _root(c[0], K, dt, u * dt, dt)  # above the line there: the zero after it
             return 0.0
         if g1 > tol and dg1 >= 0:
             return -1.0
