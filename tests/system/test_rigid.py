@@ -16,11 +16,11 @@ from .test_floquet import end_state
 M, K, G, F, V = 2.0, 3.0, 9.81, 0.3, 0.5
 
 
-def block(force_history=None, harmonics=(), fs=F, ky=0.0, cy=0.0):
+def block(force_history=None, harmonics=(), fs=F, ky=0.0, cy=0.0, lift=0.0):
     """A block (x along the belt, y up) on a spring along x, under its weight, on a belt at y = 0
     moving at V: a rigid contact, n = (0, 1), w = (1, 0)."""
     contact = Contact([1.0, 0.0], None, Coulomb(fs, F), V, normal_direction=[0.0, 1.0], rigid=True)
-    return System(np.eye(2) * M, np.diag([K, ky]), [contact], force=[0.0, -M * G], damping=np.diag([0.0, cy]),
+    return System(np.eye(2) * M, np.diag([K, ky]), [contact], force=[0.0, lift - M * G], damping=np.diag([0.0, cy]),
                   history=force_history, harmonics=harmonics)
 
 
@@ -154,3 +154,24 @@ def test_a_block_let_go_at_rest_hops_and_lands_within_one_step_of_the_search():
     assert t_l - t_o < Flow(system, (2,)).h
     opened, landed = run.event_time[run.event_state == 2], run.event_time[run.event_state != 2]
     assert opened[0] == pytest.approx(t_o, rel=1e-12) and landed[landed > t_o][0] == pytest.approx(t_l, rel=1e-10)
+
+
+def test_a_touch_and_go_landing_has_its_impact_in_the_monodromy():
+    # a block on a vertical spring whose rest is 0.1 above the belt, thrown down onto it: the landing
+    # stops its fall and its friction impulse pushes it along, but the spring pulls it off at once (no
+    # change of contact state is recorded); the monodromy still has the impact (finite differences)
+    ky = 20.0
+    system = block(fs=0.5, ky=ky, cy=0.5, lift=M * G + ky * 0.1)
+    z0 = np.array([0.05, 0.05, 0.1, -1.0])
+    t_end = 1.0
+    run = simulate(system, z0[:2], z0[2:], t_end, samples=2, segments=True)
+    assert run.event_time.size == 0 and np.all(run.states == 2)  # open throughout, as the record goes
+    assert any(seg.rows for seg in run.segments)  # the landing itself
+    assert run.v[-1, 0] != pytest.approx(simulate(system, z0[:2], [0.1, 0.0], t_end).v[-1, 0])
+    Phi = monodromy(system, run)
+    fd = np.zeros((4, 4))
+    for j in range(4):
+        h = 1e-7 * np.eye(4)[j]
+        ends = [end_state(simulate(system, (z0 + s * h)[:2], (z0 + s * h)[2:], t_end, samples=2)) for s in (1, -1)]
+        fd[:, j] = (ends[0] - ends[1]) / 2e-7
+    assert np.abs(Phi - fd).max() < 1e-5 * np.abs(fd).max()

@@ -24,9 +24,9 @@ from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import SYSTEM as Q
 from ..results import Result
-from .flow import CLOSING, STATE_FLAGS, Flow
+from .flow import CLOSING, OPEN, STATE_FLAGS, Flow
 from .model import System
-from .simulate import SystemRun, simulate, zero_slip
+from .simulate import SystemRun, land, simulate, zero_slip
 
 __all__ = ["monodromy", "saltation", "jump", "SystemCycle", "limit_cycle", "return_fixed_point", "orbit_scale",
            "without_own", "cycle_dataset", "period_events", "entries", "NEUTRAL", "inside"]
@@ -71,7 +71,7 @@ def jump(system: System, segment, z: np.ndarray, flows: dict, skip: int | None =
             seen.add(owner)
             crossed.append((r, owner))
     final = tuple(s if i == skip else a for i, (a, s) in enumerate(zip(segment.after, segment.states)))
-    steps = [(r, o) for r, o in crossed if segment.after[o] != segment.states[o]]
+    steps = [(r, o) for r, o in crossed if segment.after[o] != segment.states[o] or _lands(system, flow, r, o)]
     if not steps and crossed and final != segment.states:
         steps = crossed[-1:]  # only consequential changes: they go with the last crossing
     states = list(segment.states)
@@ -83,8 +83,11 @@ def jump(system: System, segment, z: np.ndarray, flows: dict, skip: int | None =
             states = list(final)
         after = Flow.cached(system, tuple(states), flows)
         rate = flow.rows[r] @ f_minus
-        if flow.kinds[r] == CLOSING and system.contacts[owner].rigid:  # a plastic impact: z+ = R z-
-            R, z = after.projection(), after.stick(z)
+        if _lands(system, flow, r, owner):  # a plastic impact: z+ = R z- (R of the state it lands in, even
+            landed = list(segment.states)  # if it leaves again at once, pulled off: `simulate`)
+            landed, _ = land(system, flow, z, landed, [owner], flows)
+            impact = Flow.cached(system, tuple(landed), flows)
+            R, z = impact.projection(), impact.stick(z)
             f_plus = after.A @ z
             if rate == 0.0:
                 raise NoSolutionError(f"contact {owner} touches its surface with no normal velocity (a grazing "
@@ -96,6 +99,11 @@ def jump(system: System, segment, z: np.ndarray, flows: dict, skip: int | None =
         out = step @ out
         f_minus = f_plus
     return out, f_minus[:2 * n]
+
+
+def _lands(system: System, flow: Flow, row: int, owner: int) -> bool:
+    """Whether ``row`` of ``flow`` is a rigid contact touching its surface (an impact)."""
+    return bool(flow.kinds[row] == CLOSING and system.contacts[owner].rigid)
 
 
 def monodromy(system: System, run: SystemRun | tuple) -> np.ndarray:
@@ -209,11 +217,19 @@ def _newton_step(system: System, segments: tuple, residual: np.ndarray, states: 
     rate = float(normal @ f_minus)
     if rate == 0.0:
         raise NoSolutionError("a grazing return to the section: no Newton step")
-    deriv = (phi - np.outer(f_minus, normal @ phi) / rate)[back]
+    deriv = phi - np.outer(f_minus, normal @ phi) / rate
+    if _lands(system, flow, row, target):  # the section is a landing: its reset
+        landed, _ = land(system, flow, ze, list(end.states), [target], flows)
+        deriv = Flow.cached(system, tuple(landed), flows).projection() @ deriv
+    deriv = deriv[back]
     rows = [deriv - np.eye(2 * n), normal[back][None, :]]  # the section at the start: n . B^-1 z
     for i, st in enumerate(states):
+        c = system.contacts[i]
         if st == 0:
-            rows.append(np.concatenate([np.zeros(n), system.contacts[i].direction])[None, :])
+            rows.append(np.concatenate([np.zeros(n), c.direction])[None, :])
+        if c.rigid and st != OPEN:  # closed: on the surface, not moving off it
+            rows += [np.concatenate([c.normal_direction, np.zeros(n)])[None, :],
+                     np.concatenate([np.zeros(n), c.normal_direction])[None, :]]
     rhs = np.concatenate([-residual[:2 * n], np.zeros(sum(r.shape[0] for r in rows[1:]))])
     d = np.linalg.lstsq(np.vstack(rows), rhs, rcond=None)[0]
     return np.concatenate([d, [0.0]])

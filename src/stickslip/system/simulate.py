@@ -26,7 +26,7 @@ from ..results import Result
 from .flow import CLOSING, LAW_LIMIT, OPEN, OPENING, STATE_FLAGS, Flow
 from .model import System
 
-__all__ = ["SystemRun", "Segment", "simulate", "choose_states", "zero_slip", "longest_run", "affine_laws"]
+__all__ = ["SystemRun", "Segment", "simulate", "choose_states", "zero_slip", "longest_run", "affine_laws", "land"]
 
 #: Events in a row without time passing before the simulation is said to chatter.
 MAX_INSTANT_EVENTS = 64
@@ -142,6 +142,22 @@ def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, relea
                                   f"its slip velocity would change with sign {-st[i]} (a Painleve-like paradox "
                                   "of these directions and laws)")
     return tuple(st)
+
+
+def land(system: System, flow: Flow, z: np.ndarray, states, landing, flows: dict, piece: int = 0) -> tuple:
+    """``(states, z)`` after the rigid contacts ``landing`` touch their surfaces at ``z`` (``flow``
+    the flow before): a plastic impact with each one's friction impulse, slipping the way its
+    slip velocity was (``states`` holds that sign for them), or sticking where that impulse would
+    reverse the slip (`Flow.stick` of the state after)."""
+    st = list(states)
+    for i in landing:
+        st[i] = 1 if flow.slip_rows[i] @ z > 0 else -1
+    after = flow.slip_rows @ Flow.cached(system, tuple(st), flows, piece).stick(z)
+    speed = max(1.0, *(abs(c.surface_speed) for c in system.contacts))
+    for i in landing:
+        if after[i] * st[i] <= 1e-13 * speed:
+            st[i] = 0
+    return st, Flow.cached(system, tuple(st), flows, piece).stick(z)
 
 
 def _sampled(flow: Flow, z: np.ndarray, times: np.ndarray, dt: float) -> np.ndarray:
@@ -320,12 +336,8 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
         for i in closing:  # touching again, with no normal force yet: slips the way the surface moves under it
             before[i] = 1 if vr[i] > 0 else -1
         landing = [i for i in closing if system.contacts[i].rigid]
-        if landing:  # a plastic impact; a friction impulse that would reverse the slip sticks the contact instead
-            after = flow.slip_rows @ Flow.cached(system, tuple(before), flows, piece).stick(z)
-            for i in landing:
-                if after[i] * before[i] <= 1e-13 * speed:
-                    before[i] = 0
-            z = Flow.cached(system, tuple(before), flows, piece).stick(z)
+        if landing:
+            before, z = land(system, flow, z, before, landing, flows, piece)
             vr = flow.slip_rows @ z
         zero = set(hit) | {i for i in range(k) if before[i] == 0}
         zero |= {i for i in range(k) if abs(vr[i]) <= 1e-13 * speed and before[i] != OPEN}
