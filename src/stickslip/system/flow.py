@@ -124,9 +124,11 @@ class Flow:
             Q = Minv @ E @ np.linalg.pinv(G.T @ Minv @ E)
             target = np.array([system.contacts[i].surface_speed for i in stuck] + [0.0] * len(closed))
             self._stick = (Q, G, target)
+            Nc = system.normal_units[:, closed]  # the closed rigid contacts' positions: n . x = 0 exactly
+            self._onto = (Minv @ Nc @ np.linalg.pinv(Nc.T @ Minv @ Nc), Nc) if closed else None
         else:
             P = Minv
-            self._stick = None
+            self._stick = self._onto = None
         self.normal_rows = normal
         A = np.zeros((size, size))
         A[:n, n:2 * n] = np.eye(n)
@@ -197,13 +199,18 @@ class Flow:
         directions, ``V`` their speeds, by impulses along the constraint forces' directions ``E``,
         ``Q = M^-1 E (G^T M^-1 E)^+`` (without rigid contacts the smallest change of the velocity in
         the metric of M, `simulate.zero_slip`; a rigid contact landing: its plastic impact, with the
-        friction impulse ``s f_d`` times the normal one slipping)."""
+        friction impulse ``s f_d`` times the normal one slipping). The closed rigid contacts' gaps are
+        set to exactly 0 too (the smallest change of ``x`` in the metric of M: round-off after a landing,
+        which the saltation already maps onto the surface)."""
         if self._stick is None:
             return z
         Q, G, V = self._stick
         n = self.n
         z = z.copy()
         z[n:2 * n] += Q @ (V - G.T @ z[n:2 * n])
+        if self._onto is not None:  # and on their surfaces (a landing found to round-off: the gap exactly 0)
+            Lx, Nc = self._onto
+            z[:n] -= Lx @ (Nc.T @ z[:n])
         return z
 
     def projection(self) -> np.ndarray:

@@ -137,8 +137,9 @@ def relative_cycle(system: System, x0, v0, shift, *, contact: int, state: int, s
     k = len(system.contacts)
     if isinstance(contact, bool) or not isinstance(contact, (int, np.integer)) or not 0 <= contact < k:
         raise ParameterError("contact", contact, f"a contact number from 0 to {k - 1}")
-    if state not in (-1, 0, 1):
-        raise ParameterError("state", state, "-1 (reverse slip), 0 (stick) or 1 (slip)")
+    if state not in (-1, 0, 1, 2) or (state == 2 and not system.contacts[contact].unilateral):
+        raise ParameterError("state", state, "-1 (reverse slip), 0 (stick), 1 (slip) or, for a unilateral contact, "
+                             "2 (open)")
     horizon, tol, max_iter = Q.check("transient", horizon, "horizon"), Q.check("tol", tol), Q.check("max_iter", max_iter)
     run = simulate(system, x0, v0, horizon, samples=2, segments=True, states=states, stop_at=(contact, state))
     first = entries(run, (contact, state))
