@@ -175,3 +175,16 @@ def test_a_touch_and_go_landing_has_its_impact_in_the_monodromy():
         ends = [end_state(simulate(system, (z0 + s * h)[:2], (z0 + s * h)[2:], t_end, samples=2)) for s in (1, -1)]
         fd[:, j] = (ends[0] - ends[1]) / 2e-7
     assert np.abs(Phi - fd).max() < 1e-5 * np.abs(fd).max()
+
+
+@pytest.mark.parametrize("vx", [0.3, 0.5])
+def test_a_contact_landing_into_stick_and_pulled_off_at_once_is_no_paradox(vx):
+    # the friction impulse stops the slip (it lands stuck) and the spring pulls it off at once: an open
+    # contact, not one released to slip (the simulation once stopped with a Painleve-like paradox here)
+    ky = 20.0
+    system = block(fs=0.5, ky=ky, cy=0.5, lift=M * G + ky * 0.1)
+    run = simulate(system, [-0.05, 0.05], [vx, -1.0], 1.0, samples=101, segments=True)
+    assert np.all(run.states == 2) and run.segments[0].rows
+    # just after the touch: no normal velocity, and the belt's speed along x (the impulse stuck it)
+    after = run.segments[1].z
+    assert after[3] == 0.0 and after[2] == pytest.approx(V, rel=1e-13)

@@ -128,7 +128,7 @@ def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, relea
         if worst is None:
             break
         st[worst] = 1 if forces[worst] > 0 else -1
-    moving = [i for i in zero if st[i] != 0]
+    moving = [i for i in zero if st[i] in (-1, 1)]  # (not those opened: no friction)
     if moving:  # released ones: do they slip the way they were released?
         flow = Flow.cached(system, tuple(st), flows, piece)
         a = flow.acceleration(z)

@@ -18,6 +18,14 @@ by ``|mu|^(N/n)`` over a wave period for each multiplier ``mu``. Repeated for gr
 discrete wave speed tends to the continuous one (second order) and the leading multipliers
 show whether the wave's stability converges (`wave_spectra`).
 
+A wave that leaves the shaft (a separation zone) is followed onto the ring whose nodes may leave
+it too (`ring_system(..., separation=True)`: the normal displacements are degrees of freedom, each
+node's contact a rigid unilateral constraint that lifts off where its reaction reaches zero and
+lands by a plastic impact with its friction impulse); the section is node 0's lift-off. There
+the discrete wave lands into slip and sticks briefly where the continuous one lands into stick
+(the landing's kink is not resolved by the nodes), and its speed tends to the continuous one at
+first order only.
+
 Internal units (`zones.Scaling`): time ``t/sqrt(gamma)``.
 """
 
@@ -36,6 +44,7 @@ from ...friction import Coulomb
 from ...quantities import BRAKE as Q, SYSTEM as SYSTEM_Q
 from ...results import Result
 from ...system import Contact, System, relative_cycle, without_own
+from ...system.flow import OPEN
 from ..reduced.params import BrakeParams
 from .result import TravellingWave
 from .zones import SEPARATION, STICK, Scaling
@@ -43,21 +52,39 @@ from .zones import SEPARATION, STICK, Scaling
 __all__ = ["ring_system", "WaveSpectrum", "wave_spectrum", "wave_spectra"]
 
 
-def ring_system(params, nodes: int) -> System:
-    """The ring of ``nodes`` nodes in contact with the shaft (see the module), internal units."""
+def ring_system(params, nodes: int, *, separation: bool = False) -> System:
+    """The ring of ``nodes`` nodes in contact with the shaft (see the module), internal units.
+
+    With ``separation`` the ring may leave the shaft: every node's normal displacement is a
+    degree of freedom too, its gap ``u_j = U_j - delta`` (the first ``nodes`` of ``x``; the ``V_j``
+    follow), with ``u_j'' = b (u_{j+1} - 2 u_j + u_{j-1}) / dtheta^2 + D (V_{j+1} - V_{j-1}) / (2 dtheta)
+    - g (u_j + delta) + P_j``, and each node's contact a rigid unilateral constraint ``u_j >= 0``
+    whose reaction is ``P_j`` (`stickslip.system.Contact` with ``rigid=True``): it lifts off where
+    ``P_j`` reaches zero and lands by a plastic impact with its Coulomb friction impulse, as the
+    Moreau runs of `wave_persistence` have it."""
     if not isinstance(params, BrakeParams):
         raise ParameterError("params", params, "BrakeParams (stickslip.brake.BrakeParams)")
     nodes = Q.check("spectrum_nodes", nodes, "nodes")
+    if not isinstance(separation, (bool, np.bool_)):
+        raise ParameterError("separation", separation, "True or False")
     sc = Scaling(params)
     co = sc.coefficients
     dth = 2.0 * math.pi / nodes
     eye = np.eye(nodes)
     laplacian = 2.0 * eye - np.roll(eye, 1, axis=1) - np.roll(eye, -1, axis=1)
-    sign = 1.0 if co.D >= 0 else -1.0
     pressure = co.g * sc.delta
     if not pressure > 0:
         raise ParameterError("delta", params.delta, "> 0 (a ring pressed on the shaft)")
     law = Coulomb(params.friction, params.friction)
+    if separation:
+        grad = (np.roll(eye, 1, axis=1) - np.roll(eye, -1, axis=1)) / (2.0 * dth)  # (grad W)_j: centred
+        K = np.block([[co.b * laplacian / dth**2 + co.g * eye, -co.D * grad],
+                      [co.D * grad, co.a * laplacian / dth**2 + co.h * eye]])
+        unit = np.eye(2 * nodes)
+        contacts = [Contact(unit[nodes + j], None, law, 1.0, name=f"node {j}", normal_direction=unit[j], rigid=True)
+                    for j in range(nodes)]
+        return System(unit, K, contacts, force=np.concatenate([np.full(nodes, -pressure), np.zeros(nodes)]))
+    sign = 1.0 if co.D >= 0 else -1.0
     contacts = []
     for j in range(nodes):
         grad = sign * (eye[(j + 1) % nodes] - eye[j - 1])  # P_j = g delta - |D| grad . V / (2 dtheta)
@@ -82,6 +109,7 @@ class WaveSpectrum(Result):
     continuous_shift_time: float
     multipliers: np.ndarray
     events_per_shift: int
+    separation: bool = False
 
     @property
     def leading(self) -> complex:
@@ -102,6 +130,7 @@ class WaveSpectrum(Result):
         return {"nodes": self.nodes, "n": self.n, "stable": self.stable, "growth_per_period": self.growth_per_period,
                 "leading_abs": abs(self.leading), "shift_time": self.shift_time,
                 "continuous_shift_time": self.continuous_shift_time, "events_per_shift": self.events_per_shift,
+                "separation": self.separation,
                 "multipliers_abs": np.abs(self.multipliers[:12]).tolist()}
 
     def to_xarray(self) -> xr.Dataset:
@@ -113,6 +142,7 @@ class WaveSpectrum(Result):
                                                                                "long_name": "multiplier number"})},
                         attrs={"nodes": self.nodes, "n": self.n, "shift_time": self.shift_time,
                                "continuous_shift_time": self.continuous_shift_time, "stable": int(self.stable),
+                               "separation": int(self.separation),
                                "growth_per_period": self.growth_per_period})
         return finish(ds, "multipliers of a travelling wave's node-shift map on the discrete ring", "brake")
 
@@ -125,13 +155,12 @@ def wave_spectrum(wave, nodes: int = 128, tol: float = 1e-10) -> WaveSpectrum:
     nodes, tol = Q.check("spectrum_nodes", nodes, "nodes"), SYSTEM_Q.check("tol", tol)
     if nodes % wave.n:
         raise ParameterError("nodes", nodes, f"a multiple of the mode number n = {wave.n}")
-    if any(z.kind == SEPARATION for z in wave.zones):
-        raise ParameterError("wave", wave.structure, "a wave in permanent contact (stick, slip, reverse slip): the "
-                             "ring leaving the shaft and landing again is not in this version")
-    if not any(z.kind == STICK for z in wave.zones):
-        raise ParameterError("wave", wave.structure, "a wave with a stick zone (its onset is the map's section)")
+    separates = any(z.kind == SEPARATION for z in wave.zones)
+    if not separates and not any(z.kind == STICK for z in wave.zones):
+        raise ParameterError("wave", wave.structure, "a wave with a stick zone (its onset is the map's section) or "
+                             "a separation zone (its lift-off is)")
     sc = Scaling(wave.params)
-    system = ring_system(wave.params, nodes)
+    system = ring_system(wave.params, nodes, separation=separates)
     c, r = float(wave.x[0]), sc.root_gamma
     dth = 2.0 * math.pi / nodes
     theta = dth * np.arange(nodes) + 0.5 * dth  # off the switching point at phi = 0
@@ -139,16 +168,23 @@ def wave_spectrum(wave, nodes: int = 128, tol: float = 1e-10) -> WaveSpectrum:
     direction = 1 if c > 0 else -1  # the wave moves to larger theta for c > 0
     shift = (np.arange(nodes) + direction) % nodes
     period = (2.0 * math.pi / wave.n) / abs(c)
+    x0, v0 = prof["V"] / r, -c * prof["dV"] / r
+    section = 0  # stick onset; a separating wave: lift-off
+    if separates:  # the gaps: 0 in contact, U - delta in the separation zones
+        off = np.isin(prof["zone"], [i for i, z in enumerate(wave.zones) if z.kind == SEPARATION])
+        x0 = np.concatenate([np.where(off, np.maximum(prof["U"] / r - sc.delta, 0.0), 0.0), x0])
+        v0 = np.concatenate([np.where(off, -c * prof["dU"] / r, 0.0), v0])
+        shift, section = np.concatenate([shift, nodes + shift]), OPEN
     try:
-        cycle = relative_cycle(system, prof["V"] / r, -c * prof["dV"] / r, shift, contact=0, state=0,
-                               horizon=1.5 * period, tol=tol, max_iter=200)
+        cycle = relative_cycle(system, x0, v0, shift, contact=0, state=section, horizon=1.5 * period, tol=tol,
+                               max_iter=200)
     except NoSolutionError as err:
         raise NoSolutionError(f"no wave of the ring of {nodes} nodes near the continuous one ({err})") from None
-    if np.any(cycle.event_state == 2):
-        raise NoSolutionError(f"the ring's wave on {nodes} nodes leaves the shaft (a normal force reached zero): "
-                              "beyond this model")
+    if not separates and np.any(cycle.event_state == OPEN):
+        raise NoSolutionError(f"the ring's wave on {nodes} nodes leaves the shaft (a normal force reached zero) "
+                              "although the continuous one does not")
     return WaveSpectrum(nodes, int(wave.n), cycle.shift_time, dth / abs(c), cycle.multipliers,
-                        int(cycle.event_time.size))
+                        int(cycle.event_time.size), separates)
 
 
 def wave_spectra(wave, nodes=(64, 128, 256), tol: float = 1e-10) -> xr.Dataset:
