@@ -88,22 +88,28 @@ def test_wave_continuation_reports_zone_events(tmp_path, capsys):
 
 def test_spectrum_contract_and_refusals(capsys):
     """The wave's stability on two rings; refused: a ring size that is not a multiple of the wave
-    number, and a wave that separates (one line naming the option, exit 2)."""
+    number (one line naming the option, exit 2). A wave that separates is followed on the ring whose
+    nodes may leave the shaft; one whose discrete wave is not found ends in one line, exit 1."""
     data = _json(["brake", "spectrum", "--omega", "100", "--mismatch", "1e-4", "--friction", "0.2", "--nodes", "32,64",
                   "--json"], capsys)
     assert data["nodes"] == [32, 64] and data["structure"] == "stick|slip" and not data["stable"]
     assert data["growth_per_period"] == data["growth_per_period_by_nodes"][-1] > 0
     assert data["speed_error_by_nodes"][1] < data["speed_error_by_nodes"][0] < 0.02
     for args, name in ((["--nodes", "30"], "--nodes = 30"), (["--nodes", "64,x"], "--nodes"),
-                       (["--nodes", "4096"], "--nodes = 4096"),
-                       (["--mismatch", "1e-5", "--wave-number", "8", "--regime", "stick-slip-separation-reverse-slip"],
-                        "--mismatch = 1e-05")):
+                       (["--nodes", "4096"], "--nodes = 4096")):
         base = {"--omega": "100", "--mismatch": "1e-4", "--friction": "0.2"}
         for k, v in zip(args[::2], args[1::2]):
             base[k] = v
         code = run(["brake", "spectrum", *[x for kv in base.items() for x in kv], "--json"])
         out, err = capsys.readouterr()
         assert code == 2 and out == "" and err.count("\n") == 1 and name in err, err
+    data = _json(["brake", "spectrum", "--omega", "50", "--mismatch", "1.2e-6", "--friction", "0.7", "--nodes", "32",
+                  "--json"], capsys)
+    assert data["separates"] and data["structure"] == "stick|slip|separation" and data["growth_per_period"] > 0
+    code = run(["brake", "spectrum", "--omega", "100", "--mismatch", "1e-5", "--friction", "0.2", "--wave-number", "8",
+                "--regime", "stick-slip-separation-reverse-slip", "--nodes", "64"])
+    out, err = capsys.readouterr()
+    assert code == 1 and out == "" and err.count("\n") == 1 and "no wave of the ring of 64 nodes" in err
 
 
 def test_bad_regime_is_a_usage_error(capsys):

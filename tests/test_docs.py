@@ -37,6 +37,8 @@ def test_systems_page_runs(monkeypatch):
     for block in _blocks("docs/systems.md"):
         exec(block, namespace)
     assert list(namespace["run"].event_contact) == [1, 0, 0, 0, 0, 1, 1]
+    assert list(namespace["ramp_run"].event_time) == [2.0]
+    assert namespace["drop"].event_time[0] == pytest.approx((0.04 / 9.81) ** 0.5, rel=1e-13) and list(namespace["drop"].event_state) == [1, 0]
     assert namespace["ds"]["friction_force"].dims == ("t", "contact")
     cycle = namespace["cycle"]
     assert round(cycle.period, 2) == 6.69 and cycle.stable

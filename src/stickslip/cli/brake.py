@@ -249,8 +249,9 @@ def spectrum(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = No
              out: Annotated[Optional[Path], typer.Option(help="Write the convergence table to this netCDF file "
                                                               "(.nc).")] = None,
              overwrite: Replace = False):
-    """Stability of a travelling wave in permanent contact: the multipliers of its node-shift map
-    on rings of --nodes nodes (a perturbation grows by exp(growth_per_period) per wave period)."""
+    """Stability of a travelling wave: the multipliers of its node-shift map on rings of --nodes nodes
+    (a perturbation grows by exp(growth_per_period) per wave period); a wave that separates from the
+    shaft on the ring whose nodes may leave it too."""
     from ..brake import travelling_wave
     from ..brake.waves import wave_spectra
 
@@ -260,15 +261,10 @@ def spectrum(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = No
     p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
     wave = travelling_wave(p, modes, regime=_regime(regime))
-    if "separation" in wave.structure:
-        raise ParameterError("--mismatch" if mismatch is not None else "--delta",
-                             mismatch if mismatch is not None else delta,
-                             f"a mismatch where the wave stays in contact (this one, {wave.structure}, separates "
-                             "from the shaft: not in this computation)",
-                             also=("--omega" if omega is not None else "--gamma", "--friction", "--wave-number"))
     ds = wave_spectra(wave, sizes)
     last = ds.isel(nodes=-1)
-    data = {"c": float(wave.c), "structure": wave.structure, "stable": bool(int(last["stable"])),
+    data = {"c": float(wave.c), "structure": wave.structure, "separates": "separation" in wave.structure,
+            "stable": bool(int(last["stable"])),
             "growth_per_period": float(last["growth_per_period"]), "nodes": [int(k) for k in ds.nodes.values],
             "growth_per_period_by_nodes": [float(v) for v in ds["growth_per_period"].values],
             "leading_abs_by_nodes": [float(v) for v in ds["leading_abs"].values],

@@ -204,6 +204,7 @@ BRAKE = Domain("brake", units="the paper's: time Omega t, lengths in R, traction
     Q("flutter_speed", "1", "phase speed of the lowest flutter branch (units of c_p / R)"),
     # the stability of a wave on the discrete ring (waves.spectrum)
     Q("stable", "1", "1 if the wave is stable: its node-shift multipliers but its own inside the unit circle"),
+    Q("separates", "1", "1 if the wave leaves the shaft (followed on the ring whose nodes may leave it too)"),
     Q("growth_per_period", "1", "ln of a perturbation's growth over one wave period (> 0: unstable)"),
     Q("growth_per_period_by_nodes", "1", "growth_per_period on each ring of --nodes"),
     Q("leading_abs", "1", "modulus of the leading node-shift multiplier (not the wave's own 1)"),

@@ -37,3 +37,14 @@ def test_the_checks_pass_on_the_computed_data():
     ds = wave_stability.compute(quick=True)
     assert _failed(ds) == []
     assert "unstable" in wave_stability.describe(ds)
+
+
+def test_the_separating_waves_check_catches_a_motion_that_does_not_converge_to_the_moreau_steppers():
+    def table(refinement):
+        ds = _table([[0.06, 0.066, 0.067], [0.17, 0.21, 0.23]], [[4e-3, 1e-3, 2.5e-4]] * 2, [0.05, 0.18])
+        sep = ds.isel(wave=[0]).assign_coords(wave=["c (separates)"])
+        ds = xr.concat([ds, sep], dim="wave")
+        return ds.assign(moreau_refinement=("moreau_steps", np.array(refinement)))
+    assert _failed(table([1e-3, 5e-4, 2.5e-4])) == []
+    assert any("Moreau stepper" in n for n in _failed(table([1e-3, 9e-4, 8e-4])))  # not first order
+    assert any("Moreau stepper" in n for n in _failed(table([4e-3, 2e-3, 1e-3])))  # too far

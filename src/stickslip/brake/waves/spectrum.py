@@ -130,7 +130,7 @@ class WaveSpectrum(Result):
         return {"nodes": self.nodes, "n": self.n, "stable": self.stable, "growth_per_period": self.growth_per_period,
                 "leading_abs": abs(self.leading), "shift_time": self.shift_time,
                 "continuous_shift_time": self.continuous_shift_time, "events_per_shift": self.events_per_shift,
-                "separation": self.separation,
+                "separates": self.separation,
                 "multipliers_abs": np.abs(self.multipliers[:12]).tolist()}
 
     def to_xarray(self) -> xr.Dataset:
@@ -142,7 +142,7 @@ class WaveSpectrum(Result):
                                                                                "long_name": "multiplier number"})},
                         attrs={"nodes": self.nodes, "n": self.n, "shift_time": self.shift_time,
                                "continuous_shift_time": self.continuous_shift_time, "stable": int(self.stable),
-                               "separation": int(self.separation),
+                               "separates": int(self.separation),
                                "growth_per_period": self.growth_per_period})
         return finish(ds, "multipliers of a travelling wave's node-shift map on the discrete ring", "brake")
 
