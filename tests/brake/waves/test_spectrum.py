@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from stickslip.brake import BrakeParams, travelling_wave
-from stickslip.brake.waves import Scaling, ring_system, wave_spectra, wave_spectrum
+from stickslip.brake.waves import Scaling, ring_system, sampled_ring, wave_spectra, wave_spectrum
 from stickslip.errors import ParameterError
 from stickslip.system import Flow, cell_symmetry, monodromy, relative_cycle, simulate
 
@@ -206,12 +206,9 @@ def test_a_separating_wave_has_a_discrete_wave_whose_multipliers_are_those_of_it
     assert sp.separation and abs(sp.shift_time / sp.continuous_shift_time - 1.0) < 1e-2
     assert np.min(np.abs(sp.multipliers - 1.0)) < 1e-8
     system = ring_system(separating.params, N, separation=True)
-    sc = Scaling(separating.params)
-    c, r = float(separating.x[0]), sc.root_gamma
-    prof = separating.evaluate(2 * math.pi * (np.arange(N) + 0.5) / N)
-    off = np.isin(prof["zone"], [i for i, z in enumerate(separating.zones) if z.kind == "separation"])
-    x0 = np.concatenate([np.where(off, np.maximum(prof["U"] / r - sc.delta, 0.0), 0.0), prof["V"] / r])
-    v0 = np.concatenate([np.where(off, -c * prof["dU"] / r, 0.0), -c * prof["dV"] / r])
+    c = float(separating.x[0])
+    x0, v0, off = sampled_ring(separating, N)
+    assert off.any() and x0.size == 2 * N and np.all(x0[:N][~off] == 0.0)
     shift = (np.arange(N) + (1 if c > 0 else -1)) % N
     cycle = relative_cycle(system, x0, v0, np.concatenate([shift, N + shift]), contact=0, state=2,
                            horizon=2 * math.pi / separating.n / abs(c))
@@ -241,25 +238,9 @@ def test_the_separating_ring_moves_as_the_independent_moreau_stepper_converges(s
     every node) against `step_ring`, the Moreau stepper of `wave_persistence` (written apart: an
     impulse per step keeps U >= delta, Coulomb's impulse sticks or slides): over half a wave period
     on 64 nodes from the sampled wave, the difference falls at first order in the Moreau step."""
-    from stickslip.brake.waves.stability import RingState, step_ring
-    N = 64
-    params = separating.params
-    system = ring_system(params, N, separation=True)
-    sc = Scaling(params)
-    c, r = float(separating.x[0]), sc.root_gamma
-    dth = 2 * math.pi / N
-    prof = separating.evaluate(dth * (np.arange(N) + 0.5))
-    off = np.isin(prof["zone"], [i for i, z in enumerate(separating.zones) if z.kind == "separation"])
-    u, du = np.where(off, np.maximum(prof["U"] / r - sc.delta, 0.0), 0.0), np.where(off, -c * prof["dU"] / r, 0.0)
-    V, dV = prof["V"] / r, -c * prof["dV"] / r
-    t_end = 0.5 * (2 * math.pi / separating.n) / abs(c)
-    run = simulate(system, np.concatenate([u, V]), np.concatenate([du, dV]), t_end, samples=2)
-    assert np.any(run.event_state == 2) and run.event_time.size > 4 * separating.n
-    exact = np.concatenate([run.x[-1], run.v[-1]])
-    errors = []
-    for steps in (4000, 8000, 16000):
-        st = RingState(u + sc.delta, V.copy(), du.copy(), dV.copy())
-        step_ring(st, sc.coefficients, sc.delta, params.friction, dth, t_end / steps, steps)
-        errors.append(np.abs(np.concatenate([st.U - sc.delta, st.V, st.dU, st.dV]) - exact).max())
-    ratios = np.array(errors[:-1]) / np.array(errors[1:])
-    assert errors[-1] < 1e-3 * np.abs(exact).max() and np.all((ratios > 1.5) & (ratios < 2.7)), (errors, ratios)
+    from stickslip.brake.waves import moreau_difference
+    errors = moreau_difference(separating, 64, (4000, 8000, 16000))
+    ratios = errors[:-1] / errors[1:]
+    assert errors[-1] < 1e-3 and np.all((ratios > 1.5) & (ratios < 2.7)), (errors, ratios)
+    with pytest.raises(ParameterError, match="separates from the shaft"):
+        moreau_difference(travelling_wave(PARAMS, 4), 64)

@@ -18,11 +18,11 @@ from .continuation import PARAMETERS, WaveBranch, WaveEvent, continue_waves
 from .result import REGIMES, TravellingWave, Zone, regime_name
 from .shoot import Orbit, stick_exit_orbit
 from .solve import find_waves, solve_layout, travelling_wave
-from .spectrum import WaveSpectrum, ring_system, wave_spectra, wave_spectrum
+from .spectrum import WaveSpectrum, moreau_difference, ring_system, sampled_ring, wave_spectra, wave_spectrum
 from .stability import WavePersistence, wave_persistence
 from .zones import Scaling, ZoneFlows
 
 __all__ = ["TravellingWave", "Zone", "REGIMES", "regime_name", "travelling_wave", "find_waves", "solve_layout",
            "WaveBranch", "WaveEvent", "continue_waves", "PARAMETERS", "WavePersistence", "wave_persistence",
            "energy_balance", "integrate_wave", "WaveSpectrum", "ring_system", "wave_spectrum",
-           "wave_spectra", "Scaling", "ZoneFlows", "Orbit", "stick_exit_orbit"]
+           "wave_spectra", "sampled_ring", "moreau_difference", "Scaling", "ZoneFlows", "Orbit", "stick_exit_orbit"]

@@ -43,13 +43,14 @@ from ...errors import NoSolutionError, ParameterError
 from ...friction import Coulomb
 from ...quantities import BRAKE as Q, SYSTEM as SYSTEM_Q
 from ...results import Result
-from ...system import Contact, System, relative_cycle, without_own
+from ...system import Contact, System, relative_cycle, simulate, without_own
 from ...system.flow import OPEN
 from ..reduced.params import BrakeParams
 from .result import TravellingWave
+from .stability import RingState, step_ring
 from .zones import SEPARATION, STICK, Scaling
 
-__all__ = ["ring_system", "WaveSpectrum", "wave_spectrum", "wave_spectra"]
+__all__ = ["ring_system", "WaveSpectrum", "wave_spectrum", "wave_spectra", "sampled_ring", "moreau_difference"]
 
 
 def ring_system(params, nodes: int, *, separation: bool = False) -> System:
@@ -91,6 +92,42 @@ def ring_system(params, nodes: int, *, separation: bool = False) -> System:
         contacts.append(Contact(eye[j], pressure, law, 1.0, name=f"node {j}", normal_direction=grad,
                                 normal_stiffness=abs(co.D) / (2.0 * dth), normal_on_structure=False))
     return System(eye, co.a * laplacian / dth**2 + co.h * eye, contacts)
+
+
+def sampled_ring(wave, nodes: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(x0, v0, off)``: the continuous ``wave`` sampled at the middles of ``nodes`` cells, as the
+    state of `ring_system` (with the gaps ``u = U - delta`` first when the wave separates: 0 in
+    contact) and which nodes are in its separation zones."""
+    sc = Scaling(wave.params)
+    c, r = float(wave.x[0]), sc.root_gamma
+    dth = 2.0 * math.pi / nodes
+    prof = wave.evaluate(dth * np.arange(nodes) + 0.5 * dth)  # off the switching point at phi = 0
+    off = np.isin(prof["zone"], [i for i, z in enumerate(wave.zones) if z.kind == SEPARATION])
+    x0, v0 = prof["V"] / r, -c * prof["dV"] / r
+    if any(z.kind == SEPARATION for z in wave.zones):
+        x0 = np.concatenate([np.where(off, np.maximum(prof["U"] / r - sc.delta, 0.0), 0.0), x0])
+        v0 = np.concatenate([np.where(off, -c * prof["dU"] / r, 0.0), v0])
+    return x0, v0, off
+
+
+def moreau_difference(wave, nodes: int = 64, steps=(4000, 8000, 16000), fraction: float = 0.5) -> np.ndarray:
+    """The ring whose nodes may leave the shaft, from the sampled separating ``wave`` over ``fraction``
+    of a wave period, event-driven against the Moreau stepper of `wave_persistence` (`step_ring`,
+    written apart) with each of ``steps``: the largest difference of the end states, relative to
+    the largest entry of the event-driven one."""
+    sc = Scaling(wave.params)
+    if not any(z.kind == SEPARATION for z in wave.zones):
+        raise ParameterError("wave", wave.structure, "a wave that separates from the shaft")
+    x0, v0, _ = sampled_ring(wave, nodes)
+    t_end = fraction * (2.0 * math.pi / wave.n) / abs(float(wave.x[0]))
+    run = simulate(ring_system(wave.params, nodes, separation=True), x0, v0, t_end, samples=2)
+    exact = np.concatenate([run.x[-1], run.v[-1]])
+    out = []
+    for k in steps:
+        st = RingState(x0[:nodes] + sc.delta, x0[nodes:].copy(), v0[:nodes].copy(), v0[nodes:].copy())
+        step_ring(st, sc.coefficients, sc.delta, wave.params.friction, 2.0 * math.pi / nodes, t_end / k, k)
+        out.append(np.abs(np.concatenate([st.U - sc.delta, st.V, st.dU, st.dV]) - exact).max() / np.abs(exact).max())
+    return np.array(out)
 
 
 @dataclass(frozen=True, repr=False)
@@ -148,8 +185,9 @@ class WaveSpectrum(Result):
 
 
 def wave_spectrum(wave, nodes: int = 128, tol: float = 1e-10) -> WaveSpectrum:
-    """The discrete ring's wave near ``wave`` (a `TravellingWave` in permanent contact) on
-    ``nodes`` nodes (a multiple of ``wave.n``) and the multipliers of its node-shift map."""
+    """The discrete ring's wave near ``wave`` (a `TravellingWave`; one that separates from the shaft
+    on the ring whose nodes may leave it too) on ``nodes`` nodes (a multiple of ``wave.n``) and the
+    multipliers of its node-shift map."""
     if not isinstance(wave, TravellingWave):
         raise ParameterError("wave", wave, "a TravellingWave (stickslip.brake.travelling_wave)")
     nodes, tol = Q.check("spectrum_nodes", nodes, "nodes"), SYSTEM_Q.check("tol", tol)
@@ -159,22 +197,16 @@ def wave_spectrum(wave, nodes: int = 128, tol: float = 1e-10) -> WaveSpectrum:
     if not separates and not any(z.kind == STICK for z in wave.zones):
         raise ParameterError("wave", wave.structure, "a wave with a stick zone (its onset is the map's section) or "
                              "a separation zone (its lift-off is)")
-    sc = Scaling(wave.params)
     system = ring_system(wave.params, nodes, separation=separates)
-    c, r = float(wave.x[0]), sc.root_gamma
+    c = float(wave.x[0])
     dth = 2.0 * math.pi / nodes
-    theta = dth * np.arange(nodes) + 0.5 * dth  # off the switching point at phi = 0
-    prof = wave.evaluate(theta)
     direction = 1 if c > 0 else -1  # the wave moves to larger theta for c > 0
     shift = (np.arange(nodes) + direction) % nodes
     period = (2.0 * math.pi / wave.n) / abs(c)
-    x0, v0 = prof["V"] / r, -c * prof["dV"] / r
-    section = 0  # stick onset; a separating wave: lift-off
-    if separates:  # the gaps: 0 in contact, U - delta in the separation zones
-        off = np.isin(prof["zone"], [i for i, z in enumerate(wave.zones) if z.kind == SEPARATION])
-        x0 = np.concatenate([np.where(off, np.maximum(prof["U"] / r - sc.delta, 0.0), 0.0), x0])
-        v0 = np.concatenate([np.where(off, -c * prof["dU"] / r, 0.0), v0])
-        shift, section = np.concatenate([shift, nodes + shift]), OPEN
+    x0, v0, _ = sampled_ring(wave, nodes)
+    section = OPEN if separates else 0  # a separating wave: node 0's lift-off; else its stick onset
+    if separates:
+        shift = np.concatenate([shift, nodes + shift])
     try:
         cycle = relative_cycle(system, x0, v0, shift, contact=0, state=section, horizon=1.5 * period, tol=tol,
                                max_iter=200)

@@ -14,10 +14,8 @@ from matplotlib.figure import Figure
 
 from ... import plotting
 from ...brake import BrakeParams, continue_waves, travelling_wave
-from ...brake.waves import Scaling, ring_system, wave_persistence, wave_spectrum
-from ...brake.waves.stability import RingState, step_ring
+from ...brake.waves import moreau_difference, wave_persistence, wave_spectrum
 from ...errors import NoSolutionError
-from ...system import simulate
 from .. import Check, FigureSpec
 from .paper import FIG5, FIG11
 
@@ -35,29 +33,6 @@ BRANCH_POINTS = 25
 #: Moreau steps over half a wave period against which the event-driven separating ring is set.
 MOREAU_STEPS = (4000, 8000, 16000)
 R = 0.1  # the ring's inner radius [m] (paper.GEOMETRY)
-
-
-def _moreau_refinement(wave, nodes: int = 64) -> np.ndarray:
-    """Largest difference, over half a wave period from the sampled wave, between the event-driven
-    separating ring and the Moreau stepper with each of `MOREAU_STEPS` steps, relative to the state."""
-    params = wave.params
-    sc = Scaling(params)
-    c, r = float(wave.x[0]), sc.root_gamma
-    dth = 2 * math.pi / nodes
-    prof = wave.evaluate(dth * (np.arange(nodes) + 0.5))
-    off = np.isin(prof["zone"], [i for i, z in enumerate(wave.zones) if z.kind == "separation"])
-    u, du = np.where(off, np.maximum(prof["U"] / r - sc.delta, 0.0), 0.0), np.where(off, -c * prof["dU"] / r, 0.0)
-    V, dV = prof["V"] / r, -c * prof["dV"] / r
-    t_end = 0.5 * (2 * math.pi / wave.n) / abs(c)
-    run = simulate(ring_system(params, nodes, separation=True), np.concatenate([u, V]), np.concatenate([du, dV]),
-                   t_end, samples=2)
-    exact = np.concatenate([run.x[-1], run.v[-1]])
-    out = []
-    for steps in MOREAU_STEPS:
-        st = RingState(u + sc.delta, V.copy(), du.copy(), dV.copy())
-        step_ring(st, sc.coefficients, sc.delta, params.friction, dth, t_end / steps, steps)
-        out.append(np.abs(np.concatenate([st.U - sc.delta, st.V, st.dU, st.dV]) - exact).max() / np.abs(exact).max())
-    return np.array(out)
 
 
 def _growth(wave, nodes: int) -> float:
@@ -93,7 +68,7 @@ def compute(quick: bool = False) -> xr.Dataset:
         persists.append(int(run.persists))
         period.append(wave_period)
         if i == SEPARATING:
-            refinement = _moreau_refinement(wave)
+            refinement = moreau_difference(wave, 64, MOREAU_STEPS)
     p0 = BrakeParams.from_physical(FIG11["omega"], FIG11["mismatch"][0], FIG11["friction"])
     branch = continue_waves(p0, FIG11["modes"], "delta", FIG11["mismatch"][1] / R, num=BRANCH_POINTS, spacing="log")
     delta, structure, along = [], [], []
