@@ -116,6 +116,14 @@ def _finite(row) -> np.ndarray:
     return row[np.isfinite(row)]
 
 
+def stability_changes(ds: xr.Dataset) -> list[float]:
+    """The mismatches [m] between two neighbouring points of the branch where the growth at the most
+    nodes changes sign (geometric means of the two; points without a discrete wave skipped)."""
+    g, d = ds.branch_growth.values[:, -1], ds.mismatch.values
+    done = np.flatnonzero(np.isfinite(g))
+    return [float(np.sqrt(d[a] * d[b])) for a, b in zip(done[:-1], done[1:]) if (g[a] > 0) != (g[b] > 0)]
+
+
 def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
     fig, (ax, bx, cx, dx) = plotting.new_figure(fig, ncols=2, nrows=2, size=(5.4, 4.0))
     colors = ("tab:blue", "tab:red", "tab:green")
@@ -139,6 +147,8 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
         cx.plot(ds.mismatch[~sep] * 1e6, ds.branch_growth[~sep, j], "o", ms=3, color=line.get_color())
         cx.plot(ds.mismatch[sep] * 1e6, ds.branch_growth[sep, j], "o", ms=3, mfc="white", color=line.get_color())
     cx.plot([], [], "o", ms=3, mfc="white", color="0.4", label="the wave separates")
+    for k, d in enumerate(stability_changes(ds)):
+        cx.axvline(d * 1e6, color="k", ls=":", lw=0.8, label="stability changes\n(128 nodes)" if k == 0 else None)
     cx.axhline(0.0, color="k", lw=0.6)
     cx.set_xscale("log")
     cx.set_xlabel("mismatch d [µm]"), cx.set_ylabel("ln(growth) per wave period [1]")
@@ -204,6 +214,13 @@ def describe(ds: xr.Dataset) -> str:
     parts.append(f"the Moreau runs (CFL 0.25) grow slower than the multipliers say by {min(gap):.3f} to "
                  f"{max(gap):.3f} per period on the waves in contact (their numerical damping)")
     b = ds.branch_growth.values[:, -1]
+    changes = stability_changes(ds)
+    both = np.all(np.isfinite(ds.branch_growth.values), axis=1)
+    differ = ds.mismatch.values[both & ((ds.branch_growth.values[:, 0] > 0) != (b > 0))]
+    parts.append(f"along Figure 11's branch the stability changes {len(changes)} times at 128 nodes"
+                 + (f" (near d = {', '.join(f'{v * 1e6:.2f}' for v in changes)} µm)" if changes else "")
+                 + (f"; 64 and 128 nodes disagree on the sign at d = {', '.join(f'{v * 1e6:.2f}' for v in differ)} "
+                    "µm: marginal waves there, not settled" if differ.size else ""))
     sep = np.array(["separation" in s for s in ds.branch_structure.values])
     for label, sel in (("in permanent contact", ~sep), ("separating", sep)):
         v = b[sel][np.isfinite(b[sel])]
