@@ -15,7 +15,9 @@ to ``f``: a flow is then that of one piece.
 Every switching function is linear in ``z``: a slipping contact's ``s_j v_r``, a sticking one's
 ``f_s N -+ F``, a unilateral contact's ``N(x)`` (opening; ``-N(x)`` while open: closing; a normal
 force ``N(x) = N_0 - k_n n . x`` adds ``k_n n n^T`` to the stiffness and, slipping, the friction
-``s mu0 k_n w n^T``). The first time one of them reaches zero is found on the exact flow, at steps
+``s mu0 k_n w n^T``; a rigid one's normal force is the reaction of ``n . x = 0``, solved with the
+sticking contacts' forces, and while open its gap ``n . x`` is the closing function). The first
+time one of them reaches zero is found on the exact flow, at steps
 of a fraction of the fastest time scale of ``A`` (a sign change, or a dip between two steps
 seen by the derivative, which is linear in ``z`` too), then on the step's Taylor series to
 round-off: compiled, in `stickslip.system.search`.
@@ -115,7 +117,7 @@ class Flow:
             mu[:, :n], mu[:, n:2 * n], mu[:, -1], mu[:, e] = L @ k_eff, L @ c_eff, -L @ g, -L @ B
             force_rows[stuck] = mu[:len(stuck)]
             normal[closed] = mu[len(stuck):]
-            for k, j in enumerate(closed):
+            for j in closed:
                 if self.states[j] != 0:
                     force_rows[j] = self.states[j] * system.contacts[j].friction.affine[0] * normal[j]
             # the velocity put on the constraints by impulses along the forces' directions: v + Q (V - G^T v),

@@ -9,6 +9,8 @@ at most one solve per contact). The released contacts must then slip the way the
 released (their slip acceleration has the force's sign); if not, no state is consistent and
 the simulation stops with a `NoSolutionError` saying so. A contact that sticks has its slip
 velocity set to exactly zero (the velocity moved in the metric of ``M``, by round-off).
+A rigid contact that lands (`land`) loses its normal velocity in a plastic impact with its friction
+impulse; a closed one whose reaction would pull opens (the most pulling first, as for releases).
 """
 
 from __future__ import annotations

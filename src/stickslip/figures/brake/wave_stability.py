@@ -146,13 +146,13 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
         line, = cx.plot(ds.mismatch * 1e6, ds.branch_growth[:, j], "-", lw=1.0, label=f"{k} nodes")
         cx.plot(ds.mismatch[~sep] * 1e6, ds.branch_growth[~sep, j], "o", ms=3, color=line.get_color())
         cx.plot(ds.mismatch[sep] * 1e6, ds.branch_growth[sep, j], "o", ms=3, mfc="white", color=line.get_color())
-    cx.plot([], [], "o", ms=3, mfc="white", color="0.4", label="the wave separates")
+    cx.plot([], [], "o", ms=3, mfc="white", color="0.4", label="separates")
     for k, d in enumerate(stability_changes(ds)):
-        cx.axvline(d * 1e6, color="k", ls=":", lw=0.8, label="stability changes\n(128 nodes)" if k == 0 else None)
+        cx.axvline(d * 1e6, color="k", ls=":", lw=0.8, label="sign change" if k == 0 else None)
     cx.axhline(0.0, color="k", lw=0.6)
     cx.set_xscale("log")
     cx.set_xlabel("mismatch d [µm]"), cx.set_ylabel("ln(growth) per wave period [1]")
-    cx.set_title("along Figure 11's branch (> 0: unstable)", fontsize=10)
+    cx.set_title("Figure 11's branch (> 0: unstable)", fontsize=10)
     plotting.legend_beside(cx)
     periods = ds.moreau_period.values
     for i, name in enumerate(ds.wave.values):
