@@ -188,3 +188,89 @@ def test_a_contact_landing_into_stick_and_pulled_off_at_once_is_no_paradox(vx):
     # just after the touch: no normal velocity, and the belt's speed along x (the impulse stuck it)
     after = run.segments[1].z
     assert after[3] == 0.0 and after[2] == pytest.approx(V, rel=1e-13)
+
+
+def test_a_block_starting_on_the_surface_and_moving_into_it_lands_at_once():
+    # on the floor (belt at rest) moving down at 1 m/s and along it at 0.5 m/s: the plastic impact at t = 0
+    # stops the fall and its friction impulse (f times M * 1 m/s) leaves 0.5 - f m/s; then friction f G
+    # stops the slide at t = (0.5 - f) / (f G) (a run once went through the floor here, without an error)
+    floor = Contact([1.0, 0.0], None, Coulomb(0.3, 0.3), 0.0, normal_direction=[0.0, 1.0], rigid=True)
+    system = System(np.eye(2), np.zeros((2, 2)), [floor], force=[0.0, -G])
+    run = simulate(system, x0=[0.0, 0.0], v0=[0.5, -1.0], t_end=0.2, samples=5)
+    assert np.all(run.x[:, 1] == 0.0) and np.all(run.v[:, 1] == 0.0)
+    assert run.v[0, 0] == pytest.approx(0.2, rel=1e-14)
+    assert run.event_time[0] == pytest.approx(0.2 / (0.3 * G), rel=1e-12) and run.event_state[0] == 0
+
+
+def _bar(tilt=0.0):
+    """A bar (x, y, its rotation) with two feet at -+0.5 on a belt at 0.6 m/s, under its weight: the feet's
+    normals couple y and the rotation through the bar's inertia."""
+    feet = [Contact([1.0, 0.0, 0.0], None, Coulomb(0.5, 0.4), 0.6, normal_direction=[0.0, 1.0, s * 0.5], rigid=True)
+            for s in (-1, 1)]
+    return System(np.diag([1.0, 1.0, 0.2]), np.diag([1.0, 0.0, 2.0]), feet, force=[0.0, -G, 0.0])
+
+
+def test_two_feet_coupled_through_the_inertia_landing_together_have_the_monodromy_of_their_runs():
+    # dropped flat, both feet land at once: the second landing's reset keeps the first one's constraint
+    # (the monodromy was 1.2 off before)
+    system, t_end = _bar(), 0.4
+    z0 = np.array([0.0, 0.05, 0.0, 0.0, 0.0, 0.0])
+    run = simulate(system, z0[:3], z0[3:], t_end, samples=2, segments=True)
+    assert run.event_time[0] == run.event_time[1] == pytest.approx(np.sqrt(0.1 / G), rel=1e-13)
+    Phi = monodromy(system, run)
+    fd = np.zeros((6, 6))
+    for j in range(6):
+        h = 1e-7 * np.eye(6)[j]
+        ends = [end_state(simulate(system, (z0 + s * h)[:3], (z0 + s * h)[3:], t_end, samples=2)) for s in (1, -1)]
+        fd[:, j] = (ends[0] - ends[1]) / 2e-7
+    assert np.abs(Phi - fd).max() < 1e-5 * np.abs(fd).max()
+
+
+def test_a_landing_does_not_pull_on_a_contact_resting_nearby():
+    # two normal dofs coupled through M (M12 = -0.5): y2 lands at speed u while y1 rests on its surface.
+    # Keeping both closed would need a pulling impulse on y1; with impulses >= 0, P1 = 0 and y1 lifts off
+    # at -M^-1_12 / M^-1_22 u, the kinetic energy after the impact 0.15 J (not 0)
+    M = np.diag([1.0, 1.0, 1.0])
+    M[1:, 1:] = [[1.0, -0.5], [-0.5, 1.0]]
+    feet = [Contact([1.0, 0.0, 0.0], None, Coulomb(0.2, 0.2), 0.0, normal_direction=np.eye(3)[k], rigid=True)
+            for k in (1, 2)]
+    system = System(M, np.zeros((3, 3)), feet, force=[0.0, -1.0, -1.0])
+    run = simulate(system, [0.0, 0.0, 0.1], [0.0, 0.0, -1.0], 1.0, samples=2, segments=True)
+    landing = next(seg for seg in run.segments if seg.t > 0)
+    v = landing.z[3:6]
+    u = -simulate(system, [0.0, 0.0, 0.1], [0.0, 0.0, -1.0], landing.t * (1 - 1e-13), samples=2).v[-1, 2]
+    Minv = np.linalg.inv(M[1:, 1:])
+    assert landing.states[0] == 2 and v[2] == pytest.approx(0.0, abs=1e-14)
+    assert v[1] == pytest.approx(Minv[0, 1] / Minv[1, 1] * u, rel=1e-12)
+    assert 0.5 * v @ M @ v == pytest.approx(0.15, rel=1e-12)
+
+
+def test_a_contact_with_a_finite_normal_force_takes_no_impulse_at_a_landing():
+    # x stuck on a fixed surface (N = 10, not rigid), coupled through M to y, which lands on a frictionless
+    # floor: the impulse is all normal, P_y = -v_y / M^-1_yy, and x jumps to M^-1_xy P_y and slips
+    M = np.array([[1.0, 0.3], [0.3, 1.0]])
+    stuck = Contact([1.0, 0.0], 10.0, Coulomb(0.5, 0.5), 0.0)
+    floor = Contact([1.0, 0.0], None, Coulomb(0.0, 0.0), 0.0, normal_direction=[0.0, 1.0], rigid=True)
+    system = System(M, np.zeros((2, 2)), [stuck, floor], force=[0.0, -1.0])
+    run = simulate(system, [0.0, 0.1], [0.0, -1.0], 0.5, samples=2, segments=True)
+    seg = next(s for s in run.segments if s.t > 0)
+    before = simulate(system, [0.0, 0.1], [0.0, -1.0], seg.t * (1 - 1e-12), samples=2)
+    Minv = np.linalg.inv(M)
+    P = -before.v[-1, 1] / Minv[1, 1]
+    assert seg.states[0] != 0 and seg.z[2] == pytest.approx(Minv[0, 1] * P, rel=1e-9)
+
+
+def test_a_ramp_at_the_top_of_its_range_releases_at_the_closed_form_instant():
+    # 1e15 N/s on a block held by f_s N = 6 N: released at 6e-15 s (the search once put it at 0 and stopped)
+    system = System([[2.0]], [[0.0]], [Contact([1.0], 10.0, Coulomb(0.6, 0.4), 0.0)],
+                    history=ForceHistory([0.0, 1.0], [[0.0], [1e15]]))
+    run = simulate(system, t_end=2.0, samples=2)
+    assert run.event_time[0] == pytest.approx(6e-15, rel=1e-12)
+
+
+def test_a_file_whose_rigid_is_not_true_or_false_names_it():
+    data = {"mass": [[1.0, 0.0], [0.0, 1.0]], "stiffness": [[0.0, 0.0], [0.0, 0.0]],
+            "contact": [{"direction": [1.0, 0.0], "normal_direction": [0.0, 1.0], "rigid": "yes", "fs": F, "fd": F}]}
+    with pytest.raises(ParameterError) as err:
+        system_from_dict(data)
+    assert err.value.name == "contact[0].rigid" and "true or false" in str(err.value)

@@ -86,6 +86,8 @@ def _contact(i: int, table) -> Contact:
         raise ParameterError(where + unknown[0], table[unknown[0]], f"a key of a contact with law {law!r}: "
                              + ", ".join(k for k in keys if not (rate_state and k in ("fs", "fd", "tau"))))
     rigid = table.get("rigid", False)
+    if not isinstance(rigid, bool):
+        raise ParameterError(where + "rigid", rigid, "true or false")
     for key in ("direction",) + (() if rigid is True else ("normal_force",)) + (("a", "b", "dc") if rate_state
                                                                                 else ("fs", "fd")):
         if key not in table:

@@ -78,16 +78,15 @@ def jump(system: System, segment, z: np.ndarray, flows: dict, skip: int | None =
     out = np.eye(2 * n)
     f_minus = flow.A @ z  # the whole field: with harmonic forces the switching functions move in time too
     for k, (r, owner) in enumerate(steps):
+        prior = list(states)  # with the changes of the steps before (contacts landed at the same instant)
         states[owner] = segment.after[owner]
         if k == len(steps) - 1:
             states = list(final)
         after = Flow.cached(system, tuple(states), flows)
         rate = flow.rows[r] @ f_minus
         if _lands(system, flow, r, owner):  # a plastic impact: z+ = R z- (R of the state it lands in, even
-            landed = list(segment.states)  # if it leaves again at once, pulled off: `simulate`)
-            landed, _ = land(system, flow, z, landed, [owner], flows)
-            impact = Flow.cached(system, tuple(landed), flows)
-            R, z = impact.projection(), impact.stick(z)
+            landed, z = land(system, flow, z, prior, [owner], flows)  # if pulled off at once: `simulate`)
+            R = Flow.cached(system, tuple(landed), flows).projection()
             f_plus = after.A @ z
             if rate == 0.0:
                 raise NoSolutionError(f"contact {owner} touches its surface with no normal velocity (a grazing "

@@ -128,9 +128,14 @@ class Flow:
             self._stick = (Q, G, target)
             Nc = system.normal_units[:, closed]  # the closed rigid contacts' positions: n . x = 0 exactly
             self._onto = (Minv @ Nc @ np.linalg.pinv(Nc.T @ Minv @ Nc), Nc) if closed else None
+            # an impact: impulses only where a rigid contact holds (a finite normal force takes none)
+            held = [k for k, i in enumerate(stuck) if system.contacts[i].rigid] + list(range(len(stuck), G.shape[1]))
+            Gi, Ei = G[:, held], E[:, held]
+            Ki = np.linalg.pinv(Gi.T @ Minv @ Ei)
+            self._impact = (Minv @ Ei, Ki, Gi, target[held], [i for i in stuck if system.contacts[i].rigid], closed)
         else:
             P = Minv
-            self._stick = self._onto = None
+            self._stick = self._onto = self._impact = None
         self.normal_rows = normal
         A = np.zeros((size, size))
         A[:n, n:2 * n] = np.eye(n)
@@ -179,6 +184,9 @@ class Flow:
         damp = float(np.abs(A[n:2 * n, n:2 * n]).sum(axis=1).max()) if n else 0.0
         rho = max(math.sqrt(stiff) + damp, max((h.frequency for h in system.harmonics), default=0.0))
         self.h = STEPS_PER_SCALE ** -1 / rho if rho > 0 else math.inf
+        times = None if system.history is None else system.history.times
+        if times is not None and 0 < piece < times.size:  # the step resolves a ramp's piece too (its terms grow)
+            self.h = min(self.h, (times[piece] - times[piece - 1]) / STEPS_PER_SCALE)
         self._step = None
         self._taken = 0  # steps of the event search on this flow (its step's exponential once many)
 
@@ -215,13 +223,34 @@ class Flow:
             z[:n] -= Lx @ (Nc.T @ z[:n])
         return z
 
+    def impact(self, z: np.ndarray) -> tuple[np.ndarray, dict]:
+        """``(z+, impulses)``: a plastic impact onto this state's closed rigid contacts (and the
+        tangential constraint of those that stick): the velocity put on them by impulses along their
+        forces' directions (with the friction impulse of those slipping), and each closed rigid
+        contact's normal impulse (contact -> impulse; < 0: it would pull; those that stick have their
+        tangential one in ``tangential_impulses`` after the call). The other contacts take no impulse
+        (a finite normal force); the closed ones' gaps are set to exactly 0 as in `stick`."""
+        if self._impact is None:
+            return z, {}
+        ME, K, G, V, stuck, closed = self._impact
+        n = self.n
+        z = z.copy()
+        mu = K @ (V - G.T @ z[n:2 * n])
+        z[n:2 * n] += ME @ mu
+        if self._onto is not None:
+            Lx, Nc = self._onto
+            z[:n] -= Lx @ (Nc.T @ z[:n])
+        impulses = {j: float(mu[len(stuck) + k]) for k, j in enumerate(closed)}
+        self.tangential_impulses = {j: float(mu[k]) for k, j in enumerate(stuck)}
+        return z, impulses
+
     def projection(self) -> np.ndarray:
-        """The linear part of `stick` on ``(x, v)`` (2n x 2n): the reset of a plastic impact."""
+        """The linear part of `impact` on ``(x, v)`` (2n x 2n): the reset of a plastic impact."""
         n = self.n
         out = np.eye(2 * n)
-        if self._stick is not None:
-            Q, G, _ = self._stick
-            out[n:, n:] -= Q @ G.T
+        if self._impact is not None:
+            ME, K, G, _, _, _ = self._impact
+            out[n:, n:] -= ME @ K @ G.T
         return out
 
     def acceleration(self, z: np.ndarray) -> np.ndarray:

@@ -89,8 +89,11 @@ class Contact:
     ``n . x >= 0`` (the surface at ``n . x = 0``): while closed, ``n . x = 0`` and the normal force is
     the constraint's reaction, whatever keeps it closed; it opens where that reaction reaches zero,
     and closes where the gap ``n . x`` does, by a plastic impact: the velocity along ``n`` is
-    lost (the smallest change of the velocity in the metric of M keeping the other constraints;
-    no friction impulse)."""
+    lost, with Coulomb's friction impulse (``s f_d`` times the normal impulse slipping the way it
+    was; stuck where that would reverse the slip and ``f_s`` allows it); a closed contact nearby whose
+    impulse would pull opens, and a contact without a rigid normal takes no impulse. ``n`` is the
+    gradient of the gap: its normal force is conjugate to ``n . x`` (a direction twice as long
+    measures the gap twice and halves the force, as ``direction`` does for the friction)."""
 
     direction: np.ndarray
     normal_force: float | None

@@ -148,18 +148,40 @@ def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, relea
 
 def land(system: System, flow: Flow, z: np.ndarray, states, landing, flows: dict, piece: int = 0) -> tuple:
     """``(states, z)`` after the rigid contacts ``landing`` touch their surfaces at ``z`` (``flow``
-    the flow before): a plastic impact with each one's friction impulse, slipping the way its
-    slip velocity was (``states`` holds that sign for them), or sticking where that impulse would
-    reverse the slip (`Flow.stick` of the state after)."""
+    the flow before): a plastic impact (`Flow.impact`) with each one's friction impulse, slipping
+    the way its slip velocity was, or sticking where that impulse would reverse the slip; a closed
+    rigid contact whose impulse would pull opens instead (the most pulling first); a contact that
+    stuck without a rigid normal and is moved by the impact slips."""
     st = list(states)
+    first = {i: 1 if flow.slip_rows[i] @ z > 0 else -1 for i in landing}
     for i in landing:
-        st[i] = 1 if flow.slip_rows[i] @ z > 0 else -1
-    after = flow.slip_rows @ Flow.cached(system, tuple(st), flows, piece).stick(z)
+        st[i] = first[i]
     speed = max(1.0, *(abs(c.surface_speed) for c in system.contacts))
-    for i in landing:
-        if after[i] * st[i] <= 1e-13 * speed:
+    for _ in range(3 * len(system.contacts) + 1):
+        impact = Flow.cached(system, tuple(st), flows, piece)
+        after, impulses = impact.impact(z)
+        size = max((abs(v) for v in impulses.values()), default=0.0)
+        pulling = {j: v for j, v in impulses.items() if v < -1e-12 * size}
+        if pulling:
+            st[min(pulling, key=pulling.get)] = OPEN
+            continue
+        # a landing stuck by an impulse beyond f_s times its normal one slips the other way (Coulomb)
+        beyond = [i for i in landing if st[i] == 0 and abs(impact.tangential_impulses.get(i, 0.0)) >
+                  system.contacts[i].friction.static * impulses.get(i, 0.0) * (1 + 1e-12) + 1e-300]
+        if beyond:
+            for i in beyond:
+                st[i] = -first[i]
+            continue
+        vr = flow.slip_rows @ after
+        reversed_ = [i for i in landing if st[i] == first[i] and vr[i] * st[i] <= 1e-13 * speed]
+        if not reversed_:
+            break
+        for i in reversed_:  # the friction impulse would reverse the slip: it sticks (if Coulomb allows)
             st[i] = 0
-    return st, Flow.cached(system, tuple(st), flows, piece).stick(z)
+    for i, c in enumerate(system.contacts):
+        if st[i] == 0 and not c.rigid and abs(vr[i]) > 1e-13 * speed:
+            st[i] = 1 if vr[i] > 0 else -1
+    return st, after
 
 
 def _sampled(flow: Flow, z: np.ndarray, times: np.ndarray, dt: float) -> np.ndarray:
@@ -276,6 +298,14 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
                                      "< 0)")
             if gap > 1e-12 * scale or (gap >= 0 and c.normal_direction @ v0 > 0):
                 opened.add(i)
+    arriving = [i for i, c in enumerate(system.contacts) if c.rigid and i not in opened
+                and c.normal_direction @ v0 < 0]
+    if arriving:  # on its surface and moving into it: a landing at t = 0
+        pre = [OPEN if i in opened or i in arriving else (1 if vr[i] > 0 else -1) for i in range(k)]
+        _, z = land(system, Flow.cached(system, tuple(pre), flows, piece), z, pre, arriving, flows, piece)
+        v0 = z[n:2 * n]
+        vr = [c.slip_velocity(v0) for c in system.contacts]
+        opened |= {i for i in arriving if system.contacts[i].normal_direction @ v0 > 0}
     zero = {i for i in range(k) if abs(vr[i]) <= 1e-14 * speed} - opened
     if states is None:
         states = tuple(OPEN if i in opened else 0 if i in zero else (1 if vr[i] > 0 else -1) for i in range(k))
