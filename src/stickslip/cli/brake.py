@@ -260,6 +260,9 @@ def spectrum(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = No
     sizes = parse_nodes(nodes, Q.check("modes", modes, "--wave-number"))
     p = params(xi=xi, nu=nu, gamma=gamma, delta=delta, friction=friction, inner_radius=inner_radius,
                outer_radius=outer_radius, young=young, density=density, omega=omega, mismatch=mismatch)
+    if not p.delta > 0:  # the ring's contact reaction g delta: no ring without a press
+        raise ParameterError("--mismatch" if mismatch is not None else "--delta",
+                             mismatch if mismatch is not None else delta, "> 0 (a ring pressed on the shaft)")
     wave = travelling_wave(p, modes, regime=_regime(regime))
     ds = wave_spectra(wave, sizes)
     last = ds.isel(nodes=-1)
