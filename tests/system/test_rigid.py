@@ -16,6 +16,17 @@ from .test_floquet import end_state
 M, K, G, F, V = 2.0, 3.0, 9.81, 0.3, 0.5
 
 
+def central_differences(system, z0, t_end, h=1e-7):
+    """d(x, v)(t_end) / d(x, v)(0) by central differences of whole runs (steps h along each axis)."""
+    n = system.dofs
+    fd = np.zeros((2 * n, 2 * n))
+    for j in range(2 * n):
+        d = h * np.eye(2 * n)[j]
+        ends = [end_state(simulate(system, (z0 + s * d)[:n], (z0 + s * d)[n:], t_end, samples=2)) for s in (1, -1)]
+        fd[:, j] = (ends[0] - ends[1]) / (2 * h)
+    return fd
+
+
 def block(force_history=None, harmonics=(), fs=F, ky=0.0, cy=0.0, lift=0.0):
     """A block (x along the belt, y up) on a spring along x, under its weight, on a belt at y = 0
     moving at V: a rigid contact, n = (0, 1), w = (1, 0)."""
@@ -87,11 +98,7 @@ def test_the_monodromy_across_landings_and_lift_offs_matches_finite_differences(
     kinds = set(run.event_state.tolist())
     assert {2, 1}.issubset(kinds) and (run.event_state == 2).sum() >= 2  # lift-offs and landings
     Phi = monodromy(system, run)
-    fd = np.zeros((4, 4))
-    for j in range(4):
-        h = 1e-7 * np.eye(4)[j]
-        ends = [end_state(simulate(system, (z0 + s * h)[:2], (z0 + s * h)[2:], t_end, samples=2)) for s in (1, -1)]
-        fd[:, j] = (ends[0] - ends[1]) / 2e-7
+    fd = central_differences(system, z0, t_end)
     assert np.abs(Phi - fd).max() < 1e-5 * np.abs(fd).max()
     assert abs(np.linalg.det(Phi)) < 1e-8  # each landing collapses the normal velocity
 
@@ -169,11 +176,7 @@ def test_a_touch_and_go_landing_has_its_impact_in_the_monodromy():
     assert any(seg.rows for seg in run.segments)  # the landing itself
     assert run.v[-1, 0] != pytest.approx(simulate(system, z0[:2], [0.1, 0.0], t_end).v[-1, 0])
     Phi = monodromy(system, run)
-    fd = np.zeros((4, 4))
-    for j in range(4):
-        h = 1e-7 * np.eye(4)[j]
-        ends = [end_state(simulate(system, (z0 + s * h)[:2], (z0 + s * h)[2:], t_end, samples=2)) for s in (1, -1)]
-        fd[:, j] = (ends[0] - ends[1]) / 2e-7
+    fd = central_differences(system, z0, t_end)
     assert np.abs(Phi - fd).max() < 1e-5 * np.abs(fd).max()
 
 
@@ -218,11 +221,7 @@ def test_two_feet_coupled_through_the_inertia_landing_together_have_the_monodrom
     run = simulate(system, z0[:3], z0[3:], t_end, samples=2, segments=True)
     assert run.event_time[0] == run.event_time[1] == pytest.approx(np.sqrt(0.1 / G), rel=1e-13)
     Phi = monodromy(system, run)
-    fd = np.zeros((6, 6))
-    for j in range(6):
-        h = 1e-7 * np.eye(6)[j]
-        ends = [end_state(simulate(system, (z0 + s * h)[:3], (z0 + s * h)[3:], t_end, samples=2)) for s in (1, -1)]
-        fd[:, j] = (ends[0] - ends[1]) / 2e-7
+    fd = central_differences(system, z0, t_end)
     assert np.abs(Phi - fd).max() < 1e-5 * np.abs(fd).max()
 
 

@@ -178,6 +178,7 @@ def land(system: System, flow: Flow, z: np.ndarray, states, landing, flows: dict
             break
         for i in reversed_:  # the friction impulse would reverse the slip: it sticks (if Coulomb allows)
             st[i] = 0
+    vr = flow.slip_rows @ after  # (the last impact's: the loop may end without computing it)
     for i, c in enumerate(system.contacts):
         if st[i] == 0 and not c.rigid and abs(vr[i]) > 1e-13 * speed:
             st[i] = 1 if vr[i] > 0 else -1
