@@ -139,10 +139,6 @@ def test_a_regularised_law_goes_through_zero_slip_rate_and_the_plain_one_says_it
 
 def test_bad_combinations_are_refused_with_the_names_the_user_gave():
     law = RateState(a=A, b=B, dc=DC, f0=F0, v_ref=V0)
-    mixed = System(mass=np.eye(2), stiffness=np.eye(2) * 1e3, contacts=[
-        Contact([1.0, 0.0], N, law, surface_speed=V), Contact([0.0, 1.0], N, Coulomb(0.6, 0.4), surface_speed=V)])
-    with pytest.raises(ParameterError, match=r"contacts\[1\]\.friction"):
-        rate_state_steady(mixed)
     with pytest.raises(ParameterError, match="rate_state_simulate"):
         simulate(_block(1e3, law), t_end=1.0)
     with pytest.raises(ParameterError, match="rate_state_steady"):

@@ -71,17 +71,17 @@ def _numbers(option: str, text: str | None, n: int):
 
 
 def _psi(text: str | None, system):
-    """``--psi0 "0.1, 0.2"``: the contacts' state variables in order, grouped per contact."""
+    """``--psi0 "0.1, 0.2"``: the rate-and-state contacts' state variables in order, grouped per contact."""
     if text is None:
         return None
-    counts = [c.friction.states for c in system.contacts]
+    counts = [c.friction.states for c in system.contacts if hasattr(c.friction, "states")]
     try:
         values = [float(part) for part in text.split(",")]
     except ValueError:
         values = None
     if values is None or len(values) != sum(counts):
-        raise ParameterError("--psi0", text, f"{sum(counts)} numbers separated by commas (the contacts' state "
-                             "variables, in order)")
+        raise ParameterError("--psi0", text, f"{sum(counts)} numbers separated by commas (the rate-and-state "
+                             "contacts' state variables, in order)")
     rows, at = [], 0
     for k in counts:
         rows.append(values[at:at + k])

@@ -99,6 +99,11 @@ def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: 
     Newton's method to ``tol`` (of each variable's range over the cycle; the runs by Radau IIA at
     ``rtol``, the monodromy by central differences: multipliers to about ``1e4 rtol``)."""
     eq = RateStateEquations(system)
+    if not all(eq.rsf):
+        i = eq.rsf.index(False)
+        raise ParameterError(f"contacts[{i}].friction", type(eq.laws[i]).__name__, "rate-and-state at every contact "
+                             "for a limit cycle (a system mixing them with contacts that may stick: its motion and "
+                             "steady sliding only, in this version)")
     system.unforced("a limit cycle")
     rtol, tol, max_iter = Q.check("rtol", rtol), COMMON["tol"].check(tol, "tol"), Q.check("max_iter", max_iter)
     steady = rate_state_steady(system)
