@@ -366,4 +366,13 @@ def test_engine_orders_scale_every_harmonic_with_the_lowest_along_the_branch():
     assert branch.to_xarray()["value"].attrs["units"] == "rad/s"
     with pytest.raises(ParameterError) as err:
         file_parameter({**data, "harmonic": [{"cos": [1.0]}]}, "harmonic.frequency")
-    assert err.value.name == "parameter"
+    assert err.value.name == "harmonic[0].frequency"
+    for bad in (0.0, "1.5", True):  # each frequency checked under its own key, as the file gives it
+        with pytest.raises(ParameterError) as err:
+            file_parameter({**data, "harmonic": [{"frequency": 2.0, "cos": [1.0]}, {"frequency": bad, "cos": [1.0]}]},
+                           "harmonic.frequency")
+        assert err.value.name == "harmonic[1].frequency" and err.value.value == bad
+    for bad in ([], {**data, "harmonic": []}, {**data, "harmonic": "x"}):
+        with pytest.raises(ParameterError) as err:
+            file_parameter(bad, "harmonic.frequency")
+        assert err.value.name == "parameter"

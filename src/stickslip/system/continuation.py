@@ -89,15 +89,14 @@ def file_parameter(data: dict, key: str) -> tuple[Callable[[float], System], flo
 
 def _base_frequency(data: dict) -> tuple[Callable[[float], System], float]:
     """`file_parameter` for ``harmonic.frequency``: the lowest frequency, the others scaled with it."""
-    tables = data.get("harmonic")
-    try:
-        freqs = [float(t["frequency"]) for t in tables]
-        low = min(freqs)
-    except (KeyError, TypeError, ValueError):
+    if not isinstance(data, dict) or not isinstance(data.get("harmonic"), list) or not data["harmonic"]:
         raise ParameterError("parameter", "harmonic.frequency", "the frequency of a file's [[harmonic]] tables (each "
-                             "with a frequency)") from None
-    if not low > 0:
-        raise ParameterError("harmonic[0].frequency", low, "> 0")
+                             "with a frequency)")
+    try:  # every frequency checked as the file gives it, under its own key
+        freqs = [h.frequency for h in system_from_dict(data).harmonics]
+    except ParameterError as err:
+        raise as_file_keys(err) from None
+    low = min(freqs)
 
     def build(p: float) -> System:
         table = copy.deepcopy(data)

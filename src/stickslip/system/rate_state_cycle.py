@@ -128,12 +128,12 @@ def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: 
     V0 = float(eq.V[0])
     up = _crossings(run, abs(V0))
     if up.size < 5:
-        raise NoSolutionError(f"fewer than five oscillations of contact 0's slip rate about its surface speed in the "
-                              f"transient of {transient:.6g} s: the motion settled (steady sliding is stable, or the "
+        raise NoSolutionError("fewer than five upward crossings of contact 0's slip rate through its surface speed "
+                              f"in the transient of {transient:.6g} s: the motion settled (steady sliding is stable, or the "
                               "cycle is far from this start), no cycle to follow")
     Y = _states(eq, run)
     swing = np.array([np.ptp(np.log(run.slip_rate[a + 1:b + 2, 0])) for a, b in zip(up[-5:-1], up[-4:])])
-    if swing.size >= 3 and np.all(swing[1:] < (1.0 - DECAY) * swing[:-1]):  # shrinking period after period
+    if np.all(swing[1:] < (1.0 - DECAY) * swing[:-1]):  # shrinking period after period (four swings)
         raise NoSolutionError(f"the oscillation still decays at the end of the transient of {transient:.6g} s (contact "
                               f"0's slip rate swings {swing[-1]:.3g} in its logarithm, {swing[0]:.3g} "
                               f"{swing.size - 1} periods before): toward steady sliding, no cycle to settle on (a "

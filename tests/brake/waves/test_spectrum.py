@@ -114,6 +114,22 @@ def test_waves_the_ring_cannot_follow_are_refused(wave):
         wave_spectrum(wave, 2048)
     with pytest.raises(ParameterError, match="separation = 'yes'"):
         ring_system(PARAMS, 16, separation="yes")
+    from stickslip.brake.waves import moreau_difference
+    for call, name in ((lambda: sampled_ring(None, 64), "wave = None"), (lambda: sampled_ring(wave, 0), "nodes = 0"),
+                       (lambda: sampled_ring(wave, 30), "nodes = 30"),
+                       (lambda: moreau_difference(wave, 30), "nodes = 30"),
+                       (lambda: moreau_difference("w", 64), "wave = 'w'")):
+        with pytest.raises(ParameterError, match=name):
+            call()
+
+
+def test_the_moreau_comparison_refuses_what_it_cannot_run(separating):
+    from stickslip.brake.waves import moreau_difference
+    for kwargs, name in (({"steps": (0,)}, "steps"), ({"steps": (10.5,)}, "steps"), ({"steps": "10"}, "steps"),
+                         ({"fraction": -0.5}, "fraction"), ({"fraction": 0.0}, "fraction"),
+                         ({"fraction": math.inf}, "fraction"), ({"fraction": True}, "fraction")):
+        with pytest.raises(ParameterError, match=f"invalid {name} ="):
+            moreau_difference(separating, 64, **kwargs)
 
 
 def test_steady_sliding_of_the_ring_is_the_discrete_flutter_of_the_paper():

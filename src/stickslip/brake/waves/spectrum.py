@@ -98,6 +98,7 @@ def sampled_ring(wave, nodes: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``(x0, v0, off)``: the continuous ``wave`` sampled at the middles of ``nodes`` cells, as the
     state of `ring_system` (with the gaps ``u = U - delta`` first when the wave separates: 0 in
     contact) and which nodes are in its separation zones."""
+    nodes = _checked(wave, nodes)
     sc = Scaling(wave.params)
     c, r = float(wave.x[0]), sc.root_gamma
     dth = 2.0 * math.pi / nodes
@@ -115,9 +116,15 @@ def moreau_difference(wave, nodes: int = 64, steps=(4000, 8000, 16000), fraction
     of a wave period, event-driven against the Moreau stepper of `wave_persistence` (`step_ring`,
     written apart) with each of ``steps``: the largest difference of the end states, relative to
     the largest entry of the event-driven one."""
+    nodes = _checked(wave, nodes)
     sc = Scaling(wave.params)
     if not any(z.kind == SEPARATION for z in wave.zones):
         raise ParameterError("wave", wave.structure, "a wave that separates from the shaft")
+    if isinstance(steps, (str, bytes)) or not hasattr(steps, "__len__") or not 1 <= len(steps) <= 16 or not all(
+            isinstance(k, (int, np.integer)) and not isinstance(k, bool) and 1 <= k <= 10**7 for k in steps):
+        raise ParameterError("steps", steps, "a list of 1 to 16 whole numbers of Moreau steps, each 1 to 1e7")
+    if isinstance(fraction, bool) or not isinstance(fraction, (int, float)) or not 0 < fraction <= 10:
+        raise ParameterError("fraction", fraction, "in (0, 10] wave periods")
     x0, v0, _ = sampled_ring(wave, nodes)
     t_end = fraction * (2.0 * math.pi / wave.n) / abs(float(wave.x[0]))
     run = simulate(ring_system(wave.params, nodes, separation=True), x0, v0, t_end, samples=2)
@@ -184,15 +191,21 @@ class WaveSpectrum(Result):
         return finish(ds, "multipliers of a travelling wave's node-shift map on the discrete ring", "brake")
 
 
+def _checked(wave, nodes) -> int:
+    """``nodes`` checked for ``wave`` (a `TravellingWave`): a declared count, a multiple of its mode number."""
+    if not isinstance(wave, TravellingWave):
+        raise ParameterError("wave", wave, "a TravellingWave (stickslip.brake.travelling_wave)")
+    nodes = Q.check("spectrum_nodes", nodes, "nodes")
+    if nodes % wave.n:
+        raise ParameterError("nodes", nodes, f"a multiple of the mode number n = {wave.n}")
+    return nodes
+
+
 def wave_spectrum(wave, nodes: int = 128, tol: float = 1e-10) -> WaveSpectrum:
     """The discrete ring's wave near ``wave`` (a `TravellingWave`; one that separates from the shaft
     on the ring whose nodes may leave it too) on ``nodes`` nodes (a multiple of ``wave.n``) and the
     multipliers of its node-shift map."""
-    if not isinstance(wave, TravellingWave):
-        raise ParameterError("wave", wave, "a TravellingWave (stickslip.brake.travelling_wave)")
-    nodes, tol = Q.check("spectrum_nodes", nodes, "nodes"), SYSTEM_Q.check("tol", tol)
-    if nodes % wave.n:
-        raise ParameterError("nodes", nodes, f"a multiple of the mode number n = {wave.n}")
+    nodes, tol = _checked(wave, nodes), SYSTEM_Q.check("tol", tol)
     separates = any(z.kind == SEPARATION for z in wave.zones)
     if not separates and not any(z.kind == STICK for z in wave.zones):
         raise ParameterError("wave", wave.structure, "a wave with a stick zone (its onset is the map's section) or "
