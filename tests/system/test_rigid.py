@@ -8,7 +8,7 @@ import pytest
 
 from stickslip.errors import NoSolutionError, ParameterError
 from stickslip.friction import Coulomb
-from stickslip.system import (Contact, ForceHistory, Harmonic, System, monodromy, simulate, steady_sliding,
+from stickslip.system import (Contact, Flow, ForceHistory, Harmonic, System, monodromy, simulate, steady_sliding,
                               system_from_dict)
 
 from .test_floquet import end_state
@@ -273,3 +273,88 @@ def test_a_file_whose_rigid_is_not_true_or_false_names_it():
     with pytest.raises(ParameterError) as err:
         system_from_dict(data)
     assert err.value.name == "contact[0].rigid" and "true or false" in str(err.value)
+
+
+# A review's cases (each failed before its fix): landings at t = 0, Coulomb at every closed contact of an
+# impact, a start whose given states a gap contradicts, and a landing with nothing pressing on the surface.
+def _floor(w=(1.0, 0.0), n=(0.0, 1.0), law=None):
+    return Contact(list(w), None, law or Coulomb(0.6, 0.4), 0.0, normal_direction=list(n), rigid=True)
+
+
+@pytest.mark.parametrize("vy", [-0.1, -0.7, -1.5, -3.0])
+def test_a_block_dropped_on_the_floor_at_the_start_stays_on_it(vy):
+    """Its mass matrix couples x and y, so round-off leaves n . v ~ 1e-16 after the impact: that is not
+    a lift-off (it went through the floor for a whole search step)."""
+    s = System([[1.0, 0.3], [0.3, 1.0]], np.diag([1.0, 0.0]), [_floor()], force=[0.0, -9.81])
+    run = simulate(s, [0.0, 0.0], [0.5, vy], 0.3, samples=31)
+    assert run.x[:, 1].min() >= -1e-12 and np.all(run.states != 2)
+
+
+def test_a_landing_at_the_start_lifts_a_resting_foot_off_as_its_closed_form():
+    """Foot 2 lands at t = 0; through the inertia (M_12 = -0.5) foot 1 leaves at 0.5 m/s and flies,
+    with foot 2 held, y1 = 0.5 t - t^2 / 2."""
+    M = np.eye(3)
+    M[1:, 1:] = [[1.0, -0.5], [-0.5, 1.0]]
+    feet = [_floor((1.0, 0.0, 0.0), np.eye(3)[k], Coulomb(0.2, 0.2)) for k in (1, 2)]
+    run = simulate(System(M, np.zeros((3, 3)), feet, force=[0.0, -1.0, -1.0]), np.zeros(3), [0.0, 0.0, -1.0], 0.4,
+                   samples=5)
+    assert run.x[:, 1] == pytest.approx(0.5 * run.t - 0.5 * run.t ** 2, abs=1e-12)
+    assert np.all(run.states[:, 0] == 2) and np.all(run.states[:, 1] == 0) and np.all(run.x[:, 2] == 0)
+
+
+def test_friction_at_a_landing_at_the_start_makes_no_motion_from_nothing():
+    """Neither foot slides (x' = 0) and a landing foot's impulse does not push x: the resting foot is
+    stuck, not in reverse slip (its friction impulse drove x' to -0.32)."""
+    M = np.array([[1.0, 0, 0], [0, 4.0, 1.8], [0, 1.8, 1.0]])
+    feet = [_floor((1, 0, 0), (0, 1, 0)), _floor((1, 0, 0), (0, 0, 1))]
+    for force in ([0.0, 0.0, 0.0], [0.0, -5.8, -2.8]):
+        run = simulate(System(M, np.diag([1.0, 0.0, 0.0]), feet, force=force), np.zeros(3), [0, 0, -1.0], 0.5,
+                       samples=3)
+        assert np.abs(run.v).max() <= 1e-12 and run.x[:, 1:].min() >= -1e-12
+
+
+def test_a_foot_without_a_normal_impulse_takes_no_friction_impulse_at_a_landing():
+    """Foot a stands stuck under its weight; foot b, coupled to x through M, lands and foot a takes
+    no normal impulse, so Coulomb gives it no friction impulse either: the velocity after is foot b's
+    impact alone, slipping (s = 1), M dv = (n_b + s f_d w) P_b with n_b . (v + dv) = 0 (it took a
+    friction impulse of 0.99 at foot a, which had none to give, and stopped x)."""
+    M = np.array([[1.0, 0, 0.7], [0, 1.0, 0], [0.7, 0, 1.0]])
+    w, na, nb = np.array([1.0, 0, 0]), np.array([0, 1.0, 0]), np.array([0, 0, 1.0])
+    s = System(M, np.diag([1.0, 0, 0]), [_floor(w, na), _floor(w, nb)], force=M @ [0, -9.81, -9.81])
+    run = simulate(s, [0, 0, 0.2], [0, 0, -2.0], 0.2, samples=3, segments=True)
+    before, after = run.segments[0], run.segments[1]
+    v_minus = Flow(s, before.states).propagate(before.z, before.duration)[3:6]
+    push = np.linalg.solve(M, nb + 0.4 * w)
+    v_plus = v_minus - push * (nb @ v_minus) / (nb @ push)
+    assert -w @ v_plus > 0  # it slips the way it was taken to
+    assert after.z[3:6] == pytest.approx(v_plus, abs=1e-12)
+    assert after.states == (1, 1)  # both slip the way their slip velocities go (foot a released by the impact)
+
+
+def test_a_slipping_foot_whose_impulse_would_reverse_it_sticks_at_a_landing():
+    """Foot a slides slowly (v_r about -0.08) when foot b lands hard and presses it through the inertia:
+    foot a's friction impulse would reverse its slip (before: to +0.59, then undone by events at the
+    same instant), so it sticks at the impact itself."""
+    M = np.array([[1.0, 0, 0], [0, 4.0, 1.8], [0, 1.8, 1.0]])  # foot b's landing presses foot a
+    w = np.array([1.0, 0, 0])
+    s = System(M, np.zeros((3, 3)), [_floor(w, (0, 1, 0)), _floor(w, (0, 0, 1))], force=M @ [0, -9.81, -9.81])
+    run = simulate(s, [0, 0, 0.1343], [0.2, 0, -2.0], 0.1, samples=3, segments=True)
+    k = next(j for j, seg in enumerate(run.segments) if seg.states[1] != 2)
+    assert run.segments[k - 1].states[0] == -1 and run.segments[k].states[0] == 0
+    assert run.segments[k].z[3] == pytest.approx(0.0, abs=1e-12)
+
+
+def test_given_states_a_gap_contradicts_are_refused():
+    s = System([[1.0, 0.0], [0.0, 1.0]], np.diag([1.0, 0.0]), [_floor()], force=[0.0, -9.81])
+    with pytest.raises(ParameterError, match=r"states = \[0\].*2 \(open\) for contact 0"):
+        simulate(s, [0.0, 0.1], [0.0, 0.0], 1.0, samples=3, states=(0,))
+
+
+@pytest.mark.parametrize("coupling", [0.0, 0.7])
+def test_a_block_landing_with_nothing_pressing_it_on_the_surface_rests_there(coupling):
+    """No force: after its plastic impact the block stays on the floor with a reaction of 0 (the
+    reaction's row and the gap's row stay 0: not an event; it chattered open-closed)."""
+    M = np.array([[1.0, coupling], [coupling, 1.0]])
+    run = simulate(System(M, np.zeros((2, 2)), [_floor()]), [0.0, 0.1], [0.0, -1.0], 1.0, samples=11)
+    assert run.event_time == pytest.approx([0.1], abs=1e-12) and run.event_time.size == 1
+    assert np.all(run.x[2:, 1] == 0.0) and np.all(run.states[2:, 0] != 2)

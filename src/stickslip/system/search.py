@@ -137,10 +137,15 @@ def _crossing(P, K, row, c, dt, g0, dg0, g1, dg1, tol):
     if g0 <= tol:  # on the switching line at the start: departing (rising) or leaving at once
         if dg0 <= 0 and g1 <= tol:  # leaving at once, unless it rises first (at rest on it: a contact let go
             _coefficients(P, K, dt, row, c)  # with no velocity departs by its curvature) and comes back
+            low = g1
             for i in range(1, RISE_SAMPLES + 1):
                 u = i / RISE_SAMPLES
-                if _value(c[0], K, u)[0] > tol:
+                value = _value(c[0], K, u)[0]
+                if value > tol:
                     return _root(c[0], K, dt, u * dt, dt)  # above the line there: the zero after it
+                low = min(low, value)
+            if low >= -tol:  # on the line through the step to round-off (a reaction or gap that stays 0)
+                return -1.0
             return 0.0
         if g1 > tol and dg1 >= 0:
             return -1.0

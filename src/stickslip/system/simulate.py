@@ -148,14 +148,19 @@ def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, relea
 
 def land(system: System, flow: Flow, z: np.ndarray, states, landing, flows: dict, piece: int = 0) -> tuple:
     """``(states, z)`` after the rigid contacts ``landing`` touch their surfaces at ``z`` (``flow``
-    the flow before): a plastic impact (`Flow.impact`) with each one's friction impulse, slipping
-    the way its slip velocity was, or sticking where that impulse would reverse the slip; a closed
-    rigid contact whose impulse would pull opens instead (the most pulling first); a contact that
-    stuck without a rigid normal and is moved by the impact slips."""
+    the flow before): a plastic impact (`Flow.impact`) on every closed rigid contact with Coulomb's
+    friction impulse: a landing one slips the way its slip velocity was, or sticks where that impulse
+    would reverse the slip; a closed one slipping before goes on slipping unless its impulse would
+    reverse it (it sticks); one stuck before (or landing stuck) whose tangential impulse would exceed
+    f_s times its normal one slips (a landing one the other way, one stuck before the way its impulse
+    pushes); a closed rigid contact whose impulse would pull opens instead (the most pulling first); a
+    contact that stuck without a rigid normal and is moved by the impact slips."""
     st = list(states)
-    first = {i: 1 if flow.slip_rows[i] @ z > 0 else -1 for i in landing}
+    vr0 = flow.slip_rows @ z
+    first = {i: 1 if vr0[i] > 0 else -1 for i in landing}
     for i in landing:
         st[i] = first[i]
+    before = {i: st[i] for i, c in enumerate(system.contacts) if c.rigid and st[i] != OPEN and i not in first}
     speed = max(1.0, *(abs(c.surface_speed) for c in system.contacts))
     for _ in range(3 * len(system.contacts) + 1):
         impact = Flow.cached(system, tuple(st), flows, piece)
@@ -165,15 +170,18 @@ def land(system: System, flow: Flow, z: np.ndarray, states, landing, flows: dict
         if pulling:
             st[min(pulling, key=pulling.get)] = OPEN
             continue
-        # a landing stuck by an impulse beyond f_s times its normal one slips the other way (Coulomb)
-        beyond = [i for i in landing if st[i] == 0 and abs(impact.tangential_impulses.get(i, 0.0)) >
-                  system.contacts[i].friction.static * impulses.get(i, 0.0) * (1 + 1e-12) + 1e-300]
+        # a stuck one whose friction impulse would exceed f_s times its normal one slips (Coulomb)
+        tangential = impact.tangential_impulses
+        size = max(size, *(abs(v) for v in tangential.values()), 1e-300)  # (round-off at contacts not involved)
+        beyond = [i for i in impulses if st[i] == 0 and abs(tangential.get(i, 0.0)) >
+                  system.contacts[i].friction.static * impulses[i] + 1e-12 * size]
         if beyond:
             for i in beyond:
-                st[i] = -first[i]
+                st[i] = -first[i] if i in first else (1 if tangential[i] > 0 else -1)
             continue
         vr = flow.slip_rows @ after
-        reversed_ = [i for i in landing if st[i] == first[i] and vr[i] * st[i] <= 1e-13 * speed]
+        reversed_ = [i for i in impulses if st[i] in (-1, 1) and st[i] == first.get(i, before.get(i))
+                     and vr[i] * st[i] <= 1e-13 * speed and (i in first or vr0[i] * st[i] > 1e-13 * speed)]
         if not reversed_:
             break
         for i in reversed_:  # the friction impulse would reverse the slip: it sticks (if Coulomb allows)
@@ -197,7 +205,7 @@ def _sampled(flow: Flow, z: np.ndarray, times: np.ndarray, dt: float) -> np.ndar
     return block[:, :times.size].T
 
 
-def _given_states(states, vr, speed, unilateral) -> tuple:
+def _given_states(states, vr, speed, unilateral, off) -> tuple:
     try:
         given = tuple(int(s) for s in states)
         ok = len(given) == len(vr) and all(s in (-1, 0, 1, OPEN) and float(s) == float(o)
@@ -213,6 +221,9 @@ def _given_states(states, vr, speed, unilateral) -> tuple:
                                  "no normal direction)")
         if s == OPEN:
             continue
+        if off[i]:
+            raise ParameterError("states", list(states), f"2 (open) for contact {i}: the start is off its rigid surface "
+                                 "(a gap n . x0 > 0)")
         if (s == 0 and abs(v) > 1e-9 * speed) or (s != 0 and s * v < -1e-9 * speed):
             raise ParameterError("states", list(states), f"states the start allows: contact {i} has slip velocity "
                                  f"{v:.6g}, so it cannot {'stick' if s == 0 else 'slip with sign ' + str(s)}")
@@ -291,28 +302,33 @@ def simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, samples: 
     speed = max(1.0, *(abs(c.surface_speed) for c in system.contacts))
     opened = {i for i, c in enumerate(system.contacts) if c.unilateral and not c.rigid
               and c.normal_row(n, system.extra) @ z <= 0.0}
+    far = set()
     for i, c in enumerate(system.contacts):
         if c.rigid:  # open with a gap n . x > 0; closed on the surface; never inside it
             gap, scale = float(c.normal_direction @ x0), float(np.abs(c.normal_direction).max() * np.abs(x0).max())
             if gap < -1e-12 * scale:
                 raise ParameterError("x0", x0.tolist(), f"outside the rigid contact {i} (its gap n . x0 = {gap:.6g} "
                                      "< 0)")
+            if gap > 1e-9 * scale:  # off its surface beyond round-off (a given state may not close it)
+                far.add(i)
             if gap > 1e-12 * scale or (gap >= 0 and c.normal_direction @ v0 > 0):
                 opened.add(i)
     arriving = [i for i, c in enumerate(system.contacts) if c.rigid and i not in opened
                 and c.normal_direction @ v0 < 0]
-    if arriving:  # on its surface and moving into it: a landing at t = 0
-        pre = [OPEN if i in opened or i in arriving else (1 if vr[i] > 0 else -1) for i in range(k)]
-        _, z = land(system, Flow.cached(system, tuple(pre), flows, piece), z, pre, arriving, flows, piece)
+    if arriving:  # on its surface and moving into it: a landing at t = 0 (a contact at zero slip: stuck)
+        pre = [OPEN if i in opened or i in arriving else 0 if abs(vr[i]) <= 1e-14 * speed else (1 if vr[i] > 0 else -1)
+               for i in range(k)]
+        after, z = land(system, Flow.cached(system, tuple(pre), flows, piece), z, pre, arriving, flows, piece)
         v0 = z[n:2 * n]
         vr = [c.slip_velocity(v0) for c in system.contacts]
-        opened |= {i for i in arriving if system.contacts[i].normal_direction @ v0 > 0}
+        opened = {i for i in range(k) if after[i] == OPEN}  # (not the sign of n . v: round-off after the impact)
     zero = {i for i in range(k) if abs(vr[i]) <= 1e-14 * speed} - opened
     if states is None:
         states = tuple(OPEN if i in opened else 0 if i in zero else (1 if vr[i] > 0 else -1) for i in range(k))
         states = choose_states(system, z, states, zero, {}, flows, piece)
     else:
-        states = _given_states(states, vr, speed, [c.unilateral for c in system.contacts])
+        states = _given_states(states, vr, speed, [c.unilateral for c in system.contacts],
+                               [i in far for i in range(k)])
         zero = {i for i in range(k) if states[i] == 0}
     z = zero_slip(system, z, [i for i in zero if states[i] == 0])
     ts = np.linspace(0.0, t_end, samples)
