@@ -222,8 +222,8 @@ def _given_states(states, vr, speed, unilateral, off) -> tuple:
         if s == OPEN:
             continue
         if off[i]:
-            raise ParameterError("states", list(states), f"2 (open) for contact {i}: the start is off its rigid surface "
-                                 "(a gap n . x0 > 0)")
+            raise ParameterError("states", list(states), f"2 (open) for contact {i}: the start is off its rigid "
+                                 "surface (a gap n . x0 > 0)")
         if (s == 0 and abs(v) > 1e-9 * speed) or (s != 0 and s * v < -1e-9 * speed):
             raise ParameterError("states", list(states), f"states the start allows: contact {i} has slip velocity "
                                  f"{v:.6g}, so it cannot {'stick' if s == 0 else 'slip with sign ' + str(s)}")
