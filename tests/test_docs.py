@@ -3,6 +3,7 @@
 import re
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -131,3 +132,7 @@ def test_rsf_page_runs(monkeypatch):
     assert not namespace["steady"].stable and round(namespace["steady"].growth_rate, 5) == 0.00308
     assert namespace["hopf"].criticality == "degenerate" and abs(namespace["hopf"].l1) < 1e-6
     assert namespace["burst"].slip_rate.max() > 1.2e-6
+    branch = namespace["branch"]
+    assert branch.stopped.startswith("reached") and np.all(np.diff(branch.amplitude[:, 0]) < 0)
+    assert round(branch.period[-1], 1) == 88.9
+    assert list(namespace["run"].event_state[:4]) == [0, 1, 0, 1] and namespace["run"].slip_rate[:, 0].max() > 5e-3

@@ -30,7 +30,11 @@ __all__ = ["flow_map", "monodromy", "periodic_orbit"]
 def flow_map(rhs, jac, y0: np.ndarray, T: float, rtol: float, atol: float | np.ndarray) -> np.ndarray:
     """``phi_T(y0)`` of ``y' = rhs(t, y)`` (Jacobian ``jac(t, y)``), by Radau IIA; a `NoSolutionError`
     where the integration fails."""
-    sol = solve_ivp(rhs, (0.0, T), y0, method="Radau", rtol=rtol, atol=atol, jac=jac)
+    try:
+        sol = solve_ivp(rhs, (0.0, T), y0, method="Radau", rtol=rtol, atol=atol, jac=jac)
+    except ValueError:  # scipy refuses a Jacobian or a step that is not finite: the flow overflowed
+        raise NoSolutionError(f"the flow over {T:.6g} s could not be integrated (its numbers left the range of "
+                              "floats)") from None
     if sol.status != 0 or not np.all(np.isfinite(sol.y[:, -1])):
         raise NoSolutionError(f"the flow over {T:.6g} s could not be integrated (Radau: {sol.message})")
     return sol.y[:, -1]

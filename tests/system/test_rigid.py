@@ -3,6 +3,8 @@ dropped on a moving belt against the closed forms of its flight, plastic landing
 lift-off under a growing pull at the closed-form instant; the monodromy across impacts and
 lift-offs against central differences of whole runs; the refusals."""
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -358,3 +360,20 @@ def test_a_block_landing_with_nothing_pressing_it_on_the_surface_rests_there(cou
     run = simulate(System(M, np.zeros((2, 2)), [_floor()]), [0.0, 0.1], [0.0, -1.0], 1.0, samples=11)
     assert run.event_time == pytest.approx([0.1], abs=1e-12) and run.event_time.size == 1
     assert np.all(run.x[2:, 1] == 0.0) and np.all(run.states[2:, 0] != 2)
+
+
+def test_a_gap_rising_off_its_line_at_another_contacts_event_is_no_landing():
+    """A start of the Figure 12 wave's ring (256 nodes, whose normal motion is free; saved from a return
+    map's iteration): seven copies of node 0 have just lifted off (gap rising as t^3), the eighth lifts
+    off 2e-12 later. At that event the seven gaps, -1e-36 by round-off, were taken for landings, and
+    the landings and lift-offs that followed chattered at that instant. Now the run reaches node 255's
+    lift-off."""
+    from stickslip.brake import BrakeParams
+    from stickslip.brake.waves import ring_system
+    d = np.load(Path(__file__).parent / "data" / "ring_lift_off_start.npz")
+    system = ring_system(BrakeParams.from_physical(100.0, 1e-5, 0.2), 256, separation=True)
+    run = simulate(system, d["x0"], d["v0"], float(d["t_end"]), samples=2, segments=True,
+                   states=tuple(int(s) for s in d["states"]), stop_at=tuple(int(s) for s in d["stop_at"]))
+    assert run.event_contact[-1] == 255 and run.event_state[-1] == 2
+    first = run.event_time[0]
+    assert first == pytest.approx(2.16e-12, rel=0.01) and np.count_nonzero(run.event_time == first) <= 8

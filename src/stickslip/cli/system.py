@@ -193,24 +193,33 @@ def continue_cmd(file: File,
                  stop: Annotated[float, declared(Q["parameter_value"], "--stop", "The value the branch heads for.")],
                  points: Annotated[int, declared(Q["points"], "--points")] = 41,
                  x0: X0 = None, v0: V0 = None,
-                 transient: Annotated[float, declared(Q["transient"], "--transient")] = 100.0,
-                 tol: Annotated[float, declared(COMMON["tol"], "--tol")] = 1e-10,
+                 transient: Annotated[Optional[float], declared(
+                     Q["transient"], "--transient", "Default: 100 s (with rate-and-state contacts: as for cycle).")
+                 ] = None,
+                 tol: Annotated[Optional[float], declared(COMMON["tol"], "--tol", "Default: 1e-10 (with "
+                                                                      "rate-and-state contacts 1e-7).")] = None,
                  periods: Periods = 1,
+                 psi0: Psi0 = None,
                  json: Json = False, out: Out = None, overwrite: Replace = False):
     """The limit cycle followed along one number of the file, with the values where its events change
     (a stick phase born or gone: grazing), where it is lost, and where its stability changes. With
     harmonic forces: the periodic response (harmonic[0].frequency: a frequency response curve;
-    harmonic.frequency: engine orders, every harmonic scaled with the lowest)."""
+    harmonic.frequency: engine orders, every harmonic scaled with the lowest). With rate-and-state
+    contacts: the smooth cycles, from the one the motion settles on, to a Hopf point or a fold."""
     out = _out(out, overwrite)
-    from ..system import continue_system, file_parameter
+    from ..system import continue_system, file_parameter, is_rate_state
     from ..system.config import read_table
 
     build, start = file_parameter(read_table(file), parameter)
-    n = build(start).dofs
+    first = build(start)
+    n = first.dofs
     with _file_keys():
+        if psi0 is not None and not is_rate_state(first):
+            raise ParameterError("--psi0", psi0, "left out: it is the state of rate-and-state contacts, and this "
+                                 "system has none")
         branch = continue_system(build, start, stop, points=points, x0=_numbers("--x0", x0, n),
                                  v0=_numbers("--v0", v0, n), transient=transient, tol=tol, parameter=parameter,
-                                 periods=periods)
+                                 periods=periods, psi0=_psi(psi0, first))
     _emit(branch.to_dict(), json, "continuation")
     if out is not None:
         write_netcdf(branch.to_xarray(), out)

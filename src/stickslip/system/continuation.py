@@ -28,20 +28,19 @@ from __future__ import annotations
 
 import copy
 import re
-from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
-import xarray as xr
 
-from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
-from ..quantities import OSCILLATOR, SYSTEM as Q
-from ..results import Result
+from ..quantities import SYSTEM as Q
+from .branch import AMPLITUDE_SAMPLES, SystemBranch, parameter_units
 from .config import as_file_keys, system_from_dict
 from .floquet import inside, limit_cycle, monodromy, return_fixed_point, without_own
 from .forced import extent, forced_response, forcing_period, stroboscopic_fixed_point, stroboscopic_multipliers
 from .model import System
+from .rate_state import is_rate_state
+from .rate_state_branch import continue_rate_state
 from .simulate import longest_run
 
 __all__ = ["SystemBranch", "continue_system", "file_parameter", "parameter_units"]
@@ -50,8 +49,6 @@ __all__ = ["SystemBranch", "continue_system", "file_parameter", "parameter_units
 BISECTIONS = 40
 #: The section of a forced system's branch: ``(FORCED, periods)`` in place of a cycle's (contact, state).
 FORCED = "forcing periods"
-#: Uniform samples of each orbit of a branch from which its amplitude is taken.
-AMPLITUDE_SAMPLES = 401
 
 
 def file_parameter(data: dict, key: str) -> tuple[Callable[[float], System], float]:
@@ -116,72 +113,6 @@ def _holder(table, path: list):
     return table
 
 
-def parameter_units(key: str) -> str:
-    """The units of the number a file key names (``contact[0].surface_speed``: ``m/s``), from the
-    declarations; ``1`` for a name that is not a file key."""
-    match = re.fullmatch(r"contact\[\d+\]\.(\w+)|(mass|stiffness|damping|force)\[.*|harmonic(?:\[\d+\])?\.(\w+).*",
-                         str(key))
-    if match is None:
-        return "1"
-    name = match[1] or ({"frequency": "forcing_frequency"}.get(match[3], "harmonic_force") if match[3] else
-                        {"mass": "mass_matrix", "stiffness": "stiffness_matrix", "damping": "damping_matrix",
-                         "force": "force"}[match[2]])
-    domain = OSCILLATOR if name in ("fs", "fd", "tau") else Q
-    return domain[name].units if name in domain else "1"
-
-
-@dataclass(frozen=True, eq=False, repr=False)
-class SystemBranch(Result):
-    """Cycles at the ``values`` of ``parameter``: their ``period``, start ``x0``, ``v0`` (one row a
-    value; with the contact ``states`` there, a `simulate` of one period draws the orbit), the moduli of their largest
-    ``multipliers`` (the flow's own 1 removed; NaN-padded), ``stable`` and the sequence of
-    contact events of each (``"0:stick 1:slip ..."``); ``events``, the changes located along
-    the branch (dicts with ``change``, ``value``, ``before``, ``after``; a stability change also says
-    its multiplier's ``crossing``), and why it ``stopped``; ``amplitude``, half the peak-to-peak
-    displacement of each degree of freedom over each orbit (from `AMPLITUDE_SAMPLES` samples and its
-    events). A forced system's branch (``forced``) starts its orbits at phase zero of the force and
-    keeps every multiplier."""
-
-    parameter: str
-    values: np.ndarray
-    period: np.ndarray
-    x0: np.ndarray
-    v0: np.ndarray
-    states: tuple
-    multipliers: np.ndarray
-    stable: np.ndarray
-    sequence: tuple
-    events: tuple
-    stopped: str
-    amplitude: np.ndarray
-    forced: bool = False
-    MODEL = "system"
-
-    def to_dict(self) -> dict:
-        return {"parameter": self.parameter, "values": self.values.tolist(), "period": self.period.tolist(),
-                "stable": [bool(s) for s in self.stable], "events": [dict(e) for e in self.events],
-                "stopped": self.stopped, "points": int(self.values.size), "forced": self.forced,
-                "amplitude": self.amplitude.tolist()}
-
-    def to_xarray(self) -> xr.Dataset:
-        ds = xr.Dataset(
-            {"period": ("point", self.period), "stable": ("point", self.stable.astype(np.int8)),
-             "x0": (("point", "dof"), self.x0), "v0": (("point", "dof"), self.v0),
-             "amplitude": (("point", "dof"), self.amplitude),
-             "multiplier_abs": (("point", "multiplier"), self.multipliers),
-             "sequence": ("point", np.array(self.sequence, dtype=str)),
-             "event_value": ("event", np.array([e["value"] for e in self.events], dtype=float),
-                             {"units": parameter_units(self.parameter)}),
-             "event_kind": ("event", np.array([e["change"] for e in self.events], dtype=str))},
-            coords={"value": ("point", self.values, {"units": parameter_units(self.parameter),
-                                                     "long_name": f"value of {self.parameter}"}),
-                    "point": np.arange(self.values.size),
-                    "dof": np.arange(self.x0.shape[1]),
-                    "multiplier": np.arange(self.multipliers.shape[1]), "event": np.arange(len(self.events))},
-            attrs={"parameter": self.parameter, "stopped": self.stopped, "forced": int(self.forced)})
-        return finish(ds, "system with frictional contacts: limit cycles along a parameter", "system")
-
-
 _NAMES = {-1: "reverse", 0: "stick", 1: "slip", 2: "open"}
 
 
@@ -213,24 +144,38 @@ def _solve(build, p, start, horizon, tol):
 
 
 def continue_system(build: Callable[[float], System], start: float, stop: float, *, points: int = 41, x0=None,
-                    v0=None, transient: float = 100.0, tol: float = 1e-10, parameter: str = "parameter",
-                    periods: int = 1) -> SystemBranch:
+                    v0=None, transient: float | None = None, tol: float | None = None, parameter: str = "parameter",
+                    periods: int = 1, psi0=None) -> SystemBranch:
     """Follow the limit cycle of ``build(start)`` (the one the motion from ``x0``, ``v0`` settles on
-    after ``transient`` seconds, as `limit_cycle` finds it) over ``points`` equally spaced values
-    to ``stop`` (see the module). ``parameter`` names the parameter in messages and results. A
-    system with a periodic force: its periodic response over ``periods`` forcing periods
-    (`forced_response`)."""
+    after ``transient`` seconds, default 100, as `limit_cycle` finds it) over ``points`` equally
+    spaced values to ``stop`` (see the module), each to ``tol`` (default 1e-10). ``parameter`` names
+    the parameter in messages and results. A system with a periodic force: its periodic response
+    over ``periods`` forcing periods (`forced_response`). A system with rate-and-state contacts: its
+    smooth cycles (`stickslip.system.rate_state_branch`; ``psi0`` their states at the start, the
+    transient and ``tol`` by default as `rate_state_cycle` has them)."""
     if not callable(build):
         raise ParameterError("build", build, "a function of the parameter's value returning a System")
     start, stop = Q.check("parameter_value", start, "start"), Q.check("parameter_value", stop, "stop")
     if stop == start:
         raise ParameterError("stop", stop, f"different from the start value {start:g}")
-    points, tol = Q.check("points", points), Q.check("tol", tol)
+    points = Q.check("points", points)
+    if tol is not None:
+        tol = Q.check("tol", tol)
     first = build(start)
     try:  # a value the branch may reach must make a valid system: refused before the work
         build(stop)
     except ParameterError as err:
         raise ParameterError("stop", stop, f"a value {parameter} can take ({err.name}: {err.allowed})") from None
+    if is_rate_state(first):
+        if periods != 1:
+            raise ParameterError("periods", periods, "1: it counts forcing periods, and this system has no harmonic "
+                                 "force")
+        return continue_rate_state(build, start, stop, points=points, x0=x0, v0=v0, psi0=psi0, transient=transient,
+                                   tol=1e-7 if tol is None else tol, parameter=parameter)
+    if psi0 is not None:
+        raise ParameterError("psi0", psi0, "left out: it is the state of rate-and-state contacts, and this system "
+                             "has none")
+    transient, tol = 100.0 if transient is None else transient, 1e-10 if tol is None else tol
     n, forced = first.dofs, bool(first.harmonics)
     periods = Q.check("periods", periods)
     if periods != 1 and not forced:

@@ -268,10 +268,28 @@ def search(A, G, E, has_E, z0, t_max, h, scale, budget):
             _mv(G, ze, ge)
             rows = np.empty(nr, dtype=np.int64)
             count = 0
+            ahead = min(h, t_max - t - first)  # the step after the event: does a row at zero there leave it?
+            Ka, dta, Pa = -1, ahead, P
+            g0a, dg0a, ta, g1a, dg1a, t1a = ge, ge, ge, ge, ge, ge
             for r in range(nr):
-                if (found[r] >= 0 and found[r] <= first * (1 + 1e-9) + 1e-300) or ge[r] <= tol[r]:
+                if found[r] >= 0 and found[r] <= first * (1 + 1e-9) + 1e-300:
                     rows[count] = r
                     count += 1
+                elif ge[r] <= tol[r]:  # on its line to round-off: an event only if it leaves the line at once
+                    if Ka < 0 and ahead > 0:  # (not one departing from it, as a gap just opened at a tangency)
+                        Pa = np.empty((MAX_TERMS, m))
+                        Ka, dta = _converged(A, ze, ahead, Pa)
+                        za = np.empty(m)
+                        _sum(Pa, Ka, 1.0, za)
+                        g0a, dg0a, ta = np.empty(nr), np.empty(nr), np.empty(nr)
+                        g1a, dg1a, t1a = np.empty(nr), np.empty(nr), np.empty(nr)
+                        _ends(A, G, ze, scale, g0a, dg0a, ta, w)
+                        _ends(A, G, za, scale, g1a, dg1a, t1a, w)
+                    band = max(ta[r], tol[r])  # (as the search from there would: a row that rises off its line
+                    if Ka < 0 or dg0a[r] * dta < -max(band, 1e-9 * abs(g1a[r])) or _crossing(  # is no event)
+                            Pa, Ka, G[r], c, dta, g0a[r], dg0a[r], g1a[r], dg1a[r], band) == 0.0:
+                        rows[count] = r
+                        count += 1
             return EVENT, t + first, ze, rows[:count], steps
         t = t + dt
         z, z1, g, g1, dg, dg1 = z1, z, g1, g, dg1, dg

@@ -1,0 +1,112 @@
+"""Limit cycles of systems with rate-and-state contacts followed along a parameter.
+
+`continue_rate_state(build, start, stop)` finds the cycle of ``build(start)`` as `rate_state_cycle`
+does (from a transient) and follows it over ``points`` equally spaced values to ``stop``: at each
+value Newton's method on the periodic orbit (`stickslip.orbits.periodic_orbit`) from the orbit
+and period before, the variables scaled by the orbit's range before (a step Newton's method does not
+converge on is halved, down to ``2^-HALVINGS`` of the step between two values: the branch then holds
+those values too). The branch
+ends where no cycle is found that way, Newton's method failing or going onto steady sliding (an
+amplitude below `SHRUNK` of the first one's, or no multiplier the flow's own 1): a Hopf point,
+where the cycle shrinks onto steady sliding, or a fold of cycles. A change of stability is
+recorded between the two values where it happens. `stickslip.system.continue_system` sends such systems here.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+import numpy as np
+
+from ..errors import NoSolutionError, ParameterError
+from ..orbits import periodic_orbit
+from .branch import SystemBranch
+from .floquet import inside, without_own
+from .model import System
+from .rate_state import RateStateEquations, is_rate_state, rate_state_simulate
+from .rate_state_cycle import rate_state_cycle
+
+__all__ = ["continue_rate_state", "SHRUNK"]
+
+#: A cycle whose largest amplitude is below this fraction of the first one's has shrunk onto steady sliding.
+SHRUNK = 1e-4
+#: Halvings of a step between two values before the branch is said to end there.
+HALVINGS = 5
+#: Samples of one period from which an orbit's ranges (its scale, its amplitude) are taken.
+ORBIT_SAMPLES = 2001
+
+
+def _orbit(system: System, eq: RateStateEquations, y: np.ndarray, period: float, rtol: float):
+    """``(amplitude of each dof, range of each variable, each contact's largest slip rate)`` of the
+    orbit from ``y`` over ``period``."""
+    n = eq.n
+    psi = [eq.psi(y, i).copy() for i in range(len(eq.laws)) if eq.rsf[i]]
+    run = rate_state_simulate(system, y[:n], y[n:2 * n], period, psi0=psi, samples=ORBIT_SAMPLES, rtol=rtol)
+    Y = np.hstack([run.x, run.v] + [run.psi[:, i, :eq.laws[i].states] for i in range(len(eq.laws)) if eq.rsf[i]])
+    size = np.maximum(np.ptp(Y, axis=0), 1e-9 * np.maximum(np.abs(Y).max(axis=0), 1e-300))
+    return 0.5 * np.ptp(run.x, axis=0), size, run.slip_rate.max(axis=0)
+
+
+def continue_rate_state(build: Callable[[float], System], start: float, stop: float, *, points: int = 41,
+                        x0=None, v0=None, psi0=None, transient: float | None = None, tol: float = 1e-7,
+                        parameter: str = "parameter", rtol: float = 1e-9):
+    """The `SystemBranch` of the limit cycles of ``build(p)`` (rate-and-state contacts at every
+    contact) for ``points`` values from ``start`` to ``stop`` (see the module); the cycle at ``start``
+    the one the motion from ``(x0, v0, psi0)`` settles on after ``transient`` (`rate_state_cycle`).
+    Its rows hold no contact states or event sequences (the motion is smooth); ``psi0`` holds each
+    cycle's state variables."""
+    first = build(start)
+    cycle = rate_state_cycle(first, x0, v0, psi0=psi0, transient=transient, rtol=rtol, tol=tol)
+    eq = RateStateEquations(first)
+    y = np.concatenate([cycle.x0, cycle.v0, *cycle.psi0])
+    amp, size, _ = _orbit(first, eq, y, cycle.period, rtol)
+    rows = [(start, cycle.period, y, without_own(cycle.multipliers), amp)]
+    events, stopped = [], f"reached stop = {stop:g}"
+    values = list(np.linspace(start, stop, points)[1:])
+    targets, halvings = list(values), 0  # (halvings of the step to the next of the values)
+    while targets:
+        prev, p = rows[-1], float(targets[0])
+        try:
+            system = build(p)
+            if not is_rate_state(system):
+                raise ParameterError("contacts", p, "rate-and-state laws all along the branch")
+            eq = RateStateEquations(system)
+            y, period, mult = periodic_orbit(eq.guarded, eq.guarded_jacobian, prev[2], prev[1], size, rtol=rtol,
+                                             tol=tol)
+            amp, new_size, _ = _orbit(system, eq, y, period, rtol)
+        except ParameterError as err:
+            events.append({"change": "refused", "value": p, "before": "", "after": ""})
+            stopped = f"stopped before {parameter} = {p:.10g}: {err}"
+            break
+        except NoSolutionError:
+            y = None
+        if y is not None and (np.abs(mult - 1.0).min() > 1e-3 or amp.max() < SHRUNK * rows[0][4].max()):
+            y = None  # Newton's method went onto steady sliding (an orbit of any period)
+        if y is None:
+            if halvings < HALVINGS:  # a step too long for Newton's method: half of it first
+                targets.insert(0, 0.5 * (prev[0] + p))
+                halvings += 1
+                continue
+            events.append({"change": "cycle lost", "value": p, "before": "", "after": ""})
+            stopped = (f"no cycle beyond {parameter} = {prev[0]:.10g}: at {p:.10g} ({HALVINGS} halvings of the step "
+                       "on) Newton's method finds none or goes onto steady sliding (a Hopf point, where the cycle "
+                       "shrinks onto steady sliding, or a fold of cycles)")
+            break
+        mult = without_own(mult)
+        if inside(mult[:1]) != inside(prev[3][:1]):
+            was = inside(prev[3][:1])
+            events.append({"change": "stability", "value": p, "before": "stable" if was else "unstable",
+                           "after": "unstable" if was else "stable",
+                           "crossing": f"between {prev[0]:.10g} and {p:.10g}"})
+        rows.append((p, period, y, mult, amp))
+        size = new_size
+        if targets.pop(0) in values:  # one of the values reached: its steps may be halved anew
+            halvings = 0
+    n = first.dofs
+    width = max(1, min(8, min(r[3].size for r in rows)))
+    mult = np.array([np.abs(r[3][:width]) for r in rows])
+    return SystemBranch(parameter, np.array([r[0] for r in rows]), np.array([r[1] for r in rows]),
+                        np.array([r[2][:n] for r in rows]), np.array([r[2][n:2 * n] for r in rows]),
+                        tuple(() for _ in rows), mult, np.array([inside(r[3][:1]) for r in rows]),
+                        tuple("" for _ in rows), tuple(events), stopped, np.array([r[4] for r in rows]),
+                        psi0=np.array([r[2][2 * n:] for r in rows]))
