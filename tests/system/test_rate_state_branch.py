@@ -72,3 +72,28 @@ def test_what_a_rate_and_state_branch_cannot_take_is_refused_naming_it():
                                                        Contact([0.0, 1.0], N, Coulomb(0.6, 0.4), surface_speed=V)])
     with pytest.raises(ParameterError, match=r"contacts\[1\]\.friction.*limit cycle"):
         continue_system(mixed, 4000.0, 5000.0, points=3)
+
+
+@pytest.mark.slow
+def test_a_relaxation_cycle_is_followed_where_newton_alone_stalls(capsys, monkeypatch):
+    """The slip-law block of examples/rate_state/one_block.toml (a cycle of sharp slip bursts): from 0.9
+    k_c, Newton's method from the cycle before stalls (its return misses by 6e-4 at 0.937 k_c); the
+    branch lets the motion settle there and goes on. Its cycle at the end is the one a transient
+    settles on at that stiffness (a consistency check of two paths of ours)."""
+    import json
+    from pathlib import Path
+
+    from stickslip.cli import run
+    from stickslip.system import rate_state_cycle
+    from stickslip.system.config import read_table, system_from_dict
+
+    monkeypatch.chdir(Path(__file__).resolve().parents[2])
+    file = "examples/rate_state/one_block.toml"
+    code = run(["system", "continue", file, "--parameter", "stiffness[0][0]", "--stop", "4900", "--points", "3",
+                "--json"])
+    assert code == 0
+    branch = json.loads(capsys.readouterr().out)
+    assert branch["stopped"].startswith("reached") and branch["values"] == [4504.5, 4702.25, 4900.0]
+    data = read_table(file)
+    data["stiffness"] = [[4900.0]]
+    assert branch["period"][-1] == pytest.approx(rate_state_cycle(system_from_dict(data)).period, rel=1e-6)

@@ -3,13 +3,15 @@
 `continue_rate_state(build, start, stop)` finds the cycle of ``build(start)`` as `rate_state_cycle`
 does (from a transient) and follows it over ``points`` equally spaced values to ``stop``: at each
 value Newton's method on the periodic orbit (`stickslip.orbits.periodic_orbit`) from the orbit
-and period before, the variables scaled by the orbit's range before (a step Newton's method does not
-converge on is halved, down to ``2^-HALVINGS`` of the step between two values: the branch then holds
-those values too). The branch
-ends where no cycle is found that way, Newton's method failing or going onto steady sliding (an
-amplitude below `SHRUNK` of the first one's, or no multiplier the flow's own 1): a Hopf point,
+and period before, the variables scaled by the orbit's range before; where Newton's method fails
+on a stable cycle, the motion from the orbit before is let settle (`SETTLE` periods) and Newton's
+method starts from there (`rate_state_cycle`). A step neither converges on is halved, down to
+``2^-HALVINGS`` of the step between two values (the branch then holds those values too). The
+branch ends where no cycle is found that way, Newton's method failing or going onto steady sliding
+(an amplitude below `SHRUNK` of the first one's, or no multiplier the flow's own 1): a Hopf point,
 where the cycle shrinks onto steady sliding, or a fold of cycles. A change of stability is
-recorded between the two values where it happens. `stickslip.system.continue_system` sends such systems here.
+recorded between the two values where it happens. `stickslip.system.continue_system` sends such
+systems here.
 """
 
 from __future__ import annotations
@@ -32,6 +34,8 @@ __all__ = ["continue_rate_state", "SHRUNK"]
 SHRUNK = 1e-4
 #: Halvings of a step between two values before the branch is said to end there.
 HALVINGS = 5
+#: Periods of the cycle before over which the motion settles on a stable cycle where Newton's method failed.
+SETTLE = 30
 #: Samples of one period from which an orbit's ranges (its scale, its amplitude) are taken.
 ORBIT_SAMPLES = 2001
 
@@ -45,6 +49,20 @@ def _orbit(system: System, eq: RateStateEquations, y: np.ndarray, period: float,
     Y = np.hstack([run.x, run.v] + [run.psi[:, i, :eq.laws[i].states] for i in range(len(eq.laws)) if eq.rsf[i]])
     size = np.maximum(np.ptp(Y, axis=0), 1e-9 * np.maximum(np.abs(Y).max(axis=0), 1e-300))
     return 0.5 * np.ptp(run.x, axis=0), size, run.slip_rate.max(axis=0)
+
+
+def _settled(system: System, eq: RateStateEquations, prev: tuple, rtol: float, tol: float):
+    """`rate_state_cycle` of ``system`` from the orbit ``prev`` of the value before, after a transient of
+    `SETTLE` of its periods: ``(y, period, multipliers, amplitude, size)``, Nones if it finds none."""
+    n, y = eq.n, prev[2]
+    psi = [eq.psi(y, i).copy() for i in range(len(eq.laws)) if eq.rsf[i]]
+    try:
+        cycle = rate_state_cycle(system, y[:n], y[n:2 * n], psi0=psi, transient=SETTLE * prev[1], rtol=rtol, tol=tol)
+    except (NoSolutionError, ParameterError):
+        return None, None, None, None, None
+    y = np.concatenate([cycle.x0, cycle.v0, *cycle.psi0])
+    amp, size, _ = _orbit(system, eq, y, cycle.period, rtol)
+    return y, cycle.period, cycle.multipliers, amp, size
 
 
 def continue_rate_state(build: Callable[[float], System], start: float, stop: float, *, points: int = 41,
@@ -82,6 +100,10 @@ def continue_rate_state(build: Callable[[float], System], start: float, stop: fl
             y = None
         if y is not None and (np.abs(mult - 1.0).min() > 1e-3 or amp.max() < SHRUNK * rows[0][4].max()):
             y = None  # Newton's method went onto steady sliding (an orbit of any period)
+        if y is None and inside(prev[3][:1]):  # a stable cycle: let the motion from the one before settle on it
+            y, period, mult, amp, new_size = _settled(system, eq, prev, rtol, tol)
+            if y is not None and amp.max() < SHRUNK * rows[0][4].max():
+                y = None
         if y is None:
             if halvings < HALVINGS:  # a step too long for Newton's method: half of it first
                 targets.insert(0, 0.5 * (prev[0] + p))
