@@ -52,11 +52,13 @@ def monodromy(rhs, jac, y0: np.ndarray, T: float, rtol: float, atol, step: float
 
 
 def periodic_orbit(rhs, jac, y0, period: float, scale, *, rtol: float = 1e-9, tol: float = 1e-7,
-                   max_iter: int = 30, step: float = 1e-4) -> tuple[np.ndarray, float, np.ndarray]:
+                   max_iter: int = 30, step: float = 1e-4, flow=None) -> tuple[np.ndarray, float, np.ndarray]:
     """``(y0, T, multipliers)``: the periodic orbit of ``y' = rhs(t, y)`` near ``y0`` with period near
     ``period``, by Newton's method (see the module) until the return misses the start by at most
     ``tol`` in the scaled variables ``y / scale``; multipliers by decreasing modulus. A
-    `NoSolutionError` saying what was tried when Newton's method does not converge."""
+    `NoSolutionError` saying what was tried when Newton's method does not converge. ``flow(y, T)``, if
+    given, maps a state over ``T`` in place of Radau on ``rhs`` (a flow with switches: ``rhs`` then
+    gives the vector field at the start and at the end, off the switches)."""
     s = np.asarray(scale, dtype=float)
     c = np.asarray(y0, dtype=float).copy()  # the variables measured from the start: all of order one or less
     u = np.zeros_like(c)
@@ -68,12 +70,25 @@ def periodic_orbit(rhs, jac, y0, period: float, scale, *, rtol: float = 1e-9, to
     def J(t, v):
         return jac(t, c + v * s) * s[None, :] / s[:, None]
 
+    def phi(v, T):
+        return flow_map(f, J, v, T, rtol, rtol) if flow is None else (flow(c + v * s, T) - c) / s
+
+    def derivative(v, T):
+        if flow is None:
+            return monodromy(f, J, v, T, rtol, rtol, step)
+        out = np.empty((v.size, v.size))
+        for j in range(v.size):
+            d = np.zeros(v.size)
+            d[j] = step
+            out[:, j] = (phi(v + d, T) - phi(v - d, T)) / (2 * step)
+        return out
+
     miss, n = np.inf, c.size
     for it in range(max_iter):
-        end = flow_map(f, J, u, T, rtol, rtol)
+        end = phi(u, T)
         residual = end - u
         miss = float(np.abs(residual).max())
-        Phi = monodromy(f, J, u, T, rtol, rtol, step)
+        Phi = derivative(u, T)
         if miss <= tol:
             mult = np.linalg.eigvals(Phi)
             return c + u * s, T, mult[np.argsort(-np.abs(mult))]

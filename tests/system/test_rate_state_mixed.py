@@ -73,7 +73,7 @@ def _pair(law1, law2):
         Contact([1.0, 0.0], N, law1, surface_speed=V1), Contact([0.0, 1.0], N, law2, surface_speed=V2)])
 
 
-def _reference(t_eval, x0, v0, theta0, evolution):
+def _reference(t_eval, x0, v0, theta0, evolution, held=False):
     """The pair written out apart: the state variable as theta (aging: theta' = 1 - v theta / D_c; slip:
     theta' = -(v theta / D_c) ln(v theta / D_c)), block 2's coordinate eliminated while it sticks
     (x2 = x2(t_s) + V2 (t - t_s)), LSODA with its own event location. Returns x at t_eval."""
@@ -100,6 +100,8 @@ def _reference(t_eval, x0, v0, theta0, evolution):
 
     out = np.full((t_eval.size, 2), np.nan)
     t, y, s, events = 0.0, [x0[0], x0[1], v0[0], v0[1], theta0], 1 if V2 > v0[1] else -1, []
+    if held:  # block 2 starts on its belt, held
+        s, ts, x2s, y = 0, 0.0, x0[1], [x0[0], v0[0], theta0]
     opts = dict(method="LSODA", rtol=1e-12, atol=1e-16)
     while t < t_eval[-1]:
         sel = t_eval >= t
@@ -178,8 +180,6 @@ def test_steady_sliding_on_two_belts_has_the_roots_of_its_characteristic_polynom
 def test_what_a_mixed_system_cannot_do_is_refused_naming_it():
     law = RateState(a=A, b=B, dc=DC, f0=F0, v_ref=V0)
     pair = _pair(law, Coulomb(FS, FD))
-    with pytest.raises(ParameterError, match=r"contacts\[1\]\.friction.*limit cycle"):
-        rate_state_cycle(pair)
     pressed = System(mass=np.eye(2), stiffness=np.eye(2) * 1e3, contacts=[
         Contact([1.0, 0.0], N, law, surface_speed=V1),
         Contact([0.0, 1.0], N, Coulomb(FS, FD), surface_speed=V2, normal_direction=[0.0, 1.0], normal_stiffness=1.0)])
@@ -197,3 +197,23 @@ def test_what_a_mixed_system_cannot_do_is_refused_naming_it():
         Contact([1.0], N, law, surface_speed=V1), Contact([1.0], N, Coulomb(FS, FD), surface_speed=0.0)])
     with pytest.raises(ParameterError, match=r"contacts\[1\]\.surface_speed"):
         rate_state_steady(resting)
+
+
+@pytest.mark.slow
+def test_a_cycle_of_the_coupled_pair_closes_under_the_integration_written_apart():
+    """The pair's limit cycle (contact 1 sticking and slipping every period; Newton's method on runs with
+    their switches, the monodromy by central differences): the integration written apart, from the
+    cycle's start, comes back to it after the period, and run on for 40 periods its switches keep
+    that period."""
+    law = RateState(a=A, b=B, dc=DC, f0=F0, v_ref=V0)
+    system = _pair(law, LinearWeakening(FS, FD, TAU))
+    cycle = rate_state_cycle(system, x0=[F0 * N / K1, 0.0], v0=[0.0, 0.0], transient=6.0)
+    stuck = abs(V2 - cycle.v0[1]) < 1e-12 * V2
+    theta0 = DC / V0 * math.exp(cycle.psi0[0][0])
+    t = np.linspace(0.0, 41 * cycle.period, 41 * 200 + 1)
+    ref, events = _reference(t, cycle.x0, cycle.v0, theta0, "aging", held=stuck)
+    scale = np.ptp(ref[:201], axis=0)
+    assert np.all(np.abs(ref[200] - cycle.x0) < 1e-6 * scale)
+    onsets = np.array([te for te, s in events if s == 0])
+    assert onsets.size >= 40 and np.diff(onsets) == pytest.approx(cycle.period, rel=1e-6)
+    assert cycle.stable and np.sum(np.abs(cycle.multipliers) > 1e-6) < cycle.multipliers.size  # a stick: a 0

@@ -409,11 +409,12 @@ def rate_state_simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *
             sol = None
         if sol is None or sol.status < 0 or not np.all(np.isfinite(sol.y)):
             _failed(eq, sol, last, t_end)
-        m = sol.t.size
-        Y[j:j + m] = sol.y.T
-        slip[j:j + m], force[j:j + m] = eq.sampled(sol.y.T, sol.t)
-        states[j:j + m] = np.where(eq.rsf, np.where(slip[j:j + m] >= 0, 1, -1), np.array(eq.mode))
-        j += m
+        m = len(sol.t)  # (a list, empty, where no sample falls between two switches)
+        if m:
+            Y[j:j + m] = sol.y.T
+            slip[j:j + m], force[j:j + m] = eq.sampled(sol.y.T, sol.t)
+            states[j:j + m] = np.where(eq.rsf, np.where(slip[j:j + m] >= 0, 1, -1), np.array(eq.mode))
+            j += m
         if sol.status == 0:
             break
         hit = next(e for e, te in zip(switches, sol.t_events) if te.size)

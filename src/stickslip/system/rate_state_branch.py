@@ -74,8 +74,13 @@ def continue_rate_state(build: Callable[[float], System], start: float, stop: fl
     Its rows hold no contact states or event sequences (the motion is smooth); ``psi0`` holds each
     cycle's state variables."""
     first = build(start)
-    cycle = rate_state_cycle(first, x0, v0, psi0=psi0, transient=transient, rtol=rtol, tol=tol)
     eq = RateStateEquations(first)
+    if not all(eq.rsf):
+        i = eq.rsf.index(False)
+        raise ParameterError(f"contacts[{i}].friction", type(eq.laws[i]).__name__, "rate-and-state at every contact "
+                             "for a continuation (the cycle of a system mixing them with contacts that stick: "
+                             "rate_state_cycle, `stickslip system cycle`)")
+    cycle = rate_state_cycle(first, x0, v0, psi0=psi0, transient=transient, rtol=rtol, tol=tol)
     y = np.concatenate([cycle.x0, cycle.v0, *cycle.psi0])
     amp, size, _ = _orbit(first, eq, y, cycle.period, rtol)
     rows = [(start, cycle.period, y, without_own(cycle.multipliers), amp)]
@@ -86,8 +91,8 @@ def continue_rate_state(build: Callable[[float], System], start: float, stop: fl
         prev, p = rows[-1], float(targets[0])
         try:
             system = build(p)
-            if not is_rate_state(system):
-                raise ParameterError("contacts", p, "rate-and-state laws all along the branch")
+            if not is_rate_state(system) or not all(RateStateEquations(system).rsf):
+                raise ParameterError("contacts", p, "rate-and-state laws at every contact all along the branch")
             eq = RateStateEquations(system)
             y, period, mult = periodic_orbit(eq.guarded, eq.guarded_jacobian, prev[2], prev[1], size, rtol=rtol,
                                              tol=tol)

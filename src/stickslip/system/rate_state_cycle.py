@@ -25,6 +25,7 @@ from ..results import Result
 from .floquet import without_own
 from .model import System
 from .rate_state import LONGEST, RateStateEquations, RateStateRun, rate_state_simulate, rate_state_steady
+from .rate_state_modes import first_mode
 
 __all__ = ["RateStateCycle", "rate_state_cycle"]
 
@@ -77,8 +78,15 @@ class RateStateCycle(Result):
 
 def _states(eq: RateStateEquations, run: RateStateRun) -> np.ndarray:
     """The samples of ``run`` as rows of ``y = (x, x', psi)``."""
-    psi = [run.psi[:, i, :law.states] for i, law in enumerate(eq.laws)]
+    psi = [run.psi[:, i, :law.states] for i, law in enumerate(eq.laws) if eq.rsf[i]]
     return np.hstack([run.x, run.v, *psi])
+
+
+def _swing(run: RateStateRun, rsf: bool, a: int, b: int) -> float:
+    """Contact 0's swing of slip rate from sample ``a`` to ``b``: in its logarithm for a rate-and-state
+    contact, else in m/s (it may stick: zero)."""
+    rate = run.slip_rate[a:b, 0]
+    return float(np.ptp(np.log(rate)) if rsf else np.ptp(rate))
 
 
 def _crossings(run: RateStateRun, V: float) -> np.ndarray:
@@ -88,7 +96,7 @@ def _crossings(run: RateStateRun, V: float) -> np.ndarray:
 
 
 def _psi_lists(eq: RateStateEquations, y: np.ndarray) -> list:
-    return [eq.psi(y, i).copy() for i in range(len(eq.laws))]
+    return [eq.psi(y, i).copy() for i in range(len(eq.laws)) if eq.rsf[i]]
 
 
 def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: float | None = None,
@@ -99,11 +107,6 @@ def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: 
     Newton's method to ``tol`` (of each variable's range over the cycle; the runs by Radau IIA at
     ``rtol``, the monodromy by central differences: multipliers to about ``1e4 rtol``)."""
     eq = RateStateEquations(system)
-    if not all(eq.rsf):
-        i = eq.rsf.index(False)
-        raise ParameterError(f"contacts[{i}].friction", type(eq.laws[i]).__name__, "rate-and-state at every contact "
-                             "for a limit cycle (a system mixing them with contacts that may stick: its motion and "
-                             "steady sliding only, in this version)")
     system.unforced("a limit cycle")
     rtol, tol, max_iter = Q.check("rtol", rtol), COMMON["tol"].check(tol, "tol"), Q.check("max_iter", max_iter)
     steady = rate_state_steady(system)
@@ -111,7 +114,7 @@ def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: 
     if abs(lead.imag) == 0.0:
         raise NoSolutionError("steady sliding's leading eigenvalue is real: no oscillation to follow to a cycle")
     linear = 2.0 * math.pi / abs(lead.imag)
-    scale = max(float(law.dc_values.max()) / max(abs(V), law.v_ref) for law, V in zip(eq.laws, eq.V))
+    scale = max(float(law.dc_values.max()) / max(abs(V), law.v_ref) for law, V, r in zip(eq.laws, eq.V, eq.rsf) if r)
     if transient is None:  # the perturbation's growth to the cycle's size, then 20 periods to settle
         transient = min(math.log(1e3) / max(lead.real, 1e-300) + 20.0 * linear, 0.9 * LONGEST * scale)
     transient = Q.check("transient", transient)
@@ -129,10 +132,10 @@ def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: 
     up = _crossings(run, abs(V0))
     if up.size < 5:
         raise NoSolutionError("fewer than five upward crossings of contact 0's slip rate through its surface speed "
-                              f"in the transient of {transient:.6g} s: the motion settled (steady sliding is stable, or the "
-                              "cycle is far from this start), no cycle to follow")
+                              f"in the transient of {transient:.6g} s: the motion settled (steady sliding is stable, or "
+                              "the cycle is far from this start), no cycle to follow")
     Y = _states(eq, run)
-    swing = np.array([np.ptp(np.log(run.slip_rate[a + 1:b + 2, 0])) for a, b in zip(up[-5:-1], up[-4:])])
+    swing = np.array([_swing(run, eq.rsf[0], a + 1, b + 2) for a, b in zip(up[-5:-1], up[-4:])])
     if np.all(swing[1:] < (1.0 - DECAY) * swing[:-1]):  # shrinking period after period (four swings)
         raise NoSolutionError(f"the oscillation still decays at the end of the transient of {transient:.6g} s (contact "
                               f"0's slip rate swings {swing[-1]:.3g} in its logarithm, {swing[0]:.3g} "
@@ -144,9 +147,18 @@ def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: 
     size = np.maximum(np.ptp(span, axis=0), 1e-9 * np.maximum(np.abs(span).max(axis=0), 1e-300))
     if np.all(np.ptp(span[:, :eq.n], axis=0) <= 1e-9 * np.maximum(np.abs(span[:, :eq.n]).max(axis=0), 1e-300)):
         raise NoSolutionError("the motion settled to steady sliding in the transient: no cycle to follow")
-    y0, period, mult = periodic_orbit(eq.guarded, eq.guarded_jacobian, last, period, size, rtol=rtol, tol=tol,
-                                      max_iter=max_iter)
     n = eq.n
+    flow, field = None, eq.guarded
+    if not all(eq.rsf):  # contacts that stick: the flow map is a run with its switches; the field in the mode
+        def flow(y, T):  # the state is in there
+            run = rate_state_simulate(system, y[:n], y[n:2 * n], T, psi0=_psi_lists(eq, y), samples=2, rtol=rtol)
+            return _states(eq, run)[-1]
+
+        def field(t, y):
+            first_mode(eq, y)
+            return eq.guarded(t, y)
+    y0, period, mult = periodic_orbit(field, eq.guarded_jacobian, last, period, size, rtol=rtol, tol=tol,
+                                      max_iter=max_iter, flow=flow)
     if np.all(np.abs(mult - 1.0) > 1e-3) or np.max(np.abs((y0 - last) / size)) > 1e3:
         raise NoSolutionError("Newton's method left the cycle for steady sliding (no multiplier is the flow's own 1): "
                               "no cycle near the motion after the transient")
