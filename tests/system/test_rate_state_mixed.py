@@ -190,6 +190,11 @@ def test_what_a_mixed_system_cannot_do_is_refused_naming_it():
             rate_state_simulate(pair, t_end=0.1, psi0=bad)
     run = rate_state_simulate(pair, t_end=0.01, psi0=[0.3], samples=3)
     assert run.psi[0, 0, 0] == 0.3 and np.isnan(run.psi[0, 1, 0])
+    # two samples with switches between them (segments with no sample: it crashed)
+    x0 = [F0 * N / K1, 0.0]
+    few, many = (rate_state_simulate(pair, x0=x0, t_end=0.6, samples=k) for k in (2, 601))
+    assert few.event_time.size == many.event_time.size >= 6
+    assert few.x[-1] == pytest.approx(many.x[-1], rel=1e-7, abs=1e-12)
     fast = _pair(law, LinearWeakening(FS, FD, 2.0))  # swings beyond |v_r| = 1 / tau = 0.5 m/s, the law's end
     with pytest.raises(NoSolutionError, match=r"contact 1 reached the limit of its friction law.*0\.5"):
         rate_state_simulate(fast, x0=[(F0 * N + KC * 0.02) / (K1 + KC), 0.02], v0=[0.0, 4 * V2], t_end=0.1)
