@@ -31,8 +31,9 @@ __all__ = ["RateStateCycle", "rate_state_cycle"]
 
 #: Samples per period of the linear oscillation in the transient (where the period is read).
 SAMPLES_PER_PERIOD = 200
-#: A swing of the slip rate smaller by this fraction than a period before: the motion still decays.
-DECAY = 1e-3
+#: A swing of the slip rate smaller by this fraction than a period before: the motion still decays (0.1 %
+#: took the wandering sampled heights of sharp slip bursts for a decay).
+DECAY = 1e-2
 
 
 @dataclass(frozen=True, eq=False, repr=False)
