@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from .errors import NoSolutionError
+from .errors import NoSolutionError, ParameterError
 
 __all__ = ["flow_map", "monodromy", "periodic_orbit"]
 
@@ -32,6 +32,8 @@ def flow_map(rhs, jac, y0: np.ndarray, T: float, rtol: float, atol: float | np.n
     where the integration fails."""
     try:
         sol = solve_ivp(rhs, (0.0, T), y0, method="Radau", rtol=rtol, atol=atol, jac=jac)
+    except ParameterError:  # the model's own (a law out of its range)
+        raise
     except ValueError:  # scipy refuses a Jacobian or a step that is not finite: the flow overflowed
         raise NoSolutionError(f"the flow over {T:.6g} s could not be integrated (its numbers left the range of "
                               "floats)") from None

@@ -63,8 +63,10 @@ def test_a_subcritical_hopf_point_has_stable_cycles_beyond_it_up_to_a_fold():
 
 def test_what_a_rate_and_state_branch_cannot_take_is_refused_naming_it():
     mass = 1e6
-    with pytest.raises(ParameterError, match="periods"):
+    with pytest.raises(ParameterError, match="periods = 2.*rate-and-state"):
         continue_system(_block(mass), 5000.0, 6000.0, points=3, periods=2)
+    with pytest.raises(ParameterError, match="build"):
+        continue_system(lambda k: None, 5000.0, 6000.0, points=3)
     coulomb = lambda k: System([[1.0]], [[k]], [Contact([1.0], N, Coulomb(0.6, 0.4), surface_speed=V)])  # noqa: E731
     with pytest.raises(ParameterError, match="psi0"):
         continue_system(coulomb, 100.0, 200.0, points=3, psi0=[[0.1]])

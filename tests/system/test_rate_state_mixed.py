@@ -10,7 +10,7 @@ import pytest
 from scipy.integrate import solve_ivp
 
 from stickslip.errors import NoSolutionError, ParameterError
-from stickslip.friction import Coulomb, LinearWeakening
+from stickslip.friction import Coulomb, LinearWeakening, UserLaw
 from stickslip.rsf import RateState
 from stickslip.system import Contact, System, rate_state_cycle, rate_state_simulate, rate_state_steady
 
@@ -43,6 +43,22 @@ def _coulomb_block(t, x0, k=1000.0, m=1.0):
             t0, x, v, stuck = t1, xe + R * math.cos(s + phi), V2, True
         events.append(t0)
     return out, np.array(events)
+
+
+def test_two_contacts_along_one_direction_stick_and_slip_as_one_with_their_summed_normal_force():
+    """Block 2 pressed by two Coulomb contacts of N/2 each, along the same direction: held, their forces
+    are not determined apart (a singular system, which crashed); the motion is the closed form of one
+    contact with N."""
+    law = RateState(a=A, b=B, dc=DC, f0=F0, v_ref=V0)
+    half = [Contact([0.0, 1.0], N / 2, Coulomb(FS, FD), surface_speed=V2) for _ in range(2)]
+    system = System(mass=np.eye(2), stiffness=np.diag([3000.0, 1000.0]),
+                    contacts=[Contact([1.0, 0.0], N, law, surface_speed=1e-6), *half])
+    run = rate_state_simulate(system, x0=[2e-3 * 1.001, 0.0], v0=[0.0, 0.0], t_end=1.0, samples=2001)
+    exact, _ = _coulomb_block(run.t, 0.0)
+    assert np.abs(run.x[:, 1] - exact).max() < 1e-9 * np.abs(exact).max()
+    stuck = run.states[:, 1] == 0
+    assert np.all(run.states[:, 1] == run.states[:, 2]) and np.any(stuck)
+    assert run.friction_force[stuck, 1] + run.friction_force[stuck, 2] == pytest.approx(1000.0 * run.x[stuck, 1])
 
 
 def test_a_block_set_apart_sticks_and_slips_as_its_closed_form():
@@ -198,6 +214,16 @@ def test_what_a_mixed_system_cannot_do_is_refused_naming_it():
     fast = _pair(law, LinearWeakening(FS, FD, 2.0))  # swings beyond |v_r| = 1 / tau = 0.5 m/s, the law's end
     with pytest.raises(NoSolutionError, match=r"contact 1 reached the limit of its friction law.*0\.5"):
         rate_state_simulate(fast, x0=[(F0 * N + KC * 0.02) / (K1 + KC), 0.02], v0=[0.0, 4 * V2], t_end=0.1)
+    beyond = _pair(law, LinearWeakening(FS, FD, 10.0))  # its law ends at 0.1 m/s; the belt runs at 0.05
+    with pytest.raises(NoSolutionError, match=r"contact 1 is beyond the limit of its friction law.*0\.1"):
+        rate_state_simulate(beyond, x0=[F0 * N / K1, 0.0], v0=[0.0, -0.1], t_end=0.1)
+    fast_belt = System([[1.0]], [[1e3]], [Contact([1.0], N, law, surface_speed=V1),
+                                          Contact([1.0], N, LinearWeakening(FS, FD, 10.0), surface_speed=0.2)])
+    with pytest.raises(ParameterError, match=r"contacts\[1\]\.surface_speed = 0\.2.*below the speed 0\.1"):
+        rate_state_steady(fast_belt)
+    steep = _pair(law, UserLaw(lambda v: 0.4 + 100 * abs(v), fs=0.6))  # 15 at the start: beyond a coefficient's range
+    with pytest.raises(ParameterError, match=r"mu\(v_r\)"):  # the law's own error, not Radau's
+        rate_state_simulate(steep, x0=[F0 * N / K1, 0.0], v0=[0.0, 0.2], t_end=0.1)
     resting = System(mass=[[1.0]], stiffness=[[1e3]], contacts=[
         Contact([1.0], N, law, surface_speed=V1), Contact([1.0], N, Coulomb(FS, FD), surface_speed=0.0)])
     with pytest.raises(ParameterError, match=r"contacts\[1\]\.surface_speed"):

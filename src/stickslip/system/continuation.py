@@ -166,10 +166,12 @@ def continue_system(build: Callable[[float], System], start: float, stop: float,
         build(stop)
     except ParameterError as err:
         raise ParameterError("stop", stop, f"a value {parameter} can take ({err.name}: {err.allowed})") from None
+    if not isinstance(first, System):
+        raise ParameterError("build", build, "a function of the parameter's value returning a System")
     if is_rate_state(first):
         if periods != 1:
-            raise ParameterError("periods", periods, "1: it counts forcing periods, and this system has no harmonic "
-                                 "force")
+            raise ParameterError("periods", periods, "1 for a system with rate-and-state contacts (its cycles are "
+                                 "unforced)")
         return continue_rate_state(build, start, stop, points=points, x0=x0, v0=v0, psi0=psi0, transient=transient,
                                    tol=1e-7 if tol is None else tol, parameter=parameter)
     if psi0 is not None:

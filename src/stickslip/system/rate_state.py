@@ -93,10 +93,10 @@ class RateStateEquations:
         """The contacts' states: 1 or -1 slipping, 0 stuck (only a contact whose law is not rate-and-state)."""
         self.mode = tuple(int(m) for m in mode)
         self.stuck = [i for i, m in enumerate(self.mode) if m == 0 and not self.rsf[i]]
-        if self.stuck:
+        if self.stuck:  # (a pseudo-inverse: stuck contacts along the same direction share its force, least norm)
             E = self.system.directions[:, self.stuck]
             self._MiE = self.system.inverse_mass @ E
-            self._gram = E.T @ self._MiE
+            self._gram_inv = np.linalg.pinv(E.T @ self._MiE)
 
     def _rest(self, t, y, forces):
         sysm, n = self.system, self.n
@@ -107,7 +107,7 @@ class RateStateEquations:
         if not self.stuck:
             return np.zeros(0)
         rest = self.system.inverse_mass @ self._rest(t, y, self.forces(y)[1])
-        return -np.linalg.solve(self._gram, self.system.directions[:, self.stuck].T @ rest)
+        return -self._gram_inv @ (self.system.directions[:, self.stuck].T @ rest)
 
     def psi(self, y, i):
         return y[2 * self.n + self.offsets[i]:2 * self.n + self.offsets[i + 1]]
@@ -121,6 +121,9 @@ class RateStateEquations:
         for i, law in enumerate(self.laws):
             if not self.rsf[i]:  # slipping as its mode says (stuck: 0 here, see stick_forces)
                 s = self.mode[i]
+                if s == 0:
+                    forces[i] = 0.0
+                    continue
                 v = vr[i].real if s * vr[i].real > 0 else s * _TINY  # just released: its side of zero
                 mu = law.kinetic(v) + (1j * law.slope(v) * vr[i].imag if np.iscomplexobj(vr) else 0.0)
                 forces[i] = s * self.N[i] * mu
@@ -144,6 +147,9 @@ class RateStateEquations:
         for i, law in enumerate(self.laws):
             if not self.rsf[i]:
                 s = self.mode[i]
+                if s == 0:  # (its force below, from the constraint)
+                    forces[:, i] = 0.0
+                    continue
                 v = np.where(s * vr[:, i] > 0, vr[:, i], s * _TINY)
                 forces[:, i] = s * self.N[i] * np.asarray(law.kinetic(v), dtype=float)
                 continue
@@ -155,7 +161,7 @@ class RateStateEquations:
             sysm = self.system
             F = np.array([sysm.external_force(float(ti)) for ti in t])
             rest = (F - Y[:, :n] @ sysm.stiffness.T - Y[:, n:2 * n] @ sysm.damping.T + forces @ sysm.directions.T)
-            lam = -np.linalg.solve(self._gram, sysm.directions[:, self.stuck].T @ sysm.inverse_mass @ rest.T)
+            lam = -self._gram_inv @ (sysm.directions[:, self.stuck].T @ sysm.inverse_mass @ rest.T)
             forces[:, self.stuck] = lam.T
         return vr, forces
 
@@ -183,7 +189,7 @@ class RateStateEquations:
         _, forces, rates = self.forces(y)
         a = sysm.inverse_mass @ self._rest(t, y, forces)
         if self.stuck:  # M a = rest + E lambda with E^T a = 0
-            a = a - self._MiE @ np.linalg.solve(self._gram, sysm.directions[:, self.stuck].T @ a)
+            a = a - self._MiE @ (self._gram_inv @ (sysm.directions[:, self.stuck].T @ a))
         return np.concatenate([y[n:2 * n], a, rates])
 
 
@@ -272,6 +278,9 @@ def _steady_state(eq: RateStateEquations) -> np.ndarray:
     y = np.zeros(eq.size)
     for i, law in enumerate(eq.laws):
         if not eq.rsf[i]:
+            if abs(eq.V[i]) >= law.max_speed:
+                raise ParameterError(f"contacts[{i}].surface_speed", float(eq.V[i]),
+                                     f"below the speed {law.max_speed:g} where its friction law ends")
             continue
         if eq.V[i] < 0 and not law.regularized:
             raise ParameterError(f"contacts[{i}].surface_speed", float(eq.V[i]), "> 0 for the law as written, which "
@@ -287,7 +296,7 @@ def _steady_state(eq: RateStateEquations) -> np.ndarray:
 
 
 def rate_state_steady(system: System) -> RateStateSteady:
-    """Steady sliding of ``system`` (every contact rate-and-state, every surface moving) and its
+    """Steady sliding of ``system`` (a rate-and-state contact at least, every surface moving) and its
     linear stability."""
     eq = RateStateEquations(system)
     system.unforced("steady sliding")
@@ -405,6 +414,8 @@ def rate_state_simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *
         except _Budget:
             raise NoSolutionError(f"more than {MAX_CALLS:.0e} evaluations of the equations by t = {last[0]:.6g} s "
                                   f"of t_end = {t_end:g} s: a shorter t_end, or a looser rtol") from None
+        except ParameterError:  # a law's own (a user's function out of its range)
+            raise
         except (ValueError, _Stopped):  # scipy refuses a step or a Jacobian that is not finite
             sol = None
         if sol is None or sol.status < 0 or not np.all(np.isfinite(sol.y)):

@@ -133,8 +133,8 @@ def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: 
     up = _crossings(run, abs(V0))
     if up.size < 5:
         raise NoSolutionError("fewer than five upward crossings of contact 0's slip rate through its surface speed "
-                              f"in the transient of {transient:.6g} s: the motion settled (steady sliding is stable, or "
-                              "the cycle is far from this start), no cycle to follow")
+                              f"in the transient of {transient:.6g} s: the motion settled (steady sliding is stable, "
+                              "or the cycle is far from this start), no cycle to follow")
     Y = _states(eq, run)
     swing = np.array([_swing(run, eq.rsf[0], a + 1, b + 2) for a, b in zip(up[-5:-1], up[-4:])])
     if np.all(swing[1:] < (1.0 - DECAY) * swing[:-1]):  # shrinking period after period (four swings)

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import NoSolutionError
 from .simulate import zero_slip
 
 __all__ = ["first_mode", "choose_mode", "mode_events", "switch", "sticking"]
@@ -37,7 +38,8 @@ def _speed(eq, y) -> float:
 def choose_mode(eq, t: float, y: np.ndarray, mode: tuple, zero, released: dict) -> tuple[tuple, np.ndarray]:
     """``(mode, y)`` from ``t`` on: the contacts in ``zero`` stick unless their forces exceed ``f_s N``
     (released in the force's direction, the largest excess first), those in ``released``
-    (contact -> direction) slip; the stuck contacts' slip rates set to zero in ``y``. Sets ``eq``'s mode."""
+    (contact -> direction) slip; the stuck contacts' slip rates set to zero in ``y``. Sets ``eq``'s mode.
+    A `NoSolutionError` where a slipping contact is beyond its law's largest slip speed."""
     mode = list(mode)
     for i in zero:
         mode[i] = released.get(i, 0)
@@ -45,13 +47,20 @@ def choose_mode(eq, t: float, y: np.ndarray, mode: tuple, zero, released: dict) 
         eq.set_mode(mode)
         y = zero_slip(eq.system, y, eq.stuck)
         if not eq.stuck:
-            return tuple(mode), y
+            break
         lam = eq.stick_forces(t, y)
         limit = np.array([eq.laws[i].static * eq.N[i] for i in eq.stuck])
         k = int(np.argmax(np.abs(lam) - limit))
         if abs(lam[k]) <= limit[k]:
-            return tuple(mode), y
+            break
         mode[eq.stuck[k]] = 1 if lam[k] > 0 else -1
+    vr = eq.V - eq.system.directions.T @ y[eq.n:2 * eq.n]
+    for i in sticking(eq):
+        if mode[i] != 0 and abs(vr[i]) >= eq.laws[i].max_speed:
+            raise NoSolutionError(f"simulation stopped at t = {t:.17g}: the slip speed of contact {i} is beyond the "
+                                  f"limit of its friction law, |v_r| < {eq.laws[i].max_speed:.6g} (beyond it the law "
+                                  "gives no friction coefficient)")
+    return tuple(mode), y
 
 
 def first_mode(eq, y: np.ndarray) -> tuple[tuple, np.ndarray]:
