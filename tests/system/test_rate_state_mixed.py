@@ -83,13 +83,13 @@ def test_a_block_set_apart_sticks_and_slips_as_its_closed_form():
 M1, M2, K1, K2, KC, V1, TAU = 1.0, 0.5, 2e4, 1e3, 300.0, 1e-3, 1.0
 
 
-def _pair(law1, law2):
-    K = [[K1 + KC, -KC], [-KC, K2 + KC]]
+def _pair(law1, law2, k1=K1):
+    K = [[k1 + KC, -KC], [-KC, K2 + KC]]
     return System(mass=np.diag([M1, M2]), stiffness=K, contacts=[
         Contact([1.0, 0.0], N, law1, surface_speed=V1), Contact([0.0, 1.0], N, law2, surface_speed=V2)])
 
 
-def _reference(t_eval, x0, v0, theta0, evolution, held=False):
+def _reference(t_eval, x0, v0, theta0, evolution, held=False, k1=K1):
     """The pair written out apart: the state variable as theta (aging: theta' = 1 - v theta / D_c; slip:
     theta' = -(v theta / D_c) ln(v theta / D_c)), block 2's coordinate eliminated while it sticks
     (x2 = x2(t_s) + V2 (t - t_s)), LSODA with its own event location. Returns x at t_eval."""
@@ -103,13 +103,13 @@ def _reference(t_eval, x0, v0, theta0, evolution, held=False):
         x1, x2, u1, u2, th = y
         f1 = N * mu1(V1 - u1, th)
         f2 = s * N * FD * (1.0 - TAU * abs(V2 - u2))
-        return [u1, u2, (-(K1 + KC) * x1 + KC * x2 + f1) / M1, (KC * x1 - (K2 + KC) * x2 + f2) / M2,
+        return [u1, u2, (-(k1 + KC) * x1 + KC * x2 + f1) / M1, (KC * x1 - (K2 + KC) * x2 + f2) / M2,
                 dtheta(V1 - u1, th)]
 
     def stuck(t, y, x2s, ts):  # y = x1, v1, theta; x2 = x2s + V2 (t - ts)
         x1, u1, th = y
         x2 = x2s + V2 * (t - ts)
-        return [u1, (-(K1 + KC) * x1 + KC * x2 + N * mu1(V1 - u1, th)) / M1, dtheta(V1 - u1, th)]
+        return [u1, (-(k1 + KC) * x1 + KC * x2 + N * mu1(V1 - u1, th)) / M1, dtheta(V1 - u1, th)]
 
     def hold(t, y, x2s, ts):  # the friction force that keeps block 2 on the belt: its spring forces
         return -(KC * y[0] - (K2 + KC) * (x2s + V2 * (t - ts)))
@@ -248,3 +248,21 @@ def test_a_cycle_of_the_coupled_pair_closes_under_the_integration_written_apart(
     onsets = np.array([te for te, s in events if s == 0])
     assert onsets.size >= 40 and np.diff(onsets) == pytest.approx(cycle.period, rel=1e-6)
     assert cycle.stable and np.sum(np.abs(cycle.multipliers) > 1e-6) < cycle.multipliers.size  # a stick: a 0
+
+
+@pytest.mark.slow
+def test_the_pairs_cycle_followed_along_a_stiffness_closes_under_the_integration_written_apart():
+    """`continue_system` on the pair (its cycles found by Newton on runs with their switches) along the
+    rate-and-state block's stiffness: at the last value the cycle closes under the integration
+    written apart with that stiffness."""
+    from stickslip.system import continue_system
+    law = RateState(a=A, b=B, dc=DC, f0=F0, v_ref=V0)
+    branch = continue_system(lambda k: _pair(law, LinearWeakening(FS, FD, TAU), k), K1, 1.2 * K1, points=3,
+                             x0=[F0 * N / K1, 0.0], v0=[0.0, 0.0], transient=6.0, parameter="k1")
+    assert branch.stopped.startswith("reached") and branch.values.size == 3
+    x0, v0, psi0 = branch.x0[-1], branch.v0[-1], branch.psi0[-1, 0]
+    t = np.linspace(0.0, branch.period[-1], 201)
+    ref, _ = _reference(t, x0, v0, DC / V0 * math.exp(psi0), "aging", held=abs(V2 - v0[1]) < 1e-12 * V2,
+                        k1=1.2 * K1)
+    assert np.all(np.abs(ref[-1] - x0) < 1e-6 * np.ptp(ref, axis=0))
+    assert np.all(np.diff(branch.period) != 0)  # the cycle changes along the branch

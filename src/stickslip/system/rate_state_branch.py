@@ -26,7 +26,7 @@ from .branch import SystemBranch
 from .floquet import inside, without_own
 from .model import System
 from .rate_state import RateStateEquations, is_rate_state, rate_state_simulate
-from .rate_state_cycle import rate_state_cycle
+from .rate_state_cycle import orbit_maps, rate_state_cycle
 
 __all__ = ["continue_rate_state", "SHRUNK"]
 
@@ -75,11 +75,6 @@ def continue_rate_state(build: Callable[[float], System], start: float, stop: fl
     cycle's state variables."""
     first = build(start)
     eq = RateStateEquations(first)
-    if not all(eq.rsf):
-        i = eq.rsf.index(False)
-        raise ParameterError(f"contacts[{i}].friction", type(eq.laws[i]).__name__, "rate-and-state at every contact "
-                             "for a continuation (the cycle of a system mixing them with contacts that stick: "
-                             "rate_state_cycle, `stickslip system cycle`)")
     cycle = rate_state_cycle(first, x0, v0, psi0=psi0, transient=transient, rtol=rtol, tol=tol)
     y = np.concatenate([cycle.x0, cycle.v0, *cycle.psi0])
     amp, size, _ = _orbit(first, eq, y, cycle.period, rtol)
@@ -91,11 +86,12 @@ def continue_rate_state(build: Callable[[float], System], start: float, stop: fl
         prev, p = rows[-1], float(targets[0])
         try:
             system = build(p)
-            if not is_rate_state(system) or not all(RateStateEquations(system).rsf):
-                raise ParameterError("contacts", p, "rate-and-state laws at every contact all along the branch")
+            if not is_rate_state(system) or RateStateEquations(system).rsf != eq.rsf:
+                raise ParameterError("contacts", p, "the same laws at every contact all along the branch")
             eq = RateStateEquations(system)
-            y, period, mult = periodic_orbit(eq.guarded, eq.guarded_jacobian, prev[2], prev[1], size, rtol=rtol,
-                                             tol=tol)
+            field, flow = orbit_maps(system, eq, rtol)
+            y, period, mult = periodic_orbit(field, eq.guarded_jacobian, prev[2], prev[1], size, rtol=rtol,
+                                             tol=tol, flow=flow)
             amp, new_size, _ = _orbit(system, eq, y, period, rtol)
         except ParameterError as err:
             events.append({"change": "refused", "value": p, "before": "", "after": ""})

@@ -27,7 +27,7 @@ from .model import System
 from .rate_state import LONGEST, RateStateEquations, RateStateRun, rate_state_simulate, rate_state_steady
 from .rate_state_modes import first_mode
 
-__all__ = ["RateStateCycle", "rate_state_cycle"]
+__all__ = ["RateStateCycle", "rate_state_cycle", "orbit_maps"]
 
 #: Samples per period of the linear oscillation in the transient (where the period is read).
 SAMPLES_PER_PERIOD = 200
@@ -100,6 +100,23 @@ def _psi_lists(eq: RateStateEquations, y: np.ndarray) -> list:
     return [eq.psi(y, i).copy() for i in range(len(eq.laws)) if eq.rsf[i]]
 
 
+def orbit_maps(system: System, eq: RateStateEquations, rtol: float):
+    """``(field, flow)`` for `stickslip.orbits.periodic_orbit`: the smooth equations (flow None: Radau on
+    them) or, with contacts that stick, runs with their switches and the field in the state's mode."""
+    if all(eq.rsf):
+        return eq.guarded, None
+    n = eq.n
+
+    def flow(y, T):
+        run = rate_state_simulate(system, y[:n], y[n:2 * n], T, psi0=_psi_lists(eq, y), samples=2, rtol=rtol)
+        return _states(eq, run)[-1]
+
+    def field(t, y):
+        first_mode(eq, y)
+        return eq.guarded(t, y)
+    return field, flow
+
+
 def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: float | None = None,
                      rtol: float = 1e-9, tol: float = 1e-7, max_iter: int = 30) -> RateStateCycle:
     """The limit cycle the motion from ``(x0, v0, psi0)`` (default: steady sliding with contact 0's
@@ -149,15 +166,7 @@ def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: 
     if np.all(np.ptp(span[:, :eq.n], axis=0) <= 1e-9 * np.maximum(np.abs(span[:, :eq.n]).max(axis=0), 1e-300)):
         raise NoSolutionError("the motion settled to steady sliding in the transient: no cycle to follow")
     n = eq.n
-    flow, field = None, eq.guarded
-    if not all(eq.rsf):  # contacts that stick: the flow map is a run with its switches; the field in the mode
-        def flow(y, T):  # the state is in there
-            run = rate_state_simulate(system, y[:n], y[n:2 * n], T, psi0=_psi_lists(eq, y), samples=2, rtol=rtol)
-            return _states(eq, run)[-1]
-
-        def field(t, y):
-            first_mode(eq, y)
-            return eq.guarded(t, y)
+    field, flow = orbit_maps(system, eq, rtol)
     y0, period, mult = periodic_orbit(field, eq.guarded_jacobian, last, period, size, rtol=rtol, tol=tol,
                                       max_iter=max_iter, flow=flow)
     if np.all(np.abs(mult - 1.0) > 1e-3) or np.max(np.abs((y0 - last) / size)) > 1e3:
