@@ -49,14 +49,17 @@ def test_a_supercritical_hopf_point_grows_stable_cycles_as_the_square_root_of_th
 def test_a_subcritical_hopf_point_has_stable_cycles_beyond_it_up_to_a_fold():
     """With m = 1e5 kg the normal form says subcritical (l1 > 0): the stable cycle of k < k_c persists
     where steady sliding is stable too (k >= k_c, finite amplitude), up to a fold of cycles just beyond,
-    where its leading multiplier tends to 1 and the branch ends."""
+    where its leading multiplier tends to 1 and the branch ends (next to the fold Newton's method may
+    land on either of the two cycles that meet there: the stable one, or the unstable one born at k_c)."""
     mass = 1e5
     assert hopf_criticality(SpringSlider(LAW, normal_stress=N, stiffness=1.0, mass=mass), V).criticality == \
         "subcritical"
     kc = _kc(mass)
     branch = continue_system(_block(mass), 0.95 * kc, 1.05 * kc, points=5, parameter="stiffness[0][0]")
-    assert branch.stopped.startswith("no cycle beyond") and np.all(branch.stable)
-    assert branch.values[-1] > kc and branch.amplitude[-1, 0] > 0.25 * branch.amplitude[0, 0]
+    assert branch.stopped.startswith("no cycle beyond") and kc < branch.values[-1] < 1.05 * kc
+    at = int(np.argmin(np.abs(branch.values - kc)))  # the value k_c itself
+    assert branch.values[at] == pytest.approx(kc, rel=1e-12) and np.all(branch.stable[:at + 1])
+    assert branch.amplitude[at, 0] > 0.25 * branch.amplitude[0, 0]
     assert branch.multipliers[-1, 0] > branch.multipliers[0, 0]  # (its leading multiplier heads for 1)
     assert branch.to_xarray()["psi0"].shape == (branch.values.size, 1)
 
