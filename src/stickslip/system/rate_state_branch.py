@@ -26,7 +26,7 @@ from .branch import SystemBranch
 from .floquet import inside, without_own
 from .model import System
 from .rate_state import RateStateEquations, is_rate_state, rate_state_simulate
-from .rate_state_cycle import orbit_maps, rate_state_cycle
+from .rate_state_cycle import orbit_maps, orbit_size, psi_lists, rate_state_cycle, run_states
 
 __all__ = ["continue_rate_state", "SHRUNK"]
 
@@ -44,20 +44,18 @@ def _orbit(system: System, eq: RateStateEquations, y: np.ndarray, period: float,
     """``(amplitude of each dof, range of each variable, each contact's largest slip rate)`` of the
     orbit from ``y`` over ``period``."""
     n = eq.n
-    psi = [eq.psi(y, i).copy() for i in range(len(eq.laws)) if eq.rsf[i]]
-    run = rate_state_simulate(system, y[:n], y[n:2 * n], period, psi0=psi, samples=ORBIT_SAMPLES, rtol=rtol)
-    Y = np.hstack([run.x, run.v] + [run.psi[:, i, :eq.laws[i].states] for i in range(len(eq.laws)) if eq.rsf[i]])
-    size = np.maximum(np.ptp(Y, axis=0), 1e-9 * np.maximum(np.abs(Y).max(axis=0), 1e-300))
-    return 0.5 * np.ptp(run.x, axis=0), size, run.slip_rate.max(axis=0)
+    run = rate_state_simulate(system, y[:n], y[n:2 * n], period, psi0=psi_lists(eq, y), samples=ORBIT_SAMPLES,
+                              rtol=rtol)
+    return 0.5 * np.ptp(run.x, axis=0), orbit_size(run_states(eq, run)), run.slip_rate.max(axis=0)
 
 
 def _settled(system: System, eq: RateStateEquations, prev: tuple, rtol: float, tol: float):
     """`rate_state_cycle` of ``system`` from the orbit ``prev`` of the value before, after a transient of
     `SETTLE` of its periods: ``(y, period, multipliers, amplitude, size)``, Nones if it finds none."""
     n, y = eq.n, prev[2]
-    psi = [eq.psi(y, i).copy() for i in range(len(eq.laws)) if eq.rsf[i]]
     try:
-        cycle = rate_state_cycle(system, y[:n], y[n:2 * n], psi0=psi, transient=SETTLE * prev[1], rtol=rtol, tol=tol)
+        cycle = rate_state_cycle(system, y[:n], y[n:2 * n], psi0=psi_lists(eq, y), transient=SETTLE * prev[1],
+                                 rtol=rtol, tol=tol)
     except (NoSolutionError, ParameterError):
         return None, None, None, None, None
     y = np.concatenate([cycle.x0, cycle.v0, *cycle.psi0])

@@ -27,7 +27,7 @@ from .model import System
 from .rate_state import LONGEST, RateStateEquations, RateStateRun, rate_state_simulate, rate_state_steady
 from .rate_state_modes import first_mode
 
-__all__ = ["RateStateCycle", "rate_state_cycle", "orbit_maps"]
+__all__ = ["RateStateCycle", "rate_state_cycle", "orbit_maps", "orbit_size", "psi_lists", "run_states"]
 
 #: Samples per period of the linear oscillation in the transient (where the period is read).
 SAMPLES_PER_PERIOD = 200
@@ -77,7 +77,7 @@ class RateStateCycle(Result):
         return finish(ds, "system with rate-and-state contacts: limit cycle and its Floquet multipliers", "system")
 
 
-def _states(eq: RateStateEquations, run: RateStateRun) -> np.ndarray:
+def run_states(eq: RateStateEquations, run: RateStateRun) -> np.ndarray:
     """The samples of ``run`` as rows of ``y = (x, x', psi)``."""
     psi = [run.psi[:, i, :law.states] for i, law in enumerate(eq.laws) if eq.rsf[i]]
     return np.hstack([run.x, run.v, *psi])
@@ -96,7 +96,13 @@ def _crossings(run: RateStateRun, V: float) -> np.ndarray:
     return np.nonzero((r[:-1] < 0) & (r[1:] >= 0))[0]
 
 
-def _psi_lists(eq: RateStateEquations, y: np.ndarray) -> list:
+def orbit_size(span: np.ndarray) -> np.ndarray:
+    """Each variable's range over the rows ``span`` of an orbit (at least 1e-9 of its size): Newton's scale."""
+    return np.maximum(np.ptp(span, axis=0), 1e-9 * np.maximum(np.abs(span).max(axis=0), 1e-300))
+
+
+def psi_lists(eq: RateStateEquations, y: np.ndarray) -> list:
+    """The state variables in ``y``, one array per rate-and-state contact (a run's ``psi0``)."""
     return [eq.psi(y, i).copy() for i in range(len(eq.laws)) if eq.rsf[i]]
 
 
@@ -108,8 +114,8 @@ def orbit_maps(system: System, eq: RateStateEquations, rtol: float):
     n = eq.n
 
     def flow(y, T):
-        run = rate_state_simulate(system, y[:n], y[n:2 * n], T, psi0=_psi_lists(eq, y), samples=2, rtol=rtol)
-        return _states(eq, run)[-1]
+        run = rate_state_simulate(system, y[:n], y[n:2 * n], T, psi0=psi_lists(eq, y), samples=2, rtol=rtol)
+        return run_states(eq, run)[-1]
 
     def field(t, y):
         first_mode(eq, y)
@@ -152,7 +158,7 @@ def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: 
         raise NoSolutionError("fewer than five upward crossings of contact 0's slip rate through its surface speed "
                               f"in the transient of {transient:.6g} s: the motion settled (steady sliding is stable, "
                               "or the cycle is far from this start), no cycle to follow")
-    Y = _states(eq, run)
+    Y = run_states(eq, run)
     swing = np.array([_swing(run, eq.rsf[0], a + 1, b + 2) for a, b in zip(up[-5:-1], up[-4:])])
     if np.all(swing[1:] < (1.0 - DECAY) * swing[:-1]):  # shrinking period after period (four swings)
         raise NoSolutionError(f"the oscillation still decays at the end of the transient of {transient:.6g} s (contact "
@@ -162,7 +168,7 @@ def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: 
     last = Y[up[-1] + 1]
     period = float(run.t[up[-1] + 1] - run.t[up[-2] + 1])
     span = Y[up[-2] + 1:up[-1] + 2]
-    size = np.maximum(np.ptp(span, axis=0), 1e-9 * np.maximum(np.abs(span).max(axis=0), 1e-300))
+    size = orbit_size(span)
     if np.all(np.ptp(span[:, :eq.n], axis=0) <= 1e-9 * np.maximum(np.abs(span[:, :eq.n]).max(axis=0), 1e-300)):
         raise NoSolutionError("the motion settled to steady sliding in the transient: no cycle to follow")
     n = eq.n
@@ -172,6 +178,6 @@ def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: 
     if np.all(np.abs(mult - 1.0) > 1e-3) or np.max(np.abs((y0 - last) / size)) > 1e3:
         raise NoSolutionError("Newton's method left the cycle for steady sliding (no multiplier is the flow's own 1): "
                               "no cycle near the motion after the transient")
-    one = rate_state_simulate(system, y0[:n], y0[n:2 * n], period, psi0=_psi_lists(eq, y0), samples=2001, rtol=rtol)
-    return RateStateCycle(period, y0[:n].copy(), y0[n:2 * n].copy(), tuple(_psi_lists(eq, y0)), mult,
+    one = rate_state_simulate(system, y0[:n], y0[n:2 * n], period, psi0=psi_lists(eq, y0), samples=2001, rtol=rtol)
+    return RateStateCycle(period, y0[:n].copy(), y0[n:2 * n].copy(), tuple(psi_lists(eq, y0)), mult,
                           one.slip_rate.min(axis=0), one.slip_rate.max(axis=0), 0.5 * np.ptp(one.x, axis=0))
