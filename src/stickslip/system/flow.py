@@ -33,7 +33,7 @@ from scipy.linalg import expm
 from .model import System
 from .search import EVENT, NO_EVENT, search
 
-__all__ = ["Flow", "SLIP_ZERO", "STICK_LIMIT", "LAW_LIMIT", "OPENING", "CLOSING", "OPEN", "STATE_FLAGS"]
+__all__ = ["Flow", "CACHE_BYTES", "SLIP_ZERO", "STICK_LIMIT", "LAW_LIMIT", "OPENING", "CLOSING", "OPEN", "STATE_FLAGS"]
 
 _NO_STEP, _EMPTY = np.zeros((1, 1)), np.zeros(0)
 #: Steps per fastest time scale ``1/max|eig(A)|`` of the event search: a switching function
@@ -49,6 +49,9 @@ EXPM_AFTER = 64
 SLIP_ZERO, STICK_LIMIT, LAW_LIMIT, OPENING, CLOSING = 0, 1, 2, 3, 4
 #: The state of an open contact (no force; the others are -1, 0, 1: reverse slip, stick, slip).
 OPEN = 2
+#: Bytes of flows one cache keeps (`Flow.cached`): a wave on a ring of 512 nodes meets hundreds of
+#: contact states, each a flow of 2049-square matrices (about 0.1 GB); kept all, a run took 16 GB.
+CACHE_BYTES = 2 * 2**30
 #: CF flags of a variable of contact states.
 STATE_FLAGS = {"flag_values": np.array([-1, 0, 1, OPEN], dtype=np.int8), "flag_meanings": "reverse_slip stick slip open"}
 
@@ -189,14 +192,20 @@ class Flow:
             self.h = min(self.h, (times[piece] - times[piece - 1]) / STEPS_PER_SCALE)
         self._step = None
         self._taken = 0  # steps of the event search on this flow (its step's exponential once many)
+        #: About the memory this flow holds (its step's exponential counted as if computed), in bytes.
+        self.nbytes = 2 * A.nbytes + sum(a.nbytes for a in (self.rows, force_rows, normal, slip))
 
     @classmethod
     def cached(cls, system: System, states: tuple, cache: dict, piece: int = 0) -> "Flow":
         """The flow of ``states``, built once per ``cache`` (a run or a monodromy revisits few states;
-        one cache per ``piece`` of a force history)."""
-        flow = cache.get(states)
+        one cache per ``piece`` of a force history) while the cache holds at most `CACHE_BYTES`: the
+        flows used longest ago are dropped beyond it (built again if met again)."""
+        flow = cache.pop(states, None)
         if flow is None:
-            flow = cache[states] = cls(system, states, piece)
+            flow = cls(system, states, piece)
+        cache[states] = flow  # the most recently used last
+        while len(cache) > 1 and len(cache) * flow.nbytes > CACHE_BYTES:
+            del cache[next(iter(cache))]
         return flow
 
     def propagate(self, z: np.ndarray, t: float) -> np.ndarray:
