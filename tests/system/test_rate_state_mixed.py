@@ -7,12 +7,13 @@ import math
 
 import numpy as np
 import pytest
-from scipy.integrate import solve_ivp
 
 from stickslip.errors import NoSolutionError, ParameterError
 from stickslip.friction import Coulomb, LinearWeakening, UserLaw
 from stickslip.rsf import RateState
 from stickslip.system import Contact, System, rate_state_cycle, rate_state_simulate, rate_state_steady
+
+from .pair_reference import stick_slip_pair
 
 N, A, B, DC, F0, V0 = 10.0, 0.01, 0.015, 1e-5, 0.6, 1e-6
 FS, FD, V2 = 0.6, 0.4, 0.05
@@ -114,41 +115,7 @@ def _reference(t_eval, x0, v0, theta0, evolution, held=False, k1=K1):
     def hold(t, y, x2s, ts):  # the friction force that keeps block 2 on the belt: its spring forces
         return -(KC * y[0] - (K2 + KC) * (x2s + V2 * (t - ts)))
 
-    out = np.full((t_eval.size, 2), np.nan)
-    t, y, s, events = 0.0, [x0[0], x0[1], v0[0], v0[1], theta0], 1 if V2 > v0[1] else -1, []
-    if held:  # block 2 starts on its belt, held
-        s, ts, x2s, y = 0, 0.0, x0[1], [x0[0], v0[0], theta0]
-    opts = dict(method="LSODA", rtol=1e-12, atol=1e-16)
-    while t < t_eval[-1]:
-        sel = t_eval >= t
-        if s != 0:
-            reach = lambda t, y, s: V2 - y[3]  # noqa: E731
-            reach.terminal, reach.direction = True, -s
-            sol = solve_ivp(slipping, (t, t_eval[-1]), y, t_eval=t_eval[sel], events=reach, args=(s,), **opts)
-            out[np.flatnonzero(sel)[:sol.t.size]] = sol.y[:2].T
-            if sol.status == 0:
-                break
-            t, y = sol.t_events[0][0], sol.y_events[0][0]
-            x2s = y[1]
-            s = 0 if abs(hold(t, [y[0]], x2s, t)) <= FS * N else -s
-            events.append((t, s))
-            if s == 0:
-                ts, y = t, [y[0], y[2], y[4]]
-        else:
-            up = lambda t, y, x2s, ts: hold(t, y, x2s, ts) - FS * N  # noqa: E731
-            down = lambda t, y, x2s, ts: hold(t, y, x2s, ts) + FS * N  # noqa: E731
-            up.terminal = down.terminal = True
-            up.direction, down.direction = 1, -1
-            sol = solve_ivp(stuck, (t, t_eval[-1]), y, t_eval=t_eval[sel], events=[up, down], args=(x2s, ts), **opts)
-            out[np.flatnonzero(sel)[:sol.t.size]] = np.column_stack([sol.y[0], x2s + V2 * (sol.t - ts)])
-            if sol.status == 0:
-                break
-            which = 0 if sol.t_events[0].size else 1
-            t, z = sol.t_events[which][0], sol.y_events[which][0]
-            s = 1 if which == 0 else -1
-            y = [z[0], x2s + V2 * (t - ts), z[1], V2, z[2]]
-            events.append((t, s))
-    return out, events
+    return stick_slip_pair(t_eval, [x0[0], x0[1], v0[0], v0[1], theta0], slipping, stuck, hold, V2, FS * N, held)
 
 
 @pytest.mark.parametrize("evolution, x2, v2", [("aging", 0.0, 0.0), ("slip", 0.0, 0.0), ("aging", 0.0, 4.0 * V2),

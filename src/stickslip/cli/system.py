@@ -107,12 +107,15 @@ def simulate_cmd(file: File, t_end: Annotated[float, declared(Q["t_end"], "--t-e
     """Event-driven simulation with exact stick/slip switching at every contact (with rate-and-state
     laws: their smooth motion, Radau IIA; the start at steady sliding's position unless --x0)."""
     out = _out(out, overwrite)
-    from ..system import is_rate_state, rate_state_simulate, simulate
+    from ..system import integrated, is_rate_state, rate_state_simulate, simulate
 
     system = _load(file)
     n = system.dofs
     with _file_keys():
-        if is_rate_state(system):
+        if integrated(system):
+            if psi0 is not None and not is_rate_state(system):
+                raise ParameterError("--psi0", psi0, "left out: it is the state of rate-and-state contacts, and "
+                                     "this system has none")
             run = rate_state_simulate(system, _numbers("--x0", x0, n), _numbers("--v0", v0, n), t_end,
                                       psi0=_psi(psi0, system), samples=samples)
         else:
@@ -141,14 +144,14 @@ def cycle(file: File, x0: X0 = None, v0: V0 = None,
     With rate-and-state contacts: the cycle by Newton's method on the smooth equations (multipliers by
     central differences); --transient then defaults to the growth of a small perturbation."""
     out = _out(out, overwrite)
-    from ..system import forced_response, is_rate_state, limit_cycle, rate_state_cycle
+    from ..system import forced_response, integrated, is_rate_state, limit_cycle, rate_state_cycle
 
     system = _load(file)
     n = system.dofs
     with _file_keys():
         x0, v0 = _numbers("--x0", x0, n), _numbers("--v0", v0, n)
-        rate_state = is_rate_state(system)
-        if psi0 is not None and not rate_state:
+        rate_state = integrated(system)
+        if psi0 is not None and not is_rate_state(system):
             raise ParameterError("--psi0", psi0, "left out: it is the state of rate-and-state contacts, and this "
                                  "system has none")
         if periods != 1 and not system.harmonics:

@@ -19,7 +19,8 @@ from .floquet import SystemCycle, limit_cycle, monodromy, saltation, without_own
 from .forced import ForcedResponse, forced_response
 from .flow import Flow
 from .model import Contact, ForceHistory, Harmonic, System
-from .rate_state import RateStateRun, RateStateSteady, is_rate_state, rate_state_simulate, rate_state_steady
+from .rate_state import (RateStateRun, RateStateSteady, integrated, is_rate_state, rate_state_simulate,
+                         rate_state_steady)
 from .rate_state_cycle import RateStateCycle, rate_state_cycle
 from .simulate import Segment, SystemRun, choose_states, simulate
 from .steady import SteadySliding, steady_sliding
@@ -29,5 +30,5 @@ __all__ = ["Contact", "System", "Harmonic", "ForceHistory", "Flow", "SystemRun",
            "saltation", "SystemCycle", "limit_cycle", "load_system", "system_from_dict",
            "SteadySliding", "steady_sliding", "burridge_knopoff", "RelativeCycle", "cell_symmetry",
            "relative_cycle", "without_own", "SystemBranch", "continue_system", "file_parameter", "RateStateRun",
-           "RateStateSteady", "is_rate_state", "rate_state_simulate", "rate_state_steady", "ForcedResponse",
+           "RateStateSteady", "is_rate_state", "integrated", "rate_state_simulate", "rate_state_steady", "ForcedResponse",
            "forced_response", "RateStateCycle", "rate_state_cycle"]

@@ -10,7 +10,7 @@ force = [0.0, 0.0]                       # N (optional)
 direction = [1.0, 0.0]                   # its slip velocity is surface_speed - direction . x'
 normal_force = 2.0                       # N
 surface_speed = 0.3                      # m/s
-law = "coulomb"                          # coulomb | linear-weakening (with tau)
+law = "coulomb"                          # coulomb | linear-weakening (with tau) | stribeck (with vs)
 fs = 0.6
 fd = 0.4
 # normal_direction = [0.0, 1.0]          # optional: a unilateral contact, N = normal_force - k_n n . x,
@@ -27,7 +27,9 @@ times = [0.0, 10.0, 20.0]                # s, increasing
 forces = [[0.0, 0.0], [1.0, 0.0], [1.0, 0.0]]   # N, one list per time, one number per degree of freedom
 ```
 
-A rate-and-state contact (every contact then: `stickslip.system.rate_state`) gives, instead of
+A Stribeck contact (``vs`` its Stribeck speed, m/s) or a rate-and-state one makes the system move by
+`stickslip.system.rate_state_simulate` (integrated between its switches: no exact flow; every contact
+then has a constant normal force). A rate-and-state contact gives, instead of
 ``fs``, ``fd`` and ``tau``, the fields of `stickslip.rsf.RateState`:
 
 ```toml
@@ -59,11 +61,11 @@ __all__ = ["load_system", "read_table", "system_from_dict", "as_file_keys"]
 _TOP = ("mass", "stiffness", "damping", "force", "contact", "harmonic", "history")
 _HARMONIC = ("frequency", "cos", "sin")
 _HISTORY = ("times", "forces")
-_CONTACT = ("direction", "normal_force", "surface_speed", "law", "fs", "fd", "tau", "name", "normal_direction",
+_CONTACT = ("direction", "normal_force", "surface_speed", "law", "fs", "fd", "tau", "vs", "name", "normal_direction",
             "normal_stiffness", "rigid")
 #: The keys of a rate-and-state law (`stickslip.rsf.RateState`'s fields), with ``law = "rate-state"``.
 _RATE_STATE = ("a", "b", "dc", "f0", "v_ref", "evolution", "b2", "dc2", "regularized")
-_LAWS = ("coulomb", "linear-weakening", "rate-state")
+_LAWS = ("coulomb", "linear-weakening", "stribeck", "rate-state")
 
 
 def _renamed(err: ParameterError, prefix: str) -> ParameterError:
@@ -77,14 +79,13 @@ def _contact(i: int, table) -> Contact:
         raise ParameterError(f"contact[{i}]", table, "a table of direction, normal_force, law, fs, fd, ...")
     law = table.get("law", "coulomb")
     if law not in _LAWS:
-        raise ParameterError(where + "law", law, "one of " + ", ".join(_LAWS) + " (laws affine in the slip speed, "
-                             "or rate-and-state)")
+        raise ParameterError(where + "law", law, "one of " + ", ".join(_LAWS))
     rate_state = law == "rate-state"
     keys = _CONTACT + _RATE_STATE if rate_state else _CONTACT
     unknown = sorted(set(table) - set(keys))
     if unknown:
         raise ParameterError(where + unknown[0], table[unknown[0]], f"a key of a contact with law {law!r}: "
-                             + ", ".join(k for k in keys if not (rate_state and k in ("fs", "fd", "tau"))))
+                             + ", ".join(k for k in keys if not (rate_state and k in ("fs", "fd", "tau", "vs"))))
     rigid = table.get("rigid", False)
     if not isinstance(rigid, bool):
         raise ParameterError(where + "rigid", rigid, "true or false")
@@ -94,12 +95,12 @@ def _contact(i: int, table) -> Contact:
             raise ParameterError(where + key, MISSING, "given")
     try:
         if rate_state:
-            if "fs" in table or "fd" in table or "tau" in table:
-                key = next(k for k in ("fs", "fd", "tau") if k in table)
+            if any(k in table for k in ("fs", "fd", "tau", "vs")):
+                key = next(k for k in ("fs", "fd", "tau", "vs") if k in table)
                 raise ParameterError(key, table[key], "left out with law 'rate-state' (its friction is f0, a, b, ...)")
             friction = RateState(**{k: table[k] for k in _RATE_STATE if k in table})
         else:
-            friction = make_law(law, fs=table["fs"], fd=table["fd"], tau=table.get("tau"))
+            friction = make_law(law, fs=table["fs"], fd=table["fd"], tau=table.get("tau"), vs=table.get("vs"))
         return Contact(table["direction"], table.get("normal_force"), friction, table.get("surface_speed", 0.0),
                        table.get("name", ""), table.get("normal_direction"), table.get("normal_stiffness", 0.0),
                        rigid=rigid)

@@ -39,7 +39,7 @@ from .config import as_file_keys, system_from_dict
 from .floquet import inside, limit_cycle, monodromy, return_fixed_point, without_own
 from .forced import extent, forced_response, forcing_period, stroboscopic_fixed_point, stroboscopic_multipliers
 from .model import System
-from .rate_state import is_rate_state
+from .rate_state import integrated
 from .rate_state_branch import continue_rate_state
 from .simulate import longest_run
 
@@ -168,7 +168,7 @@ def continue_system(build: Callable[[float], System], start: float, stop: float,
         raise ParameterError("stop", stop, f"a value {parameter} can take ({err.name}: {err.allowed})") from None
     if not isinstance(first, System):
         raise ParameterError("build", build, "a function of the parameter's value returning a System")
-    if is_rate_state(first):
+    if integrated(first):
         if periods != 1:
             raise ParameterError("periods", periods, "1 for a system with rate-and-state contacts (its cycles are "
                                  "unforced)")

@@ -22,6 +22,7 @@ block on one contact the leading pair crosses the imaginary axis at the closed-f
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -40,7 +41,7 @@ from .flow import STATE_FLAGS
 from .simulate import MAX_INSTANT_EVENTS, MAX_NUMBERS
 from .steady import SteadySliding
 
-__all__ = ["RateStateRun", "RateStateSteady", "rate_state_simulate", "rate_state_steady", "is_rate_state",
+__all__ = ["RateStateRun", "RateStateSteady", "rate_state_simulate", "rate_state_steady", "is_rate_state", "integrated",
            "RateStateEquations", "start_state"]
 
 #: A slip rate taken for zero (m/s): the regularised law's friction is 0 to round-off there.
@@ -63,12 +64,30 @@ def is_rate_state(system: System) -> bool:
     return any(rsf)
 
 
+def integrated(system: System) -> bool:
+    """True when ``system`` moves by `rate_state_simulate` (integrated between its switches): a contact's
+    law is rate-and-state, or not affine in the slip speed (Stribeck, a user's law: no exact flow);
+    every contact then needs a constant normal force (checked, an error if not)."""
+    smooth = [isinstance(c.friction, RateState) or getattr(c.friction, "affine", None) is None
+              for c in system.contacts]
+    if any(smooth) and not is_rate_state(system):
+        for i, c in enumerate(system.contacts):
+            if c.unilateral or c.rigid:
+                raise ParameterError(f"contacts[{i}].normal_direction", c.normal_direction.tolist(),
+                                     "left out: a system with a law that is not affine in the slip speed has a "
+                                     "constant normal force at every contact (unilateral and rigid contacts are "
+                                     "not in this version)")
+    return any(smooth)
+
+
 def _laws(system) -> list:
     if not isinstance(system, System):
         raise ParameterError("system", system, "a stickslip.system.System")
-    if not is_rate_state(system):
+    if not integrated(system):
         raise ParameterError("contacts", [type(c.friction).__name__ for c in system.contacts],
-                             "a rate-and-state law (stickslip.rsf.RateState) at one contact at least")
+                             "a rate-and-state law (stickslip.rsf.RateState) or a law not affine in the slip speed "
+                             "(Stribeck, a user's law) at one contact at least (affine laws only: "
+                             "stickslip.system.simulate, exact)")
     return [c.friction for c in system.contacts]
 
 
@@ -331,7 +350,7 @@ def _given_psi(psi0, eq: RateStateEquations) -> np.ndarray:
         raise ParameterError("psi0", psi0, want) from None
     if len(rows) != len(laws) or any(r.shape != (law.states,) for r, law in zip(rows, laws)):
         raise ParameterError("psi0", psi0, want)
-    return np.concatenate([np.asarray(Q["psi0"].check_array(r, "psi0"), dtype=float) for r in rows])
+    return np.concatenate([np.zeros(0)] + [np.asarray(Q["psi0"].check_array(r, "psi0"), dtype=float) for r in rows])
 
 
 def start_state(eq: RateStateEquations, x0=None, v0=None, psi0=None) -> np.ndarray:
@@ -378,7 +397,8 @@ def rate_state_simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *
     eq = RateStateEquations(system)
     n, k = eq.n, len(eq.laws)
     t_end, samples, rtol = Q.check("t_end", t_end), Q.check("samples", samples), Q.check("rtol", rtol)
-    scale = max(float(law.dc_values.max()) / max(abs(V), law.v_ref) for law, V, r in zip(eq.laws, eq.V, eq.rsf) if r)
+    scale = max((float(law.dc_values.max()) / max(abs(V), law.v_ref) for law, V, r in zip(eq.laws, eq.V, eq.rsf)
+                 if r), default=math.inf)  # (no rate-and-state contact: t_end's declared range bounds it)
     if t_end > LONGEST * scale:
         raise ParameterError("t_end", t_end, f"<= {LONGEST * scale:.6g} s ({LONGEST:.0e} times the slowest time "
                              f"D_c / V of the contacts' states, {scale:.3g} s; simulate in pieces from the last "
@@ -449,7 +469,7 @@ def rate_state_simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *
             break
     if j != samples:
         _failed(eq, None, last, t_end)
-    kmax = max(law.states for law, r in zip(eq.laws, eq.rsf) if r)
+    kmax = max((law.states for law, r in zip(eq.laws, eq.rsf) if r), default=0)
     psi = np.full((samples, k, kmax), np.nan)
     for i in range(k):
         psi[:, i, :eq.offsets[i + 1] - eq.offsets[i]] = Y[:, 2 * n + eq.offsets[i]:2 * n + eq.offsets[i + 1]]

@@ -25,7 +25,7 @@ from ..orbits import periodic_orbit
 from .branch import SystemBranch
 from .floquet import inside, without_own
 from .model import System
-from .rate_state import RateStateEquations, is_rate_state, rate_state_simulate
+from .rate_state import RateStateEquations, integrated, rate_state_simulate
 from .rate_state_cycle import orbit_maps, orbit_size, psi_lists, rate_state_cycle, run_states
 
 __all__ = ["continue_rate_state", "SHRUNK"]
@@ -84,7 +84,7 @@ def continue_rate_state(build: Callable[[float], System], start: float, stop: fl
         prev, p = rows[-1], float(targets[0])
         try:
             system = build(p)
-            if not is_rate_state(system) or RateStateEquations(system).rsf != eq.rsf:
+            if not integrated(system) or RateStateEquations(system).rsf != eq.rsf:
                 raise ParameterError("contacts", p, "the same laws at every contact all along the branch")
             eq = RateStateEquations(system)
             field, flow = orbit_maps(system, eq, rtol)

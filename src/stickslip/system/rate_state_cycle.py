@@ -138,13 +138,19 @@ def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: 
     if abs(lead.imag) == 0.0:
         raise NoSolutionError("steady sliding's leading eigenvalue is real: no oscillation to follow to a cycle")
     linear = 2.0 * math.pi / abs(lead.imag)
-    scale = max(float(law.dc_values.max()) / max(abs(V), law.v_ref) for law, V, r in zip(eq.laws, eq.V, eq.rsf) if r)
+    scale = max((float(law.dc_values.max()) / max(abs(V), law.v_ref) for law, V, r in zip(eq.laws, eq.V, eq.rsf)
+                 if r), default=math.inf)
     if transient is None:  # the perturbation's growth to the cycle's size, then 20 periods to settle
-        transient = min(math.log(1e3) / max(lead.real, 1e-300) + 20.0 * linear, 0.9 * LONGEST * scale)
+        transient = min(math.log(1e3) / max(lead.real, 1e-300) + 20.0 * linear, 0.9 * LONGEST * scale,
+                        Q["transient"].range.hi)
     transient = Q.check("transient", transient)
     if x0 is None and v0 is None and psi0 is None:
-        psi0 = [p.copy() for p in steady.psi]
-        psi0[0][0] += 0.01
+        if steady.psi:
+            psi0 = [p.copy() for p in steady.psi]
+            psi0[0][0] += 0.01
+        else:  # no state variable: contact 0's slip rate raised by 1 % of its surface speed
+            w = system.contacts[0].direction
+            x0, v0 = steady.x, -0.01 * float(eq.V[0]) * w / float(w @ w)
     samples = int(min(2e5, max(2001, SAMPLES_PER_PERIOD * transient / linear)))
     try:
         run = rate_state_simulate(system, x0, v0, transient, psi0=psi0, samples=samples, rtol=rtol)

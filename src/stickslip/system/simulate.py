@@ -260,8 +260,9 @@ def affine_laws(system: System) -> None:
     for i, c in enumerate(system.contacts):
         if getattr(c.friction, "affine", None) is None:
             raise ParameterError(f"contacts[{i}].friction", type(c.friction).__name__,
-                                 "a law affine in the slip speed (Coulomb, linear weakening) in this version; a system "
-                                 "with rate-and-state laws moves by stickslip.system.rate_state_simulate")
+                                 "a law affine in the slip speed (Coulomb, linear weakening) for the exact flows; a "
+                                 "system with other laws (Stribeck, a user's law, rate-and-state) moves by "
+                                 "stickslip.system.rate_state_simulate (integrated between its switches)")
 
 
 def longest_run(system: System, flows: dict | None = None) -> tuple[float, float]:

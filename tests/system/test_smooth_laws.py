@@ -1,0 +1,97 @@
+"""Systems whose laws are not affine in the slip speed (Stribeck, a user's function), no rate-and-state
+contact: they move by `rate_state_simulate` (Radau between the switches, the switches as events).
+Checked against an integration written out here (the stuck block's coordinate eliminated, LSODA with
+its own event location, the laws' formulas written again), and the cycle against it too."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from stickslip.cli import run as cli
+from stickslip.errors import ParameterError
+from stickslip.friction import Stribeck, UserLaw
+from stickslip.system import (Contact, System, integrated, limit_cycle, rate_state_cycle, rate_state_simulate,
+                              simulate)
+
+from .pair_reference import stick_slip_pair
+
+N, FS, FD, VS = 10.0, 0.6, 0.4, 0.05
+M1, M2, K1, K2, KC, C1, V1, V2 = 1.0, 0.5, 2e3, 1e3, 300.0, 2.0, 2.0, 0.05
+
+
+def _mu1(v):  # the user's law of block 1 (on a fast belt: it never sticks), written again below
+    return 0.3 + 0.2 / (1.0 + 4.0 * abs(v))
+
+
+def _pair():
+    K = [[K1 + KC, -KC], [-KC, K2 + KC]]
+    return System(mass=np.diag([M1, M2]), stiffness=K, damping=np.diag([C1, 0.0]), contacts=[
+        Contact([1.0, 0.0], N, UserLaw(_mu1, fs=0.5), surface_speed=V1),
+        Contact([0.0, 1.0], N, Stribeck(FS, FD, VS), surface_speed=V2)])
+
+
+def _reference(t_eval, x0, v0):
+    """The pair written out apart: block 2 slipping (s = +-1) with s N (fd + (fs - fd) exp(-|v|/vs)), or
+    stuck (x2 = x2s + V2 (t - ts), eliminated) while its springs' force stays within fs N."""
+    def slipping(t, y, s):
+        x1, x2, u1, u2 = y
+        f1 = N * (0.3 + 0.2 / (1.0 + 4.0 * abs(V1 - u1)))
+        f2 = s * N * (FD + (FS - FD) * math.exp(-abs(V2 - u2) / VS))
+        return [u1, u2, (-(K1 + KC) * x1 + KC * x2 - C1 * u1 + f1) / M1, (KC * x1 - (K2 + KC) * x2 + f2) / M2]
+
+    def stuck(t, y, x2s, ts):
+        x1, u1 = y
+        x2 = x2s + V2 * (t - ts)
+        return [u1, (-(K1 + KC) * x1 + KC * x2 - C1 * u1 + N * (0.3 + 0.2 / (1.0 + 4.0 * abs(V1 - u1)))) / M1]
+
+    def hold(t, y, x2s, ts):  # the friction force that keeps block 2 on its belt
+        return -(KC * y[0] - (K2 + KC) * (x2s + V2 * (t - ts)))
+
+    return stick_slip_pair(t_eval, [x0[0], x0[1], v0[0], v0[1]], slipping, stuck, hold, V2, FS * N)
+
+
+@pytest.mark.parametrize("x2, v2", [(0.0, 0.0), (0.004, 0.0), (0.0, 4.0 * V2), (-0.003, -0.2)])
+def test_the_pair_with_a_user_law_and_a_stribeck_law_follows_an_integration_written_apart(x2, v2):
+    system = _pair()
+    assert integrated(system)
+    x0, v0 = [N * _mu1(V1) / (K1 + KC), x2], [0.0, v2]
+    run = rate_state_simulate(system, x0=x0, v0=v0, t_end=1.5, samples=1501)
+    ref, events = _reference(run.t, x0, v0)
+    assert np.all(np.abs(run.x - ref).max(axis=0) < 1e-7 * np.ptp(ref, axis=0))
+    assert len(events) >= 4 and [s for _, s in events] == list(run.event_state)
+    assert run.event_time == pytest.approx([t for t, _ in events], abs=1e-9)
+    assert run.psi.shape == (1501, 2, 0)
+    slipping = run.states[:, 1] != 0
+    assert run.friction_force[slipping, 1] == pytest.approx(run.states[slipping, 1] * N * (
+        FD + (FS - FD) * np.exp(-np.abs(run.slip_rate[slipping, 1]) / VS)), rel=1e-12)
+
+
+def test_the_pairs_cycle_closes_under_the_integration_written_apart():
+    system = _pair()
+    cycle = rate_state_cycle(system, x0=[N * _mu1(V1) / (K1 + KC), 0.0], transient=3.0)
+    assert cycle.psi0 == ()
+    t = np.linspace(0.0, cycle.period, 2001)
+    ref, events = _reference(t, cycle.x0, cycle.v0)
+    assert np.abs(ref[-1] - cycle.x0).max() < 1e-6 * np.ptp(ref, axis=0).max()
+    assert any(s == 0 for _, s in events)  # a stick-slip cycle
+    assert abs(cycle.multipliers - 1.0).min() < 1e-4  # the flow's own
+
+
+def test_the_exact_path_points_to_the_integrated_one_and_the_command_line_takes_either(tmp_path, capsys):
+    with pytest.raises(ParameterError) as err:
+        simulate(_pair(), t_end=1.0)
+    assert err.value.name == "contacts[0].friction" and "rate_state_simulate" in str(err.value)
+    with pytest.raises(ParameterError):
+        limit_cycle(_pair())
+    file = tmp_path / "pair.toml"
+    file.write_text(f"mass = [[{M1}, 0.0], [0.0, {M2}]]\nstiffness = [[{K1 + KC}, {-KC}], [{-KC}, {K2 + KC}]]\n"
+                    f'[[contact]]\ndirection = [1.0, 0.0]\nlaw = "stribeck"\nnormal_force = {N}\nfs = {FS}\n'
+                    f"fd = {FD}\nvs = 0.5\nsurface_speed = {V1}\n[[contact]]\ndirection = [0.0, 1.0]\n"
+                    f'law = "stribeck"\nnormal_force = {N}\nfs = {FS}\nfd = {FD}\nvs = {VS}\nsurface_speed = {V2}\n')
+    assert cli(["system", "simulate", str(file), "--t-end", "0.5", "--x0", "0.0,0.001", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["events"] >= 2 and all(math.isfinite(v) for v in out["x_end"])
+    assert cli(["system", "simulate", str(file), "--t-end", "0.5", "--psi0", "[1.0]"]) == 2
+    assert "--psi0" in capsys.readouterr().err
