@@ -25,8 +25,8 @@ WAVES = (("Figure 5, Ω = 100 rad/s", 100.0, FIG5["mismatch"], FIG5["friction"],
          ("Figure 11, d = 10 µm", FIG11["omega"], FIG11["mismatch"][0], FIG11["friction"], FIG11["modes"]),
          ("Figure 11's branch, d = 1.2 µm (separates)", FIG11["omega"], 1.2e-6, FIG11["friction"], FIG11["modes"]))
 #: The separating wave's row of the table: its ring has 2N degrees of freedom (the normal motion) and a
-#: flow (2N-square matrices) per contact state met; at 512 nodes a run did not finish within the time a
-#: report has: it stops at 256 (NaN beyond).
+#: flow (2N-square matrices) per contact state met; at 512 nodes a run takes about 20 minutes and 2.5 GB,
+#: beyond a report's budget: it stops at 256 (NaN beyond; benchmarks/wave_spectrum.py --separating).
 SEPARATING, SEPARATING_NODES = 2, 256
 #: Points of Figure 11's branch whose stability is computed (64 and 128 nodes each).
 BRANCH_POINTS = 25
