@@ -12,7 +12,7 @@ import pytest
 from stickslip.cli import run as cli
 from stickslip.errors import ParameterError
 from stickslip.friction import Stribeck, UserLaw
-from stickslip.system import (Contact, System, integrated, limit_cycle, rate_state_cycle, rate_state_simulate,
+from stickslip.system import (Contact, System, continue_system, integrated, limit_cycle, rate_state_cycle, rate_state_simulate,
                               simulate)
 
 from .pair_reference import stick_slip_pair
@@ -25,31 +25,31 @@ def _mu1(v):  # the user's law of block 1 (on a fast belt: it never sticks), wri
     return 0.3 + 0.2 / (1.0 + 4.0 * abs(v))
 
 
-def _pair():
+def _pair(belt=V2):
     K = [[K1 + KC, -KC], [-KC, K2 + KC]]
     return System(mass=np.diag([M1, M2]), stiffness=K, damping=np.diag([C1, 0.0]), contacts=[
         Contact([1.0, 0.0], N, UserLaw(_mu1, fs=0.5), surface_speed=V1),
-        Contact([0.0, 1.0], N, Stribeck(FS, FD, VS), surface_speed=V2)])
+        Contact([0.0, 1.0], N, Stribeck(FS, FD, VS), surface_speed=belt)])
 
 
-def _reference(t_eval, x0, v0):
+def _reference(t_eval, x0, v0, belt=V2):
     """The pair written out apart: block 2 slipping (s = +-1) with s N (fd + (fs - fd) exp(-|v|/vs)), or
-    stuck (x2 = x2s + V2 (t - ts), eliminated) while its springs' force stays within fs N."""
+    stuck (x2 = x2s + belt (t - ts), eliminated) while its springs' force stays within fs N."""
     def slipping(t, y, s):
         x1, x2, u1, u2 = y
         f1 = N * (0.3 + 0.2 / (1.0 + 4.0 * abs(V1 - u1)))
-        f2 = s * N * (FD + (FS - FD) * math.exp(-abs(V2 - u2) / VS))
+        f2 = s * N * (FD + (FS - FD) * math.exp(-abs(belt - u2) / VS))
         return [u1, u2, (-(K1 + KC) * x1 + KC * x2 - C1 * u1 + f1) / M1, (KC * x1 - (K2 + KC) * x2 + f2) / M2]
 
     def stuck(t, y, x2s, ts):
         x1, u1 = y
-        x2 = x2s + V2 * (t - ts)
+        x2 = x2s + belt * (t - ts)
         return [u1, (-(K1 + KC) * x1 + KC * x2 - C1 * u1 + N * (0.3 + 0.2 / (1.0 + 4.0 * abs(V1 - u1)))) / M1]
 
     def hold(t, y, x2s, ts):  # the friction force that keeps block 2 on its belt
-        return -(KC * y[0] - (K2 + KC) * (x2s + V2 * (t - ts)))
+        return -(KC * y[0] - (K2 + KC) * (x2s + belt * (t - ts)))
 
-    return stick_slip_pair(t_eval, [x0[0], x0[1], v0[0], v0[1]], slipping, stuck, hold, V2, FS * N)
+    return stick_slip_pair(t_eval, [x0[0], x0[1], v0[0], v0[1]], slipping, stuck, hold, belt, FS * N)
 
 
 @pytest.mark.parametrize("x2, v2", [(0.0, 0.0), (0.004, 0.0), (0.0, 4.0 * V2), (-0.003, -0.2)])
@@ -95,3 +95,12 @@ def test_the_exact_path_points_to_the_integrated_one_and_the_command_line_takes_
     assert out["events"] >= 2 and all(math.isfinite(v) for v in out["x_end"])
     assert cli(["system", "simulate", str(file), "--t-end", "0.5", "--psi0", "[1.0]"]) == 2
     assert "--psi0" in capsys.readouterr().err
+
+
+def test_the_pairs_cycle_followed_along_its_belt_speed_closes_under_the_integration_written_apart():
+    branch = continue_system(_pair, V2, 1.2 * V2, points=3, x0=[N * _mu1(V1) / (K1 + KC), 0.0], transient=3.0)
+    assert branch.stopped.startswith("reached stop") and len(branch.values) == 3
+    x0, v0 = branch.x0[-1], branch.v0[-1]
+    t = np.linspace(0.0, branch.period[-1], 2001)
+    ref, _ = _reference(t, x0, v0, belt=1.2 * V2)
+    assert np.abs(ref[-1] - x0).max() < 1e-6 * np.ptp(ref, axis=0).max()
