@@ -8,12 +8,13 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, given, settings, strategies as st
 
 from stickslip.cli import run as cli
-from stickslip.errors import ParameterError
+from stickslip.errors import NoSolutionError, ParameterError
 from stickslip.friction import Stribeck, UserLaw
-from stickslip.system import (Contact, System, continue_system, integrated, limit_cycle, rate_state_cycle, rate_state_simulate,
-                              simulate)
+from stickslip.system import (Contact, System, continue_system, integrated, limit_cycle, rate_state_cycle,
+                              rate_state_simulate, simulate, system_from_dict)
 
 from .pair_reference import stick_slip_pair
 
@@ -104,3 +105,28 @@ def test_the_pairs_cycle_followed_along_its_belt_speed_closes_under_the_integrat
     t = np.linspace(0.0, branch.period[-1], 2001)
     ref, _ = _reference(t, x0, v0, belt=1.2 * V2)
     assert np.abs(ref[-1] - x0).max() < 1e-6 * np.ptp(ref, axis=0).max()
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(vs=st.one_of(st.floats(allow_nan=True, allow_infinity=True),
+                    st.sampled_from([0.0, 5e-324, 1e-300, 1e-12, 1e-9, 1e4, 1e300, -0.05, "0.05", True, None, [0.05]])),
+       fs=st.sampled_from([0.6, 0.4, 0.0, 10.0, 1e-300]))
+def test_a_stribeck_speed_from_its_range_its_edges_and_beyond_runs_or_is_named(vs, fs):
+    contact = {"direction": [0.0, 1.0], "normal_force": N, "law": "stribeck", "fs": fs, "fd": min(fs, FD),
+               "surface_speed": V2}
+    if vs is not None:
+        contact["vs"] = vs
+    data = {"mass": [[M1, 0.0], [0.0, M2]], "stiffness": [[K1 + KC, -KC], [-KC, K2 + KC]],
+            "contact": [{"direction": [1.0, 0.0], "normal_force": N, "fs": 0.4, "fd": 0.4, "surface_speed": V1},
+                        contact]}
+    try:
+        system = system_from_dict(data)
+    except ParameterError as err:
+        assert err.name == "contact[1].vs" and "vs" in str(err)
+        return
+    try:
+        run = rate_state_simulate(system, x0=[0.0, 0.002], t_end=0.05, samples=11)
+    except NoSolutionError as err:  # said, not crashed
+        assert str(err)
+        return
+    assert np.all(np.isfinite(run.x)) and np.all(np.isfinite(run.friction_force))
