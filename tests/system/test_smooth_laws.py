@@ -110,7 +110,7 @@ def test_the_pairs_cycle_followed_along_its_belt_speed_closes_under_the_integrat
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(vs=st.one_of(st.floats(allow_nan=True, allow_infinity=True),
                     st.sampled_from([0.0, 5e-324, 1e-300, 1e-12, 1e-9, 1e4, 1e300, -0.05, "0.05", True, None, [0.05]])),
-       fs=st.sampled_from([0.6, 0.4, 0.0, 10.0, 1e-300]))
+       fs=st.sampled_from([0.6, 0.4, 10.0]))
 def test_a_stribeck_speed_from_its_range_its_edges_and_beyond_runs_or_is_named(vs, fs):
     contact = {"direction": [0.0, 1.0], "normal_force": N, "law": "stribeck", "fs": fs, "fd": min(fs, FD),
                "surface_speed": V2}
@@ -119,11 +119,14 @@ def test_a_stribeck_speed_from_its_range_its_edges_and_beyond_runs_or_is_named(v
     data = {"mass": [[M1, 0.0], [0.0, M2]], "stiffness": [[K1 + KC, -KC], [-KC, K2 + KC]],
             "contact": [{"direction": [1.0, 0.0], "normal_force": N, "fs": 0.4, "fd": 0.4, "surface_speed": V1},
                         contact]}
+    declared = (isinstance(vs, (int, float)) and not isinstance(vs, bool) and math.isfinite(vs)
+                and 1e-9 <= vs <= 1e4)  # the declared range of vs, written here
     try:
         system = system_from_dict(data)
     except ParameterError as err:
-        assert err.name == "contact[1].vs" and "vs" in str(err)
+        assert not declared and err.name == "contact[1].vs" and "vs" in str(err)
         return
+    assert declared
     try:
         run = rate_state_simulate(system, x0=[0.0, 0.002], t_end=0.05, samples=11)
     except NoSolutionError as err:  # said, not crashed
