@@ -50,6 +50,9 @@ def test_a_contact_that_would_pull_or_whose_friction_drives_it_into_the_surface_
         steady_sliding(block(F0=-2.0))  # lifted, not pressed
     with pytest.raises(NoSolutionError, match="Painleve"):
         steady_sliding(block(mc=3.0, my=10.0, mu=0.5))  # m - mu mc < 0: no reaction keeps y'' = 0 uniquely
+    held = Contact([1.0], None, Coulomb(0.3, 0.3), 0.5, normal_direction=[1.0], rigid=True)
+    with pytest.raises(NoSolutionError, match="hold every one"):  # nothing left to move (was a crash)
+        steady_sliding(System([[1.0]], [[1.0]], [held], force=[-1.0]))
 
 
 @pytest.mark.parametrize("nodes, friction", [(16, 0.2), (32, 0.7)])

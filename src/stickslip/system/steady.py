@@ -190,11 +190,19 @@ def _constrained(system: System, rigid: list[int], k_eff: np.ndarray, c_eff: np.
                     if not np.linalg.det(H[np.ix_(k, k)]) > 1e-12 * np.abs(H).max() ** r), None)
     else:
         bad = None if np.linalg.eigvalsh(H + H.T).min() > 1e-12 * np.abs(H).max() else tuple(range(m))
-    if bad is not None:
+    if bad is not None and m <= MINORS_UP_TO:
         named = ", ".join(str(rigid[k]) for k in bad)
         raise NoSolutionError(f"the reactions of the rigid contacts {named} are not determined by the motion "
                               "(N^T M^-1 (n + s mu w) is not a P-matrix: friction pulls the contact into its surface "
                               "faster than the normal pushes it out, the Painleve paradox): no steady sliding")
+    if bad is not None:
+        raise NoSolutionError(f"that the reactions of the {m} rigid contacts are determined by the motion could not "
+                              f"be confirmed (N^T M^-1 (n + s mu w) + its transpose is not positive definite, and "
+                              f"its principal minors are checked up to {MINORS_UP_TO} contacts only): no steady "
+                              "sliding computed")
+    if m >= n:
+        raise NoSolutionError(f"the {m} rigid contacts hold every one of the {n} degrees of freedom: no motion is "
+                              "left whose stability steady sliding would have")
     L = Minv - Minv @ B @ np.linalg.solve(H, N.T @ Minv)
     Z = null_space(N.T)
     k = n - m
