@@ -5,6 +5,7 @@ its own event location, the laws' formulas written again), and the cycle against
 
 import json
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -80,20 +81,19 @@ def test_the_pairs_cycle_closes_under_the_integration_written_apart():
     assert abs(cycle.multipliers - 1.0).min() < 1e-4  # the flow's own
 
 
-def test_the_exact_path_points_to_the_integrated_one_and_the_command_line_takes_either(tmp_path, capsys):
+def test_the_exact_path_points_to_the_integrated_one_and_the_command_line_takes_the_example(capsys):
     with pytest.raises(ParameterError) as err:
         simulate(_pair(), t_end=1.0)
     assert err.value.name == "contacts[0].friction" and "rate_state_simulate" in str(err.value)
     with pytest.raises(ParameterError):
         limit_cycle(_pair())
-    file = tmp_path / "pair.toml"
-    file.write_text(f"mass = [[{M1}, 0.0], [0.0, {M2}]]\nstiffness = [[{K1 + KC}, {-KC}], [{-KC}, {K2 + KC}]]\n"
-                    f'[[contact]]\ndirection = [1.0, 0.0]\nlaw = "stribeck"\nnormal_force = {N}\nfs = {FS}\n'
-                    f"fd = {FD}\nvs = 0.5\nsurface_speed = {V1}\n[[contact]]\ndirection = [0.0, 1.0]\n"
-                    f'law = "stribeck"\nnormal_force = {N}\nfs = {FS}\nfd = {FD}\nvs = {VS}\nsurface_speed = {V2}\n')
+    file = Path(__file__).resolve().parents[2] / "examples" / "stribeck" / "two_blocks.toml"
     assert cli(["system", "simulate", str(file), "--t-end", "0.5", "--x0", "0.0,0.001", "--json"]) == 0
     out = json.loads(capsys.readouterr().out)
     assert out["events"] >= 2 and all(math.isfinite(v) for v in out["x_end"])
+    assert cli(["system", "cycle", str(file), "--transient", "3", "--x0", "0.0017,0", "--json"]) == 0
+    cycle = json.loads(capsys.readouterr().out)
+    assert cycle["stable"] and 0.1 < cycle["period"] < 0.3 and cycle["slip_rate_min"][1] == 0.0  # stick-slip
     assert cli(["system", "simulate", str(file), "--t-end", "0.5", "--psi0", "[1.0]"]) == 2
     assert "--psi0" in capsys.readouterr().err
 
