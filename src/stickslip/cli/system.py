@@ -112,16 +112,13 @@ def simulate_cmd(file: File, t_end: Annotated[float, declared(Q["t_end"], "--t-e
     system = _load(file)
     n = system.dofs
     with _file_keys():
+        if psi0 is not None and not is_rate_state(system):
+            raise ParameterError("--psi0", psi0, "left out: it is the state of rate-and-state contacts, and this "
+                                 "system has none")
         if integrated(system):
-            if psi0 is not None and not is_rate_state(system):
-                raise ParameterError("--psi0", psi0, "left out: it is the state of rate-and-state contacts, and "
-                                     "this system has none")
             run = rate_state_simulate(system, _numbers("--x0", x0, n), _numbers("--v0", v0, n), t_end,
                                       psi0=_psi(psi0, system), samples=samples)
         else:
-            if psi0 is not None:
-                raise ParameterError("--psi0", psi0, "left out: it is the state of rate-and-state contacts, and this "
-                                     "system has none")
             run = simulate(system, _numbers("--x0", x0, n), _numbers("--v0", v0, n), t_end, samples=samples,
                            max_events=max_events)
     _emit(run.to_dict(), json, "simulation")

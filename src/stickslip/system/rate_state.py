@@ -42,7 +42,7 @@ from .simulate import MAX_INSTANT_EVENTS, MAX_NUMBERS
 from .steady import SteadySliding
 
 __all__ = ["RateStateRun", "RateStateSteady", "rate_state_simulate", "rate_state_steady", "is_rate_state", "integrated",
-           "RateStateEquations", "start_state"]
+           "RateStateEquations", "start_state", "slowest_state_time"]
 
 #: A slip rate taken for zero (m/s): the regularised law's friction is 0 to round-off there.
 _TINY = 1e-300
@@ -51,33 +51,40 @@ _TINY = 1e-300
 LONGEST = 1e4
 
 
+def _constant_normal(system: System, which: str) -> None:
+    """A `ParameterError` naming the first contact with a normal direction (``which``: the system's kind)."""
+    for i, c in enumerate(system.contacts):
+        if c.unilateral or c.rigid:
+            raise ParameterError(f"contacts[{i}].normal_direction", c.normal_direction.tolist(),
+                                 f"left out: a system with {which} has a constant normal force at every contact "
+                                 "(unilateral and rigid contacts are not in this version)")
+
+
 def is_rate_state(system: System) -> bool:
     """True when a contact's law is rate-and-state (the system then moves by `rate_state_simulate`;
     its other contacts, which may stick, need a constant normal force: checked, an error if not)."""
-    rsf = [isinstance(c.friction, RateState) for c in system.contacts]
-    if any(rsf):
-        for i, c in enumerate(system.contacts):
-            if c.unilateral or c.rigid:
-                raise ParameterError(f"contacts[{i}].normal_direction", c.normal_direction.tolist(),
-                                     "left out: a system with rate-and-state contacts has a constant normal force at "
-                                     "every contact (unilateral and rigid contacts are not in this version)")
-    return any(rsf)
+    rsf = any(isinstance(c.friction, RateState) for c in system.contacts)
+    if rsf:
+        _constant_normal(system, "rate-and-state contacts")
+    return rsf
 
 
 def integrated(system: System) -> bool:
     """True when ``system`` moves by `rate_state_simulate` (integrated between its switches): a contact's
     law is rate-and-state, or not affine in the slip speed (Stribeck, a user's law: no exact flow);
     every contact then needs a constant normal force (checked, an error if not)."""
-    smooth = [isinstance(c.friction, RateState) or getattr(c.friction, "affine", None) is None
-              for c in system.contacts]
-    if any(smooth) and not is_rate_state(system):
-        for i, c in enumerate(system.contacts):
-            if c.unilateral or c.rigid:
-                raise ParameterError(f"contacts[{i}].normal_direction", c.normal_direction.tolist(),
-                                     "left out: a system with a law that is not affine in the slip speed has a "
-                                     "constant normal force at every contact (unilateral and rigid contacts are "
-                                     "not in this version)")
-    return any(smooth)
+    if is_rate_state(system):
+        return True
+    smooth = any(getattr(c.friction, "affine", None) is None for c in system.contacts)
+    if smooth:
+        _constant_normal(system, "a law that is not affine in the slip speed")
+    return smooth
+
+
+def slowest_state_time(eq: "RateStateEquations") -> float:
+    """The slowest time scale ``D_c / V`` of the rate-and-state contacts' states (s; inf without one)."""
+    return max((float(law.dc_values.max()) / max(abs(V), law.v_ref) for law, V, r in zip(eq.laws, eq.V, eq.rsf)
+                if r), default=math.inf)
 
 
 def _laws(system) -> list:
@@ -397,8 +404,7 @@ def rate_state_simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *
     eq = RateStateEquations(system)
     n, k = eq.n, len(eq.laws)
     t_end, samples, rtol = Q.check("t_end", t_end), Q.check("samples", samples), Q.check("rtol", rtol)
-    scale = max((float(law.dc_values.max()) / max(abs(V), law.v_ref) for law, V, r in zip(eq.laws, eq.V, eq.rsf)
-                 if r), default=math.inf)  # (no rate-and-state contact: t_end's declared range bounds it)
+    scale = slowest_state_time(eq)  # (no rate-and-state contact: t_end's declared range bounds it)
     if t_end > LONGEST * scale:
         raise ParameterError("t_end", t_end, f"<= {LONGEST * scale:.6g} s ({LONGEST:.0e} times the slowest time "
                              f"D_c / V of the contacts' states, {scale:.3g} s; simulate in pieces from the last "

@@ -24,7 +24,8 @@ from ..quantities import COMMON, SYSTEM as Q
 from ..results import Result
 from .floquet import without_own
 from .model import System
-from .rate_state import LONGEST, RateStateEquations, RateStateRun, rate_state_simulate, rate_state_steady
+from .rate_state import (LONGEST, RateStateEquations, RateStateRun, rate_state_simulate, rate_state_steady,
+                         slowest_state_time)
 from .rate_state_modes import first_mode
 
 __all__ = ["RateStateCycle", "rate_state_cycle", "orbit_maps", "orbit_size", "psi_lists", "run_states"]
@@ -138,8 +139,7 @@ def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: 
     if abs(lead.imag) == 0.0:
         raise NoSolutionError("steady sliding's leading eigenvalue is real: no oscillation to follow to a cycle")
     linear = 2.0 * math.pi / abs(lead.imag)
-    scale = max((float(law.dc_values.max()) / max(abs(V), law.v_ref) for law, V, r in zip(eq.laws, eq.V, eq.rsf)
-                 if r), default=math.inf)
+    scale = slowest_state_time(eq)
     if transient is None:  # the perturbation's growth to the cycle's size, then 20 periods to settle
         transient = min(math.log(1e3) / max(lead.real, 1e-300) + 20.0 * linear, 0.9 * LONGEST * scale,
                         Q["transient"].range.hi)

@@ -124,7 +124,8 @@ def steady_sliding(system: System) -> SteadySliding:
         slope = float(c.friction.slope(speed))  # d mu / d v_r at v_r = |V|; mu is even in v_r
         c_eff += c.normal_force * slope * np.outer(c.direction, c.direction)
     rigid = [i for i, c in enumerate(system.contacts) if c.rigid]
-    x, reactions = _position(k_eff, load, system, rigid)
+    N, B = _directions(system, rigid)
+    x, reactions = _position(k_eff, load, N, B)
     for i, c in enumerate(system.contacts):
         if c.unilateral and not c.rigid:
             normal = float(c.normal_row(n)[:n] @ x + c.normal_force)
@@ -138,7 +139,7 @@ def steady_sliding(system: System) -> SteadySliding:
                                   f"reaction would be {p:.6g} N): it opens; no steady sliding with it closed")
         c = system.contacts[i]
         forces[i] = np.sign(c.surface_speed) * float(c.friction.kinetic(abs(c.surface_speed))) * p
-    flow = _constrained(system, rigid, k_eff, c_eff)
+    flow = _constrained(system, rigid, N, B, k_eff, c_eff)
     eig = np.linalg.eigvals(flow)
     eig = eig[np.lexsort((-eig.imag, -eig.real))]
     if not (np.all(np.isfinite(x)) and np.all(np.isfinite(eig))):
@@ -155,10 +156,9 @@ def _directions(system: System, rigid: list[int]) -> tuple[np.ndarray, np.ndarra
     return N, B
 
 
-def _position(k_eff: np.ndarray, load: np.ndarray, system: System, rigid: list[int]) -> tuple[np.ndarray, np.ndarray]:
+def _position(k_eff: np.ndarray, load: np.ndarray, N: np.ndarray, B: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The resting position and the rigid contacts' reactions: ``K x - B P = f``, ``N^T x = 0``."""
-    n, m = system.dofs, len(rigid)
-    N, B = _directions(system, rigid)
+    n, m = N.shape
     scale = float(np.abs(k_eff).max()) or 1.0  # the reactions' columns on the stiffness's scale
     A = np.block([[k_eff, -scale * B], [scale * N.T, np.zeros((m, m))]])
     sv = np.linalg.svd(A, compute_uv=False)
@@ -177,12 +177,13 @@ def _position(k_eff: np.ndarray, load: np.ndarray, system: System, rigid: list[i
 MINORS_UP_TO = 12
 
 
-def _constrained(system: System, rigid: list[int], k_eff: np.ndarray, c_eff: np.ndarray) -> np.ndarray:
-    """The linearised flow on the motions that keep the rigid contacts closed (the module)."""
+def _constrained(system: System, rigid: list[int], N: np.ndarray, B: np.ndarray, k_eff: np.ndarray,
+                 c_eff: np.ndarray) -> np.ndarray:
+    """The linearised flow on the motions that keep the rigid contacts closed (the module; ``N``, ``B``:
+    `_directions`)."""
     n, Minv = system.dofs, system.inverse_mass
     if not rigid:
         return np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ k_eff, -Minv @ c_eff]])
-    N, B = _directions(system, rigid)
     H = N.T @ Minv @ B
     m = len(rigid)
     if m <= MINORS_UP_TO:
