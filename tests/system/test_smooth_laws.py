@@ -1,10 +1,12 @@
 """Systems whose laws are not affine in the slip speed (Stribeck, a user's function), no rate-and-state
-contact: they move by `rate_state_simulate` (Radau between the switches, the switches as events).
-Checked against an integration written out here (the stuck block's coordinate eliminated, LSODA with
-its own event location, the laws' formulas written again), and the cycle against it too."""
+contact: they move by `rate_state_simulate` (between the switches compiled DOP853 where the laws
+compile, else Radau; the switches as events). Both paths checked against an integration written out
+here (the stuck block's coordinate eliminated, LSODA with its own event location, the laws' formulas
+written again), and the cycle against it too."""
 
 import json
 import math
+from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
@@ -13,9 +15,13 @@ from hypothesis import HealthCheck, given, settings, strategies as st
 
 from stickslip.cli import run as cli
 from stickslip.errors import NoSolutionError, ParameterError
-from stickslip.friction import Stribeck, UserLaw
-from stickslip.system import (Contact, System, continue_system, integrated, limit_cycle, rate_state_cycle,
+from stickslip.friction import LinearWeakening, Stribeck, UserLaw
+from stickslip.system import (Contact, Harmonic, System, continue_system, integrated, limit_cycle, rate_state_cycle,
                               rate_state_simulate, simulate, system_from_dict)
+
+from stickslip.system.rate_state import RateStateEquations
+from stickslip.system.rate_state_modes import mode_events
+from stickslip.system.smoothkernel import Compiled, Failed, compiled_laws
 
 from .pair_reference import stick_slip_pair
 
@@ -27,26 +33,37 @@ def _mu1(v):  # the user's law of block 1 (on a fast belt: it never sticks), wri
     return 0.3 + 0.2 / (1.0 + 4.0 * abs(v))
 
 
-def _pair(belt=V2):
+#: A harmonic force on block 1 (N, rad/s) for the forced runs, written again in the reference.
+F1, W1 = 3.0, 40.0
+
+
+def _pair(belt=V2, forced=False, linear=False):
     K = [[K1 + KC, -KC], [-KC, K2 + KC]]
-    return System(mass=np.diag([M1, M2]), stiffness=K, damping=np.diag([C1, 0.0]), contacts=[
-        Contact([1.0, 0.0], N, UserLaw(_mu1, fs=0.5), surface_speed=V1),
+    harmonics = [Harmonic(W1, cos=[F1, 0.0])] if forced else ()
+    law1 = LinearWeakening(0.5, 0.5, 0.2) if linear else UserLaw(_mu1, fs=0.5)  # (affine: 0.5 (1 - 0.2 |v|))
+    return System(mass=np.diag([M1, M2]), stiffness=K, damping=np.diag([C1, 0.0]), harmonics=harmonics, contacts=[
+        Contact([1.0, 0.0], N, law1, surface_speed=V1),
         Contact([0.0, 1.0], N, Stribeck(FS, FD, VS), surface_speed=belt)])
 
 
-def _reference(t_eval, x0, v0, belt=V2):
+def _law1(v, linear):  # block 1's law written again
+    return 0.5 * (1.0 - 0.2 * abs(v)) if linear else 0.3 + 0.2 / (1.0 + 4.0 * abs(v))
+
+
+def _reference(t_eval, x0, v0, belt=V2, forced=False, linear=False):
     """The pair written out apart: block 2 slipping (s = +-1) with s N (fd + (fs - fd) exp(-|v|/vs)), or
     stuck (x2 = x2s + belt (t - ts), eliminated) while its springs' force stays within fs N."""
     def slipping(t, y, s):
         x1, x2, u1, u2 = y
-        f1 = N * (0.3 + 0.2 / (1.0 + 4.0 * abs(V1 - u1)))
+        f1 = N * _law1(V1 - u1, linear) + forced * F1 * math.cos(W1 * t)
         f2 = s * N * (FD + (FS - FD) * math.exp(-abs(belt - u2) / VS))
         return [u1, u2, (-(K1 + KC) * x1 + KC * x2 - C1 * u1 + f1) / M1, (KC * x1 - (K2 + KC) * x2 + f2) / M2]
 
     def stuck(t, y, x2s, ts):
         x1, u1 = y
         x2 = x2s + belt * (t - ts)
-        return [u1, (-(K1 + KC) * x1 + KC * x2 - C1 * u1 + N * (0.3 + 0.2 / (1.0 + 4.0 * abs(V1 - u1)))) / M1]
+        f1 = N * _law1(V1 - u1, linear) + forced * F1 * math.cos(W1 * t)
+        return [u1, (-(K1 + KC) * x1 + KC * x2 - C1 * u1 + f1) / M1]
 
     def hold(t, y, x2s, ts):  # the friction force that keeps block 2 on its belt
         return -(KC * y[0] - (K2 + KC) * (x2s + belt * (t - ts)))
@@ -54,13 +71,17 @@ def _reference(t_eval, x0, v0, belt=V2):
     return stick_slip_pair(t_eval, [x0[0], x0[1], v0[0], v0[1]], slipping, stuck, hold, belt, FS * N)
 
 
-@pytest.mark.parametrize("x2, v2", [(0.0, 0.0), (0.004, 0.0), (0.0, 4.0 * V2), (-0.003, -0.2)])
-def test_the_pair_with_a_user_law_and_a_stribeck_law_follows_an_integration_written_apart(x2, v2):
-    system = _pair()
+@pytest.mark.parametrize("method", ["compiled", "radau"])
+@pytest.mark.parametrize("x2, v2, forced, linear", [(0.0, 0.0, False, False), (0.004, 0.0, False, False),
+                                                    (0.0, 4.0 * V2, False, False), (-0.003, -0.2, False, False),
+                                                    (0.004, 0.0, True, False), (0.004, 0.0, False, True)])
+def test_the_pair_with_a_user_law_and_a_stribeck_law_follows_an_integration_written_apart(x2, v2, forced, linear,
+                                                                                         method):
+    system = _pair(forced=forced, linear=linear)
     assert integrated(system)
     x0, v0 = [N * _mu1(V1) / (K1 + KC), x2], [0.0, v2]
-    run = rate_state_simulate(system, x0=x0, v0=v0, t_end=1.5, samples=1501)
-    ref, events = _reference(run.t, x0, v0)
+    run = rate_state_simulate(system, x0=x0, v0=v0, t_end=1.5, samples=1501, method=method)
+    ref, events = _reference(run.t, x0, v0, forced=forced, linear=linear)
     assert np.all(np.abs(run.x - ref).max(axis=0) < 1e-7 * np.ptp(ref, axis=0))
     assert len(events) >= 4 and [s for _, s in events] == list(run.event_state)
     assert run.event_time == pytest.approx([t for t, _ in events], abs=1e-9)
@@ -133,3 +154,55 @@ def test_a_stribeck_speed_from_its_range_its_edges_and_beyond_runs_or_is_named(v
         assert str(err)
         return
     assert np.all(np.isfinite(run.x)) and np.all(np.isfinite(run.friction_force))
+
+
+def _blocky(v):  # numba cannot compile it (a Fraction): its runs stay with Radau
+    return float(Fraction(3, 10)) + 0.2 / (1.0 + 4.0 * abs(v))
+
+
+def _runaway(v):  # no value beyond a slip speed of 1 m/s (a NaN): the compiled run stops, Radau says why
+    return 0.3 + 0.2 / (1.0 + 4.0 * abs(v)) + (math.nan if abs(v) > 1.0 else 0.0)
+
+
+def _sticky(v):  # beyond 1 m/s of slip rising steeply, out of the declared range [0, 10] from 1.19 m/s
+    return 0.3 + 0.2 / (1.0 + 4.0 * abs(v)) + 50.0 * max(abs(v) - 1.0, 0.0)
+
+
+def test_laws_the_compiled_flows_cannot_take_run_with_radau_and_a_method_out_of_its_list_is_named():
+    for method in ("fast", "", None, 1):
+        with pytest.raises(ParameterError) as err:
+            rate_state_simulate(_pair(), t_end=0.1, method=method)
+        assert err.value.name == "method" and "auto, compiled, radau" in str(err.value)
+    blocky = System(mass=np.diag([M1, M2]), stiffness=[[K1 + KC, -KC], [-KC, K2 + KC]], damping=np.diag([C1, 0.0]),
+                    contacts=[Contact([1.0, 0.0], N, UserLaw(_blocky, fs=0.5), surface_speed=V1),
+                              Contact([0.0, 1.0], N, Stribeck(FS, FD, VS), surface_speed=V2)])
+    with pytest.raises(ParameterError) as err:
+        rate_state_simulate(blocky, t_end=0.1, method="compiled")
+    assert err.value.name == "method" and "radau" in str(err.value)
+    x0 = [N * _mu1(V1) / (K1 + KC), 0.004]
+    auto = rate_state_simulate(blocky, x0=x0, t_end=0.3, samples=301)  # Radau, with the same law as _mu1
+    ref, _ = _reference(auto.t, x0, [0.0, 0.0])
+    assert np.all(np.abs(auto.x - ref).max(axis=0) < 1e-7 * np.ptp(ref, axis=0))
+    for law, value in ((_runaway, "= nan"), (_sticky, "[0, 10]")):
+        runaway = System(mass=np.diag([M1, M2]), stiffness=[[K1 + KC, -KC], [-KC, K2 + KC]],
+                         damping=np.diag([C1, 0.0]), contacts=[
+                             Contact([1.0, 0.0], N, UserLaw(law, fs=0.5), surface_speed=0.5),
+                             Contact([0.0, 1.0], N, Stribeck(FS, FD, VS), surface_speed=V2)])
+        with pytest.raises(ParameterError) as err:  # pushed beyond 1 m/s of slip: said by the Radau run
+            rate_state_simulate(runaway, x0=[0.0, 0.0], v0=[-2.0, 0.0], t_end=0.3, method="compiled")
+        assert err.value.name == "mu(v_r)" and value in str(err.value)
+
+
+def test_the_compiled_flow_stops_at_a_coefficient_out_of_range_between_the_samples():
+    """The compiled run samples the laws only where it is sampled (`sampled`, in Python): a coefficient out
+    of the declared range met between two samples has to stop the compiled flow itself."""
+    system = System(mass=np.diag([M1, M2]), stiffness=[[K1 + KC, -KC], [-KC, K2 + KC]], damping=np.diag([C1, 0.0]),
+                    contacts=[Contact([1.0, 0.0], N, UserLaw(_sticky, fs=0.5), surface_speed=0.5),
+                              Contact([0.0, 1.0], N, Stribeck(FS, FD, VS), surface_speed=V2)])
+    eq = RateStateEquations(system)
+    flows = Compiled(eq, compiled_laws(eq))
+    eq.set_mode((-1, 1))
+    y = np.array([0.0, 0.0, 0.9, 0.0])  # slipping backward at 0.4 m/s, pushed toward 1.0 m/s by its spring
+    assert flows.solve(0.0, 1e-4, y, np.array([0.0]), 1e-10, mode_events(eq)).status == 0  # below 1 m/s: runs
+    with pytest.raises(Failed):
+        flows.solve(0.0, 0.5, y + np.array([-0.2, 0.0, 0.0, 0.0]), np.array([0.0]), 1e-10, mode_events(eq))

@@ -1,9 +1,9 @@
 """The flow of a slip mode under a friction law that is not affine, compiled (numba).
 
-DOP853, the tableau of `scipy.integrate.DOP853` (order 8, its error estimated from the embedded
-orders 5 and 3) with scipy's step-size control, around a compiled law (`stickslip.lawkernel.compiled`:
-the callbacks ``mu`` and ``dmu`` of `stickslip.lawkernel` and their three numbers ``lp``).
-Events are located without dense output: the state at a time inside an accepted step is a step
+DOP853 (`stickslip.dop853`: the tableau of `scipy.integrate.DOP853`, order 8, its error estimated
+from the embedded orders 5 and 3, with scipy's step-size control), around a compiled law
+(`stickslip.lawkernel.compiled`: the callbacks ``mu`` and ``dmu`` of `stickslip.lawkernel` and
+their three numbers ``lp``). Events are located without dense output: the state at a time inside an accepted step is a step
 of that length from the step's start, of the same order. A crossing of a velocity level is found
 by Newton's method on that length (the derivative is the acceleration), kept in its bracket by
 bisection, on pieces where the velocity is monotone (split at a zero of the acceleration, found
@@ -20,20 +20,11 @@ import math
 
 import numpy as np
 from numba import njit
-from scipy.integrate import DOP853
+
+from ..dop853 import EPS, EXPONENT, MIN_FACTOR, SAFETY, STAGES, error_norm, next_factor, stage
 
 __all__ = ["segment", "evaluate", "run", "DONE", "CROSSED", "BAD_LAW", "STEP_TOO_SMALL"]
 
-_A = np.ascontiguousarray(DOP853.A, dtype=float)
-_B = np.ascontiguousarray(DOP853.B, dtype=float)
-_C = np.ascontiguousarray(DOP853.C, dtype=float)
-_E3 = np.ascontiguousarray(DOP853.E3, dtype=float)
-_E5 = np.ascontiguousarray(DOP853.E5, dtype=float)
-_STAGES = int(DOP853.n_stages)
-_WEIGHTS = np.vstack([_A, _B])  # row s < 12: stage s's; row 12: the solution's
-_EXPONENT = -1.0 / (DOP853.error_estimator_order + 1)
-_SAFETY, _MIN_FACTOR, _MAX_FACTOR = 0.9, 0.2, 10.0
-_EPS = 2.220446049250313e-16
 #: How a segment ended: at ``t_max``; at a level crossed; a friction coefficient out of its range
 #: (the value returned); a step below round-off of the time (the flow cannot be integrated).
 DONE, CROSSED, BAD_LAW, STEP_TOO_SMALL = 0, 1, 2, 3
@@ -59,39 +50,16 @@ def _rhs(mu, dmu, lp, p, y, out):
 def _step(mu, dmu, lp, p, y, f, h, K, tmp, y_new):
     """One DOP853 step of length ``h`` from ``(y, f = y')``: ``y_new``, its slope in ``K[-1]``;
     returns a friction coefficient out of range met on the way, or 0."""
-    n = y.size
     bad = 0.0
     K[0, :] = f
-    for s in range(1, _STAGES + 1):
-        for i in range(n):
-            acc = 0.0
-            for j in range(s):
-                acc += _WEIGHTS[s, j] * K[j, i]
-            tmp[i] = y[i] + h * acc
-        if s == _STAGES:
+    for s in range(1, STAGES + 1):
+        stage(K, s, y, h, tmp)
+        if s == STAGES:
             y_new[:] = tmp
         coefficient = _rhs(mu, dmu, lp, p, tmp, K[s])
         if not (p[6] <= coefficient <= p[7]):
             bad = coefficient  # (never 0: the range holds 0)
     return bad
-
-
-@njit(cache=True)
-def _error(K, h, y, y_new, rtol, atol):
-    """scipy's error norm of DOP853 (orders 5 and 3 combined) for the step just taken."""
-    n = y.size
-    e5, e3 = 0.0, 0.0
-    for i in range(n):
-        scale = atol + rtol * max(abs(y[i]), abs(y_new[i]))
-        a5, a3 = 0.0, 0.0
-        for j in range(_STAGES + 1):
-            a5 += K[j, i] * _E5[j]
-            a3 += K[j, i] * _E3[j]
-        e5 += (a5 / scale) ** 2
-        e3 += (a3 / scale) ** 2
-    if e5 == 0.0 and e3 == 0.0:
-        return 0.0
-    return abs(h) * e5 / math.sqrt((e5 + 0.01 * e3) * n)
 
 
 @njit(cache=True)
@@ -102,7 +70,7 @@ def _at(mu, dmu, lp, p, y, f, s, K, tmp, out, slope):
         slope[:] = f
         return
     _step(mu, dmu, lp, p, y, f, s, K, tmp, out)
-    slope[:] = K[_STAGES]
+    slope[:] = K[STAGES]
 
 
 @njit(cache=True)
@@ -131,7 +99,7 @@ def _root(mu, dmu, lp, p, y, f, a, b, level, which, t0, K, tmp, w, dw):
         new = s - g / d if d != 0.0 else 0.5 * (a + b)
         if not (a < new < b):
             new = 0.5 * (a + b)
-        if b - a <= 4 * _EPS * abs(t0 + new) + 1e-300 or abs(new - s) <= 2 * _EPS * abs(t0 + s):
+        if b - a <= 4 * EPS * abs(t0 + new) + 1e-300 or abs(new - s) <= 2 * EPS * abs(t0 + s):
             return new
         s = new
     return s
@@ -153,7 +121,7 @@ def segment(mu, dmu, lp, p, y0, t_max, levels, directions, rtol, atol, tol, h, c
     states and slopes (``steps`` of them: `evaluate`); the lowest and highest velocity on the way;
     with `BAD_LAW` the coefficient met; the step it would try next (a guess for the next segment)."""
     n = y0.size
-    K = np.empty((_STAGES + 1, n))
+    K = np.empty((STAGES + 1, n))
     tmp, y_new, w, dw = np.empty(n), np.empty(n), np.empty(n), np.empty(n)
     y, f = y0.copy(), np.empty(n)
     starts, states, slopes = np.empty(cap), np.empty((cap, n)), np.empty((cap, n))
@@ -163,17 +131,17 @@ def segment(mu, dmu, lp, p, y0, t_max, levels, directions, rtol, atol, tol, h, c
         return BAD_LAW, -1, 0.0, y, 0, starts, states, slopes, v_low, v_high, coefficient, h
     t, steps, rejected = 0.0, 0, False
     while t < t_max:
-        if t_max - t <= 10 * _EPS * abs(t):  # t_max within round-off of this step's start: reached
+        if t_max - t <= 10 * EPS * abs(t):  # t_max within round-off of this step's start: reached
             break
         h = min(h, t_max - t)
-        if h <= 10 * _EPS * max(abs(t), 1e-300):
+        if h <= 10 * EPS * max(abs(t), 1e-300):
             return STEP_TOO_SMALL, -1, t, y, steps, starts, states, slopes, v_low, v_high, 0.0, h
         bad = _step(mu, dmu, lp, p, y, f, h, K, tmp, y_new)
         if bad != 0.0:
             return BAD_LAW, -1, t, y, steps, starts, states, slopes, v_low, v_high, bad, h
-        err = _error(K, h, y, y_new, rtol, atol)
+        err = error_norm(K, h, y, y_new, rtol, atol)
         if err > 1.0:
-            h *= max(_MIN_FACTOR, _SAFETY * err ** _EXPONENT)
+            h *= max(MIN_FACTOR, SAFETY * err ** EXPONENT)
             rejected = True
             continue
         if steps == starts.size:  # room for more steps
@@ -182,7 +150,7 @@ def segment(mu, dmu, lp, p, y0, t_max, levels, directions, rtol, atol, tol, h, c
             slopes = np.concatenate((slopes, np.empty(slopes.shape)))
         starts[steps], states[steps], slopes[steps] = t, y, f
         steps += 1
-        f_new = K[_STAGES].copy()
+        f_new = K[STAGES].copy()
         # pieces of the step where v is monotone: [0, h], or split at a zero of the acceleration
         cut = -1.0
         if f[1] * f_new[1] < 0:
@@ -204,12 +172,12 @@ def segment(mu, dmu, lp, p, y0, t_max, levels, directions, rtol, atol, tol, h, c
                         best, index = s, i
             if index >= 0:
                 _at(mu, dmu, lp, p, y, f, best, K, tmp, w, dw)
-                short = _error(K, best, y, w, rtol, atol) if best > 0 else 0.0
-                if short > 1.0 and best > 10 * _EPS * abs(t):
+                short = error_norm(K, best, y, w, rtol, atol) if best > 0 else 0.0
+                if short > 1.0 and best > 10 * EPS * abs(t):
                     # the step to the crossing is not resolved (a law that changes within the step: its
                     # error was judged on the whole step): steps up to it, shorter, under the error control
                     steps -= 1
-                    h = best * max(_MIN_FACTOR, _SAFETY * short ** _EXPONENT)
+                    h = best * max(MIN_FACTOR, SAFETY * short ** EXPONENT)
                     rejected, again = True, True
                     break
                 v_low, v_high = min(v_low, w[1]), max(v_high, w[1])
@@ -223,8 +191,7 @@ def segment(mu, dmu, lp, p, y0, t_max, levels, directions, rtol, atol, tol, h, c
         y[:] = y_new
         f[:] = f_new
         t += h
-        factor = _MAX_FACTOR if err == 0.0 else min(_MAX_FACTOR, max(_MIN_FACTOR, _SAFETY * err ** _EXPONENT))
-        h *= min(1.0, factor) if rejected else factor
+        h *= next_factor(err, rejected)
         rejected = False
     return DONE, -1, t_max, y, steps, starts, states, slopes, v_low, v_high, 0.0, h
 
@@ -233,7 +200,7 @@ def segment(mu, dmu, lp, p, y0, t_max, levels, directions, rtol, atol, tol, h, c
 def evaluate(mu, dmu, lp, p, starts, states, slopes, steps, times):
     """``(x, v)`` at the local ``times`` of a segment from its accepted steps (`segment`)."""
     n = states.shape[1]
-    K = np.empty((_STAGES + 1, n))
+    K = np.empty((STAGES + 1, n))
     tmp, w, dw = np.empty(n), np.empty(n), np.empty(n)
     x, v = np.empty(times.size), np.empty(times.size)
     for q in range(times.size):
@@ -330,7 +297,7 @@ def run(mu, dmu, lp, osc, x0, v0, mode, t_end, section, use_section, variational
         scale = max(abs(v[count]), omega * abs(x[count]), abs(levels[0]), abs(levels[nl - 1]), 1e-300)
         side = 0 if mode == 1 else 1
         out = segment(mu, dmu, lp, p, y0, t_end - now, levels[:nl], sides[:nl], rtol, atol * max(scale, V),
-                      16 * _EPS * scale, min(t_end - now, h[side]), 64)
+                      16 * EPS * scale, min(t_end - now, h[side]), 64)
         seg_status, index, dt, y, steps = out[0], out[1], out[2], out[3], out[4]
         h[side] = out[11]
         if seg_status == BAD_LAW or seg_status == STEP_TOO_SMALL:

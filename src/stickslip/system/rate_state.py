@@ -39,6 +39,7 @@ from .model import System
 from .rate_state_modes import first_mode, mode_events, switch
 from .flow import STATE_FLAGS
 from .simulate import MAX_INSTANT_EVENTS, MAX_NUMBERS
+from .smoothkernel import Compiled, Failed, compiled_laws
 from .steady import SteadySliding
 
 __all__ = ["RateStateRun", "RateStateSteady", "rate_state_simulate", "rate_state_steady", "is_rate_state", "integrated",
@@ -49,6 +50,8 @@ _TINY = 1e-300
 #: The longest run, in the slowest time scale ``D_c / V`` of the contacts' states (refused up front,
 #: not left to use up the evaluations: a cycle of stick-slip takes a few of them and hundreds of steps).
 LONGEST = 1e4
+#: How `rate_state_simulate` integrates between switches.
+METHODS = ("auto", "compiled", "radau")
 
 
 def _constant_normal(system: System, which: str) -> None:
@@ -116,13 +119,15 @@ class RateStateEquations:
         self.set_mode(tuple(1 if r or V >= 0 else -1 for r, V in zip(self.rsf, self.V)))
 
     def set_mode(self, mode) -> None:
-        """The contacts' states: 1 or -1 slipping, 0 stuck (only a contact whose law is not rate-and-state)."""
+        """The contacts' states: 1 or -1 slipping, 0 stuck (only a contact whose law is not rate-and-state).
+        With stuck contacts (columns ``E`` of the directions) ``MiE = M^-1 E`` and ``gram_inv`` the
+        pseudo-inverse of ``E^T M^-1 E``."""
         self.mode = tuple(int(m) for m in mode)
         self.stuck = [i for i, m in enumerate(self.mode) if m == 0 and not self.rsf[i]]
         if self.stuck:  # (a pseudo-inverse: stuck contacts along the same direction share its force, least norm)
             E = self.system.directions[:, self.stuck]
-            self._MiE = self.system.inverse_mass @ E
-            self._gram_inv = np.linalg.pinv(E.T @ self._MiE)
+            self.MiE = self.system.inverse_mass @ E
+            self.gram_inv = np.linalg.pinv(E.T @ self.MiE)
 
     def _rest(self, t, y, forces):
         sysm, n = self.system, self.n
@@ -133,7 +138,7 @@ class RateStateEquations:
         if not self.stuck:
             return np.zeros(0)
         rest = self.system.inverse_mass @ self._rest(t, y, self.forces(y)[1])
-        return -self._gram_inv @ (self.system.directions[:, self.stuck].T @ rest)
+        return -self.gram_inv @ (self.system.directions[:, self.stuck].T @ rest)
 
     def psi(self, y, i):
         return y[2 * self.n + self.offsets[i]:2 * self.n + self.offsets[i + 1]]
@@ -187,7 +192,7 @@ class RateStateEquations:
             sysm = self.system
             F = np.array([sysm.external_force(float(ti)) for ti in t])
             rest = (F - Y[:, :n] @ sysm.stiffness.T - Y[:, n:2 * n] @ sysm.damping.T + forces @ sysm.directions.T)
-            lam = -self._gram_inv @ (sysm.directions[:, self.stuck].T @ sysm.inverse_mass @ rest.T)
+            lam = -self.gram_inv @ (sysm.directions[:, self.stuck].T @ sysm.inverse_mass @ rest.T)
             forces[:, self.stuck] = lam.T
         return vr, forces
 
@@ -215,7 +220,7 @@ class RateStateEquations:
         _, forces, rates = self.forces(y)
         a = sysm.inverse_mass @ self._rest(t, y, forces)
         if self.stuck:  # M a = rest + E lambda with E^T a = 0
-            a = a - self._MiE @ (self._gram_inv @ (sysm.directions[:, self.stuck].T @ a))
+            a = a - self.MiE @ (self.gram_inv @ (sysm.directions[:, self.stuck].T @ a))
         return np.concatenate([y[n:2 * n], a, rates])
 
 
@@ -394,14 +399,28 @@ def start_state(eq: RateStateEquations, x0=None, v0=None, psi0=None) -> np.ndarr
 
 
 def rate_state_simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *, psi0=None, samples: int = 1001,
-                        rtol: float = 1e-10) -> RateStateRun:
+                        rtol: float = 1e-10, method: str = "auto") -> RateStateRun:
     """The motion of ``system`` (its rate-and-state contacts slipping; any other contact slipping or
     sticking, `stickslip.system.rate_state_modes`) from ``(x0, v0)`` (default: steady sliding's
     position, at rest) with the rate-and-state contacts' state variables ``psi0`` (one list per
     such contact; default: steady at the slip rate of the start), over ``t_end`` with ``samples``
     samples; Radau IIA at relative tolerance ``rtol`` between the switches, which are located to
-    round-off of the dense output."""
+    round-off of the dense output.
+
+    ``method``: ``"radau"`` as above; ``"compiled"`` DOP853 compiled with the laws
+    (`stickslip.system.smoothkernel`: a system without a rate-and-state contact or a force history,
+    whose laws are affine, Stribeck's or a user's function numba compiles, at most two such
+    functions); ``"auto"`` (the default) the compiled one where it applies, else Radau. A compiled run
+    that stops (a law without a value, a step below round-off) is made again with Radau, which says why."""
+    if method not in METHODS:
+        raise ParameterError("method", method, "one of " + ", ".join(METHODS))
     eq = RateStateEquations(system)
+    laws = None if method == "radau" else compiled_laws(eq)
+    if method == "compiled" and laws is None:
+        raise ParameterError("method", method, "'auto' or 'radau' for this system (the compiled flows take no "
+                             "rate-and-state contact, no force history, laws affine, Stribeck's or a user's function "
+                             "numba compiles, at most two such functions)")
+    flows = None if laws is None else Compiled(eq, laws)
     n, k = eq.n, len(eq.laws)
     t_end, samples, rtol = Q.check("t_end", t_end), Q.check("samples", samples), Q.check("rtol", rtol)
     scale = slowest_state_time(eq)  # (no rate-and-state contact: t_end's declared range bounds it)
@@ -435,8 +454,14 @@ def rate_state_simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *
     while True:
         switches = mode_events(eq)
         try:
-            sol = solve_ivp(rhs, (t, t_end), y, method="Radau", t_eval=times[j:], rtol=rtol, jac=eq.guarded_jacobian,
-                            atol=rtol * np.maximum(1.0, np.abs(y)) * 1e-3, events=switches or None)
+            if flows is not None:
+                sol = flows.solve(t, t_end, y, times[j:], rtol, switches)
+            else:
+                sol = solve_ivp(rhs, (t, t_end), y, method="Radau", t_eval=times[j:], rtol=rtol,
+                                jac=eq.guarded_jacobian, atol=rtol * np.maximum(1.0, np.abs(y)) * 1e-3,
+                                events=switches or None)
+        except Failed:  # Radau says why
+            return rate_state_simulate(system, x0, v0, t_end, psi0=psi0, samples=samples, rtol=rtol, method="radau")
         except _Budget:
             raise NoSolutionError(f"more than {MAX_CALLS:.0e} evaluations of the equations by t = {last[0]:.6g} s "
                                   f"of t_end = {t_end:g} s: a shorter t_end, or a looser rtol") from None

@@ -24,7 +24,7 @@ from ..quantities import COMMON, SYSTEM as Q
 from ..results import Result
 from .floquet import without_own
 from .model import System
-from .rate_state import (LONGEST, RateStateEquations, RateStateRun, rate_state_simulate, rate_state_steady,
+from .rate_state import (LONGEST, METHODS, RateStateEquations, RateStateRun, rate_state_simulate, rate_state_steady,
                          slowest_state_time)
 from .rate_state_modes import first_mode
 
@@ -107,7 +107,7 @@ def psi_lists(eq: RateStateEquations, y: np.ndarray) -> list:
     return [eq.psi(y, i).copy() for i in range(len(eq.laws)) if eq.rsf[i]]
 
 
-def orbit_maps(system: System, eq: RateStateEquations, rtol: float):
+def orbit_maps(system: System, eq: RateStateEquations, rtol: float, method: str = "auto"):
     """``(field, flow)`` for `stickslip.orbits.periodic_orbit`: the smooth equations (flow None: Radau on
     them) or, with contacts that stick, runs with their switches and the field in the state's mode."""
     if all(eq.rsf):
@@ -115,7 +115,8 @@ def orbit_maps(system: System, eq: RateStateEquations, rtol: float):
     n = eq.n
 
     def flow(y, T):
-        run = rate_state_simulate(system, y[:n], y[n:2 * n], T, psi0=psi_lists(eq, y), samples=2, rtol=rtol)
+        run = rate_state_simulate(system, y[:n], y[n:2 * n], T, psi0=psi_lists(eq, y), samples=2, rtol=rtol,
+                                  method=method)
         return run_states(eq, run)[-1]
 
     def field(t, y):
@@ -125,12 +126,16 @@ def orbit_maps(system: System, eq: RateStateEquations, rtol: float):
 
 
 def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: float | None = None,
-                     rtol: float = 1e-9, tol: float = 1e-7, max_iter: int = 30) -> RateStateCycle:
+                     rtol: float = 1e-9, tol: float = 1e-7, max_iter: int = 30,
+                     method: str = "auto") -> RateStateCycle:
     """The limit cycle the motion from ``(x0, v0, psi0)`` (default: steady sliding with contact 0's
     first state variable raised by 0.01) settles on after ``transient`` seconds (default: the time
     for steady sliding's leading growth rate to multiply it by 1000, and 20 periods), solved by
-    Newton's method to ``tol`` (of each variable's range over the cycle; the runs by Radau IIA at
-    ``rtol``, the monodromy by central differences: multipliers to about ``1e4 rtol``)."""
+    Newton's method to ``tol`` (of each variable's range over the cycle; the runs by
+    `rate_state_simulate` at ``rtol`` with its ``method``, the monodromy by central differences:
+    multipliers to about ``1e4 rtol``)."""
+    if method not in METHODS:
+        raise ParameterError("method", method, "one of " + ", ".join(METHODS))
     eq = RateStateEquations(system)
     system.unforced("a limit cycle")
     rtol, tol, max_iter = Q.check("rtol", rtol), COMMON["tol"].check(tol, "tol"), Q.check("max_iter", max_iter)
@@ -153,7 +158,7 @@ def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: 
             x0, v0 = steady.x, -0.01 * float(eq.V[0]) * w / float(w @ w)
     samples = int(min(2e5, max(2001, SAMPLES_PER_PERIOD * transient / linear)))
     try:
-        run = rate_state_simulate(system, x0, v0, transient, psi0=psi0, samples=samples, rtol=rtol)
+        run = rate_state_simulate(system, x0, v0, transient, psi0=psi0, samples=samples, rtol=rtol, method=method)
     except ParameterError as err:
         if err.name != "t_end":
             raise
@@ -178,12 +183,13 @@ def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: 
     if np.all(np.ptp(span[:, :eq.n], axis=0) <= 1e-9 * np.maximum(np.abs(span[:, :eq.n]).max(axis=0), 1e-300)):
         raise NoSolutionError("the motion settled to steady sliding in the transient: no cycle to follow")
     n = eq.n
-    field, flow = orbit_maps(system, eq, rtol)
+    field, flow = orbit_maps(system, eq, rtol, method)
     y0, period, mult = periodic_orbit(field, eq.guarded_jacobian, last, period, size, rtol=rtol, tol=tol,
                                       max_iter=max_iter, flow=flow)
     if np.all(np.abs(mult - 1.0) > 1e-3) or np.max(np.abs((y0 - last) / size)) > 1e3:
         raise NoSolutionError("Newton's method left the cycle for steady sliding (no multiplier is the flow's own 1): "
                               "no cycle near the motion after the transient")
-    one = rate_state_simulate(system, y0[:n], y0[n:2 * n], period, psi0=psi_lists(eq, y0), samples=2001, rtol=rtol)
+    one = rate_state_simulate(system, y0[:n], y0[n:2 * n], period, psi0=psi_lists(eq, y0), samples=2001, rtol=rtol,
+                              method=method)
     return RateStateCycle(period, y0[:n].copy(), y0[n:2 * n].copy(), tuple(psi_lists(eq, y0)), mult,
                           one.slip_rate.min(axis=0), one.slip_rate.max(axis=0), 0.5 * np.ptp(one.x, axis=0))
