@@ -39,8 +39,9 @@ DECAY = 1e-2
 
 @dataclass(frozen=True, eq=False, repr=False)
 class RateStateCycle(Result):
-    """A limit cycle of a system with rate-and-state contacts: its ``period``, the state ``x0``,
-    ``v0``, ``psi0`` (one array per contact) where contact 0's slip rate crosses its surface speed
+    """A limit cycle of a system integrated between its switches (rate-and-state contacts, or laws not
+    affine in the slip speed): its ``period``, the state ``x0``, ``v0``, ``psi0`` (one array per
+    rate-and-state contact; empty without one) where contact 0's slip rate crosses its surface speed
     upward, the ``multipliers`` (by decreasing modulus; one is the flow's own 1), each contact's
     smallest and largest slip rate over the cycle (``slip_rate_min``, ``slip_rate_max``) and the
     half peak-to-peak ``amplitude`` of each degree of freedom."""
