@@ -206,3 +206,31 @@ def test_the_compiled_flow_stops_at_a_coefficient_out_of_range_between_the_sampl
     assert flows.solve(0.0, 1e-4, y, np.array([0.0]), 1e-10, mode_events(eq)).status == 0  # below 1 m/s: runs
     with pytest.raises(Failed):
         flows.solve(0.0, 0.5, y + np.array([-0.2, 0.0, 0.0, 0.0]), np.array([0.0]), 1e-10, mode_events(eq))
+
+
+def _law_a(v):
+    return 0.35 + 0.1 * math.exp(-abs(v) / 0.02)
+
+
+def _law_b(v):
+    return 0.3 + 0.15 / (1.0 + 10.0 * abs(v))
+
+
+def _law_c(v):
+    return 0.32 + 0.1 / (1.0 + abs(v) / 0.05) ** 2
+
+
+def test_four_contacts_under_four_laws_compiled_agree_with_radau_consistency():
+    """A consistency check of the compiled path's law slots (each contact's law its own function; the
+    Radau path calls the laws themselves): four blocks in a chain, three users' laws and Stribeck's."""
+    K = 2e3 * np.eye(4) + 1e3 * (np.eye(4, k=1) + np.eye(4, k=-1) - np.diag([0.0, 1.0, 1.0, 0.0]))
+    laws = [UserLaw(_law_a, fs=0.5), UserLaw(_law_b, fs=0.5), UserLaw(_law_c, fs=0.5), Stribeck(0.5, 0.35, 0.03)]
+    system = System(mass=0.4 * np.eye(4), stiffness=K, damping=0.5 * np.eye(4),
+                    harmonics=[Harmonic(30.0, sin=[0, 0, 0, 2.0])],
+                    contacts=[Contact(np.eye(4)[i], 20.0, laws[i], surface_speed=0.1) for i in range(4)])
+    x0 = [0.002, 0.0, -0.002, 0.001]
+    fast = rate_state_simulate(system, x0, t_end=1.0, samples=101, method="compiled")
+    slow = rate_state_simulate(system, x0, t_end=1.0, samples=101, method="radau")
+    assert fast.event_time.size == slow.event_time.size >= 8 and set(fast.event_contact) == {0, 1, 2, 3}
+    assert np.abs(fast.x - slow.x).max() < 1e-7 * np.ptp(slow.x)
+    assert fast.event_time == pytest.approx(slow.event_time, abs=1e-8)

@@ -409,7 +409,7 @@ def rate_state_simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *
 
     ``method``: ``"radau"`` as above; ``"compiled"`` DOP853 compiled with the laws
     (`stickslip.system.smoothkernel`: a system without a rate-and-state contact or a force history,
-    whose laws are affine, Stribeck's or a user's function numba compiles, at most two such
+    whose laws are affine, Stribeck's or a user's function numba compiles, at most four such
     functions); ``"auto"`` (the default) the compiled one where it applies, else Radau. A compiled run
     that stops (a law without a value, a step below round-off) is made again with Radau, which says why."""
     if method not in METHODS:
@@ -419,7 +419,7 @@ def rate_state_simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *
     if method == "compiled" and laws is None:
         raise ParameterError("method", method, "'auto' or 'radau' for this system (the compiled flows take no "
                              "rate-and-state contact, no force history, laws affine, Stribeck's or a user's function "
-                             "numba compiles, at most two such functions)")
+                             "numba compiles, at most four such functions)")
     flows = None if laws is None else Compiled(eq, laws)
     n, k = eq.n, len(eq.laws)
     t_end, samples, rtol = Q.check("t_end", t_end), Q.check("samples", samples), Q.check("rtol", rtol)

@@ -2,7 +2,7 @@
 
 For a system whose contacts stick or slip with constant normal forces under laws that are affine in
 the slip speed, Stribeck's law or a user's function numba compiles (`stickslip.lawkernel.compiled`;
-at most two such functions in one system), and no rate-and-state contact: the equations of
+at most `SLOTS` = 4 such functions in one system), and no rate-and-state contact: the equations of
 `stickslip.system.RateStateEquations` in a mode (slipping contacts' forces ``s N mu(v_r)``, the
 stuck ones' the forces that hold them) integrated by DOP853 (`stickslip.dop853`, scipy's tableau and
 step control) with the mode's switching functions (`stickslip.system.rate_state_modes.mode_events`)
@@ -24,7 +24,8 @@ from ..dop853 import EPS, EXPONENT, MIN_FACTOR, NODES, SAFETY, STAGES, error_nor
 from ..quantities import OSCILLATOR
 from ..rsf import RateState
 
-__all__ = ["Compiled", "compiled_laws", "DONE", "CROSSED", "BAD_LAW", "STEP_TOO_SMALL", "BUDGET"]
+__all__ = ["Compiled", "Solution", "Failed", "compiled_laws", "SLOTS", "DONE", "CROSSED", "BAD_LAW", "STEP_TOO_SMALL",
+           "BUDGET"]
 
 #: How a segment ended: at its end time; at an event; a law's value not finite; a step below the
 #: round-off of the time; more steps than allowed.
@@ -32,10 +33,12 @@ DONE, CROSSED, BAD_LAW, STEP_TOO_SMALL, BUDGET = 0, 1, 2, 3, 4
 #: Event kinds: a slipping contact's slip rate (toward zero), its slip speed against its law's
 #: largest, a stuck contact's force against ``+f_s N`` and against ``-f_s N``.
 ZERO, LIMIT, RELEASE_UP, RELEASE_DOWN = 0, 1, 2, 3
+#: The most compiled law functions in one system (each its own argument of the compiled functions).
+SLOTS = 4
 
 
 @njit(cache=True)
-def _rhs(mu1, dmu1, mu2, dmu2, P, t, y, out, vr, force, lam):
+def _rhs(mu1, mu2, mu3, mu4, P, t, y, out, vr, force, lam):
     """``y'`` into ``out``, the slip rates ``vr``, the slipping contacts' forces ``force`` and the stuck
     ones' ``lam``; False where a law's value is not a friction coefficient (outside ``bounds``, the
     declared range of ``fd``, or not a number)."""
@@ -56,8 +59,12 @@ def _rhs(mu1, dmu1, mu2, dmu2, P, t, y, out, vr, force, lam):
             mu = num[i, 0] - num[i, 1] * abs(v)
         elif kind[i] == 1:
             mu = mu1(v, num[i, 0], num[i, 1], num[i, 2])
-        else:
+        elif kind[i] == 2:
             mu = mu2(v, num[i, 0], num[i, 1], num[i, 2])
+        elif kind[i] == 3:
+            mu = mu3(v, num[i, 0], num[i, 1], num[i, 2])
+        else:
+            mu = mu4(v, num[i, 0], num[i, 1], num[i, 2])
         if not bounds[0] <= mu <= bounds[1]:  # (NaN too) a coefficient out of the declared range
             ok = False
         force[i] = s * N[i] * mu
@@ -101,10 +108,10 @@ def _rhs(mu1, dmu1, mu2, dmu2, P, t, y, out, vr, force, lam):
 
 
 @njit(cache=True)
-def _events(mu1, dmu1, mu2, dmu2, P, ev, t, y, slope, vr, force, lam, g):
+def _events(mu1, mu2, mu3, mu4, P, ev, t, y, slope, vr, force, lam, g):
     """The switching functions ``g`` at ``(t, y)`` (and the slope there); False where a law has no value."""
     index, kind, level = ev
-    ok = _rhs(mu1, dmu1, mu2, dmu2, P, t, y, slope, vr, force, lam)
+    ok = _rhs(mu1, mu2, mu3, mu4, P, t, y, slope, vr, force, lam)
     for e in range(index.size):
         i = index[e]
         if kind[e] == ZERO:
@@ -119,7 +126,7 @@ def _events(mu1, dmu1, mu2, dmu2, P, ev, t, y, slope, vr, force, lam, g):
 
 
 @njit(cache=True)
-def _step(mu1, dmu1, mu2, dmu2, P, t, y, f, h, K, tmp, y_new, vr, force, lam):
+def _step(mu1, mu2, mu3, mu4, P, t, y, f, h, K, tmp, y_new, vr, force, lam):
     """One DOP853 step of length ``h`` from ``(t, y, f = y')``: ``y_new``, its slope in ``K[-1]``;
     False where a law had no value on the way."""
     ok = True
@@ -129,12 +136,12 @@ def _step(mu1, dmu1, mu2, dmu2, P, t, y, f, h, K, tmp, y_new, vr, force, lam):
         if s == STAGES:
             y_new[:] = tmp
         ts = t + h if s == STAGES else t + NODES[s] * h
-        ok = _rhs(mu1, dmu1, mu2, dmu2, P, ts, tmp, K[s], vr, force, lam) and ok
+        ok = _rhs(mu1, mu2, mu3, mu4, P, ts, tmp, K[s], vr, force, lam) and ok
     return ok
 
 
 @njit(cache=True)
-def _root(mu1, dmu1, mu2, dmu2, P, ev, e, t, y, f, h, ga, gb, K, tmp, w, slope, vr, force, lam, g):
+def _root(mu1, mu2, mu3, mu4, P, ev, e, t, y, f, h, ga, gb, K, tmp, w, slope, vr, force, lam, g):
     """The step length in ``[0, h]`` at which event ``e`` changes sign (``ga``, ``gb`` at the ends):
     regula falsi (Illinois), kept in its bracket by bisection, to round-off of the time."""
     if ga == 0.0:
@@ -146,8 +153,8 @@ def _root(mu1, dmu1, mu2, dmu2, P, ev, e, t, y, f, h, ga, gb, K, tmp, w, slope, 
         s = (a * gb - b * ga) / (gb - ga)
         if not (a < s < b):
             s = 0.5 * (a + b)
-        _step(mu1, dmu1, mu2, dmu2, P, t, y, f, s, K, tmp, w, vr, force, lam)
-        _events(mu1, dmu1, mu2, dmu2, P, ev, t + s, w, slope, vr, force, lam, g)
+        _step(mu1, mu2, mu3, mu4, P, t, y, f, s, K, tmp, w, vr, force, lam)
+        _events(mu1, mu2, mu3, mu4, P, ev, t + s, w, slope, vr, force, lam, g)
         gs = g[e]
         if gs == 0.0:
             return s
@@ -167,21 +174,21 @@ def _root(mu1, dmu1, mu2, dmu2, P, ev, e, t, y, f, h, ga, gb, K, tmp, w, slope, 
 
 
 @njit(cache=True)
-def _fill(mu1, dmu1, mu2, dmu2, P, t, y, f, upto, t_eval, q, Y, K, tmp, w, vr, force, lam):
+def _fill(mu1, mu2, mu3, mu4, P, t, y, f, upto, t_eval, q, Y, K, tmp, w, vr, force, lam):
     """The samples at ``t_eval[q:]`` up to ``upto`` from the step that starts at ``(t, y, f)``; the next ``q``."""
     while q < t_eval.size and t_eval[q] <= upto:
         s = t_eval[q] - t
         if s <= 0.0:
             Y[q] = y
         else:
-            _step(mu1, dmu1, mu2, dmu2, P, t, y, f, s, K, tmp, w, vr, force, lam)
+            _step(mu1, mu2, mu3, mu4, P, t, y, f, s, K, tmp, w, vr, force, lam)
             Y[q] = w
         q += 1
     return q
 
 
 @njit(cache=True)
-def segment(mu1, dmu1, mu2, dmu2, P, ev, directions, t0, y0, t_end, t_eval, rtol, atol, h, max_steps):
+def segment(mu1, mu2, mu3, mu4, P, ev, directions, t0, y0, t_end, t_eval, rtol, atol, h, max_steps):
     """From ``(t0, y0)`` to ``t_end`` or the first event (``ev`` = (index, kind, level) and their
     ``directions``, as scipy's events have them), with the samples at ``t_eval`` (increasing, from
     ``t0``) on the way, up to the event's time. Returns ``(status, event, t, y, Y, samples, h)``:
@@ -195,9 +202,9 @@ def segment(mu1, dmu1, mu2, dmu2, P, ev, directions, t0, y0, t_end, t_eval, rtol
     g_old, g_new, g = np.empty(ne), np.empty(ne), np.empty(ne)
     Y = np.empty((t_eval.size, n))
     t, y = t0, y0.copy()
-    if not _events(mu1, dmu1, mu2, dmu2, P, ev, t, y, f, vr, force, lam, g_old):
+    if not _events(mu1, mu2, mu3, mu4, P, ev, t, y, f, vr, force, lam, g_old):
         return BAD_LAW, -1, t, y, Y, 0, h
-    q = _fill(mu1, dmu1, mu2, dmu2, P, t, y, f, t, t_eval, 0, Y, K, tmp, w, vr, force, lam)
+    q = _fill(mu1, mu2, mu3, mu4, P, t, y, f, t, t_eval, 0, Y, K, tmp, w, vr, force, lam)
     rejected, steps = False, 0
     while t_end - t > 10 * EPS * abs(t):
         steps += 1
@@ -206,50 +213,50 @@ def segment(mu1, dmu1, mu2, dmu2, P, ev, directions, t0, y0, t_end, t_eval, rtol
         h = min(h, t_end - t)
         if h <= 10 * EPS * max(abs(t), 1e-300):
             return STEP_TOO_SMALL, -1, t, y, Y, q, h
-        if not _step(mu1, dmu1, mu2, dmu2, P, t, y, f, h, K, tmp, y_new, vr, force, lam):
+        if not _step(mu1, mu2, mu3, mu4, P, t, y, f, h, K, tmp, y_new, vr, force, lam):
             return BAD_LAW, -1, t, y, Y, q, h
         err = error_norm(K, h, y, y_new, rtol, atol)
         if err > 1.0:
             h *= max(MIN_FACTOR, SAFETY * err ** EXPONENT)
             rejected = True
             continue
-        _events(mu1, dmu1, mu2, dmu2, P, ev, t + h, y_new, slope, vr, force, lam, g_new)
+        _events(mu1, mu2, mu3, mu4, P, ev, t + h, y_new, slope, vr, force, lam, g_new)
         best, hit = math.inf, -1
         for e in range(ne):
             ga, gb = g_old[e], g_new[e]
             up, down = ga <= 0.0 <= gb, gb <= 0.0 <= ga
             if (up and directions[e] > 0) or (down and directions[e] < 0) or ((up or down) and directions[e] == 0):
-                s = _root(mu1, dmu1, mu2, dmu2, P, ev, e, t, y, f, h, ga, gb, K, tmp, w, slope, vr, force, lam, g)
+                s = _root(mu1, mu2, mu3, mu4, P, ev, e, t, y, f, h, ga, gb, K, tmp, w, slope, vr, force, lam, g)
                 if s < best:
                     best, hit = s, e
         if hit >= 0:
-            _step(mu1, dmu1, mu2, dmu2, P, t, y, f, best, K, tmp, w, vr, force, lam)
+            _step(mu1, mu2, mu3, mu4, P, t, y, f, best, K, tmp, w, vr, force, lam)
             short = error_norm(K, best, y, w, rtol, atol) if best > 0 else 0.0
             if short > 1.0 and best > 10 * EPS * abs(t):  # the step to the event not resolved: shorter steps
                 h = best * max(MIN_FACTOR, SAFETY * short ** EXPONENT)
                 rejected = True
                 continue
             end = w.copy()
-            q = _fill(mu1, dmu1, mu2, dmu2, P, t, y, f, t + best, t_eval, q, Y, K, tmp, w, vr, force, lam)
+            q = _fill(mu1, mu2, mu3, mu4, P, t, y, f, t + best, t_eval, q, Y, K, tmp, w, vr, force, lam)
             return CROSSED, hit, t + best, end, Y, q, h
-        q = _fill(mu1, dmu1, mu2, dmu2, P, t, y, f, min(t + h, t_end), t_eval, q, Y, K, tmp, w, vr, force, lam)
+        q = _fill(mu1, mu2, mu3, mu4, P, t, y, f, min(t + h, t_end), t_eval, q, Y, K, tmp, w, vr, force, lam)
         y[:] = y_new
         f[:] = slope
         g_old[:] = g_new
         t += h
         h *= next_factor(err, rejected)
         rejected = False
-    q = _fill(mu1, dmu1, mu2, dmu2, P, t, y, f, t_end, t_eval, q, Y, K, tmp, w, vr, force, lam)
+    q = _fill(mu1, mu2, mu3, mu4, P, t, y, f, t_end, t_eval, q, Y, K, tmp, w, vr, force, lam)
     return DONE, -1, t_end, y, Y, q, h
 
 
 def compiled_laws(eq) -> tuple | None:
     """``(callbacks, kind, numbers)`` for `Compiled` of ``eq`` (`stickslip.system.RateStateEquations`):
     None where its system has a rate-and-state contact, a force history, a law numba cannot compile,
-    or more than two compiled law functions (its runs then stay with Radau in Python)."""
+    or more than `SLOTS` compiled law functions (its runs then stay with Radau in Python)."""
     if any(isinstance(law, RateState) for law in eq.laws) or eq.system.history is not None:
         return None
-    pairs, kind, numbers = [], [], []
+    functions, kind, numbers = [], [], []
     for law in eq.laws:
         if law.affine is not None:
             kind.append(0)
@@ -258,17 +265,14 @@ def compiled_laws(eq) -> tuple | None:
         made = lawkernel.compiled(law)
         if made is None:
             return None
-        pair = made[:2]
-        if pair not in pairs:
-            pairs.append(pair)
-        kind.append(1 + pairs.index(pair))
+        if made[0] not in functions:
+            functions.append(made[0])
+        kind.append(1 + functions.index(made[0]))
         numbers.append(tuple(float(a) for a in made[2]))
-    if len(pairs) > 2:
+    if len(functions) > SLOTS:
         return None
-    while len(pairs) < 2:
-        pairs.append(pairs[0] if pairs else (lawkernel.stribeck_mu, lawkernel.stribeck_slope))
-    callbacks = (*pairs[0], *pairs[1])
-    return callbacks, np.array(kind, dtype=np.int64), np.array(numbers, dtype=float).reshape(-1, 3)
+    functions += [functions[0] if functions else lawkernel.stribeck_mu] * (SLOTS - len(functions))
+    return tuple(functions), np.array(kind, dtype=np.int64), np.array(numbers, dtype=float).reshape(-1, 3)
 
 
 class Solution:
