@@ -33,13 +33,14 @@ def _mu1(v):  # the user's law of block 1 (on a fast belt: it never sticks), wri
     return 0.3 + 0.2 / (1.0 + 4.0 * abs(v))
 
 
-#: A harmonic force on block 1 (N, rad/s) for the forced runs, written again in the reference.
-F1, W1 = 3.0, 40.0
+#: Harmonic forces F1 cos(W1 t) on block 1 and F2 sin(W1 t) on block 2 (N, rad/s) for the forced runs,
+#: written again in the reference.
+F1, F2, W1 = 3.0, 0.5, 40.0
 
 
 def _pair(belt=V2, forced=False, linear=False):
     K = [[K1 + KC, -KC], [-KC, K2 + KC]]
-    harmonics = [Harmonic(W1, cos=[F1, 0.0])] if forced else ()
+    harmonics = [Harmonic(W1, cos=[F1, 0.0], sin=[0.0, F2])] if forced else ()
     law1 = LinearWeakening(0.5, 0.5, 0.2) if linear else UserLaw(_mu1, fs=0.5)  # (affine: 0.5 (1 - 0.2 |v|))
     return System(mass=np.diag([M1, M2]), stiffness=K, damping=np.diag([C1, 0.0]), harmonics=harmonics, contacts=[
         Contact([1.0, 0.0], N, law1, surface_speed=V1),
@@ -56,7 +57,7 @@ def _reference(t_eval, x0, v0, belt=V2, forced=False, linear=False):
     def slipping(t, y, s):
         x1, x2, u1, u2 = y
         f1 = N * _law1(V1 - u1, linear) + forced * F1 * math.cos(W1 * t)
-        f2 = s * N * (FD + (FS - FD) * math.exp(-abs(belt - u2) / VS))
+        f2 = s * N * (FD + (FS - FD) * math.exp(-abs(belt - u2) / VS)) + forced * F2 * math.sin(W1 * t)
         return [u1, u2, (-(K1 + KC) * x1 + KC * x2 - C1 * u1 + f1) / M1, (KC * x1 - (K2 + KC) * x2 + f2) / M2]
 
     def stuck(t, y, x2s, ts):
@@ -66,7 +67,7 @@ def _reference(t_eval, x0, v0, belt=V2, forced=False, linear=False):
         return [u1, (-(K1 + KC) * x1 + KC * x2 - C1 * u1 + f1) / M1]
 
     def hold(t, y, x2s, ts):  # the friction force that keeps block 2 on its belt
-        return -(KC * y[0] - (K2 + KC) * (x2s + belt * (t - ts)))
+        return -(KC * y[0] - (K2 + KC) * (x2s + belt * (t - ts)) + forced * F2 * math.sin(W1 * t))
 
     return stick_slip_pair(t_eval, [x0[0], x0[1], v0[0], v0[1]], slipping, stuck, hold, belt, FS * N)
 
@@ -89,6 +90,8 @@ def test_the_pair_with_a_user_law_and_a_stribeck_law_follows_an_integration_writ
     slipping = run.states[:, 1] != 0
     assert run.friction_force[slipping, 1] == pytest.approx(run.states[slipping, 1] * N * (
         FD + (FS - FD) * np.exp(-np.abs(run.slip_rate[slipping, 1]) / VS)), rel=1e-12)
+    held = -(KC * run.x[~slipping, 0] - (K2 + KC) * run.x[~slipping, 1] + forced * F2 * np.sin(W1 * run.t[~slipping]))
+    assert np.sum(~slipping) > 10 and run.friction_force[~slipping, 1] == pytest.approx(held, rel=1e-9, abs=1e-9 * N)
 
 
 def test_the_pairs_cycle_closes_under_the_integration_written_apart():

@@ -190,7 +190,11 @@ class RateStateEquations:
             forces[:, i] = np.where(vr[:, i] >= 0, 1.0, -1.0) * self.N[i] * mu
         if self.stuck:  # the stuck contacts' forces: linear in the rows, the force in time apart
             sysm = self.system
-            F = np.array([sysm.external_force(float(ti)) for ti in t])
+            if sysm.history is None:  # f + B (cos W t, sin W t, ...) at every sample at once
+                E = np.array([f(h.frequency * t) for h in sysm.harmonics for f in (np.cos, np.sin)]).reshape(-1, t.size)
+                F = sysm.force[None, :] + (sysm.forcing_matrix @ E).T
+            else:
+                F = np.array([sysm.external_force(float(ti)) for ti in t])
             rest = (F - Y[:, :n] @ sysm.stiffness.T - Y[:, n:2 * n] @ sysm.damping.T + forces @ sysm.directions.T)
             lam = -self.gram_inv @ (sysm.directions[:, self.stuck].T @ sysm.inverse_mass @ rest.T)
             forces[:, self.stuck] = lam.T
