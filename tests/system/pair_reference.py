@@ -11,7 +11,8 @@ from scipy.integrate import solve_ivp
 def stick_slip_pair(t_eval, y0, slipping, stuck, hold, belt, limit, held=False):
     """Block 2's positions ``x`` at ``t_eval`` (NaN beyond where it got) and the switches ``[(t, state)]``
     (0 stuck, +-1 slipping) from ``y0`` (``(x1, x2, v1, v2, *extra)``), block 2 slipping unless ``held``;
-    ``belt`` its belt's speed, ``limit`` ``f_s N``."""
+    ``belt`` its belt's speed, ``limit`` ``f_s N``: a number, or ``limit(t, y, x2s, ts)`` (as ``hold``)."""
+    bound = limit if callable(limit) else (lambda t, y, x2s, ts: limit)
     out = np.full((t_eval.size, 2), np.nan)
     t, y, events = 0.0, list(y0), []
     s = 1 if belt > y0[3] else -1
@@ -29,13 +30,14 @@ def stick_slip_pair(t_eval, y0, slipping, stuck, hold, belt, limit, held=False):
                 break
             t, y = sol.t_events[0][0], sol.y_events[0][0]
             ts, x2s = t, y[1]
-            s = 0 if abs(hold(t, [y[0], y[2], *y[4:]], x2s, t)) <= limit else -s
+            z = [y[0], y[2], *y[4:]]
+            s = 0 if abs(hold(t, z, x2s, t)) <= bound(t, z, x2s, t) else -s
             events.append((t, s))
             if s == 0:
                 y = [y[0], y[2], *y[4:]]
         else:
-            up = lambda t, y, x2s, ts: hold(t, y, x2s, ts) - limit  # noqa: E731
-            down = lambda t, y, x2s, ts: hold(t, y, x2s, ts) + limit  # noqa: E731
+            up = lambda t, y, x2s, ts: hold(t, y, x2s, ts) - bound(t, y, x2s, ts)  # noqa: E731
+            down = lambda t, y, x2s, ts: hold(t, y, x2s, ts) + bound(t, y, x2s, ts)  # noqa: E731
             up.terminal = down.terminal = True
             up.direction, down.direction = 1, -1
             sol = solve_ivp(stuck, (t, t_eval[-1]), y, t_eval=t_eval[sel], events=[up, down], args=(x2s, ts), **opts)

@@ -109,8 +109,8 @@ def test_the_cycle_beyond_flutter_closes_and_its_multipliers_are_those_of_its_re
                                            "normal_direction"),
                                           ({"normal_direction": [0.0, 1.0], "normal_stiffness": -1.0},
                                            "normal_stiffness"),
-                                          ({"normal_direction": [0.0, 1.0], "friction": LinearWeakening(0.5, 0.4, 0.1)},
-                                           "friction")])
+                                          ({"normal_direction": [0.0, 1.0], "normal_force": None, "rigid": True,
+                                            "friction": LinearWeakening(0.5, 0.4, 0.1)}, "friction")])
 def test_bad_unilateral_contacts_are_refused_naming_the_parameter(kwargs, name):
     with pytest.raises(ParameterError) as err:
         Contact(**{"direction": [1.0, 0.0], "normal_force": 1.0, "friction": Coulomb(0.5, 0.4), **kwargs})

@@ -144,9 +144,9 @@ class Contact:
             raise ParameterError("normal_direction", self.normal_direction, "a vector with at least one entry not zero")
         object.__setattr__(self, "normal_direction", nv)
         mu = getattr(self.friction, "affine", None)
-        if mu is None or mu[1] != 0.0:
-            raise ParameterError("friction", type(self.friction).__name__, "Coulomb with a normal direction (the "
-                                 "friction force of a law of the slip speed times N(x) is not linear)")
+        if self.rigid and (mu is None or mu[1] != 0.0):
+            raise ParameterError("friction", type(self.friction).__name__, "Coulomb on a rigid contact (its impacts "
+                                 "and reactions are Coulomb's; a law of the slip speed takes a normal_stiffness)")
 
     @property
     def pushes(self) -> bool:

@@ -37,7 +37,7 @@ from ..rsf import RateState
 from ..rsf.slider import MAX_CALLS, complex_jacobian
 from .model import System
 from .rate_state_modes import first_mode, mode_events, switch
-from .flow import STATE_FLAGS
+from .flow import OPEN, STATE_FLAGS
 from .simulate import MAX_INSTANT_EVENTS, MAX_NUMBERS
 from .smoothkernel import Compiled, Failed, compiled_laws
 from .steady import SteadySliding
@@ -74,13 +74,20 @@ def is_rate_state(system: System) -> bool:
 
 def integrated(system: System) -> bool:
     """True when ``system`` moves by `rate_state_simulate` (integrated between its switches): a contact's
-    law is rate-and-state, or not affine in the slip speed (Stribeck, a user's law: no exact flow);
-    every contact then needs a constant normal force (checked, an error if not)."""
+    law is rate-and-state, or not affine in the slip speed (Stribeck, a user's law: no exact flow), or
+    a unilateral contact's law depends on the slip speed (its force ``s N(x) mu(v)`` is not linear).
+    With rate-and-state contacts every contact needs a constant normal force, without them no contact
+    may be rigid (checked, an error if not)."""
     if is_rate_state(system):
         return True
-    smooth = any(getattr(c.friction, "affine", None) is None for c in system.contacts)
+    smooth = any(getattr(c.friction, "affine", None) is None or (c.unilateral and c.friction.affine[1] != 0.0)
+                 for c in system.contacts)
     if smooth:
-        _constant_normal(system, "a law that is not affine in the slip speed")
+        for i, c in enumerate(system.contacts):
+            if c.rigid:
+                raise ParameterError(f"contacts[{i}].rigid", True, "false in a system with a law that is not affine "
+                                     "in the slip speed (rigid contacts are not in this version; a unilateral "
+                                     "contact with a normal_stiffness is)")
     return smooth
 
 
@@ -106,7 +113,10 @@ class RateStateEquations:
 
     A contact with another law (``rsf[i]`` False) slips or sticks as ``mode[i]`` says (1 or -1: slipping
     that way, its force ``s N mu(v)``; 0: stuck, its force the one that keeps its slip rate at zero,
-    `stick_forces`); `set_mode` sets it. A rate-and-state contact's entry of ``mode`` is not used."""
+    `stick_forces`; `OPEN`: a unilateral contact off its surface, no force); `set_mode` sets it. A
+    rate-and-state contact's entry of ``mode`` is not used. A unilateral contact's normal force is
+    ``N(x) = N_0 - k_n n . x`` (`normal`), pushing the structure along ``n`` while closed (with
+    ``normal_on_structure``)."""
 
     def __init__(self, system: System):
         self.system, self.laws = system, _laws(system)
@@ -116,6 +126,8 @@ class RateStateEquations:
         self.size = 2 * self.n + int(self.offsets[-1])
         self.V = np.array([c.surface_speed for c in system.contacts])
         self.N = np.array([c.normal_force for c in system.contacts])
+        self.Kn = system.normal_directions  # k_n n per contact (zero without a normal direction)
+        self.push = system.normal_units * np.array([c.pushes for c in system.contacts], dtype=float)
         self.set_mode(tuple(1 if r or V >= 0 else -1 for r, V in zip(self.rsf, self.V)))
 
     def set_mode(self, mode) -> None:
@@ -129,9 +141,15 @@ class RateStateEquations:
             self.MiE = self.system.inverse_mass @ E
             self.gram_inv = np.linalg.pinv(E.T @ self.MiE)
 
+    def normal(self, y):
+        """Each contact's normal force at ``y``: ``N_0 - k_n n . x`` (``N_0`` without a normal direction)."""
+        return self.N - self.Kn.T @ y[:self.n]
+
     def _rest(self, t, y, forces):
         sysm, n = self.system, self.n
-        return sysm.external_force(t) - sysm.stiffness @ y[:n] - sysm.damping @ y[n:2 * n] + sysm.directions @ forces
+        rest = sysm.external_force(t) - sysm.stiffness @ y[:n] - sysm.damping @ y[n:2 * n] + sysm.directions @ forces
+        closed = np.array(self.mode) != OPEN
+        return rest + self.push[:, closed] @ self.normal(y)[closed]
 
     def stick_forces(self, t, y) -> np.ndarray:
         """The friction forces of the stuck contacts (in `stuck`'s order) that keep their slip rates at zero."""
@@ -149,15 +167,16 @@ class RateStateEquations:
         vr = self.V - W.T @ y[n:2 * n]
         forces = np.empty(len(self.laws), dtype=np.result_type(y, float))
         rates = np.empty(self.size - 2 * n, dtype=forces.dtype)
+        normal = self.normal(y)
         for i, law in enumerate(self.laws):
-            if not self.rsf[i]:  # slipping as its mode says (stuck: 0 here, see stick_forces)
+            if not self.rsf[i]:  # slipping as its mode says (stuck: 0 here, see stick_forces; open: none)
                 s = self.mode[i]
-                if s == 0:
+                if s == 0 or s == OPEN:
                     forces[i] = 0.0
                     continue
                 v = vr[i].real if s * vr[i].real > 0 else s * _TINY  # just released: its side of zero
                 mu = law.kinetic(v) + (1j * law.slope(v) * vr[i].imag if np.iscomplexobj(vr) else 0.0)
-                forces[i] = s * self.N[i] * mu
+                forces[i] = s * normal[i] * mu
                 continue
             s = 1.0 if vr[i].real >= 0 else -1.0
             if not law.regularized and vr[i].real <= 0.0:
@@ -174,15 +193,16 @@ class RateStateEquations:
         mode, at times ``t``: at once)."""
         n = self.n
         vr = self.V[None, :] - Y[:, n:2 * n] @ self.system.directions
+        normal = self.N[None, :] - Y[:, :n] @ self.Kn
         forces = np.empty_like(vr)
         for i, law in enumerate(self.laws):
             if not self.rsf[i]:
                 s = self.mode[i]
-                if s == 0:  # (its force below, from the constraint)
+                if s == 0 or s == OPEN:  # (stuck: its force below, from the constraint)
                     forces[:, i] = 0.0
                     continue
                 v = np.where(s * vr[:, i] > 0, vr[:, i], s * _TINY)
-                forces[:, i] = s * self.N[i] * np.asarray(law.kinetic(v), dtype=float)
+                forces[:, i] = s * normal[:, i] * np.asarray(law.kinetic(v), dtype=float)
                 continue
             log_v = np.log(np.maximum(np.abs(vr[:, i]), _TINY))
             psi = Y[:, 2 * n + self.offsets[i]:2 * n + self.offsets[i + 1]].T
@@ -195,7 +215,9 @@ class RateStateEquations:
                 F = sysm.force[None, :] + (sysm.forcing_matrix @ E).T
             else:
                 F = np.array([sysm.external_force(float(ti)) for ti in t])
-            rest = (F - Y[:, :n] @ sysm.stiffness.T - Y[:, n:2 * n] @ sysm.damping.T + forces @ sysm.directions.T)
+            closed = np.array(self.mode) != OPEN
+            rest = (F - Y[:, :n] @ sysm.stiffness.T - Y[:, n:2 * n] @ sysm.damping.T + forces @ sysm.directions.T
+                    + normal[:, closed] @ self.push[:, closed].T)
             lam = -self.gram_inv @ (sysm.directions[:, self.stuck].T @ sysm.inverse_mass @ rest.T)
             forces[:, self.stuck] = lam.T
         return vr, forces
@@ -321,12 +343,22 @@ def _steady_state(eq: RateStateEquations) -> np.ndarray:
             raise ParameterError(f"contacts[{i}].surface_speed", float(eq.V[i]), "> 0 for the law as written, which "
                                  "has no value at a backward slip (or the law regularized)")
         y[2 * eq.n + eq.offsets[i]:2 * eq.n + eq.offsets[i + 1]] = law.steady_psi(abs(eq.V[i]))
-    _, forces, _ = eq.forces(y)
+    _, forces, _ = eq.forces(y)  # at x = 0: N_0 at every contact
+    forces = forces.real
+    k_eff, load = sysm.stiffness.copy(), sysm.external_force(0.0) + sysm.directions @ forces + eq.push @ eq.N
+    for i, c in enumerate(sysm.contacts):  # N(x) = N_0 - k_n n . x: its push and its friction s mu N(x)
+        if c.unilateral:
+            k_eff += np.outer(sysm.directions[:, i] * forces[i] / eq.N[i] + eq.push[:, i], eq.Kn[:, i])
     try:
-        y[:eq.n] = np.linalg.solve(sysm.stiffness, sysm.external_force(0.0) + sysm.directions @ forces.real)
+        y[:eq.n] = np.linalg.solve(k_eff, load)
     except np.linalg.LinAlgError:
         raise ParameterError("stiffness", sysm.stiffness.tolist(), "an invertible matrix for steady sliding (the "
                              "structure held in place by its springs)") from None
+    normal = eq.normal(y)
+    for i, c in enumerate(sysm.contacts):
+        if c.unilateral and not normal[i] > 0.0:
+            raise NoSolutionError(f"contact {i} is open at the resting position (its normal force would be "
+                                  f"{normal[i]:.6g} N): no steady sliding on it")
     return y
 
 
@@ -344,8 +376,9 @@ def rate_state_steady(system: System) -> RateStateSteady:
     eig = eig[np.lexsort((-eig.imag, -eig.real))]
     vr, forces, _ = eq.forces(y)
     W, n = system.directions, eq.n
-    slopes = [eq.N[i] * (float(np.real(law.friction(np.log(abs(vr[i])), eq.psi(y, i))[1])) / abs(vr[i]) if eq.rsf[i]
-                         else float(law.slope(vr[i].real)) * np.sign(vr[i].real))
+    normal = eq.normal(y)
+    slopes = [normal[i] * (float(np.real(law.friction(np.log(abs(vr[i])), eq.psi(y, i))[1])) / abs(vr[i])
+                           if eq.rsf[i] else float(law.slope(vr[i].real)) * np.sign(vr[i].real))
               for i, law in enumerate(eq.laws)]  # N d(s mu) / d v: (d mu / d ln v) / v for rate-and-state
     direct = system.damping + (W * np.array(slopes)) @ W.T
     return RateStateSteady(y[:n].copy(), forces.real.copy(), direct, eig,

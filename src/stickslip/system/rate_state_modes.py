@@ -9,7 +9,11 @@ contact's force reaching ``+-f_s N``. At a switch the next mode is chosen as the
 that would hold them all exceed ``f_s N`` somewhere; the one exceeding it most is released in
 its force's direction and the rest chosen again; a contact whose force reached its limit is
 released. A stuck contact's slip rate is set to exactly zero (the smallest change of the
-velocities in the metric of ``M``).
+velocities in the metric of ``M``). A unilateral contact (with a normal spring: ``N(x) = N_0 - k_n
+n . x``) opens where ``N(x)`` falls to zero and closes where it comes back (events too; no impact: the
+normal force is continuous), its limit ``f_s N(x)``; closing, it slips the way its slip rate is, or
+is chosen with the others where that is zero. One whose normal force does not act on the structure
+(``normal_on_structure`` false: an eliminated constraint) opening stops the run.
 """
 
 from __future__ import annotations
@@ -17,6 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import NoSolutionError
+from .flow import OPEN
 from .simulate import zero_slip
 
 __all__ = ["first_mode", "choose_mode", "mode_events", "switch", "sticking"]
@@ -27,8 +32,8 @@ ZERO = 1e-10
 
 
 def sticking(eq) -> list[int]:
-    """The contacts that may stick (their law is not rate-and-state)."""
-    return [i for i, r in enumerate(eq.rsf) if not r]
+    """The contacts that may stick (their law is not rate-and-state), open ones left out."""
+    return [i for i, r in enumerate(eq.rsf) if not r and eq.mode[i] != OPEN]
 
 
 def _speed(eq, y) -> float:
@@ -49,7 +54,8 @@ def choose_mode(eq, t: float, y: np.ndarray, mode: tuple, zero, released: dict) 
         if not eq.stuck:
             break
         lam = eq.stick_forces(t, y)
-        limit = np.array([eq.laws[i].static * eq.N[i] for i in eq.stuck])
+        normal = eq.normal(y)
+        limit = np.array([eq.laws[i].static * normal[i] for i in eq.stuck])
         k = int(np.argmax(np.abs(lam) - limit))
         if abs(lam[k]) <= limit[k]:
             break
@@ -64,13 +70,26 @@ def choose_mode(eq, t: float, y: np.ndarray, mode: tuple, zero, released: dict) 
 
 
 def first_mode(eq, y: np.ndarray) -> tuple[tuple, np.ndarray]:
-    """The mode at the start: each contact that may stick slips the way its slip rate is, or
-    sticks where it is zero (and holds)."""
+    """The mode at the start: a unilateral contact whose normal force is not positive is open; each
+    other contact that may stick slips the way its slip rate is, or sticks where it is zero (and holds)."""
     vr = eq.V - eq.system.directions.T @ y[eq.n:2 * eq.n]
     speed = _speed(eq, y)
-    mode = tuple(1 if vr[i] >= 0 else -1 for i in range(len(eq.laws)))
+    normal = eq.normal(y)
+    mode = tuple(OPEN if c.unilateral and normal[i] <= 0.0 else (1 if vr[i] >= 0 else -1)
+                 for i, c in enumerate(eq.system.contacts))
+    eq.set_mode(mode)
+    _held(eq, 0.0)
     zero = {i for i in sticking(eq) if abs(vr[i]) <= 1e-14 * speed}
     return choose_mode(eq, 0.0, y, mode, zero, {})
+
+
+def _held(eq, t: float) -> None:
+    """A `NoSolutionError` where a contact whose normal force only loads it is open (its constraint let go)."""
+    for i, c in enumerate(eq.system.contacts):
+        if eq.mode[i] == OPEN and not c.pushes:
+            raise NoSolutionError(f"simulation stopped at t = {t:.17g}: the normal force of contact {i} reached zero; "
+                                  "its normal motion is an eliminated constraint (normal_on_structure = false), whose "
+                                  "letting go the model does not follow")
 
 
 class _Event:
@@ -90,6 +109,10 @@ def mode_events(eq) -> list:
     its side), each stuck contact's force against ``+-f_s N``, a law's largest slip speed."""
     out, W = [], eq.system.directions
     n = eq.n
+    for i, c in enumerate(eq.system.contacts):  # a unilateral contact's normal force through zero
+        if c.unilateral and not eq.rsf[i]:
+            kind, way = ("close", 1.0) if eq.mode[i] == OPEN else ("open", -1.0)
+            out.append(_Event(eq, i, kind, way, lambda t, y, i=i: eq.normal(y)[i]))
     for i in sticking(eq):
         s = eq.mode[i]
         if s != 0:
@@ -99,9 +122,11 @@ def mode_events(eq) -> list:
                 out.append(_Event(eq, i, "limit", 1.0, lambda t, y, i=i, top=top:
                                   abs(eq.V[i] - W[:, i] @ y[n:2 * n]) - top))
         else:
-            k, limit = eq.stuck.index(i), eq.laws[i].static * eq.N[i]
-            out.append(_Event(eq, i, "release", 1.0, lambda t, y, k=k, limit=limit: eq.stick_forces(t, y)[k] - limit))
-            out.append(_Event(eq, i, "release", -1.0, lambda t, y, k=k, limit=limit: eq.stick_forces(t, y)[k] + limit))
+            k, fs = eq.stuck.index(i), eq.laws[i].static
+            out.append(_Event(eq, i, "release", 1.0, lambda t, y, i=i, k=k, fs=fs:
+                              eq.stick_forces(t, y)[k] - fs * eq.normal(y)[i]))
+            out.append(_Event(eq, i, "release", -1.0, lambda t, y, i=i, k=k, fs=fs:
+                              eq.stick_forces(t, y)[k] + fs * eq.normal(y)[i]))
     return out
 
 
@@ -110,8 +135,17 @@ def switch(eq, t: float, y: np.ndarray, event: _Event) -> tuple[tuple, np.ndarra
     contacts at zero slip rate then (or past it), the stuck ones included, are chosen again."""
     vr = eq.V - eq.system.directions.T @ y[eq.n:2 * eq.n]
     speed = _speed(eq, y)
-    mode = eq.mode
-    zero = {i for i in sticking(eq) if mode[i] == 0 or abs(vr[i]) <= ZERO * speed or mode[i] * vr[i] < 0}
-    zero.add(event.contact)
-    released = {event.contact: int(event.direction)} if event.kind == "release" else {}
-    return choose_mode(eq, t, y, mode, zero, released)
+    mode = list(eq.mode)
+    i = event.contact
+    if event.kind == "open":
+        mode[i] = OPEN
+        eq.set_mode(mode)
+        _held(eq, t)
+    elif event.kind == "close":
+        mode[i] = 1 if vr[i] >= 0 else -1
+        eq.set_mode(mode)
+    zero = {j for j in sticking(eq) if mode[j] == 0 or abs(vr[j]) <= ZERO * speed or mode[j] * vr[j] < 0}
+    if event.kind in ("zero", "limit", "release"):
+        zero.add(i)
+    released = {i: int(event.direction)} if event.kind == "release" else {}
+    return choose_mode(eq, t, y, tuple(mode), zero, released)

@@ -263,6 +263,11 @@ def affine_laws(system: System) -> None:
                                  "a law affine in the slip speed (Coulomb, linear weakening) for the exact flows; a "
                                  "system with other laws (Stribeck, a user's law, rate-and-state) moves by "
                                  "stickslip.system.rate_state_simulate (integrated between its switches)")
+        if c.unilateral and c.friction.affine[1] != 0.0:
+            raise ParameterError(f"contacts[{i}].friction", type(c.friction).__name__,
+                                 "Coulomb on a unilateral contact for the exact flows (s N(x) mu(v) is not linear "
+                                 "where mu depends on the slip speed); such a system moves by "
+                                 "stickslip.system.rate_state_simulate (integrated between its switches)")
 
 
 def longest_run(system: System, flows: dict | None = None) -> tuple[float, float]:

@@ -31,27 +31,31 @@ __all__ = ["Compiled", "Solution", "Failed", "compiled_laws", "SLOTS", "DONE", "
 #: round-off of the time; more steps than allowed.
 DONE, CROSSED, BAD_LAW, STEP_TOO_SMALL, BUDGET = 0, 1, 2, 3, 4
 #: Event kinds: a slipping contact's slip rate (toward zero), its slip speed against its law's
-#: largest, a stuck contact's force against ``+f_s N`` and against ``-f_s N``.
-ZERO, LIMIT, RELEASE_UP, RELEASE_DOWN = 0, 1, 2, 3
+#: largest, a stuck contact's force against ``+f_s N(x)`` and against ``-f_s N(x)``, a unilateral
+#: contact's normal force ``N(x)`` (to zero: opening; from zero: closing).
+ZERO, LIMIT, RELEASE_UP, RELEASE_DOWN, NORMAL = 0, 1, 2, 3, 4
+#: A unilateral contact off its surface (`stickslip.system.flow.OPEN`).
+OPEN = 2
 #: The most compiled law functions in one system (each its own argument of the compiled functions).
 SLOTS = 4
 
 
 @njit(cache=True)
-def _rhs(mu1, mu2, mu3, mu4, P, t, y, out, vr, force, lam):
+def _rhs(mu1, mu2, mu3, mu4, P, t, y, out, vr, force, lam, nf):
     """``y'`` into ``out``, the slip rates ``vr``, the slipping contacts' forces ``force`` and the stuck
     ones' ``lam``; False where a law's value is not a friction coefficient (outside ``bounds``, the
     declared range of ``fd``, or not a number)."""
-    Mi, K, C, f0, B, freq, W, V, N, mode, kind, num, stuck, MiE, G, bounds = P
+    Mi, K, C, f0, B, freq, W, V, N, Kn, push, mode, kind, num, stuck, MiE, G, bounds = P
     n, k = Mi.shape[0], W.shape[1]
     ok = True
     for i in range(k):
-        acc = V[i]
+        acc, normal = V[i], N[i]
         for r in range(n):
             acc -= W[r, i] * y[n + r]
-        vr[i] = acc
+            normal -= Kn[r, i] * y[r]
+        vr[i], nf[i] = acc, normal
         s = mode[i]
-        if s == 0:
+        if s == 0 or s == OPEN:
             force[i] = 0.0
             continue
         v = acc if s * acc > 0 else s * 1e-300  # just released: its side of zero
@@ -67,7 +71,7 @@ def _rhs(mu1, mu2, mu3, mu4, P, t, y, out, vr, force, lam):
             mu = mu4(v, num[i, 0], num[i, 1], num[i, 2])
         if not bounds[0] <= mu <= bounds[1]:  # (NaN too) a coefficient out of the declared range
             ok = False
-        force[i] = s * N[i] * mu
+        force[i] = s * normal * mu
     rest = f0.copy()
     for j in range(freq.size):
         c, sn = math.cos(freq[j] * t), math.sin(freq[j] * t)
@@ -79,6 +83,8 @@ def _rhs(mu1, mu2, mu3, mu4, P, t, y, out, vr, force, lam):
             acc -= K[r, q] * y[q] + C[r, q] * y[n + q]
         for i in range(k):
             acc += W[r, i] * force[i]
+            if mode[i] != OPEN:
+                acc += push[r, i] * nf[i]
         rest[r] = acc
     for r in range(n):
         acc = 0.0
@@ -108,10 +114,10 @@ def _rhs(mu1, mu2, mu3, mu4, P, t, y, out, vr, force, lam):
 
 
 @njit(cache=True)
-def _events(mu1, mu2, mu3, mu4, P, ev, t, y, slope, vr, force, lam, g):
+def _events(mu1, mu2, mu3, mu4, P, ev, t, y, slope, vr, force, lam, nf, g):
     """The switching functions ``g`` at ``(t, y)`` (and the slope there); False where a law has no value."""
-    index, kind, level = ev
-    ok = _rhs(mu1, mu2, mu3, mu4, P, t, y, slope, vr, force, lam)
+    index, kind, level, contact = ev
+    ok = _rhs(mu1, mu2, mu3, mu4, P, t, y, slope, vr, force, lam, nf)
     for e in range(index.size):
         i = index[e]
         if kind[e] == ZERO:
@@ -119,14 +125,16 @@ def _events(mu1, mu2, mu3, mu4, P, ev, t, y, slope, vr, force, lam, g):
         elif kind[e] == LIMIT:
             g[e] = abs(vr[i]) - level[e]
         elif kind[e] == RELEASE_UP:
-            g[e] = lam[i] - level[e]
-        else:
-            g[e] = lam[i] + level[e]
+            g[e] = lam[i] - level[e] * nf[contact[e]]
+        elif kind[e] == RELEASE_DOWN:
+            g[e] = lam[i] + level[e] * nf[contact[e]]
+        else:  # a unilateral contact's normal force (opening, closing)
+            g[e] = nf[i]
     return ok
 
 
 @njit(cache=True)
-def _step(mu1, mu2, mu3, mu4, P, t, y, f, h, K, tmp, y_new, vr, force, lam):
+def _step(mu1, mu2, mu3, mu4, P, t, y, f, h, K, tmp, y_new, vr, force, lam, nf):
     """One DOP853 step of length ``h`` from ``(t, y, f = y')``: ``y_new``, its slope in ``K[-1]``;
     False where a law had no value on the way."""
     ok = True
@@ -136,12 +144,12 @@ def _step(mu1, mu2, mu3, mu4, P, t, y, f, h, K, tmp, y_new, vr, force, lam):
         if s == STAGES:
             y_new[:] = tmp
         ts = t + h if s == STAGES else t + NODES[s] * h
-        ok = _rhs(mu1, mu2, mu3, mu4, P, ts, tmp, K[s], vr, force, lam) and ok
+        ok = _rhs(mu1, mu2, mu3, mu4, P, ts, tmp, K[s], vr, force, lam, nf) and ok
     return ok
 
 
 @njit(cache=True)
-def _root(mu1, mu2, mu3, mu4, P, ev, e, t, y, f, h, ga, gb, K, tmp, w, slope, vr, force, lam, g):
+def _root(mu1, mu2, mu3, mu4, P, ev, e, t, y, f, h, ga, gb, K, tmp, w, slope, vr, force, lam, nf, g):
     """The step length in ``[0, h]`` at which event ``e`` changes sign (``ga``, ``gb`` at the ends):
     regula falsi (Illinois), kept in its bracket by bisection, to round-off of the time."""
     if ga == 0.0:
@@ -153,8 +161,8 @@ def _root(mu1, mu2, mu3, mu4, P, ev, e, t, y, f, h, ga, gb, K, tmp, w, slope, vr
         s = (a * gb - b * ga) / (gb - ga)
         if not (a < s < b):
             s = 0.5 * (a + b)
-        _step(mu1, mu2, mu3, mu4, P, t, y, f, s, K, tmp, w, vr, force, lam)
-        _events(mu1, mu2, mu3, mu4, P, ev, t + s, w, slope, vr, force, lam, g)
+        _step(mu1, mu2, mu3, mu4, P, t, y, f, s, K, tmp, w, vr, force, lam, nf)
+        _events(mu1, mu2, mu3, mu4, P, ev, t + s, w, slope, vr, force, lam, nf, g)
         gs = g[e]
         if gs == 0.0:
             return s
@@ -174,14 +182,14 @@ def _root(mu1, mu2, mu3, mu4, P, ev, e, t, y, f, h, ga, gb, K, tmp, w, slope, vr
 
 
 @njit(cache=True)
-def _fill(mu1, mu2, mu3, mu4, P, t, y, f, upto, t_eval, q, Y, K, tmp, w, vr, force, lam):
+def _fill(mu1, mu2, mu3, mu4, P, t, y, f, upto, t_eval, q, Y, K, tmp, w, vr, force, lam, nf):
     """The samples at ``t_eval[q:]`` up to ``upto`` from the step that starts at ``(t, y, f)``; the next ``q``."""
     while q < t_eval.size and t_eval[q] <= upto:
         s = t_eval[q] - t
         if s <= 0.0:
             Y[q] = y
         else:
-            _step(mu1, mu2, mu3, mu4, P, t, y, f, s, K, tmp, w, vr, force, lam)
+            _step(mu1, mu2, mu3, mu4, P, t, y, f, s, K, tmp, w, vr, force, lam, nf)
             Y[q] = w
         q += 1
     return q
@@ -198,13 +206,13 @@ def segment(mu1, mu2, mu3, mu4, P, ev, directions, t0, y0, t_end, t_eval, rtol, 
     k = P[6].shape[1]
     K = np.empty((STAGES + 1, n))
     tmp, y_new, w, f, slope = np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n)
-    vr, force, lam = np.empty(k), np.empty(k), np.empty(max(P[12].size, 1))
+    vr, force, lam, nf = np.empty(k), np.empty(k), np.empty(max(P[14].size, 1)), np.empty(k)
     g_old, g_new, g = np.empty(ne), np.empty(ne), np.empty(ne)
     Y = np.empty((t_eval.size, n))
     t, y = t0, y0.copy()
-    if not _events(mu1, mu2, mu3, mu4, P, ev, t, y, f, vr, force, lam, g_old):
+    if not _events(mu1, mu2, mu3, mu4, P, ev, t, y, f, vr, force, lam, nf, g_old):
         return BAD_LAW, -1, t, y, Y, 0, h
-    q = _fill(mu1, mu2, mu3, mu4, P, t, y, f, t, t_eval, 0, Y, K, tmp, w, vr, force, lam)
+    q = _fill(mu1, mu2, mu3, mu4, P, t, y, f, t, t_eval, 0, Y, K, tmp, w, vr, force, lam, nf)
     rejected, steps = False, 0
     while t_end - t > 10 * EPS * abs(t):
         steps += 1
@@ -213,40 +221,40 @@ def segment(mu1, mu2, mu3, mu4, P, ev, directions, t0, y0, t_end, t_eval, rtol, 
         h = min(h, t_end - t)
         if h <= 10 * EPS * max(abs(t), 1e-300):
             return STEP_TOO_SMALL, -1, t, y, Y, q, h
-        if not _step(mu1, mu2, mu3, mu4, P, t, y, f, h, K, tmp, y_new, vr, force, lam):
+        if not _step(mu1, mu2, mu3, mu4, P, t, y, f, h, K, tmp, y_new, vr, force, lam, nf):
             return BAD_LAW, -1, t, y, Y, q, h
         err = error_norm(K, h, y, y_new, rtol, atol)
         if err > 1.0:
             h *= max(MIN_FACTOR, SAFETY * err ** EXPONENT)
             rejected = True
             continue
-        _events(mu1, mu2, mu3, mu4, P, ev, t + h, y_new, slope, vr, force, lam, g_new)
+        _events(mu1, mu2, mu3, mu4, P, ev, t + h, y_new, slope, vr, force, lam, nf, g_new)
         best, hit = math.inf, -1
         for e in range(ne):
             ga, gb = g_old[e], g_new[e]
             up, down = ga <= 0.0 <= gb, gb <= 0.0 <= ga
             if (up and directions[e] > 0) or (down and directions[e] < 0) or ((up or down) and directions[e] == 0):
-                s = _root(mu1, mu2, mu3, mu4, P, ev, e, t, y, f, h, ga, gb, K, tmp, w, slope, vr, force, lam, g)
+                s = _root(mu1, mu2, mu3, mu4, P, ev, e, t, y, f, h, ga, gb, K, tmp, w, slope, vr, force, lam, nf, g)
                 if s < best:
                     best, hit = s, e
         if hit >= 0:
-            _step(mu1, mu2, mu3, mu4, P, t, y, f, best, K, tmp, w, vr, force, lam)
+            _step(mu1, mu2, mu3, mu4, P, t, y, f, best, K, tmp, w, vr, force, lam, nf)
             short = error_norm(K, best, y, w, rtol, atol) if best > 0 else 0.0
             if short > 1.0 and best > 10 * EPS * abs(t):  # the step to the event not resolved: shorter steps
                 h = best * max(MIN_FACTOR, SAFETY * short ** EXPONENT)
                 rejected = True
                 continue
             end = w.copy()
-            q = _fill(mu1, mu2, mu3, mu4, P, t, y, f, t + best, t_eval, q, Y, K, tmp, w, vr, force, lam)
+            q = _fill(mu1, mu2, mu3, mu4, P, t, y, f, t + best, t_eval, q, Y, K, tmp, w, vr, force, lam, nf)
             return CROSSED, hit, t + best, end, Y, q, h
-        q = _fill(mu1, mu2, mu3, mu4, P, t, y, f, min(t + h, t_end), t_eval, q, Y, K, tmp, w, vr, force, lam)
+        q = _fill(mu1, mu2, mu3, mu4, P, t, y, f, min(t + h, t_end), t_eval, q, Y, K, tmp, w, vr, force, lam, nf)
         y[:] = y_new
         f[:] = slope
         g_old[:] = g_new
         t += h
         h *= next_factor(err, rejected)
         rejected = False
-    q = _fill(mu1, mu2, mu3, mu4, P, t, y, f, t_end, t_eval, q, Y, K, tmp, w, vr, force, lam)
+    q = _fill(mu1, mu2, mu3, mu4, P, t, y, f, t_end, t_eval, q, Y, K, tmp, w, vr, force, lam, nf)
     return DONE, -1, t_end, y, Y, q, h
 
 
@@ -307,7 +315,8 @@ class Compiled:
         self.fixed = (np.ascontiguousarray(system.inverse_mass), np.ascontiguousarray(system.stiffness, dtype=float),
                       np.ascontiguousarray(system.damping, dtype=float), np.asarray(system.force, dtype=float), B, freq,
                       np.ascontiguousarray(system.directions, dtype=float), np.asarray(eq.V, dtype=float),
-                      np.asarray(eq.N, dtype=float))
+                      np.asarray(eq.N, dtype=float), np.ascontiguousarray(eq.Kn, dtype=float),
+                      np.ascontiguousarray(eq.push, dtype=float))
         self.h = math.inf
         allowed = OSCILLATOR["fd"].range
         self.bounds = np.array([allowed.lo, allowed.hi], dtype=float)
@@ -330,12 +339,15 @@ class Compiled:
                 index.append(e.contact), kind.append(ZERO), level.append(0.0)
             elif e.kind == "limit":
                 index.append(e.contact), kind.append(LIMIT), level.append(law.max_speed)
-            else:
+            elif e.kind == "release":
                 index.append(eq.stuck.index(e.contact))
-                kind.append(RELEASE_UP if e.direction > 0 else RELEASE_DOWN), level.append(law.static * eq.N[e.contact])
+                kind.append(RELEASE_UP if e.direction > 0 else RELEASE_DOWN), level.append(law.static)
+            else:  # "open", "close"
+                index.append(e.contact), kind.append(NORMAL), level.append(0.0)
             direction.append(e.direction)
-        return ((np.array(index, dtype=np.int64), np.array(kind, dtype=np.int64), np.array(level, dtype=float)),
-                np.array(direction, dtype=float))
+        contact = np.array([e.contact for e in switches], dtype=np.int64)
+        return ((np.array(index, dtype=np.int64), np.array(kind, dtype=np.int64), np.array(level, dtype=float),
+                 contact), np.array(direction, dtype=float))
 
     def solve(self, t0: float, t_end: float, y0, t_eval, rtol: float, switches) -> Solution:
         """The segment from ``(t0, y0)`` in ``eq``'s current mode with its ``switches`` (`mode_events`)."""

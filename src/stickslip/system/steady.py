@@ -10,7 +10,8 @@ motions about it obey ``M y'' + C_eff y' + K y = 0`` with
 steady sliding is stable when every eigenvalue of that linear flow has a negative real part.
 A unilateral contact (normal force ``N(x) = N_0 - k_n n . x``) adds ``k_n n n^T`` and, through its
 friction, ``sign(V) mu k_n w n^T`` to the stiffness: a matrix no longer symmetric, whose modes
-may coalesce and flutter (mode-coupling instability, Hoffmann et al. 2002).
+may coalesce and flutter (mode-coupling instability, Hoffmann et al. 2002); with a law of the slip
+speed, ``N(x) mu'(|V|) w w^T`` at the resting position to the damping.
 
 A rigid contact (``n . x >= 0``, Coulomb) is closed in steady sliding: its reaction ``P`` acts along
 ``b = n + s mu w`` (the normal and its friction), so the position and reactions solve
@@ -133,6 +134,8 @@ def steady_sliding(system: System) -> SteadySliding:
                 raise NoSolutionError(f"contact {i} is open at the resting position (its normal force would be "
                                       f"{normal:.6g} N): no steady sliding on it")
             forces[i] = np.sign(c.surface_speed) * float(c.friction.kinetic(abs(c.surface_speed))) * normal
+            slope = float(c.friction.slope(abs(c.surface_speed)))  # a law of the slip speed: N(x) mu' in the damping
+            c_eff += normal * slope * np.outer(c.direction, c.direction)
     for i, p in zip(rigid, reactions):
         if not p > 0.0:
             raise NoSolutionError(f"contact {i} (rigid) would pull on its surface at the resting position (its "
