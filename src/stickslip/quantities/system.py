@@ -40,7 +40,8 @@ SYSTEM = Domain("system", units="SI (or any consistent units)", quantities=[
     Q("samples", "1", "uniform samples of the trajectory in the output", "[2, 1e7]", integer=True),
     Q("psi0", "1", "entry of the initial state of the rate-and-state contacts, ln(V_0 theta / D_c)", "[-1000, 1000]",
       symbol="psi_0", why="theta from e^-1000 to e^1000 times D_c/V_0: far beyond any healing or weakening"),
-    Q("rtol", "1", "relative tolerance of the integration of rate-and-state contacts (Radau IIA)", "[1e-13, 1e-3]",
+    Q("rtol", "1", "relative tolerance of the integration between switches (Radau IIA, or DOP853 compiled with "
+      "the laws)", "[1e-13, 1e-3]",
       why="from near round-off to a quick look"),
     Q("max_events", "1", "most contact events of a simulation", "[1, 1e9]", integer=True),
     Q("transient", "s", "time simulated before a cycle is looked for", "(0, 1e300]"),
