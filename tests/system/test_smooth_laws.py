@@ -172,7 +172,7 @@ def _sticky(v):  # beyond 1 m/s of slip rising steeply, out of the declared rang
 
 
 def test_laws_the_compiled_flows_cannot_take_run_with_radau_and_a_method_out_of_its_list_is_named():
-    for method in ("fast", "", None, 1):
+    for method in ("fast", "", None, 1, np.array(["auto", "radau"]), ["auto"]):
         with pytest.raises(ParameterError) as err:
             rate_state_simulate(_pair(), t_end=0.1, method=method)
         assert err.value.name == "method" and "auto, compiled, radau" in str(err.value)

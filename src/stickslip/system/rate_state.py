@@ -449,7 +449,7 @@ def rate_state_simulate(system: System, x0=None, v0=None, t_end: float = 10.0, *
     whose laws are affine, Stribeck's or a user's function numba compiles, at most four such
     functions); ``"auto"`` (the default) the compiled one where it applies, else Radau. A compiled run
     that stops (a law without a value, a step below round-off) is made again with Radau, which says why."""
-    if method not in METHODS:
+    if not isinstance(method, str) or method not in METHODS:
         raise ParameterError("method", method, "one of " + ", ".join(METHODS))
     eq = RateStateEquations(system)
     laws = None if method == "radau" else compiled_laws(eq)

@@ -135,7 +135,7 @@ def rate_state_cycle(system: System, x0=None, v0=None, *, psi0=None, transient: 
     Newton's method to ``tol`` (of each variable's range over the cycle; the runs by
     `rate_state_simulate` at ``rtol`` with its ``method``, the monodromy by central differences:
     multipliers to about ``1e4 rtol``)."""
-    if method not in METHODS:
+    if not isinstance(method, str) or method not in METHODS:
         raise ParameterError("method", method, "one of " + ", ".join(METHODS))
     eq = RateStateEquations(system)
     system.unforced("a limit cycle")
