@@ -166,3 +166,17 @@ def test_the_command_line_takes_the_pressed_block_example(capsys):
     assert cycle["slip_rate_min"][0] == 0.0 and all(math.isfinite(m) for m in cycle["multipliers_abs"])  # stick-slip
     assert cli(["system", "stability", str(file), "--json"]) == 0
     assert json.loads(capsys.readouterr().out)["stable"] is False  # Stribeck's falling law: steady sliding unstable
+
+
+@pytest.mark.parametrize("lift", [0.030, 0.031, 0.032, 0.034])
+def test_a_block_dropped_on_a_belt_at_rest_lands_stuck_and_both_methods_agree(lift):
+    """No tangential load: the block stays where it is (x = 0 exactly), sticking each time it lands.
+    The landing's event may put N(x) a round-off below zero: its stick limit is then zero, not negative
+    (a negative one released it at zero slip rate, again and again: 'chattering')."""
+    system = System(mass=M * np.eye(2), stiffness=[[KX, 0.0], [0.0, KZ]], damping=np.diag([CX, CZ]), contacts=[
+        Contact([1.0, 0.0], N0, Stribeck(FS, FD, VS), surface_speed=0.0, normal_direction=[0.0, 1.0],
+                normal_stiffness=KN)])
+    runs = [rate_state_simulate(system, x0=[0.0, lift], t_end=0.3, samples=301, method=m) for m in ("compiled", "radau")]
+    for run in runs:
+        assert np.all(np.abs(run.x[:, 0]) <= 1e-12) and set(run.event_state) == {0, 2}  # lands stuck, leaves
+    assert runs[0].event_time == pytest.approx(runs[1].event_time, abs=1e-9)

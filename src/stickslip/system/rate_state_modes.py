@@ -55,7 +55,7 @@ def choose_mode(eq, t: float, y: np.ndarray, mode: tuple, zero, released: dict) 
             break
         lam = eq.stick_forces(t, y)
         normal = eq.normal(y)
-        limit = np.array([eq.laws[i].static * normal[i] for i in eq.stuck])
+        limit = np.array([eq.laws[i].static * max(normal[i], 0.0) for i in eq.stuck])  # (N a round-off below 0)
         k = int(np.argmax(np.abs(lam) - limit))
         if abs(lam[k]) <= limit[k]:
             break
@@ -124,9 +124,9 @@ def mode_events(eq) -> list:
         else:
             k, fs = eq.stuck.index(i), eq.laws[i].static
             out.append(_Event(eq, i, "release", 1.0, lambda t, y, i=i, k=k, fs=fs:
-                              eq.stick_forces(t, y)[k] - fs * eq.normal(y)[i]))
+                              eq.stick_forces(t, y)[k] - fs * max(eq.normal(y)[i], 0.0)))
             out.append(_Event(eq, i, "release", -1.0, lambda t, y, i=i, k=k, fs=fs:
-                              eq.stick_forces(t, y)[k] + fs * eq.normal(y)[i]))
+                              eq.stick_forces(t, y)[k] + fs * max(eq.normal(y)[i], 0.0)))
     return out
 
 
