@@ -16,12 +16,13 @@ import typer
 
 from ..errors import NoSolutionError, ParameterError
 from . import brake, fem, halfspace, oscillator, reproduce, rsf, study, system
+from .helptext import Typer, command_tree
 
 # typer vendors its own copy of click (older releases re-export click's classes):
 # its usage errors are the parent class of typer.BadParameter in both cases
 _EXIT, _ABORT, _USAGE = typer.Exit, typer.Abort, typer.BadParameter.__mro__[1]
 
-app = typer.Typer(no_args_is_help=True, add_completion=False, pretty_exceptions_enable=False, rich_markup_mode=None,
+app = Typer(no_args_is_help=True, add_completion=True, pretty_exceptions_enable=False, rich_markup_mode=None,
                   help="Friction-induced vibration and stick-slip waves (models of the paper, and beyond).")
 
 
@@ -54,7 +55,7 @@ def _as_typed(argv: list[str] | None, exc: ParameterError) -> ParameterError:
     """The error with the library's parameter names (its own and those its bound depends on)
     replaced by the options of the command that was run (``transits`` -> ``--transits``),
     when the command has such options."""
-    command, path = typer.main.get_command(app), []
+    command, path = command_tree(app), []
     for token in (sys.argv[1:] if argv is None else argv):
         sub = getattr(command, "commands", {}).get(token)
         if sub is None:
@@ -105,7 +106,7 @@ def run(argv: list[str] | None = None) -> int:
         # by `common.emit` (one line, exit 1), a finite one is printed
         with warnings.catch_warnings(), _logs_on_stderr():
             warnings.simplefilter("ignore", RuntimeWarning)
-            result = app(args=argv, prog_name="stickslip", standalone_mode=False)
+            result = command_tree(app).main(args=argv, prog_name="stickslip", standalone_mode=False)
         return result if isinstance(result, int) else 0
     except _EXIT as exc:
         return exc.exit_code
@@ -113,8 +114,10 @@ def run(argv: list[str] | None = None) -> int:
         print("aborted", file=sys.stderr)
         return 1
     except _USAGE as exc:  # parsing errors: missing or malformed options
-        if type(exc).__name__ == "NoArgsIsHelpError":  # the help was printed: nothing went wrong
-            return 0
+        if type(exc).__name__ == "NoArgsIsHelpError":  # bare: the help, and 2 where a group needs a command
+            top = exc.ctx.parent is None  # as click: on stderr where a command is missing
+            print(exc.ctx.get_help(), file=sys.stdout if top else sys.stderr)
+            return 0 if top else 2
         return fail("error", exc.format_message().replace("Value error, ", ""), 2)  # typer's enum wording
     except ParameterError as exc:
         return fail("error", _as_typed(argv, exc), 2)

@@ -11,12 +11,13 @@ import typer
 
 from ..quantities import BRAKE as Q, COMMON
 from ..errors import MISSING, ParameterError
+from .helptext import Typer
 from .common import (AXIS_HELP, Overwrite, Replace, RunOut, Scheduler, XdmfEvery, axis, checked_axis, declared, emit, map_size, output_folder, output_path, overwrite_needs,
                      progress_bar, write_netcdf, xdmf_snapshots)
 
 _emit = functools.partial(emit, model="brake")  # results are printed with the units of this model
 
-app = typer.Typer(no_args_is_help=True, rich_markup_mode=None, help="Elastic annulus on a rotating shaft: reduced model (paper section 3).")
+app = Typer(no_args_is_help=True, rich_markup_mode=None, help="Elastic annulus on a rotating shaft: reduced model (paper section 3).")
 
 Opt = Optional[float]
 Xi = Annotated[Opt, declared(Q["xi"], "--xi")]

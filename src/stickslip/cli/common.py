@@ -291,16 +291,24 @@ def _name_fits(name: str, path: Path) -> None:
         raise ParameterError(name, str(path)[:60] + "...", "a path shorter than 4096 bytes")
 
 
-def output_path(name: str, path: Path | None, suffix: str, overwrite: bool | None = None) -> Path | None:
-    """Check an output file before any work: its suffix, that its name fits the file system, that
+#: The formats of ``--plot``, by the file's suffix (matplotlib writes each).
+FIGURE_SUFFIXES = (".png", ".svg", ".pdf")
+FIGURE_HELP = "Write a figure to this file: PNG, SVG or PDF by its suffix."
+
+
+def output_path(name: str, path: Path | None, suffix: str | tuple[str, ...],
+                overwrite: bool | None = None) -> Path | None:
+    """Check an output file before any work: its suffix (or one of them), that its name fits the file system, that
     it is not a folder, that its folder exists and can be written to, and that an existing file
     can be replaced. ``overwrite`` is the command's ``--overwrite``: an existing file (whatever
     wrote it) is replaced only if it is true. None is for a run's checkpoint, which the run
     itself resumes or refuses (`stickslip.contact.runs`)."""
     if path is None:
         return None
-    if path.suffix.lower() != suffix:
-        raise ParameterError(name, str(path), f"a file name ending in {suffix}")
+    suffixes = (suffix,) if isinstance(suffix, str) else tuple(suffix)
+    if path.suffix.lower() not in suffixes:
+        allowed = suffixes[0] if len(suffixes) == 1 else ", ".join(suffixes[:-1]) + " or " + suffixes[-1]
+        raise ParameterError(name, str(path), f"a file name ending in {allowed}")
     _name_fits(name, path)
     try:
         if path.is_dir():

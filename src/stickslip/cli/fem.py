@@ -13,12 +13,13 @@ import typer
 
 from ..quantities import COMMON, FEM as Q
 from ..errors import NoSolutionError, ParameterError
-from .common import (Overwrite, Replace, RunOut, Scheduler, XdmfEvery, declared, emit, output_path, overwrite_needs, progress_bar, write_netcdf,
+from .helptext import Typer
+from .common import (FIGURE_HELP, FIGURE_SUFFIXES, Overwrite, Replace, RunOut, Scheduler, XdmfEvery, declared, emit, output_path, overwrite_needs, progress_bar, write_netcdf,
                      xdmf_path, xdmf_snapshots)
 
 _emit = functools.partial(emit, model="fem")  # SI units: growth rates in 1/s, frequencies in Hz
 
-app = typer.Typer(no_args_is_help=True, rich_markup_mode=None,
+app = Typer(no_args_is_help=True, rich_markup_mode=None,
                   help="A 2-D body of your own (a mesh file and a TOML config) on a rigid counter-surface.")
 
 #: The library's names of what a `fem` command reads from its config, as the config writes them.
@@ -112,7 +113,7 @@ def cea(config: Config, json: Json = False,
                                                                                    "cores.")] = None,
         plot: Annotated[Optional[Path], typer.Option(help=(
             "With --sweep: write the stability map (growth rate and frequency of every branch against the swept "
-            "value, unstable stretches marked) to this PNG file."))] = None,
+            "value, unstable stretches marked) to this file: PNG, SVG or PDF by its suffix."))] = None,
         scheduler: Scheduler = None, set_: Set = None):
     """Complex eigenvalue analysis of steady sliding over [cea] band: growth rate [1/s] and
     frequency [Hz] of every mode found, most unstable first."""
@@ -166,7 +167,7 @@ def _cea_sweep(config, json, out, xdmf, overwrite, sweep, store, workers, plot, 
         raise ParameterError("--store", MISSING, "given with --sweep: the sweep's checkpoint (a .zarr folder)")
     overwrite_needs(overwrite, "--out, --store or --plot", out, store, plot)
     out = output_path("--out", out, ".nc", overwrite)
-    plot = output_path("--plot", plot, ".png", overwrite)
+    plot = output_path("--plot", plot, FIGURE_SUFFIXES, overwrite)
     store = output_folder("--store", store, ".zarr")
     name, values = axis("--sweep", sweep)
     key = resolve_key(read_toml(config), name, "--sweep")

@@ -11,11 +11,12 @@ from typing import Annotated, Optional
 import typer
 
 from ..quantities import HALFSPACE as Q
-from .common import Replace, declared, emit, output_path, overwrite_needs, write_netcdf
+from .helptext import Typer
+from .common import FIGURE_HELP, FIGURE_SUFFIXES, Replace, declared, emit, output_path, overwrite_needs, write_netcdf
 
 _emit = functools.partial(emit, model="halfspace")  # results are printed with the units of this model
 
-app = typer.Typer(no_args_is_help=True, rich_markup_mode=None, help="Rigid body sliding on an elastic half-space: periodic stick-slip waves.")
+app = Typer(no_args_is_help=True, rich_markup_mode=None, help="Rigid body sliding on an elastic half-space: periodic stick-slip waves.")
 
 
 class System(str, Enum):
@@ -57,13 +58,13 @@ def fields(b: B, c: C, v_star: VStar, nu: Nu = 0.3, mu: Mu = 0.5, system: System
            points: Annotated[int, declared(Q["points"], "--points")] = 2001,
            json: Json = False,
            out: Annotated[Optional[Path], typer.Option(help="Write the fields to this netCDF file (.nc).")] = None,
-           plot: Annotated[Optional[Path], typer.Option(help="Write a figure to this PNG file.")] = None,
+           plot: Annotated[Optional[Path], typer.Option(help=FIGURE_HELP)] = None,
            overwrite: Replace = False):
     """Interface fields of the wave: stresses, u_x,x, slip velocity, residuals, singularities."""
     from ..halfspace import decaying_wave, inverse_problem, wave_from_inverse
 
     overwrite_needs(overwrite, "--out or --plot", out, plot)
-    out, plot = output_path("--out", out, ".nc", overwrite), output_path("--plot", plot, ".png", overwrite)
+    out, plot = output_path("--out", out, ".nc", overwrite), output_path("--plot", plot, FIGURE_SUFFIXES, overwrite)
     if decaying:
         T = float(inverse_problem(b, c, v_star, nu=nu, mu=mu, system=system.value).T)
         wave = decaying_wave(b, c, T, v_star, nu=nu, mu=mu)

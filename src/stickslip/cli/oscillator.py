@@ -12,12 +12,13 @@ from typing import Annotated, Optional
 import typer
 
 from ..quantities import COMMON, OSCILLATOR as Q
-from .common import (AXIS_HELP, Overwrite, Replace, Scheduler, axis, declared, map_size, emit, output_folder, output_path, overwrite_needs,
+from .helptext import Typer
+from .common import (FIGURE_HELP, FIGURE_SUFFIXES, AXIS_HELP, Overwrite, Replace, Scheduler, axis, declared, map_size, emit, output_folder, output_path, overwrite_needs,
                      progress_bar, write_netcdf)
 
 _emit = functools.partial(emit, model="oscillator")  # results are printed with the units of this model
 
-app = typer.Typer(no_args_is_help=True, rich_markup_mode=None, help="The 1-DOF friction oscillator m x'' + c x' + k x = F (paper section 2).")
+app = Typer(no_args_is_help=True, rich_markup_mode=None, help="The 1-DOF friction oscillator m x'' + c x' + k x = F (paper section 2).")
 
 
 class Law(str, Enum):
@@ -38,7 +39,7 @@ Vs = Annotated[Optional[float], declared(Q["vs"], "--vs", "With --law stribeck."
 Damping = Annotated[float, declared(Q["damping"], "--damping", "With a damping ratio c/(2 sqrt(k m)) <= 1e11.")]
 Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
 Out = Annotated[Optional[Path], typer.Option("--out", help="Write the data to this netCDF file (.nc).")]
-Plot = Annotated[Optional[Path], typer.Option("--plot", help="Write a figure to this PNG file.")]
+Plot = Annotated[Optional[Path], typer.Option("--plot", help=FIGURE_HELP)]
 
 
 def Given(option):
@@ -61,7 +62,7 @@ def _osc(mass, stiffness, normal_force, belt_speed, fs, fd, law, tau, vs, dampin
 def _outputs(out, plot, overwrite):
     """``--out`` and ``--plot`` checked before any work (an existing one only with ``--overwrite``)."""
     overwrite_needs(overwrite, "--out or --plot", out, plot)
-    return output_path("--out", out, ".nc", overwrite), output_path("--plot", plot, ".png", overwrite)
+    return output_path("--out", out, ".nc", overwrite), output_path("--plot", plot, FIGURE_SUFFIXES, overwrite)
 
 
 def _write(ds, out, plot, draw: str) -> None:
@@ -182,7 +183,7 @@ def map_cmd(out: Annotated[Path, typer.Option(help="Zarr store (a directory endi
     from ..oscillator.regimes import REGIMES, regime_map
 
     out = output_folder("--out", out, ".zarr")
-    plot = output_path("--plot", plot, ".png", overwrite)
+    plot = output_path("--plot", plot, FIGURE_SUFFIXES, overwrite)
     pair = [axis(option, text) for option, text in (("--x", x), ("--y", y))]
     if pair[0][0] == pair[1][0]:
         raise ParameterError("--y", y, f"an axis of another parameter than --x (both are {pair[0][0]}: a map needs two)")

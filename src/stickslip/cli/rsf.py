@@ -11,11 +11,12 @@ import typer
 
 from ..errors import ParameterError
 from ..quantities import COMMON, RSF as Q
+from .helptext import Typer
 from .common import Replace, declared, emit, output_path, overwrite_needs, write_netcdf
 
 _emit = functools.partial(emit, model="rsf")
 
-app = typer.Typer(no_args_is_help=True, rich_markup_mode=None,
+app = Typer(no_args_is_help=True, rich_markup_mode=None,
                   help="The spring-slider with rate-and-state friction (per unit area: Pa, Pa/m, kg/m2).")
 
 

@@ -11,11 +11,12 @@ import typer
 
 from ..errors import ParameterError
 from ..quantities import COMMON, SYSTEM as Q
+from .helptext import Typer
 from .common import Replace, declared, emit, output_path, overwrite_needs, write_netcdf
 
 _emit = functools.partial(emit, model="system")
 
-app = typer.Typer(no_args_is_help=True, rich_markup_mode=None,
+app = Typer(no_args_is_help=True, rich_markup_mode=None,
                   help="Structures M x'' + C x' + K x = f(t) + sum of contact forces, with several frictional "
                        "contacts and harmonic forces (a TOML file: docs/systems.md).")
 
