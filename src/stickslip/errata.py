@@ -205,12 +205,22 @@ ERRATA: list[Erratum] = [
 ]
 
 
-def to_markdown() -> str:
-    """The errata as Markdown (the content of ``docs/errata.md``)."""
+def anchor(erratum_id: str) -> str:
+    """The HTML id of erratum ``erratum_id`` in a document made by ``to_markdown(anchors=True)``."""
+    return f"erratum-{erratum_id}"
+
+
+def to_markdown(anchors: bool = False) -> str:
+    """The errata as Markdown (the content of ``docs/errata.md``).
+
+    With ``anchors``, each entry's heading is preceded by ``<a id="erratum-E1"></a>`` (see
+    `anchor`), which the report links each figure's errata to.
+    """
     lines = ["# Errata of the paper", "",
              "Generated from `src/stickslip/errata.py` by `python -m stickslip.errata`; do not edit by hand.",
              "Each entry names the test(s) that settle it.", ""]
     for e in ERRATA:
+        lines += [f'<a id="{anchor(e.id)}"></a>', ""] if anchors else []
         lines += [f"## {e.id}. {e.where}", "", f"- **Printed:** {e.printed}", f"- **Correct:** {e.corrected}",
                   f"- **Evidence:** {e.evidence}", "- **Settled by:** " + ", ".join(f"`{t}`" for t in e.tests), ""]
     return "\n".join(lines)

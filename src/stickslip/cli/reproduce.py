@@ -13,12 +13,19 @@ from .common import emit, output_folder
 
 def reproduce(out: Annotated[Path, typer.Option(help="Output directory.")] = Path("results"),
               quick: Annotated[bool, typer.Option("--quick", help="Coarser, faster runs (same checks).")] = False,
-              only: Annotated[Optional[str], typer.Option(help="Comma-separated figure keys, e.g. fig2,fig3.")] = None,
+              only: Annotated[Optional[str], typer.Option(
+                  help="Comma-separated figure keys, e.g. fig2,fig3; the report keeps the other figures' sections "
+                       "from earlier runs in --out.")] = None,
               force: Annotated[bool, typer.Option("--force", help="Recompute even if a checkpoint exists.")] = False,
               json: Annotated[bool, typer.Option("--json", help="Print one JSON summary on stdout.")] = False,
               list_: Annotated[bool, typer.Option("--list", help="List the figure keys and titles, and exit.")] = False
               ) -> int:
-    """Compute, plot and check every figure of the paper; write report.md and report.html."""
+    """Compute, plot and check every figure of the paper; write report.md and report.html.
+
+    The report holds every figure run in --out: a run with --only replaces those figures'
+    sections and keeps the others (a section from a run of the other mode, or by other code,
+    is marked). report.html embeds its images: it can be copied alone.
+    """
     if list_:
         from ..figures import registry
 
@@ -48,5 +55,9 @@ def reproduce(out: Annotated[Path, typer.Option(help="Output directory.")] = Pat
             note = f"  ({len(o.not_reproduced)} paper claim(s) not reproduced)" if o.not_reproduced else ""
             console.print(f"{o.spec.key:>24}  {mark}  {sum(c.passed for c in o.checks)}/{len(o.checks)} checks"
                           f"  {o.seconds:6.1f} s{' (cached)' if o.cached else ''}{note}")
-        console.print(f"report: {out / 'report.md'} and {out / 'report.html'}")
+        earlier = len(set(summary.reported) - {o.spec.key for o in summary.outcomes})
+        console.print(f"report: {out / 'report.md'} and {out / 'report.html'}"
+                      + (f" (with {earlier} figure(s) from earlier runs)" if earlier else ""))
+        if summary.unreadable:
+            console.print(f"[red]unreadable records left out of the report:[/red] {', '.join(summary.unreadable)}")
     return 0 if summary.passed else 1
