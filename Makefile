@@ -8,7 +8,7 @@ OUT    ?= results
 
 .PHONY: reproduce reproduce-quick test test-slow test-all bench docs clean
 
-$(STAMP): pyproject.toml
+$(STAMP): pyproject.toml src/stickslip/__init__.py
 	@$(PYTHON) -c 'import sys; assert sys.version_info >= (3, 11), "Python >= 3.11 is required"'
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
@@ -33,8 +33,9 @@ test-all: $(STAMP)
 bench: $(STAMP)
 	for b in $(filter-out benchmarks/timing.py,$(wildcard benchmarks/*.py)); do echo "== $$b"; $(BIN)/python $$b || exit 1; done
 
-# docs/errata.md and docs/parameters.md regenerated from the package, then the HTML (Markdown docs and the API
-# reference from the docstrings) in build/docs/html; a warning fails the build
+# docs/errata.md, docs/parameters.md and docs/cli/ regenerated from the package, then the HTML (Markdown docs, the
+# notebooks executed, the gallery's scripts run, the API reference from the docstrings) in build/docs/html; a
+# warning fails the build
 DOCS_STAMP := $(VENV)/.stickslip-docs-installed
 
 $(DOCS_STAMP): $(STAMP)
@@ -44,6 +45,7 @@ $(DOCS_STAMP): $(STAMP)
 docs: $(DOCS_STAMP)
 	$(BIN)/python -m stickslip.errata > docs/errata.md
 	$(BIN)/python -m stickslip.quantities > docs/parameters.md
+	$(BIN)/python -m stickslip.cli.reference docs/cli
 	$(BIN)/python -m sphinx -M html docs build/docs -W --keep-going -q
 
 clean:

@@ -1,4 +1,6 @@
-"""Sphinx configuration: the Markdown docs (MyST) and an API reference from the docstrings.
+"""Sphinx configuration: the Markdown docs (MyST), the notebooks executed (myst-nb), a gallery
+of pictures built from scripts (sphinx-gallery), the command-line reference and an API reference
+from the docstrings.
 
 Build with ``make docs`` (warnings are errors); the HTML lands in ``build/docs/html``.
 """
@@ -6,24 +8,49 @@ Build with ``make docs`` (warnings are errors); the HTML lands in ``build/docs/h
 from __future__ import annotations
 
 import importlib.util
+import os
+import shutil
+import sys
+from pathlib import Path
 
 import stickslip
+
+DOCS = Path(__file__).resolve().parent
+sys.path.insert(0, str(DOCS))  # the gallery's image scraper and the inventories' writer
+
+from gallery_support import FigureScraper  # noqa: E402
+from inventories import write_inventories  # noqa: E402
 
 project = "stickslip"
 author = "stickslip developers"
 copyright = "stickslip developers (BSD 3-Clause)"
 release = version = stickslip.__version__
 
-extensions = ["myst_parser", "sphinx.ext.autodoc", "sphinx.ext.napoleon", "sphinx.ext.mathjax"]
-source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
+extensions = ["myst_nb", "sphinx.ext.autodoc", "sphinx.ext.napoleon", "sphinx.ext.mathjax",
+              "sphinx.ext.intersphinx", "sphinx_gallery.gen_gallery"]
 root_doc = "index"
-exclude_patterns = ["_build", "Thumbs.db", ".DS_Store"]
+# the gallery writes a notebook beside each script, for download: not pages of their own
+exclude_patterns = ["_build", "Thumbs.db", ".DS_Store", "auto_gallery/**/*.ipynb", "gallery/**"]
+
+# The notebooks of notebooks/ are rendered with their outputs: copied here, executed at each
+# build (cached in the build folder), in a temporary folder, an error failing the build.
+NOTEBOOKS = DOCS / "nb"
+NOTEBOOKS.mkdir(exist_ok=True)
+for _nb in sorted((DOCS.parent / "notebooks").glob("*.ipynb")):
+    shutil.copyfile(_nb, NOTEBOOKS / _nb.name)
+nb_execution_mode = "cache"
+nb_execution_cache_path = str(DOCS.parent / "build" / "docs" / "jupyter_cache")
+nb_execution_timeout = 900
+nb_execution_raise_on_error = True
+nb_execution_in_temp = True
+nb_execution_show_tb = True
 
 # Docstrings are numpy style; `name` in a docstring links to the object when it resolves
 # and is set as code otherwise (no warning: the build is not nitpicky).
 napoleon_google_docstring = False
 napoleon_numpy_docstring = True
 napoleon_use_rtype = False
+napoleon_use_ivar = True
 default_role = "py:obj"
 autodoc_default_options = {"show-inheritance": True, "member-order": "bysource"}
 autodoc_typehints = "description"
@@ -32,8 +59,34 @@ autodoc_preserve_defaults = True
 add_module_names = False
 python_use_unqualified_type_names = True
 
-# MyST: headings get anchors, so the Markdown docs can link to sections
+# Links to the libraries' own docs. This machine reaches only the package registries, so the
+# inventories are written locally (docs/inventories.py: the names our docs use, with their
+# pages in each library's documentation) instead of being downloaded.
+intersphinx_mapping = write_inventories(DOCS.parent / "build" / "docs" / "inventories")
+
+# MyST: headings get anchors, so the Markdown docs can link to sections; $...$ and $$...$$ math
 myst_heading_anchors = 3
+myst_enable_extensions = ["dollarmath", "amsmath", "colon_fence"]
+
+# The gallery: every script of gallery/ runs at each build; the pictures it draws (matplotlib
+# figures made without pyplot, as the package makes them) are kept with its code.
+sphinx_gallery_conf = {
+    "examples_dirs": ["gallery"],
+    "gallery_dirs": ["auto_gallery"],
+    "filename_pattern": r"/plot_",
+    "image_scrapers": (FigureScraper(),),
+    "download_all_examples": False,
+    "remove_config_comments": True,
+    "within_subsection_order": "FileNameSortKey",
+    "reset_modules": (),
+    "capture_repr": (),
+    "show_memory": False,
+}
+
+# STICKSLIP_DOCS_FAST=1: neither the notebooks nor the gallery's scripts run (a quick look at the text)
+if os.environ.get("STICKSLIP_DOCS_FAST"):
+    nb_execution_mode = "off"
+    sphinx_gallery_conf["plot_gallery"] = "False"
 
 html_theme = "furo" if importlib.util.find_spec("furo") else "alabaster"
 html_title = f"stickslip {release}"
