@@ -18,6 +18,7 @@ import stickslip
 DOCS = Path(__file__).resolve().parent
 sys.path.insert(0, str(DOCS))  # the gallery's image scraper and the inventories' writer
 
+from field_docs import add_field_table  # noqa: E402
 from gallery_support import FigureScraper  # noqa: E402
 from inventories import write_inventories  # noqa: E402
 
@@ -91,3 +92,7 @@ if os.environ.get("STICKSLIP_DOCS_FAST"):
 html_theme = "furo" if importlib.util.find_spec("furo") else "alabaster"
 html_title = f"stickslip {release}"
 html_static_path: list[str] = []
+
+
+def setup(app):
+    app.connect("autodoc-process-docstring", add_field_table)  # after napoleon: the fields' table

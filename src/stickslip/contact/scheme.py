@@ -162,7 +162,7 @@ class ExplicitScheme(ABC):
 
     @property
     def closed_line(self) -> bool:
-        """Whether the contact line closes on itself (a ring, a bore): the classification then
+        """Whether the contact line closes on itself (a ring, a bore) — the classification then
         looks for travelling waves around it; on an open line (a pad, a block) it does not."""
         return True
 
@@ -174,13 +174,13 @@ class ExplicitScheme(ABC):
 
     @property
     def kinetic_law(self) -> tuple[float, int, float]:
-        """The kinetic coefficient and how it depends on the slip speed: ``(f, kind, parameter)``
+        """The kinetic coefficient and how it depends on the slip speed — ``(f, kind, parameter)``
         of `kernel.kinetic_coefficient` (default ``(params.friction, COULOMB, 0)``: a constant)."""
         return (float(self.params.friction), COULOMB, 0.0)
 
     @property
     def pressure_scaling(self) -> tuple[float, np.ndarray]:
-        """A friction coefficient that depends on the contact pressure: ``(n, s)``, the exponent of
+        """A friction coefficient that depends on the contact pressure — ``(n, s)``, the exponent of
         ``(P / P_ref)^(-n)`` and, per contact node, ``P / P_ref`` per unit of the kernel's normal
         reaction (default ``(0, [])``: none)."""
         return (0.0, np.zeros(0))
@@ -283,7 +283,7 @@ class ExplicitScheme(ABC):
 
     @property
     def order(self) -> int:
-        """Order of accuracy in time: 2 for central differences (``beta2 = 1/2``), 1 otherwise."""
+        """Order of accuracy in time — 2 for central differences (``beta2 = 1/2``), 1 otherwise."""
         return 2 if self.beta2 == 0.5 else 1
 
     @property
@@ -297,7 +297,7 @@ class ExplicitScheme(ABC):
 
     @property
     def speed_scales(self) -> dict:
-        """Named reference speeds [rad per unit time]: a classification reports ``c`` over each."""
+        """Named reference speeds [rad per unit time] — a classification reports ``c`` over each."""
         return {}
 
     def step_factor(self, omega) -> np.ndarray:

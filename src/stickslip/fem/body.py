@@ -67,7 +67,7 @@ class Body:
 
     @property
     def areas(self) -> np.ndarray:
-        """Signed area of every cell (positive: counter-clockwise); of the straight-sided cell
+        """Signed area of every cell (positive — counter-clockwise); of the straight-sided cell
         through its corners on a quadratic mesh."""
         return _areas(self.points, self.corners)
 

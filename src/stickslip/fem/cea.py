@@ -166,7 +166,7 @@ class CeaModes(Result):
 
     @property
     def unstable(self) -> np.ndarray:
-        """Growing (flutter): ``Re s > NEUTRAL |s|``."""
+        """Growing (flutter) — ``Re s > NEUTRAL |s|``."""
         return self.growth_rate > NEUTRAL * np.abs(self.s)
 
     def to_dict(self) -> dict:

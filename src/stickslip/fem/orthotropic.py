@@ -121,7 +121,7 @@ class Orthotropic:
 
     @property
     def young(self) -> float:
-        """The stiffest of the moduli [Pa]: the scale of strains and loads (`stickslip.fem.assembly`)."""
+        """The stiffest of the moduli [Pa] — the scale of strains and loads (`stickslip.fem.assembly`)."""
         return float(max(self.e1, self.e2, self.e3 or 0.0))
 
     @property
@@ -131,7 +131,7 @@ class Orthotropic:
 
     @property
     def p_wave_speed(self) -> float:
-        """The fastest quasi-longitudinal wave in the plane [m/s]: the largest eigenvalue of the
+        """The fastest quasi-longitudinal wave in the plane [m/s] — the largest eigenvalue of the
         acoustic tensor ``Gamma_ik = C_ijkl n_j n_l`` over directions ``n`` (every half degree),
         over the density."""
         D = self.stiffness

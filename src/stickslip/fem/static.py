@@ -125,7 +125,7 @@ class SteadyContact(Result):
 
     @property
     def loaded(self) -> bool:
-        """The contact carries a load: the total normal force exceeds ``load_floor`` (``LOAD_FLOOR``
+        """The contact carries a load — the total normal force exceeds ``load_floor`` (``LOAD_FLOOR``
         times Young's modulus times the body's size, a strain far below any preload and far above
         round-off). Otherwise the body merely touches and which nodes are active is round-off."""
         return bool(self.pressure.sum() > self.load_floor)

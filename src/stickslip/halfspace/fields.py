@@ -255,7 +255,7 @@ class StickSlipWave(Result):
 
     @property
     def tau_xy(self) -> float:
-        """Remote shear stress over G: ``tau*_xy = -T - mu tau*_yy`` (from the definition of T*)."""
+        """Remote shear stress over G — ``tau*_xy = -T - mu tau*_yy`` (from the definition of T*)."""
         return -self.T - self.mu * self.tau_yy
 
     @property

@@ -133,7 +133,7 @@ class InverseSolution(Result):
 
     @property
     def admissible(self) -> np.ndarray:
-        """Physically admissible loading: ``T > 0`` (``mu* < mu``) and ``v > v*`` (forward slip)."""
+        """Physically admissible loading — ``T > 0`` (``mu* < mu``) and ``v > v*`` (forward slip)."""
         return (self.T > 0) & (self.v > self.v_star)
 
     def to_dict(self) -> dict:

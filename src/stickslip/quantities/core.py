@@ -111,7 +111,7 @@ class Quantity:
     # -- validation ---------------------------------------------------------------------
     @property
     def allowed(self) -> str:
-        """What a value must be, for a message: ``in (0, 1e15] kg (why)``."""
+        """What a value must be, for a message — ``in (0, 1e15] kg (why)``."""
         if self.choices:
             return "one of " + ", ".join(self.choices)
         kind = "an integer " if self.integer else ""

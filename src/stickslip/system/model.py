@@ -156,7 +156,7 @@ class Contact:
 
     @property
     def unilateral(self) -> bool:
-        """True with a normal direction: the normal force follows the structure and may vanish."""
+        """True with a normal direction — the normal force follows the structure and may vanish."""
         return self.normal_direction is not None
 
     def normal_row(self, n: int, extra: int = 0) -> np.ndarray:

@@ -70,7 +70,7 @@ class SteadySliding(Result):
 
     @property
     def growth_rate(self) -> float:
-        """The largest real part of the eigenvalues (1/s): positive when steady sliding is unstable."""
+        """The largest real part of the eigenvalues (1/s) — positive when steady sliding is unstable."""
         return float(self.eigenvalues.real.max())
 
     def to_dict(self) -> dict:
