@@ -46,6 +46,13 @@ def save(fig: Figure, path, dpi: int = 120) -> list[str]:
     return problems
 
 
+def lay_out(fig) -> None:
+    """Lay out ``fig`` as it will be shown (in a notebook, its legends off the other panels); a
+    subfigure is laid out with the figure that holds it."""
+    if isinstance(fig, Figure):
+        fig.tight_layout()
+
+
 def legend_beside(ax, *args, **kwargs):
     """A legend to the right of ``ax``, off its data (the layout makes room for it)."""
     return ax.legend(*args, **{"fontsize": 8, "loc": "upper left", "bbox_to_anchor": (1.02, 1.0),
@@ -192,6 +199,7 @@ def plot_cycle(ds, fig: Figure | None = None) -> Figure:
     oscillator_phase(ax1, ds, "limit cycle")
     ax2.plot(ds["t"], ds["x"], lw=1)
     ax2.set(xlabel="t [s]", ylabel="x [m]")
+    lay_out(fig)
     return fig
 
 
@@ -201,6 +209,7 @@ def plot_trajectory(ds, fig: Figure | None = None) -> Figure:
     oscillator_phase(ax1, ds, "phase portrait")
     modal_line(ax2, ds["t"].values, ds["x"].values, ds["mode"].values)
     ax2.set(xlabel="t [s]", ylabel="x [m]", title="displacement (colours as in the phase portrait)")
+    lay_out(fig)
     return fig
 
 
@@ -217,6 +226,7 @@ def plot_branch(ds, fig: Figure | None = None) -> Figure:
         ax.plot(p[~stable], ds[key].values[~stable], "x", color="tab:red", ms=3, label="unstable")
         ax.set(xlabel=f"{name.replace('_', ' ')} [{units}]", ylabel=f"{key} [{ds[key].attrs.get('units', '1')}]")
     legend_beside(axes[-1])
+    lay_out(fig)
     return fig
 
 
@@ -299,6 +309,7 @@ def plot_interface_fields(ds, fig: Figure | None = None) -> Figure:
     a = ds.attrs
     axes[0].set_title(f"c = {a.get('c', float('nan')):.3g}, b = {a.get('b', float('nan')):.4g}, "
                       f"v = {a.get('v', float('nan')):.3g}, T = {a.get('T', float('nan')):.3g}")
+    lay_out(fig)
     return fig
 
 
