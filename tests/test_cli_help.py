@@ -13,7 +13,7 @@ import pytest
 import typer
 
 from stickslip.cli import app, run
-from stickslip.cli.helptext import EXAMPLES, MODEL, PANELS, command_tree
+from stickslip.cli.helptext import ARGUMENTS, EXAMPLES, MODEL, PANELS, command_tree
 
 ROOT = Path(__file__).resolve().parents[1]
 OSC = ["--mass", "1", "--stiffness", "1", "--normal-force", "1", "--belt-speed", "0.2", "--fs", "0.6", "--fd", "0.4"]
@@ -68,14 +68,16 @@ def test_every_option_is_listed_once_under_its_heading(path, command, capsys):
     assert run([*path.split(), "--help"]) == 0
     text = capsys.readouterr().out
     headings = [m.group(1) for m in re.finditer(r"^(\S[^:\n]*):$", text, flags=re.M) if m.group(1) != "Example"]
-    assert headings == [h for h in [MODEL, *PANELS] if h in headings]  # in the declared order
+    assert headings == [h for h in [ARGUMENTS, MODEL, *PANELS] if h in headings]  # in the declared order
     sections = dict(zip(headings, re.split(r"^\S[^:\n]*:$", text, flags=re.M)[1:]))
     for param in command.params:
-        if param.param_type_name != "option" or param.hidden:
+        if param.hidden:
             continue
-        flag = param.opts[0]
-        where = [h for h, body in sections.items() if re.search(rf"^\s+{re.escape(flag)}\b", body, flags=re.M)]
-        expected = next((h for h, names in PANELS.items() if param.name in names), MODEL)
+        argument = param.param_type_name == "argument"
+        ctx = command.make_context(path, [], resilient_parsing=True)
+        flag = param.get_help_record(ctx)[0].split()[0] if argument else param.opts[0]
+        where = [h for h, body in sections.items() if re.search(rf"^\s+{re.escape(flag)}(\s|$)", body, flags=re.M)]
+        expected = ARGUMENTS if argument else next((h for h, names in PANELS.items() if param.name in names), MODEL)
         assert where == [expected], (flag, where)
 
 

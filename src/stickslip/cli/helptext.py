@@ -23,6 +23,7 @@ PANELS = {
     "Other": {"help", "version", "install_completion", "show_completion"},
 }
 MODEL = "Model"
+ARGUMENTS = "Arguments"
 
 #: Command path -> one command line that runs as written (from a clone of the repository where
 #: it names a file of ``examples/``); the tests parse every one against its command.
@@ -84,14 +85,14 @@ def panel_of(name: str) -> str:
 
 
 class SectionedCommand(typer.core.TyperCommand):
-    """A command whose help lists its options under the headings of `PANELS`."""
+    """A command whose help lists its arguments, then its options under the headings of `PANELS`."""
 
     def format_options(self, ctx, formatter) -> None:
-        sections: dict[str, list] = {MODEL: []} | {heading: [] for heading in PANELS}
+        sections: dict[str, list] = {ARGUMENTS: [], MODEL: []} | {heading: [] for heading in PANELS}
         for param in self.get_params(ctx):
             record = param.get_help_record(ctx)
-            if record is not None and param.param_type_name == "option":
-                sections[panel_of(param.name)].append(record)
+            if record is not None:
+                sections[ARGUMENTS if param.param_type_name == "argument" else panel_of(param.name)].append(record)
         for heading, rows in sections.items():
             if rows:
                 with formatter.section(heading):

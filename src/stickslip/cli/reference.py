@@ -13,7 +13,7 @@ import sys
 from pathlib import Path
 
 from . import app
-from .helptext import EXAMPLES, MODEL, PANELS, command_tree, panel_of
+from .helptext import ARGUMENTS, EXAMPLES, MODEL, PANELS, command_tree, panel_of
 
 _SPECIAL = re.compile(r"([\\`*_\[\]<>|#])")
 
@@ -36,14 +36,14 @@ def _command(command, path: str, level: int) -> list[str]:
     ctx = command.make_context(f"stickslip {path}", [], resilient_parsing=True)
     lines = [f"{'#' * level} `stickslip {path}`", "", _text(command.help), "", "```text",
              f"{ctx.command_path} {' '.join(command.collect_usage_pieces(ctx))}", "```", ""]
-    sections: dict[str, list] = {"Arguments": [], MODEL: []} | {heading: [] for heading in PANELS}
+    sections: dict[str, list] = {ARGUMENTS: [], MODEL: []} | {heading: [] for heading in PANELS}
     for param in command.get_params(ctx):
         record = param.get_help_record(ctx)
         if record is not None:
-            sections["Arguments" if param.param_type_name == "argument" else panel_of(param.name)].append(record)
+            sections[ARGUMENTS if param.param_type_name == "argument" else panel_of(param.name)].append(record)
     for heading, rows in sections.items():
         if rows and heading != "Other":
-            kind = "Argument" if heading == "Arguments" else "Option"
+            kind = "Argument" if heading == ARGUMENTS else "Option"
             lines += [f"**{heading}**", "", f"| {kind} | Meaning |", "|---|---|"]
             lines += [f"| `{_cell(flag)}` | {_cell(_escaped(meaning))} |" for flag, meaning in rows]
             lines.append("")
