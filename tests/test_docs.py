@@ -10,7 +10,8 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def _blocks(name):
-    return re.findall(r"```python\n(.*?)```", (ROOT / name).read_text(), flags=re.S)
+    """The Python blocks of a page: ```python, or an executed page's ```{code-cell} python."""
+    return re.findall(r"```(?:python|\{code-cell\} python)\n(.*?)```", (ROOT / name).read_text(), flags=re.S)
 
 
 def test_readme_example_runs(tmp_path, monkeypatch):
