@@ -101,6 +101,10 @@ def zero_slip(system: System, z: np.ndarray, stuck: list[int]) -> np.ndarray:
     return z
 
 
+def _frictionless(contact) -> bool:
+    return contact.friction.static == 0.0 and float(contact.friction.kinetic(0.0)) == 0.0
+
+
 def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, released: dict, flows: dict,
                   piece: int = 0) -> tuple:
     """The contact states from ``z`` on: contacts not in ``zero`` keep ``states``; those in
@@ -108,8 +112,8 @@ def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, relea
     (released in the force's direction), ``released`` (contact -> sign) slip at once. ``flows``
     caches the flows of the force history's ``piece``."""
     st = list(states)
-    for i in zero:
-        st[i] = released.get(i, 0)
+    for i in zero:  # a frictionless contact never sticks: its force is 0 whichever way it slips
+        st[i] = released.get(i, 1 if _frictionless(system.contacts[i]) else 0)
     n = system.dofs
     rigid = [i for i, c in enumerate(system.contacts) if c.rigid]
     for _ in range(len(zero) + len(rigid) + 1):
@@ -137,6 +141,8 @@ def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, relea
         terms = np.abs(flow.A[n:2 * n]) @ np.abs(z)  # the size of what the accelerations sum (their round-off)
     for i in moving:
         c = system.contacts[i]
+        if _frictionless(c):
+            continue  # no tangential force whichever way it slips, so no paradox
         rate = -c.direction @ a  # d v_r / dt
         size = np.abs(c.direction) @ terms + 1e-300
         if st[i] * rate < -1e-9 * size:
