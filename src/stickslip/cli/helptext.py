@@ -84,16 +84,22 @@ def panel_of(name: str) -> str:
     return next((heading for heading, names in PANELS.items() if name in names), MODEL)
 
 
+def help_sections(command, ctx) -> dict[str, list[tuple[str, str]]]:
+    """Heading -> the ``(name, help)`` records of ``command``'s parameters listed under it: the
+    arguments, then the options by `panel_of`, in the order of the headings (some may be empty)."""
+    sections: dict[str, list] = {ARGUMENTS: [], MODEL: []} | {heading: [] for heading in PANELS}
+    for param in command.get_params(ctx):
+        record = param.get_help_record(ctx)
+        if record is not None:
+            sections[ARGUMENTS if param.param_type_name == "argument" else panel_of(param.name)].append(record)
+    return sections
+
+
 class SectionedCommand(typer.core.TyperCommand):
     """A command whose help lists its arguments, then its options under the headings of `PANELS`."""
 
     def format_options(self, ctx, formatter) -> None:
-        sections: dict[str, list] = {ARGUMENTS: [], MODEL: []} | {heading: [] for heading in PANELS}
-        for param in self.get_params(ctx):
-            record = param.get_help_record(ctx)
-            if record is not None:
-                sections[ARGUMENTS if param.param_type_name == "argument" else panel_of(param.name)].append(record)
-        for heading, rows in sections.items():
+        for heading, rows in help_sections(self, ctx).items():
             if rows:
                 with formatter.section(heading):
                     formatter.write_dl(rows)

@@ -13,7 +13,7 @@ import sys
 from pathlib import Path
 
 from . import app
-from .helptext import ARGUMENTS, EXAMPLES, MODEL, PANELS, command_tree, panel_of
+from .helptext import ARGUMENTS, EXAMPLES, command_tree, help_sections
 
 _SPECIAL = re.compile(r"([\\`*_\[\]<>|#])")
 
@@ -36,12 +36,7 @@ def _command(command, path: str, level: int) -> list[str]:
     ctx = command.make_context(f"stickslip {path}", [], resilient_parsing=True)
     lines = [f"{'#' * level} `stickslip {path}`", "", _text(command.help), "", "```text",
              f"{ctx.command_path} {' '.join(command.collect_usage_pieces(ctx))}", "```", ""]
-    sections: dict[str, list] = {ARGUMENTS: [], MODEL: []} | {heading: [] for heading in PANELS}
-    for param in command.get_params(ctx):
-        record = param.get_help_record(ctx)
-        if record is not None:
-            sections[ARGUMENTS if param.param_type_name == "argument" else panel_of(param.name)].append(record)
-    for heading, rows in sections.items():
+    for heading, rows in help_sections(command, ctx).items():
         if rows and heading != "Other":
             kind = "Argument" if heading == ARGUMENTS else "Option"
             lines += [f"**{heading}**", "", f"| {kind} | Meaning |", "|---|---|"]
