@@ -22,10 +22,12 @@ import re
 from typing import Mapping
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from . import __version__
 from .quantities import declared
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["CONVENTIONS", "SOURCE", "REFERENCES", "finish", "for_file", "from_file", "load_result", "is_udunits", "flag_attrs", "plain_attrs",
            "stamp"]

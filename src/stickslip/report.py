@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Iterable, Sequence
 
-import xarray as xr
+import lazy_loader as lazy
 
 from .cf import finish, for_file, from_file
 from . import __version__, plotting
@@ -38,6 +38,8 @@ from .errata import ERRATA, anchor, to_markdown
 from .errors import ParameterError
 from .files import to_netcdf
 from .figures import Check, FigureSpec, registry
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 #: A figure's record in the data folder: ``<key>`` + this.
 RECORD_SUFFIX = ".report.json"

@@ -18,10 +18,12 @@ import html
 from typing import ClassVar
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from .cf import finish
 from .quantities import lookup
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["Result", "scalars"]
 

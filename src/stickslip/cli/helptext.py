@@ -8,6 +8,8 @@ options under the headings of `PANELS` (an option not named there is a model par
 
 from __future__ import annotations
 
+import functools
+
 import typer
 import typer.core
 
@@ -118,8 +120,12 @@ def example_epilog(line: str) -> str:
     return f"Example:\n\n\b\n  {line}"
 
 
+@functools.lru_cache(maxsize=None)
 def command_tree(app: typer.Typer):
-    """The click command of ``app``, each command carrying its example as its epilog."""
+    """The click command of ``app``, each command carrying its example as its epilog; built once
+    per process (typer's conversion of the signatures costs about 0.1 s) and reused by every call
+    of `stickslip.cli.run`: click's commands keep no state between calls (each call makes its
+    own context)."""
     root = typer.main.get_command(app)
 
     def attach(command, path: tuple[str, ...]) -> None:

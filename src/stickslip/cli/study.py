@@ -47,6 +47,7 @@ import typer
 from ..errors import MISSING, NoSolutionError, ParameterError
 from ..quantities import COMMON, MAX_POINTS
 from .common import Overwrite, declared, scheduler_option, emit, output_folder, progress_bar, units_of
+from .helptext import command_tree
 
 _CLICK_ERROR = next(c for c in typer.BadParameter.__mro__ if c.__name__ == "ClickException")  # typer's own click
 Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
@@ -125,7 +126,7 @@ def _key(param) -> str:
 
 
 def _leaf(app, words: tuple):
-    command = typer.main.get_command(app)
+    command = command_tree(app)
     for word in words:
         command = getattr(command, "commands", {}).get(word)
         if command is None:
@@ -134,7 +135,7 @@ def _leaf(app, words: tuple):
 
 
 def _commands(app, command=None, prefix=()) -> list[str]:
-    command = command or typer.main.get_command(app)
+    command = command or command_tree(app)
     out = []
     for name, sub in sorted(getattr(command, "commands", {}).items()):
         words = (*prefix, name)

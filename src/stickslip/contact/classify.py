@@ -32,13 +32,15 @@ from typing import ClassVar
 from dataclasses import dataclass, field
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from ..results import Result
 from ..quantities import COMMON as Q
 from ..cf import finish
 from ..errors import ParameterError
 from .states import SEPARATION, STATE_NAMES, STICK, count_zones, regime_code, regime_name
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["RegimeResult", "classify", "pattern_shift", "pattern_speed"]
 

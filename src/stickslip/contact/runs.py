@@ -30,7 +30,7 @@ from pathlib import Path
 from typing import Callable, ClassVar
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from ..results import Result
 from ..quantities import COMMON as Q
@@ -39,6 +39,8 @@ from ..errors import NoSolutionError, ParameterError
 from ..files import content_digest, exclusive, to_netcdf
 from .scheme import StepState
 from .states import SEPARATION, SLIP_POS, STATE_ATTRS, STATE_NAMES, state_fractions
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["MAX_VOLUME", "MAX_WORK", "RunFormat", "RunRecord", "schedule", "prepare", "save", "resume", "loop",
            "run_explicit", "run_to_dataset", "results_view", "dataset_to_run", "settings_key", "snapshot_due",

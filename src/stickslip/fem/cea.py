@@ -33,13 +33,15 @@ from typing import ClassVar
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as sla
-import xarray as xr
+import lazy_loader as lazy
 
 from ..quantities import FEM as Q
 from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
 from ..results import Result
 from .scheme import BodyScheme, ContactProblem
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["CeaModes", "linearised", "count_sketch", "eigenvalues_near", "covered", "complex_eigenvalues", "NEUTRAL"]
 

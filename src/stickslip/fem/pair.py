@@ -59,7 +59,7 @@ from typing import ClassVar
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as sla
-import xarray as xr
+import lazy_loader as lazy
 
 from .. import validation as check
 from ..cf import finish
@@ -70,6 +70,8 @@ from ..results import Result
 from .assembly import BodySystem, transport_operators
 from .static import ITERATIONS, PRESSURE_ITERATIONS, settled, within_friction
 from .surfaces import MAX_SPEED
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["Mortar", "PairProblem", "PairSteady", "Rotation", "Translation", "mortar", "sliding", "steady_pair"]
 

@@ -25,7 +25,7 @@ from typing import ClassVar
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as sla
-import xarray as xr
+import lazy_loader as lazy
 
 from .. import validation as check
 from ..quantities import FEM as Q
@@ -36,6 +36,8 @@ from ..results import Result
 from .assembly import BodySystem
 from .boundary import tributary_lengths
 from .surfaces import ContactFrames
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["settled", "within_friction", "SteadyContact", "frame_rotation", "steady_contact", "problem_attrs", "LOAD_FLOOR", "ITERATIONS"]
 

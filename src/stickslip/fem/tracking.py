@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 import dask
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from scipy.optimize import linear_sum_assignment
 
 from ..cf import finish
@@ -41,6 +41,8 @@ from ..sweep import run_sweep, worker_pool
 from .cea import NEUTRAL, complex_eigenvalues, count_sketch, linearised
 from .config import load_config, read_toml, resolve_key
 from .scheme import BodyScheme, ContactProblem
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["cea_sweep", "track", "Tracked", "MIN_MAC", "SKETCH"]
 

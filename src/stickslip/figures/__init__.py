@@ -25,7 +25,9 @@ import importlib
 from dataclasses import dataclass, field, replace
 from typing import Callable
 
-import xarray as xr
+import lazy_loader as lazy
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["Check", "FigureSpec", "close_check", "registry", "FIGURES"]
 

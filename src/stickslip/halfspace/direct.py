@@ -24,7 +24,7 @@ from typing import ClassVar
 from dataclasses import dataclass
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from scipy.optimize import brentq
 
 from ..results import Result
@@ -33,6 +33,8 @@ from ..quantities import HALFSPACE as Q
 from ..errors import NoSolutionError, ParameterError
 from .inverse import system_factor
 from .waves import radok
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["DirectSolution", "direct_problem", "direct_map", "cbar_grid"]
 

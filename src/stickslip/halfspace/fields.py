@@ -40,7 +40,7 @@ from dataclasses import dataclass, field
 import math
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from scipy.special import roots_jacobi
 
 from ..results import Result
@@ -50,6 +50,8 @@ from ..errors import NoSolutionError, ParameterError
 from .arrays import MAX_B, b_array
 from .inverse import inverse_problem
 from .waves import Radok, radok
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 #: The totals ``Sigma_*`` are ``stress_*`` in datasets and files: a netCDF name may not differ from
 #: another (``sigma_*``, the perturbation) by case alone (CF 2.3).

@@ -35,7 +35,7 @@ from dataclasses import dataclass
 import math
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from scipy.optimize import brentq
 
 from ..results import Result
@@ -44,6 +44,8 @@ from ..quantities import HALFSPACE as Q
 from ..errors import NoSolutionError, ParameterError
 from .arrays import MAX_B_ALGEBRA, b_array
 from .waves import Radok, radok
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["SYSTEMS", "InverseSolution", "inverse_problem", "system_matrix", "determinant",
            "closed_form", "printed_closed_form", "inverse_map", "b_for_loading", "system_factor"]

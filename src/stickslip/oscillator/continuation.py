@@ -20,7 +20,7 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from ..results import Result
 from ..cf import finish
@@ -30,6 +30,8 @@ from ..errors import NoSolutionError, ParameterError
 from .cycle import LimitCycle, characterise, limit_cycle, return_map, solve_section
 from .model import Oscillator
 from .simulate import Engine, params_attrs
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["Branch", "continue_cycle"]
 

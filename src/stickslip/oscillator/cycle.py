@@ -16,8 +16,8 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-import xarray as xr
-from scipy.optimize import minimize_scalar
+import lazy_loader as lazy
+import scipy  # scipy.optimize loads on first use
 
 from ..results import Result
 from ..cf import finish
@@ -25,6 +25,8 @@ from ..quantities import OSCILLATOR as Q
 from ..errors import NoSolutionError
 from .model import Mode, Oscillator
 from .simulate import Engine, Trajectory
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["LimitCycle", "return_map", "limit_cycle", "return_horizon"]
 
@@ -136,17 +138,21 @@ def _x_max(engine: Engine, traj: Trajectory) -> float:
     return best
 
 
-def _v_extreme(traj: Trajectory, sign: int) -> float:
+def _v_extreme(engine: Engine, traj: Trajectory, sign: int) -> float:
     """Largest (``sign=+1``) or smallest (``-1``) velocity: from the segments' ranges where the
-    numeric flows found them, else sampled, then refined."""
-    if traj.speed_ranges is not None and len(traj.speed_ranges) == len(traj.modes):
-        return float(max(r[1] for r in traj.speed_ranges) if sign > 0 else min(r[0] for r in traj.speed_ranges))
+    numeric flows found them or the closed form gives them (exact), else sampled, then refined."""
+    ranges = traj.speed_ranges
+    if (ranges is None or len(ranges) != len(traj.modes)) and engine.closed:
+        ranges = [(seg.v0, seg.v0) if seg.mode == Mode.STICK
+                  else engine.flows[seg.mode].velocity_range(seg.x0, seg.v0, seg.duration) for seg in traj.segments]
+    if ranges is not None and len(ranges) == len(traj.modes):
+        return float(max(r[1] for r in ranges) if sign > 0 else min(r[0] for r in ranges))
     t, _, v, _ = traj.sample(4001)
     i = int(np.argmax(sign * v))
     seg = next(s for s in traj.segments if s.t0 <= t[i] <= s.t1)
     if seg.mode == Mode.STICK:
         return float(v[i])
-    res = minimize_scalar(lambda s: -sign * float(seg.sample(np.array([s]))[1][0]), bounds=(seg.t0, seg.t1),
+    res = scipy.optimize.minimize_scalar(lambda s: -sign * float(seg.sample(np.array([s]))[1][0]), bounds=(seg.t0, seg.t1),
                           method="bounded", options={"xatol": 1e-12 * max(1.0, seg.t1)})
     return float(sign * max(-res.fun, sign * v[i]))
 
@@ -163,7 +169,7 @@ def characterise(engine: Engine, rm: ReturnMap) -> LimitCycle:
         oscillator=engine.osc, section_x=rm.x, period=traj.t_end, stick_time=durations[Mode.STICK],
         slip_time=durations[Mode.SLIP_POS] + durations[Mode.SLIP_NEG],
         reverse_slip_time=durations[Mode.SLIP_NEG], x_min=rm.x, x_max=_x_max(engine, traj),
-        v_min=_v_extreme(traj, -1), v_max=_v_extreme(traj, +1), floquet_multipliers=np.sort_complex(mults),
+        v_min=_v_extreme(engine, traj, -1), v_max=_v_extreme(engine, traj, +1), floquet_multipliers=np.sort_complex(mults),
         trajectory=traj)
 
 

@@ -18,12 +18,11 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.integrate import DOP853
-from scipy.optimize import brentq
+import scipy  # its submodules load on first use (scipy.optimize, scipy.integrate)
 
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import OSCILLATOR as Q
-from . import kernel, slipkernel
+from . import kernel  # slipkernel (laws that are not affine) is imported where it runs
 from .model import Mode, Oscillator
 
 _EPS = np.finfo(float).eps
@@ -34,14 +33,15 @@ def _sign(value: float, tol: float) -> int:
 
 
 def _root(fun, a: float, b: float) -> float:
-    return brentq(fun, a, b, xtol=1e-300, rtol=4 * _EPS, maxiter=200)
+    return scipy.optimize.brentq(fun, a, b, xtol=1e-300, rtol=4 * _EPS, maxiter=200)
 
 
-def _scan(g, times, levels, tol):
+def _scan(g, times, levels, tol, root=None):
     """First crossing of ``g(t, level) = 0`` over consecutive monotone pieces.
 
     ``times`` is an iterable of increasing times; ``g`` is monotone between
-    neighbours. Returns ``(t, level_index)`` or ``(last_time, None)``.
+    neighbours; ``root(level, ta, tb)`` finds the crossing in a piece (default: Brent's method
+    on ``g``). Returns ``(t, level_index)`` or ``(last_time, None)``.
     """
     times = iter(times)
     ta = next(times)
@@ -52,7 +52,7 @@ def _scan(g, times, levels, tol):
         for index, (level, direction) in enumerate(levels):
             sa, sb = _sign(ga[index], tol), _sign(gb[index], tol)
             if sa != 0 and sb != sa and (direction == 0 or direction == -sa):
-                t = tb if sb == 0 else _root(lambda t: g(t, level), ta, tb)
+                t = tb if sb == 0 else (root(level, ta, tb) if root else _root(lambda t: g(t, level), ta, tb))
                 best = min(best, (t, index), key=lambda p: p[0])
         if best[1] is not None:
             return best
@@ -97,13 +97,21 @@ class AffineSlip:
         xi0 = x0 - self.x_c
         scale = max(abs(v0), math.sqrt(self.w02) * abs(xi0), *(abs(l) for l, _ in levels))
         g = lambda t, level: kernel.velocity_acceleration(self.sigma, self.w02, self.om2, xi0, v0, t)[0] - level
-        t, index = _scan(g, self._pieces(x0, v0, t_max), levels, 16 * _EPS * scale)
+        # each crossing by the compiled event loop's own root finder (safeguarded Newton on the closed form)
+        root = lambda level, ta, tb: kernel.velocity_root(self.sigma, self.w02, self.om2, xi0, v0, level, ta, tb)
+        t, index = _scan(g, self._pieces(x0, v0, t_max), levels, 16 * _EPS * scale, root)
         return (t_max, None) if index is None else (t, index)
 
     def evaluator(self):
         """Callable ``t -> (x, v)`` on the last segment (local time)."""
         x0, v0 = self._x0, self._v0
         return lambda t: self._state(t, x0, v0)
+
+    def velocity_range(self, x0, v0, duration) -> tuple[float, float]:
+        """Smallest and largest velocity over ``[0, duration]`` from ``(x0, v0)``: exact, at the
+        ends and at the acceleration's zeros between them (where the velocity is extreme)."""
+        _, v = self._state(np.fromiter(self._pieces(x0, v0, duration), float), x0, v0)
+        return float(v.min()), float(v.max())
 
     def jacobian(self, t):
         """``d(x, v)(t) / d(x0, v0)``: the matrix exponential, in closed form."""
@@ -157,7 +165,7 @@ class NumericSlip(_Integrated):
         y0 = [x0, v0] + ([1.0, 0.0, 0.0, 1.0] if self.variational else [])
         scale = max(abs(v0), self.osc.omega * abs(x0), *(abs(l) for l, _ in levels), 1e-300)
         atol = np.full(len(y0), self.atol * max(scale, self.osc.belt_speed))
-        solver = DOP853(self._rhs, 0.0, y0, t_max, rtol=self.rtol, atol=atol)
+        solver = scipy.integrate.DOP853(self._rhs, 0.0, y0, t_max, rtol=self.rtol, atol=atol)
         self._pieces, self._extremes = [], [v0]
         tol = 16 * _EPS * scale
         while solver.status == "running":
@@ -205,6 +213,8 @@ class NumericSlip(_Integrated):
 
 def compiled_failure(status: int, value: float):
     """Raise what a compiled run's failure ``status`` (`slipkernel`) means (``value``: the coefficient met)."""
+    from . import slipkernel
+
     if status == slipkernel.BAD_LAW:
         raise ParameterError("mu(v_r)", float(value), f"a friction coefficient {Q['fd'].allowed}")
     raise NoSolutionError("the slip flow could not be integrated (DOP853: the step fell below the round-off of the "
@@ -232,6 +242,8 @@ class CompiledSlip(_Integrated):
         values = np.array([float(l) for l, _ in levels])
         sides = np.array([int(d) for _, d in levels], dtype=np.int64)
         h0 = min(t_max, self._h)
+        from . import slipkernel
+
         run = slipkernel.segment(self.mu, self.slope, self.params, self.p, y0, float(t_max), values, sides,
                                  self.rtol, atol, 16 * _EPS * scale, h0, 64)
         status, index, t, y = run[:4]
@@ -269,6 +281,8 @@ class StepPieces:
         if self._two is None:  # the states without the variational part, made at the first call
             self._two = np.ascontiguousarray(states[:, :2]), np.ascontiguousarray(slopes[:, :2])
         flat = np.ascontiguousarray(t.ravel())
+        from . import slipkernel
+
         x, v = slipkernel.evaluate(*self._args, starts, *self._two, starts.size, flat)
         at_end = flat >= self.end_t  # the end itself: the state the search stopped at
         x[at_end], v[at_end] = self.end

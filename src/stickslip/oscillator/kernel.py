@@ -106,7 +106,7 @@ def _sign(g, tol):
 
 
 @njit(cache=True)
-def _root(sigma, w02, om2, xi0, v0, level, ta, tb):
+def velocity_root(sigma, w02, om2, xi0, v0, level, ta, tb):
     """Root of v(t) = level in [ta, tb], v monotone there: safeguarded Newton."""
     ga = velocity_acceleration(sigma, w02, om2, xi0, v0, ta)[0] - level
     t = 0.5 * (ta + tb)
@@ -189,11 +189,11 @@ def run_affine(p, x0, v0, mode, t_end, max_segments, section, use_section):
                 gb_v, gb_s = vb - V, vb - section
                 sa, sb = _sign(ga_v, tol), _sign(gb_v, tol)
                 if sa != 0 and sb != sa and sa == -s:
-                    dt = tb if sb == 0 else _root(sigma, w02, om2, xi0, v, V, ta, tb)
+                    dt = tb if sb == 0 else velocity_root(sigma, w02, om2, xi0, v, V, ta, tb)
                     which = 0
                 sa, sb = _sign(ga_s, tol), _sign(gb_s, tol)
                 if use_section and s == 1 and sa < 0 and sb != sa:
-                    d2 = tb if sb == 0 else _root(sigma, w02, om2, xi0, v, section, ta, tb)
+                    d2 = tb if sb == 0 else velocity_root(sigma, w02, om2, xi0, v, section, ta, tb)
                     if which < 0 or d2 < dt:
                         dt, which = d2, 1
                 if which >= 0:  # the segment ends in this piece, where the speed is monotone between valid ends

@@ -17,17 +17,17 @@ from functools import cached_property
 from typing import Callable, ClassVar
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from ..results import Result
 from ..cf import finish
 from ..quantities import OSCILLATOR as Q
 from ..errors import NoSolutionError, ParameterError
 from .kernel import run_affine
-from .. import lawkernel
-from . import slipkernel
 from .flows import AffineSlip, CompiledSlip, NumericSlip, StepPieces, compiled_failure
 from .model import Mode, Oscillator
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["Segment", "Trajectory", "simulate", "Engine"]
 
@@ -225,7 +225,11 @@ class Engine:
             raise ParameterError("method", method, "'numeric' or 'auto' for a law that is not affine")
         self.closed = method in ("auto", "closed-form") and osc.friction.affine is not None
         self.osc, self.variational = osc, variational
-        law = None if self.closed or method == "python" else lawkernel.compiled(osc.friction)
+        law = None
+        if not (self.closed or method == "python"):
+            from .. import lawkernel  # compiles the law's callbacks: only for laws that are not affine
+
+            law = lawkernel.compiled(osc.friction)
         self.compiled, self._law, self._rtol = law is not None, law, rtol
 
         def flow(m):
@@ -247,6 +251,8 @@ class Engine:
 
     def _run_compiled(self, x0, v0, t_end, section, max_events):
         """`_run_numeric`'s loop in one compiled call (`slipkernel.run`)."""
+        from . import slipkernel  # laws that are not affine: the compiled flows load with their first run
+
         osc, (mu, slope, numbers) = self.osc, self._law
         allowed = Q["fd"].range
         lo, hi = osc.stick_limits

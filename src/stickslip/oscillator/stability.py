@@ -20,7 +20,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
+import scipy  # scipy.optimize loads on first use
 
 from ..results import Result
 from ..errors import ParameterError
@@ -129,7 +129,7 @@ def hopf_points(osc: Oscillator, parameter: str, lo: float, hi: float, num: int 
     points = []
     for a, b, fa, fb in zip(grid[:-1], grid[1:], values[:-1], values[1:]):
         if fa == 0 or fa * fb < 0:
-            p = a if fa == 0 else brentq(d1, a, b, xtol=1e-14 * max(1.0, abs(b)), rtol=1e-15)
+            p = a if fa == 0 else scipy.optimize.brentq(d1, a, b, xtol=1e-14 * max(1.0, abs(b)), rtol=1e-15)
             at = osc.with_parameter(parameter, p)
             points.append(HopfPoint(parameter, p, at.omega, damping_coefficients(at)[1]))
     return points

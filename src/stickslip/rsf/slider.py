@@ -23,7 +23,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from scipy.integrate import solve_ivp
 
 from ..cf import finish
@@ -31,6 +31,8 @@ from ..errors import NoSolutionError, ParameterError
 from ..quantities import RSF as Q
 from ..results import Result
 from .law import RateState
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["SpringSlider", "SliderRun", "slide", "load_history", "MAX_CALLS", "directional", "complex_jacobian"]
 

@@ -16,13 +16,15 @@ from pathlib import Path
 from typing import Mapping, Sequence
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 import zarr
 
 from ..cf import SOURCE, finish, flag_attrs, plain_attrs
 from ..errors import ParameterError
 from ..files import content_digest
 from ..quantities import lookup
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["SWEEP_FORMAT", "NOT_COMPUTED", "is_vector", "create", "open_group", "verify_store", "damaged",
            "forget", "matches", "write_points", "result", "failures", "tidy"]

@@ -6,11 +6,13 @@ import re
 from dataclasses import dataclass
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from ..cf import finish
 from ..quantities import OSCILLATOR, SYSTEM as Q
 from ..results import Result
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["SystemBranch", "parameter_units"]
 

@@ -17,7 +17,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from scipy.linalg import expm
 
 from ..cf import finish
@@ -27,6 +27,8 @@ from ..results import Result
 from .flow import CLOSING, OPEN, STATE_FLAGS, Flow
 from .model import System
 from .simulate import SystemRun, land, simulate, zero_slip
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["monodromy", "saltation", "jump", "SystemCycle", "limit_cycle", "return_fixed_point", "orbit_scale",
            "without_own", "cycle_dataset", "period_events", "entries", "NEUTRAL", "inside"]

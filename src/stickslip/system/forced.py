@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.linalg
-import xarray as xr
+import lazy_loader as lazy
 
 from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
@@ -31,6 +31,8 @@ from .floquet import NEUTRAL, inside, monodromy
 from .flow import STATE_FLAGS
 from .model import System
 from .simulate import SystemRun, affine_laws, longest_run, simulate
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["ForcedResponse", "forced_response", "stroboscopic_fixed_point", "forcing_period", "extent",
            "stick_basis", "stroboscopic_multipliers"]

@@ -26,7 +26,7 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from scipy.integrate import solve_ivp
 
 from ..cf import finish
@@ -41,6 +41,8 @@ from .flow import OPEN, STATE_FLAGS
 from .simulate import MAX_INSTANT_EVENTS, MAX_NUMBERS
 from .smoothkernel import Compiled, Failed, compiled_laws
 from .steady import SteadySliding
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["RateStateRun", "RateStateSteady", "rate_state_simulate", "rate_state_steady", "is_rate_state", "integrated",
            "RateStateEquations", "start_state", "slowest_state_time"]

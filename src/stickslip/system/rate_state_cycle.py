@@ -15,7 +15,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
@@ -27,6 +27,8 @@ from .model import System
 from .rate_state import (LONGEST, METHODS, RateStateEquations, RateStateRun, rate_state_simulate, rate_state_steady,
                          slowest_state_time)
 from .rate_state_modes import first_mode
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["RateStateCycle", "rate_state_cycle", "orbit_maps", "orbit_size", "psi_lists", "run_states"]
 

@@ -19,7 +19,7 @@ import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
@@ -27,6 +27,8 @@ from ..quantities import SYSTEM as Q
 from ..results import Result
 from .flow import CLOSING, LAW_LIMIT, OPEN, OPENING, STATE_FLAGS, Flow
 from .model import System
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["SystemRun", "Segment", "simulate", "choose_states", "zero_slip", "longest_run", "affine_laws", "land"]
 

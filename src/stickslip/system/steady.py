@@ -32,13 +32,15 @@ from dataclasses import dataclass
 import itertools
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from scipy.linalg import null_space
 
 from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
 from ..results import Result
 from .model import System
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["SteadySliding", "steady_sliding"]
 

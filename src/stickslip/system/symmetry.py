@@ -20,7 +20,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import SYSTEM as Q
@@ -28,6 +28,8 @@ from ..results import Result
 from .floquet import cycle_dataset, entries, monodromy, period_events, return_fixed_point, without_own
 from .model import System
 from .simulate import simulate
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["cell_symmetry", "RelativeCycle", "relative_cycle"]
 

@@ -28,7 +28,7 @@ from typing import ClassVar
 from dataclasses import dataclass
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from scipy.linalg import eigh, eigvals
 
 from ...results import Result
@@ -37,6 +37,8 @@ from ...contact import discrete_rates
 from ...errors import ParameterError
 from ..reduced.params import BrakeParams
 from .mesh import FemSystem
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["fourier_block", "fem_frequencies", "max_frequency", "FemGrowth", "fem_growth_rates"]
 

@@ -19,7 +19,7 @@ from typing import ClassVar
 from dataclasses import dataclass
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from ...results import Result
 from ...cf import finish
@@ -28,6 +28,8 @@ from ..reduced.params import BrakeParams
 from ..reduced.steady import steady_sliding
 from .mesh import FemSystem, annulus_mesh, assemble
 from .problem import annulus_problem
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["FemSteady", "steady_state"]
 

@@ -27,12 +27,14 @@ from typing import ClassVar
 from dataclasses import dataclass
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from scipy.optimize import brentq
 
 from ...results import Result
 from ...cf import finish
 from ...quantities import BRAKE as Q
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["ReducedCoefficients", "coefficients", "shape_integrals", "coupling", "neutral_radius_ratio"]
 

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 from numbers import Integral
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from ...results import Result
 from ...cf import finish
@@ -40,6 +40,8 @@ from ...quantities import BRAKE as Q
 from ...errors import ParameterError
 from .coefficients import ReducedCoefficients
 from .params import BrakeParams
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["ModeGrowth", "GrowthRates", "growth_rates", "most_unstable_mode", "growth_rate_limit",
            "unstable_root", "mode_numbers", "grid_growth_rates",

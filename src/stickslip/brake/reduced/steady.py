@@ -25,12 +25,14 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from ...results import Result
 from ...cf import finish
 from ...quantities import BRAKE as Q
 from .coefficients import coefficients, elastic_moduli
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["SteadySliding", "steady_sliding"]
 

@@ -27,7 +27,7 @@ from collections import Counter
 from dataclasses import dataclass, field
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from ...results import Result
 from ...cf import finish
@@ -36,6 +36,8 @@ from ...errors import NoSolutionError, ParameterError
 from ..reduced.params import BrakeParams, PhysicalParams
 from .zones import KINDS, Scaling
 from .solve import TravellingWave, find_waves, solve_layout, travelling_wave
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["WaveEvent", "WaveBranch", "continue_waves", "PARAMETERS"]
 

@@ -13,13 +13,15 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from ...results import Result
 from ...cf import finish
 from ..reduced.params import BrakeParams
 from .boundsco import Layout, passed
 from .zones import KINDS, REVERSE, SEPARATION, SLIP, STICK, Scaling, ZoneFlows
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["Zone", "TravellingWave", "REGIMES", "regime_name"]
 

@@ -36,7 +36,7 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from ...cf import finish
 from ...errors import NoSolutionError, ParameterError
@@ -49,6 +49,8 @@ from ..reduced.params import BrakeParams
 from .result import TravellingWave
 from .stability import RingState, step_ring
 from .zones import SEPARATION, STICK, Scaling
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["ring_system", "WaveSpectrum", "wave_spectrum", "wave_spectra", "sampled_ring", "moreau_difference"]
 

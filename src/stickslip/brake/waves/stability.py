@@ -28,13 +28,15 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from ...results import Result
 from ...cf import finish
 from ...quantities import BRAKE as Q
 from ...errors import ParameterError
 from .zones import Scaling
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["RingState", "step_ring", "WavePersistence", "wave_persistence"]
 

@@ -5,12 +5,14 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
 from ...rsf import RateState, SpringSlider, linear_stability, slide
 from .. import Check, FigureSpec, close_check
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 A, B, DC, SIGMA, F0, V0 = 0.01, 0.015, 1e-5, 1e7, 0.6, 1e-6
 LAWS = ("aging", "slip", "prz")

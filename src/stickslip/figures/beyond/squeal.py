@@ -4,13 +4,15 @@ with a unilateral frictional contact: flutter of steady sliding, the limit cycle
 from __future__ import annotations
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
 from ...friction import Coulomb
 from ...system import Contact, System, limit_cycle, simulate, steady_sliding
 from .. import Check, FigureSpec, close_check
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 K11, K12, K22, KH, N0, V = 1.1, -0.3, 0.5, 0.5, 1.0, 0.5
 MU_CYCLE, DAMPING = 0.7, 0.01

@@ -19,7 +19,7 @@ from __future__ import annotations
 import time
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
@@ -31,6 +31,8 @@ from ...contact.verify import contact_law_residuals, implied_reactions
 from ...errors import ParameterError
 from .. import Check
 from .paper import CASES, GEOMETRY, PAPER_REGIMES
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["METHOD", "MESHES", "case_data", "common_checks", "seeded_check", "runs_text", "separation_zones", "case_plot", "title",
            "spacetime", "waterfall", "spacetime_panels"]

@@ -14,7 +14,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
@@ -23,6 +23,8 @@ from ...contact import REGIME_CODES
 from .. import Check, FigureSpec
 from . import campaign_data
 from .paper import CASES, PAPER_REGIMES
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["compute", "check", "plot", "inputs", "most_frequent", "describe"]
 

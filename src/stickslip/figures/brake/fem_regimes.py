@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
@@ -11,6 +11,8 @@ from ...brake import BrakeParams
 from ...brake.fem import classify_fem, integrate_fem
 from ...contact import STATE_NAMES
 from .. import Check, FigureSpec
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 
 def compute(quick: bool = False) -> xr.Dataset:

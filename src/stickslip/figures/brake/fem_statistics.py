@@ -16,7 +16,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
@@ -26,6 +26,8 @@ from .. import Check, FigureSpec
 from . import campaign_data
 from .campaign_data import outcome_counts
 from .paper import CASES, PAPER_REGIMES
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["THRESHOLD", "compute", "check", "plot", "inputs", "describe"]
 

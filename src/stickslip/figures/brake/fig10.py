@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
 from .. import Check, FigureSpec
 from .fem_cases import METHOD, runs_text, spacetime_panels
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 
 def check(ds) -> list[Check]:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
@@ -11,6 +11,8 @@ from ...brake import BrakeParams, continue_waves, travelling_wave
 from .. import Check, FigureSpec
 from .paper import FIG11
 from .wave_cases import METHOD
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 
 def compute(quick: bool = False) -> xr.Dataset:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ...brake import BrakeParams, classify, integrate, travelling_wave
@@ -10,6 +10,8 @@ from ...brake.ring import initial_from_wave
 from .. import Check, FigureSpec
 from .paper import FIG12
 from .wave_cases import METHOD, common_checks, phase_plot, waves_dataset
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 
 def compute(quick: bool = False) -> xr.Dataset:

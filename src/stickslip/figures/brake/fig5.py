@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from .. import Check, FigureSpec
 from .paper import FIG5
 from .wave_cases import METHOD, common_checks, phase_plot, waves_dataset
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 
 def compute(quick: bool = False) -> xr.Dataset:

@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from .. import Check, FigureSpec
 from .fem_cases import METHOD, case_data, case_plot, common_checks, seeded_check
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 
 def compute(quick: bool = False) -> xr.Dataset:

@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
 from .. import Check, FigureSpec
 from .fem_cases import METHOD, case_data, common_checks, runs_text, seeded_check, spacetime_panels, waterfall
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 
 def compute(quick: bool = False) -> xr.Dataset:

@@ -8,7 +8,7 @@ several grids; each run classified over its last transits.
 from __future__ import annotations
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
@@ -17,6 +17,8 @@ from ...contact import STATE_ATTRS, STATE_NAMES
 from .. import Check, FigureSpec
 from .paper import CASES
 from .ring_runs import PHI, SNAPS, all_true, pad_rows, stack, summary
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 #: Initial conditions of `initial_condition_data`: (label, seeded mode); amplitude 0.1 delta + 1e-3 noise.
 SEEDS = (("mode 2", 2), ("mode 3", 3))

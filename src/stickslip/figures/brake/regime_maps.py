@@ -6,12 +6,14 @@ import tempfile
 from pathlib import Path
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
 from ...brake.maps import REGIME_CODES, ring_regime_map, wave_regime_map
 from .. import Check, FigureSpec
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 OMEGA, MODES = 50.0, 4
 COLOURS = ["#ffffff", "#fdae6b", "#fd8d3c", "#6baed6", "#3182bd", "#31a354", "#cccccc", "#888888"]

@@ -11,7 +11,7 @@ number ``S = g delta sqrt(a) / |D|``).
 from __future__ import annotations
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
@@ -20,6 +20,8 @@ from ...contact import STATE_ATTRS, STATE_NAMES
 from .. import Check, FigureSpec
 from .paper import CASES, PAPER_REGIMES
 from .ring_runs import PHI, SNAPS, all_true, pad_rows, stack, summary
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 
 def compute(quick: bool = False) -> xr.Dataset:

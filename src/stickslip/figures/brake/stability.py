@@ -9,7 +9,7 @@ and the sign of the coupling ``D`` (which drives the flutter) against ``xi``.
 from __future__ import annotations
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
@@ -17,6 +17,8 @@ from ...brake import BrakeParams, coupling, growth_rate_limit, growth_rates, neu
 from ...brake.reduced import elastic_moduli, grid_growth_rates
 from .. import Check, FigureSpec
 from .paper import CASES, GEOMETRY
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 POISSON = (0.2, 0.3, 0.4, 0.45)
 

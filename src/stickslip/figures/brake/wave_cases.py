@@ -9,7 +9,7 @@ the stick-exit return map (an independent route to the same wave).
 from __future__ import annotations
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
@@ -17,6 +17,8 @@ from ...brake import BrakeParams, travelling_wave
 from ...brake.waves import Scaling, ZoneFlows, energy_balance, integrate_wave, stick_exit_orbit
 from .. import Check
 from .paper import GEOMETRY
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["METHOD", "diagnostics", "cases_dataset", "waves_dataset", "common_checks", "phase_plot", "by_zone"]
 

@@ -9,7 +9,7 @@ import math
 import time
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
@@ -18,6 +18,8 @@ from ...brake.waves import moreau_difference, wave_persistence, wave_spectrum
 from ...errors import NoSolutionError
 from .. import Check, FigureSpec
 from .paper import FIG5, FIG11
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 #: The waves of the convergence table: Figure 5's at Omega = 100 rad/s, Figure 11's first, and one
 #: of Figure 11's branch that leaves the shaft (stick, slip, separation).

@@ -13,7 +13,7 @@ Two questions meet here:
 from __future__ import annotations
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
@@ -21,6 +21,8 @@ from ...brake import BrakeParams, classify, find_waves, integrate, perturbed_ste
 from ...brake.ring import initial_from_wave
 from .. import Check, FigureSpec
 from .paper import FIG5, FIG6, FIG12
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 CASES = (("Fig. 5 stick-slip", {**FIG5, "omega": 100.0}, "stick-slip"),
          ("Fig. 6 stick-slip-separation", {**FIG6, "omega": 60.0}, "stick-slip-separation"),

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
@@ -11,6 +11,8 @@ from ...halfspace import direct_map, inverse_problem, radok
 from ...halfspace.direct import cbar_grid
 from .. import Check, FigureSpec
 from .common import FIGURE14, checks
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 
 def compute(quick: bool = True) -> xr.Dataset:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
@@ -14,6 +14,8 @@ from ...halfspace import (Material, StickSlipWave, b_for_loading, decaying_veloc
 from .. import Check, FigureSpec
 from ...halfspace.fields import FILE_NAMES
 from .common import FIGURE14, checks
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 
 def _wave_vars(waves: list[StickSlipWave], x: np.ndarray) -> dict:

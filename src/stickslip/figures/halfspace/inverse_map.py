@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.colors import LogNorm
 from matplotlib.figure import Figure
 
@@ -11,6 +11,8 @@ from ... import plotting
 from ...halfspace import closed_form, decaying_velocity, inverse_map, printed_closed_form, radok
 from .. import Check, FigureSpec
 from .common import FIGURE14, checks
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 
 def compute(quick: bool = True) -> xr.Dataset:

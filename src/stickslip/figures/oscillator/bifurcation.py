@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
@@ -14,6 +14,8 @@ from ...oscillator import (Oscillator, continue_cycle, continue_from_hopf, hopf_
 from ...oscillator.stability import damping_coefficients
 from .. import Check, FigureSpec, close_check
 from .common import osc_attrs, osc_from_attrs
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 STRIBECK = Oscillator(mass=1.0, stiffness=1.0, normal_force=1.0, belt_speed=0.05,
                       friction=Stribeck(fs=0.6, fd=0.4, vs=0.1), damping=0.05)

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
@@ -15,6 +15,8 @@ from ...oscillator.baseline import solve_ivp_switches
 from ...oscillator.simulate import MODE_ATTRS
 from .. import Check, FigureSpec, close_check
 from .common import orbits, osc_attrs, osc_from_attrs, section_after
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 OSC = Oscillator(mass=1.0, stiffness=1.0, normal_force=1.0, belt_speed=0.2, friction=Coulomb(fs=0.6, fd=0.4))
 # inside the equilibrium set S; between S and the cycle; outside; far outside (reverse slip); right side

@@ -7,7 +7,7 @@ import tempfile
 from pathlib import Path
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 from matplotlib.figure import Figure
 
 from ... import plotting
@@ -16,6 +16,8 @@ from ...oscillator.regimes import REGIMES, regime_map
 from .. import Check, FigureSpec
 from .common import osc_attrs, osc_from_attrs
 from .bifurcation import STRIBECK
+
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 DAMPING_CHECK = 0.05
 
