@@ -34,6 +34,7 @@ import shutil
 import time
 from pathlib import Path
 
+import numpy as np
 
 from ... import validation as check
 from ...quantities import BRAKE as Q
@@ -46,7 +47,8 @@ from .classify import classify_fem
 from .run import integrate_fem, perturbed_steady
 from .scheme import FemScheme
 
-__all__ = ["OUTCOMES", "limit_regime", "statistics", "geometry", "geometry_mesh", "budget_of"]
+__all__ = ["OUTCOMES", "limit_regime", "statistics", "geometry", "geometry_mesh", "budget_of", "CANARY_RUNS",
+           "CANARY_FIELDS", "CANARY_RTOL", "canary", "canary_changes"]
 
 #: What each run records (name -> units).
 OUTCOMES = {"regime": REGIME_CODES, "n_zones": "1", "n_fft": "1", "stationary": "1", "residual": "1", "transits": "1",
@@ -191,3 +193,64 @@ def budget_of(attrs, mesh: int | None = None) -> dict:
 def _case_attrs(cases) -> dict:
     return {"case_friction": [c[0] for c in cases], "case_mismatch": [c[1] for c in cases],
             "case_omega": [c[2] for c in cases]}
+
+
+#: The canary of a stored campaign: short seeded runs of its cases, ``(case, xi, beta2)`` on
+#: `geometry_mesh` (``xi = 1.5``: the statistics' coarse mesh, 256 x 16), each `CANARY_TRANSITS`
+#: P-wave transits from `perturbed_steady` with seed 0. Their numbers (`canary`) are stored
+#: with the campaign when it is exported; the present code reproduces them to `CANARY_RTOL` if its
+#: numbers are the campaign's (`canary_changes` says which run moved and by how much).
+CANARY_RUNS = ((0, 1.5, 0.9), (1, 1.5, 0.9), (2, 1.5, 0.9), (2, 2.0, 0.6))
+CANARY_TRANSITS = 1.0
+#: Relative tolerance of a canary number, set before the canary was stored (2026-11-28): a
+#: relative change of 1e-15 in every displacement at the start (a library's last bit)
+#: (three random such changes) moved the numbers by 3e-11 at most over one transit, the state counts not at all.
+CANARY_RTOL = 1e-8
+#: name -> meaning of the numbers of a canary run, at its end (units of the paper: R, R Omega, E).
+CANARY_FIELDS = {"deviation": "|u - u_e|, the displacement's deviation from FE steady sliding (all free dofs)",
+                 "velocity": "|v|, the velocity of every free dof",
+                 "pressure": "sum of the contact nodes' pressures P", "shear": "sum of their friction shears Q",
+                 "energy": "energy of the deviation from FE steady sliding, summed over the run's samples",
+                 "stick": "contact nodes sticking", "slip": "contact nodes slipping",
+                 "reverse_slip": "contact nodes slipping backwards", "separation": "contact nodes separated"}
+
+
+def canary(cases, runs=CANARY_RUNS, transits: float = CANARY_TRANSITS) -> dict[str, list[float]]:
+    """The numbers of `CANARY_FIELDS` for each canary run (``runs``: ``(case, xi, beta2)``) of
+    ``cases`` (``(friction, mismatch [m], Omega [rad/s])``, as `statistics` takes them)."""
+    cases = _check_cases(cases)
+    out: dict[str, list[float]] = {name: [] for name in CANARY_FIELDS}
+    for case, xi, beta2 in runs:
+        f, d, om = cases[int(case)]
+        params = BrakeParams.from_physical(om, d, f, outer_radius=0.1 * xi)
+        n_theta, n_r = geometry_mesh(xi)
+        initial = perturbed_steady(FemScheme(params, n_theta, n_r, beta2), 1e-3, seed=0)
+        run = integrate_fem(params, n_theta, n_r, transits=transits, initial=initial, beta2=beta2,
+                            tail=min(transits, 2.0))
+        state = np.asarray(run.state[-1], dtype=int)
+        numbers = {"deviation": np.linalg.norm(run.kernel["u"] - run.kernel["ref"]),
+                   "velocity": np.linalg.norm(run.kernel["v"]), "pressure": np.sum(run.P[-1]),
+                   "shear": np.sum(run.Q[-1]), "energy": np.sum(run.energy),
+                   **dict(zip(("stick", "slip", "reverse_slip", "separation"), np.bincount(state, minlength=4)))}
+        for name in CANARY_FIELDS:
+            out[name].append(float(numbers[name]))
+    return out
+
+
+def canary_changes(stored: dict, fresh: dict, runs=CANARY_RUNS, cases=None, rtol: float = CANARY_RTOL) -> list[str]:
+    """What moved between a stored canary and a fresh one: one line per run and number beyond
+    ``rtol`` (relative to the stored number), naming the run; empty when nothing moved."""
+    changes = []
+    for name in CANARY_FIELDS:
+        old, new = np.asarray(stored.get(name, []), float), np.asarray(fresh[name], float)
+        if old.shape != new.shape:
+            return [f"the stored canary has {old.size} runs of {name}, the present one {new.size}"]
+        for k, (a, b) in enumerate(zip(old, new)):
+            if not abs(b - a) <= rtol * abs(a):
+                case, xi, beta2 = runs[k]
+                what = f"case {int(case) + 1}" + ("" if cases is None else
+                                                   " (f = {:g}, d = {:g} m, Omega = {:g} rad/s)".format(*cases[int(case)]))
+                n_theta, n_r = geometry_mesh(xi)
+                changes.append(f"{what} on {n_theta} x {n_r} (xi {xi:g}, beta2 {beta2:g}): {name} {a:.10g} -> {b:.10g} "
+                               f"(relative {abs(b - a) / abs(a) if a else float('inf'):.2g}, tolerance {rtol:g})")
+    return changes

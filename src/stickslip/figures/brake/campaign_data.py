@@ -5,9 +5,11 @@ In order of preference:
 1. a campaign run with ``stickslip brake campaign`` into ``<out>/data/brake-fem-campaign/``
    (the default of that command), once every point of its sweep is done;
 2. the campaign result stored with the package (``figures/brake/data/*.nc``, exported by
-   ``stickslip brake campaign --export``), if it was computed by the present code:
-   `model_fingerprint` hashes the code the campaign's numbers come from (its syntax, not its
-   comments or docstrings), so any change of that code makes the stored result stale;
+   ``stickslip brake campaign --export``), if the present code computes its numbers: the
+   campaign is stored with its canary (`stickslip.brake.fem.campaign.canary`: short seeded runs
+   of its cases), which the present code must reproduce to `CANARY_RTOL`; a change of the FE
+   code that keeps the numbers (a refactor, a rename, the 3-D work) keeps the stored campaign,
+   one that moves them makes it stale and says which run moved and by how much;
 3. otherwise a small version computed on the spot (fewer runs, the coarse mesh only), in
    which the paper's claims cannot be settled; the report says so.
 
@@ -20,22 +22,26 @@ import ast
 import contextlib
 import functools
 import hashlib
+import sys
 import tempfile
 from pathlib import Path
 
 import numpy as np
-import xarray as xr
+import lazy_loader as lazy
 
 from ...cf import for_file, from_file, stamp
 from ...files import to_netcdf
+from ...brake.fem.campaign import CANARY_FIELDS, CANARY_RTOL, CANARY_RUNS, CANARY_TRANSITS, canary, canary_changes
 from ...contact import REGIME_ATTRS, REGIME_CODES
 from ...sweep import verify_store
 from .paper import PAPER_REGIMES
 
+xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
+
 _REGIME_NAMES = {v: k for k, v in REGIME_CODES.items()}
 
 __all__ = ["CAMPAIGN_DIR", "STORED_DIR", "model_fingerprint", "find", "inputs", "export", "outcome_counts",
-           "small_store", "summary"]
+           "small_store", "summary", "stored_canary", "present_canary", "canary_verdict", "with_canary"]
 
 #: The campaign's folder inside the report's data folder (``stickslip brake campaign --out``'s default).
 CAMPAIGN_DIR = "brake-fem-campaign"
@@ -43,9 +49,7 @@ CAMPAIGN_DIR = "brake-fem-campaign"
 STORED_DIR = Path(__file__).parent / "data"
 
 
-#: The code a campaign's numbers come from (relative to the package): the annulus by finite
-#: elements and its campaign, the reduced model's steady state, the general FE body it
-#: specialises, the contact scheme, the friction laws, the cases of the paper.
+#: The code a campaign's numbers come from (relative to the package), for `model_fingerprint`.
 MODEL_CODE = ("brake/fem", "brake/reduced", "fem", "contact", "friction.py", "figures/brake/paper.py")
 
 
@@ -58,14 +62,12 @@ def _without_docstrings(tree: ast.AST) -> ast.AST:
     return tree
 
 
-@functools.lru_cache(maxsize=1)
 def model_fingerprint() -> str:
-    """SHA-256 (16 hex digits) of the code that computes a campaign (`MODEL_CODE`), as Python
-    reads it: the syntax tree of each module without its docstrings, so comments, docstrings
-    and layout do not count and every change of a statement does. (The bits of short runs, the
-    fingerprint until 2026-11-26, changed with the libraries: a run's stick/slip switches
-    amplify a change of the last bit of a BLAS sum, 1e-15, to 1e-2 of a reaction within one
-    transit, so a new numpy made the stored campaigns look stale.)"""
+    """Deprecated (0.2; goes in 0.3): a stored campaign is judged by its canary (`canary_verdict`),
+    not by a hash of the code's syntax, which changed with every edit of the FE code. SHA-256
+    (16 hex digits) of the syntax trees of `MODEL_CODE` without their docstrings."""
+    print("stickslip: campaign_data.model_fingerprint is deprecated and goes in 0.3; a stored campaign is "
+          "judged by its canary (campaign_data.canary_verdict)", file=sys.stderr)
     root = Path(__file__).resolve().parents[2]
     files = sorted(f for part in MODEL_CODE
                    for f in ((root / part).rglob("*.py") if (root / part).is_dir() else [root / part]))
@@ -74,6 +76,56 @@ def model_fingerprint() -> str:
         digest.update(f.relative_to(root).as_posix().encode())
         digest.update(ast.dump(_without_docstrings(ast.parse(f.read_text(encoding="utf-8")))).encode())
     return digest.hexdigest()[:16]
+
+
+def _cases(ds: xr.Dataset) -> tuple:
+    """The campaign's cases ``(friction, mismatch [m], Omega [rad/s])`` from its attributes."""
+    return tuple(zip(*(np.atleast_1d(ds.attrs[f"case_{k}"]).astype(float).tolist()
+                       for k in ("friction", "mismatch", "omega"))))
+
+
+def stored_canary(ds: xr.Dataset) -> dict | None:
+    """The canary numbers stored with a campaign (None: stored without one, or with other runs)."""
+    if any(f"canary_{name}" not in ds for name in CANARY_FIELDS):
+        return None
+    runs = tuple(zip(*(ds[f"canary_{k}"].values.tolist() for k in ("case", "xi", "beta2"))))
+    if runs != tuple(tuple(float(x) for x in r) for r in CANARY_RUNS) or \
+            float(ds.attrs.get("canary_transits", -1)) != CANARY_TRANSITS:
+        return None
+    return {name: ds[f"canary_{name}"].values.astype(float).tolist() for name in CANARY_FIELDS}
+
+
+@functools.lru_cache(maxsize=4)
+def present_canary(cases: tuple) -> dict:
+    """The canary of ``cases`` computed by the present code (once per process: a few seconds)."""
+    return canary(cases)
+
+
+def canary_verdict(ds: xr.Dataset) -> list[str]:
+    """Why the present code does not compute the stored campaign ``ds`` (empty: it does): its
+    canary's runs that moved beyond `CANARY_RTOL`, or that it has no canary."""
+    stored = stored_canary(ds)
+    if stored is None:
+        return ["the campaign was stored without the canary of the present code's runs "
+                f"({len(CANARY_RUNS)} runs of {CANARY_TRANSITS:g} transit)"]
+    cases = _cases(ds)
+    return canary_changes(stored, present_canary(cases), CANARY_RUNS, cases, CANARY_RTOL)
+
+
+def with_canary(ds: xr.Dataset) -> xr.Dataset:
+    """``ds`` with the canary of its cases computed by the present code, as variables over ``canary_run``."""
+    numbers = present_canary(_cases(ds))
+    out = ds.drop_vars([v for v in ds.data_vars if str(v).startswith("canary_")])
+    run = "canary_run"
+    for k, key in enumerate(("case", "xi", "beta2")):
+        out[f"canary_{key}"] = (run, np.array([r[k] for r in CANARY_RUNS], float),
+                                {"units": "1", "long_name": f"canary run: {key} (case: index of the campaign's cases)"})
+    for name, meaning in CANARY_FIELDS.items():
+        out[f"canary_{name}"] = (run, np.array(numbers[name]), {"units": "1", "long_name": f"canary run: {meaning}"})
+    out.attrs.update({"canary_transits": CANARY_TRANSITS, "canary_rtol": CANARY_RTOL,
+                      "canary": "short seeded runs of the cases (stickslip.brake.fem.campaign.canary), "
+                                "which the present code must reproduce to canary_rtol"})
+    return out
 
 
 def _complete_store(path: Path) -> xr.Dataset | None:
@@ -98,12 +150,12 @@ def find(kind: str, data_dir: Path | None) -> tuple[xr.Dataset | None, str]:
     stored = STORED_DIR / f"fem_{kind}.nc"
     if stored.exists():
         ds = _tidy(from_file(xr.load_dataset(stored)))
-        if ds.attrs.get("model_fingerprint") == model_fingerprint():
+        moved = canary_verdict(ds)
+        if not moved:
             return ds, (f"the campaign stored with the package ({int(ds['regime'].size)} runs, computed "
                         f"{ds.attrs.get('computed', '?')}, {ds.attrs.get('compute_seconds', float('nan')) / 3600:.1f} h "
                         "of compute; rerun with `stickslip brake campaign`)")
-        return None, (f"no campaign for the present code: the stored one was computed with other FE code "
-                      f"(fingerprint {ds.attrs.get('model_fingerprint')}, now {model_fingerprint()}); "
+        return None, (f"no campaign for the present code: the stored one's canary moved ({'; '.join(moved)}); "
                       "rerun `stickslip brake campaign`")
     return None, "no campaign found: run `stickslip brake campaign` (about an hour)"
 
@@ -149,9 +201,9 @@ def export(ds: xr.Dataset, kind: str, folder: Path, computed: str) -> Path:
     """Write a finished campaign dataset as ``fem_<kind>.nc`` with its provenance."""
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
-    out = ds.copy()
-    out.attrs.update({"model_fingerprint": model_fingerprint(), "computed": computed,
-                      "compute_seconds": float(np.nansum(ds["seconds"].values))})
+    out = with_canary(ds)
+    out.attrs.pop("model_fingerprint", None)
+    out.attrs.update({"computed": computed, "compute_seconds": float(np.nansum(ds["seconds"].values))})
     path = folder / f"fem_{kind}.nc"
     to_netcdf(for_file(stamp(out, f"exported by stickslip brake campaign ({kind})")), path)
     return path
