@@ -23,6 +23,7 @@ from hypothesis import strategies as st
 
 from stickslip.cli import run
 
+from .budget import examples
 from .fuzz_harness import (BASE, EXTREMES, NEVER_NUMBERS, OPTIONS, PATH_OPTIONS, args_for, bad_places,
                            path_args, problems, trial)
 
@@ -102,7 +103,7 @@ GENERATED = [i for i, (_, option) in enumerate(OPTIONS) if option not in SIZES]
 
 
 @pytest.mark.slow
-@settings(max_examples=60, deadline=None, derandomize=True,  # the same examples in every CI run
+@settings(max_examples=examples(60),  # the bounded profile: the same examples in every CI run
           suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(index=st.sampled_from(GENERATED), value=NUMBERS)
 def test_generated_values_on_generated_options(index, value, tmp_path_factory):

@@ -21,6 +21,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from .budget import examples
 from .fuzz_harness import (BASE, DRAWN_LEFT_OUT, EXTREMES, LONG_BY_DESIGN, OPTIONS, args_for, declared_cases,
                            declared_options, problems, trial, typed)
 from .test_fuzz_api import CALLS
@@ -82,7 +83,7 @@ def _inside_and_around(q):
 
 
 @pytest.mark.slow
-@settings(max_examples=100, deadline=None, derandomize=True,  # the same examples in every CI run
+@settings(max_examples=examples(100),  # the bounded profile: the same examples in every CI run
           suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(data=st.data())
 def test_values_drawn_from_each_declared_range(data, tmp_path_factory):

@@ -11,6 +11,8 @@ from hypothesis import strategies as st
 from stickslip import validation as check
 from stickslip.errors import ParameterError
 
+from .budget import examples
+
 ANYTHING = st.one_of(st.none(), st.booleans(), st.integers(), st.floats(allow_nan=True, allow_infinity=True),
                      st.text(max_size=5), st.lists(st.integers(), max_size=2), st.complex_numbers())
 
@@ -23,7 +25,7 @@ def _outcome(func, *args):
         return err
 
 
-@settings(deadline=None)  # no timing in tests: a loaded CI machine must not fail them
+@settings(max_examples=examples(100))  # no deadline: the profiles set none (a loaded CI machine must not fail them)
 @given(ANYTHING)
 def test_positive_int_accepts_only_integers_from_one(value):
     out = _outcome(check.positive_int, "x", value)
@@ -32,7 +34,7 @@ def test_positive_int_accepts_only_integers_from_one(value):
     assert (out == int(value)) if ok else isinstance(out, ParameterError)
 
 
-@settings(deadline=None)  # no timing in tests: a loaded CI machine must not fail them
+@settings(max_examples=examples(100))  # no deadline: the profiles set none (a loaded CI machine must not fail them)
 @given(ANYTHING)
 def test_count_is_bounded(value):
     out = _outcome(check.count, "x", value, 1000)
@@ -41,7 +43,7 @@ def test_count_is_bounded(value):
     assert (out == int(value)) if ok else (isinstance(out, ParameterError) and "from 1 to 1000" in out.allowed)
 
 
-@settings(deadline=None)  # no timing in tests: a loaded CI machine must not fail them
+@settings(max_examples=examples(100))  # no deadline: the profiles set none (a loaded CI machine must not fail them)
 @given(ANYTHING)
 def test_positive_and_finite_refuse_what_is_not_a_finite_real(value):
     for func in (check.finite, check.positive, check.nonnegative):

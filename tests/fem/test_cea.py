@@ -14,6 +14,7 @@ from stickslip.errors import ParameterError
 from stickslip.fem.cea import complex_eigenvalues, covered
 
 from .test_scheme import PARAMS, general_annulus
+from ..budget import examples
 
 
 def _reference(fem):
@@ -117,7 +118,7 @@ def _envelope_minimum(centres, radii, lo, hi, points=200001):
     return h.min()
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200))
 @given(st.lists(st.tuples(st.floats(0.01, 10.0), st.floats(0.1, 20.0)), min_size=1, max_size=6),
        st.floats(0.1, 1.0))
 def test_the_covered_strip_is_never_wider_than_the_discs_cover(steps, end):

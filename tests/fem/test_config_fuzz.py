@@ -16,6 +16,8 @@ from hypothesis import strategies as st
 
 from stickslip.cli import run
 
+from ..budget import examples
+
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "block_on_belt"
 
 #: key -> (its line in block.toml, the TOML to put there with {v} the value)
@@ -51,7 +53,7 @@ def _finite(x) -> bool:
     return not isinstance(x, float) or math.isfinite(x)
 
 
-@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=examples(60), suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(key=st.sampled_from(sorted(KEYS)), value=VALUES)
 def test_a_generated_value_in_any_key_gives_finite_numbers_or_one_line(folder, key, value, capsys):
     old, new = KEYS[key]

@@ -24,6 +24,7 @@ from stickslip.system.rate_state_modes import mode_events
 from stickslip.system.smoothkernel import Compiled, Failed, compiled_laws
 
 from .pair_reference import stick_slip_pair
+from ..budget import examples
 
 N, FS, FD, VS = 10.0, 0.6, 0.4, 0.05
 M1, M2, K1, K2, KC, C1, V1, V2 = 1.0, 0.5, 2e3, 1e3, 300.0, 2.0, 2.0, 0.05
@@ -131,7 +132,7 @@ def test_the_pairs_cycle_followed_along_its_belt_speed_closes_under_the_integrat
     assert np.abs(ref[-1] - x0).max() < 1e-6 * np.ptp(ref, axis=0).max()
 
 
-@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=examples(40), suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(vs=st.one_of(st.floats(allow_nan=True, allow_infinity=True),
                     st.sampled_from([0.0, 5e-324, 1e-300, 1e-12, 1e-9, 1e4, 1e300, -0.05, "0.05", True, None, [0.05]])),
        fs=st.sampled_from([0.6, 0.4, 10.0]))
