@@ -122,6 +122,7 @@ def test_readme_command_lines_use_only_options_their_commands_have():
         assert not unknown, (line, unknown)
 
 
+@pytest.mark.slow  # two rate-and-state cycles and a branch of four (Radau): the slowest test of the fast set, 112 s
 def test_rsf_page_runs(monkeypatch):
     monkeypatch.chdir(ROOT)  # it reads an example file by its path in the repository
     namespace = {}

@@ -35,6 +35,24 @@ def test_reproduce_one_figure_and_resume(tmp_path, capsys):
     assert json.loads(capsys.readouterr().out)["figures"][0]["cached"] is True
 
 
+def test_each_figure_says_when_it_starts_and_ends_as_it_goes(tmp_path, capsys, monkeypatch):
+    """Issue 47: a log without a terminal (capsys is none) shows each figure's start and end as the
+    run goes, not at its end: a run killed in its second figure has said that the first ended
+    (with its checks) and that the second started."""
+    from stickslip.figures.oscillator import fig3
+
+    def killed(quick, **options):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(fig3, "compute", killed)
+    assert run(["reproduce", "--out", str(tmp_path), "--quick", "--only", "fig2,fig3"]) == 130
+    err = capsys.readouterr().err.splitlines()
+    started = [line for line in err if line.startswith("fig2: started") or line.startswith("fig3: started")]
+    assert [line.split(":")[0] for line in started] == ["fig2", "fig3"] and "figure 2 of 2" in started[1], err
+    ended = next(line for line in err if line.startswith("fig2: done"))
+    assert "10 of 10 checks pass" in ended and err.index(ended) < err.index(started[1]), err
+
+
 def test_unknown_figure_is_a_usage_error(tmp_path, capsys):
     code = run(["reproduce", "--out", str(tmp_path), "--only", "fig99"])
     err = capsys.readouterr().err

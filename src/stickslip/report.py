@@ -19,6 +19,7 @@ import datetime as _dt
 import hashlib
 import inspect
 import json
+import logging
 import mimetypes
 import os
 import re
@@ -40,6 +41,8 @@ from .files import to_netcdf
 from .figures import Check, FigureSpec, registry
 
 xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
+
+log = logging.getLogger("stickslip.report")
 
 #: A figure's record in the data folder: ``<key>`` + this.
 RECORD_SUFFIX = ".report.json"
@@ -169,9 +172,12 @@ def reproduce(out: Path, *, quick: bool = False, only: str | None = None, force:
     data_dir.mkdir(parents=True, exist_ok=True)
     fingerprint = source_fingerprint()
     summary = Summary(out, quick, fingerprint=fingerprint)
-    for spec in specs:
+    begun = time.perf_counter()
+    for number, spec in enumerate(specs, 1):
         if progress:
             progress(spec)
+        log.info("%s: started (figure %d of %d, %s elapsed): %s", spec.key, number, len(specs),
+                 _elapsed(time.perf_counter() - begun), spec.title)
         start = time.perf_counter()
         source = registry()[spec.data_from] if spec.data_from else spec
         ds, cached = _load_or_compute(source, data_dir, quick, fingerprint, force and source is spec)
@@ -189,7 +195,17 @@ def reproduce(out: Path, *, quick: bool = False, only: str | None = None, force:
             fingerprint=fingerprint, version=__version__, python=platform.python_version()))
         report = write_report(summary)  # keep the report current while the run proceeds
         summary.reported, summary.unreadable = [o.spec.key for o in report.outcomes], report.unreadable
+        done = summary.outcomes[-1]
+        failed = [c for c in done.checks if not c.passed and not c.claim]
+        log.info("%s: %s in %.1f s%s: %d of %d checks pass%s", spec.key, "FAILED" if failed else "done", done.seconds,
+                 " (from its checkpoint)" if cached else "", sum(c.passed for c in done.checks), len(done.checks),
+                 f", {len(done.not_reproduced)} paper claim(s) not reproduced" if done.not_reproduced else "")
     return summary
+
+
+def _elapsed(seconds: float) -> str:
+    minutes, seconds = divmod(int(round(seconds)), 60)
+    return f"{minutes} min {seconds:02d} s" if minutes else f"{seconds} s"
 
 
 # --- records: one per figure, the report is rendered from all of them -------------------------------

@@ -72,6 +72,19 @@ def _as_typed(argv: list[str] | None, exc: ParameterError) -> ParameterError:
     return ParameterError(typed(exc.name), exc.value, exc.allowed, also)
 
 
+class _Stderr(logging.StreamHandler):
+    """A handler writing to whatever ``sys.stderr`` is when a record comes (a live progress display
+    of rich redirects it, so that log lines go above the display instead of through it)."""
+
+    @property
+    def stream(self):
+        return sys.stderr
+
+    @stream.setter
+    def stream(self, value):
+        pass
+
+
 class _OneLine(logging.Formatter):
     def format(self, record):
         text = " ".join(record.getMessage().split())
@@ -83,7 +96,7 @@ def _logs_on_stderr():
     """The library's log records (``stickslip.*``: a sweep's dashboard, its failed or recomputed
     points) on stderr, one line each, for the block."""
     logger = logging.getLogger("stickslip")
-    handler = logging.StreamHandler(sys.stderr)
+    handler = _Stderr()
     handler.setFormatter(_OneLine())
     level = logger.level
     logger.addHandler(handler)
