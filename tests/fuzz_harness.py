@@ -83,8 +83,8 @@ BASE = {
 _CONFIG: list[str] = []
 
 
-#: A status line of a long job without a terminal (`stickslip.cli.common.progress_bar`).
-_PROGRESS = re.compile(r"^[\w .-]+: \S+ of \S+ done(, about .+ left)?$")
+#: A status line of a long job without a terminal (`stickslip.cli.status`): a loop's progress, or the phase.
+_PROGRESS = re.compile(r"^[\w .-]+: (\S+ of \S+ done(, about .+ left)?|.+, [\d.]+ (s|min|h) so far)$")
 
 
 def example_sweep() -> str:

@@ -13,9 +13,10 @@ import sys
 import warnings
 
 import typer
+from rich.console import Console
 
 from ..errors import NoSolutionError, ParameterError
-from . import brake, fem, halfspace, oscillator, reproduce, rsf, study, system
+from . import brake, fem, halfspace, oscillator, reproduce, rsf, status, study, system
 from .helptext import Typer, command_tree
 
 # typer vendors its own copy of click (older releases re-export click's classes):
@@ -117,7 +118,9 @@ def run(argv: list[str] | None = None) -> int:
     try:
         # numeric warnings are not for the user: a result that went NaN or infinite is refused
         # by `common.emit` (one line, exit 1), a finite one is printed
-        with warnings.catch_warnings(), _logs_on_stderr():
+        words = [w for w in (sys.argv[1:] if argv is None else argv)[:2] if not w.startswith("-")]
+        with warnings.catch_warnings(), _logs_on_stderr(), \
+                status.heartbeat(" ".join(["stickslip", *words]), Console(stderr=True).is_terminal):
             warnings.simplefilter("ignore", RuntimeWarning)
             result = command_tree(app).main(args=argv, prog_name="stickslip", standalone_mode=False)
         return result if isinstance(result, int) else 0

@@ -20,6 +20,7 @@ from rich.text import Text
 
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import FEM, MAX_POINTS, Quantity, lookup
+from . import status
 
 def declared(quantity: Quantity, flag: str, note: str = "", **options):
     """A typer option that reads the declaration ``quantity``: its help is the declaration's
@@ -352,55 +353,17 @@ def output_folder(name: str, path: Path, suffix: str | None = None) -> Path:
     return path
 
 
-#: Without a terminal, `progress_bar` writes a status line at most this often [s].
-STATUS_SECONDS = 60.0
-
-
-def _status_lines(label: str):
-    """``progress(done, total)`` printing ``label: done of total, about T left`` on stderr every
-    `STATUS_SECONDS` (the time left from the rate since the first call), and when the last
-    point is done if a line was printed before: a job shorter than `STATUS_SECONDS` prints
-    nothing."""
-    import time
-
-    start, last = [], [0.0]
-
-    def tell(done, total):
-        now = time.monotonic()
-        if not start:
-            start.append((now, done))
-            last[0] = now
-        finished = done >= total * (1 - 1e-9)
-        printed = last[0] > start[0][0]
-        if (finished and not printed) or (not finished and now - last[0] < STATUS_SECONDS) or \
-                (finished and last[0] == math.inf):
-            return
-        last[0] = math.inf if finished else now
-        done = min(done, total)
-        (t0, d0), rate = start[0], None
-        if done > d0 and now > t0:
-            rate = (done - d0) / (now - t0)
-        left = f", about {_duration((total - done) / rate)} left" if rate and not finished else ""
-        print(f"{label}: {done:.6g} of {total:.6g} done{left}", file=sys.stderr, flush=True)
-
-    return tell
-
-
-def _duration(seconds: float) -> str:
-    return f"{seconds:.0f} s" if seconds < 120 else (f"{seconds / 60:.0f} min" if seconds < 7200 else
-                                                     f"{seconds / 3600:.1f} h")
-
-
 @contextlib.contextmanager
 def progress_bar(label: str):
     """A transient rich progress bar on stderr (with the time left); yields the library's
     ``progress(done, total)`` callback. Without a terminal on stderr (a pipe, a log file, a
-    batch job) a line every `STATUS_SECONDS` says how far it is and the time left."""
+    batch job) the command's heartbeat (`stickslip.cli.status`) writes a line at most every
+    `~stickslip.cli.status.STATUS_SECONDS` saying how far the loop is and the time left."""
     from rich.progress import Progress, TimeElapsedColumn
 
     console = Console(stderr=True)
     if not console.is_terminal:
-        yield _status_lines(label)
+        yield status.progress(label) or (lambda done, total: None)
         return
     with Progress(*Progress.get_default_columns(), TimeElapsedColumn(), console=console, transient=True) as bar:
         task = bar.add_task(label, total=None)

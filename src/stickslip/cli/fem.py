@@ -13,6 +13,7 @@ import typer
 
 from ..quantities import COMMON, FEM as Q
 from ..errors import NoSolutionError, ParameterError
+from . import status
 from .helptext import Typer
 from .common import (FIGURE_HELP, FIGURE_SUFFIXES, Overwrite, Replace, RunOut, Scheduler, XdmfEvery, declared, emit, output_path, overwrite_needs, progress_bar, write_netcdf,
                      xdmf_path, xdmf_snapshots)
@@ -234,6 +235,7 @@ def run(config: Config,
     if window is not None and not (math.isfinite(window) and 0.0 < window <= transits):
         raise ParameterError("--window", window, f"in (0, {transits:g}] transits (at most --transits)",
                              also=("--transits",))
+    status.phase("reading the config and the mesh")
     cfg = _problem(config, set_)
     if cfg.partner is not None:
         return _run_pair(cfg, transits, beta2, time_step, start, amplitude, out, xdmf, volume_every, window, overwrite,
@@ -241,17 +243,21 @@ def run(config: Config,
     if start is Start.stick and not isinstance(cfg.surface, RigidFlat):
         raise ParameterError("--start", start.value, "steady or rest with a rotating cylinder (stick moves the "
                              "whole body with a flat surface)")
+    status.phase("assembling")
     problem = cfg.problem()
     scheme = BodyScheme(problem, beta2, time_step=time_step)
+    status.phase("steady sliding and the stable step" if start is Start.steady else "the preload and the stable step")
     if start is Start.steady:
         initial = perturbed_steady_body(scheme, amplitude)
     else:
         initial = preload_body(scheme, cfg.surface.velocity if start is Start.stick else (0.0, 0.0))
-    with progress_bar("general body") as tick:
+    status.phase("integrating")
+    with progress_bar("transits") as tick:
         result = integrate_body(problem, transits=transits, beta2=beta2, time_step=time_step, initial=initial,
-                                checkpoint=out,
-                                progress=tick, overwrite=overwrite, volume_every=volume_every)
+                                checkpoint=out, progress=_in_transits(tick, transits), overwrite=overwrite,
+                                volume_every=volume_every)
     if xdmf is not None:
+        status.phase("writing the ParaView files")
         write_run_xdmf(result, xdmf)
     _limit_regime(result, window, json)
 
@@ -264,20 +270,30 @@ def _run_pair(cfg, transits, beta2, time_step, start, amplitude, out, xdmf, volu
     if start is not Start.steady:
         raise ParameterError("--start", start.value, "steady with a [partner] (a run of two bodies starts from their "
                              "steady sliding)")
+    status.phase("assembling")
     problem = cfg.problem()
     PairScheme(problem, beta2, time_step=time_step)  # the step and the damping refused before anything runs
-    with progress_bar("pad on partner") as tick:
+    status.phase("integrating (steady sliding of both bodies first)")
+    with progress_bar("transits") as tick:
         result = integrate_pair(problem, transits=transits, amplitude=amplitude, beta2=beta2, time_step=time_step,
-                                checkpoint=out, progress=tick, overwrite=overwrite, volume_every=volume_every)
+                                checkpoint=out, progress=_in_transits(tick, transits), overwrite=overwrite,
+                                volume_every=volume_every)
     if xdmf is not None:
+        status.phase("writing the ParaView files")
         write_run_xdmf(result, xdmf)
     _limit_regime(result, window, json)
+
+
+def _in_transits(tick, transits: float):
+    """A run's ``progress(t, t_end)`` (seconds of its time) as transits done of ``transits``."""
+    return lambda t, t_end: tick(transits * t / t_end if t_end > 0 else transits, transits)
 
 
 def _limit_regime(result, window, json) -> None:
     """Classify a run's limit regime over ``--window`` and print it."""
     from ..fem.run import classify_body
 
+    status.phase("classifying the limit regime")
     try:
         regime = classify_body(result, window)
     except ParameterError as err:

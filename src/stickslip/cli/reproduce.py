@@ -9,6 +9,7 @@ import typer
 from rich.console import Console
 
 from .common import emit, output_folder
+from .status import phase
 
 
 def reproduce(out: Annotated[Path, typer.Option(help="Output directory.")] = Path("results"),
@@ -44,7 +45,7 @@ def reproduce(out: Annotated[Path, typer.Option(help="Output directory.")] = Pat
     status.start()
     try:
         summary = run(out, quick=quick, only=only, force=force,
-                      progress=lambda spec: status.update(f"{spec.key}: {spec.title}"))
+                      progress=lambda spec: (status.update(f"{spec.key}: {spec.title}"), phase(f"figure {spec.key}")))
     finally:
         status.stop()
     if json:
