@@ -80,15 +80,18 @@ class AffineSlip:
 
     def _state(self, t, x0, v0):
         t = np.asarray(t, dtype=float)
-        xi, v = kernel.state(self.sigma, self.w02, self.om2, x0 - self.x_c, v0, t.ravel())
+        kernels = kernel.KERNELS.choose(t.size * kernel.SAMPLE_COST)
+        xi, v = kernels.state(self.sigma, self.w02, self.om2, x0 - self.x_c, v0, t.ravel())
+        kernel.KERNELS.charge(kernels, t.size * kernel.SAMPLE_COST)
         return (xi + self.x_c).reshape(t.shape), v.reshape(t.shape)
 
     def _pieces(self, x0, v0, t_max):
         """0, the zeros of the acceleration in (0, t_max) (lazily), then t_max."""
         t, xi0 = 0.0, x0 - self.x_c
+        next_piece = kernel.KERNELS.choose(0).next_piece
         yield t
         while t < t_max:
-            t = kernel.next_piece(self.sigma, self.w02, self.om2, xi0, v0, t, t_max)
+            t = next_piece(self.sigma, self.w02, self.om2, xi0, v0, t, t_max)
             yield t
 
     def first_crossing(self, x0, v0, t_max, levels):
@@ -96,9 +99,10 @@ class AffineSlip:
         self._x0, self._v0 = x0, v0
         xi0 = x0 - self.x_c
         scale = max(abs(v0), math.sqrt(self.w02) * abs(xi0), *(abs(l) for l, _ in levels))
-        g = lambda t, level: kernel.velocity_acceleration(self.sigma, self.w02, self.om2, xi0, v0, t)[0] - level
-        # each crossing by the compiled event loop's own root finder (safeguarded Newton on the closed form)
-        root = lambda level, ta, tb: kernel.velocity_root(self.sigma, self.w02, self.om2, xi0, v0, level, ta, tb)
+        kernels = kernel.KERNELS.choose(0)
+        g = lambda t, level: kernels.velocity_acceleration(self.sigma, self.w02, self.om2, xi0, v0, t)[0] - level
+        # each crossing by the event loop's own root finder (safeguarded Newton on the closed form)
+        root = lambda level, ta, tb: kernels.velocity_root(self.sigma, self.w02, self.om2, xi0, v0, level, ta, tb)
         t, index = _scan(g, self._pieces(x0, v0, t_max), levels, 16 * _EPS * scale, root)
         return (t_max, None) if index is None else (t, index)
 
@@ -115,7 +119,7 @@ class AffineSlip:
 
     def jacobian(self, t):
         """``d(x, v)(t) / d(x0, v0)``: the matrix exponential, in closed form."""
-        c, s = kernel.damped_cos_sin(self.sigma, self.w02, self.om2, t)
+        c, s = kernel.KERNELS.choose(0).damped_cos_sin(self.sigma, self.w02, self.om2, t)
         return np.array([[c - self.sigma * s, s], [-self.w02 * s, c + self.sigma * s]])
 
 

@@ -1,10 +1,11 @@
-"""Compiled event loop for affine friction laws (closed-form slip segments).
+"""The event loop for affine friction laws (closed-form slip segments), and the closed-form flow.
 
-The same algorithm as `Engine.run` with `AffineSlip` flows, written as one numba
-function over floats so that 10^4 stick-slip cycles take milliseconds. Roots of the
-closed-form velocity are found by Newton's method safeguarded by bisection on a
-bracket where the velocity is monotone (its derivative, the acceleration, is known in
-closed form), to a few ulps.
+The same algorithm as `Engine.run` with `AffineSlip` flows, written as one function over
+floats that numba compiles, so that 10^4 stick-slip cycles take milliseconds; a short job
+(a limit cycle, a run of a few hundred segments) runs the same source interpreted and spares
+numba's start-up (`stickslip.jit`: `KERNELS.choose`). Roots of the closed-form velocity are
+found by Newton's method safeguarded by bisection on a bracket where the velocity is
+monotone (its derivative, the acceleration, is known in closed form), to a few ulps.
 """
 
 from __future__ import annotations
@@ -12,12 +13,12 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+
+from ..jit import KernelSet
 
 _EPS = 2.220446049250313e-16
 
 
-@njit(cache=True)
 def cos_sin(om2, t):
     """``(C, S)`` with ``C = cos(w t)``, ``S = sin(w t)/w`` for ``om2 = w^2`` (cosh, sinh if ``om2 < 0``),
     by series near ``t = 0``."""
@@ -31,7 +32,6 @@ def cos_sin(om2, t):
     return math.cosh(w * t), math.sinh(w * t) / w
 
 
-@njit(cache=True)
 def damped_cos_sin(sigma, w02, om2, t):
     """``e^{sigma t} C`` and ``e^{sigma t} S`` (`cos_sin`), computed without overflow.
 
@@ -52,7 +52,6 @@ def damped_cos_sin(sigma, w02, om2, t):
     return e * c, e * s
 
 
-@njit(cache=True)
 def velocity_acceleration(sigma, w02, om2, xi0, v0, t):
     """Velocity and acceleration at local time t."""
     c, s = damped_cos_sin(sigma, w02, om2, t)
@@ -60,13 +59,11 @@ def velocity_acceleration(sigma, w02, om2, xi0, v0, t):
     return v0 * c + (sigma * v0 - w02 * xi0) * s, a0 * c + (sigma * a0 - w02 * v0) * s
 
 
-@njit(cache=True)
 def _x(sigma, w02, om2, xi0, v0, t):
     c, s = damped_cos_sin(sigma, w02, om2, t)
     return xi0 * c + (v0 - sigma * xi0) * s
 
 
-@njit(cache=True)
 def state(sigma, w02, om2, xi0, v0, t):
     """``(xi, v)`` at the local times ``t`` (an array)."""
     xi, v = np.empty(t.size), np.empty(t.size)
@@ -77,7 +74,6 @@ def state(sigma, w02, om2, xi0, v0, t):
     return xi, v
 
 
-@njit(cache=True)
 def next_piece(sigma, w02, om2, xi0, v0, ta, t_max):
     """The next zero of the acceleration after ``ta`` (or t_max)."""
     a0 = 2 * sigma * v0 - w02 * xi0
@@ -100,12 +96,10 @@ def next_piece(sigma, w02, om2, xi0, v0, ta, t_max):
     return t if ta < t < t_max else t_max
 
 
-@njit(cache=True)
 def _sign(g, tol):
     return 0 if abs(g) <= tol else (1 if g > 0 else -1)
 
 
-@njit(cache=True)
 def velocity_root(sigma, w02, om2, xi0, v0, level, ta, tb):
     """Root of v(t) = level in [ta, tb], v monotone there: safeguarded Newton."""
     ga = velocity_acceleration(sigma, w02, om2, xi0, v0, ta)[0] - level
@@ -129,7 +123,6 @@ def velocity_root(sigma, w02, om2, xi0, v0, level, ta, tb):
     return t
 
 
-@njit(cache=True)
 def run_affine(p, x0, v0, mode, t_end, max_segments, section, use_section):
     """Event loop. ``p = (m, k, c, N, V, mu0, mu1, fs)``.
 
@@ -240,3 +233,11 @@ def run_affine(p, x0, v0, mode, t_end, max_segments, section, use_section):
             break
         mode = mode_next
     return modes[:n], ts[: n + 1], xs[: n + 1], vs[: n + 1], n, status
+
+
+#: Interpreted cost of a segment of `run_affine` and of a sample of `state` [µs] (measured: 16 and 0.9).
+SEGMENT_COST, SAMPLE_COST = 20.0, 1.0
+
+#: The kernels, compiled or interpreted (`stickslip.jit.KernelSet`).
+KERNELS = KernelSet(globals(), ("cos_sin", "damped_cos_sin", "velocity_acceleration", "_x", "state", "next_piece",
+                                "_sign", "velocity_root", "run_affine"))

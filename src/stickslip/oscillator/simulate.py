@@ -23,7 +23,7 @@ from ..results import Result
 from ..cf import finish
 from ..quantities import OSCILLATOR as Q
 from ..errors import NoSolutionError, ParameterError
-from .kernel import run_affine
+from .kernel import KERNELS, SEGMENT_COST
 from .flows import AffineSlip, CompiledSlip, NumericSlip, StepPieces, compiled_failure
 from .model import Mode, Oscillator
 
@@ -284,8 +284,11 @@ class Engine:
         # t_end * omega took 1e7 segments, 6 GB, for a 5e-12 kg block whose cycle has a handful)
         limit = int(min(max_events, 4096, 64 + 4 * max(1.0, t_end * osc.omega)))
         while True:
-            modes, t, x, v, n, status = run_affine(p, x0, v0, int(osc.initial_mode(x0, v0)), float(t_end), limit,
-                                                   0.0 if section is None else float(section), section is not None)
+            kernels = KERNELS.choose(limit * SEGMENT_COST)  # a short job runs interpreted (`stickslip.jit`)
+            modes, t, x, v, n, status = kernels.run_affine(p, x0, v0, int(osc.initial_mode(x0, v0)), float(t_end),
+                                                           limit, 0.0 if section is None else float(section),
+                                                           section is not None)
+            KERNELS.charge(kernels, n * SEGMENT_COST)
             if status != -2 or limit >= max_events:
                 break
             limit = min(max_events, 4 * limit)  # more segments than guessed: run again
