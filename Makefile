@@ -1,6 +1,10 @@
 # Two entry points (see README): `make reproduce` and `make test`.
 # Each builds the virtual environment on first use; later runs reuse it.
 PYTHON ?= python3
+# the tests and the docs start hundreds of Python processes that import the package (and pytest
+# rewrites every test module): with bytecode caching off (PYTHONDONTWRITEBYTECODE, set on some
+# machines) each one compiles them again, 6 s of every test worker's collection
+unexport PYTHONDONTWRITEBYTECODE
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.stickslip-installed
@@ -22,18 +26,18 @@ reproduce-quick: $(STAMP)
 	$(BIN)/stickslip reproduce --out $(OUT) --quick $(ARGS)
 
 test: $(STAMP)
-	$(BIN)/python -m pytest -q -n 2 -m "not slow" $(ARGS)
+	$(BIN)/python -m pytest -q -n 2 --dist worksteal -m "not slow" $(ARGS)
 
 test-slow: $(STAMP)
-	$(BIN)/python -m pytest -q -n 2 -m slow $(ARGS)
+	$(BIN)/python -m pytest -q -n 2 --dist worksteal -m slow $(ARGS)
 
 test-all: $(STAMP)
-	$(BIN)/python -m pytest -q -n 2 $(ARGS)
+	$(BIN)/python -m pytest -q -n 2 --dist worksteal $(ARGS)
 
 # every property test (Hypothesis), the slow ones too, with ten times the examples, drawn afresh:
 # before an issue is resolved (tests/conftest.py: the profiles)
 test-deep: $(STAMP)
-	$(BIN)/python -m pytest -q -n 2 -m hypothesis --hypothesis-profile deep $(ARGS)
+	$(BIN)/python -m pytest -q -n 2 --dist worksteal -m hypothesis --hypothesis-profile deep $(ARGS)
 
 bench: $(STAMP)
 	for b in $(filter-out benchmarks/timing.py,$(wildcard benchmarks/*.py)); do echo "== $$b"; $(BIN)/python $$b || exit 1; done
