@@ -42,7 +42,7 @@ ALLOWED = {
     "plotting": set(),
     "errata": set(),
     "figures": BASE | MODELS | {"contact", "friction", "sweep", "files", "plotting"},
-    "report": BASE | {"figures", "errata", "plotting", "files", "__init__"},
+    "report": BASE | {"figures", "errata", "plotting", "files", "sweep", "__init__"},  # sweep: its process pool
     "cli": BASE | MODELS | {"friction", "contact", "sweep", "cluster", "files", "plotting", "figures", "report", "__init__"},
     "__main__": {"cli"},
     "__init__": set(),

@@ -45,12 +45,28 @@ def test_each_figure_says_when_it_starts_and_ends_as_it_goes(tmp_path, capsys, m
         raise KeyboardInterrupt
 
     monkeypatch.setattr(fig3, "compute", killed)
-    assert run(["reproduce", "--out", str(tmp_path), "--quick", "--only", "fig2,fig3"]) == 130
+    assert run(["reproduce", "--out", str(tmp_path), "--quick", "--only", "fig2,fig3", "--workers", "1"]) == 130
     err = capsys.readouterr().err.splitlines()
     started = [line for line in err if line.startswith("fig2: started") or line.startswith("fig3: started")]
     assert [line.split(":")[0] for line in started] == ["fig2", "fig3"] and "figure 2 of 2" in started[1], err
     ended = next(line for line in err if line.startswith("fig2: done"))
     assert "10 of 10 checks pass" in ended and err.index(ended) < err.index(started[1]), err
+
+
+def test_figures_computed_in_two_processes_are_recorded_as_computed_one_after_another(tmp_path, capfd):
+    """Issue 47: --workers 2 computes the figures in worker processes (each logs its start) and
+    this process plots, checks and records them: the same checks and numbers as one after
+    another, nothing from a checkpoint."""
+    together, apart = tmp_path / "together", tmp_path / "apart"
+    for folder, workers in ((together, "1"), (apart, "2")):
+        assert run(["reproduce", "--out", str(folder), "--quick", "--only", "fig2,fig3", "--workers", workers,
+                    "--json"]) == 0
+    out, err = capfd.readouterr()
+    for key in ("fig2", "fig3"):
+        records = [json.loads((f / "data" / f"{key}.report.json").read_text()) for f in (together, apart)]
+        assert [(c["name"], c["passed"], c["measured"]) for c in records[0]["checks"]] == \
+            [(c["name"], c["passed"], c["measured"]) for c in records[1]["checks"]]
+        assert not records[1]["cached"] and f"{key}: started" in err and f"{key}: done" in err
 
 
 def test_unknown_figure_is_a_usage_error(tmp_path, capsys):

@@ -15,6 +15,7 @@ them (base64 ``data:`` URIs), so it can be copied alone.
 from __future__ import annotations
 
 import base64
+import contextlib
 import datetime as _dt
 import hashlib
 import inspect
@@ -25,6 +26,7 @@ import os
 import re
 import shutil
 import platform
+import sys
 import time
 import uuid
 from dataclasses import dataclass, field
@@ -126,17 +128,27 @@ def select(only: str | None) -> list[FigureSpec]:
     return [specs[k] for k in keys]
 
 
-def _load_or_compute(spec: FigureSpec, data_dir: Path, quick: bool, fingerprint: str, force: bool):
+def _checkpoint(spec: FigureSpec, data_dir: Path, quick: bool, fingerprint: str):
+    """``(dataset or None, key)``: the figure's checkpoint if it was made by this code (``fingerprint``),
+    from the same data outside the package (a campaign: part of the key) and in this mode."""
     path = data_dir / f"{spec.key}.nc"
     if spec.inputs is not None:  # data from outside the package (a campaign): part of the fingerprint
         fingerprint = f"{fingerprint}+{spec.inputs(data_dir)}"
-    if path.exists() and not force:
+    if path.exists():
         try:
             ds = from_file(xr.load_dataset(path))
             if ds.attrs.get("fingerprint") == fingerprint and bool(ds.attrs.get("quick")) == quick:
-                return ds, True
+                return ds, fingerprint
         except (OSError, ValueError):
             pass  # unreadable checkpoint (killed mid-write by another tool): recompute
+    return None, fingerprint
+
+
+def _load_or_compute(spec: FigureSpec, data_dir: Path, quick: bool, fingerprint: str, force: bool):
+    path = data_dir / f"{spec.key}.nc"
+    ds, fingerprint = _checkpoint(spec, data_dir, quick, fingerprint)
+    if ds is not None and not force:
+        return ds, True
     # figures built on sweeps take a cache folder, so a killed sweep resumes point by point; the
     # folder is this code's and this mode's (a sweep left by other code or the other mode is
     # never resumed: it is removed)
@@ -162,45 +174,111 @@ def _load_or_compute(spec: FigureSpec, data_dir: Path, quick: bool, fingerprint:
     return ds, False
 
 
+def _started(key: str, number: int, total: int, begun: float, title: str) -> None:
+    log.info("%s: started (figure %d of %d, %s elapsed): %s", key, number, total,
+             _elapsed(time.time() - begun), title)
+
+
+def _compute_apart(key: str, data_dir: Path, quick: bool, fingerprint: str, force: bool, number: int, total: int,
+                   begun: float) -> float:
+    """In a worker process: compute figure ``key``'s dataset into its checkpoint; its seconds."""
+    spec = registry()[key]
+    _started(key, number, total, begun, spec.title)
+    start = time.perf_counter()
+    _load_or_compute(spec, data_dir, quick, fingerprint, force)
+    return time.perf_counter() - start
+
+
+def _worker_logs(level: int) -> None:
+    """A worker's log records on its stderr, as the parent's command line shows them (one line each)."""
+    if level <= logging.INFO:
+        handler = logging.StreamHandler(sys.stderr)
+        handler.setFormatter(logging.Formatter("%(message)s"))
+        logging.getLogger("stickslip").addHandler(handler)
+        logging.getLogger("stickslip").setLevel(level)
+
+
+def _by_cost(specs: list[FigureSpec], data_dir: Path) -> list[FigureSpec]:
+    """The figures in the order to start them: the longest first, by their last record (the
+    registry's order where none is kept), so that two workers finish together."""
+    def seconds(spec):
+        try:
+            return float(json.loads(record_path(data_dir, spec.key).read_text())["seconds"])
+        except (OSError, ValueError, KeyError, TypeError):
+            return 0.0
+    return sorted(specs, key=lambda s: -seconds(s))
+
+
 def reproduce(out: Path, *, quick: bool = False, only: str | None = None, force: bool = False,
-              progress=None) -> Summary:
+              progress=None, workers: int = 1) -> Summary:
     """Compute, plot and check the selected figures, record each, then write ``report.md`` and
-    ``report.html`` from every figure recorded in ``out`` (this run's and earlier runs')."""
+    ``report.html`` from every figure recorded in ``out`` (this run's and earlier runs').
+
+    With ``workers > 1`` the figures to compute (those without a checkpoint of this code and
+    mode) are computed in that many worker processes (`stickslip.sweep.process_pool`), the
+    longest first, while this process plots, checks and records each as its data arrive."""
     specs = select(only)
     out = Path(out)
     data_dir = out / "data"
     data_dir.mkdir(parents=True, exist_ok=True)
     fingerprint = source_fingerprint()
     summary = Summary(out, quick, fingerprint=fingerprint)
-    begun = time.perf_counter()
-    for number, spec in enumerate(specs, 1):
-        if progress:
-            progress(spec)
-        log.info("%s: started (figure %d of %d, %s elapsed): %s", spec.key, number, len(specs),
-                 _elapsed(time.perf_counter() - begun), spec.title)
-        start = time.perf_counter()
-        source = registry()[spec.data_from] if spec.data_from else spec
-        ds, cached = _load_or_compute(source, data_dir, quick, fingerprint, force and source is spec)
-        image = f"{spec.key}.png"
-        problems = plotting.save(spec.plot(ds), out / image)  # the figure's legibility problems
-        checks = spec.check(ds) + [Check(
-            "the figure is legible at 100 % (stickslip.plotting.legibility_problems)", not problems,
-            f"{len(problems)} problem(s)", "none: text >= 7 pt, units on axes, no overlaps, nothing on the data, "
-            "every colour code explained", "; ".join(problems[:8]))]
-        method = spec.describe(ds) if spec.describe else spec.method
-        data = str(ds.attrs.get("data_source", ""))  # a campaign figure's data (CF's "source": the producer)
-        summary.outcomes.append(FigureOutcome(
-            spec, checks, time.perf_counter() - start, cached, image, method, data, quick=quick,
-            finished=_dt.datetime.now(_dt.timezone.utc).isoformat(timespec="microseconds"),
-            fingerprint=fingerprint, version=__version__, python=platform.python_version()))
-        report = write_report(summary)  # keep the report current while the run proceeds
-        summary.reported, summary.unreadable = [o.spec.key for o in report.outcomes], report.unreadable
-        done = summary.outcomes[-1]
-        failed = [c for c in done.checks if not c.passed and not c.claim]
-        log.info("%s: %s in %.1f s%s: %d of %d checks pass%s", spec.key, "FAILED" if failed else "done", done.seconds,
-                 " (from its checkpoint)" if cached else "", sum(c.passed for c in done.checks), len(done.checks),
-                 f", {len(done.not_reproduced)} paper claim(s) not reproduced" if done.not_reproduced else "")
+    begun = time.time()
+    registered = registry()
+    sources = {spec.key: registered[spec.data_from] if spec.data_from else spec for spec in specs}
+    forced = {key: force and sources[key] is spec for key, spec in zip(sources, specs)}
+    number = {spec.key: k for k, spec in enumerate(specs, 1)}
+    with contextlib.ExitStack() as stack:
+        apart: dict = {}  # source key -> the future of its computation in a worker
+        if workers > 1:
+            todo = {s.key: s for s in sources.values()
+                    if forced.get(s.key) or _checkpoint(s, data_dir, quick, fingerprint)[0] is None}
+            if len(todo) > 1:
+                from .sweep import process_pool
+
+                pool = stack.enter_context(process_pool(min(workers, len(todo)), _worker_logs,
+                                                        (logging.getLogger("stickslip").getEffectiveLevel(),)))
+                for s in _by_cost(list(todo.values()), data_dir):
+                    apart[s.key] = pool.submit(_compute_apart, s.key, data_dir, quick, fingerprint,
+                                               bool(forced.get(s.key)), number.get(s.key, 0), len(specs), begun)
+        for spec in specs:
+            if progress:
+                progress(spec)
+            source = sources[spec.key]
+            start = time.perf_counter()
+            if source.key in apart:  # computed in a worker: its checkpoint is there once it is done
+                start -= apart.pop(source.key).result()
+                ds, _ = _load_or_compute(source, data_dir, quick, fingerprint, False)
+                cached = False
+            else:
+                _started(spec.key, number[spec.key], len(specs), begun, spec.title)
+                ds, cached = _load_or_compute(source, data_dir, quick, fingerprint, forced[spec.key])
+            _record(summary, spec, ds, cached, start, out, quick, fingerprint)
     return summary
+
+
+def _record(summary: Summary, spec: FigureSpec, ds, cached: bool, start: float, out: Path, quick: bool,
+            fingerprint: str) -> None:
+    """Plot and check figure ``spec`` from ``ds``, keep its outcome and rewrite the report."""
+    image = f"{spec.key}.png"
+    problems = plotting.save(spec.plot(ds), out / image)  # the figure's legibility problems
+    checks = spec.check(ds) + [Check(
+        "the figure is legible at 100 % (stickslip.plotting.legibility_problems)", not problems,
+        f"{len(problems)} problem(s)", "none: text >= 7 pt, units on axes, no overlaps, nothing on the data, "
+        "every colour code explained", "; ".join(problems[:8]))]
+    method = spec.describe(ds) if spec.describe else spec.method
+    data = str(ds.attrs.get("data_source", ""))  # a campaign figure's data (CF's "source": the producer)
+    summary.outcomes.append(FigureOutcome(
+        spec, checks, time.perf_counter() - start, cached, image, method, data, quick=quick,
+        finished=_dt.datetime.now(_dt.timezone.utc).isoformat(timespec="microseconds"),
+        fingerprint=fingerprint, version=__version__, python=platform.python_version()))
+    report = write_report(summary)  # keep the report current while the run proceeds
+    summary.reported, summary.unreadable = [o.spec.key for o in report.outcomes], report.unreadable
+    done = summary.outcomes[-1]
+    failed = [c for c in done.checks if not c.passed and not c.claim]
+    log.info("%s: %s in %.1f s%s: %d of %d checks pass%s", spec.key, "FAILED" if failed else "done", done.seconds,
+             " (from its checkpoint)" if cached else "", sum(c.passed for c in done.checks), len(done.checks),
+             f", {len(done.not_reproduced)} paper claim(s) not reproduced" if done.not_reproduced else "")
 
 
 def _elapsed(seconds: float) -> str:

@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 from typing import Annotated, Optional
 
 import typer
 from rich.console import Console
 
-from .common import emit, output_folder
+from ..quantities import COMMON
+from .common import declared, emit, output_folder
 from .status import phase
 
 
@@ -18,6 +20,9 @@ def reproduce(out: Annotated[Path, typer.Option(help="Output directory.")] = Pat
                   help="Comma-separated figure keys, e.g. fig2,fig3; the report keeps the other figures' sections "
                        "from earlier runs in --out.")] = None,
               force: Annotated[bool, typer.Option("--force", help="Recompute even if a checkpoint exists.")] = False,
+              workers: Annotated[Optional[int], declared(COMMON["workers"], "--workers",
+                                                         "Figures computed at once, each in its own process. "
+                                                         "Default: all cores.")] = None,
               json: Annotated[bool, typer.Option("--json", help="Print one JSON summary on stdout.")] = False,
               list_: Annotated[bool, typer.Option("--list", help="List the figure keys and titles, and exit.")] = False
               ) -> int:
@@ -44,7 +49,7 @@ def reproduce(out: Annotated[Path, typer.Option(help="Output directory.")] = Pat
     status = console.status("starting")
     status.start()
     try:
-        summary = run(out, quick=quick, only=only, force=force,
+        summary = run(out, quick=quick, only=only, force=force, workers=workers or os.cpu_count() or 1,
                       progress=lambda spec: (status.update(f"{spec.key}: {spec.title}"), phase(f"figure {spec.key}")))
     finally:
         status.stop()

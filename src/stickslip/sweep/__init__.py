@@ -18,9 +18,9 @@ version or computation is refused, not resumed.
 """
 
 from .grid import evaluate_point, run_sweep
-from .pool import BLAS_THREADS, worker_pool
+from .pool import BLAS_THREADS, process_pool, worker_pool
 from .store import NOT_COMPUTED, SWEEP_FORMAT, verify_store
 from .stream import FLUSH_SECONDS
 
-__all__ = ["run_sweep", "evaluate_point", "worker_pool", "verify_store", "SWEEP_FORMAT", "NOT_COMPUTED",
+__all__ = ["run_sweep", "evaluate_point", "process_pool", "worker_pool", "verify_store", "SWEEP_FORMAT", "NOT_COMPUTED",
            "FLUSH_SECONDS", "BLAS_THREADS"]

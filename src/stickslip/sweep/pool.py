@@ -13,7 +13,7 @@ import dask
 from ..cluster import client as dask_client, is_distributed
 from ..files import die_with_parent
 
-__all__ = ["BLAS_THREADS", "blas_share", "worker_pool"]
+__all__ = ["BLAS_THREADS", "blas_share", "process_pool", "worker_pool"]
 
 #: The environment variables that set a worker's BLAS and OpenMP threads (`worker_pool`).
 BLAS_THREADS = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
@@ -56,8 +56,21 @@ def worker_pool(scheduler="processes", workers: int | None = None):
             stack.enter_context(blas_share(workers))
             scheduler = stack.enter_context(dask_client(scheduler, workers)).get
         elif scheduler == "processes":
-            stack.enter_context(blas_share(workers))
-            context = multiprocessing.get_context("spawn")
-            extra["pool"] = stack.enter_context(ProcessPoolExecutor(workers, mp_context=context,
-                                                                    initializer=die_with_parent))
+            extra["pool"] = stack.enter_context(process_pool(workers))
         yield lambda calls: dask.compute(*calls, scheduler=scheduler, **extra)
+
+
+def _start(initializer, initargs) -> None:
+    die_with_parent()
+    if initializer is not None:
+        initializer(*initargs)
+
+
+@contextlib.contextmanager
+def process_pool(workers: int | None = None, initializer=None, initargs=()):
+    """A `concurrent.futures.ProcessPoolExecutor` of ``workers`` spawned processes (default the
+    CPU count) for the block: they die with their parent, run ``initializer(*initargs)`` first,
+    and each gets its share of the BLAS threads (`blas_share`)."""
+    with blas_share(workers), ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"),
+                                                  initializer=_start, initargs=(initializer, initargs)) as pool:
+        yield pool

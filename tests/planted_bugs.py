@@ -1,0 +1,749 @@
+"""Planted bugs: does the fast test suite still catch them?
+
+A list of realistic physics and numerics bugs ("mutants"), each one exact text substitution in
+one source file, and a runner that plants each of them in a temporary copy of the repository and
+runs the fast suite (``pytest -m "not slow"``) against it. It is there to show that a change to
+the tests (smaller problems, shared fixtures) keeps catching every planted bug the suite caught
+before: run it before and after, and compare the tables (``tests/planted_bugs_before.md`` is the
+"before").
+
+Run from the repository root with the project's virtual environment::
+
+    .venv/bin/python -m tests.planted_bugs                          # every mutant of MUTANTS
+    .venv/bin/python -m tests.planted_bugs --only osc-saltation-sign,kernel-beta2-factor --out table.md
+    .venv/bin/python -m tests.planted_bugs --uncaught               # the bugs not caught today
+    .venv/bin/python -m tests.planted_bugs --uncaught --together    # ... all planted at once, one run
+    .venv/bin/python -m tests.planted_bugs --check                  # do the substitutions still apply?
+
+For each mutant the runner copies the repository (``--root``, by default the one this file lives
+in; ``.git`` and ``.venv`` left out) with ``shutil.copy2``, so that ``__pycache__`` folders and
+file modification times, hence numba's on-disk caches, stay valid; it then plants the bug (the
+``old`` text must occur exactly once), deletes the numba caches of the mutated module and of
+every module that imports it, directly or not (numba does not notice that a compiled function it
+calls, or a constant it froze, changed), checks that ``stickslip`` is imported from the copy
+(``PYTHONPATH=<copy>/src:<copy>``), and runs
+
+    python -m pytest -x -q -m "not slow" -p no:cacheprovider <hint tests>
+
+with `NOT_A_CHECK` deselected (the FE campaign's code fingerprint fails on any edit of the FE
+and contact code, by design: it would "catch" every mutant there). If the hint tests pass, the
+whole fast suite runs (``-n 2``, ``-x``); a hint that no longer exists or selects nothing falls
+back to it too. The table records the first failing test's node id (``(full)`` when the
+fallback found it) and the seconds taken; a mutant that runs past ``--timeout`` is "timeout".
+Before the mutants, the hint tests of all of them run once on the unmutated copy, as a control:
+they must pass (the table's header says whether they did). One pytest at a time unless
+``--jobs`` says more.
+
+``--uncaught --together`` plants every bug of `UNCAUGHT` in one copy and runs the suite once: if
+it passes, none of them is caught (a cheap check that they are still not caught; if it fails, run
+them one by one to see which).
+
+Each entry of `MUTANTS` (caught today) and `UNCAUGHT` (not caught today; ``why`` says why) has ``id``, ``file`` (relative to the repository root), ``old`` (occurring exactly
+once in the file), ``new``, ``what`` (the bug, one line) and ``hint`` (test files or node ids run
+first, most likely catcher first).
+"""
+
+from __future__ import annotations
+
+import argparse
+import ast
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+#: What a copy of the repository leaves out (the rest is copied, ``__pycache__`` folders included).
+SKIP = (".git", ".venv", ".pytest_cache", ".hypothesis", "build", "results", "*.egg-info", ".mypy_cache",
+        ".ruff_cache", ".ipynb_checkpoints")
+#: Tests that fail on any change of the code by design, not because its numbers went wrong: the
+#: stored FE campaign's code fingerprint (every file under brake/fem, brake/reduced, fem, contact,
+#: friction.py), and the report's use of that campaign (stale, it falls back to the small version).
+#: Left out (``--deselect``), or the full-suite fallback would "catch" every mutant there.
+NOT_A_CHECK = ("tests/figures/brake/test_fem_campaign.py::test_the_stored_campaign_was_computed_by_the_present_code",
+               "tests/figures/brake/test_fem_campaign.py::test_the_report_says_a_campaign_figure_used_the_stored_campaign",
+               # since issue 47 the stored campaign is judged by its canary, which moves with any change of
+               # the FE numbers (rightly: the campaign is stale then); deselected so that a mutant there
+               # counts as caught only by a physics check, as before
+               "tests/figures/brake/test_fem_campaign.py::test_the_stored_campaign_is_what_the_present_code_computes")
+PYTEST = ["-m", "pytest", "-x", "-q", "-m", "not slow", "-p", "no:cacheprovider",
+          *(arg for test in NOT_A_CHECK for arg in ("--deselect", test))]
+
+
+def _m(id, file, old, new, what, hint, why=""):
+    return {"id": id, "file": file, "old": old, "new": new, "what": what, "hint": list(hint),
+            **({"why": why} if why else {})}
+
+
+OSC = "src/stickslip/oscillator/"
+B = "src/stickslip/brake/"
+C = "src/stickslip/contact/"
+S = "src/stickslip/system/"
+F = "src/stickslip/fem/"
+T = "tests/"
+MUTANTS: list[dict] = [
+    _m("osc-reverse-slip-centre", OSC + "kernel.py",
+       "x_c = (s * n_f * mu0 - mu1 * n_f * V) / k", "x_c = (n_f * mu0 - mu1 * n_f * V) / k",
+       "compiled event loop: slip-mode centre without the slip sign (Coulomb force has the wrong sign in reverse slip)",
+       [T + "oscillator/test_simulate.py::test_switching_states_obey_coulomb_law",
+        T + "oscillator/test_simulate.py::test_reverse_slip_spiral_centre_and_growth", T + "oscillator/test_flows.py"]),
+    _m("osc-stick-release-damping", OSC + "kernel.py",
+       "x_hi = (fs * n_f - c * V) / k", "x_hi = (fs * n_f + c * V) / k",
+       "compiled event loop: stick releases at k x = fs N + c V (damping force with the wrong sign in the stick condition)",
+       [T + "oscillator/test_continuation.py::test_damped_coulomb_branch_ends_where_the_return_arc_grazes",
+        T + "oscillator/test_cycle.py"]),
+    _m("osc-sigma-factor2", OSC + "kernel.py",
+       "sigma = -(c - mu1 * n_f) / (2 * m)", "sigma = -(c - mu1 * n_f) / m",
+       "compiled event loop: decay rate of a slip segment twice too large (missing 1/2 in sigma = -c_eff/2m)",
+       [T + "oscillator/test_simulate.py::test_a_falling_law_run_is_not_stopped_by_the_speed_its_closed_form_reaches_after_the_segment", T + "oscillator/test_simulate.py::test_reverse_slip_spiral_centre_and_growth", T + "oscillator/test_simulate.py"]),
+    _m("osc-saltation-sign", OSC + "simulate.py",
+       "np.eye(2) + np.outer(f_plus - f_minus, grad_h) / denom", "np.eye(2) + np.outer(f_minus - f_plus, grad_h) / denom",
+       "oscillator saltation matrix with the jump of the vector field reversed (f- - f+)",
+       [T + "oscillator/test_cycle.py::test_stick_slip_multipliers_are_one_and_zero", T + "oscillator/test_cycle.py::test_nontrivial_multiplier_is_the_slope_of_the_return_map", T + "oscillator/test_cycle.py"]),
+    _m("osc-saltation-transpose", OSC + "simulate.py",
+       "np.eye(2) + np.outer(f_plus - f_minus, grad_h) / denom", "np.eye(2) + np.outer(grad_h, f_plus - f_minus) / denom",
+       "oscillator saltation matrix transposed (grad_h (f+ - f-)^T)",
+       [T + "oscillator/test_cycle.py::test_stick_slip_multipliers_are_one_and_zero", T + "oscillator/test_cycle.py::test_nontrivial_multiplier_is_the_slope_of_the_return_map", T + "oscillator/test_cycle.py"]),
+    _m("osc-effective-damping-sign", OSC + "model.py",
+       "return self.damping + self.normal_force * float(self.friction.slope(self.belt_speed))",
+       "return self.damping - self.normal_force * float(self.friction.slope(self.belt_speed))",
+       "effective damping c - N mu'(V) about steady sliding (Hopf point and equilibrium stability with the wrong sign)",
+       [T + "oscillator/test_stability.py::test_linear_law_is_negative_damping", T + "oscillator/test_stability.py"]),
+    _m("osc-hopf-d3-factor", OSC + "stability.py",
+       "return d1, N * mu3 / 6.0", "return d1, N * mu3 / 2.0",
+       "cubic damping coefficient d3 = N mu'''/2 instead of /6 (Hopf point's small-cycle amplitude)",
+       [T + "oscillator/test_stability.py::test_stribeck_hopf_speed_and_criticality", T + "oscillator/test_stability.py", T + "oscillator/test_continuation.py::test_small_cycles_near_hopf_follow_the_averaged_amplitude"]),
+    _m("osc-release-direction", OSC + "kernel.py",
+       "mode_next = 0 if abs(force) <= fs * n_f else (1 if force > 0 else -1)",
+       "mode_next = 0 if abs(force) <= fs * n_f else (-1 if force > 0 else 1)",
+       "compiled event loop: the mass crossing v = V without sticking slips on in the wrong direction",
+       [T + "oscillator/test_simulate.py::test_switching_states_obey_coulomb_law", T + "oscillator/test_simulate.py", T + "oscillator/test_cycle.py"]),
+    _m("fric-stribeck-slope-sign", "src/stickslip/friction.py",
+       "return -np.sign(v_r) * (self.fs - self.fd) / self.vs * np.exp(-np.abs(v_r) / self.vs)",
+       "return np.sign(v_r) * (self.fs - self.fd) / self.vs * np.exp(-np.abs(v_r) / self.vs)",
+       "Stribeck law: derivative d mu/d v_r with the wrong sign",
+       [T + "test_friction.py::test_slope_matches_finite_difference", T + "oscillator/test_stability.py"]),
+    _m("fric-linear-affine", "src/stickslip/friction.py",
+       "return (self.fd, self.fd * self.tau)", "return (self.fd, self.tau)",
+       "linear weakening: affine form (mu0, mu1) = (fd, tau) instead of (fd, fd tau)",
+       [T + "test_friction.py::test_affine_representation_reproduces_the_law", T + "oscillator/test_simulate.py"]),
+    _m("brake-lame-pressure", B + "reduced/steady.py",
+       "p_e = delta * (xi**2 + 1.0 / (1.0 - 2.0 * nu)) / ((1.0 + nu) * (xi**2 - 1.0))",
+       "p_e = delta * (xi**2 - 1.0 / (1.0 - 2.0 * nu)) / ((1.0 + nu) * (xi**2 - 1.0))",
+       "Lame steady state: contact pressure p_e with the printed sign of the 1/(1 - 2 nu) term",
+       [T + "brake/reduced/test_steady.py::test_steady_state_is_the_lame_solution", T + "brake/reduced/test_steady.py"]),
+    _m("brake-coef-h", B + "reduced/coefficients.py",
+       "h=2.0 * xi**2 * bt / gB", "h=2.0 * xi * bt / gB",
+       "Galerkin coefficient h = 2 xi b~/(gamma B) instead of 2 xi^2 b~/(gamma B)",
+       [T + "brake/reduced/test_coefficients.py::test_code_and_printed_eq13_match_the_galerkin_projection", T + "brake/reduced/test_coefficients.py"]),
+    _m("brake-coef-D-sign", B + "reduced/coefficients.py",
+       "D=(at * C1 - bt * C2) / gB", "D=(at * C1 + bt * C2) / gB",
+       "Galerkin coupling D = (a~ C1 + b~ C2)/(gamma B): wrong sign of the shear term",
+       [T + "brake/reduced/test_coefficients.py::test_code_and_printed_eq13_match_the_galerkin_projection", T + "brake/reduced/test_coefficients.py"]),
+    _m("brake-flutter-rate", B + "reduced/flutter.py",
+       "alpha = np.abs(eps) / (2.0 * beta)  # Re s >= 0", "alpha = np.abs(eps) / beta  # Re s >= 0",
+       "flutter growth rate Re s = |eps|/Im s instead of |eps|/(2 Im s) (factor 2)",
+       [T + "brake/reduced/test_flutter.py::test_growth_rates_match_the_penalised_grid_operator", T + "brake/reduced/test_flutter.py"]),
+    _m("brake-flutter-limit", B + "reduced/flutter.py",
+       "return float(params.friction * abs(c.D) / (2.0 * np.sqrt(c.a)))", "return float(params.friction * abs(c.D) / (2.0 * c.a))",
+       "flutter: the growth-rate limit f|D|/(2a) instead of f|D|/(2 sqrt(a))",
+       [T + "brake/reduced/test_flutter.py::test_growth_rate_increases_with_n_toward_its_limit", T + "brake/reduced/test_flutter.py"]),
+    _m("waves-stick-pressure", B + "waves/zones.py",
+       "return self.g * self.delta + self.D / self.c", "return self.g * self.delta - self.D / self.c",
+       "travelling waves: stick-zone pressure g delta - D/c (sign of the coupling term)",
+       [T + "brake/waves/test_solve.py::test_stick_pressure_is_constant_and_traction_linear", T + "brake/waves/test_solve.py"]),
+    _m("waves-putzer", B + "waves/zones.py",
+       "v = e * (ch * v0 + sh * (-det * x0 + tau * v0))", "v = e * (ch * v0 + sh * (-det * x0 - tau * v0))",
+       "travelling waves: closed-form slip flow (Putzer) with the wrong sign of the damping term in V'",
+       [T + "brake/waves/test_solve.py::test_zone_closed_forms_agree_with_solve_ivp", T + "brake/waves/test_solve.py"]),
+    _m("ring-stencil-swap", B + "ring/scheme.py",
+       "C[0, 1, dj + 1] = [[-c.b / d**2, -dj * c.D / (2 * d)], [dj * c.D / (2 * d), -c.a / d**2]]",
+       "C[0, 1, dj + 1] = [[-c.a / d**2, -dj * c.D / (2 * d)], [dj * c.D / (2 * d), -c.b / d**2]]",
+       "ring stencil: the off-diagonal Laplacian weights of U and V swapped (a for b)",
+       [T + "contact/test_paths.py::test_ring_stencil_is_the_centred_differences_of_eq12", T + "brake/ring/test_scheme.py"]),
+    _m("ring-steady-V", B + "ring/scheme.py",
+       "u[0::2], u[1::2] = p.delta, p.delta * p.friction * c.g / c.h", "u[0::2], u[1::2] = p.delta, p.delta * p.friction * c.h / c.g",
+       "ring: steady sliding V_e = delta f h/g instead of delta f g/h",
+       [T + "brake/ring/test_run.py::test_initial_conditions", T + "brake/ring/test_run.py", T + "brake/ring/test_scheme.py"]),
+    _m("contact-cfl", C + "scheme.py",
+       "undamped = float(np.sqrt(2.0 / self.beta2) / self.omega_max)", "undamped = float(np.sqrt(1.0 / self.beta2) / self.omega_max)",
+       "explicit scheme: CFL limit sqrt(1/beta2)/omega_max instead of sqrt(2/beta2)/omega_max",
+       [T + "brake/ring/test_scheme.py::test_stability_limit_is_the_cfl_condition", T + "brake/ring/test_scheme.py"]),
+    _m("contact-initial-velocity", C + "scheme.py",
+       "return StepState(u0, v0 - self.dt * a, a)", "return StepState(u0, v0 + self.dt * a, a)",
+       "explicit scheme: start velocity v_{-1} = v0 + dt a_{-1} (sign)",
+       [T + "brake/ring/test_scheme.py::test_observed_order_in_time", T + "brake/ring/test_scheme.py", T + "contact/test_exact.py"]),
+    _m("contact-slip-work", C + "scheme.py",
+       "slip = du[..., tangent] - speed * self.dt", "slip = du[..., tangent] + speed * self.dt",
+       "energy books: slip measured as du_t + s dt (friction dissipation wrong)",
+       [T + "contact/test_exact.py::test_discrete_energy_balance_closes", T + "contact/test_conditions.py"]),
+    _m("kernel-beta2-factor", C + "kernel.py",
+       "return (beta2 + 0.5) * dt * dt", "return (beta2 + 1.0) * dt * dt",
+       "contact kernel: multiplier factor (beta2 + 1) dt^2 instead of (beta2 + 1/2) dt^2 (erratum B5 undone)",
+       [T + "contact/test_exact.py::test_a_stuck_block_does_not_creep_and_carries_the_load_from_the_first_step", T + "contact/test_exact.py", T + "contact/test_conditions.py"]),
+    _m("kernel-static-coefficient", C + "kernel.py",
+       "held = fs * g * p\n", "held = f * g * p\n",
+       "contact kernel: a node sticks while |r*| <= f r_n (kinetic) instead of fs r_n (static coefficient ignored)",
+       [T + "contact/test_kinetic_law.py::test_a_falling_law_in_the_kernel_converges_to_the_oscillators_stick_slip_cycle", T + "contact/test_exact.py", T + "contact/test_kinetic_law.py"]),
+    _m("kernel-bilateral", C + "kernel.py",
+       "p = on * max((gap0[j] - u[r]) / cdt2, 0.0)", "p = on * ((gap0[j] - u[r]) / cdt2)",
+       "contact kernel: normal multiplier not clipped at 0 (the contact pulls: bilateral instead of unilateral)",
+       [T + "contact/test_motion.py::test_implied_reactions_vanish_off_the_contact_and_equal_the_kernels", T + "contact/test_motion.py", T + "contact/test_exact.py"]),
+    _m("kernel-predictor-beta2", C + "kernel.py",
+       "vs = v[k] + dt * ((1.0 - beta2) * a[k] + beta2 * A[k])", "vs = v[k] + dt * (beta2 * a[k] + (1.0 - beta2) * A[k])",
+       "explicit predictor: beta2 and 1 - beta2 swapped (invisible at beta2 = 1/2)",
+       [T + "brake/ring/test_scheme.py::test_stability_limit_is_the_cfl_condition", T + "contact/test_conditions.py", T + "brake/ring/test_scheme.py"]),
+    _m("kernel-state-codes", C + "kernel.py",
+       "SLIP_POS * (trial > held) + SLIP_NEG * (trial < -held)", "SLIP_NEG * (trial > held) + SLIP_POS * (trial < -held)",
+       "contact kernel: slip and reverse-slip node states swapped",
+       [T + "contact/test_motion.py::test_the_run_meets_every_state", T + "contact/test_motion.py", T + "contact/test_conditions.py"]),
+    _m("kernel-ring-wrap", C + "kernel.py",
+       "jp = j + 1 if j < N - 1 else 0", "jp = j + 1 if j < N - 1 else 1",
+       "single-ring stencil: periodic wrap of the last node to node 1 instead of node 0 (off by one)",
+       [T + "contact/test_paths.py::test_ring_stencil_is_the_centred_differences_of_eq12", T + "contact/test_paths.py"]),
+    _m("kernel-block-transpose", C + "kernel.py",
+       "a1 += data[b + 2] * x0 + data[b + 3] * x1", "a1 += data[b + 1] * x0 + data[b + 3] * x1",
+       "2x2 block sparse product: reads the block's (0,1) entry for (1,0) (a transposed block)",
+       [T + "contact/test_paths.py::test_ring_stencil_is_the_centred_differences_of_eq12", T + "contact/test_paths.py"]),
+    _m("kernel-weakening-speed", C + "kernel.py",
+       "x = cdt * (excess - f * p) / slope", "x = cdt * (excess - f * p)",
+       "contact kernel: linear-weakening slip speed of the step without its 1/(1 - cdt p f tau) factor",
+       [T + "contact/test_kinetic_law.py::test_the_kinetic_coefficient_is_taken_at_the_slip_speed_it_makes", T + "contact/test_kinetic_law.py"]),
+    _m("coupled-reaction-sign", C + "coupled.py",
+       "u[i] -= scale * mw[k] * fx * inv_mass[i]", "u[i] += scale * mw[k] * fx * inv_mass[i]",
+       "two-body contact: the master's x reaction with the slave's sign (action without reaction)",
+       [T + "fem/test_pair_run.py::test_steady_sliding_of_the_pair_is_a_state_of_the_scheme", T + "fem/test_pair_run.py"]),
+    _m("energy-strain-index", C + "energy.py",
+       "strain = 0.5 * np.einsum(\"mi,mi->m\", Ku, tr.u[1:])", "strain = 0.5 * np.einsum(\"mi,mi->m\", Ku, tr.u[:-1])",
+       "energy books: strain energy u_m K u_m instead of the scheme's u_m K u_{m+1}",
+       [T + "contact/test_exact.py::test_discrete_energy_balance_closes", T + "contact/test_conditions.py"]),
+    _m("energy-numerical", C + "energy.py",
+       "numerical = (beta2 - 0.5) * np.einsum", "numerical = (beta2 - 1.0) * np.einsum",
+       "energy books: numerical dissipation (beta2 - 1) instead of (beta2 - 1/2)",
+       [T + "contact/test_exact.py::test_discrete_energy_balance_closes", T + "contact/test_conditions.py"]),
+    _m("classify-speed-sign", C + "classify.py",
+       "corr = np.real(np.fft.ifft(np.conj(np.fft.fft(a)) * np.fft.fft(b)))",
+       "corr = np.real(np.fft.ifft(np.fft.fft(a) * np.conj(np.fft.fft(b))))",
+       "regime classification: cross-correlation conjugated on the wrong side (wave speed with the wrong sign)",
+       [T + "contact/test_classify.py::test_synthetic_travelling_wave_is_recognised", T + "contact/test_classify.py"]),
+    _m("classify-mode-offset", C + "classify.py",
+       "n_fft = int(np.argmax(power[1:]) + 1)", "n_fft = int(np.argmax(power[1:]))",
+       "regime classification: dominant Fourier mode off by one",
+       [T + "contact/test_classify.py::test_synthetic_travelling_wave_is_recognised", T + "contact/test_classify.py"]),
+    _m("rsf-aging-sign", "src/stickslip/rsf/law.py",
+       "return self.v_ref / dc * np.exp(-psi) - v / dc", "return self.v_ref / dc * np.exp(psi) - v / dc",
+       "rate-and-state aging law: healing term exp(+psi) instead of exp(-psi)",
+       [T + "rsf/test_slider.py::test_a_velocity_step_of_a_stiff_slider_is_the_rigid_closed_form", T + "rsf/test_slider.py"]),
+    _m("rsf-slip-law", "src/stickslip/rsf/law.py",
+       "return -(v / dc) * (psi + log_v - math.log(self.v_ref))", "return -(v / dc) * (psi - log_v + math.log(self.v_ref))",
+       "rate-and-state slip law: ln(V/V0) with the wrong sign in the state evolution",
+       [T + "rsf/test_slider.py::test_a_velocity_step_of_a_stiff_slider_is_the_rigid_closed_form", T + "rsf/test_slider.py", T + "system/test_rate_state.py"]),
+    _m("rsf-regularised", "src/stickslip/rsf/law.py",
+       "log_z = log_v - math.log(2.0 * self.v_ref) + big_psi / self.a", "log_z = log_v - math.log(self.v_ref) + big_psi / self.a",
+       "regularised rate-and-state friction: asinh(V/V0 e^(Psi/a)) without the factor 1/2",
+       [T + "rsf/test_slider.py::test_two_state_variables_and_the_regularised_law_against_an_independent_stiff_solve", T + "rsf/test_slider.py"]),
+    _m("rsf-quasistatic", "src/stickslip/rsf/slider.py",
+       "- mu_psi * (law.b_values @ dpsi)) / mu_v", "+ mu_psi * (law.b_values @ dpsi)) / mu_v",
+       "quasi-static spring-slider: state evolution enters the slip-rate equation with the wrong sign",
+       [T + "rsf/test_slider.py::test_slide_hold_slide_against_an_independent_stiff_solve", T + "rsf/test_slider.py"]),
+    _m("sys-flow-weakening", S + "flow.py",
+       "c_eff -= N * mu1 * np.outer(w, w)", "c_eff += N * mu1 * np.outer(w, w)",
+       "system flow: a falling friction law as positive instead of negative damping",
+       [T + "system/test_simulate.py::test_one_contact_on_one_dof_is_the_oscillator", T + "system/test_simulate.py", T + "system/test_floquet.py"]),
+    _m("sys-saltation-transpose", S + "floquet.py",
+       "return np.eye(f_minus.size) + np.outer(f_plus - f_minus, normal) / rate",
+       "return np.eye(f_minus.size) + np.outer(normal, f_plus - f_minus) / rate",
+       "system saltation matrix transposed: n (f+ - f-)^T",
+       [T + "system/test_floquet.py::test_the_monodromy_is_the_derivative_of_the_run", T + "system/test_floquet.py"]),
+    _m("sys-steady-slope", S + "steady.py",
+       "c_eff += c.normal_force * slope * np.outer(c.direction, c.direction)",
+       "c_eff -= c.normal_force * slope * np.outer(c.direction, c.direction)",
+       "steady sliding of a system: friction slope N mu'(V) subtracted from the damping",
+       [T + "system/test_steady.py::test_one_dof_eigenvalues_are_the_roots_of_its_characteristic_polynomial", T + "system/test_steady.py"]),
+    _m("sys-steady-unilateral", S + "steady.py",
+       "sign * mu * k_n * np.outer(w, nv)", "sign * mu * k_n * np.outer(nv, w)",
+       "steady sliding on a unilateral contact: the friction-normal stiffness coupling transposed",
+       [T + "system/test_unilateral.py::test_steady_sliding_eigenvalues_are_the_closed_form", T + "system/test_steady.py", T + "system/test_unilateral.py"]),
+    _m("sys-forced-stick-multiplier", S + "forced.py",
+       "mult = np.concatenate([np.linalg.eigvals(R), np.zeros(2 * system.dofs - Q.shape[1])])",
+       "mult = np.concatenate([np.linalg.eigvals(R), np.ones(2 * system.dofs - Q.shape[1])])",
+       "forced response: a contact sticking at the section gets the multiplier 1 instead of 0",
+       [T + "system/test_forced.py::test_a_response_that_sticks_at_phase_zero_has_a_zero_multiplier_and_finite_differences_along_the_stick",
+        T + "system/test_forced.py"]),
+    _m("sys-rate-state-complex-step", S + "rate_state.py",
+       "mu = law.kinetic(v) + (1j * law.slope(v) * vr[i].imag", "mu = law.kinetic(v) + (-1j * law.slope(v) * vr[i].imag",
+       "rate-and-state systems: the complex-step derivative of a slip-speed law beside them with the wrong sign",
+       [T + "system/test_rate_state_mixed.py::test_steady_sliding_on_two_belts_has_the_roots_of_its_characteristic_polynomial",
+        T + "system/test_rate_state_mixed.py", T + "system/test_rate_state.py"]),
+    _m("hs-direct-b", "src/stickslip/halfspace/direct.py",
+       "return 1.0 - k * rd.gamma_mod * (v - vs) / (rd.one_minus_b1b2 * rd.cbar * T)",
+       "return 1.0 + k * rd.gamma_mod * (v - vs) / (rd.one_minus_b1b2 * rd.cbar * T)",
+       "direct problem: the stick length b(c) of [53] with the wrong sign of its correction",
+       [T + "halfspace/test_direct.py::test_round_trip_inverse_then_direct", T + "halfspace/test_direct.py"]),
+    _m("brake-fem-fourier-phase", B + "fem/modes.py",
+       "phase = np.exp(1j * n * system.mesh.h_theta * np.arange(-1, 2))",
+       "phase = np.exp(2j * n * system.mesh.h_theta * np.arange(-1, 2))",
+       "FE annulus: Fourier block K_n with the phase of mode 2n (a factor 2 in the angle step)",
+       [T + "brake/fem/test_fem_modes.py::test_fem_frequencies_converge_to_bessel_roots_with_order_two",
+        T + "brake/fem/test_fem_modes.py"]),
+    _m("hs-wave-speed-ratio", "src/stickslip/halfspace/waves.py",
+       "return math.sqrt(2.0 * (1.0 - nu) / (1.0 - 2.0 * nu))", "return math.sqrt((1.0 - nu) / (1.0 - 2.0 * nu))",
+       "half-space: c1/c2 = sqrt((1 - nu)/(1 - 2 nu)) (factor 2 lost)",
+       [T + "halfspace/test_waves.py::test_wave_speeds_from_moduli", T + "halfspace/test_waves.py"]),
+    _m("hs-radok-exponent", "src/stickslip/halfspace/waves.py",
+       "lam = np.arctan2(gamma1, mu * gamma2) / np.pi", "lam = np.arctan2(mu * gamma2, gamma1) / np.pi",
+       "Radok: the exponent lambda = 1/2 - alpha computed as alpha (arctan arguments swapped)",
+       [T + "halfspace/test_waves.py::test_radok_stable_forms_match_definitions", T + "halfspace/test_waves.py", T + "halfspace/test_inverse.py"]),
+    _m("hs-inverse-a12", "src/stickslip/halfspace/inverse.py",
+       "a12 = -np.pi * rd.lam * bm1 * rd.one_minus_b1b2 / (2.0 * rd.gamma1)", "a12 = -np.pi * rd.lam * bm1 * rd.one_minus_b1b2 / rd.gamma1",
+       "inverse problem: the T-coefficient of [54] without its 1/2",
+       [T + "halfspace/test_inverse.py::test_D_negative_H_positive_dense_grid", T + "halfspace/test_inverse.py"]),
+    _m("fem-plane-stress", F + "assembly.py",
+       "return (2 * lam * mu / (lam + 2 * mu) if self.plane == \"stress\" else lam), mu",
+       "return (lam * mu / (lam + 2 * mu) if self.plane == \"stress\" else lam), mu",
+       "FE material: plane-stress lambda* = lambda mu/(lambda + 2 mu) (factor 2 lost)",
+       [T + "fem/test_assembly.py::test_uniform_strain_stores_the_closed_form_energy_and_rigid_motions_none", T + "fem/test_assembly.py", T + "fem/test_materials.py"]),
+    _m("fem-shear-factor", F + "assembly.py",
+       "return 2.0 * w.mu * ddot(sym_grad(u), sym_grad(v)) + w.lam * div(u) * div(v)",
+       "return w.mu * ddot(sym_grad(u), sym_grad(v)) + w.lam * div(u) * div(v)",
+       "FE stiffness: mu eps:eps instead of 2 mu eps:eps",
+       [T + "fem/test_assembly.py::test_uniform_strain_stores_the_closed_form_energy_and_rigid_motions_none", T + "fem/test_assembly.py"]),
+    _m("fem-ortho-rotation", F + "orthotropic.py",
+       "return T.T @ self.material_stiffness @ T", "return T @ self.material_stiffness @ T.T",
+       "orthotropic material: D rotated to x-y as T D_m T^T instead of T^T D_m T (wrong transpose)",
+       [T + "fem/test_orthotropic.py::test_a_turned_axis_is_the_turned_body", T + "fem/test_orthotropic.py"]),
+    _m("fem-ortho-engineering-shear", F + "assembly.py",
+       "a, b = (eu[0, 0], eu[1, 1], 2.0 * eu[0, 1]), (ev[0, 0]", "a, b = (eu[0, 0], eu[1, 1], eu[0, 1]), (ev[0, 0]",
+       "orthotropic stiffness: tensor instead of engineering shear strain on one side of the form",
+       [T + "fem/test_orthotropic.py::test_a_turned_axis_is_the_turned_body", T + "fem/test_orthotropic.py"]),
+    _m("fem-spring-component", F + "boundary.py",
+       "diag[1::2] += spring.stiffness[1] * share", "diag[1::2] += spring.stiffness[0] * share",
+       "boundary springs: the y spring takes the x stiffness",
+       [T + "fem/test_boundary.py::test_a_spring_meets_a_linear_field_with_its_exact_integral", T + "fem/test_boundary.py"]),
+    _m("fem-pressure-sign", F + "boundary.py",
+       "per_node = load.pressure * inward + length[..., None]", "per_node = -load.pressure * inward + length[..., None]",
+       "boundary load: a pressure pulls instead of pushes",
+       [T + "fem/test_boundary.py::test_a_uniform_load_gives_its_resultant_and_moment", T + "fem/test_boundary.py"]),
+    _m("cea-circulatory-sign", F + "cea.py",
+       "rows = sp.identity(K.shape[0], format=\"csr\") - P", "rows = sp.identity(K.shape[0], format=\"csr\") + P",
+       "CEA: tangential rows K_t + f K_n instead of K_t - f K_n (friction coupling sign)",
+       [T + "fem/test_linearisation.py::test_the_block_on_a_belt_linearises_as_its_equations_of_motion", T + "fem/test_linearisation.py", T + "fem/test_cea.py"]),
+    _m("cea-slope-damping", F + "cea.py",
+       "extra = sp.csr_matrix((force * slope,", "extra = sp.csr_matrix((-force * slope,",
+       "CEA: friction slope N mu'(V) as damping with the wrong sign",
+       [T + "fem/test_friction_law.py::test_a_stiff_block_on_a_falling_law_has_the_oscillators_eigenvalue", T + "fem/test_friction_law.py"]),
+    _m("cea-frequency", F + "cea.py",
+       "return self.s.imag / (2.0 * np.pi)", "return self.s.imag / np.pi",
+       "CEA: frequency Im s / pi instead of Im s / (2 pi)",
+       [T + "fem/test_stick_slip.py::test_the_complex_eigenvalue_analysis_finds_the_oscillators_mode_of_a_stiff_block",
+        T + "fem/test_cea_options.py", T + "fem/test_cea.py"]),
+    _m("pair-dual-shape", F + "pair.py",
+       "Ns = (2.0 - 3.0 * eta, 3.0 * eta - 1.0)", "Ns = (1.0 - eta, eta)",
+       "mortar: standard instead of dual shape functions in M (inconsistent with the diagonal D)",
+       [T + "fem/test_pair_run.py::test_a_run_grows_at_the_rate_of_the_ceas_most_unstable_mode", T + "fem/test_pair.py"]),
+    _m("pair-friction-sign", F + "pair.py",
+       "B = c * (self.G[A] + sp.diags(self.kinetic[A] * g * rate) @ self.T[A])[:, free]",
+       "B = c * (self.G[A] - sp.diags(self.kinetic[A] * g * rate) @ self.T[A])[:, free]",
+       "pair CEA: the friction force on the multipliers with the wrong sign",
+       [T + "fem/test_pair.py::test_a_stiff_partner_reproduces_the_rigid_surface", T + "fem/test_pair.py", T + "fem/test_pair_run.py"]),
+    _m("store-checksum-first", "src/stickslip/sweep/store.py",
+       "for col in ordered:", "for col in ordered[:1]:",
+       "sweep store: a point's checksum covers only its first output",
+       [T + "test_sweep.py::test_a_stored_point_whose_content_changed_is_computed_again_and_said", T + "test_sweep.py"]),
+    _m("cf-scaled-units", "src/stickslip/cf.py",
+       "attrs[\"scale\"] = units\n        attrs[\"units\"] = \"1\"", "attrs[\"scale\"] = units",
+       "CF attributes: a scaled unit (R, 1/Omega) kept in units instead of units = 1 plus scale",
+       [T + "test_cf.py::test_finish_scales_units_and_codes", T + "test_cf.py"]),
+    _m("validation-at-least", "src/stickslip/validation.py",
+       "    if v < bound:\n        raise ParameterError(name, v, f\">= {bound_name}",
+       "    if v <= bound:\n        raise ParameterError(name, v, f\">= {bound_name}",
+       "validation: fs >= fd checked as fs > fd (< for <=: Coulomb with fs = fd refused)",
+       [T + "test_friction.py::test_linear_weakening_validity_range", T + "test_friction.py", T + "test_validation.py"]),
+    _m("quantities-open-end", "src/stickslip/quantities/core.py",
+       "above = value > self.lo if self.lo_open else value >= self.lo", "above = value >= self.lo",
+       "declared ranges: an open lower end accepts its end value (0 accepted where > 0 is declared)",
+       [T + "test_quantities.py::test_ranges_read_as_written_and_check_both_ends", T + "test_quantities.py"]),
+    _m("cli-option-name", "src/stickslip/cli/common.py",
+       "return value if value is None else quantity.check(value, flag)", "return value if value is None else quantity.check(value)",
+       "CLI: a declared option's range error names the parameter, not the option as typed",
+       [T + "test_quantities.py::test_a_value_just_beyond_a_declared_end_is_refused_naming_the_option_and_the_range", T + "test_quantities.py", T + "test_cli.py"]),
+    _m("cli-exit-code", "src/stickslip/cli/__init__.py",
+       "return fail(\"no solution\", exc, 1)", "return fail(\"no solution\", exc, 2)",
+       "CLI: no solution exits 2 (bad input) instead of 1",
+       [T + "test_cli.py::test_no_cycle_exits_1", T + "test_cli.py", T + "oscillator/test_cycle.py"]),
+]
+
+UNCAUGHT: list[dict] = [
+    _m("osc-stick-limit-strict", OSC + "model.py",
+       "if lo <= x <= hi:\n            return Mode.STICK", "if lo < x < hi:\n            return Mode.STICK",
+       "Filippov mode choice: a mass arriving exactly at the stick limit slips instead of sticking (< for <=)",
+       [T + "oscillator/test_simulate.py", T + "oscillator/test_compiled.py"],
+       why="only a mass arriving exactly at the stick limit differs, and the numeric path lands there only by round-off"),
+    _m("coupled-mass-weight", C + "coupled.py",
+       "w += mw[k] * mw[k] * inv_mass[mdof[k]]", "w += mw[k] * inv_mass[mdof[k]]",
+       "two-body contact: effective compliance W_j with w_jl instead of w_jl^2 of the master nodes",
+       [T + "fem/test_pair_run.py"],
+       why="W only scales each node's Gauss-Seidel update (an under-relaxation where w_jl < 1): the sweeps converge to the same forces, only in more sweeps, and a rigid master (inv_mass 0) is not touched; nearly an equivalent mutant, seen only by a test of the sweeps a step takes against a deformable partner"),
+    _m("store-checksum-index", "src/stickslip/sweep/store.py",
+       "h = hashlib.sha256(repr(tuple(int(i) for i in idx)).encode())", "h = hashlib.sha256()",
+       "sweep store: checksum without the point's grid index (swapped points pass)",
+       [T + "test_sweep.py"],
+       why="the tests damage a value or a chunk, never swap two points' outputs, which only the index in the checksum would notice"),
+    _m("cf-monotone-index", "src/stickslip/cf.py",
+       "(np.all(step > 0) or np.all(step < 0))", "(np.all(step >= 0) or np.all(step <= 0))",
+       "CF: a coordinate with repeated values is made a dimension's index (not strictly monotone)",
+       [T + "test_cf.py"],
+       why="no dataset the tests write has a coordinate with repeated values (the trajectory drops duplicate switching instants before)"),
+]
+
+
+# -- the runner ----------------------------------------------------------------------------------------------------
+
+@dataclass
+class Outcome:
+    id: str
+    status: str  # "caught", "not caught", "timeout", "error"
+    caught_by: str = ""
+    phase: str = ""  # "hint" or "full"
+    seconds: float = 0.0
+    detail: str = ""
+
+
+def copy_tree(src: Path, dest: Path) -> Path:
+    """A copy of the repository at ``src`` in ``dest`` (which must not exist), mtimes kept."""
+    shutil.copytree(src, dest, symlinks=True, copy_function=shutil.copy2, ignore=shutil.ignore_patterns(*SKIP))
+    return dest
+
+
+def plant(root: Path, mutant: dict) -> None:
+    """Apply ``mutant`` in the tree at ``root``; ValueError if ``old`` does not occur exactly once."""
+    path = root / mutant["file"]
+    text = path.read_text()
+    count = text.count(mutant["old"])
+    if count != 1:
+        raise ValueError(f"{mutant['id']}: the old text occurs {count} times in {mutant['file']} (1 expected)")
+    path.write_text(text.replace(mutant["old"], mutant["new"]))
+
+
+def _module_imports(path: Path, package_dir: Path) -> set[str]:
+    """Dotted names of the ``stickslip`` modules and packages that the module at ``path`` imports
+    (function-level imports too; ``from package import name``: the package and ``package.name``)."""
+    rel = path.relative_to(package_dir.parent).with_suffix("")
+    parts = list(rel.parts)
+    is_pkg = parts[-1] == "__init__"
+    if is_pkg:
+        parts = parts[:-1]
+    out = set()
+    try:
+        tree = ast.parse(path.read_text())
+    except SyntaxError:
+        return out
+    for node in ast.walk(tree):
+        names = []
+        if isinstance(node, ast.Import):
+            names = [a.name for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = parts if is_pkg else parts[:-1]
+                base = base[:len(base) - (node.level - 1)] if node.level > 1 else base
+                prefix = ".".join(base)
+                mod = f"{prefix}.{node.module}" if node.module else prefix
+            else:
+                mod = node.module or ""
+            names = [mod] + [f"{mod}.{a.name}" for a in node.names]  # `from pkg import module` too
+        out.update(name for name in names if name.split(".")[0] == package_dir.name)
+    return out
+
+
+def stale_numba_caches(root: Path, mutated: str) -> list[Path]:
+    """The numba cache files (``.nbi``, ``.nbc``) of the mutated module and of every module of
+    the package that imports it, directly or through others."""
+    package = root / "src" / "stickslip"
+    mutated_path = (root / mutated).resolve()
+    if package.resolve() not in mutated_path.parents:
+        return []
+    modules = {}
+    for path in package.rglob("*.py"):
+        rel = path.relative_to(package.parent).with_suffix("")
+        name = ".".join(rel.parts[:-1] if rel.parts[-1] == "__init__" else rel.parts)
+        modules[name] = path
+    imports = {name: _module_imports(path, package) for name, path in modules.items()}
+    target = next(name for name, path in modules.items() if path.resolve() == mutated_path)
+    dirty, grew = {target}, True
+    while grew:
+        new = {name for name, deps in imports.items() if name not in dirty and deps & dirty}
+        dirty |= new
+        grew = bool(new)
+    out = []
+    for name in dirty:
+        path = modules[name]
+        cache = path.parent / "__pycache__"
+        if cache.is_dir():
+            out += [p for p in cache.iterdir() if p.name.startswith(path.stem + ".") and p.suffix in (".nbi", ".nbc")]
+    return out
+
+
+def _env(copy: Path) -> dict:
+    env = dict(os.environ)
+    env["PYTHONPATH"] = f"{copy / 'src'}{os.pathsep}{copy}"
+    env.pop("PYTEST_ADDOPTS", None)
+    env.pop("PYTEST_XDIST_WORKER", None)
+    return env
+
+
+def check_imports(copy: Path, python: str) -> None:
+    """Raise RuntimeError unless ``stickslip`` and ``tests`` are imported from ``copy``."""
+    code = "import stickslip, tests; print(stickslip.__file__); print(tests.__file__)"
+    done = subprocess.run([python, "-c", code], cwd=copy, env=_env(copy), capture_output=True, text=True,
+                          timeout=300)
+    files = [Path(line).resolve() for line in done.stdout.split()]
+    if done.returncode or len(files) != 2 or not all(copy.resolve() in f.parents for f in files):
+        raise RuntimeError(f"the copy's package is not the one imported: {done.stdout.strip()!r} "
+                           f"{done.stderr.strip()[-300:]!r}")
+
+
+_FAILURE_LINE = re.compile(r"^(?:FAILED|ERROR) (.+)$", re.M)
+
+
+def first_failure(output: str) -> str:
+    """The node id of the first ``FAILED``/``ERROR`` line of pytest's short summary (a
+    parametrised id may hold blanks: it runs to its closing bracket)."""
+    for rest in _FAILURE_LINE.findall(output):
+        if "[" in rest.split(" - ")[0]:
+            end = rest.find("] - ")
+            return rest[:end + 1] if end >= 0 else rest.strip()
+        return rest.split(" - ")[0].strip()
+    return ""
+
+
+def run_pytest(copy: Path, python: str, args: list[str], timeout: float) -> tuple[str, str, str]:
+    """Run pytest in ``copy``: ``(result, first failing node id, output tail)`` where result is
+    ``"passed"``, ``"failed"``, ``"unusable"`` (no test ran, a hint not found) or ``"timeout"``."""
+    proc = subprocess.Popen([python, *PYTEST, *args], cwd=copy, env=_env(copy), stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True, start_new_session=True)
+    try:
+        out, _ = proc.communicate(timeout=max(timeout, 1.0))
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        out, _ = proc.communicate()
+        return "timeout", "", (out or "")[-2000:]
+    tail = out[-3000:]
+    if proc.returncode == 0:
+        return "passed", "", tail
+    if proc.returncode in (4, 5):  # usage error (a hint not found) or no test collected
+        return "unusable", "", tail
+    found = first_failure(out)
+    if found:
+        return "failed", found, tail
+    if "error" in out.lower() or proc.returncode in (1, 2, 3):
+        return "failed", f"(pytest exit {proc.returncode}, no test named)", tail
+    return "unusable", "", tail
+
+
+def run_mutant(base: Path, work: Path, mutants: list[dict], python: str, timeout: float, workers: int,
+               hints_only: bool, label: str) -> Outcome:
+    """Plant ``mutants`` (one, or several at once) in a copy of ``base`` and run the tests."""
+    start = time.monotonic()
+    copy = work / label
+    try:
+        copy_tree(base, copy)
+        for m in mutants:
+            plant(copy, m)
+        for m in mutants:
+            for stale in stale_numba_caches(copy, m["file"]):
+                stale.unlink(missing_ok=True)
+        check_imports(copy, python)
+    except (ValueError, RuntimeError, OSError, subprocess.SubprocessError) as err:
+        shutil.rmtree(copy, ignore_errors=True)
+        return Outcome(label, "error", detail=str(err), seconds=time.monotonic() - start)
+    try:
+        hints = list(dict.fromkeys(h for m in mutants for h in m["hint"]))
+        result, node, tail = ("unusable", "", "") if not hints else run_pytest(copy, python, hints, timeout)
+        if result == "failed":
+            return Outcome(label, "caught", node, "hint", time.monotonic() - start)
+        if result == "timeout":
+            return Outcome(label, "timeout", phase="hint", seconds=time.monotonic() - start, detail=tail[-500:])
+        if hints_only:
+            return Outcome(label, "not caught", phase="hint", seconds=time.monotonic() - start,
+                           detail="hint tests only" + ("" if result == "passed" else f": {tail[-300:]}"))
+        left = timeout - (time.monotonic() - start)
+        extra = ["-n", str(workers)] if workers > 1 else []
+        result, node, tail = run_pytest(copy, python, extra, left)
+        seconds = time.monotonic() - start
+        if result == "failed":
+            return Outcome(label, "caught", node, "full", seconds)
+        if result == "timeout":
+            return Outcome(label, "timeout", phase="full", seconds=seconds, detail=tail[-500:])
+        return Outcome(label, "not caught", phase="full", seconds=seconds,
+                       detail="" if result == "passed" else tail[-300:])
+    finally:
+        shutil.rmtree(copy, ignore_errors=True)
+
+
+def area(file: str) -> str:
+    """The package area of a mutated file: ``oscillator``, ``brake/reduced``, ``contact``, ``fem``,
+    ... (a top-level module of the package stands for itself: ``friction``, ``cf``)."""
+    parts = Path(file).with_suffix("").parts
+    parts = parts[parts.index("stickslip") + 1:] if "stickslip" in parts else parts
+    return "/".join(parts[:2]) if parts[0] == "brake" and len(parts) > 2 else parts[0]
+
+
+def _cell(text: str) -> str:
+    return str(text).replace("|", "\\|").replace("\n", " ")
+
+
+def _caught_by(o: Outcome) -> str:
+    if o.status == "caught":
+        return f"`{_cell(o.caught_by)}`" + (" (full)" if o.phase == "full" else "")
+    if o.status == "timeout":
+        return f"timeout ({o.phase})"
+    if o.status == "error":
+        return f"ERROR: {_cell(o.detail)}"
+    return "NOT CAUGHT" + (" (hint tests only)" if o.phase == "hint" else "")
+
+
+def table(mutants: list[dict], outcomes: dict[str, Outcome]) -> str:
+    rows = ["| id | what | file | caught by | seconds |", "| --- | --- | --- | --- | ---: |"]
+    for m in mutants:
+        o = outcomes.get(m["id"])
+        if o is None:
+            continue
+        rows.append(f"| {m['id']} | {_cell(m['what'])} | {m['file'].removeprefix('src/stickslip/')} | {_caught_by(o)} "
+                    f"| {o.seconds:.0f} |")
+    return "\n".join(rows)
+
+
+def report(root: Path, chosen: list[dict], outcomes: dict[str, Outcome], control: Outcome | None,
+           together: Outcome | None, seconds: float, uncaught_run: bool) -> str:
+    lines = ["# Planted bugs", "",
+             f"Root: `{root}`; {time.strftime('%Y-%m-%d %H:%M')}; "
+             f"`python -m tests.planted_bugs {' '.join(sys.argv[1:])}`; total {seconds / 60:.1f} min.", ""]
+    if control is not None:
+        if control.status == "not caught":
+            lines.append(f"Control (unmutated copy, the hint tests of these mutants): passed in {control.seconds:.0f} s.")
+        else:
+            lines.append(f"**CONTROL FAILED** (unmutated copy, the hint tests): {_caught_by(control)} "
+                         "- the results below do not tell bugs from a broken suite.")
+        lines.append("")
+    known = [m for m in chosen if m["id"] in outcomes]
+    if known:
+        caught = sum(outcomes[m["id"]].status == "caught" for m in known)
+        areas: dict[str, list[int]] = {}
+        for m in known:
+            tally = areas.setdefault(area(m["file"]), [0, 0])
+            tally[0] += outcomes[m["id"]].status == "caught"
+            tally[1] += 1
+        spread = ", ".join(f"{k} {c}/{n}" for k, (c, n) in sorted(areas.items()))
+        lines += [f"Caught: {caught} of {len(known)} (by area: {spread}).", "", table(known, outcomes), ""]
+    in_mutants = {m["id"] for m in MUTANTS}
+    lost = [m["id"] for m in known if m["id"] in in_mutants and outcomes[m["id"]].status != "caught"]
+    if lost:
+        lines += [f"**Not caught any more (or not run to the end)**: {', '.join(lost)}.", ""]
+    if UNCAUGHT:
+        lines += ["## Not caught today", ""]
+        if together is not None:
+            state = ("none caught: the whole fast suite passed with all of them planted at once"
+                     if together.status == "not caught" else f"{together.status}: {_caught_by(together)}")
+            lines += [f"All {len(UNCAUGHT)} planted together in one copy, one fast-suite run "
+                      f"({together.seconds / 60:.1f} min): {state}.", ""]
+        elif not uncaught_run:
+            lines += ["(Listed, not run this time: `--uncaught` runs them.)", ""]
+        lines += ["| id | what | file | why not caught |", "| --- | --- | --- | --- |"]
+        for m in UNCAUGHT:
+            lines.append(f"| {m['id']} | {_cell(m['what'])} | {m['file'].removeprefix('src/stickslip/')} "
+                         f"| {_cell(m.get('why', ''))} |")
+        lines.append("")
+    return "\n".join(lines)
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m tests.planted_bugs", description=__doc__.split("\n\n")[0])
+    parser.add_argument("--only", help="comma-separated ids (from MUTANTS or UNCAUGHT)")
+    parser.add_argument("--out", type=Path, help="write the Markdown table here too")
+    parser.add_argument("--jobs", type=int, default=1, help="mutants run at once (default 1: one pytest at a time)")
+    parser.add_argument("--workers", type=int, default=2, help="pytest-xdist workers of the full-suite fallback")
+    parser.add_argument("--root", type=Path, default=REPO, help="the repository to copy (default: %(default)s)")
+    parser.add_argument("--timeout", type=float, default=1200.0, help="seconds per mutant (default 1200)")
+    parser.add_argument("--uncaught", action="store_true", help="run the UNCAUGHT list instead of MUTANTS")
+    parser.add_argument("--together", action="store_true",
+                        help="with --uncaught: plant them all in one copy and run the suite once")
+    parser.add_argument("--hints-only", action="store_true", help="no full-suite fallback (a quick look)")
+    parser.add_argument("--no-control", action="store_true", help="skip the control run")
+    parser.add_argument("--check", action="store_true", help="only check that every substitution applies once")
+    parser.add_argument("--python", default=sys.executable, help="the interpreter (default: this one)")
+    args = parser.parse_args(argv)
+    root = args.root.resolve()
+
+    pool = UNCAUGHT if args.uncaught else MUTANTS
+    ids = [m["id"] for m in MUTANTS + UNCAUGHT]
+    duplicates = {i for i in ids if ids.count(i) > 1}
+    if duplicates:
+        parser.error(f"duplicate ids: {sorted(duplicates)}")
+    if args.only:
+        wanted = [i.strip() for i in args.only.split(",") if i.strip()]
+        every = {m["id"]: m for m in MUTANTS + UNCAUGHT}
+        unknown = [i for i in wanted if i not in every]
+        if unknown:
+            parser.error(f"unknown ids: {unknown}")
+        chosen = [every[i] for i in wanted]
+    else:
+        chosen = list(pool)
+    if args.check:
+        bad = []
+        for m in chosen:
+            count = (root / m["file"]).read_text().count(m["old"])
+            if count != 1:
+                bad.append(f"{m['id']}: {count} occurrences in {m['file']}")
+        print("\n".join(bad) or f"all {len(chosen)} substitutions apply once")
+        return 1 if bad else 0
+
+    started = time.monotonic()
+    with tempfile.TemporaryDirectory(prefix="planted-bugs-") as tmp:
+        work = Path(tmp)
+        print(f"copying {root} ...", file=sys.stderr)
+        base = copy_tree(root, work / "base")  # the tree as it is now; every mutant is copied from this copy
+        control = None
+        if not args.no_control:
+            hints = list(dict.fromkeys(h for m in chosen for h in m["hint"]))
+            print(f"control: {len(hints)} hint targets on the unmutated copy ...", file=sys.stderr)
+            t0 = time.monotonic()
+            check_imports(base, args.python)
+            result, node, tail = run_pytest(base, args.python, hints, max(args.timeout, 3600.0))
+            status = {"passed": "not caught", "failed": "caught"}.get(result, result)
+            control = Outcome("control", status, node, "hint", time.monotonic() - t0, tail[-500:])
+            print(f"control: {result} {node} ({control.seconds:.0f} s)", file=sys.stderr)
+            if result != "passed":
+                print(tail, file=sys.stderr)
+        outcomes: dict[str, Outcome] = {}
+        together = None
+        if args.uncaught and args.together:
+            print(f"planting all {len(chosen)} at once ...", file=sys.stderr)
+            together = run_mutant(base, work, chosen, args.python, max(args.timeout, 3 * 3600.0), args.workers,
+                                  args.hints_only, "together")
+            print(f"together: {together.status} {together.caught_by} ({together.seconds:.0f} s)", file=sys.stderr)
+        else:
+            def one(m):
+                o = run_mutant(base, work, [m], args.python, args.timeout, args.workers, args.hints_only, m["id"])
+                print(f"{m['id']}: {o.status} {o.caught_by} [{o.phase}] ({o.seconds:.0f} s) {o.detail[-200:]}",
+                      file=sys.stderr, flush=True)
+                return o
+            with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as ex:
+                for o in ex.map(one, chosen):
+                    outcomes[o.id] = o
+        text = report(root, chosen, outcomes, control, together, time.monotonic() - started,
+                      args.uncaught or any(m in UNCAUGHT for m in chosen))
+    print(text)
+    if args.out:
+        args.out.write_text(text + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
