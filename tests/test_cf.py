@@ -76,6 +76,18 @@ def test_finish_scales_units_and_codes():
     assert cf.is_udunits("N s/m") and cf.is_udunits("m s-1") and not cf.is_udunits("E R^2 / M")
 
 
+
+def test_a_missing_code_never_takes_a_code_that_means_something():
+    # a contact mode uses -1 for reverse slip: a padded sample (NaN) must not become reverse slip
+    mode = ("sample", [1.0, -1.0, np.nan], {"flag_values": [-1, 0, 1], "flag_meanings": "reverse_slip stick slip"})
+    out = cf.finish(xr.Dataset({"mode": mode}), "t")["mode"]
+    meanings = dict(zip(out.attrs["flag_values"].tolist(), out.attrs["flag_meanings"].split()))
+    assert [meanings[int(c)] for c in out.values] == ["slip", "reverse_slip", "none"]
+    # a code list that already has its own "none" keeps it
+    kept = ("sample", [0.0, np.nan], {"flag_values": [-2, 0], "flag_meanings": "none stick"})
+    out = cf.finish(xr.Dataset({"mode": kept}), "t")["mode"]
+    assert out.values.tolist() == [0, -2] and out.attrs["flag_meanings"] == "none stick"
+
 def _results():
     osc = Oscillator(1.0, 1.0, 1.0, 0.2, Coulomb(0.6, 0.4), damping=0.05)
     yield "simulate", simulate(osc, 20.0).to_xarray(501)

@@ -131,7 +131,9 @@ def _describe(name: str, var: xr.Variable, domain: str) -> None:
 
 
 def _integer_codes(ds: xr.Dataset) -> xr.Dataset:
-    """Codes stored as floats (NaN: none) become ``int8``, NaN becoming -1 ``none``."""
+    """Codes stored as floats (NaN: none) become ``int8``, NaN becoming a ``none`` code: -1,
+    or one below the smallest code where -1 already means something (a contact mode's
+    reverse slip)."""
     for name in list(ds.variables):
         var = ds[name]
         if "flag_values" not in var.attrs or var.dtype.kind != "f":
@@ -139,10 +141,13 @@ def _integer_codes(ds: xr.Dataset) -> xr.Dataset:
         attrs = dict(var.attrs)
         values = np.asarray(var.values)
         if np.isnan(values).any():
-            values = np.where(np.isnan(values), -1, values)
             flags = np.atleast_1d(np.asarray(attrs["flag_values"], dtype=np.int8))
-            if -1 not in flags:
-                attrs["flag_values"] = np.concatenate([[-1], flags]).astype(np.int8)
+            meanings = dict(zip(flags.tolist(), str(attrs["flag_meanings"]).split()))
+            none = next((c for c, m in meanings.items() if m == "none"),
+                        -1 if -1 not in meanings else int(flags.min()) - 1)
+            values = np.where(np.isnan(values), none, values)
+            if none not in meanings:
+                attrs["flag_values"] = np.concatenate([[none], flags]).astype(np.int8)
                 attrs["flag_meanings"] = "none " + str(attrs["flag_meanings"])
         ds[name] = (var.dims, values.astype(np.int8), attrs)
     return ds

@@ -8,6 +8,9 @@ from ...oscillator import Engine, Oscillator, simulate
 from ...oscillator.cycle import return_horizon
 
 
+PADDED = "NaN past the end of a start's orbit (orbits have different numbers of samples)"
+
+
 def orbits(osc: Oscillator, starts, t_end: float, num: int):
     """Sample orbits from several starts into NaN-padded ``(start, sample)`` arrays."""
     rows = [simulate(osc, t_end, x0, v0).sample(num) for x0, v0 in starts]

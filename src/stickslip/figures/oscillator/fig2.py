@@ -14,7 +14,7 @@ from ...oscillator import Oscillator, limit_cycle
 from ...oscillator.baseline import solve_ivp_switches
 from ...oscillator.simulate import MODE_ATTRS
 from .. import Check, FigureSpec, close_check
-from .common import orbits, osc_attrs, osc_from_attrs, section_after
+from .common import PADDED, orbits, osc_attrs, osc_from_attrs, section_after
 
 xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
@@ -37,8 +37,8 @@ def compute(quick: bool) -> xr.Dataset:
     energy = np.nanmax(e) - np.nanmin(e)
     return xr.Dataset(
         {
-            "orbit_x": (("start", "sample"), o["x"], {"units": "m"}),
-            "orbit_v": (("start", "sample"), o["v"], {"units": "m/s"}),
+            "orbit_x": (("start", "sample"), o["x"], {"units": "m", "comment": PADDED}),
+            "orbit_v": (("start", "sample"), o["v"], {"units": "m/s", "comment": PADDED}),
             "orbit_mode": (("start", "sample"), o["mode"], {**MODE_ATTRS, "long_name": "contact mode on the orbit"}),
             "start_x": ("start", np.array([s[0] for s in STARTS]), {"units": "m"}),
             "start_v": ("start", np.array([s[1] for s in STARTS]), {"units": "m/s"}),
