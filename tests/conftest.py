@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import os
 
+import pytest
 from hypothesis import settings
 
 #: The environment variables that set a process's BLAS and OpenMP threads.
@@ -32,3 +33,24 @@ def pytest_configure(config):
         share = str(max(1, (os.cpu_count() or 1) // workers))
         for name in BLAS_THREADS:  # inherited by the workers, which start after this hook
             os.environ.setdefault(name, share)
+
+
+@pytest.fixture(scope="session")
+def quick_report(tmp_path_factory):
+    """The whole quick report (`stickslip.report.reproduce` with ``quick=True``, several minutes),
+    made once per test run for every slow test that reads it: ``(folder, summary)``.
+
+    The folder is shared by the xdist workers (their common base folder): the first worker to
+    ask computes the figures in two processes, holding a lock; another that asks meanwhile
+    waits, then reads the same checkpoints (plotting and checking them again, not computing)."""
+    import fcntl
+
+    from stickslip.report import reproduce
+
+    base = tmp_path_factory.getbasetemp()
+    root = base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base
+    folder = root / "quick-report"
+    with open(root / "quick-report.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        summary = reproduce(folder, quick=True, workers=2)
+    return folder, summary

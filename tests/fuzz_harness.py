@@ -632,9 +632,43 @@ def api_one(name: str, param: str) -> None:
     print(json.dumps(bad))
 
 
+def api_serve() -> None:
+    """``python -m tests.fuzz_harness --api-serve``: a fresh interpreter that takes ``NAME\tPARAM``
+    lines on stdin and answers each with `api_one`'s JSON line, run in a child forked from this
+    process, which itself never calls anything (so it holds no thread a fork could inherit
+    locked). The test process keeps one such server: a parameter costs its calls, not an
+    interpreter's start and imports (289 of them took 20 minutes of CI)."""
+    from .test_fuzz_api import CALLS  # noqa: F401 - the modules the children call, imported once
+
+    for line in sys.stdin:
+        name, param = line.rstrip("\n").split("\t")
+        read, write = os.pipe()
+        pid = os.fork()
+        if pid == 0:
+            os.close(read)
+            code = 0
+            with os.fdopen(write, "w") as out:
+                try:
+                    sys.stdout = out
+                    api_one(name, param)
+                except BaseException:  # noqa: BLE001 - reported to the test as text
+                    import traceback
+
+                    out.write(json.dumps([["server", name, param], "crash", traceback.format_exc()[-2000:]]) + "\n")
+                    code = 1
+            os._exit(code)
+        os.close(write)
+        with os.fdopen(read) as answer:
+            text = answer.read()
+        os.waitpid(pid, 0)
+        print(text.strip().splitlines()[-1] if text.strip() else json.dumps([[name, param, "no answer"]]), flush=True)
+
+
 def main() -> None:
     if sys.argv[1:2] == ["--api"]:
         return api_one(*sys.argv[2:4])
+    if sys.argv[1:2] == ["--api-serve"]:
+        return api_serve()
     values = EXTREMES + NEVER_NUMBERS
     log = sys.stderr if "-v" in sys.argv else None
     results = battery(values, log=log) + path_battery(log=log) + declared_battery(log=log) + \

@@ -434,10 +434,8 @@ def test_the_other_command_line_plots_are_legible():
 
 # --- every figure of the report, from its real quick data -----------------------------------------
 @pytest.mark.slow
-def test_every_report_figure_is_legible_on_quick_data(tmp_path):
-    from stickslip.report import reproduce
-
-    summary = reproduce(tmp_path, quick=True)
+def test_every_report_figure_is_legible_on_quick_data(quick_report):
+    _, summary = quick_report
     failed = {o.spec.key: c.detail for o in summary.outcomes for c in o.checks
               if c.name.startswith("the figure is legible") and not c.passed}
     assert not failed, failed

@@ -103,20 +103,32 @@ def test_values_drawn_from_each_declared_range(data, tmp_path_factory):
 
 
 API = [(name, param) for name, (_, params) in CALLS.items() for param in params]
+_SERVER = []
 
 
-@pytest.mark.slow
-@pytest.mark.parametrize("name, param", API, ids=[f"{n} {p}" for n, p in API])
-def test_every_public_parameter_with_its_declared_and_bad_values(name, param, tmp_path):
-    """From a fresh interpreter (`fuzz_harness.api_one`: forks from this test process, which may
-    hold threads of Dask or Zarr, can deadlock), each call forked with a time limit."""
-    import json
+def _api_server():
+    """This test process's `fuzz_harness.api_serve` (started on first use, ended with the process)."""
     import subprocess
     import sys
     from pathlib import Path
 
-    root = Path(__file__).resolve().parents[1]
-    done = subprocess.run([sys.executable, "-m", "tests.fuzz_harness", "--api", name, param], cwd=root,
-                          capture_output=True, text=True, timeout=3600)
-    assert done.returncode == 0, done.stderr[-2000:]
-    assert json.loads(done.stdout.strip().splitlines()[-1]) == []
+    if not _SERVER or _SERVER[0].poll() is not None:
+        _SERVER[:] = [subprocess.Popen([sys.executable, "-m", "tests.fuzz_harness", "--api-serve"],
+                                       cwd=Path(__file__).resolve().parents[1], stdin=subprocess.PIPE,
+                                       stdout=subprocess.PIPE, text=True)]
+    return _SERVER[0]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name, param", API, ids=[f"{n} {p}" for n, p in API])
+def test_every_public_parameter_with_its_declared_and_bad_values(name, param):
+    """Each call forked with a time limit from a clean interpreter (`fuzz_harness.api_serve`;
+    a fork of this test process, which may hold threads of Dask or Zarr, can deadlock)."""
+    import json
+
+    server = _api_server()
+    server.stdin.write(f"{name}\t{param}\n")
+    server.stdin.flush()
+    answer = server.stdout.readline()
+    assert answer, f"the API fuzz server ended (exit {server.wait()})"
+    assert json.loads(answer) == []
