@@ -60,7 +60,9 @@ def test_a_value_that_is_no_number_is_refused_in_one_line_naming_the_option(comm
 
 
 def _fast_values(index: int) -> list[str]:
-    return [EXTREMES[index % len(EXTREMES)], EXTREMES[(index + 2) % len(EXTREMES)]]
+    """The one value `make test` tries on option ``index`` (rotating through `EXTREMES`, so that
+    every value meets some options); the slow set tries the others."""
+    return [EXTREMES[index % len(EXTREMES)]]
 
 
 @pytest.mark.parametrize("index", range(len(OPTIONS)), ids=[f"{c} {o}" for c, o in OPTIONS])

@@ -20,7 +20,8 @@ from .meshes import rectangle
 E, NU, RHO = 2.1e11, 0.3, 7850.0
 
 
-@pytest.fixture(scope="module", params=[1, 2], ids=["quad", "quad9"])
+#: the quadratic beam (its highest mode sets a step four times shorter) in the slow set
+@pytest.fixture(scope="module", params=[pytest.param(1, id="quad"), pytest.param(2, id="quad9", marks=pytest.mark.slow)])
 def beam(request, tmp_path_factory):
     mesh = rectangle(tmp_path_factory.mktemp("c") / "c.msh", 0.04, 0.004, 0.002, quads=True, order=request.param)
     body = body_from_meshio(mesh, "beam")

@@ -118,8 +118,9 @@ def _reference(t_eval, x0, v0, theta0, evolution, held=False, k1=K1):
     return stick_slip_pair(t_eval, [x0[0], x0[1], v0[0], v0[1], theta0], slipping, stuck, hold, V2, FS * N, held)
 
 
-@pytest.mark.parametrize("evolution, x2, v2", [("aging", 0.0, 0.0), ("slip", 0.0, 0.0), ("aging", 0.0, 4.0 * V2),
-                                               ("slip", 0.01, 4.0 * V2)])
+@pytest.mark.parametrize("evolution, x2, v2", [("aging", 0.0, 0.0), pytest.param("slip", 0.0, 0.0, marks=pytest.mark.slow),
+                                               pytest.param("aging", 0.0, 4.0 * V2, marks=pytest.mark.slow),
+                                               ("slip", 0.01, 4.0 * V2)])  # both laws, at rest and moving: the fast set
 def test_the_coupled_pair_follows_an_integration_written_apart(evolution, x2, v2):
     law = RateState(a=A, b=B, dc=DC, f0=F0, v_ref=V0, evolution=evolution)
     system = _pair(law, LinearWeakening(FS, FD, TAU))

@@ -226,6 +226,7 @@ def _law_c(v):
     return 0.32 + 0.1 / (1.0 + abs(v) / 0.05) ** 2
 
 
+@pytest.mark.slow  # the law slots' compiled code (its first compilation takes 10 s of a fresh clone's test run)
 def test_four_contacts_under_four_laws_compiled_agree_with_radau_consistency():
     """A consistency check of the compiled path's law slots (each contact's law its own function; the
     Radau path calls the laws themselves): four blocks in a chain, three users' laws and Stribeck's."""

@@ -114,8 +114,12 @@ class Flow:
             # M a = r + E mu, G^T a = 0 (sticking: w . a = 0; closed: n . a = 0): mu = -L r
             G = np.hstack([W[:, stuck], system.normal_units[:, closed]])
             E = np.hstack([W[:, stuck], np.array(pressed).T.reshape(n, len(closed))])
-            L = np.linalg.pinv(G.T @ Minv @ E) @ G.T @ Minv
-            P = Minv - Minv @ E @ L
+            # one pseudo-inverse and one M^-1 E serve L, Q and (all constraints held) the impact:
+            # the same products in the same order as written out three times (2N = 256 degrees of
+            # freedom: the wave-stability figure's flows spent 13 s of 20 in three equal SVDs)
+            Ainv, MinvE = np.linalg.pinv(G.T @ Minv @ E), Minv @ E
+            L = Ainv @ G.T @ Minv
+            P = Minv - MinvE @ L
             mu = np.zeros((len(stuck) + len(closed), size))
             mu[:, :n], mu[:, n:2 * n], mu[:, -1], mu[:, e] = L @ k_eff, L @ c_eff, -L @ g, -L @ B
             force_rows[stuck] = mu[:len(stuck)]
@@ -126,16 +130,19 @@ class Flow:
             # the velocity put on the constraints by impulses along the forces' directions: v + Q (V - G^T v),
             # Q = M^-1 E (G^T M^-1 E)^+ (sticking: the smallest change in the metric of M; a rigid contact
             # landing: a plastic impact with the friction impulse of its state)
-            Q = Minv @ E @ np.linalg.pinv(G.T @ Minv @ E)
+            Q = MinvE @ Ainv
             target = np.array([system.contacts[i].surface_speed for i in stuck] + [0.0] * len(closed))
             self._stick = (Q, G, target)
             Nc = system.normal_units[:, closed]  # the closed rigid contacts' positions: n . x = 0 exactly
             self._onto = (Minv @ Nc @ np.linalg.pinv(Nc.T @ Minv @ Nc), Nc) if closed else None
             # an impact: impulses only where a rigid contact holds (a finite normal force takes none)
             held = [k for k, i in enumerate(stuck) if system.contacts[i].rigid] + list(range(len(stuck), G.shape[1]))
-            Gi, Ei = G[:, held], E[:, held]
-            Ki = np.linalg.pinv(Gi.T @ Minv @ Ei)
-            self._impact = (Minv @ Ei, Ki, Gi, target[held], [i for i in stuck if system.contacts[i].rigid], closed)
+            if len(held) == G.shape[1]:
+                Gi, MinvEi, Ki = G, MinvE, Ainv
+            else:
+                Gi, Ei = G[:, held], E[:, held]
+                MinvEi, Ki = Minv @ Ei, np.linalg.pinv(Gi.T @ Minv @ Ei)
+            self._impact = (MinvEi, Ki, Gi, target[held], [i for i in stuck if system.contacts[i].rigid], closed)
         else:
             P = Minv
             self._stick = self._onto = self._impact = None

@@ -21,12 +21,14 @@ def seeds():
     return initial_condition.compute(quick=True)
 
 
+@pytest.mark.slow  # on the quick data of two figures (17 s): the slow set
 def test_regime_checks_pass_on_computed_data(regimes):
     checks = ring_regimes.check(regimes)
     assert len(checks) == 6 and all(c.passed for c in checks), [c for c in checks if not c.passed]
     assert regimes["energy"].attrs["units"] == "E R^2 / M" and regimes["omega"].attrs["units"] == "rad/s"
 
 
+@pytest.mark.slow  # on the quick data of two figures (17 s): the slow set
 def test_regime_checks_fail_on_wrong_data(regimes):
     bad = regimes.copy(deep=True)
     bad["fraction"].loc[dict(case=0, setting=0, kind="stick")] = 0.0
@@ -38,6 +40,7 @@ def test_regime_checks_fail_on_wrong_data(regimes):
     assert [c.passed for c in ring_regimes.check(bad)] == [False] * 6
 
 
+@pytest.mark.slow  # on the quick data of two figures (17 s): the slow set
 def test_initial_condition_checks(seeds):
     checks = initial_condition.check(seeds)
     assert len(checks) == 3 and all(c.passed for c in checks), [c for c in checks if not c.passed]
@@ -54,6 +57,7 @@ def test_separation_number_is_kappa_times_a_geometry_factor():
     assert separation_number(p1) == pytest.approx(4 * separation_number(p2), rel=1e-12)
 
 
+@pytest.mark.slow  # on the quick data of two figures (17 s): the slow set
 def test_plots_and_netcdf(regimes, seeds, tmp_path):
     for ds, plot, name in ((regimes, ring_regimes.plot, "regimes"), (seeds, initial_condition.plot, "seeds")):
         assert_png(plot, ds, tmp_path / f"{name}.png")
