@@ -203,6 +203,10 @@ def _bisect(nu, mu, T, v, vs, k, lo, hi, F_lo, iters=60):
     return 0.5 * (lo + hi)
 
 
+#: Why a direct map holds NaN (a variable's ``comment``).
+NO_SOLUTION = "NaN past a point's last solution (n_solutions of them; points have different numbers)"
+
+
 def direct_map(v_ratio, T_ratio, *, nu, mu, system: str = "printed", n_grid: int = 2001,
                max_solutions: int = 3) -> xr.Dataset:
     """The solution ``(cbar, b)`` over the loading plane ``(v/v*, T/v*)``.
@@ -245,8 +249,10 @@ def direct_map(v_ratio, T_ratio, *, nu, mu, system: str = "printed", n_grid: int
             count[r] += 1
     shape = (v_ratio.size, T_ratio.size, max_solutions)
     return xr.Dataset(
-        {"c": (("v_ratio", "T_ratio", "solution"), C.reshape(shape), {"units": "1", "long_name": "wave speed c/c2"}),
-         "b": (("v_ratio", "T_ratio", "solution"), B.reshape(shape), {"units": "1", "long_name": "period / stick length"}),
+        {"c": (("v_ratio", "T_ratio", "solution"), C.reshape(shape), {"units": "1", "long_name": "wave speed c/c2",
+                                                                      "comment": NO_SOLUTION}),
+         "b": (("v_ratio", "T_ratio", "solution"), B.reshape(shape), {"units": "1", "long_name": "period / stick length",
+                                                                      "comment": NO_SOLUTION}),
          "n_solutions": (("v_ratio", "T_ratio"), count.reshape(shape[:2]), {"units": "1"})},
         coords={"v_ratio": ("v_ratio", v_ratio, {"units": "1", "long_name": "v / v*"}),
                 "T_ratio": ("T_ratio", T_ratio, {"units": "1", "long_name": "T / v*"}),

@@ -190,7 +190,7 @@ def slide(slider: SpringSlider, load_velocity, t_end: float, *, times=None, v_in
         y = sol.y[:, -1]
     n = slider.law.states
     log_v, psi = out[:, 0], out[:, 1:1 + n]
-    mu = np.array([float(np.real(slider.law.friction(lv, p)[0])) for lv, p in zip(log_v, psi)])
+    mu = np.real(slider.law.friction(log_v, psi.T)[0]) * np.ones_like(log_v)  # every sample at once
     tau = slider.normal_stress * mu if slider.mass == 0.0 else out[:, 1 + n]
     result = SliderRun(t_start + grid, np.exp(log_v), slider.law.theta(psi), mu, tau, out[:, 2 + n], load, steps, y)
     if not all(np.all(np.isfinite(a)) for a in (result.slip_rate, result.theta, result.shear_stress, result.slip)):

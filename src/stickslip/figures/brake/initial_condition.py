@@ -16,7 +16,7 @@ from ...brake import BrakeParams, integrate, perturbed_steady
 from ...contact import STATE_ATTRS, STATE_NAMES
 from .. import Check, FigureSpec
 from .paper import CASES
-from .ring_runs import PHI, SNAPS, all_true, pad_rows, stack, summary
+from .ring_runs import PADDED, PHI, SNAPS, all_true, pad_rows, stack, summary
 
 xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
@@ -36,7 +36,8 @@ def compute(quick: bool = False) -> xr.Dataset:
     shape, dims = (len(grids), len(SEEDS)), ("grid", "seed")
     data = stack(runs, shape, dims)
     data["energy"] = (dims + ("transit",), pad_rows([r["energy"] for r in runs]).reshape(shape + (-1,)),
-                      {"units": "E R^2 / M", "long_name": "energy of the deviation from steady sliding"})
+                      {"units": "E R^2 / M", "long_name": "energy of the deviation from steady sliding",
+                       "comment": PADDED})
     data["state"] = (dims + ("snapshot", "phi"), np.array([r["state"] for r in runs]).reshape(shape + (SNAPS, PHI)),
                      {"long_name": "node state over the last 2 transits", **STATE_ATTRS})
     coords = {"grid": list(grids), "seed": [s for s, _ in SEEDS], "seed_mode": ("seed", [m for _, m in SEEDS]),

@@ -19,7 +19,7 @@ from ...brake import BrakeParams, RingScheme, growth_rates, integrate, perturbed
 from ...contact import STATE_ATTRS, STATE_NAMES
 from .. import Check, FigureSpec
 from .paper import CASES, PAPER_REGIMES
-from .ring_runs import PHI, SNAPS, all_true, pad_rows, stack, summary
+from .ring_runs import PADDED, PHI, SNAPS, all_true, pad_rows, stack, summary
 
 xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
@@ -37,7 +37,8 @@ def compute(quick: bool = False) -> xr.Dataset:
     shape, dims = (len(CASES), len(settings)), ("case", "setting")
     data = stack(runs, shape, dims)
     data["energy"] = (dims + ("transit",), energy.reshape(shape + (T_max,)),
-                      {"units": "E R^2 / M", "long_name": "energy of the deviation from steady sliding"})
+                      {"units": "E R^2 / M", "long_name": "energy of the deviation from steady sliding",
+                       "comment": PADDED})
     data["state"] = (dims + ("snapshot", "phi"), np.array([r["state"] for r in runs]).reshape(shape + (SNAPS, PHI)),
                      {"long_name": "node state over the last 2 transits", **STATE_ATTRS})
     # wavelength selection: fully discrete growth of steady sliding per transit

@@ -13,7 +13,10 @@ import numpy as np
 from ...brake import classify, separation_number
 from ...contact import STATE_NAMES
 
-__all__ = ["PHI", "SNAPS", "summary", "pad_rows", "stack", "all_true"]
+__all__ = ["PHI", "SNAPS", "PADDED", "summary", "pad_rows", "stack", "all_true"]
+
+#: Why a padded energy history holds NaN.
+PADDED = "NaN past a run's last record (a grid's whole steps may end a run a transit short of another's)"
 
 #: Node patterns kept for plotting: nodes resampled to PHI, the last SNAPS snapshots.
 PHI, SNAPS = 256, 60
@@ -36,7 +39,7 @@ def summary(run, window=2.0) -> dict:
 
 
 def pad_rows(rows) -> np.ndarray:
-    """Rows of unequal length as a 2-D array padded with NaN."""
+    """Rows of unequal length as a 2-D array padded with NaN (the variable's comment: `PADDED`)."""
     out = np.full((len(rows), max(len(r) for r in rows)), np.nan)
     for i, r in enumerate(rows):
         out[i, :len(r)] = r
@@ -50,7 +53,10 @@ def stack(summaries, shape, dims, prefix=""):
                       ("residual", "1"), ("energy_late", "E R^2 / M"), ("energy_spread", "E R^2 / M"),
                       ("kappa", "1"), ("S", "1"), ("D", "1")):
         arr = np.array([sm[key] for sm in summaries]).reshape(shape)
-        out[prefix + key] = (dims, arr.astype(str) if key == "regime" else arr, {"units": unit} if unit else {})
+        attrs = {"units": unit} if unit else {}
+        if key == "c_over_sqrt_a":
+            attrs["comment"] = "NaN where the run settles on no travelling wave (no speed to measure)"
+        out[prefix + key] = (dims, arr.astype(str) if key == "regime" else arr, attrs)
     frac = np.array([sm["fraction"] for sm in summaries]).reshape(shape + (len(STATE_NAMES),))
     out[prefix + "fraction"] = (dims + ("kind",), frac, {"units": "1", "long_name": "time-averaged node fraction"})
     return out

@@ -50,7 +50,7 @@ def compute(quick: bool = False) -> xr.Dataset:
          "coupling_normalised": (("nu", "xi"), np.array([coupling(xi, nu) for nu in POISSON]) / scale,
                                  {"units": "1", "long_name": "(a~ C1 - b~ C2) / (a~ C1 + b~ C2)"}),
          "xi_neutral": ("nu", [neutral_radius_ratio(nu) or np.nan for nu in POISSON],
-                        {"long_name": "xi where D = 0"})},
+                        {"long_name": "xi where D = 0", "comment": "NaN for a Poisson ratio without such a xi"})},
         coords={"case": case, "n": modes, "n_grid": n_grid, "xi": xi, "nu": list(POISSON),
                 "friction": ("case", [p.friction for p in params]), "delta": ("case", [p.delta for p in params]),
                 "omega": ("case", omega, {"units": "rad/s"}), "gamma": ("case", [p.gamma for p in params])})

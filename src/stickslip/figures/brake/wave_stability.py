@@ -98,8 +98,8 @@ def compute(quick: bool = False) -> xr.Dataset:
                                                            "(real part), first wave, 128 nodes"}),
          "multiplier_imag": ("multiplier", spectrum.imag, {"units": "1", "long_name": "(imaginary part)"}),
          "branch_growth": (("point", "branch_nodes"), np.array(along),
-                           {"units": "1", "long_name": "growth over a wave period along Figure 11's branch "
-                                                       "(NaN: no discrete wave found near it)"}),
+                           {"units": "1", "long_name": "growth over a wave period along Figure 11's branch",
+                            "comment": "NaN where no discrete wave was found near the continuous one"}),
          "branch_structure": ("point", np.array(structure, dtype=str), {"long_name": "zones of the wave"})},
         coords={"wave": ("wave", np.array([w[0] for w in WAVES], dtype=str), {"long_name": "wave"}),
                 "moreau_period": ("moreau_period", np.arange(len(separation[0])),
