@@ -29,15 +29,16 @@ test: $(STAMP)
 	$(BIN)/python -m pytest -q -n 2 --dist worksteal -m "not slow" $(ARGS)
 
 test-slow: $(STAMP)
-	$(BIN)/python -m pytest -q -n 2 --dist worksteal -m slow $(ARGS)
+	$(BIN)/python -m pytest -q -n 2 --dist worksteal -m "slow and not deep" $(ARGS)
 
 test-all: $(STAMP)
 	$(BIN)/python -m pytest -q -n 2 --dist worksteal $(ARGS)
 
-# every property test (Hypothesis), the slow ones too, with ten times the examples, drawn afresh:
-# before an issue is resolved (tests/conftest.py: the profiles)
+# every property test (Hypothesis), the slow ones too, with ten times the examples, drawn afresh,
+# and the tests of minutes each that CI leaves out (marked deep): before an issue is resolved
+# (tests/conftest.py: the profiles)
 test-deep: $(STAMP)
-	$(BIN)/python -m pytest -q -n 2 --dist worksteal -m hypothesis --hypothesis-profile deep $(ARGS)
+	$(BIN)/python -m pytest -q -n 2 --dist worksteal -m "hypothesis or deep" --hypothesis-profile deep $(ARGS)
 
 bench: $(STAMP)
 	for b in $(filter-out benchmarks/timing.py,$(wildcard benchmarks/*.py)); do echo "== $$b"; $(BIN)/python $$b || exit 1; done

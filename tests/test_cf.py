@@ -187,7 +187,12 @@ def _leaves(data: dict, prefix: str = ""):
             yield path
 
 
-@pytest.mark.parametrize("args, files", WRITERS, ids=[" ".join(a[:2]) for a, _ in WRITERS])
+#: Every other writer in `make test` (a second each: a command and the compliance checker), all in the slow set.
+_WRITERS = [pytest.param(a, f, id=" ".join(a[:2]), marks=[pytest.mark.slow] if k % 2 else [])
+            for k, (a, f) in enumerate(WRITERS)]
+
+
+@pytest.mark.parametrize("args, files", _WRITERS)
 def test_every_file_the_command_line_writes_follows_the_rules(args, files, tmp_path, capsys):
     """Our own rules (cf_rules), compliance-checker's CF 1.10 (high and medium priority: none),
     and units and a meaning for every key of the command's JSON."""

@@ -118,6 +118,7 @@ def test_an_interrupted_sweep_keeps_what_finished_and_resumes_computing_nothing_
     del xr
 
 
+@pytest.mark.slow  # a cluster started and a worker killed (5 s)
 def test_a_worker_killed_mid_point_loses_only_that_point(tmp_path):
     marks = tmp_path / "marks"
     marks.mkdir()

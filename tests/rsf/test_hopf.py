@@ -50,3 +50,15 @@ def test_a_slider_that_never_loses_stability_has_no_hopf_point():
 def test_a_point_off_the_imaginary_axis_is_refused():
     with pytest.raises(NoSolutionError, match="imaginary axis"):
         first_lyapunov_coefficient(lambda u: np.array([-u[1] - 0.1 * u[0], u[0]]), [0.0, 0.0])
+
+
+def test_a_cycle_tolerance_finer_than_the_integration_is_refused_before_any_work():
+    # periods computed to rtol cannot agree to 1e-300: it ran its whole transient (3 min) to say so
+    from stickslip.errors import ParameterError
+    from stickslip.rsf import RateState, SpringSlider, slider_cycle
+
+    slider = SpringSlider(RateState(a=0.01, b=0.015, dc=1e-5), normal_stress=1e7, stiffness=3e9, mass=1e9)
+    with pytest.raises(ParameterError, match=r"tol = 1e-300: must be at least rtol = 1e-10"):
+        slider_cycle(slider, 1e-6, tol=1e-300)
+    with pytest.raises(ParameterError, match=r"tol = 1e-09: must be at least rtol = 1e-08"):
+        slider_cycle(slider, 1e-6, tol=1e-9, rtol=1e-8)

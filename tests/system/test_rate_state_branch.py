@@ -46,6 +46,7 @@ def test_a_supercritical_hopf_point_grows_stable_cycles_as_the_square_root_of_th
 
 
 @pytest.mark.slow
+@pytest.mark.deep  # 6 minutes (Radau runs of every cycle along the branch): make test-deep
 def test_a_subcritical_hopf_point_has_stable_cycles_beyond_it_up_to_a_fold():
     """With m = 1e5 kg the normal form says subcritical (l1 > 0): the stable cycle of k < k_c persists
     where steady sliding is stable too (k >= k_c, finite amplitude), up to a fold of cycles just beyond,
@@ -77,6 +78,7 @@ def test_what_a_rate_and_state_branch_cannot_take_is_refused_naming_it():
 
 
 @pytest.mark.slow
+@pytest.mark.deep  # 3.5 minutes: make test-deep
 def test_a_relaxation_cycle_is_followed_where_newton_alone_stalls(capsys, monkeypatch):
     """The slip-law block of examples/rate_state/one_block.toml (a cycle of sharp slip bursts): from 0.9
     k_c, Newton's method from the cycle before stalls (its return misses by 6e-4 at 0.937 k_c); the

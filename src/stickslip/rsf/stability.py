@@ -111,6 +111,9 @@ def slider_cycle(slider: SpringSlider, load_velocity: float, *, transient: float
     ``cycles`` periods agree to ``tol``, looked for up to ``transient`` (default: 1000 periods of
     the linear oscillation)."""
     cycles, rtol, tol = Q.check("cycles", cycles), Q.check("rtol", rtol), COMMON["tol"].check(tol, "tol")
+    if tol < rtol:  # periods computed to rtol cannot be seen to agree closer: it would run its whole transient
+        raise ParameterError("tol", tol, f"at least rtol = {rtol:g} (periods computed to rtol cannot be seen to "
+                                         "agree more closely)", also=("rtol",))
     transient = None if transient is None else Q["t_end"].check(transient, "transient")
     stability = linear_stability(slider, load_velocity)
     if stability.stable:
