@@ -126,3 +126,16 @@ def test_the_report_says_which_data_a_figure_used_and_describes_them(tmp_path):
     text = markdown_report(Summary(tmp_path, True, [outcome]))
     assert "**What was computed.** 4 runs on one mesh" in text and "two meshes" not in text
     assert "**Data used.** The small version (4 runs): no campaign found." in text
+
+
+def test_a_first_run_starts_the_longest_figures_first_and_a_later_run_goes_by_its_records(tmp_path):
+    import json
+
+    from stickslip.figures import registry
+    from stickslip.report import record_path, start_order
+
+    specs = list(registry().values())
+    first = [s.key for s in start_order(specs, tmp_path)]
+    assert first[0] == "wave-stability" and first.index("fig9") < first.index("fig2")
+    record_path(tmp_path, "fig2").write_text(json.dumps({"seconds": 1e4}))  # fig2 took longest last time
+    assert [s.key for s in start_order(specs, tmp_path)][:2] == ["fig2", "wave-stability"]

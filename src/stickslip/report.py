@@ -198,14 +198,14 @@ def _worker_logs(level: int) -> None:
         logging.getLogger("stickslip").setLevel(level)
 
 
-def _by_cost(specs: list[FigureSpec], data_dir: Path) -> list[FigureSpec]:
-    """The figures in the order to start them: the longest first, by their last record (the
-    registry's order where none is kept), so that two workers finish together."""
+def start_order(specs: list[FigureSpec], data_dir: Path) -> list[FigureSpec]:
+    """The figures in the order to start them: the longest first, by their last record (by their
+    declared `FigureSpec.cost` where none is kept), so that two workers finish together."""
     def seconds(spec):
         try:
             return float(json.loads(record_path(data_dir, spec.key).read_text())["seconds"])
         except (OSError, ValueError, KeyError, TypeError):
-            return 0.0
+            return spec.cost
     return sorted(specs, key=lambda s: -seconds(s))
 
 
@@ -238,7 +238,7 @@ def reproduce(out: Path, *, quick: bool = False, only: str | None = None, force:
 
                 pool = stack.enter_context(process_pool(min(workers, len(todo)), _worker_logs,
                                                         (logging.getLogger("stickslip").getEffectiveLevel(),)))
-                for s in _by_cost(list(todo.values()), data_dir):
+                for s in start_order(list(todo.values()), data_dir):
                     apart[s.key] = pool.submit(_compute_apart, s.key, data_dir, quick, fingerprint,
                                                bool(forced.get(s.key)), number.get(s.key, 0), len(specs), begun)
         for spec in specs:
@@ -527,5 +527,5 @@ def write_report(summary: Summary) -> Summary:
     return report
 
 
-__all__ = ["reproduce", "Summary", "FigureOutcome", "markdown_report", "write_report", "html_report", "recorded",
+__all__ = ["reproduce", "start_order", "Summary", "FigureOutcome", "markdown_report", "write_report", "html_report", "recorded",
            "save_record", "to_record", "from_record", "record_path", "cell", "markdown_table", "ERRATA"]

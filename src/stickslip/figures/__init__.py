@@ -74,6 +74,9 @@ class FigureSpec:
     check: Callable[[xr.Dataset], list[Check]] | None = None
     inputs: Callable | None = None  # inputs(data_dir) -> str: fingerprint of data from outside the package
     describe: Callable[[xr.Dataset], str] | None = None  # what was computed, for the data actually used
+    #: seconds its full computation took on the 2-core machine (2026-11-28, a fresh clone): the order
+    #: in which a first run starts the figures (later runs use their own records)
+    cost: float = 0.0
 
 
 def _spec(name: str) -> FigureSpec:
