@@ -30,6 +30,7 @@ def compute(quick: bool, cache: Path | None = None) -> xr.Dataset:
     ds = xr.merge([waves.drop_vars("done"), ring.drop_vars("done")], combine_attrs="drop")
     for name in ("wave_regime", "ring_regime"):  # merge drops variable attributes too: the codes' flags back
         ds[name].attrs = dict(waves[name].attrs if name in waves else ring[name].attrs)
+    ds["c_over_sqrt_a"].attrs = {**waves["c_over_sqrt_a"].attrs, "comment": "NaN where no travelling wave is found"}
     ds.attrs.update({"omega": OMEGA, "modes": MODES, "nodes": ring.attrs["nodes"],
                      "transits": ring.attrs["transits"]})
     return ds
