@@ -30,6 +30,7 @@ WAVES = (("Figure 5, Ω = 100 rad/s", 100.0, FIG5["mismatch"], FIG5["friction"],
 #: flow (2N-square matrices) per contact state met; at 512 nodes a run takes about 20 minutes and 2.5 GB,
 #: beyond a report's budget: it stops at 256 (NaN beyond; benchmarks/wave_spectrum.py --separating).
 SEPARATING, SEPARATING_NODES = 2, 256
+BEYOND = "NaN for the separating wave beyond SEPARATING_NODES nodes (not computed: minutes and gigabytes)"
 #: Points of Figure 11's branch whose stability is computed (64 and 128 nodes each; log-spaced: every
 #: other of the 25 it had, whose 21 separating waves' spectra took most of the figure's time).
 BRANCH_POINTS = 13
@@ -81,10 +82,12 @@ def compute(quick: bool = False) -> xr.Dataset:
         along.append([_growth(w, k) for k in (64, 128)])
     return xr.Dataset(
         {"growth_per_period": (("wave", "nodes"), np.array(growth),
-                               {"units": "1", "long_name": "ln of a perturbation's growth over a wave period"}),
+                               {"units": "1", "long_name": "ln of a perturbation's growth over a wave period",
+                                "comment": BEYOND}),
          "speed_error": (("wave", "nodes"), np.array(err),
-                         {"units": "1", "long_name": "discrete against continuous wave speed, relative"}),
-         "seconds": (("wave", "nodes"), np.array(secs), {"units": "s", "long_name": "time of the computation"}),
+                         {"units": "1", "long_name": "discrete against continuous wave speed, relative",
+                          "comment": BEYOND}),
+         "seconds": (("wave", "nodes"), np.array(secs), {"units": "s", "long_name": "time of the computation", "comment": BEYOND}),
          "moreau_growth_per_period": ("wave", np.array(moreau), {"units": "1", "long_name": "the same from the "
                                                                  "Moreau runs (wave and perturbed wave, 256 nodes)"}),
          "moreau_persists": ("wave", np.array(persists, dtype=np.int8), {"units": "1", "long_name": "1 if the "
