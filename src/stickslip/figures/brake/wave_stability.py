@@ -30,7 +30,7 @@ WAVES = (("Figure 5, Ω = 100 rad/s", 100.0, FIG5["mismatch"], FIG5["friction"],
 #: flow (2N-square matrices) per contact state met; at 512 nodes a run takes about 20 minutes and 2.5 GB,
 #: beyond a report's budget: it stops at 256 (NaN beyond; benchmarks/wave_spectrum.py --separating).
 SEPARATING, SEPARATING_NODES = 2, 256
-BEYOND = "NaN for the separating wave beyond SEPARATING_NODES nodes (not computed: minutes and gigabytes)"
+BEYOND = f"NaN for the separating wave beyond {SEPARATING_NODES} nodes (not computed: 20 minutes and 2.5 GB at 512)"
 #: Points of Figure 11's branch whose stability is computed (64 and 128 nodes each; log-spaced: every
 #: other of the 25 it had, whose 21 separating waves' spectra took most of the figure's time).
 BRANCH_POINTS = 13
