@@ -139,3 +139,35 @@ def test_a_first_run_starts_the_longest_figures_first_and_a_later_run_goes_by_it
     assert first[0] == "wave-stability" and first.index("fig9") < first.index("fig2")
     record_path(tmp_path, "fig2").write_text(json.dumps({"seconds": 1e4}))  # fig2 took longest last time
     assert [s.key for s in start_order(specs, tmp_path)][:2] == ["fig2", "wave-stability"]
+
+
+def test_a_figure_computed_apart_records_its_own_time_not_the_wait_for_it(tmp_path, monkeypatch):
+    """fig3 is started first (its last record says it is long) and takes 4 s more; fig2 waits
+    behind it in the one worker: fig2's record holds its computation and plot, not that wait."""
+    import contextlib
+    import json
+    import time
+    from concurrent.futures import ThreadPoolExecutor
+
+    import stickslip.report as report
+    import stickslip.sweep as sweep
+
+    @contextlib.contextmanager
+    def one_thread(workers, *args):
+        with ThreadPoolExecutor(1) as pool:
+            yield pool
+
+    computed = report._compute_apart
+
+    def slow_fig3(key, *args):
+        if key == "fig3":
+            time.sleep(4.0)
+        return computed(key, *args)
+
+    monkeypatch.setattr(sweep, "process_pool", one_thread)
+    monkeypatch.setattr(report, "_compute_apart", slow_fig3)
+    (tmp_path / "data").mkdir()
+    report.record_path(tmp_path / "data", "fig3").write_text(json.dumps({"seconds": 1e4}))
+    summary = report.reproduce(tmp_path, quick=True, only="fig2,fig3", workers=2)
+    seconds = {o.spec.key: o.seconds for o in summary.outcomes}
+    assert seconds["fig2"] < 4.0, seconds

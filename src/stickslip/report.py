@@ -247,7 +247,8 @@ def reproduce(out: Path, *, quick: bool = False, only: str | None = None, force:
             source = sources[spec.key]
             start = time.perf_counter()
             if source.key in apart:  # computed in a worker: its checkpoint is there once it is done
-                start -= apart.pop(source.key).result()
+                computed = apart.pop(source.key).result()  # (the wait for it is not its time)
+                start = time.perf_counter() - computed
                 ds, _ = _load_or_compute(source, data_dir, quick, fingerprint, False)
                 cached = False
             else:
