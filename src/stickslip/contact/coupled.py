@@ -32,6 +32,7 @@ from numba import njit
 
 from .kernel import COULOMB, csr_apply, internal, kinetic_coefficient, multiplier_factor, predictor
 from .states import SEPARATION, SLIP_NEG, SLIP_POS, STICK
+from ..kernelcopy import copy
 
 __all__ = ["relative", "coupled_contact", "coupled_advance"]
 
@@ -153,11 +154,11 @@ def coupled_advance(indptr, indices, data, block, load, damping, gyro_ptr, gyro_
             csr_apply(gyro_ptr, gyro_idx, gyro_data, v, spin)  # -M^{-1} G v_{m-1}
             A += spin
         if step == nsteps - 1:
-            work[:] = u
+            copy(work, u)
         for j in range(nc):
             d_old[j] = relative(u, j, normal, tangent, nvec, tvec, mptr, mdof, mw)[1]
         predictor(u, v, a, A, dt, beta2)
-        ustar[:] = u
+        copy(ustar, u)
         sweeps = coupled_contact(u, d_old, normal, tangent, nvec, tvec, mptr, mdof, mw, inv_mass, gap0, speed, dt,
                                  beta2, f, fs, law, contact, lam_n, lam_t, state, max_sweeps)
         most = max(most, sweeps)

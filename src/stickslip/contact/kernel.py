@@ -51,6 +51,7 @@ import numpy as np
 from numba import njit
 
 from .states import SEPARATION, SLIP_NEG, SLIP_POS
+from ..kernelcopy import copy
 
 __all__ = ["internal", "explicit_step", "kinetic_coefficient", "COULOMB", "LINEAR_WEAKENING", "STRIBECK", "predictor", "csr_apply", "block2_apply", "stencil_apply", "advance", "multiplier_factor"]
 
@@ -282,6 +283,6 @@ def advance(C, indptr, indices, data, block, load, damping, u, v, a, normal, tan
     for step in range(nsteps):
         internal(C, indptr, indices, data, block, load, damping, u, v, w, A)
         if step == nsteps - 1:
-            work[:] = u
+            copy(work, u)
         explicit_step(u, v, a, A, normal, tangent, gap0, speed, dt, beta2, f, fs, contact, lam_n, lam_t, state, ut_old,
                       law)

@@ -22,6 +22,7 @@ import numpy as np
 from numba import njit
 
 from ..dop853 import EPS, EXPONENT, MIN_FACTOR, SAFETY, STAGES, error_norm, next_factor, stage
+from ..kernelcopy import copy, copy_rows
 
 __all__ = ["segment", "evaluate", "run", "DONE", "CROSSED", "BAD_LAW", "STEP_TOO_SMALL"]
 
@@ -51,11 +52,11 @@ def _step(mu, dmu, lp, p, y, f, h, K, tmp, y_new):
     """One DOP853 step of length ``h`` from ``(y, f = y')``: ``y_new``, its slope in ``K[-1]``;
     returns a friction coefficient out of range met on the way, or 0."""
     bad = 0.0
-    K[0, :] = f
+    copy(K[0], f)
     for s in range(1, STAGES + 1):
         stage(K, s, y, h, tmp)
         if s == STAGES:
-            y_new[:] = tmp
+            copy(y_new, tmp)
         coefficient = _rhs(mu, dmu, lp, p, tmp, K[s])
         if not (p[6] <= coefficient <= p[7]):
             bad = coefficient  # (never 0: the range holds 0)
@@ -66,11 +67,11 @@ def _step(mu, dmu, lp, p, y, f, h, K, tmp, y_new):
 def _at(mu, dmu, lp, p, y, f, s, K, tmp, out, slope):
     """The state ``out`` at ``s`` into a step from ``(y, f)`` (a step of length ``s``), its slope ``slope``."""
     if s == 0.0:
-        out[:] = y
-        slope[:] = f
+        copy(out, y)
+        copy(slope, f)
         return
     _step(mu, dmu, lp, p, y, f, s, K, tmp, out)
-    slope[:] = K[STAGES]
+    copy(slope, K[STAGES])
 
 
 @njit(cache=True)
@@ -145,10 +146,10 @@ def segment(mu, dmu, lp, p, y0, t_max, levels, directions, rtol, atol, tol, h, c
             rejected = True
             continue
         if steps == starts.size:  # room for more steps
-            starts = np.concatenate((starts, np.empty(starts.size)))
-            states = np.concatenate((states, np.empty(states.shape)))
-            slopes = np.concatenate((slopes, np.empty(slopes.shape)))
-        starts[steps], states[steps], slopes[steps] = t, y, f
+            starts, states, slopes = _grow(starts, steps + 1), _grow(states, steps + 1), _grow(slopes, steps + 1)
+        starts[steps] = t
+        copy(states[steps], y)
+        copy(slopes[steps], f)
         steps += 1
         f_new = K[STAGES].copy()
         # pieces of the step where v is monotone: [0, h], or split at a zero of the acceleration
@@ -188,8 +189,8 @@ def segment(mu, dmu, lp, p, y0, t_max, levels, directions, rtol, atol, tol, h, c
             a, va = b, vb
         if again:
             continue
-        y[:] = y_new
-        f[:] = f_new
+        copy(y, y_new)
+        copy(f, f_new)
         t += h
         h *= next_factor(err, rejected)
         rejected = False
@@ -219,7 +220,7 @@ def _grow(a, size):
     while rows < size:
         rows *= 2
     out = np.empty((rows,) + a.shape[1:], dtype=a.dtype)
-    out[:a.shape[0]] = a
+    copy(out.reshape(out.size), a.reshape(a.size))  # the first rows: C order
     return out
 
 
@@ -276,7 +277,7 @@ def run(mu, dmu, lp, osc, x0, v0, mode, t_end, section, use_section, variational
             comp += (tsum - s) + dt if abs(tsum) >= abs(dt) else (dt - s) + tsum
             tsum = s
             t[count + 1], x[count + 1], v[count + 1] = tsum + comp, x_hi if hit else x[count] + V * dt, V
-            jac[count] = np.eye(2)
+            jac[count, 0, 0], jac[count, 0, 1], jac[count, 1, 0], jac[count, 1, 1] = 1.0, 0.0, 0.0, 1.0
             ranges[count, 0] = ranges[count, 1] = V
             ends[count] = dt
             first[count + 1] = first[count]
@@ -297,7 +298,7 @@ def run(mu, dmu, lp, osc, x0, v0, mode, t_end, section, use_section, variational
         scale = max(abs(v[count]), omega * abs(x[count]), abs(levels[0]), abs(levels[nl - 1]), 1e-300)
         side = 0 if mode == 1 else 1
         out = segment(mu, dmu, lp, p, y0, t_end - now, levels[:nl], sides[:nl], rtol, atol * max(scale, V),
-                      16 * EPS * scale, min(t_end - now, h[side]), 64)
+                      16 * EPS * scale, min(t_end - now, h[side]), np.int64(64))  # (an int64: as Python calls it)
         seg_status, index, dt, y, steps = out[0], out[1], out[2], out[3], out[4]
         h[side] = out[11]
         if seg_status == BAD_LAW or seg_status == STEP_TOO_SMALL:
@@ -307,9 +308,9 @@ def run(mu, dmu, lp, osc, x0, v0, mode, t_end, section, use_section, variational
         if begin + steps > starts.size:
             starts = _grow(starts, begin + steps)
             states, slopes = _grow(states, begin + steps), _grow(slopes, begin + steps)
-        starts[begin:begin + steps] = out[5][:steps]
-        states[begin:begin + steps] = out[6][:steps]
-        slopes[begin:begin + steps] = out[7][:steps]
+        copy(starts[begin:], out[5][:steps])
+        copy_rows(states, begin, out[6], steps)
+        copy_rows(slopes, begin, out[7], steps)
         first[count + 1] = begin + steps
         ranges[count, 0], ranges[count, 1] = out[8], out[9]
         ends[count] = dt

@@ -16,6 +16,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from ..kernelcopy import copy
+
 __all__ = ["search", "MAX_TERMS", "NO_EVENT", "EVENT", "WANTS_EXPONENTIAL"]
 
 _EPS = 2.220446049250313e-16
@@ -34,7 +36,7 @@ NO_EVENT, EVENT, WANTS_EXPONENTIAL = 0, 1, 2
 def _series(A, z, dt, P):
     """``P[k] = (dt A)^k z / k!`` until it is at round-off: the count of terms, or 0."""
     m = z.size
-    P[0, :] = z
+    copy(P[0], z)
     big = np.abs(z).max()
     before = big
     for k in range(1, MAX_TERMS):
@@ -196,7 +198,7 @@ def _mv_abs(A, x, out):
 @njit(cache=True)
 def _sum(P, K, u, out):
     """``out = sum_{k<K} u^k P[k]``."""
-    out[:] = P[K - 1]
+    copy(out, P[K - 1])
     for k in range(K - 2, -1, -1):
         for j in range(out.size):
             out[j] = out[j] * u + P[k, j]

@@ -21,6 +21,7 @@ from numba import njit
 
 from .. import lawkernel
 from ..dop853 import EPS, EXPONENT, MIN_FACTOR, NODES, SAFETY, STAGES, error_norm, next_factor, stage
+from ..kernelcopy import copy
 from ..quantities import OSCILLATOR
 from ..rsf import RateState
 
@@ -138,11 +139,11 @@ def _step(mu1, mu2, mu3, mu4, P, t, y, f, h, K, tmp, y_new, vr, force, lam, nf):
     """One DOP853 step of length ``h`` from ``(t, y, f = y')``: ``y_new``, its slope in ``K[-1]``;
     False where a law had no value on the way."""
     ok = True
-    K[0, :] = f
+    copy(K[0], f)
     for s in range(1, STAGES + 1):
         stage(K, s, y, h, tmp)
         if s == STAGES:
-            y_new[:] = tmp
+            copy(y_new, tmp)
         ts = t + h if s == STAGES else t + NODES[s] * h
         ok = _rhs(mu1, mu2, mu3, mu4, P, ts, tmp, K[s], vr, force, lam, nf) and ok
     return ok
@@ -187,10 +188,10 @@ def _fill(mu1, mu2, mu3, mu4, P, t, y, f, upto, t_eval, q, Y, K, tmp, w, vr, for
     while q < t_eval.size and t_eval[q] <= upto:
         s = t_eval[q] - t
         if s <= 0.0:
-            Y[q] = y
+            copy(Y[q], y)
         else:
             _step(mu1, mu2, mu3, mu4, P, t, y, f, s, K, tmp, w, vr, force, lam, nf)
-            Y[q] = w
+            copy(Y[q], w)
         q += 1
     return q
 
@@ -212,7 +213,8 @@ def segment(mu1, mu2, mu3, mu4, P, ev, directions, t0, y0, t_end, t_eval, rtol, 
     t, y = t0, y0.copy()
     if not _events(mu1, mu2, mu3, mu4, P, ev, t, y, f, vr, force, lam, nf, g_old):
         return BAD_LAW, -1, t, y, Y, 0, h
-    q = _fill(mu1, mu2, mu3, mu4, P, t, y, f, t, t_eval, 0, Y, K, tmp, w, vr, force, lam, nf)
+    # (an int64, not the literal 0: numba would compile another `_fill` for a literal)
+    q = _fill(mu1, mu2, mu3, mu4, P, t, y, f, t, t_eval, np.int64(0), Y, K, tmp, w, vr, force, lam, nf)
     rejected, steps = False, 0
     while t_end - t > 10 * EPS * abs(t):
         steps += 1
@@ -252,9 +254,9 @@ def segment(mu1, mu2, mu3, mu4, P, ev, directions, t0, y0, t_end, t_eval, rtol, 
             q = _fill(mu1, mu2, mu3, mu4, P, t, y, f, t + best, t_eval, q, Y, K, tmp, w, vr, force, lam, nf)
             return CROSSED, hit, t + best, end, Y, q, h
         q = _fill(mu1, mu2, mu3, mu4, P, t, y, f, min(t + h, t_end), t_eval, q, Y, K, tmp, w, vr, force, lam, nf)
-        y[:] = y_new
-        f[:] = slope
-        g_old[:] = g_new
+        copy(y, y_new)
+        copy(f, slope)
+        copy(g_old, g_new)
         t += h
         h *= next_factor(err, rejected)
         rejected = False
