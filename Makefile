@@ -17,6 +17,9 @@ $(STAMP): pyproject.toml src/stickslip/__init__.py
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -e '.[test]'
+	# the numba kernels compiled once into their cache on disk (about 20 s), not by the first test
+	# workers or figures that meet them, both at once (src/stickslip/precompile.py)
+	$(BIN)/python -m stickslip.precompile
 	touch $(STAMP)
 
 reproduce: $(STAMP)
