@@ -60,6 +60,7 @@ docs: $(DOCS_STAMP)
 	$(BIN)/python -m stickslip.quantities > docs/parameters.md
 	$(BIN)/python -m stickslip.cli.reference docs/cli
 	$(BIN)/python -m sphinx -M html docs build/docs -W --keep-going -q
+	$(BIN)/python docs/check_html.py build/docs/html
 
 clean:
 	rm -rf $(VENV) results .pytest_cache

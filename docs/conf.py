@@ -27,8 +27,13 @@ author = "stickslip developers"
 copyright = "stickslip developers (BSD 3-Clause)"
 release = version = stickslip.__version__
 
+# math rendered offline: MathJax from the sphinx-mathjax-offline package, copied into _static (the
+# default loads it from a CDN, and a page read without a network showed raw TeX)
 extensions = ["myst_nb", "sphinx.ext.autodoc", "sphinx.ext.napoleon", "sphinx.ext.mathjax",
-              "sphinx.ext.intersphinx", "sphinx_gallery.gen_gallery"]
+              "sphinx-mathjax-offline", "sphinx.ext.intersphinx", "sphinx_gallery.gen_gallery"]
+# no typographic dashes and quotes: "--law" outside a code span became "–law" (79 times in the CLI
+# reference, the parameters and the theory), which fails when pasted into a shell
+smartquotes = False
 root_doc = "index"
 # the gallery writes a notebook beside each script, for download: not pages of their own
 exclude_patterns = ["_build", "Thumbs.db", ".DS_Store", "auto_gallery/**/*.ipynb", "gallery/**"]

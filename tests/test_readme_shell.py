@@ -34,6 +34,26 @@ def _shell_line(line: str) -> str:
 
 
 LINES = _lines(README.read_text())
+#: A file a line writes (an output option's value).
+_WRITES = re.compile(r"--(?:out|plot|xdmf|checkpoint|store|export)\s+(\S+)")
+
+
+def _blocks(text: str) -> list[list[str]]:
+    """The ``stickslip`` lines of each ``sh`` block that has any."""
+    blocks = [[line.strip() for line in block.splitlines() if line.startswith("stickslip ")]
+              for block in re.findall(r"```sh\n(.*?)```", text, flags=re.S)]
+    return [block for block in blocks if block]
+
+
+def written_twice(lines: list[str]) -> list[str]:
+    """Files that two lines of one block write (the second refused: it exists), unless it says --overwrite."""
+    seen, twice = set(), []
+    for line in lines:
+        for name in _WRITES.findall(line):
+            if name in seen and "--overwrite" not in line:
+                twice.append(name)
+            seen.add(name)
+    return twice
 
 
 def test_the_readme_has_shell_lines():
@@ -50,6 +70,30 @@ def test_the_guard_finds_an_abbreviated_line():
     assert [line for line in _lines(text) if "..." in line] == ["stickslip oscillator simulate ... --t-end 50"]
     hours = "stickslip brake campaign --workers 2   # hours: x"
     assert _shell_line(hours) == "stickslip brake campaign --workers 2 --help"
+
+
+def test_no_two_lines_of_a_block_write_one_file():
+    """Issue 44: pasted whole into one folder, the block stopped at `brake integrate --out run.nc`
+    (an earlier line had written run.nc)."""
+    assert [written_twice(block) for block in _blocks(README.read_text())] == [[] for _ in _blocks(README.read_text())]
+
+
+def test_the_guard_finds_a_file_written_twice():
+    lines = ["stickslip a --out run.nc --plot a.png", "stickslip b --plot b.png --out run.nc", "stickslip c --out x.nc",
+             "stickslip d --out x.nc --overwrite"]
+    assert written_twice(lines) == ["run.nc"]
+
+
+@pytest.mark.slow
+def test_each_command_block_runs_pasted_whole_into_an_empty_folder(tmp_path):
+    env = {**os.environ, "PATH": f"{BIN}{os.pathsep}{os.environ.get('PATH', '')}"}
+    for i, block in enumerate(_blocks(README.read_text())):
+        folder = tmp_path / str(i)
+        folder.mkdir()
+        done = subprocess.run(["sh", "-e", "-c", "\n".join(block)], cwd=folder, env=env, capture_output=True,
+                              text=True, timeout=1800)
+        assert done.returncode == 0, (i, done.stderr[-1000:])
+        assert not any(word in done.stderr for word in ("Traceback", "Warning", "error")), done.stderr[-1000:]
 
 
 def test_the_stickslip_command_is_installed_beside_this_interpreter():
