@@ -136,3 +136,9 @@ def test_the_cli_reference_lists_every_option_and_example():
     # a cell holding "|" (a choice's metavar) does not split its row
     rows = [line for line in text.splitlines() if line.startswith("| `")]
     assert rows and all(len(re.findall(r"(?<!\\)\|", row)) == 3 for row in rows)
+
+
+def test_options_that_choose_the_run_are_not_model_parameters_or_parallelism():
+    """Issue 44: reproduce's --force was listed under Model, --quick and --only under Parallel runs and sweeps."""
+    for name in ("force", "quick", "only"):
+        assert [h for h, names in PANELS.items() if name in names] == ["Run and numerics"], name

@@ -19,9 +19,9 @@ PANELS = {
     "Run and numerics": {"t_end", "transient", "periods", "cycles", "transits", "window", "samples", "rtol", "tol",
                          "max_iter", "max_step", "max_events", "time_step", "n_r", "n_theta", "nodes", "modes", "mode",
                          "kind", "parameter", "start", "stop", "points", "step", "lo", "hi", "x", "y", "from_hopf",
-                         "x0", "v0", "v_init", "psi0", "method", "set_", "part", "regime"},
+                         "x0", "v0", "v_init", "psi0", "method", "set_", "part", "regime", "quick", "only", "force"},
     "Output": {"json", "out", "plot", "overwrite", "xdmf", "xdmf_every", "export", "list_"},
-    "Parallel runs and sweeps": {"workers", "scheduler", "store", "sweep", "seeds", "geometry_seeds", "quick", "only"},
+    "Parallel runs and sweeps": {"workers", "scheduler", "store", "sweep", "seeds", "geometry_seeds"},
     "Other": {"help", "version", "install_completion", "show_completion"},
 }
 MODEL = "Model"
