@@ -371,7 +371,7 @@ def fem_cmd(xi: Xi = None, nu: Nu = 0.3, gamma: Gamma = None, delta: Delta = Non
             xdmf: Annotated[Optional[Path], typer.Option(help=(
                 "Write volume snapshots for ParaView to this XDMF file (.xdmf, data in the .h5 of the same name): "
                 "displacement, velocity, stress; contact pressure, shear, traction, state. Lengths in R, stresses "
-                "in E, times Omega t."))] = None,
+                "in E, times in seconds; meshio.xdmf.TimeSeriesReader reads it."))] = None,
             xdmf_every: XdmfEvery = None,
             overwrite: Overwrite = False, json: Json = False):
     """Finite element model of section 3.1 (scikit-fem): run to the limit regime and classify it."""

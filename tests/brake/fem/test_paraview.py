@@ -47,7 +47,8 @@ def test_the_file_reads_back_with_the_mesh_the_cadence_and_the_fields(tmp_path):
     times = np.array([t for t, _, _ in frames])
     assert len(frames) == len(due) + 1 == int(np.ceil(total / stride)) + 1  # and the start, at t = 0
     assert times[0] == 0.0
-    assert times[1:] == pytest.approx((np.array(due) * st["chunk"] - 1) * s.dt, rel=1e-14)  # paper time Omega t
+    # in seconds: the paper's time Omega t over Omega = 50 rad/s (issue 44: it was Omega t, the netCDF seconds)
+    assert times[1:] == pytest.approx((np.array(due) * st["chunk"] - 1) * s.dt / 50.0, rel=1e-14)
     assert np.all(np.diff(times) > 0)
     for _, point_data, cell_data in frames:
         assert set(point_data) == POINT_FIELDS and set(cell_data) == CELL_FIELDS
@@ -55,7 +56,9 @@ def test_the_file_reads_back_with_the_mesh_the_cadence_and_the_fields(tmp_path):
         assert cell_data["stress"][0].shape == (n_r * n_theta, 9)
         assert all(np.isfinite(v).all() for v in point_data.values())
     # where a frame and a snapshot of the contact nodes (kept apart by the run) coincide, they agree
-    common = [(k, int(np.flatnonzero(run.snap_t == t)[0])) for k, t in enumerate(times) if t in run.snap_t]
+    paper = times * 50.0
+    common = [(k, int(np.flatnonzero(np.isclose(run.snap_t, t, rtol=1e-13, atol=0))[0])) for k, t in enumerate(paper)
+              if np.isclose(run.snap_t, t, rtol=1e-13, atol=0).any()]
     assert len(common) >= 3
     for k, j in common:
         pd = frames[k][1]

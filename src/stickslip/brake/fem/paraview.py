@@ -8,8 +8,10 @@ it shows meshio's layout as two blocks, the time series and the static ``mesh``)
 
 Units are the paper's: points and displacements in units of ``R`` (the bore radius), so the
 mesh is the annulus ``1 <= r <= xi`` at ``z = 0``; velocities in ``R Omega``; stresses,
-pressures and tractions in units of ``E``; times are the paper's ``t = Omega t̄`` (the
-snapshot times ``vol_t`` of the run). XDMF has no place for units, hence this list. Vectors
+pressures and tractions in units of ``E``; times in seconds (the snapshot times ``vol_t`` of the
+run, ``Omega t̄``, divided by ``Omega``), as in the run's netCDF and in `stickslip fem`'s XDMF;
+a run of dimensionless parameters (`BrakeParams` without physical ones) has no seconds and keeps
+the paper's ``Omega t̄``. XDMF has no place for units, hence this list. Vectors
 are Cartesian and padded with ``z = 0`` (ParaView's 3-component vectors). The fields are the
 general body's (`stickslip.fem.paraview.run_snapshot`, on the annulus's problem
 `problem.annulus_problem`) and the annulus's polar components beside them. Per snapshot:
@@ -80,7 +82,7 @@ def write_xdmf(run: FemRun, path) -> Path:
     """Write the volume snapshots of ``run`` to ``path`` (``.xdmf``) and its ``.h5`` companion.
 
     See the module docstring for the fields, their units (lengths ``R``, stresses ``E``,
-    times ``Omega t``) and how the files are replaced. Returns ``path``.
+    times in seconds) and how the files are replaced. Returns ``path``.
 
     Parameters
     ----------
@@ -98,5 +100,8 @@ def write_xdmf(run: FemRun, path) -> Path:
     scheme, snaps = run.scheme, run.snapshots
     body = scheme.problem.system.body
     points = np.column_stack([body.points, np.zeros(len(body.points))])
-    steps = (_polar(scheme, snaps, k) for k in range(len(snaps["vol_t"])))
+    physical = scheme.params.physical
+    per_second = 1.0 if physical is None else physical.omega  # the paper's time is Omega t
+    steps = ((time / per_second, points, cells) for time, points, cells in
+             (_polar(scheme, snaps, k) for k in range(len(snaps["vol_t"]))))
     return write_xdmf_series(path, points, [(body.kind, body.cells.astype(np.int64))], steps)
