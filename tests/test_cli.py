@@ -233,3 +233,20 @@ def test_the_command_line_loads_no_model_before_a_command_needs_it():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert out.returncode == 0, out.stderr
     assert out.stdout.split() == []
+
+
+def _cells(text: str, column: int) -> str:
+    """The text of one column of a rich table, its folded lines joined."""
+    return "".join(line.split("│")[column].strip() for line in text.splitlines() if line.count("│") >= column + 1)
+
+
+@pytest.mark.parametrize("width", ["40", "60", "100"])
+def test_a_human_table_folds_a_long_value_instead_of_cutting_it(width, monkeypatch, capsys):
+    """Issue 44: a narrow terminal or a pipe showed `stick-slip-separati…`."""
+    from stickslip.cli.common import emit
+
+    monkeypatch.setenv("COLUMNS", width)
+    value = "stick-slip-separation-with-reverse-slip-and-overshoot"
+    emit({"regime": value, "records": [{"regime": value, "n": 1}]}, False, "a result")
+    out = capsys.readouterr().out
+    assert "…" not in out and _cells(out, 2).count(value) == 1 and value in _cells(out, 1)

@@ -147,8 +147,8 @@ def emit(data: dict, as_json: bool, title: str, model: str = "common") -> None:
     console = Console()
     plain = Text  # every cell is text as it is: "[re, im]" or "[rad]" are not markup
     table = Table(title=plain(title), show_header=True, header_style="bold")
-    for column in ("quantity", "value", "units", "meaning"):
-        table.add_column(plain(column))
+    for column in ("quantity", "value", "units", "meaning"):  # a long word folds onto the next line, never cut
+        table.add_column(plain(column), overflow="fold")
     for key, value in rows:
         if key not in records:
             table.add_row(*map(plain, (key, _number(value), *units_of(key, model))))
@@ -160,7 +160,7 @@ def emit(data: dict, as_json: bool, title: str, model: str = "common") -> None:
                     else None)
         for c in columns:
             unit = units_of(c, model)[0]
-            sub.add_column(plain(f"{c} [{unit}]" if unit and unit != "1" else c))
+            sub.add_column(plain(f"{c} [{unit}]" if unit and unit != "1" else c), overflow="fold")
         for item in items:
             sub.add_row(*(plain(_number(item.get(c))) for c in columns))
         console.print(sub)
