@@ -75,6 +75,24 @@ def test_tracking_by_shape_follows_two_modes_through_a_frequency_crossing():
     assert slopes == pytest.approx([-5.0, 10.0])
 
 
+def test_a_branch_that_starts_later_has_no_frequency_before_it_not_zero():
+    """Issue 44: a branch born at the third value stored frequency 0 Hz at the first two (a false
+    line at 0 Hz in the sweep's plot); where it has no mode, its growth rate and frequency are NaN."""
+    from stickslip.fem.tracking import Tracked
+
+    rng = np.random.default_rng(2)
+    a, b = rng.standard_normal(32) + 0j, rng.standard_normal(32) + 0j
+    s_points = [np.array([-1 + 100j]), np.array([-1 + 101j]), np.array([-1 + 102j, 2 + 300j])]
+    sketches = [np.array([a]), np.array([a]), np.array([a, b])]
+    s, where = track(s_points, sketches)
+    assert s.shape == (2, 3) and list(where[1]) == [-1, -1, 1]
+    ds = Tracked("contact.friction", np.array([0.1, 0.2, 0.3]), s, np.full(2, np.nan), np.full(2, np.nan),
+                 np.full(2, -1), np.zeros(2, int), 1e-2, (0.0, 1e3)).to_xarray()
+    freq = ds["frequency"].values
+    assert np.isnan(freq[1, :2]).all() and freq[1, 2] == pytest.approx(300 / (2 * math.pi))
+    assert np.isnan(ds["growth_rate"].values[1, :2]).all() and "NaN" in ds["frequency"].attrs["comment"]
+
+
 @pytest.mark.parametrize("args, words", [
     (["--sweep", "colour=0:1:3", "--store", "s.zarr"], ["--sweep = 'colour'", "contact.friction"]),
     (["--sweep", "friction=0:20:3", "--store", "s.zarr"], ["--sweep = 'friction=0:20:3'", "at 10", "contact.static_friction = 0.6 must be >="]),

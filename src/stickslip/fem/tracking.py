@@ -111,7 +111,8 @@ def track(s_points: list, sketches: list, min_mac: float = MIN_MAC) -> tuple[np.
                     now.append(last[r])
         for c in range(len(s)):
             if c not in taken:
-                b = {"s": np.full(len(s_points), np.nan + 0j), "at": np.full(len(s_points), -1), "x": x[c]}
+                # NaN in both parts where the branch has no mode (nan + 0j stored a frequency of 0 Hz there)
+                b = {"s": np.full(len(s_points), complex(np.nan, np.nan)), "at": np.full(len(s_points), -1), "x": x[c]}
                 b["s"][p], b["at"][p] = s[c], c
                 branches.append(b)
                 now.append(len(branches) - 1)
@@ -146,9 +147,11 @@ class Tracked:
         name = self.key.split(".")[-1]
         units = Q[name].units if name in Q else "1"
         value = ("value", self.values, {"units": units, "long_name": f"swept value of {self.key}"})
-        data = {"growth_rate": (("branch", "value"), self.s.real),
-                "frequency": (("branch", "value"), self.s.imag / (2 * math.pi)),
-                "growing": (("branch", "value"), _unstable(self.s).astype(np.int8)),
+        missing = "NaN where the branch has no mode at this value (it starts later or ended)"
+        data = {"growth_rate": (("branch", "value"), self.s.real, {"comment": missing}),
+                "frequency": (("branch", "value"), self.s.imag / (2 * math.pi), {"comment": missing}),
+                "growing": (("branch", "value"), _unstable(self.s).astype(np.int8),
+                            {"comment": "0 where the branch has no mode at this value"}),
                 "critical": ("branch", self.critical, {"units": units, "long_name": f"{self.key} where the branch's "
                                                    "growth rate changes sign (NaN: it does not)"}),
                 "critical_frequency": ("branch", self.critical_frequency),
