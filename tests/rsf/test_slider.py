@@ -195,3 +195,17 @@ def test_two_state_variables_and_the_regularised_law_against_an_independent_stif
         assert run.slip_rate.min() < 0.1 * V0 * math.exp(-f0 / A)  # where the two laws differ
     if b2:
         np.testing.assert_allclose(run.theta[:, 1][-1], y[2], rtol=1e-6)
+
+
+@pytest.mark.parametrize("history, part", [("0:1e-6,0:1e-5", "its times"), ("5:1e-6", "its times"),
+                                           ("0:1e-6,20:1e-5,10:1e-6", "its times"), ("0:1e-6,10:-1", "its velocities"),
+                                           ("0:1e-6,10:1e99", "its velocities")])
+def test_a_bad_history_on_the_command_line_is_named_as_typed(history, part, capsys):
+    """Issue 44: a geophysicist's bad --history was named `times` or `--load-velocity` (not typed)."""
+    from stickslip.cli import run
+
+    code = run(["rsf", "slide", "--a", "0.01", "--b", "0.015", "--dc", "1e-5", "--normal-stress", "1e7",
+                "--stiffness", "1e10", "--t-end", "30", "--history", history])
+    out, err = capsys.readouterr()
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert f"--history = {history!r}" in err and part in err and "load-velocity" not in err and " times " not in err

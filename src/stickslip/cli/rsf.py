@@ -68,7 +68,15 @@ def _history(text: str | None, load_velocity: float | None):
     if not pairs or any(len(p) != 2 for p in pairs):
         raise ParameterError("--history", text, "time:velocity pairs separated by commas, from time 0 "
                                                 "(s:m/s, e.g. 0:1e-6,20:1e-5,60:0,100:1e-6)")
-    return [p[1] for p in pairs], [p[0] for p in pairs]
+    velocities, times = [p[1] for p in pairs], [p[0] for p in pairs]
+    from ..rsf import load_history
+
+    try:  # a bad time or velocity named as typed: --history (the library names its times and load_velocity)
+        load_history(velocities, times)
+    except ParameterError as err:
+        part = "its times" if err.name == "times" else "its velocities"
+        raise ParameterError("--history", text, f"{err.allowed} ({part})") from None
+    return velocities, times
 
 
 @app.command()
