@@ -132,3 +132,16 @@ def test_a_problem_found_after_reading_names_the_files_key(tmp_path, capsys):
     assert run(["system", "stability", str(tmp_path / "s.toml")]) == 2
     err = capsys.readouterr().err
     assert "contact[1].surface_speed" in err and "contacts[" not in err
+
+
+def test_a_cycle_looked_for_too_early_says_a_longer_transient(capsys):
+    """Issue 44: `system cycle` failed from the transient's last event without saying that a longer
+    --transient lets the motion settle (the same file settles with --transient 12)."""
+    from stickslip.system import limit_cycle, load_system
+
+    with pytest.raises(NoSolutionError, match="a longer transient"):
+        limit_cycle(load_system(SYSTEM_FILE), transient=4.0)
+    assert run(["system", "cycle", SYSTEM_FILE, "--transient", "4"]) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "a longer --transient" in err
+    assert run(["system", "cycle", SYSTEM_FILE, "--transient", "12", "--json"]) == 0

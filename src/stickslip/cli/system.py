@@ -9,7 +9,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from ..errors import ParameterError
+from ..errors import NoSolutionError, ParameterError
 from ..quantities import COMMON, SYSTEM as Q
 from .helptext import Typer
 from .common import Replace, declared, emit, output_path, overwrite_needs, write_netcdf
@@ -161,8 +161,11 @@ def cycle(file: File, x0: X0 = None, v0: V0 = None,
         else:
             common = {"transient": 100.0 if transient is None else transient, "tol": 1e-10 if tol is None else tol,
                       "max_iter": max_iter}
-            result = (forced_response(system, x0, v0, periods=periods, **common) if system.harmonics
-                      else limit_cycle(system, x0, v0, **common))
+            try:
+                result = (forced_response(system, x0, v0, periods=periods, **common) if system.harmonics
+                          else limit_cycle(system, x0, v0, **common))
+            except NoSolutionError as err:  # the library's advice, in the option's name
+                raise NoSolutionError(str(err).replace("a longer transient", "a longer --transient")) from None
     _emit(result.to_dict(), json, "periodic response" if system.harmonics else "limit cycle")
     if out is not None:
         write_netcdf(result.to_xarray(), out)

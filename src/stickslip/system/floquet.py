@@ -328,7 +328,11 @@ def limit_cycle(system: System, x0=None, v0=None, *, transient: float = 100.0, t
     n = system.dofs
     z, states = crossings[-1][1], crossings[-1][3]
     horizon = transient if len(crossings) < 2 else 4.0 * (crossings[-1][0] - crossings[-2][0])
-    period, z, start, segments = return_fixed_point(system, z, states, signature, horizon, tol, max_iter)
+    try:
+        period, z, start, segments = return_fixed_point(system, z, states, signature, horizon, tol, max_iter)
+    except NoSolutionError as err:
+        raise NoSolutionError(f"{err}; the section was the transient's last such event (t = {crossings[-1][0]:.6g} s): "
+                              "a longer transient lets the motion settle onto its cycle first") from None
     mult = np.linalg.eigvals(monodromy(system, segments))
     mult = mult[np.argsort(-np.abs(mult))]
     return SystemCycle(period, z[:n], z[n:2 * n], signature[0], signature[1], start, mult,
