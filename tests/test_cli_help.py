@@ -142,3 +142,17 @@ def test_options_that_choose_the_run_are_not_model_parameters_or_parallelism():
     """Issue 44: reproduce's --force was listed under Model, --quick and --only under Parallel runs and sweeps."""
     for name in ("force", "quick", "only"):
         assert [h for h, names in PANELS.items() if name in names] == ["Run and numerics"], name
+
+
+@pytest.mark.parametrize("path,command", LEAVES, ids=[p for p, _ in LEAVES])
+def test_help_points_to_what_an_installed_package_has_not_to_repository_paths(path, command, capsys):
+    """Issue 44: `--help` pointed to docs/systems.md, which a wheel user does not have; a module it
+    names for `python -m pydoc` is one the package holds."""
+    import importlib
+
+    assert run([*path.split(), "--help"]) == 0
+    text = " ".join(capsys.readouterr().out.split())
+    help_text = text.split(" Example: ")[0]  # the example runs in a clone (its examples/ files)
+    assert not re.search(r"(?<![\w.])(docs|examples|tests|src)/", help_text) and "see the docs" not in text, text
+    for module in re.findall(r"python -m pydoc ([\w.]+?)\.?(?:\)|\s|$)", text):
+        assert importlib.import_module(module).__doc__, module

@@ -27,7 +27,8 @@ app = Typer(no_args_is_help=True, rich_markup_mode=None,
 CONFIG_NAMES = {"alpha": "material.alpha", "beta": "material.beta", "band": "cea.band", "count": "cea.count",
                 "complete_below": "cea.complete_below"}
 
-Config = Annotated[Path, typer.Argument(help="The TOML config (mesh, material, contact, surface; see the docs).")]
+Config = Annotated[Path, typer.Argument(help="The TOML config (mesh, material, contact, surface; its keys, with an "
+                                                 "example: python -m pydoc stickslip.fem.config).")]
 Json = Annotated[bool, typer.Option("--json", help="Print one JSON object on stdout.")]
 
 

@@ -461,7 +461,7 @@ def command(app, runner):
     """The ``stickslip sweep`` command of the command line ``app``, whose points run through
     ``runner(argv) -> exit code`` (`stickslip.cli.run`)."""
     def sweep(config: Annotated[Path, typer.Argument(help="The sweep's TOML config: command, outputs, [fixed] and "
-                                                           "[axes] (see docs/sweeps-on-a-cluster.md).")],
+                                                           "[axes] (an example: python -m pydoc stickslip.cli.study).")],
               out: Annotated[Path, typer.Option("--out", help="The sweep's Zarr store (.zarr); resumed if it holds "
                                                               "this sweep.")],
               scheduler: Annotated[Optional[str], scheduler_option(

@@ -18,11 +18,13 @@ _emit = functools.partial(emit, model="system")
 
 app = Typer(no_args_is_help=True, rich_markup_mode=None,
                   help="Structures M x'' + C x' + K x = f(t) + sum of contact forces, with several frictional "
-                       "contacts and harmonic forces (a TOML file: docs/systems.md).")
+                       "contacts and harmonic forces (a TOML file; its keys, with an example: python -m pydoc "
+                       "stickslip.system.config).")
 
 File = Annotated[Path, typer.Argument(help="The system: a TOML file of mass, stiffness, [damping, force], one "
                                            "[[contact]] table per contact and one [[harmonic]] per harmonic force "
-                                           "(docs/systems.md).", show_default=False)]
+                                           "(an example: python -m pydoc stickslip.system.config).",
+                                      show_default=False)]
 Periods = Annotated[int, declared(Q["periods"], "--periods", "With a periodic force: the forcing periods over "
                                                              "which the response repeats (more than 1: a "
                                                              "subharmonic).")]
