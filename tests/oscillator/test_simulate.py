@@ -168,3 +168,18 @@ def test_trajectory_dataset_has_units():
     assert ds["x"].attrs["units"] == "m" and ds["t"].attrs["units"] == "s" and ds["v"].attrs["units"] == "m/s"
     assert set(np.unique(ds["mode"].values)) <= {-1, 0, 1}
     assert ds.attrs["friction_law"] == "Coulomb"
+
+
+@pytest.mark.parametrize("args, kwargs, name", [(("a", 0.0, 1.0), {}, "x0"), ((0.0, float("nan"), 1.0), {}, "v0"),
+                                                ((0.0, 0.0, -1.0), {}, "t_end"), ((0.0, 0.0, 1.0), {"section": "x"}, "section"),
+                                                ((0.0, 0.0, 1.0), {"max_events": 0}, "max_events")])
+def test_engine_run_refuses_bad_arguments_naming_them(args, kwargs, name):
+    """Issue 44: `Engine.run` is public; its arguments were passed on unchecked (a string x0 was numpy's error)."""
+    from stickslip.errors import ParameterError
+    from stickslip.friction import Coulomb
+    from stickslip.oscillator import Oscillator
+    from stickslip.oscillator.simulate import Engine
+
+    with pytest.raises(ParameterError) as err:
+        Engine(Oscillator(1.0, 1.0, 1.0, 0.2, Coulomb(0.6, 0.4))).run(*args, **kwargs)
+    assert err.value.name == name

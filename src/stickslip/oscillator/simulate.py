@@ -23,6 +23,7 @@ from ..results import Result
 from ..cf import finish
 from ..quantities import OSCILLATOR as Q
 from ..errors import NoSolutionError, ParameterError
+from ..validation import finite
 from .kernel import KERNELS, SEGMENT_COST
 from .flows import AffineSlip, CompiledSlip, NumericSlip, StepPieces, compiled_failure
 from .model import Mode, Oscillator
@@ -242,7 +243,27 @@ class Engine:
 
     def run(self, x0, v0, t_end, *, section: float | None = None, max_events: int = 10**7) -> Trajectory:
         """Integrate from ``(x0, v0)`` to ``t_end`` or to the first upward crossing of
-        ``v = section`` (a Poincare section), whichever comes first."""
+        ``v = section`` (a Poincare section), whichever comes first.
+
+        Parameters
+        ----------
+        x0, v0 : float
+            The starting displacement [m] and velocity [m/s].
+        t_end : float
+            The time the run ends at [s], > 0 (earlier at the section).
+        section : float, optional
+            A velocity [m/s]: the run stops where ``v`` crosses it upward.
+        max_events : int
+            Safety bound on the number of segments.
+
+        Returns
+        -------
+        Trajectory
+            Check ``status``: negative means the run stopped early (``message`` says why).
+        """
+        x0, v0, t_end = Q.check("x0", x0), Q.check("v0", v0), Q.check("t_end", t_end)
+        section = None if section is None else finite("section", section)
+        max_events = Q.check("max_events", max_events)
         if self.closed:
             return self._run_closed(float(x0), float(v0), t_end, section, max_events)
         if self.compiled:
