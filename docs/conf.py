@@ -83,6 +83,8 @@ sphinx_gallery_conf = {
     "image_scrapers": (FigureScraper(),),
     "download_all_examples": False,
     "remove_config_comments": True,
+    # no page of execution times: its table loads jQuery and DataTables from CDNs (the docs render offline)
+    "write_computation_times": False,
     "within_subsection_order": "FileNameSortKey",
     "reset_modules": (),
     "capture_repr": (),
