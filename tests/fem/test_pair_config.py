@@ -173,3 +173,20 @@ def test_a_pad_on_the_disc_takes_a_law_of_the_slip_speed_and_of_the_pressure(fol
     import xarray as xr
     with xr.open_dataset(out) as ds:
         assert "Stribeck" in ds.attrs["friction_law"] and ds.attrs["reference_pressure"] == 1e6
+
+
+def test_the_partners_material_is_set_from_the_command_line_as_in_its_file(folder, capsys):
+    """Issue 44: `--set partner.material.young=...` was refused (only one level of tables was a key);
+    it gives what the edited file gives, and a short name stays the body's own key."""
+    from stickslip.fem.config import numeric_keys, read_toml, resolve_key
+
+    data = read_toml(folder / "pad_disc.toml")
+    assert {"partner.material.young", "partner.material.density"} <= set(numeric_keys(data))
+    assert resolve_key(data, "young") == "material.young"
+    edited = _config(folder, "young = 1.25e11", "young = 6.0e10", name="soft_disc.toml")
+    results = []
+    for args in ([str(folder / "pad_disc.toml"), "--set", "partner.material.young=6e10"], [str(edited)],
+                 [str(folder / "pad_disc.toml")]):
+        assert run(["fem", "steady", *args, "--json"]) == 0
+        results.append(json.loads(capsys.readouterr().out))
+    assert results[0] == results[1] and results[0]["normal_force"] != results[2]["normal_force"]

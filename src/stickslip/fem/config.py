@@ -225,38 +225,52 @@ def read_toml(path) -> dict:
                              "nests two levels)") from None
 
 
-_KEY = re.compile(r"^([a-z_]+)(?:\[(\d+)\])?\.([a-z_]+)$")
+#: One table of a key's path: ``material``, or ``material[1]`` (an entry of an array of tables).
+_TABLE = re.compile(r"^([a-z_]+)(?:\[(\d+)\])?$")
 
 
 def numeric_keys(data: dict) -> list[str]:
     """The keys of a config (its TOML ``data``) that hold one number and may be swept: those
     written, and the contact's coefficients (default 0)."""
     out = ["contact.friction", "contact.static_friction"]
+
+    def tables(name, value):
+        """``(path, table)`` of a table or of each entry of an array of tables."""
+        if isinstance(value, dict):
+            return [(name, value)]
+        return [(f"{name}[{i}]", t) for i, t in enumerate(value) if isinstance(t, dict)] \
+            if isinstance(value, list) else []
+
+    def walk(where, table, nested):
+        for key, x in table.items():
+            if nested and isinstance(x, (dict, list)):  # a table within a section: [partner.material]
+                for inner, t in tables(f"{where}.{key}", x):
+                    walk(inner, t, False)
+                continue
+            q = Q.get(key)
+            if q is not None and q.range is not None and not q.choices and isinstance(x, (int, float)) and \
+                    not isinstance(x, bool) and f"{where}.{key}" not in out:
+                out.append(f"{where}.{key}")
+
     for section, value in data.items():
         if section == "cea":  # how the modes are searched for, not the problem
             continue
-        tables = [(section, value)] if isinstance(value, dict) else \
-            [(f"{section}[{i}]", t) for i, t in enumerate(value)] if isinstance(value, list) else []
-        for where, table in tables:
-            if not isinstance(table, dict):
-                continue
-            for key, x in table.items():
-                q = Q.get(key)
-                if q is not None and q.range is not None and not q.choices and isinstance(x, (int, float)) and \
-                        not isinstance(x, bool) and f"{where}.{key}" not in out:
-                    out.append(f"{where}.{key}")
+        for where, table in tables(section, value):
+            walk(where, table, True)
     return out
 
 
 def resolve_key(data: dict, name: str, option: str = "key") -> str:
     """The full key (`numeric_keys`) that ``name`` means: itself, or the one key it ends
-    (``friction`` -> ``contact.friction``, ``young`` -> ``material.young`` on one material)."""
+    (``friction`` -> ``contact.friction``, ``young`` -> ``material.young`` on one material; the
+    body's key before a partner's, which is named in full: ``partner.material.young``)."""
     keys = numeric_keys(data)
     if name in keys:
         return name
     found = [k for k in keys if k.split(".")[-1] == name]
-    if len(found) == 1:
-        return found[0]
+    own = [k for k in found if not k.startswith("partner.")]  # a short name is the body's; the partner's in full
+    if len(found) == 1 or len(own) == 1:
+        return found[0] if len(found) == 1 else own[0]
     raise ParameterError(option, name, f"a key of the config holding one number ({', '.join(keys)})"
                          + (f"; {name!r} is more than one of them: name it in full" if found else ""))
 
@@ -268,12 +282,14 @@ def _with(data: dict, overrides) -> dict:
     data = copy.deepcopy(data)
     keys = numeric_keys(data)
     for key, value in dict(overrides).items():
-        match = _KEY.match(str(key))
-        if key not in keys or match is None:
+        if key not in keys:
             raise ParameterError("key", key, f"a key of the config holding one number ({', '.join(keys)})")
-        section, index, name = match.groups()
-        table = data.setdefault(section, {})
-        table = table[int(index)] if index is not None else table
+        *path, name = str(key).split(".")
+        table = data
+        for part in path:  # numeric_keys wrote the path: each part a table, or an entry of an array of them
+            section, index = _TABLE.match(part).groups()
+            table = table.setdefault(section, {})
+            table = table[int(index)] if index is not None else table
         table[name] = value
     return data
 
