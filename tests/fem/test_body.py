@@ -125,3 +125,30 @@ def test_a_quadratic_mesh_is_read_turned_round_and_its_bad_middle_nodes_refused(
     _refused(meshio.Mesh(m.points, lines, cell_sets=m.cell_sets), "3-node lines (line3)")
     wrong = [meshio.CellBlock(b.type, b.data[:, [0, 1, 0]] if b.type == "line3" else b.data) for b in m.cells]
     _refused(meshio.Mesh(m.points, wrong, cell_sets=m.cell_sets), "with the middle nodes of its cells' edges")
+
+
+def _two_squares(joined: bool):
+    """A lining (left) and a backplate (right) of one quad each, side by side; their common side
+    one pair of nodes (joined) or two pairs at the same places (meshed apart)."""
+    import meshio
+
+    points = [[0, 0], [1, 0], [1, 1], [0, 1], [2, 0], [2, 1]]
+    right = [1, 4, 5, 2]
+    if not joined:
+        points += [[1, 0], [1, 1]]
+        right = [6, 4, 5, 7]
+    cells = [("quad", np.array([[0, 1, 2, 3], right]))]
+    return meshio.Mesh(np.array(points, dtype=float), cells,
+                       cell_sets={"lining": [np.array([0])], "backplate": [np.array([1])]})
+
+
+def test_parts_meshed_apart_are_named_not_left_to_cycle():
+    """Issue 44: a pad whose lining and backplate were meshed apart (their interface nodes
+    duplicated) ended in "the active set cycles"; it is refused naming the parts."""
+    from stickslip.fem.body import body_from_meshio
+
+    assert len(body_from_meshio(_two_squares(True)).cells) == 2
+    with pytest.raises(ParameterError) as err:
+        body_from_meshio(_two_squares(False), "pad.msh")
+    text = str(err.value)
+    assert err.value.name == "mesh" and "2 parts" in text and "lining (1 cells)" in text and "backplate (1 cells)" in text

@@ -12,8 +12,10 @@ its own material (`stickslip.fem.assembly.assemble`).
 Checked on the way in, each refused with a `ParameterError` naming the mesh and the
 problem: a mesh that is not planar, no cells or cells of another kind, mixed kinds,
 inverted elements (some cells turn the other way than the rest), degenerate elements
-(area below 1e-10 of the mean), and boundary groups whose edges are not on the boundary
-(on a quadratic mesh, also those whose middle node is not their cells').
+(area below 1e-10 of the mean), parts that share no node (a lining and a backplate meshed
+apart, their interface nodes duplicated: one body has one connected mesh), and boundary groups
+whose edges are not on the boundary (on a quadratic mesh, also those whose middle node is not
+their cells').
 Unused points are dropped and the cells are oriented counter-clockwise.
 """
 
@@ -175,6 +177,7 @@ def body_from_meshio(mesh, source: str = "mesh") -> Body:
         flipped = areas < 0
         raise bad(f"a mesh without inverted cells ({int(flipped.sum())} of {len(cells)} turn the other way, "
                   f"the first is cell {int(np.argmax(flipped))})")
+    _connected(cells, len(points), _cell_groups(mesh, blocks, kind), source)
     renumber = np.full(int(used.max()) + 1, -1)
     renumber[used] = np.arange(used.size)
     boundary = _boundary_edges(cells[:, :_CORNERS[kind]])
@@ -204,6 +207,28 @@ def body_from_meshio(mesh, source: str = "mesh") -> Body:
                           f"its {len(edges)} edges have another, the first is edge {wrong[0]})")
         groups[name] = edges
     return Body(points, cells, kind, groups, source, cell_groups)
+
+
+def _connected(cells: np.ndarray, n: int, cell_groups: dict, source: str) -> None:
+    """Refuse a mesh whose cells make more than one part sharing no node, naming each part by its
+    cell groups (or its count of cells): the parts would move apart, and a contact on one of them
+    would find no steady state (the active set cycles)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    rows = np.repeat(cells[:, 0], cells.shape[1])
+    graph = coo_matrix((np.ones(rows.size), (rows, cells.ravel())), shape=(n, n))
+    parts, label = connected_components(graph, directed=False)
+    if parts == 1:
+        return
+    of_cell = label[cells[:, 0]]
+    names = []
+    for part in range(min(parts, 5)):
+        groups = [g for g, idx in sorted(cell_groups.items()) if np.any(of_cell[idx] == part)]
+        names.append(f"{' + '.join(groups) or 'cells'} ({int(np.sum(of_cell == part))} cells)")
+    raise ParameterError("mesh", source, f"one connected body: this mesh has {parts} parts that share no node "
+                         f"({'; '.join(names)}{'; ...' if parts > 5 else ''}): where parts meet, their nodes are "
+                         "duplicated; join them (gmsh: Coherence, or BooleanFragments before meshing)")
 
 
 def _cell_groups(mesh, blocks, kind: str) -> dict:
