@@ -124,7 +124,9 @@ def test_a_config_that_is_not_utf8_or_nests_too_deeply_is_named(text, words, tmp
 
 def test_an_absurd_interference_is_named_as_such_not_as_the_speed(tmp_path, capsys):
     text = Path(example_config()).read_text()
-    for value, words in (("1e10", "in [-1000, 1000] m"), ("1e-2", "0.1 x the length of the contact group")):
+    # 2 mm into a pad 15.3 mm wide at its narrowest: a strain of 0.13 (issue 44: it ran at GPa without a word)
+    for value, words in (("1e10", "in [-1000, 1000] m"), ("1e-2", "0.1 x the length of the contact group"),
+                         ("2e-3", "implies a strain of about 0.13"), ("-2e-3", "linear elasticity is a model of small")):
         config = tmp_path / "i.toml"
         config.write_text(text.replace("interference = 2e-6", f"interference = {value}").replace(
             'mesh = "pad.msh"', f'mesh = "{example_config().replace("pad.toml", "pad.msh")}"'))

@@ -662,8 +662,17 @@ def _made(problems, kind, *args):
 MAX_INTERFERENCE = 0.1
 
 
+def _narrowest(points: np.ndarray) -> float:
+    """The body's width at its narrowest: the least extent of its points over 180 directions."""
+    angles = np.linspace(0.0, np.pi, 180, endpoint=False)
+    return float(np.ptp(points @ np.array([np.cos(angles), np.sin(angles)]), axis=0).min())
+
+
 def _interference(problems, body, group, push) -> bool:
-    """An interference of at most `MAX_INTERFERENCE` times the contact group's length in size."""
+    """An interference of at most `MAX_INTERFERENCE` times the contact group's length in size, and
+    of at most `MAX_STRAIN` (the loads' bound, `stickslip.fem.assembly`) times the body's narrowest
+    width: a strain that linear elasticity describes (a pad pushed 2 mm into its 8 mm lining ran at
+    1.5 GPa without a word)."""
     if not isinstance(push, (int, float)) or isinstance(push, bool) or not math.isfinite(push) \
             or push not in Q["interference"].range:
         return True  # (refused as a number already)
@@ -672,6 +681,12 @@ def _interference(problems, body, group, push) -> bool:
     if abs(push) > MAX_INTERFERENCE * length:
         problems.append(f"surface.interference = {push!r} must be at most {MAX_INTERFERENCE:g} x the length of the "
                         f"contact group {group!r} ({length:.4g} m) in size: {Q['interference'].why}")
+        return False
+    width = _narrowest(body.points)
+    if abs(push) > MAX_STRAIN * width:
+        problems.append(f"surface.interference = {push!r} implies a strain of about {abs(push) / width:.2g} across the "
+                        f"body ({width:.4g} m wide at its narrowest): at most {MAX_STRAIN:g} x that width, "
+                        f"{MAX_STRAIN * width:.4g} m (linear elasticity is a model of small strains)")
         return False
     return True
 
