@@ -53,6 +53,7 @@ def test_each_figure_says_when_it_starts_and_ends_as_it_goes(tmp_path, capsys, m
     assert "10 of 10 checks pass" in ended and err.index(ended) < err.index(started[1]), err
 
 
+@pytest.mark.slow  # 8 to 14 s: the fast set's margin to its 4 minutes (issue 47)
 def test_figures_computed_in_two_processes_are_recorded_as_computed_one_after_another(tmp_path, capfd):
     """Issue 47: --workers 2 computes the figures in worker processes (each logs its start) and
     this process plots, checks and records them: the same checks and numbers as one after

@@ -16,6 +16,7 @@ from stickslip.errors import ParameterError
 CASE1 = (0.2, 4e-4, 1.0)  # section 3.1 case 1: settles quickly on a stationary stick-slip wave
 
 
+@pytest.mark.slow  # 8 to 14 s: the fast set's margin to its 4 minutes (issue 47)
 def test_a_run_stops_when_stationary_and_is_the_same_as_one_run_straight_through(tmp_path):
     p = BrakeParams.from_physical(CASE1[2], CASE1[1], CASE1[0])
     out = limit_regime(p, 256, 16, seed=0, min_transits=100.0, chunk=20.0, max_transits=200.0,
