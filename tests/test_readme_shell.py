@@ -21,9 +21,15 @@ SLOW = ("brake integrate", "brake fem", "brake map", "oscillator map", "reproduc
 BIN = Path(sys.executable).parent
 
 
+def _blocks(text: str) -> list[list[str]]:
+    """The ``stickslip`` lines of each ``sh`` block that has any."""
+    blocks = [[line.strip() for line in block.splitlines() if line.startswith("stickslip ")]
+              for block in re.findall(r"```sh\n(.*?)```", text, flags=re.S)]
+    return [block for block in blocks if block]
+
+
 def _lines(text: str) -> list[str]:
-    blocks = re.findall(r"```sh\n(.*?)```", text, flags=re.S)
-    return [line.strip() for block in blocks for line in block.splitlines() if line.startswith("stickslip ")]
+    return [line for block in _blocks(text) for line in block]
 
 
 def _shell_line(line: str) -> str:
@@ -36,13 +42,6 @@ def _shell_line(line: str) -> str:
 LINES = _lines(README.read_text())
 #: A file a line writes (an output option's value).
 _WRITES = re.compile(r"--(?:out|plot|xdmf|checkpoint|store|export)\s+(\S+)")
-
-
-def _blocks(text: str) -> list[list[str]]:
-    """The ``stickslip`` lines of each ``sh`` block that has any."""
-    blocks = [[line.strip() for line in block.splitlines() if line.startswith("stickslip ")]
-              for block in re.findall(r"```sh\n(.*?)```", text, flags=re.S)]
-    return [block for block in blocks if block]
 
 
 def written_twice(lines: list[str]) -> list[str]:

@@ -265,10 +265,10 @@ class Engine:
         section = None if section is None else finite("section", section)
         max_events = Q.check("max_events", max_events)
         if self.closed:
-            return self._run_closed(float(x0), float(v0), t_end, section, max_events)
+            return self._run_closed(x0, v0, t_end, section, max_events)
         if self.compiled:
-            return self._run_compiled(float(x0), float(v0), t_end, section, max_events)
-        return self._run_numeric(float(x0), float(v0), t_end, section, max_events)
+            return self._run_compiled(x0, v0, t_end, section, max_events)
+        return self._run_numeric(x0, v0, t_end, section, max_events)
 
     def _run_compiled(self, x0, v0, t_end, section, max_events):
         """`_run_numeric`'s loop in one compiled call (`slipkernel.run`)."""
