@@ -12,7 +12,7 @@ OUT    ?= results
 
 .PHONY: reproduce reproduce-quick test test-slow test-all test-deep bench docs clean
 
-$(STAMP): pyproject.toml src/stickslip/__init__.py
+$(STAMP): pyproject.toml
 	@$(PYTHON) -c 'import sys; assert sys.version_info >= (3, 11), "Python >= 3.11 is required"'
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip

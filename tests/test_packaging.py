@@ -1,8 +1,9 @@
 """A package people can install and cite (issue 27).
 
-The version is written once, in ``src/stickslip/__init__.py``: hatchling reads it from there
-(``dynamic = ["version"]``), so the installed metadata, ``stickslip --version``, the files' CF
-``source`` and ``CITATION.cff`` all say the same. The extras name what the examples, notebooks and
+The version is the git tag's (hatch-vcs: ``v0.1.0`` gives 0.1.0, a commit after it
+0.1.1.devN+g<hash>), written at install into ``src/stickslip/_version.py``, so the installed
+metadata, ``stickslip --version`` and the files' CF ``source`` say the same; ``CITATION.cff`` names
+the newest release of the CHANGELOG, which is the newest tag. The extras name what the examples, notebooks and
 docs import. ``.ci/wheel`` (run by ``.ci/run``) builds the wheel and the sdist and installs them
 in fresh environments; the checks here are the fast ones.
 """
@@ -39,26 +40,52 @@ def _requirement_names(requirements: list[str]) -> set[str]:
 
 # -- one version ---------------------------------------------------------------------------------------------------
 
+#: A release's heading in CHANGELOG.md: ``## 0.1.0 — 2026-11-28``.
+RELEASE = re.compile(r"^## (\d+\.\d+\.\d+) — (\d{4}-\d{2}-\d{2})\s*$", re.M)
+
+
 def version_literals(pyproject: dict, init_source: str) -> list[str]:
-    """Every place a version number is written: ``[project] version`` and each ``__version__ = "..."``."""
+    """Every version number written by hand: ``[project] version`` and each ``__version__ = "1.2"``
+    of the package's ``__init__.py`` (the fallback of a tree never installed, ``0+unknown``, is none)."""
     found = [f"pyproject.toml: {pyproject['project']['version']}"] if "version" in pyproject["project"] else []
-    for node in ast.parse(init_source).body:
+    for node in ast.walk(ast.parse(init_source)):
         if isinstance(node, ast.Assign) and any(getattr(t, "id", None) == "__version__" for t in node.targets):
-            found.append(f"__init__.py: {ast.literal_eval(node.value)}")
+            value = node.value.value if isinstance(node.value, ast.Constant) else None
+            if isinstance(value, str) and value != "0+unknown":
+                found.append(f"__init__.py: {value}")
     return found
 
 
-def test_the_version_is_written_once():
+def latest_release(changelog: str) -> tuple[str, str]:
+    """The newest release of CHANGELOG.md: ``(version, date)``."""
+    found = RELEASE.search(changelog)
+    assert found, "CHANGELOG.md has no release heading (## X.Y.Z — YYYY-MM-DD)"
+    return found.group(1), found.group(2)
+
+
+def _git(*args: str) -> str | None:
+    try:
+        done = subprocess.run(["git", *args], cwd=ROOT, capture_output=True, text=True, timeout=30)
+    except (OSError, subprocess.TimeoutExpired):
+        return None
+    return done.stdout.strip() if done.returncode == 0 else None
+
+
+def test_the_version_is_the_git_tags_only():
     init = ROOT / "src" / "stickslip" / "__init__.py"
-    assert version_literals(PYPROJECT, init.read_text()) == [f"__init__.py: {stickslip.__version__}"]
+    assert version_literals(PYPROJECT, init.read_text()) == []
     assert "version" in PYPROJECT["project"]["dynamic"]
-    assert PYPROJECT["tool"]["hatch"]["version"]["path"] == "src/stickslip/__init__.py"
+    assert PYPROJECT["tool"]["hatch"]["version"]["source"] == "vcs"
+    assert "hatch-vcs" in _requirement_names(tomllib.loads((ROOT / "pyproject.toml").read_text())["build-system"]
+                                             ["requires"])
 
 
-def test_the_guard_finds_a_second_version():
+def test_the_guard_finds_a_version_written_by_hand():
     pyproject = {"project": {"version": "0.1.0", "dynamic": []}}
     assert version_literals(pyproject, '__version__ = "0.1.0"\n') == ["pyproject.toml: 0.1.0", "__init__.py: 0.1.0"]
-    assert len(version_literals({"project": {}}, '__version__ = "0.1.0"\n__version__ = "0.2.0"\n')) == 2
+    assert version_literals({"project": {}}, 'try:\n    pass\nexcept ImportError:\n    __version__ = "0.2"\n') == [
+        "__init__.py: 0.2"]
+    assert version_literals({"project": {}}, '__version__ = "0+unknown"\n') == []
 
 
 def test_the_installed_metadata_has_the_package_version():
@@ -66,6 +93,24 @@ def test_the_installed_metadata_has_the_package_version():
     assert installed == stickslip.__version__, (
         f"installed metadata says {installed}, stickslip.__version__ {stickslip.__version__}: the version changed "
         "since the install; reinstall (`pip install -e .`)")
+
+
+def test_the_release_is_the_tags_and_the_version_follows_it():
+    """The newest release of the CHANGELOG is the newest ``v*`` tag (where the clone has its tags),
+    and the installed version is that release or a development version after it."""
+    from packaging.version import Version
+
+    release, _ = latest_release((ROOT / "CHANGELOG.md").read_text())
+    installed = Version(stickslip.__version__)
+    tag = _git("describe", "--tags", "--abbrev=0", "--match", "v[0-9]*")
+    if tag is None:
+        pytest.skip("no release tag in this clone (a clone without tags): the version is a development one")
+    assert tag == f"v{release}", f"the newest tag is {tag}, the CHANGELOG's newest release {release}"
+    assert installed >= Version(release), f"installed {installed} is older than the release {release}"
+    if installed.is_devrelease:
+        assert installed.local is not None and installed.local.startswith("g"), installed  # after the tag: +g<hash>
+    else:
+        assert str(installed) == release
 
 
 # -- extras --------------------------------------------------------------------------------------------------------
@@ -117,14 +162,17 @@ def test_the_docs_extra_holds_the_sphinx_extensions():
 
 # -- citation ------------------------------------------------------------------------------------------------------
 
-def citation_problems(cff: dict, version: str) -> list[str]:
-    """What is wrong with a parsed CITATION.cff: CFF 1.2.0's required keys and shapes, and our facts."""
+def citation_problems(cff: dict, version: str, date: str) -> list[str]:
+    """What is wrong with a parsed CITATION.cff: CFF 1.2.0's required keys and shapes, and our facts
+    (the release ``version`` of ``date``)."""
     problems = [f"unknown key {k!r}" for k in sorted(set(cff) - CFF_ROOT_KEYS)]
     problems += [f"missing {k!r}" for k in ("cff-version", "message", "title", "authors") if k not in cff]
     if str(cff.get("cff-version")) != "1.2.0":
         problems.append(f"cff-version {cff.get('cff-version')!r}, not 1.2.0")
     if str(cff.get("version")) != version:
-        problems.append(f"version {cff.get('version')!r}, the package's is {version}")
+        problems.append(f"version {cff.get('version')!r}, the release is {version}")
+    if str(cff.get("date-released")) != date:
+        problems.append(f"date-released {str(cff.get('date-released'))!r}, the release's is {date}")
     if (cff.get("title"), cff.get("license")) != ("stickslip", "BSD-3-Clause"):
         problems.append(f"title/license {cff.get('title')!r}/{cff.get('license')!r}")
     if cff.get("authors") != [{"name": "stickslip developers"}]:
@@ -140,16 +188,18 @@ def citation_problems(cff: dict, version: str) -> list[str]:
     return problems
 
 
-def test_the_citation_file_is_valid_and_current():
+def test_the_citation_file_is_valid_and_names_the_release():
     cff = yaml.safe_load((ROOT / "CITATION.cff").read_text())
-    assert citation_problems(cff, stickslip.__version__) == []
+    assert citation_problems(cff, *latest_release((ROOT / "CHANGELOG.md").read_text())) == []
 
 
-def test_the_citation_guard_finds_a_stale_version():
-    cff = {**yaml.safe_load((ROOT / "CITATION.cff").read_text()), "version": stickslip.__version__}
-    assert citation_problems(cff, "9.9.9") == [f"version {cff['version']!r}, the package's is 9.9.9"]
+def test_the_citation_guard_finds_a_stale_release():
+    release, date = latest_release((ROOT / "CHANGELOG.md").read_text())
+    cff = {**yaml.safe_load((ROOT / "CITATION.cff").read_text()), "version": release, "date-released": date}
+    assert citation_problems(cff, "9.9.9", date) == [f"version {release!r}, the release is 9.9.9"]
+    assert citation_problems(cff, release, "2000-01-01") == [f"date-released {date!r}, the release's is 2000-01-01"]
     wrong = {**cff, "refrences": cff["references"], "references": []}
-    assert citation_problems(wrong, stickslip.__version__) == ["unknown key 'refrences'", "the paper is not cited"]
+    assert citation_problems(wrong, release, date) == ["unknown key 'refrences'", "the paper is not cited"]
 
 
 def test_the_paper_title_is_the_one_the_readme_and_the_paper_give():

@@ -4,4 +4,7 @@ Models of the paper "Friction-induced vibration and stick-slip waves: short surv
 new results": the 1-DOF friction oscillator (`stickslip.oscillator`), and more.
 """
 
-__version__ = "0.1.0"
+try:  # written at install from the git tag (hatch-vcs): the one source of the version
+    from ._version import __version__
+except ImportError:  # a source tree that was never installed
+    __version__ = "0+unknown"
