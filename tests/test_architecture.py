@@ -29,6 +29,7 @@ ALLOWED = {
     "dop853": set(),
     "kernelcopy": set(),
     "jit": set(),
+    "version": set(),  # written at install from the git tag (hatch-vcs)
     "orbits": {"errors"},
     "files": BASE,
     "contact": BASE | {"files", "kernelcopy"},
@@ -47,7 +48,7 @@ ALLOWED = {
     "cli": BASE | MODELS | {"friction", "contact", "sweep", "cluster", "files", "plotting", "figures", "report", "__init__"},
     "__main__": {"cli"},
     "precompile": MODELS | {"friction"},  # a small case of each compiled path
-    "__init__": set(),
+    "__init__": {"version"},
 }
 #: Sub-models of stickslip.brake and what each may import from the others.
 BRAKE = {"reduced": set(), "waves": {"reduced"}, "ring": {"reduced"}, "fem": {"reduced"},

@@ -1,7 +1,7 @@
 """A package people can install and cite (issue 27).
 
 The version is the git tag's (hatch-vcs: ``v0.1.0`` gives 0.1.0, a commit after it
-0.1.1.devN+g<hash>), written at install into ``src/stickslip/_version.py``, so the installed
+0.1.1.devN+g<hash>), written at install into ``src/stickslip/version.py``, so the installed
 metadata, ``stickslip --version`` and the files' CF ``source`` say the same; ``CITATION.cff`` names
 the newest release of the CHANGELOG, which is the newest tag. The extras name what the examples, notebooks and
 docs import. ``.ci/wheel`` (run by ``.ci/run``) builds the wheel and the sdist and installs them

@@ -5,6 +5,6 @@ new results": the 1-DOF friction oscillator (`stickslip.oscillator`), and more.
 """
 
 try:  # written at install from the git tag (hatch-vcs): the one source of the version
-    from ._version import __version__
+    from .version import __version__
 except ImportError:  # a source tree that was never installed
     __version__ = "0+unknown"
