@@ -18,7 +18,7 @@ import stickslip
 DOCS = Path(__file__).resolve().parent
 sys.path.insert(0, str(DOCS))  # the gallery's image scraper and the inventories' writer
 
-from field_docs import add_field_table  # noqa: E402
+import field_docs  # noqa: E402
 from gallery_support import FigureScraper  # noqa: E402
 from inventories import write_inventories  # noqa: E402
 
@@ -102,4 +102,4 @@ html_static_path: list[str] = []
 
 
 def setup(app):
-    app.connect("autodoc-process-docstring", add_field_table)  # after napoleon: the fields' table
+    field_docs.connect(app)  # each dataclass's fields: one table (units, ranges), not listed again

@@ -35,3 +35,52 @@ def test_the_command_fails_on_a_bad_page_and_passes_a_good_one(tmp_path):
     (tmp_path / "sub" / "bad.html").write_text("<p>\u2013law</p>")
     assert check_html.main([str(tmp_path)]) == 1
     assert check_html.main([str(tmp_path / "missing")]) == 2
+
+
+# A class of the API reference as Sphinx writes it: the fields' table (docs/field_docs.py), then what
+# autodoc added from the constructor's annotations (the fields listed again before issue 44).
+_TABLE = ('<dl class="py class">\n<dt class="sig sig-object py" id="stickslip.x.Run">\n<span>Run</span></dt>\n<dd>'
+          '<p class="rubric">Fields</p>\n<table><tbody>\n'
+          '<tr class="row-even"><td><p><code class="docutils literal notranslate"><span class="pre">period</span></code></p></td>\n'
+          '<tr class="row-odd"><td><p><code class="docutils literal notranslate"><span class="pre">stable</span></code></p></td>\n'
+          '</tbody>\n</table>\n')
+_PARAMETERS = ('<dl class="field-list simple">\n<dt class="field-odd">Parameters<span class="colon">:</span></dt>\n'
+               '<dd class="field-odd"><ul class="simple">\n<li><p><strong>period</strong> (<em>float</em>)</p></li>\n'
+               '<li><p><strong>stable</strong> (<em>bool</em>)</p></li></ul></dd></dl>\n')
+_METHOD = ('<dl class="py method">\n<dt class="sig sig-object py" id="stickslip.x.Run.to_dict">to_dict</dt>\n'
+           '<dd><dl class="field-list simple"><dt class="field-odd">Parameters</dt><dd><ul><li><p><strong>period'
+           '</strong> (<em>float</em>)</p></li></ul></dd></dl></dd></dl>\n')
+
+
+def test_a_field_listed_again_as_a_parameter_or_an_attribute_is_found():
+    assert check_html.repeated_fields(_TABLE + _PARAMETERS + "</dd></dl>") == [
+        "stickslip.x.Run: field 'period' listed twice", "stickslip.x.Run: field 'stable' listed twice"]
+    attribute = '<dl class="py attribute">\n<dt class="sig sig-object py" id="stickslip.x.Run.stable">stable</dt></dl>'
+    assert check_html.repeated_fields(_TABLE + attribute + "</dd></dl>") == ["stickslip.x.Run: field 'stable' listed twice"]
+    # the table alone, and a method's own parameter of the same name, are not a field listed twice
+    assert check_html.repeated_fields(_TABLE + _METHOD + "</dd></dl>") == []
+    assert check_html.problems(_TABLE + _PARAMETERS) != []
+
+
+def test_an_executed_page_without_output_or_picture_is_found():
+    output = '<div class="cell_output docutils container"><pre>period 6.71</pre></div>'
+    image = '<img alt="_images/x.png" src="_images/x.png" />'
+    assert check_html.problems(output + image, executed=True) == []
+    assert check_html.problems(image, executed=True) == ["an executed page without any cell output"]
+    assert check_html.problems(output, executed=True) == ["an executed page without a picture"]
+    assert check_html.problems("<p>text</p>") == []  # a page that runs no code needs neither
+    assert all((ROOT / "docs" / f"{name}.md").exists() for name in check_html.EXECUTED)
+
+
+def test_the_field_lines_napoleon_writes_go_into_the_table():
+    import sys
+    sys.path.insert(0, str(ROOT / "docs"))
+    try:
+        import field_docs
+    finally:
+        sys.path.remove(str(ROOT / "docs"))
+    lines = ["A run.", "", ":param period: the period,", "    in seconds", ":type period: float",
+             ":ivar stable: whether it is stable", ":vartype stable: bool", ":param other: not a field", ""]
+    described = field_docs.take_field_lines(lines, {"period", "stable"})
+    assert described == {"period": "the period, in seconds", "stable": "whether it is stable"}
+    assert lines == ["A run.", "", ":param other: not a field", ""]
