@@ -164,6 +164,34 @@ def test_a_stored_point_whose_content_changed_is_computed_again_and_said(tmp_pat
     assert ds["done"].all() and float(ds["sum"][1, 1]) == 22.0
 
 
+def test_two_points_whose_records_were_swapped_are_computed_again_and_said(tmp_path, caplog):
+    """Issue 44: a tampered store with two points' whole records (every output and the checksum)
+    swapped: each record is intact on its own, only its place in the grid is wrong. Both points
+    are found (the checksum covers the grid index), computed again and said; the others are not."""
+    import zarr
+
+    from stickslip.sweep import verify_store
+
+    store = tmp_path / "s.zarr"
+    _counting(store)
+    group = zarr.open_group(str(store), mode="r+")
+    a, b = (0, 0), (2, 1)  # the points x = 1, y = 10 and x = 3, y = 20
+    for name in ("sum", "product", "checksum"):
+        first, second = group[name][a], group[name][b]
+        group[name][a], group[name][b] = second, first
+    assert float(group["sum"][a]) == 23.0 and float(group["sum"][b]) == 11.0  # the swap took place
+    with pytest.raises(ParameterError, match="2 point"):
+        verify_store(store)
+    CALLS.clear()
+    with caplog.at_level("WARNING", logger="stickslip.sweep"):
+        ds = _counting(store)
+    assert sorted(CALLS) == [(1, 10), (3, 20)]
+    assert "2 stored point(s)" in caplog.text and "(0, 0)" in caplog.text
+    assert np.array_equal(ds["sum"].values, [[11, 21], [12, 22], [13, 23]])
+    assert np.array_equal(ds["product"].values, [[10, 20], [20, 40], [30, 60]])
+    verify_store(store)
+
+
 def test_a_store_from_another_format_is_refused(tmp_path):
     import zarr
 
