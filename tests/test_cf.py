@@ -65,6 +65,18 @@ def test_the_checker_finds_repeated_times_float_codes_and_a_missed_index():
     assert problems(cf.finish(ds, "t")) == []  # finish makes the monotone coordinate the index
 
 
+@pytest.mark.parametrize("t", [[0.0, 1.0, 1.0, 2.0], [3.0, 2.0, 2.0, 1.0], [0.0, 0.0]], ids=["up", "down", "flat"])
+def test_a_coordinate_with_a_repeated_value_is_not_made_an_index(t):
+    """Issue 44: CF 1.10 (section 1.3) wants a coordinate variable strictly monotone: a time that
+    repeats a value (two switches at one instant) stays an auxiliary coordinate of its dimension,
+    never its index (which the checker would find repeating)."""
+    ds = xr.Dataset({"x": ("sample", np.arange(len(t), dtype=float), {"units": "m", "long_name": "x"})},
+                    coords={"time": ("sample", np.array(t), {"units": "s", "long_name": "time"})})
+    out = cf.finish(ds, "t")
+    assert out["time"].dims == ("sample",) and "sample" in out.dims and "time" not in out.indexes
+    assert problems(out) == []
+
+
 def test_finish_scales_units_and_codes():
     ds = xr.Dataset({"U": ("theta", [1.0, 2.0], {"units": "R", "long_name": "radial displacement"}),
                      "regime": ((), np.float64(np.nan), {"flag_values": [0, 1], "flag_meanings": "a b"})},
