@@ -85,6 +85,31 @@ def test_reverse_slip_spiral_centre_and_growth():
     assert damping_p == pytest.approx(+fd * tau, rel=1e-3)  # positive: converging, unlike the text
 
 
+@pytest.mark.parametrize("method", ["closed-form", "python"])
+def test_a_mass_moving_with_the_belt_exactly_at_a_stick_limit_sticks(method):
+    """Issue 44: Coulomb's law holds the mass while the force it needs, |k x + c V|, is at most
+    f_s N: at equality too. With numbers exact in binary (k = N = m = 1, f_s = 1/2, f_d = 1/4,
+    V = 1/4: the stick limits are -1/2 and 1/2), a mass at x = -1/2 moving with the belt sticks
+    and rides it to x = 1/2 (for 2 f_s N / (k V) = 4 s), then slips on the arc about
+    x_c = f_d N / k: x = x_c + (1/2 - x_c) cos t + V sin t; a mass at x = 1/2 slips on that arc
+    at once. A mode choice that slips at the limit (< for <=) sends the first into reverse slip."""
+    osc = Oscillator(1.0, 1.0, 1.0, 0.25, Coulomb(0.5, 0.25))
+    assert osc.stick_limits == (-0.5, 0.5)
+    xc = 0.25
+
+    def arc(t):
+        return xc + (0.5 - xc) * np.cos(t) + 0.25 * np.sin(t), -(0.5 - xc) * np.sin(t) + 0.25 * np.cos(t)
+
+    low = simulate(osc, 6.0, x0=-0.5, v0=0.25, method=method)
+    stuck = [s for s in low.segments if s.mode == Mode.STICK]
+    assert Mode.SLIP_NEG not in set(low.modes) and len(stuck) == 1
+    assert stuck[0].t0 == 0.0 and stuck[0].duration == pytest.approx(4.0, rel=1e-12)
+    assert (low.x[-1], low.v[-1]) == pytest.approx(arc(2.0), abs=1e-10)
+    high = simulate(osc, 2.0, x0=0.5, v0=0.25, method=method)
+    assert Mode.SLIP_NEG not in set(high.modes) and high.durations(Mode.STICK).sum() == 0.0
+    assert (high.x[-1], high.v[-1]) == pytest.approx(arc(2.0), abs=1e-10)
+
+
 def test_tangential_departure_does_not_chatter():
     """Erratum E3 / f_s = f_d: the slip arc leaves the stick segment with zero acceleration."""
     for law in (Coulomb(0.4, 0.4), LinearWeakening(0.4, 0.4, 0.5), Stribeck(0.6, 0.4, 0.1)):
