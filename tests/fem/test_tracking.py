@@ -48,11 +48,16 @@ def test_the_sweep_locates_the_critical_damping_of_the_oscillators_closed_form(s
 def test_the_bisections_on_two_workers_find_what_one_finds(stiff_block, tmp_path):
     """The rounds of bisection run in parallel on a process pool: the same decisions, so the same
     critical value; the frequency there to the eigensolver's tolerance (another process's ARPACK
-    run differs by some 1e-10)."""
+    run differs by some 1e-10). By multisection (the default: two values a round in the one
+    bracket) the bracket differs but holds the same crossing: within the tolerance (1 % of the
+    step, 2)."""
     one = cea_sweep(stiff_block, "alpha", np.linspace(0.0, 1000.0, 6), tmp_path / "a.zarr", workers=1)
-    two = cea_sweep(stiff_block, "alpha", np.linspace(0.0, 1000.0, 6), tmp_path / "b.zarr", workers=2)
+    two = cea_sweep(stiff_block, "alpha", np.linspace(0.0, 1000.0, 6), tmp_path / "b.zarr", workers=2,
+                    multisection=False)
     assert np.array_equal(one.critical, two.critical, equal_nan=True)
     assert np.allclose(one.critical_frequency, two.critical_frequency, rtol=1e-8, equal_nan=True)
+    multi = cea_sweep(stiff_block, "alpha", np.linspace(0.0, 1000.0, 6), tmp_path / "c.zarr", workers=2)
+    assert np.all(np.abs(multi.critical - one.critical) <= 2.0)
 
 
 def test_tracking_by_shape_follows_two_modes_through_a_frequency_crossing():
@@ -73,6 +78,53 @@ def test_tracking_by_shape_follows_two_modes_through_a_frequency_crossing():
     assert len(branches) == 2
     slopes = sorted(float(np.mean(np.diff(br.imag))) for br in branches)
     assert slopes == pytest.approx([-5.0, 10.0])
+
+
+def test_tracking_follows_the_complex_whirl_modes_of_two_turning_rotors():
+    """Issue 44: flutter modes are complex, and the tracker must compare them as such. Two
+    isotropic rotors, uncoupled (dofs 0-1 and 2-3), seen in a frame turning at Omega:
+    ``q'' + 2 Omega J q' + (w_i^2 - Omega^2) q = 0``, ``J = [[0, -1], [1, 0]]``. Each has a
+    whirl of each sense: circular complex shapes ``(1, +-i)`` of frequencies ``w_i +- Omega``
+    (substitute ``(1, sigma i) e^(i w t)``: ``(w - sigma Omega)^2 = w_i^2``), orthogonal in the
+    Hermitian product but not in the plain one (where each has zero length). With w = 10, 14 and
+    Omega swept over 0.3-5.3, rotor A's ``(1, i)`` whirl crosses rotor B's ``(1, -i)`` whirl
+    (at Omega = 2); each point's modes come sorted by frequency
+    (as a CEA lists them), from a dense eigensolver (scipy), each scaled by a random complex
+    factor. Each branch must keep its rotor and its whirl at every point; a tracker that uses
+    the plain product (no conjugate), the real part only or no modulus links whirls of opposite
+    senses or loses links."""
+    import scipy.linalg as sla
+
+    rng = np.random.default_rng(44)
+    J = np.array([[0.0, -1.0], [1.0, 0.0]])
+    omegas = np.linspace(0.3, 5.3, 11)  # not 2.0: no point at the double eigenvalue
+    s_points, sketches, labels = [], [], []
+    for omega in omegas:
+        C = np.zeros((4, 4))
+        C[:2, :2] = C[2:, 2:] = 2 * omega * J
+        K = np.diag([10.0**2, 10.0**2, 14.0**2, 14.0**2]) - omega**2 * np.eye(4)
+        A = np.block([[np.zeros((4, 4)), np.eye(4)], [-K, -C]])
+        s, V = sla.eig(A)
+        keep = np.flatnonzero(s.imag > 0)
+        keep = keep[np.argsort(s[keep].imag)]
+        shapes = V[:4, keep].T * (rng.uniform(0.5, 2.0, keep.size) * np.exp(2j * np.pi * rng.random(keep.size)))[:, None]
+        # the label of each mode by construction: its rotor, and its whirl's sense (y/x = +-i)
+        rotor = (np.abs(shapes[:, 2]) > np.abs(shapes[:, 0])).astype(int)
+        ratio = np.array([x[2 * r + 1] / x[2 * r] for x, r in zip(shapes, rotor)])
+        assert np.allclose(np.abs(ratio), 1.0) and np.allclose(np.abs(ratio.real), 0.0, atol=1e-9)
+        labels.append([(int(r), int(np.sign(q.imag))) for r, q in zip(rotor, ratio)])
+        s_points.append(s[keep])
+        sketches.append(shapes)
+    expected = {(0, 1): 10.0 + omegas, (0, -1): 10.0 - omegas, (1, 1): 14.0 + omegas, (1, -1): 14.0 - omegas}
+    for p, omega in enumerate(omegas):  # the frequencies the labels say
+        for k, label in enumerate(labels[p]):
+            assert s_points[p][k].imag == pytest.approx(expected[label][p], rel=1e-9)
+    crossing = [labels[p].index((0, 1)) < labels[p].index((1, -1)) for p in range(len(omegas))]
+    assert crossing[0] and not crossing[-1]  # the frequency order of two modes does change
+    branches, where = track(s_points, sketches)
+    assert branches.shape == (4, len(omegas)) and np.all(where >= 0)
+    for b in range(4):
+        assert len({labels[p][where[b, p]] for p in range(len(omegas))}) == 1, (b, where[b])
 
 
 def test_a_branch_that_starts_later_has_no_frequency_before_it_not_zero():
