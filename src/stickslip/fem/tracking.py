@@ -16,9 +16,11 @@ over starts a branch, a branch left over ends. Tracking by shape, not by frequen
 modes through crossings and veerings.
 
 Along each branch the critical value, where the mode first turns unstable (growth rate above
-``NEUTRAL |s|``) or stable, is located between the two points by bisection, each step a new
-CEA whose mode is the one of largest MAC with the branch, until the bracket is within ``tol``
-of the swept value's step; its ``partner`` is the branch nearest in frequency (within
+``NEUTRAL |s|``) or stable, is located between the two points by multisection
+(`stickslip.fem.critical`: rounds of new CEAs on the sweep's workers, each CEA's mode the one
+of largest MAC with the branch) until the bracket is within ``tol`` of the swept value's step;
+every CEA of the search is kept in the sweep's store as it finishes (group `SEARCH`), and a
+resumed search reuses them. Its ``partner`` is the branch nearest in frequency (within
 ``COUPLING`` of it) whose growth rate goes the other way over the same bracket: the mode it
 coalesces with (mode coupling), or -1.
 """
@@ -26,10 +28,11 @@ coalesces with (mode coupling), or -1.
 from __future__ import annotations
 
 import functools
+import logging
 import math
+import os
 from dataclasses import dataclass
 
-import dask
 import numpy as np
 import lazy_loader as lazy
 from scipy.optimize import linear_sum_assignment
@@ -37,21 +40,26 @@ from scipy.optimize import linear_sum_assignment
 from ..cf import finish
 from ..errors import ParameterError
 from ..quantities import FEM as Q
+from ..files import exclusive
 from ..sweep import run_sweep, worker_pool
-from .cea import NEUTRAL, complex_eigenvalues, count_sketch, linearised
+from ..sweep.offgrid import OffGrid
+from .cea import complex_eigenvalues, count_sketch, linearised
+from .critical import COUPLING, mac, search, stored_solve, unpack, unstable  # noqa: F401 - COUPLING: its home
 from .config import load_config, read_toml, resolve_key
 from .scheme import BodyScheme, ContactProblem
 
 xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
-__all__ = ["cea_sweep", "track", "Tracked", "MIN_MAC", "SKETCH"]
+log = logging.getLogger("stickslip.fem")
+
+__all__ = ["cea_sweep", "track", "Tracked", "MIN_MAC", "SKETCH", "SEARCH"]
 
 #: Rows of the sketch of a mode shape.
 SKETCH = 256
 #: The least MAC of a link between the modes of neighbouring points.
 MIN_MAC = 0.4
-#: A partner's frequency within this (relative) of the branch's at its onset.
-COUPLING = 0.05
+#: The group of the sweep's store that keeps the CEAs of the critical values' search.
+SEARCH = "critical_search"
 #: The most modes kept per point.
 MAX_MODES = 200
 
@@ -86,12 +94,6 @@ def _point(config: str, key: str, modes_kept: int, value: float) -> dict:
             "sketch_imag": pad(x.imag.ravel(), modes_kept * SKETCH)}
 
 
-def mac(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """The MAC of every row of ``a`` with every row of ``b``."""
-    dot = np.abs(np.conj(a) @ b.T) ** 2
-    return dot / np.outer(np.sum(np.abs(a) ** 2, axis=1), np.sum(np.abs(b) ** 2, axis=1))
-
-
 def track(s_points: list, sketches: list, min_mac: float = MIN_MAC) -> tuple[np.ndarray, np.ndarray]:
     """Branches through the points: ``(s, where)``, ``s[b, p]`` the eigenvalue of branch ``b`` at
     point ``p`` (NaN where it has none) and ``where[b, p]`` its position among the point's modes
@@ -122,10 +124,6 @@ def track(s_points: list, sketches: list, min_mac: float = MIN_MAC) -> tuple[np.
     return np.array([b["s"] for b in branches]), np.array([b["at"] for b in branches])
 
 
-def _unstable(s) -> np.ndarray:
-    return s.real > NEUTRAL * np.abs(s)
-
-
 @dataclass(frozen=True, eq=False)
 class Tracked:
     """Tracked branches of a CEA sweep: ``s[branch, point]`` over ``values`` of ``key``, each
@@ -150,7 +148,7 @@ class Tracked:
         missing = "NaN where the branch has no mode at this value (it starts later or ended)"
         data = {"growth_rate": (("branch", "value"), self.s.real, {"comment": missing}),
                 "frequency": (("branch", "value"), self.s.imag / (2 * math.pi), {"comment": missing}),
-                "growing": (("branch", "value"), _unstable(self.s).astype(np.int8),
+                "growing": (("branch", "value"), unstable(self.s).astype(np.int8),
                             {"comment": "0 where the branch has no mode at this value"}),
                 "critical": ("branch", self.critical, {"units": units, "long_name": f"{self.key} where the branch's "
                                                    "growth rate changes sign (NaN: it does not)"}),
@@ -164,10 +162,12 @@ class Tracked:
 
 
 def cea_sweep(config, key: str, values, store, *, tol: float = 1e-2, workers: int | None = None,
-              progress=None, overwrite: bool = False, scheduler="processes") -> Tracked:
+              progress=None, overwrite: bool = False, scheduler="processes", multisection: bool = True) -> Tracked:
     """The CEA of ``config`` at each of ``values`` of ``key``, tracked (see the module docstring);
-    ``store`` is the sweep's Zarr checkpoint (resumed if it holds this sweep). ``key`` as
-    `stickslip.fem.config.resolve_key` takes it (``friction`` for ``contact.friction``)."""
+    ``store`` is the sweep's Zarr checkpoint (resumed if it holds this sweep, with the CEAs of the
+    critical values' search). ``key`` as `stickslip.fem.config.resolve_key` takes it (``friction``
+    for ``contact.friction``). ``multisection=False`` searches the critical values by bisection
+    (one CEA per bracket a round, whatever the workers: the search before issue 44)."""
     values = [float(v) for v in values]
     if len(values) < 2 or np.any(np.diff(values) <= 0):
         raise ParameterError("values", values, "at least two increasing values")
@@ -191,54 +191,15 @@ def cea_sweep(config, key: str, values, store, *, tol: float = 1e-2, workers: in
     s, _ = track(s_points, sketches)
     if scheduler == "processes" and workers == 1:
         scheduler = "synchronous"
-    critical, freq, partner, turn = _onsets(config, key, np.array(values), s, s_points, sketches, tol, kept,
-                                            scheduler, workers)
-    return Tracked(key, np.array(values), s, critical, freq, partner, turn, tol, tuple(first.band))
-
-
-def _onsets(config, key, values, s, s_points, sketches, tol, kept, scheduler="synchronous", workers=None):
-    """Each branch's first onset of instability, by bisection between the points (see the module
-    docstring), its frequency and partner. The bisections of all branches advance together, a
-    round at a time: the CEAs of a round run in parallel on ``scheduler`` (`worker_pool`), and a
-    value shared by several branches (partners turn in the same bracket) is solved once."""
-    nb = len(s)
-    onset, freq, partner, turn = np.full(nb, np.nan), np.full(nb, np.nan), np.full(nb, -1), np.zeros(nb, int)
-    jobs = {}  # branch -> [p, lo, hi, at, shape, target state]
-    for b in range(nb):
-        up = _unstable(s[b])
-        known = ~np.isnan(s[b])
-        for p in range(len(values) - 1):
-            if known[p] and known[p + 1] and up[p] != up[p + 1]:
-                shape = sketches[p + 1][int(np.argmin(np.abs(s_points[p + 1] - s[b, p + 1])))]
-                jobs[b] = [p, values[p], values[p + 1], s[b, p + 1], shape, up[p + 1]]
-                break
-    solved = {}
-    with worker_pool(scheduler, workers) as evaluate:
-        while True:
-            active = [b for b, (p, lo, hi, *_) in jobs.items() if hi - lo > tol * (values[p + 1] - values[p])]
-            mids = sorted({0.5 * (jobs[b][1] + jobs[b][2]) for b in active} - set(solved))
-            if not active:
-                break
-            for value, result in zip(mids, evaluate([dask.delayed(_solve)(config, key, v, kept) for v in mids])):
-                solved[value] = result
-            for b in active:
-                job = jobs[b]
-                mid = 0.5 * (job[1] + job[2])
-                z, x = solved[mid]
-                if not len(z):
-                    job[1] = job[2] = mid  # no mode at all there: the bracket stops
-                    continue
-                k = int(np.argmax(mac(job[4][None, :], x)[0]))
-                if _unstable(z[k : k + 1])[0] == job[5]:
-                    job[2], job[3], job[4] = mid, z[k], x[k]
-                else:
-                    job[1] = mid
-    for b, (p, lo, hi, at, _, target) in jobs.items():
-        onset[b], freq[b], turn[b] = 0.5 * (lo + hi), at.imag / (2 * math.pi), 1 if target else -1
-        rising = bool(target)  # the partner's growth rate goes the other way
-        falling = [c for c in range(nb) if c != b and not np.isnan(s[c, p])
-                   and not np.isnan(s[c, p + 1]) and (s[c, p + 1].real < s[c, p].real) == rising
-                   and abs(s[c, p + 1].imag - s[b, p + 1].imag) <= COUPLING * abs(s[b, p + 1].imag)]
-        if falling:
-            partner[b] = min(falling, key=lambda c: abs(s[c, p + 1].imag - s[b, p + 1].imag))
-    return onset, freq, partner, turn
+    width = 1 if scheduler == "synchronous" or not multisection else workers or os.cpu_count() or 1
+    with exclusive(store, "store"):  # the search's CEAs go to the sweep's store, checked by run_sweep
+        keep = OffGrid(store, SEARCH)
+        stored = {v: unpack(arrays) for v, arrays in keep.load().items()}
+        solve = functools.partial(stored_solve, functools.partial(_solve, str(config), key, modes_kept=kept), keep)
+        with worker_pool(scheduler, workers) as evaluate:
+            found = search(values, s, s_points, sketches, tol, solve, evaluate, width, stored)
+    if found.rounds:
+        log.info("critical values of %d branch(es): %d round(s) of %d CEA(s) computed, %d reused from %s",
+                 int(np.sum(found.turn != 0)), found.rounds, found.computed, found.reused, store)
+    return Tracked(key, np.array(values), s, found.onset, found.frequency, found.partner, found.turn, tol,
+                   tuple(first.band))
