@@ -107,8 +107,8 @@ def cea(config: Config, json: Json = False,
         sweep: Annotated[Optional[str], typer.Option(help=(
             "Sweep a number of the config, KEY=LO:HI:N (e.g. friction=0:0.8:41, material[1].young=1e9:1e10:10): the "
             "CEA at every value, each mode tracked along the sweep by its shape (MAC), the critical value where "
-            "it turns unstable or stable located by bisection, its coupling partner. --out gets the tracked "
-            "branches (.nc); needs --store."))] = None,
+            "it turns unstable or stable located by multisection (its CEAs kept in --store too), its coupling "
+            "partner. --out gets the tracked branches (.nc); needs --store."))] = None,
         store: Annotated[Optional[Path], typer.Option(help=(
             "With --sweep: the sweep's checkpoint, a Zarr store (.zarr); resumed if it holds this sweep."))] = None,
         workers: Annotated[Optional[int], declared(COMMON["workers"], "--workers", "With --sweep; default: all "

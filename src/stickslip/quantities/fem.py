@@ -100,7 +100,7 @@ FEM = Domain("fem", units="SI", quantities=[
     Q('shift_count', '1', 'number of shifts of the eigenvalue search'),
     Q('unstable', '1', 'number of unstable modes (growth rate above 1e-7 |s|)'),
     # a CEA sweep with tracked modes (stickslip.fem.tracking)
-    Q('onset_tolerance', '1', "bracket of a critical value at the end of its bisection, as a fraction of "
+    Q('onset_tolerance', '1', "bracket of a critical value at the end of its search, as a fraction of "
       "the sweep's step", '[1e-6, 0.5]'),
     Q('branch', '1', 'tracked mode (branch) number'),
     Q('value', '1', 'swept value of the config key (units: those of the key)'),
