@@ -181,6 +181,37 @@ def test_a_config_with_a_material_per_group_assembles_them(tmp_path):
     assert ds.attrs["material_groups"] == "a b" and list(ds.attrs["young"]) == [1e10, 2.1e11]
 
 
+@pytest.mark.parametrize("plane", ["strain", "stress"])
+def test_the_contact_lines_transit_is_at_the_fastest_p_wave_of_the_materials_along_it(tmp_path, plane):
+    """Issue 44: a run's length in transits is the contact line's length over the fastest P-wave
+    of the materials along it. Lining (E 1e10 Pa, nu 0.25, 2500 kg/m^3, x < 2 cm) and steel
+    (2.1e11 Pa, 0.3, 7850 kg/m^3, beyond) side by side, the contact line the bottom (5 cm,
+    along both): the longitudinal plane wave's modulus is E (1 - nu) / ((1 + nu)(1 - 2 nu)) in
+    plane strain, E / (1 - nu^2) in plane stress, so c_p = 6001.0 m/s (strain) or 5422.0 m/s
+    (stress), the steel's; along the left side (lining cells only) the lining's: 2190.9 or
+    2065.6 m/s. Written from E and nu, not from the code's Lame parameters."""
+    from stickslip.fem.scheme import BodyScheme
+
+    def c_p(young, nu, rho):
+        modulus = young * (1 - nu) / ((1 + nu) * (1 - 2 * nu)) if plane == "strain" else young / (1 - nu**2)
+        return np.sqrt(modulus / rho)
+
+    two_layers(tmp_path / "l.msh")
+    materials = GOOD.replace("density = 2500.0", f'density = 2500.0\nplane = "{plane}"').replace(
+        "density = 7850.0", f'density = 7850.0\nplane = "{plane}"')
+    (tmp_path / "c.toml").write_text(CONFIG.format(materials=materials))
+    problem = load_config(tmp_path / "c.toml").problem()
+    steel, lining = c_p(2.1e11, 0.3, 7850.0), c_p(1.0e10, 0.25, 2500.0)
+    assert steel == pytest.approx(6001.0 if plane == "strain" else 5422.0, abs=0.1)
+    scheme = BodyScheme(problem)
+    assert scheme.line_length == pytest.approx(0.05, rel=1e-12)
+    assert scheme.p_wave_speed == pytest.approx(steel, rel=1e-12)
+    assert scheme.transit_time == pytest.approx(0.05 / steel, rel=1e-12)
+    s = problem.system
+    assert s.p_wave_speed(s.body.cells_along("left")) == pytest.approx(lining, rel=1e-12)
+    assert s.p_wave_speed(s.body.cells_along("right")) == pytest.approx(steel, rel=1e-12)
+
+
 def test_an_explicit_run_refuses_materials_damped_differently_and_the_cea_takes_them(tmp_path, capsys):
     """The explicit scheme damps the whole body with one (alpha, beta): a run with two is refused
     in one line naming material.alpha; the CEA linearises each material's own damping."""
