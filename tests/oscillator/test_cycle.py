@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from stickslip.errors import NoSolutionError, ParameterError
-from stickslip.friction import Coulomb, LinearWeakening, Stribeck
+from stickslip.friction import Coulomb, LinearWeakening, Stribeck, UserLaw
 from stickslip.oscillator import Engine, Oscillator, limit_cycle, return_map
 from stickslip.oscillator.baseline import solve_ivp_switches
 
@@ -81,6 +81,80 @@ def test_nontrivial_multiplier_is_the_slope_of_the_return_map(method):
     t, x, v, _ = cycle.trajectory.sample(20001)
     trace = -(osc.damping + osc.normal_force * osc.friction.slope(osc.belt_speed - v)) / osc.mass
     assert np.prod(cycle.floquet_multipliers).real == pytest.approx(math.exp(np.trapezoid(trace, t)), rel=1e-6)
+
+
+def _anisotropic_mu(v_r):
+    """A friction coefficient that depends on the direction of slip (a textured surface): Stribeck
+    (0.05 falling to 0.005 over 0.05 m/s) when the belt outruns the mass, 0.005 the other way."""
+    return 0.005 + 0.045 * math.exp(-v_r / 0.05) if v_r > 0 else 0.005
+
+
+def _independent_return_map(x0, V=0.2):
+    """The return map on v = 0 (upward) of m = k = N = 1, c = 0 under `_anisotropic_mu`,
+    written from the equations of motion: ``x'' = N mu(V - x') - k x`` in slip (v < V),
+    ``x'' = -N 0.005 - k x`` in reverse slip (v > V), each integrated by ``solve_ivp`` (DOP853,
+    rtol 1e-12) to its event; the mass crosses v = V outside the stick limits ``|x| <= 0.05``
+    both ways (checked), so it slips, slips in reverse, and slips again without sticking."""
+    from scipy.integrate import solve_ivp
+
+    def slip(t, y):
+        return [y[1], 0.005 + 0.045 * math.exp(-max(V - y[1], 0.0) / 0.05) - y[0]]
+
+    def reverse(t, y):
+        return [y[1], -0.005 - y[0]]
+
+    def crossing(level, direction):
+        event = lambda t, y: y[1] - level  # noqa: E731
+        event.terminal, event.direction = True, direction
+        return event
+
+    y, switches = [x0, 0.0], []
+    for rhs, level, direction in ((slip, V, 1), (reverse, V, -1), (slip, 0.0, 1)):
+        sol = solve_ivp(rhs, (0.0, 50.0), y, method="DOP853", rtol=1e-12, atol=1e-14,
+                        events=crossing(level, direction))
+        assert sol.t_events[0].size == 1
+        y = [sol.y_events[0][0][0], level]
+        switches.append(y[0])
+    assert switches[0] < -0.05 and switches[1] > 0.05  # beyond the stick limits: no sticking
+    return switches[-1]
+
+
+def test_the_multipliers_of_a_cycle_through_slip_and_reverse_slip_are_those_of_an_independent_return_map():
+    """Issue 44: the saltation matrices at the switches between slip and reverse slip (no stick),
+    checked on a cycle that has them. On the anisotropic law of `_anisotropic_mu` the oscillator
+    (m = k = N = 1, V = 0.2, c = 0) has a stable cycle that slips, overtakes the belt (reverse
+    slip) and falls back into slip, never sticking. Its nontrivial Floquet multiplier is the
+    slope of the return map on v = 0 at its fixed point: here by central differences
+    (h = 1e-5) of the return map integrated independently (`_independent_return_map`), accurate
+    to some 1e-7; the package's, from flow Jacobians and saltation matrices, must agree within
+    1e-5 (relative), and its other multiplier be 1. With a saltation left out (identity), or with
+    the jump of the field reversed, the multiplier that must be 1 came out 1.33 and 1.69; with
+    the vector field at the switch evaluated at ``v_r = 0`` itself, where this law takes its
+    reverse value, 1.26 (the bug this test found in `Oscillator.acceleration`). (Transposing
+    the saltation changes nothing here: on v = V, grad h and the jump of the field are both
+    along v.)"""
+    from stickslip.oscillator.cycle import characterise
+
+    x, previous, r_previous = -0.26, -0.25, _independent_return_map(-0.25) + 0.25
+    for _ in range(20):  # the fixed point of the independent map, by the secant method
+        r = _independent_return_map(x) - x
+        if abs(r) < 1e-13:
+            break
+        x, previous, r_previous = x - r * (x - previous) / (r - r_previous), x, r
+    assert abs(r) < 1e-13
+    osc = Oscillator(1.0, 1.0, 1.0, 0.2, UserLaw(_anisotropic_mu, 0.05))
+    engine = Engine(osc, "python", variational=True)
+    found = return_map(engine, x)
+    assert found.x_next == pytest.approx(x, abs=1e-10)  # the package's map has the same cycle
+    cycle = characterise(engine, found)
+    assert cycle.stick_time == 0.0 and cycle.reverse_slip_time > 0.5
+    assert [int(m) for m in cycle.trajectory.modes] == [1, -1, 1]
+    h = 1e-5
+    slope = (_independent_return_map(x + h) - _independent_return_map(x - h)) / (2 * h)
+    assert 0.5 < slope < 0.95  # a stable cycle, the saltations far from the identity
+    mults = np.sort(np.real(cycle.floquet_multipliers))
+    assert mults[1] == pytest.approx(1.0, abs=1e-9)
+    assert mults[0] == pytest.approx(slope, rel=1e-5)
 
 
 def test_no_cycle_is_reported_as_no_solution():

@@ -156,7 +156,9 @@ class Oscillator:
         """``x''`` in a slip mode (``SLIP_POS`` or ``SLIP_NEG``)."""
         s = int(mode)
         v_r = self.belt_speed - v
-        friction = s * self.normal_force * self.friction.kinetic(s * np.abs(v_r))
+        # on the mode's side of v_r = 0, as the flows take it: at a switch (v = V) a law that differs
+        # there (a user's law of the signed v_r) gives the mode's own one-sided value
+        friction = s * self.normal_force * self.friction.kinetic(s * np.maximum(np.abs(v_r), 1e-300))
         return (friction - self.damping * v - self.stiffness * x) / self.mass
 
     def vector_field(self, x, v, mode: Mode) -> np.ndarray:
