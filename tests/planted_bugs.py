@@ -404,6 +404,219 @@ UNCAUGHT: list[dict] = [
 ]
 
 
+def _p44(id, file, old, new, what, hint, why=""):
+    """A plant of issue 44's pass (`PLANTS_44`, ``--group issue44``)."""
+    return {**_m(id, file, old, new, what, hint, why), "group": "issue44"}
+
+
+H = "src/stickslip/halfspace/"
+#: Issue 44: a planted-bug pass over the modules changed in November 2026 (not covered by `MUTANTS`);
+#: ``python -m tests.planted_bugs --group issue44`` runs them; the table is ``tests/planted_bugs_44.md``.
+PLANTS_44: list[dict] = [
+    _p44("runs-energy-no-kinetic", C + "runs.py",
+         "\"energy\": kin + ela", "\"energy\": ela",
+         "run books: the energy of the deviation from steady sliding without its kinetic part",
+         [T + "contact/test_runs.py", T + "contact/test_exact.py", T + "brake/ring/test_run.py"]),
+    _p44("runs-sample-step", C + "runs.py",
+         "m = done * st[\"chunk\"] - 1  # index", "m = done * st[\"chunk\"]  # index",
+         "run books: a sample's time and fields taken one step late (off by one)",
+         [T + "contact/test_runs.py", T + "brake/ring/test_run.py", T + "fem/test_run.py"]),
+    _p44("runs-modes-norm", C + "runs.py",
+         "\"modes_V\": np.fft.rfft(V)[:st[\"modes\"] + 1] / V.size", "\"modes_V\": np.fft.rfft(V)[:st[\"modes\"] + 1]",
+         "run books: the Fourier modes of V without the 1/N of rfft(V)/N",
+         [T + "contact/test_runs.py", T + "brake/ring/test_run.py", T + "contact/test_classify.py"]),
+    _p44("runs-schedule-floor", C + "runs.py",
+         "total = int(np.ceil(t_end / (chunk * scheme.dt) - 1e-9))", "total = int(np.floor(t_end / (chunk * scheme.dt) - 1e-9))",
+         "run schedule: the number of samples rounded down (a run ends short of the time asked for)",
+         [T + "contact/test_runs.py", T + "brake/ring/test_run.py", T + "fem/test_run.py"]),
+    _p44("runs-tail-offbyone", C + "runs.py",
+         "done > st[\"samples_total\"] - st[\"tail_samples\"]", "done >= st[\"samples_total\"] - st[\"tail_samples\"]",
+         "run books: the tail's snapshots start one sample early (> for >=)",
+         [T + "contact/test_runs.py", T + "brake/ring/test_run.py", T + "contact/test_classify.py"]),
+    _p44("sim-zero-slip-metric", S + "simulate.py",
+         "z[n:2 * n] = v + MiW @ np.linalg.lstsq(", "z[n:2 * n] = v + W @ np.linalg.lstsq(",
+         "system simulation: a stuck start's velocity corrected along W instead of M^-1 W (slip not zero unless M = I)",
+         [T + "system/test_simulate.py", T + "system/test_floquet.py"]),
+    _p44("sim-release-direction", S + "simulate.py",
+         "st[worst] = 1 if forces[worst] > 0 else -1", "st[worst] = -1 if forces[worst] > 0 else 1",
+         "system simulation: a contact released from stick slips against the force that released it",
+         [T + "system/test_simulate.py", T + "system/test_floquet.py"]),
+    _p44("flow-slip-load-sign", S + "flow.py",
+         "g += w * N * (s * mu0 - mu1 * V)", "g += w * N * (s * mu0 + mu1 * V)",
+         "system flow: the constant part of a falling law's friction with +mu1 V (affine law's offset sign)",
+         [T + "system/test_simulate.py::test_one_contact_on_one_dof_is_the_oscillator", T + "system/test_simulate.py",
+          T + "system/test_floquet.py"]),
+    _p44("flow-stick-limit-kinetic", S + "flow.py",
+         "limit = c.friction.static * normal[i]\n", "limit = c.friction.affine[0] * normal[i]\n",
+         "system flow: the stick limit's event at the kinetic coefficient mu0 instead of the static one",
+         [T + "system/test_simulate.py", T + "system/test_floquet.py"]),
+    _p44("floquet-impact-R", S + "floquet.py",
+         "step = R + np.outer(f_plus[:2 * n] - R @ f_minus[:2 * n]", "step = R + np.outer(f_plus[:2 * n] - f_minus[:2 * n]",
+         "system monodromy: the saltation of a plastic impact with f- instead of R f- (the jump of the field)",
+         [T + "system/test_rigid.py", T + "system/test_floquet.py", T + "system/test_unilateral.py"]),
+    _p44("steady-unilateral-N0", S + "steady.py",
+         "c_eff += normal * slope * np.outer(c.direction, c.direction)", "c_eff += c.normal_force * slope * np.outer(c.direction, c.direction)",
+         "steady sliding on a unilateral contact: the friction slope's damping with N_0 instead of N(x)",
+         [T + "system/test_unilateral.py", T + "system/test_steady.py", T + "system/test_smooth_unilateral.py"]),
+    _p44("steady-force-sign", S + "steady.py",
+         "forces[i] = c.normal_force * sign * mu", "forces[i] = c.normal_force * mu",
+         "steady sliding: the friction force without the sign of the surface speed",
+         [T + "system/test_steady.py", T + "system/test_simulate.py"]),
+    _p44("rs-normal-sign", S + "rate_state.py",
+         "return self.N - self.Kn.T @ y[:self.n]", "return self.N + self.Kn.T @ y[:self.n]",
+         "rate-and-state systems: normal force N_0 + k_n n.x (a unilateral contact's spring with the wrong sign)",
+         [T + "system/test_rate_state_mixed.py", T + "system/test_rate_state.py"]),
+    _p44("rs-direct-slope-unit", S + "rate_state.py",
+         "eq.psi(y, i))[1])) / abs(vr[i])", "eq.psi(y, i))[1])))",
+         "rate-and-state steady sliding: the direct effect's damping d mu/d ln v without its 1/v",
+         [T + "system/test_rate_state.py", T + "system/test_rate_state_mixed.py"]),
+    _p44("rsc-amplitude", S + "rate_state_cycle.py",
+         "0.5 * np.ptp(one.x, axis=0))", "np.ptp(one.x, axis=0))",
+         "rate-and-state limit cycle: the amplitude as the peak-to-peak instead of half of it",
+         [T + "system/test_rate_state_cycle.py"]),
+    _p44("cont-amplitude", S + "continuation.py",
+         "return 0.5 * (high - low)", "return high - low",
+         "cycle continuation: the amplitude as the peak-to-peak instead of half of it",
+         [T + "system/test_continuation.py"]),
+    _p44("static-load-sign", F + "static.py",
+         "- K_F @ wP + Fw[F]", "- K_F @ wP - Fw[F]",
+         "FE steady sliding: the load on the free dofs with the wrong sign",
+         [T + "fem/test_static.py", T + "brake/fem/test_fem_static.py", T + "fem/test_active_set.py"]),
+    _p44("static-pressure-share", F + "static.py",
+         "pressure_law.factor(np.maximum(p, 0.0) / share[active])", "pressure_law.factor(np.maximum(p, 0.0) * share[active])",
+         "FE steady sliding with a pressure law: nodal force times the tributary length instead of over it",
+         [T + "fem/test_friction_law.py", T + "fem/test_static.py"]),
+    _p44("fscheme-omega-sqrt", F + "scheme.py",
+         "return float(np.sqrt(lam[0]) * (1.0 + 1e-6))\n\n    @property", "return float(lam[0] * (1.0 + 1e-6))\n\n    @property",
+         "FE scheme: the highest free frequency omega_max as omega^2 (the stable step wrong)",
+         [T + "fem/test_scheme.py", T + "fem/test_run.py"]),
+    _p44("fscheme-theta-pi", F + "scheme.py",
+         "return 2.0 * np.pi * self.problem.frames.arclength[self.contact_nodes] / self.line_length",
+         "return np.pi * self.problem.frames.arclength[self.contact_nodes] / self.line_length",
+         "FE scheme: the contact nodes' angle pi s/L instead of 2 pi s/L",
+         [T + "fem/test_scheme.py", T + "fem/test_run.py", T + "fem/test_records.py"]),
+    _p44("cea-shift-invert", F + "cea.py",
+         "s = sigma + 1.0 / nu", "s = sigma - 1.0 / nu",
+         "CEA: eigenvalues from the shift-invert Ritz values as sigma - 1/nu instead of sigma + 1/nu",
+         [T + "fem/test_cea.py", T + "fem/test_stick_slip.py"]),
+    _p44("cea-pressure-rate", F + "cea.py",
+         "f = problem.friction * factor * rate", "f = problem.friction * factor",
+         "CEA with a pressure law: dF_t/dP = mu g instead of mu g (1 - n) (the rate dropped)",
+         [T + "fem/test_friction_law.py", T + "fem/test_cea_options.py"]),
+    _p44("asm-strain-engineering", F + "assembly.py",
+         "strain = np.stack([g[0, 0], g[1, 1], g[0, 1] + g[1, 0]], axis=-1)",
+         "strain = np.stack([g[0, 0], g[1, 1], g[0, 1]], axis=-1)",
+         "FE stresses: the engineering shear strain as u_x,y alone (u_y,x dropped)",
+         [T + "fem/test_assembly.py", T + "fem/test_orthotropic.py", T + "fem/test_paraview.py"]),
+    _p44("body-edge-orientation", F + "body.py",
+         "return np.where(forward[:, None], edges, turned)", "return np.where(forward[:, None], turned, edges)",
+         "FE mesh: boundary edges oriented against their cell (the body on the right: normals point inwards)",
+         [T + "fem/test_body.py", T + "fem/test_boundary.py", T + "fem/test_static.py"]),
+    _p44("frun-noise-rms", F + "run.py",
+         "white /= np.sqrt(np.mean(white**2))", "white /= np.mean(white**2)",
+         "FE run: the initial noise scaled by its mean square instead of its RMS (amplitude not as asked)",
+         [T + "fem/test_run.py", T + "fem/test_records.py"]),
+    _p44("fconfig-interference-side", F + "config.py",
+         "radius = radius - push if inside else radius + push", "radius = radius + push if inside else radius - push",
+         "FE config: a cylindrical surface's interference moves it away from the body instead of into it",
+         [T + "fem/test_examples.py", T + "fem/test_config_fuzz.py", T + "fem/test_static.py"]),
+    _p44("pair-gauss-weight", F + "pair.py",
+         "weight = 0.5 * (hi - lo) * L", "weight = (hi - lo) * L",
+         "mortar: the Gauss weight of a segment's overlap twice too large (M against D)",
+         [T + "fem/test_pair.py", T + "fem/test_pair_run.py"]),
+    _p44("cscheme-initial-damping", C + "scheme.py",
+         "a = self.apply(u0 + beta * v0) - alpha * v0", "a = self.apply(u0 + beta * v0) + alpha * v0",
+         "explicit scheme: the start's acceleration with the mass-proportional damping force reversed",
+         [T + "fem/test_damping.py", T + "brake/ring/test_scheme.py", T + "contact/test_exact.py"]),
+    _p44("cscheme-kinetic-half", C + "scheme.py",
+         "return 0.5 * float(np.einsum(\"i,i\", mass * w, w))", "return float(np.einsum(\"i,i\", mass * w, w))",
+         "explicit scheme: kinetic energy m w^2 instead of m w^2 / 2",
+         [T + "contact/test_exact.py", T + "brake/fem/test_fem_energy.py", T + "contact/test_conditions.py"]),
+    _p44("cscheme-amplification", C + "scheme.py",
+         "um = np.array([1.0, 0.0, 0.0]) + vm + 0.5 * am", "um = np.array([1.0, 0.0, 0.0]) + vm + am",
+         "explicit scheme's amplification matrix: u_{m+1} with a_m dt^2 instead of a_m dt^2/2",
+         [T + "brake/ring/test_scheme.py", T + "contact/test_exact.py"]),
+    _p44("kernel-predictor-half", C + "kernel.py",
+         "u[k] += dt * vs + 0.5 * dt * dt * A[k]", "u[k] += dt * vs + dt * dt * A[k]",
+         "contact kernel: the predictor u* = u + dt v* + dt^2 A (the 1/2 lost)",
+         [T + "brake/ring/test_scheme.py", T + "contact/test_exact.py"]),
+    _p44("kernel-trial-surface", C + "kernel.py",
+         "trial = (ut_old[j] + dt * speed[j] - u[t]) / cdt2", "trial = (ut_old[j] - dt * speed[j] - u[t]) / cdt2",
+         "contact kernel: the stick trial with the surface moving the other way",
+         [T + "contact/test_exact.py", T + "contact/test_conditions.py"]),
+    _p44("kernel-pressure-exponent", C + "kernel.py",
+         "g = (p * law[3 + j]) ** (-expo)", "g = (p * law[3 + j]) ** expo",
+         "contact kernel: the pressure law (P/P_ref)^n instead of (P/P_ref)^-n",
+         [T + "fem/test_friction_law.py", T + "contact/test_kinetic_law.py"]),
+    _p44("kernel-velocity-corrector", C + "kernel.py",
+         "v[r] += beta2 * dt * p", "v[r] += dt * p",
+         "contact kernel: the normal velocity corrector dt r instead of beta2 dt r",
+         [T + "contact/test_exact.py", T + "contact/test_conditions.py", T + "brake/ring/test_scheme.py"]),
+    _p44("classify-parabola-sign", C + "classify.py",
+         "frac = 0.5 * (cm - cp) / den", "frac = 0.5 * (cp - cm) / den",
+         "regime classification: the sub-grid (parabolic) peak of the cross-correlation on the wrong side",
+         [T + "contact/test_classify.py"]),
+    _p44("kernelcopy-offset", "src/stickslip/kernelcopy.py",
+         "dst[at + r, j] = src[r, j]", "dst[at + r - 1, j] = src[r, j]",
+         "compiled row copy: rows written one row early (off by one)",
+         [T + "test_kernelcopy.py", T + "oscillator/test_compiled.py", T + "oscillator/test_simulate.py"]),
+    _p44("fields-A-cot", H + "fields.py",
+         "self.T / float(self.rd.gamma1) - self.R / np.tan(np.pi * self.lam))",
+         "self.T / float(self.rd.gamma1) + self.R / np.tan(np.pi * self.lam))",
+         "half-space fields: A' = R + i(T/gamma1 + R cot(pi lam)) (sign of the cot term)",
+         [T + "halfspace/test_fields.py"]),
+    _p44("fields-R-sign", H + "fields.py",
+         "R = -(T / rd.gamma_mod) * np.sin(np.pi * lam * (b - 1.0) / b)", "R = (T / rd.gamma_mod) * np.sin(np.pi * lam * (b - 1.0) / b)",
+         "half-space fields: the bounded-stress condition's R with the wrong sign (v of a solution)",
+         [T + "halfspace/test_fields.py", T + "halfspace/test_direct.py"]),
+    _p44("inverse-cramer-index", H + "inverse.py",
+         "T = (a11 * r2 - a21 * r1) / det", "T = (a11 * r2 - a12 * r1) / det",
+         "inverse problem: Cramer's rule for T with a12 for a21 (a swapped index)",
+         [T + "halfspace/test_inverse.py", T + "halfspace/test_direct.py"]),
+    _p44("inverse-text-H", H + "inverse.py",
+         "return rd.gamma1 * (rd.K_minus_one * b - 0.5 * rd.K)", "return rd.gamma1 * (rd.K_minus_one * b - rd.K)",
+         "inverse problem: H of the text's system (k = 1) with K instead of K/2",
+         [T + "halfspace/test_inverse.py"]),
+    _p44("direct-F-half", H + "direct.py",
+         "np.sin(np.pi * rd.lam) * T / (2.0 * rd.gamma1)", "np.sin(np.pi * rd.lam) * T / rd.gamma1",
+         "direct problem: the residual F of [54] without the 1/2 of its T term",
+         [T + "halfspace/test_direct.py"]),
+    _p44("direct-mu-star", H + "direct.py",
+         "return [self.mu - self.T / (-t) for t in", "return [self.mu + self.T / (-t) for t in",
+         "direct problem: mu* = mu + T/(-tau*_yy) instead of mu - T/(-tau*_yy)",
+         [T + "halfspace/test_direct.py", T + "halfspace/test_loading.py"]),
+    _p44("osc-flows-jacobian", OSC + "flows.py",
+         "[-self.w02 * s, c + self.sigma * s]]", "[-self.w02 * s, c - self.sigma * s]]",
+         "oscillator slip flow: the closed-form Jacobian's (v, v) entry with -sigma",
+         [T + "oscillator/test_flows.py", T + "oscillator/test_cycle.py"]),
+    _p44("osc-flows-variational", OSC + "flows.py",
+         "dacc_dv = (-s * o.normal_force * o.friction.slope(v_r) - o.damping) / o.mass",
+         "dacc_dv = (s * o.normal_force * o.friction.slope(v_r) - o.damping) / o.mass",
+         "oscillator numeric flow: the variational equation's dF/dv with the wrong sign (d v_r/d v = -1 lost)",
+         [T + "oscillator/test_flows.py", T + "oscillator/test_cycle.py"]),
+    _p44("osc-cycle-slip-time", OSC + "cycle.py",
+         "slip_time=durations[Mode.SLIP_POS] + durations[Mode.SLIP_NEG]", "slip_time=durations[Mode.SLIP_POS]",
+         "oscillator cycle: the slip time without the reverse slip",
+         [T + "oscillator/test_cycle.py"]),
+    _p44("ring-transit", B + "ring/integrate.py",
+         "return float(2.0 * np.pi / np.sqrt(params.coefficients().a))", "return float(np.pi / np.sqrt(params.coefficients().a))",
+         "ring runs: a wave transit pi/sqrt(a) instead of 2 pi/sqrt(a) (the budget in transits)",
+         [T + "brake/ring/test_run.py", T + "brake/ring/test_contact.py"]),
+    _p44("brake-fem-profile", B + "fem/run.py",
+         "X = (xi**2 / r - r) / (xi**2 - 1.0)", "X = (xi**2 / r + r) / (xi**2 - 1.0)",
+         "FE annulus run: the static radial profile (xi^2/r + r) instead of (xi^2/r - r) (not zero at the outer radius)",
+         [T + "brake/fem/test_fem_run.py", T + "brake/fem/test_fem_growth.py"]),
+    _p44("store-axes-values", "src/stickslip/sweep/store.py",
+         "ds[k].size == len(v) and np.array_equal(ds[k].values, np.asarray(v, float))", "ds[k].size == len(v)",
+         "sweep store: a store with the same axes' sizes but other values taken for this sweep (old results resumed)",
+         [T + "test_sweep.py"]),
+]
+
+
+#: The groups ``--group`` selects.
+GROUPS = {"issue44": PLANTS_44}
+
+
 # -- the runner ----------------------------------------------------------------------------------------------------
 
 @dataclass
@@ -621,7 +834,7 @@ def table(mutants: list[dict], outcomes: dict[str, Outcome]) -> str:
 
 
 def report(root: Path, chosen: list[dict], outcomes: dict[str, Outcome], control: Outcome | None,
-           together: Outcome | None, seconds: float, uncaught_run: bool) -> str:
+           together: Outcome | None, seconds: float, uncaught_run: bool, group_run: bool = False) -> str:
     lines = ["# Planted bugs", "",
              f"Root: `{root}`; {time.strftime('%Y-%m-%d %H:%M')}; "
              f"`python -m tests.planted_bugs {' '.join(sys.argv[1:])}`; total {seconds / 60:.1f} min.", ""]
@@ -646,7 +859,7 @@ def report(root: Path, chosen: list[dict], outcomes: dict[str, Outcome], control
     lost = [m["id"] for m in known if m["id"] in in_mutants and outcomes[m["id"]].status != "caught"]
     if lost:
         lines += [f"**Not caught any more (or not run to the end)**: {', '.join(lost)}.", ""]
-    if UNCAUGHT:
+    if UNCAUGHT and not group_run:
         lines += ["## Not caught today", ""]
         if together is not None:
             state = ("none caught: the whole fast suite passed with all of them planted at once"
@@ -665,13 +878,15 @@ def report(root: Path, chosen: list[dict], outcomes: dict[str, Outcome], control
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m tests.planted_bugs", description=__doc__.split("\n\n")[0])
-    parser.add_argument("--only", help="comma-separated ids (from MUTANTS or UNCAUGHT)")
+    parser.add_argument("--only", help="comma-separated ids (from MUTANTS, UNCAUGHT or PLANTS_44)")
     parser.add_argument("--out", type=Path, help="write the Markdown table here too")
     parser.add_argument("--jobs", type=int, default=1, help="mutants run at once (default 1: one pytest at a time)")
     parser.add_argument("--workers", type=int, default=2, help="pytest-xdist workers of the full-suite fallback")
     parser.add_argument("--root", type=Path, default=REPO, help="the repository to copy (default: %(default)s)")
     parser.add_argument("--timeout", type=float, default=1200.0, help="seconds per mutant (default 1200)")
     parser.add_argument("--uncaught", action="store_true", help="run the UNCAUGHT list instead of MUTANTS")
+    parser.add_argument("--group", choices=sorted(GROUPS), help="run a group of plants instead of MUTANTS "
+                        "(issue44: the pass over the modules changed in November 2026, `PLANTS_44`)")
     parser.add_argument("--together", action="store_true",
                         help="with --uncaught: plant them all in one copy and run the suite once")
     parser.add_argument("--hints-only", action="store_true", help="no full-suite fallback (a quick look)")
@@ -681,14 +896,14 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     root = args.root.resolve()
 
-    pool = UNCAUGHT if args.uncaught else MUTANTS
-    ids = [m["id"] for m in MUTANTS + UNCAUGHT]
+    pool = GROUPS[args.group] if args.group else UNCAUGHT if args.uncaught else MUTANTS
+    ids = [m["id"] for m in MUTANTS + UNCAUGHT + PLANTS_44]
     duplicates = {i for i in ids if ids.count(i) > 1}
     if duplicates:
         parser.error(f"duplicate ids: {sorted(duplicates)}")
     if args.only:
         wanted = [i.strip() for i in args.only.split(",") if i.strip()]
-        every = {m["id"]: m for m in MUTANTS + UNCAUGHT}
+        every = {m["id"]: m for m in MUTANTS + UNCAUGHT + PLANTS_44}
         unknown = [i for i in wanted if i not in every]
         if unknown:
             parser.error(f"unknown ids: {unknown}")
@@ -738,7 +953,7 @@ def main(argv=None) -> int:
                 for o in ex.map(one, chosen):
                     outcomes[o.id] = o
         text = report(root, chosen, outcomes, control, together, time.monotonic() - started,
-                      args.uncaught or any(m in UNCAUGHT for m in chosen))
+                      args.uncaught or any(m in UNCAUGHT for m in chosen), bool(args.group))
     print(text)
     if args.out:
         args.out.write_text(text + "\n")

@@ -193,3 +193,76 @@ def test_a_checkpoint_from_another_version_is_refused(model, tmp_path):
     with pytest.raises(ParameterError, match="written by stickslip") as err:
         model.run(CASE2, 2, checkpoint=path)
     assert err.value.name == "checkpoint"
+
+
+# -- issue 44: the books of a free ring against its exact discrete motion --------------------------------------
+
+def _free_ring(transits=3.0, **options):
+    """A free (contact off) ring of 16 nodes, undamped central differences, from steady sliding
+    plus a mode-3 pattern and noise: a linear problem whose discrete motion the test steps itself."""
+    from stickslip.brake.ring import RingScheme, integrate, perturbed_steady
+    start = perturbed_steady(CASE2, 16, amplitude=0.3, mode=3, noise=0.1)
+    run = integrate(CASE2, 16, transits=transits, initial=start, contact=False, **options)
+    return run, RingScheme(CASE2, 16), start
+
+
+def _stepped(scheme, u0, steps):
+    """u_0 .. u_steps of u_{m+1} = 2 u_m - u_{m-1} + dt^2 a(u_m), u_1 = u_0 + dt^2 a(u_0)/2 (from
+    rest), a(u) = M^-1 (-K u + f): central differences, written here."""
+    load = 0.0 if scheme.load is None else scheme.load
+    acc = lambda u: scheme.apply(u) + load  # noqa: E731
+    dt2, out = scheme.dt ** 2, [np.array(u0, float)]
+    out.append(out[0] + 0.5 * dt2 * acc(out[0]))
+    for _ in range(steps - 1):
+        out.append(2 * out[-1] - out[-2] + dt2 * acc(out[-1]))
+    return np.array(out)
+
+
+def test_a_free_runs_snapshots_are_its_discrete_motion_at_their_times():
+    """Each snapshot's U, V at ``snap_t`` and its step velocities are those of the test's own
+    central-difference stepping at step snap_t/dt (a time label one step off moves them by about
+    omega dt of the motion: far above the 1e-9 of round-off over a few hundred steps)."""
+    run, scheme, start = _free_ring(snapshot_every=0.5, tail=1.0)
+    steps = np.rint(run.snap_t / scheme.dt).astype(int)
+    assert np.allclose(steps * scheme.dt, run.snap_t, rtol=0, atol=1e-9 * scheme.dt)
+    u = _stepped(scheme, scheme.dofs(start.U, start.V), int(steps.max()) + 1)
+    scale = np.abs(u).max()
+    for k, m in enumerate(steps):
+        U, V = scheme.fields(u[m])
+        assert np.abs(run.U[k] - U).max() < 1e-9 * scale and np.abs(run.V[k] - V).max() < 1e-9 * scale
+        Ud, Vd = scheme.fields((u[m + 1] - u[m]) / scheme.dt)
+        assert np.abs(run.Vd[k] - Vd).max() < 1e-9 * scale / scheme.dt
+
+
+def test_a_free_undamped_run_keeps_its_energy_and_its_kinetic_part_is_half_m_w_squared():
+    """Central differences conserve |w|^2/2 + (u_m - u_e) K (u_{m+1} - u_e)/2 of a free linear
+    problem exactly (round-off aside): the series ``energy`` is constant, and ``kinetic`` in the
+    tail (where every sample is a snapshot) is m |w|^2/2 of the snapshot's step velocities."""
+    run, scheme, _ = _free_ring(tail=1.0)
+    assert np.ptp(run.energy) < 1e-9 * np.abs(run.energy).max() and np.ptp(run.kinetic) > 1e-3 * run.energy.max()
+    tail = run.settings["tail_samples"]
+    w = np.hstack([run.Vd[-tail:], run.Ud[-tail:]])
+    np.testing.assert_allclose(run.kinetic[-tail:], 0.5 * scheme.mass * np.sum(w**2, axis=1), rtol=1e-9)
+
+
+def test_the_series_modes_are_the_fourier_coefficients_of_the_snapshots():
+    """Parseval: with every mode kept (0..N/2), mean(V^2) over the nodes is |c_0|^2 + 2 sum
+    |c_k|^2 (0 < k < N/2) + |c_{N/2}|^2 for c = rfft(V)/N, at each sample of the tail."""
+    run, _, _ = _free_ring(tail=1.0, modes=8)
+    tail = run.settings["tail_samples"]
+    c = run.modes_V[-tail:]
+    weights = np.r_[1.0, np.full(7, 2.0), 1.0]
+    np.testing.assert_allclose(np.abs(c) ** 2 @ weights, np.mean(run.V[-tail:] ** 2, axis=1), rtol=1e-12)
+    np.testing.assert_allclose(run.t[-tail:], run.snap_t[-tail:], rtol=0, atol=0)
+
+
+@pytest.mark.parametrize("transits", [2.0, 2.3])
+def test_a_run_ends_within_one_sample_past_the_time_asked_and_its_tail_is_every_sample(transits):
+    """`schedule`: the last sample at or past t_end (less than one sample beyond), and the tail's
+    snapshots exactly the samples of the last ``tail`` transits, rounded (no snapshot otherwise:
+    ``snapshot_every`` beyond the run)."""
+    run, scheme, _ = _free_ring(transits=transits, tail=0.5, snapshot_every=100.0)
+    t_end, sample = transits * scheme.transit_time, run.settings["chunk"] * scheme.dt
+    assert t_end - 1e-9 * t_end <= run.t_end < t_end + sample
+    tail = round(0.5 * scheme.transit_time / sample)  # the samples of half a transit
+    assert run.snap_t.size == tail and np.array_equal(run.snap_t, run.t[-tail:])

@@ -175,3 +175,15 @@ def test_a_motion_that_settles_is_said_to_have_settled():
         limit_cycle(build(0.32), [0.1, 0.0], [0.0, 0.0], transient=200.0)
     branch = continue_system(build, 0.1, 0.32, points=6, x0=[0.1, 0.0], v0=[0.0, 0.0], transient=60.0)
     assert branch.stopped.startswith("reached") and branch.values[-1] == 0.32
+
+
+@pytest.mark.slow  # 4 s
+def test_the_coulomb_amplitude_along_the_belt_speed_is_the_closed_form_radius():
+    """m = k = N = 1, f_s = 0.6, f_d = 0.4, no damping: the mass sticks up to x_a = f_s = 0.6 and
+    slips about x_c = f_d = 0.4 on the circle of radius r = sqrt((x_a - x_c)^2 + V^2) in (x, v),
+    from (x_a, V) clockwise to (2 x_c - x_a, V): an arc through both v = 0 points, so x runs from
+    x_c - r to x_c + r and half the swing is r (401 samples of a period T < 11 miss an extreme by
+    at most r (1 - cos(T/800)) < 1e-4 r)."""
+    build, start = file_parameter(_oscillator(0.0), "contact[0].surface_speed")
+    branch = continue_system(build, start, 0.3, points=3, x0=[0.0], v0=[0.0], transient=40.0)
+    np.testing.assert_allclose(branch.amplitude[:, 0], np.hypot(0.2, branch.values), rtol=2e-4)

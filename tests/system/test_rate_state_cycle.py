@@ -91,6 +91,18 @@ def test_a_long_independent_run_settles_on_the_period(cycle):
 
 
 @pytest.mark.slow
+def test_the_amplitude_is_half_the_swing_of_the_independent_integration(cycle):
+    """Half the peak-to-peak displacement over one period of the LSODA integration in theta
+    (20001 samples: the extremes sampled within (T/20000)^2 of the curvature, far below 1e-6)."""
+    rhs = equations(0.9 * K_C)
+    y0 = np.array([cycle.x0[0], cycle.v0[0], DC * math.exp(cycle.psi0[0][0]) / V0])
+    sol = solve_ivp(rhs, (0.0, cycle.period), y0, method="LSODA", rtol=1e-12, atol=[1e-18, 1e-20, 1e-16],
+                    dense_output=True)
+    x = sol.sol(np.linspace(0.0, cycle.period, 20001))[0]
+    assert cycle.amplitude[0] == pytest.approx(0.5 * np.ptp(x), rel=1e-4)
+
+
+@pytest.mark.slow
 def test_the_cycle_follows_the_rules_of_results(cycle):
     from ..cf_rules import problems
     assert problems(cycle.to_xarray(), "rate-state cycle") == []

@@ -176,3 +176,23 @@ def test_fs_below_fd_is_refused():
 def test_max_events_stops_a_run_with_a_no_solution_error():
     with pytest.raises(NoSolutionError, match="max_events"):
         simulate(one_dof(), [0.0], [0.0], 100.0, max_events=3)
+
+
+def test_a_stuck_contacts_start_is_the_smallest_change_of_velocity_in_the_metric_of_the_mass():
+    """`zero_slip` (a Newton start taken from a neighbouring system): the velocity nearest the given
+    one in kinetic energy, (v' - v)^T M (v' - v) least, with W^T v' = V for the stuck contacts:
+    the Lagrange system [[M, W], [W^T, 0]] (dv, -lam) = (0, V - W^T v), solved here; a mass far
+    from the identity (off-diagonal too) tells the metric of M from the plain one."""
+    from stickslip.system.simulate import zero_slip
+    M = np.array([[3.0, 0.5, 0.0], [0.5, 1.0, 0.2], [0.0, 0.2, 0.25]])
+    K = np.diag([2.0, 1.0, 3.0])
+    contacts = [Contact([1.0, -1.0, 0.0], 1.0, Coulomb(0.5, 0.5), 0.3),
+                Contact([0.0, 1.0, 2.0], 2.0, Coulomb(0.4, 0.4), -0.1)]
+    system = System(M, K, contacts)
+    v = np.array([0.2, -0.4, 0.7])
+    z = zero_slip(system, system.state(np.zeros(3), v), [0, 1])
+    W, V = np.array([c.direction for c in contacts]).T, np.array([0.3, -0.1])
+    kkt = np.block([[M, W], [W.T, np.zeros((2, 2))]])
+    dv = np.linalg.solve(kkt, np.concatenate([np.zeros(3), V - W.T @ v]))[:3]
+    np.testing.assert_allclose(z[3:6], v + dv, rtol=0, atol=1e-14)
+    np.testing.assert_allclose(W.T @ z[3:6], V, rtol=0, atol=1e-14)
