@@ -25,6 +25,7 @@ from stickslip.fem.pair import PairProblem, Rotation
 from stickslip.fem.pair_run import PairScheme
 
 from .test_pair_config import pad_disc
+from .test_transport import rigid_fields, transport_by_hand
 
 OMEGA, T_END = 3000.0, 2e-4
 
@@ -68,3 +69,38 @@ def test_the_turning_discs_transport_terms_in_a_run_converge_to_the_exact_motion
     orders = np.log2(np.array(errors[:-1]) / np.array(errors[1:]))
     assert np.all((orders > 0.8) & (orders < 1.3)), (errors, orders)
     assert errors[-1] < 1e-2 and errors[-1] < 0.1 * effect, (errors, effect)
+
+
+def test_the_turning_discs_stiffness_and_damping_carry_its_transport_terms_as_derived(base):
+    """Issue 44: the pair's matrices with ``gyroscopic`` against a derivation written out, not
+    against exact solutions of its own matrices: the turning disc (7200 kg/m^3, about the origin
+    at 3000 rad/s) adds ``-B`` to the stiffness and ``+G`` to the damping (``M u'' + G u' +
+    (K - B) u``) on its own dofs, nothing on the pad's. On the disc's rigid fields
+    (`transport_by_hand`): ``r.(dK) r = e.(dK) e = -Omega^2 I``, ``e.(dC) r = -2 Omega I``,
+    ``t.(dC) r = -Omega int rho (x - c)``, with ``I = int rho |x - c|^2`` summed over the
+    disc's triangles by the edge-midpoint rule (exact for quadratics), written here."""
+    turning, plain = _problem(base, True), _problem(base, False)
+    disc = turning.master
+    rho = disc.materials[next(iter(disc.materials))].density
+    assert rho == 7200.0 and disc.body.cells.shape[1] == 3  # straight 3-node triangles
+    I = m = 0.0
+    first = np.zeros(2)
+    for corners in disc.body.points[disc.body.cells]:
+        (x1, y1), (x2, y2), (x3, y3) = corners
+        area = 0.5 * abs((x2 - x1) * (y3 - y1) - (x3 - x1) * (y2 - y1))
+        mids = 0.5 * (corners + np.roll(corners, -1, axis=0))
+        I += rho * area / 3 * np.sum(mids**2)
+        m += rho * area
+        first += rho * area * corners.mean(axis=0)
+    dK = (turning.K - plain.K).tocsr()
+    dC = turning.C if plain.C is None else (turning.C - plain.C).tocsr()
+    n = turning.n_slave
+    assert abs(dK[:n]).max() == 0 and abs(dC[:n]).max() == 0 and abs(dK[:, :n]).max() == 0
+    fields = {}
+    for name, field in zip(("r", "e", "t_x", "t_y"), rigid_fields(disc.body.points, (0.0, 0.0))):
+        fields[name] = np.concatenate([np.zeros(n), field])
+    for (a, which, b), exact in transport_by_hand(OMEGA, I, m, first).items():
+        M = {"G": dC, "B": -dK}[which]
+        got = fields[a] @ (M @ fields[b])
+        roundoff = 1e-12 * (np.abs(fields[a]) @ (abs(M) @ np.abs(fields[b])))
+        assert got == pytest.approx(exact, rel=1e-10, abs=roundoff), (a, which, b)

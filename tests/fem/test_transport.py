@@ -83,7 +83,7 @@ def test_the_space_fixed_model_is_the_turning_frames_shifted_by_n_omega():
     assert wrong > 10 * coarse
 
 
-def _rigid_fields(points, center):
+def rigid_fields(points, center):
     """Nodal vectors (x, y interleaved) of the turn ``r = e_z x (x - c)``, the expansion
     ``e = x - c`` and the translations ``t_x``, ``t_y``: linear fields, which linear and quadratic
     cells interpolate exactly."""
@@ -93,7 +93,7 @@ def _rigid_fields(points, center):
     return pack(-d[:, 1], d[:, 0]), pack(d[:, 0], d[:, 1]), pack(one, zero), pack(zero, one)
 
 
-def _transport_by_hand(omega, I, m, first):
+def transport_by_hand(omega, I, m, first):
     """The transport terms on the rigid fields, from ``v = omega e_z x (x - c)``: ``(v . grad) r =
     -omega (x - c)``, ``(v . grad) e = v``, ``(v . grad) t = 0``, so with ``I = int rho |x - c|^2``,
     the mass ``m`` and ``first = int rho (x - c)``: ``r.B r = e.B e = omega^2 I``, ``t.B t = 0``,
@@ -107,7 +107,7 @@ def _transport_by_hand(omega, I, m, first):
 @pytest.mark.parametrize("order", [1, 2], ids=["triangle", "triangle6"])
 def test_the_transport_terms_of_rigid_fields_are_their_closed_forms(tmp_path, order):
     """Issue 44: ``G`` and ``B`` (the docstring's ``A - A^T`` and ``int rho (v.grad N_i).(v.grad N_j)``)
-    against a derivation written out (`_transport_by_hand`) on two layers of different densities
+    against a derivation written out (`transport_by_hand`) on two layers of different densities
     (2500 kg/m^3 on 0 < x < 2 cm, 7850 beyond, 1 cm high) turning at 250 rad/s about a centre
     off the body, (1 cm, -2 cm): ``I``, ``m`` and ``first`` of each rectangle in closed form
     (``rho A ((w^2 + h^2)/12 + |centroid - c|^2)``, ...). Exact for these cells: equal to round-off.
@@ -126,8 +126,8 @@ def test_the_transport_terms_of_rigid_fields_are_their_closed_forms(tmp_path, or
         m += rho * w * h
         first += rho * w * h * d
     G, B = transport_operators(system, omega, tuple(center))
-    fields = dict(zip(("r", "e", "t_x", "t_y"), _rigid_fields(body.points, center)))
-    for (a, which, b), exact in _transport_by_hand(omega, I, m, first).items():
+    fields = dict(zip(("r", "e", "t_x", "t_y"), rigid_fields(body.points, center)))
+    for (a, which, b), exact in transport_by_hand(omega, I, m, first).items():
         M = {"G": G, "B": B}[which]
         got = fields[a] @ (M @ fields[b])
         roundoff = 1e-12 * (np.abs(fields[a]) @ (abs(M) @ np.abs(fields[b])))  # of the sum's terms
