@@ -137,3 +137,21 @@ def test_volume_snapshots_beyond_a_gigabyte_are_refused_for_a_general_body_too(a
         integrate_body(annulus, transits=1e5, volume_every=1e-3)
     assert err.value.name == "volume_every" and "transits" in err.value.allowed
     integrate_body(annulus, transits=1.0, volume_every=0.5)  # a small one runs
+
+
+@pytest.mark.parametrize("amplitude", [1e-3, 0.5])
+def test_the_noisy_start_has_the_rms_it_is_asked_for(annulus, amplitude):
+    """`perturbed_steady_body`: steady sliding plus noise on the contact nodes' tangential dofs
+    whose RMS is ``amplitude`` times the largest steady displacement of the contact line (a noise
+    scaled by its mean square instead of its RMS has another RMS unless that is 1)."""
+    from stickslip.fem.run import perturbed_steady_body
+    from stickslip.fem.scheme import BodyScheme
+    scheme = BodyScheme(annulus)
+    u_e = scheme.steady_reference()[0]
+    normal, tangent = scheme.contact_dofs
+    start = perturbed_steady_body(scheme, amplitude, seed=3)
+    size = np.abs(u_e[np.concatenate([normal, tangent])]).max()
+    noise = (start.u - u_e)[tangent]
+    assert np.sqrt(np.mean(noise**2)) == pytest.approx(amplitude * size, rel=1e-12)
+    others = np.setdiff1d(np.arange(u_e.size), tangent)
+    assert np.array_equal(start.u[others], u_e[others]) and not start.v.any()
