@@ -164,3 +164,68 @@ def test_steady_sliding_dissipates_f_lambda_n_times_the_slip():
         assert b.friction_dissipation == pytest.approx(expected, rel=1e-12)
         assert b.surface_work == pytest.approx(expected, rel=1e-12)
         assert np.ptp(b.energy) <= 1e-14 * b.energy.max()
+
+
+def _two_body_step(shared: bool, max_sweeps: int):
+    """One step's contact forces between two bodies (`stickslip.contact.coupled.coupled_contact`)
+    and the same by a dense solve written here. Two slave contact nodes, each facing two master
+    nodes with mortar weights w = (0.3, 0.7) and (0.4, 0.6) (sharing the middle one if
+    ``shared``), masses of both bodies distinct, the slave frames at 0 and 30 degrees; the
+    predictor presses both nodes in, the static coefficient holds them stuck. A force ``F_j`` on
+    the relative displacement ``d_j = C_j u`` (slave dof minus sum_l w_jl times the master's)
+    moves the dofs by ``c dt^2 M^-1 C^T F`` (action and reaction, ``c = beta2 + 1/2``): all nodes
+    in contact and stuck, ``C u = (gap0, d_old + dt speed)`` is linear,
+    ``C M^-1 C^T F = (target - C u*) / (c dt^2)``."""
+    from stickslip.contact.coupled import coupled_contact
+    from stickslip.contact.kernel import COULOMB
+    from stickslip.contact.states import STICK
+
+    rng = np.random.default_rng(44)
+    n_master = 3 if shared else 4
+    n = 4 + 2 * n_master
+    masses = np.concatenate([[2.0, 2.0, 3.0, 3.0], np.repeat([5.0, 0.7, 1.5, 4.0][:n_master], 2)])
+    inv_mass = 1.0 / masses
+    angles = np.radians([0.0, 30.0])
+    nvec = np.column_stack([-np.sin(angles), np.cos(angles)])
+    tvec = np.column_stack([np.cos(angles), np.sin(angles)])
+    normal, tangent = np.array([0, 2]), np.array([1, 3])
+    faced = [[0, 1], [1, 2]] if shared else [[0, 1], [2, 3]]
+    mptr = np.array([0, 2, 4])
+    mdof = np.array([4 + 2 * l for nodes in faced for l in nodes])
+    mw = np.array([0.3, 0.7, 0.4, 0.6])
+    C = np.zeros((4, n))
+    for j in range(2):
+        C[2 * j, normal[j]] = C[2 * j + 1, tangent[j]] = 1.0
+        for k in range(mptr[j], mptr[j + 1]):
+            C[2 * j, mdof[k]:mdof[k] + 2] = -mw[k] * nvec[j]
+            C[2 * j + 1, mdof[k]:mdof[k] + 2] = -mw[k] * tvec[j]
+    u_star = 1e-3 * rng.standard_normal(n)
+    d_star = C @ u_star
+    gap0 = d_star[0::2] + np.array([2e-4, 3e-4])  # both pressed in
+    dt, beta2, speed, d_old = 1e-3, 0.7, np.array([0.01, -0.005]), d_star[1::2] + np.array([5e-6, -2e-6])
+    target = np.ravel(np.column_stack([gap0, d_old + dt * speed]))
+    cdt2 = (beta2 + 0.5) * dt**2
+    exact = np.linalg.solve(C @ np.diag(inv_mass) @ C.T, (target - d_star) / cdt2)
+    fs = 10.0  # a static coefficient that holds them (the 30 degrees between the frames couple n and t)
+    assert np.all(exact[0::2] > 0) and np.all(np.abs(exact[1::2]) < 0.5 * fs * exact[0::2])  # pressed, well stuck
+    u = u_star.copy()
+    force_n, force_t, state = np.zeros(2), np.zeros(2), np.zeros(2, np.int8)
+    sweeps = coupled_contact(u, d_old, normal, tangent, nvec, tvec, mptr, mdof, mw, inv_mass, gap0, speed, dt,
+                             beta2, 0.5, fs, np.array([float(COULOMB), 0.0]), True, force_n, force_t, state,
+                             max_sweeps)
+    assert np.all(state == STICK)
+    return np.ravel(np.column_stack([force_n, force_t])), exact, u, u_star + cdt2 * inv_mass * (C.T @ exact), sweeps
+
+
+def test_two_bodies_one_sweep_is_exact_for_nodes_that_share_no_master_node():
+    """Issue 44: each node's Gauss-Seidel update is its exact solution when no other node moves
+    its relative displacement (the effective compliance ``W_j = 1/m_j + sum_l w_jl^2 / m_l``):
+    nodes that share no master node get the dense solve's forces in the first sweep (and the
+    second finds nothing to change); sharing one, the sweeps converge to it. A compliance with
+    ``w_jl`` for ``w_jl^2`` converges to the same forces, but not in one sweep: it fails here."""
+    got, exact, u, u_exact, sweeps = _two_body_step(shared=False, max_sweeps=1)
+    assert got == pytest.approx(exact, rel=1e-10) and u == pytest.approx(u_exact, rel=1e-10, abs=1e-16)
+    got, exact, u, u_exact, sweeps = _two_body_step(shared=False, max_sweeps=50)
+    assert sweeps == 2 and got == pytest.approx(exact, rel=1e-10)
+    got, exact, u, u_exact, sweeps = _two_body_step(shared=True, max_sweeps=200)
+    assert sweeps <= 200 and got == pytest.approx(exact, rel=1e-9) and u == pytest.approx(u_exact, rel=1e-9, abs=1e-15)
