@@ -77,8 +77,7 @@ def test_the_cea_finds_disc_modes_and_a_pad_disc_flutter(folder, capsys):
     ('mesh = "disc.msh"', 'mesh = "nowhere.msh"', "partner.mesh"),
     ("omega = 30.0", "velocity = [1.0, 0.0]", "partner.center applies with partner.omega only"),
     ("omega = 30.0", "velocity = [1.0, 0.0]\ngyroscopic = true", "true only with partner.omega"),
-    ("count = 30", 'count = 30\nmass_matrix = "consistent"', "cea.mass_matrix, cea.contact_model and cea.penalty "
-                                                               "do not apply with a [partner]"),
+    ("count = 30", "count = 30\npenalty = 1e3", 'cea.penalty applies with cea.contact_model = "penalty" only'),
 ])
 def test_a_bad_partner_is_refused_in_one_line(folder, old, new, words, capsys):
     path = _config(folder, old, new, "bad.toml")

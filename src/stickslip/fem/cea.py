@@ -354,12 +354,7 @@ def complex_eigenvalues(problem: ContactProblem, band: tuple[float, float], coun
     if isinstance(problem, ContactProblem):
         K_eff, C_eff, mass, _ = linearised(problem, mass_matrix, contact_model, penalty)
     else:
-        if (Q.check("mass_matrix", mass_matrix), Q.check("contact_model", contact_model), penalty) != \
-                ("lumped", "constraint", None):
-            raise ParameterError("mass_matrix", mass_matrix, 'lumped with a pair of bodies, contact_model '
-                                 '"constraint" and no penalty (the other options are for one body, for now)',
-                                 also=("contact_model", "penalty"))
-        K_eff, C_eff, mass, _ = problem.linearised()
+        K_eff, C_eff, mass, _ = problem.linearised(mass_matrix, contact_model, penalty)
     most = K_eff.shape[0] - 2
     count = min(count, most)
     max_count = min(MAX_COUNT, 16 * count, max(count, most // 2)) if max_count is None else \

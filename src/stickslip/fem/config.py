@@ -356,10 +356,6 @@ def _checked(path: Path, data: dict) -> FemConfig:
         options["penalty"] = _number(problems, "cea.penalty", e["penalty"])
         if options.get("contact_model") != "penalty":
             problems.append('cea.penalty applies with cea.contact_model = "penalty" only')
-    defaults = {("mass_matrix", "lumped"), ("contact_model", "constraint")}
-    if "partner" in data and any(item not in defaults for item in options.items()):
-        problems.append("cea.mass_matrix, cea.contact_model and cea.penalty do not apply with a [partner] (two "
-                        "bodies: lumped mass and constraint contact, for now)")
     if young is not None:
         big = MAX_STRAIN * young
         problems += [f"load[{i}].pressure = {x.pressure!r} must be at most {MAX_STRAIN:g} x material.young = {big:.4g} "

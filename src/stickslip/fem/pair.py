@@ -68,6 +68,7 @@ from ..friction import FrictionLaw, PressurePower
 from ..quantities import FEM as Q
 from ..results import Result
 from .assembly import BodySystem, transport_operators
+from .cea import PENALTY
 from .static import ITERATIONS, PRESSURE_ITERATIONS, settled, within_friction
 from .surfaces import MAX_SPEED
 
@@ -428,14 +429,38 @@ class PairProblem:
         of the stiffness' entries, so that a pivot's size says whether the pair is held."""
         return float(np.mean(np.abs(self.K.diagonal())) / np.max(self.coupling.weight))
 
-    def linearised(self):
+    def linearised(self, mass_matrix: str = "lumped", contact_model: str = "constraint", penalty: float | None = None):
         """``(K_aug, C_aug or None, mass_aug, kept)`` of the CEA about steady sliding: the free dofs
         and the multipliers of the active slave nodes (mass 0), see the module docstring (built
-        once per problem)."""
-        return self._operators
+        once per problem and options). ``mass_matrix="consistent"``: both bodies' consistent mass
+        matrices (``mass_aug`` a sparse matrix) instead of the lumped masses. ``contact_model=
+        "penalty"``: no multipliers; each active slave node's normal force is a spring on its gap,
+        ``w_j lambda_j = -k g_j / w_j`` (``g_j / w_j`` the gap [m]), ``k`` = ``penalty`` (default
+        `stickslip.fem.cea.PENALTY`) times the stiffness' largest diagonal entry, as for one body
+        (`stickslip.fem.cea.linearised`): ``K + k B_A^T W^-2 G_A``, converging to the constraint at
+        first order in ``1 / penalty``."""
+        mass_matrix = Q.check("mass_matrix", mass_matrix)
+        contact_model = Q.check("contact_model", contact_model)
+        if contact_model == "penalty":
+            penalty = Q.check("penalty", PENALTY if penalty is None else penalty)
+        elif penalty is not None:
+            raise ParameterError("penalty", penalty, 'left out unless contact_model = "penalty"',
+                                 also=("contact_model",))
+        key = (mass_matrix, contact_model, penalty)
+        if key not in self._linearised:
+            self._linearised[key] = self._operators(*key)
+        return self._linearised[key]
 
     @cached_property
-    def _operators(self):
+    def _linearised(self) -> dict:
+        return {}
+
+    @cached_property
+    def consistent_mass(self) -> sp.csr_matrix:
+        """Both bodies' consistent mass matrices on all dofs."""
+        return sp.block_diag([self.slave.consistent_mass, self.master.consistent_mass], format="csr")
+
+    def _operators(self, mass_matrix, contact_model, penalty):
         st = self.steady
         if not st.loaded:
             raise NoSolutionError("steady sliding of the pair carries no contact force: press the bodies together")
@@ -447,15 +472,26 @@ class PairProblem:
         # the friction force T^T (mu g lambda): d/d lambda = mu g (1 - n) per node
         B = c * (self.G[A] + sp.diags(self.kinetic[A] * g * rate) @ self.T[A])[:, free]
         G = c * self.G[A][:, free]
-        K = sp.bmat([[self.K[free][:, free], -B.T], [G, None]], format="csr")
+        K = self.K[free][:, free]
+        multipliers = 0 if contact_model == "penalty" else len(A)
+        if contact_model == "penalty":  # lambda = -k W^-2 G u: the force B^T lambda on the left as k B^T W^-2 G
+            k = penalty * float(np.abs(K.diagonal()).max())
+            K = (K + (k / c**2) * B.T @ sp.diags(1.0 / self.coupling.weight[A] ** 2) @ G).tocsr()
+        else:
+            K = sp.bmat([[K, -B.T], [G, None]], format="csr")
         C = None if self.C is None else self.C[free][:, free]
         if self.law is not None:  # mu(V - (T u')_j / w_j): damping T^T diag(lambda g mu' / w) T (negative if falling)
             T = self.T[A][:, free]
             slip = T.T @ sp.diags(st.pressure[A] * g * self.slopes[A] / self.coupling.weight[A]) @ T
             C = slip if C is None else (C + slip).tocsr()
-        if C is not None:
-            C = sp.block_diag([C, sp.csr_matrix((len(A), len(A)))], format="csr")
-        mass = np.concatenate([self.mass[free], np.zeros(len(A))])
+        if C is not None and multipliers:
+            C = sp.block_diag([C, sp.csr_matrix((multipliers, multipliers))], format="csr")
+        if mass_matrix == "consistent":
+            mass = self.consistent_mass[free][:, free]
+            if multipliers:
+                mass = sp.block_diag([mass, sp.csr_matrix((multipliers, multipliers))], format="csr")
+        else:
+            mass = np.concatenate([self.mass[free], np.zeros(multipliers)])
         return K, C, mass, free
 
     @cached_property
