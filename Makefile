@@ -8,19 +8,26 @@ unexport PYTHONDONTWRITEBYTECODE
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.stickslip-installed
+TEST_STAMP := $(VENV)/.stickslip-test-installed
 OUT    ?= results
 
 .PHONY: reproduce reproduce-quick test test-slow test-all test-deep bench docs clean
 
+# the package and its dependencies: all that `make reproduce` needs
 $(STAMP): pyproject.toml
 	@$(PYTHON) -c 'import sys; assert sys.version_info >= (3, 11), "Python >= 3.11 is required"'
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e '.[test]'
-	# the numba kernels compiled once into their cache on disk (about 20 s), not by the first test
-	# workers or figures that meet them, both at once (src/stickslip/precompile.py)
-	$(BIN)/python -m stickslip.precompile
+	$(BIN)/python -m pip install --quiet -e .
 	touch $(STAMP)
+
+# the tests' extra, and the numba kernels compiled once into their cache on disk (about 20 s), not
+# by the first test workers that meet them, both at once (src/stickslip/precompile.py); a
+# reproduction's figures compile what they meet themselves, one worker each
+$(TEST_STAMP): $(STAMP)
+	$(BIN)/python -m pip install --quiet -e '.[test]'
+	$(BIN)/python -m stickslip.precompile
+	touch $(TEST_STAMP)
 
 reproduce: $(STAMP)
 	$(BIN)/stickslip reproduce --out $(OUT) $(ARGS)
@@ -28,22 +35,22 @@ reproduce: $(STAMP)
 reproduce-quick: $(STAMP)
 	$(BIN)/stickslip reproduce --out $(OUT) --quick $(ARGS)
 
-test: $(STAMP)
+test: $(TEST_STAMP)
 	$(BIN)/python -m pytest -q -n 2 --dist worksteal -m "not slow" $(ARGS)
 
-test-slow: $(STAMP)
+test-slow: $(TEST_STAMP)
 	$(BIN)/python -m pytest -q -n 2 --dist worksteal -m "slow and not deep" $(ARGS)
 
-test-all: $(STAMP)
+test-all: $(TEST_STAMP)
 	$(BIN)/python -m pytest -q -n 2 --dist worksteal $(ARGS)
 
 # every property test (Hypothesis), the slow ones too, with ten times the examples, drawn afresh,
 # and the tests of minutes each that CI leaves out (marked deep): before an issue is resolved
 # (tests/conftest.py: the profiles)
-test-deep: $(STAMP)
+test-deep: $(TEST_STAMP)
 	$(BIN)/python -m pytest -q -n 2 --dist worksteal -m "hypothesis or deep" --hypothesis-profile deep $(ARGS)
 
-bench: $(STAMP)
+bench: $(TEST_STAMP)
 	for b in $(filter-out benchmarks/timing.py,$(wildcard benchmarks/*.py)); do echo "== $$b"; $(BIN)/python $$b || exit 1; done
 
 # docs/errata.md, docs/parameters.md and docs/cli/ regenerated from the package, then the HTML (Markdown docs, the
@@ -51,7 +58,7 @@ bench: $(STAMP)
 # warning fails the build
 DOCS_STAMP := $(VENV)/.stickslip-docs-installed
 
-$(DOCS_STAMP): $(STAMP)
+$(DOCS_STAMP): $(TEST_STAMP)
 	$(BIN)/python -m pip install --quiet -e '.[test,docs]'
 	touch $(DOCS_STAMP)
 

@@ -29,6 +29,7 @@ import platform
 import sys
 import time
 import uuid
+from concurrent.futures import as_completed
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Iterable, Sequence
@@ -241,20 +242,24 @@ def reproduce(out: Path, *, quick: bool = False, only: str | None = None, force:
                 for s in start_order(list(todo.values()), data_dir):
                     apart[s.key] = pool.submit(_compute_apart, s.key, data_dir, quick, fingerprint,
                                                bool(forced.get(s.key)), number.get(s.key, 0), len(specs), begun)
-        for spec in specs:
+        # the figures computed in workers are plotted, checked and logged as each arrives (in the
+        # order they finish: a short one queued last no longer holds back those done before it)
+        waiting = {future: key for key, future in apart.items()}
+        for future in as_completed(waiting):
+            computed = future.result()  # the seconds of its computation (the wait for it is not its time)
+            for spec in (s for s in specs if sources[s.key].key == waiting[future]):
+                if progress:
+                    progress(spec)
+                ds, _ = _load_or_compute(sources[spec.key], data_dir, quick, fingerprint, False)
+                _record(summary, spec, ds, False, time.perf_counter() - computed, out, quick, fingerprint)
+        for spec in (s for s in specs if sources[s.key].key not in apart):
             if progress:
                 progress(spec)
-            source = sources[spec.key]
             start = time.perf_counter()
-            if source.key in apart:  # computed in a worker: its checkpoint is there once it is done
-                computed = apart.pop(source.key).result()  # (the wait for it is not its time)
-                start = time.perf_counter() - computed
-                ds, _ = _load_or_compute(source, data_dir, quick, fingerprint, False)
-                cached = False
-            else:
-                _started(spec.key, number[spec.key], len(specs), begun, spec.title)
-                ds, cached = _load_or_compute(source, data_dir, quick, fingerprint, forced[spec.key])
+            _started(spec.key, number[spec.key], len(specs), begun, spec.title)
+            ds, cached = _load_or_compute(sources[spec.key], data_dir, quick, fingerprint, forced[spec.key])
             _record(summary, spec, ds, cached, start, out, quick, fingerprint)
+    summary.outcomes.sort(key=lambda o: number[o.spec.key])  # the report's order
     return summary
 
 
