@@ -125,6 +125,9 @@ def test_stability_and_continuation_commands(capsys):
     code, out, _ = _run(args, capsys)
     data = json.loads(out)
     assert code == 0 and data["hopf_points"][0]["criticality"] == "subcritical"
+    # the equilibrium's quantities with their own meanings (a cycle's "orbitally stable" was printed)
+    assert "steady sliding" in data["units"]["stable"]["long_name"], data["units"]["stable"]
+    assert "equilibrium" in data["units"]["kind"]["long_name"], data["units"]["kind"]
     args = ["oscillator", "continue", *BASE[2:], "--stop", "0.5", "--json"]
     code, out, _ = _run(args, capsys)
     data = json.loads(out)

@@ -58,6 +58,11 @@ def test_an_oscillator_sweep_gives_the_closed_form_stick_time(tmp_path, capsys):
     assert ds["period"].attrs["units"] == "s" and ds["stick_time"].attrs["units"] == "s"
     out = capsys.readouterr().out
     assert '"grid_points": 12' in out and '"computed_now": 12' in out
+    import json
+
+    units = json.loads(out)["units"]  # each output with its meaning in the swept command's model
+    assert units["outputs.period"] == {"units": "s", "long_name": "period of the limit cycle"}, units
+    assert units["outputs.stick_time"]["long_name"] == "time in stick per period", units
 
 
 def test_a_fem_sweep_over_the_configs_numbers(tmp_path):

@@ -125,22 +125,28 @@ def _rows(data: dict, prefix: str = ""):
             yield name, value
 
 
-def emit(data: dict, as_json: bool, title: str, model: str = "common") -> None:
+def emit(data: dict, as_json: bool, title: str, model: str = "common", meanings: dict | None = None) -> None:
     """Print ``data`` as one JSON object on stdout (with ``units``: the units and meaning of
     each key that has them), or as tables for people (value, units, meaning; 6 significant
     digits). A result with a NaN or an infinity is not printed: it is a `NoSolutionError`
     naming the fields (exit code 1). ``model`` picks the vocabulary of units
-    (`stickslip.vocabulary`)."""
+    (`stickslip.vocabulary`); ``meanings`` gives a key's own ``(units, meaning)`` where this
+    result's quantity is not the vocabulary's (an equilibrium's ``stable`` is not a cycle's)."""
     bad = non_finite(data)
     if bad:
         raise NoSolutionError(f"no finite {title or 'result'}: {', '.join(bad[:5])}"
                               f"{f' and {len(bad) - 5} more' if len(bad) > 5 else ''} came out NaN or infinite "
                               "(the parameters are outside the range where the computation is meaningful)")
     data = _clean(data)
+    meanings = meanings or {}
+
+    def described(key: str) -> tuple[str, str]:
+        return meanings.get(key) or units_of(key, model)
+
     rows = list(_rows(data))
     records = {k: v for k, v in rows if isinstance(v, list) and v and all(isinstance(x, dict) for x in v)}
     keys = {k for k, _ in rows} | {f"{k}.{c}" for k, v in records.items() for c in v[0]}
-    units = {k: dict(zip(("units", "long_name"), units_of(k, model))) for k in sorted(keys) if any(units_of(k, model))}
+    units = {k: dict(zip(("units", "long_name"), described(k))) for k in sorted(keys) if any(described(k))}
     if as_json:
         print(json.dumps({**data, "units": units} if units and "units" not in data else data))
         return
@@ -151,15 +157,15 @@ def emit(data: dict, as_json: bool, title: str, model: str = "common") -> None:
         table.add_column(plain(column), overflow="fold")
     for key, value in rows:
         if key not in records:
-            table.add_row(*map(plain, (key, _number(value), *units_of(key, model))))
+            table.add_row(*map(plain, (key, _number(value), *described(key))))
     console.print(table)
     for key, items in records.items():
         columns = list(items[0])
-        notes = [f"{c}: {units_of(c, model)[1]}" for c in columns if units_of(c, model)[1]]
+        notes = [f"{c}: {described(c)[1]}" for c in columns if described(c)[1]]
         sub = Table(title=plain(f"{title}: {key}"), header_style="bold", caption=plain("; ".join(notes)) if notes
                     else None)
         for c in columns:
-            unit = units_of(c, model)[0]
+            unit = described(c)[0]
             sub.add_column(plain(f"{c} [{unit}]" if unit and unit != "1" else c), overflow="fold")
         for item in items:
             sub.add_row(*(plain(_number(item.get(c))) for c in columns))

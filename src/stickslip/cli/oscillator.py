@@ -11,7 +11,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from ..quantities import COMMON, OSCILLATOR as Q
+from ..quantities import COMMON, OSCILLATOR as Q, lookup
 from .helptext import Typer
 from .common import (FIGURE_HELP, FIGURE_SUFFIXES, AXIS_HELP, Overwrite, Replace, Scheduler, axis, declared, map_size, emit, output_folder, output_path, overwrite_needs,
                      progress_bar, write_netcdf)
@@ -131,7 +131,8 @@ def stability(mass: Mass, stiffness: Stiffness, normal_force: Normal, belt_speed
 
     data = equilibrium_stability(osc).to_dict()
     data["hopf_points"] = [h.to_dict() for h in hopf_points(osc, parameter, lo, hi)]
-    _emit(data, json, "steady sliding")
+    _emit(data, json, "steady sliding", meanings={"stable": lookup("equilibrium_stable", "oscillator"),
+                                                  "kind": lookup("equilibrium_kind", "oscillator")})
 
 
 @app.command("continue")

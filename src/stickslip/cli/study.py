@@ -501,6 +501,8 @@ def command(app, runner):
         emit({"store": str(out), "command": " ".join(study.words), "grid_points": study.points,
               "computed_now": int(ds["done"].sum()) - stored[0],
               "axes": {k: [v[0], v[-1], len(v)] for k, v in study.axes.items()},
-              "outputs": {key: name for key, (name, _) in study.outputs.items()}}, json, "sweep")
+              "outputs": {key: name for key, (name, _) in study.outputs.items()}}, json, "sweep",
+             meanings={f"outputs.{key}": units_of(name, study.model)  # each output's meaning in its own model
+                       for key, (name, _) in study.outputs.items()})
 
     return sweep

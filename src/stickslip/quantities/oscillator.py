@@ -74,7 +74,10 @@ OSCILLATOR = Domain("oscillator", units="SI", quantities=[
     Q("eigen", "1/s", "eigenvalue of the equilibrium"),
     Q("inside_energy_variation", "J/kg", "variation of the energy per unit mass inside the cycle"),
     Q("inside_reaches_stick", "1", "a start inside the cycle reaches stick (1) or not (0)"),
-    Q("equilibrium_stable", "1", "the equilibrium is stable (1) or not (0)"),
+    Q("equilibrium_stable", "1", "1 if steady sliding (the equilibrium) is linearly stable: both eigenvalues in the "
+      "left half-plane"),
+    Q("equilibrium_kind", "", "kind of the equilibrium by its eigenvalues: stable or unstable node or focus, or "
+      "centre (both on the imaginary axis: linear stability does not decide)"),
     Q("grazing_at_check_damping", "m/s", "belt speed of the grazing bifurcation at the check damping"),
     Q("grazing_from_slip", "m/s", "belt speed of the grazing of the pure-slip cycle"),
     Q("grazing_from_stick_slip", "m/s", "belt speed where the stick-slip cycle loses its stick phase"),
