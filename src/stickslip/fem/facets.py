@@ -1,0 +1,55 @@
+"""How far a curved contact surface meshed with straight segments lies from the curve.
+
+A segment of length ``h`` between two nodes of a circle of radius ``R`` lies inside it by its
+sagitta ``R - sqrt(R^2 - h^2 / 4)`` (about ``h^2 / (8 R)``) at its middle. `facet_deviation` finds
+each segment's from the mesh alone: the curvature at each node is that of the circle through
+it and its two neighbours along the group (Menger's: ``4 area / (product of the sides)``; exact
+for nodes on a circle, whatever their spacing), a segment's the mean of its ends', and a node
+where the group turns by more than `CORNER` is a corner (no curvature: a pad's corner is not
+a curved face). A straight face has none.
+
+Where the deviation is not small against the compression the contact carries (the
+interference the bodies' overlap puts on it), the gap from node to node is set by the
+facets, not by the bodies: the pressure alternates between zero and twice its mean along the
+contact (`stickslip.fem.pair.steady_pair` warns).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = ["facet_deviation", "CORNER"]
+
+#: A node where the group's direction turns by more than this [rad] is a corner.
+CORNER = math.radians(45.0)
+
+
+def facet_deviation(points: np.ndarray, edges: np.ndarray) -> np.ndarray:
+    """Each segment's (``edges``, node index pairs, in any order and direction) largest distance
+    from the smooth curve through the nodes [m] (see the module docstring)."""
+    edges = np.asarray(edges)[:, :2]
+    points = np.asarray(points)[:, :2]
+    neighbours: dict[int, list[int]] = {}
+    for a, b in edges.tolist():
+        neighbours.setdefault(a, []).append(b)
+        neighbours.setdefault(b, []).append(a)
+    curvature = {}
+    for node, near in neighbours.items():
+        if len(near) != 2:  # an end of the group, or where groups branch: from its neighbours' curvature
+            continue
+        p, q, r = points[near[0]], points[node], points[near[1]]
+        u, v = q - p, r - q
+        cross = u[0] * v[1] - u[1] * v[0]
+        turn = math.atan2(abs(cross), float(u @ v))
+        sides = np.linalg.norm(u) * np.linalg.norm(v) * np.linalg.norm(r - p)
+        curvature[node] = 0.0 if turn > CORNER or sides == 0 else 2.0 * abs(cross) / sides
+    for node, near in neighbours.items():  # an end: its neighbour's
+        if node not in curvature:
+            known = [curvature[n] for n in near if n in curvature]
+            curvature[node] = float(np.mean(known)) if known else 0.0
+    k = np.array([0.5 * (curvature[a] + curvature[b]) for a, b in edges.tolist()])
+    h = np.linalg.norm(points[edges[:, 1]] - points[edges[:, 0]], axis=1)
+    # R - sqrt(R^2 - h^2/4) without the cancellation: k h^2 / (4 (1 + sqrt(1 - k^2 h^2 / 4)))
+    return k * h**2 / (4.0 * (1.0 + np.sqrt(np.clip(1.0 - (k * h) ** 2 / 4.0, 0.0, None))))
