@@ -229,3 +229,28 @@ def test_two_bodies_one_sweep_is_exact_for_nodes_that_share_no_master_node():
     assert sweeps == 2 and got == pytest.approx(exact, rel=1e-10)
     got, exact, u, u_exact, sweeps = _two_body_step(shared=True, max_sweeps=200)
     assert sweeps <= 200 and got == pytest.approx(exact, rel=1e-9) and u == pytest.approx(u_exact, rel=1e-9, abs=1e-15)
+
+
+def test_the_first_step_of_a_damped_start_in_motion_is_taylors_to_second_order():
+    """`ExplicitScheme.initial_state` with mass-proportional damping (C = alpha M) and a start in
+    motion (u0 = 0, v0 = 1): the first step must be u(dt) = dt - alpha dt^2/2 + O(dt^3) of the exact
+    free motion e^(-alpha t/2) sin(w_d t)/w_d of each block (k/m = 4 and 1). The damping force of
+    a_{-1} with the wrong sign moves u_1 by alpha dt^2 (tolerance, set first: 0.05 alpha dt^2)."""
+    import dataclasses
+
+    alpha = 1.0
+
+    @dataclasses.dataclass(frozen=True)
+    class Damped(SpringBlocks):
+        @property
+        def damping(self):
+            return (alpha, 0.0)
+
+    scheme = Damped(BlockParams(), courant=0.01)
+    dt = scheme.dt
+    state = scheme.initial_state(np.zeros(2), np.ones(2), contact=False)
+    scheme.advance(state, 1, False)
+    w = np.sqrt([4.0, 1.0])
+    wd = np.sqrt(w**2 - alpha**2 / 4)
+    exact = np.exp(-alpha * dt / 2) * np.sin(wd * dt) / wd
+    assert np.abs(state.u - exact).max() < 0.05 * alpha * dt**2
