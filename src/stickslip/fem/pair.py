@@ -152,9 +152,14 @@ def _inward(points, edges):
 
 
 def _linear(body, group, option):
-    if body.order != 1:
-        raise ParameterError(option, group, "a boundary group of a mesh of linear cells (a pair of bodies takes "
-                             "linear triangles or quadrilaterals, for now)")
+    if body.order != 1:  # quadratic cells: curved 3-node segments, whose mortar this is not
+        raise ParameterError(option, group, "a boundary group of a mesh of linear cells: a pair of bodies takes "
+                             "linear triangles or quadrilaterals (this mesh has quadratic ones). The mortar "
+                             "integrals here are exact for straight 2-node segments with linear dual multipliers; "
+                             "quadratic cells need quadratic dual multipliers and the projection onto curved "
+                             "segments, which are not implemented. Mesh both bodies with linear cells, finer "
+                             "along a curved contact (a segment of length h on a radius R sags h^2 / (8 R): keep "
+                             "that well below the interference)")
     return body.oriented(group, option)[:, :2]
 
 
