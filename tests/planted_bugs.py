@@ -400,9 +400,10 @@ MUTANTS: list[dict] = [
 UNCAUGHT: list[dict] = []  # every planted bug of the list is caught (issue 44 moved the last four)
 
 
-def _p44(id, file, old, new, what, hint, why=""):
-    """A plant of issue 44's pass (`PLANTS_44`, ``--group issue44``)."""
-    return {**_m(id, file, old, new, what, hint, why), "group": "issue44"}
+def _p44(id, file, old, new, what, hint, why="", slow_hints=False):
+    """A plant of issue 44's pass (`PLANTS_44`, ``--group issue44``); ``slow_hints``: its hint
+    tests run with the slow ones (its catcher is a slow test), the fallback stays the fast suite."""
+    return {**_m(id, file, old, new, what, hint, why), "group": "issue44", **({"slow_hints": True} if slow_hints else {})}
 
 
 H = "src/stickslip/halfspace/"
@@ -412,27 +413,33 @@ PLANTS_44: list[dict] = [
     _p44("runs-energy-no-kinetic", C + "runs.py",
          "\"energy\": kin + ela", "\"energy\": ela",
          "run books: the energy of the deviation from steady sliding without its kinetic part",
-         [T + "contact/test_runs.py", T + "contact/test_exact.py", T + "brake/ring/test_run.py"]),
+         [T + "contact/test_runs.py::test_a_free_undamped_run_keeps_its_energy_and_its_kinetic_part_is_half_m_w_squared",
+          T + "contact/test_runs.py", T + "contact/test_exact.py", T + "brake/ring/test_run.py"]),
     _p44("runs-sample-step", C + "runs.py",
          "m = done * st[\"chunk\"] - 1  # index", "m = done * st[\"chunk\"]  # index",
          "run books: a sample's time and fields taken one step late (off by one)",
-         [T + "contact/test_runs.py", T + "brake/ring/test_run.py", T + "fem/test_run.py"]),
+         [T + "contact/test_runs.py::test_a_free_runs_snapshots_are_its_discrete_motion_at_their_times",
+          T + "contact/test_runs.py", T + "brake/ring/test_run.py", T + "fem/test_run.py"]),
     _p44("runs-modes-norm", C + "runs.py",
          "\"modes_V\": np.fft.rfft(V)[:st[\"modes\"] + 1] / V.size", "\"modes_V\": np.fft.rfft(V)[:st[\"modes\"] + 1]",
          "run books: the Fourier modes of V without the 1/N of rfft(V)/N",
-         [T + "contact/test_runs.py", T + "brake/ring/test_run.py", T + "contact/test_classify.py"]),
+         [T + "contact/test_runs.py::test_the_series_modes_are_the_fourier_coefficients_of_the_snapshots",
+          T + "contact/test_runs.py", T + "brake/ring/test_run.py", T + "contact/test_classify.py"]),
     _p44("runs-schedule-floor", C + "runs.py",
          "total = int(np.ceil(t_end / (chunk * scheme.dt) - 1e-9))", "total = int(np.floor(t_end / (chunk * scheme.dt) - 1e-9))",
          "run schedule: the number of samples rounded down (a run ends short of the time asked for)",
-         [T + "contact/test_runs.py", T + "brake/ring/test_run.py", T + "fem/test_run.py"]),
+         [T + "contact/test_runs.py::test_a_run_ends_within_one_sample_past_the_time_asked_and_its_tail_is_every_sample",
+          T + "contact/test_runs.py", T + "brake/ring/test_run.py", T + "fem/test_run.py"]),
     _p44("runs-tail-offbyone", C + "runs.py",
          "done > st[\"samples_total\"] - st[\"tail_samples\"]", "done >= st[\"samples_total\"] - st[\"tail_samples\"]",
          "run books: the tail's snapshots start one sample early (> for >=)",
-         [T + "contact/test_runs.py", T + "brake/ring/test_run.py", T + "contact/test_classify.py"]),
+         [T + "contact/test_runs.py::test_a_run_ends_within_one_sample_past_the_time_asked_and_its_tail_is_every_sample",
+          T + "contact/test_runs.py", T + "brake/ring/test_run.py", T + "contact/test_classify.py"]),
     _p44("sim-zero-slip-metric", S + "simulate.py",
          "z[n:2 * n] = v + MiW @ np.linalg.lstsq(", "z[n:2 * n] = v + W @ np.linalg.lstsq(",
          "system simulation: a stuck start's velocity corrected along W instead of M^-1 W (slip not zero unless M = I)",
-         [T + "system/test_simulate.py", T + "system/test_floquet.py"]),
+         [T + "system/test_simulate.py::test_a_stuck_contacts_start_is_the_smallest_change_of_velocity_in_the_metric_of_the_mass",
+          T + "system/test_simulate.py", T + "system/test_floquet.py"]),
     _p44("sim-release-direction", S + "simulate.py",
          "st[worst] = 1 if forces[worst] > 0 else -1", "st[worst] = -1 if forces[worst] > 0 else 1",
          "system simulation: a contact released from stick slips against the force that released it",
@@ -461,19 +468,21 @@ PLANTS_44: list[dict] = [
     _p44("rs-normal-sign", S + "rate_state.py",
          "return self.N - self.Kn.T @ y[:self.n]", "return self.N + self.Kn.T @ y[:self.n]",
          "rate-and-state systems: normal force N_0 + k_n n.x (a unilateral contact's spring with the wrong sign)",
-         [T + "system/test_rate_state_mixed.py", T + "system/test_rate_state.py"]),
+         [T + "system/test_smooth_unilateral.py", T + "system/test_rate_state_mixed.py", T + "system/test_rate_state.py"]),
     _p44("rs-direct-slope-unit", S + "rate_state.py",
-         "eq.psi(y, i))[1])) / abs(vr[i])", "eq.psi(y, i))[1])))",
+         "eq.psi(y, i))[1])) / abs(vr[i])", "eq.psi(y, i))[1]))",
          "rate-and-state steady sliding: the direct effect's damping d mu/d ln v without its 1/v",
          [T + "system/test_rate_state.py", T + "system/test_rate_state_mixed.py"]),
     _p44("rsc-amplitude", S + "rate_state_cycle.py",
          "0.5 * np.ptp(one.x, axis=0))", "np.ptp(one.x, axis=0))",
          "rate-and-state limit cycle: the amplitude as the peak-to-peak instead of half of it",
-         [T + "system/test_rate_state_cycle.py"]),
+         [T + "system/test_rate_state_cycle.py::test_the_amplitude_is_half_the_swing_of_the_independent_integration"],
+         slow_hints=True),
     _p44("cont-amplitude", S + "continuation.py",
          "return 0.5 * (high - low)", "return high - low",
          "cycle continuation: the amplitude as the peak-to-peak instead of half of it",
-         [T + "system/test_continuation.py"]),
+         [T + "system/test_continuation.py::test_the_coulomb_amplitude_along_the_belt_speed_is_the_closed_form_radius"],
+         slow_hints=True),
     _p44("static-load-sign", F + "static.py",
          "- K_F @ wP + Fw[F]", "- K_F @ wP - Fw[F]",
          "FE steady sliding: the load on the free dofs with the wrong sign",
@@ -498,7 +507,8 @@ PLANTS_44: list[dict] = [
     _p44("cea-pressure-rate", F + "cea.py",
          "f = problem.friction * factor * rate", "f = problem.friction * factor",
          "CEA with a pressure law: dF_t/dP = mu g instead of mu g (1 - n) (the rate dropped)",
-         [T + "fem/test_friction_law.py", T + "fem/test_cea_options.py"]),
+         [T + "fem/test_linearisation.py::test_the_block_on_a_belt_linearises_as_its_equations_of_motion",
+          T + "fem/test_friction_law.py", T + "fem/test_cea_options.py"]),
     _p44("asm-strain-engineering", F + "assembly.py",
          "strain = np.stack([g[0, 0], g[1, 1], g[0, 1] + g[1, 0]], axis=-1)",
          "strain = np.stack([g[0, 0], g[1, 1], g[0, 1]], axis=-1)",
@@ -511,7 +521,8 @@ PLANTS_44: list[dict] = [
     _p44("frun-noise-rms", F + "run.py",
          "white /= np.sqrt(np.mean(white**2))", "white /= np.mean(white**2)",
          "FE run: the initial noise scaled by its mean square instead of its RMS (amplitude not as asked)",
-         [T + "fem/test_run.py", T + "fem/test_records.py"]),
+         [T + "fem/test_run.py::test_the_noisy_start_has_the_rms_it_is_asked_for", T + "fem/test_run.py",
+          T + "fem/test_records.py"]),
     _p44("fconfig-interference-side", F + "config.py",
          "radius = radius - push if inside else radius + push", "radius = radius + push if inside else radius - push",
          "FE config: a cylindrical surface's interference moves it away from the body instead of into it",
@@ -523,7 +534,8 @@ PLANTS_44: list[dict] = [
     _p44("cscheme-initial-damping", C + "scheme.py",
          "a = self.apply(u0 + beta * v0) - alpha * v0", "a = self.apply(u0 + beta * v0) + alpha * v0",
          "explicit scheme: the start's acceleration with the mass-proportional damping force reversed",
-         [T + "fem/test_damping.py", T + "brake/ring/test_scheme.py", T + "contact/test_exact.py"]),
+         [T + "contact/test_exact.py::test_the_first_step_of_a_damped_start_in_motion_is_taylors_to_second_order",
+          T + "fem/test_damping.py", T + "brake/ring/test_scheme.py", T + "contact/test_exact.py"]),
     _p44("cscheme-kinetic-half", C + "scheme.py",
          "return 0.5 * float(np.einsum(\"i,i\", mass * w, w))", "return float(np.einsum(\"i,i\", mass * w, w))",
          "explicit scheme: kinetic energy m w^2 instead of m w^2 / 2",
@@ -593,7 +605,7 @@ PLANTS_44: list[dict] = [
     _p44("osc-cycle-slip-time", OSC + "cycle.py",
          "slip_time=durations[Mode.SLIP_POS] + durations[Mode.SLIP_NEG]", "slip_time=durations[Mode.SLIP_POS]",
          "oscillator cycle: the slip time without the reverse slip",
-         [T + "oscillator/test_cycle.py"]),
+         [T + "oscillator/test_cycle.py::test_a_cycle_with_reverse_slip_counts_it_in_its_slip_time"], slow_hints=True),
     _p44("ring-transit", B + "ring/integrate.py",
          "return float(2.0 * np.pi / np.sqrt(params.coefficients().a))", "return float(np.pi / np.sqrt(params.coefficients().a))",
          "ring runs: a wave transit pi/sqrt(a) instead of 2 pi/sqrt(a) (the budget in transits)",
@@ -732,10 +744,13 @@ def first_failure(output: str) -> str:
     return ""
 
 
-def run_pytest(copy: Path, python: str, args: list[str], timeout: float) -> tuple[str, str, str]:
+def run_pytest(copy: Path, python: str, args: list[str], timeout: float, slow: bool = False) -> tuple[str, str, str]:
     """Run pytest in ``copy``: ``(result, first failing node id, output tail)`` where result is
-    ``"passed"``, ``"failed"``, ``"unusable"`` (no test ran, a hint not found) or ``"timeout"``."""
-    proc = subprocess.Popen([python, *PYTEST, *args], cwd=copy, env=_env(copy), stdout=subprocess.PIPE,
+    ``"passed"``, ``"failed"``, ``"unusable"`` (no test ran, a hint not found) or ``"timeout"``.
+    ``slow``: the slow tests too (a plant of `PLANTS_44` whose catcher is a slow test)."""
+    at = PYTEST.index("not slow") - 1  # the pair ``-m "not slow"``
+    base = PYTEST[:at] + PYTEST[at + 2:] if slow else PYTEST
+    proc = subprocess.Popen([python, *base, *args], cwd=copy, env=_env(copy), stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, text=True, start_new_session=True)
     try:
         out, _ = proc.communicate(timeout=max(timeout, 1.0))
@@ -774,7 +789,8 @@ def run_mutant(base: Path, work: Path, mutants: list[dict], python: str, timeout
         return Outcome(label, "error", detail=str(err), seconds=time.monotonic() - start)
     try:
         hints = list(dict.fromkeys(h for m in mutants for h in m["hint"]))
-        result, node, tail = ("unusable", "", "") if not hints else run_pytest(copy, python, hints, timeout)
+        slow = any(m.get("slow_hints") for m in mutants)
+        result, node, tail = ("unusable", "", "") if not hints else run_pytest(copy, python, hints, timeout, slow)
         if result == "failed":
             return Outcome(label, "caught", node, "hint", time.monotonic() - start)
         if result == "timeout":
@@ -926,7 +942,8 @@ def main(argv=None) -> int:
             print(f"control: {len(hints)} hint targets on the unmutated copy ...", file=sys.stderr)
             t0 = time.monotonic()
             check_imports(base, args.python)
-            result, node, tail = run_pytest(base, args.python, hints, max(args.timeout, 3600.0))
+            result, node, tail = run_pytest(base, args.python, hints, max(args.timeout, 3600.0),
+                                            any(m.get("slow_hints") for m in chosen))
             status = {"passed": "not caught", "failed": "caught"}.get(result, result)
             control = Outcome("control", status, node, "hint", time.monotonic() - t0, tail[-500:])
             print(f"control: {result} {node} ({control.seconds:.0f} s)", file=sys.stderr)

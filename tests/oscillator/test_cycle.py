@@ -225,3 +225,14 @@ def test_a_subnormal_mass_on_the_command_line_is_one_line_exit_2(capsys):
     assert run(args) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "--mass = 1e-320" in err, err
+
+
+@pytest.mark.slow  # 3 s
+def test_a_cycle_with_reverse_slip_counts_it_in_its_slip_time():
+    """A Stribeck cycle (f_s = 0.9, f_d = 0.02, v_s = 0.1, V = 0.5; m = k = N = 1) overshoots the
+    belt's speed into reverse slip each period: the period is stick plus slip, forward and reverse
+    (the slip time without the reverse slip falls short of it by the reverse slip time, 2.25 here)."""
+    cycle = limit_cycle(Oscillator(1.0, 1.0, 1.0, 0.5, Stribeck(0.9, 0.02, 0.1)))
+    assert cycle.reverse_slip_time > 0.1 * cycle.period
+    assert cycle.stick_time + cycle.slip_time == pytest.approx(cycle.period, rel=1e-12)
+    assert cycle.v_max > 0.5  # faster than the belt: reverse slip
