@@ -46,3 +46,15 @@ def test_initial_conditions():
     with pytest.raises(ParameterError) as err:
         integrate(CASE2, 16, transits=1, initial=perturbed_steady(CASE2, 32))
     assert err.value.name == "initial"
+
+
+@pytest.mark.parametrize("params", [BrakeParams.from_physical(50.0, 1e-4, 0.7),
+                                    BrakeParams(xi=3.0, nu=0.45, gamma=0.1, delta=0.01, friction=0.3)])
+def test_a_transit_is_once_round_the_ring_at_the_p_wave_speed_of_the_dispersion_relation(params):
+    """`transit_time`: 2 pi (the ring's length in units of R) over the speed of the faster wave
+    of the free problem, omega(k)/k of its upper branch at large k (continuous symbols: the
+    relative error is O(1/k^2), below 1e-8 at k = 1e5)."""
+    from stickslip.brake.ring import RingScheme, transit_time
+    k = 1e5
+    speed = RingScheme(params, 64).frequencies(np.array([k]), discrete=False)[0, 1] / k
+    assert transit_time(params) == pytest.approx(2 * np.pi / speed, rel=1e-8)
