@@ -112,6 +112,9 @@ def test_waves_the_ring_cannot_follow_are_refused(wave):
         wave_spectrum(wave, 30)
     with pytest.raises(ParameterError, match="nodes = 2048"):
         wave_spectrum(wave, 2048)
+    for bad in (0, 2.5, 10**7):
+        with pytest.raises(ParameterError, match=f"max_iter = {bad}"):
+            wave_spectrum(wave, 64, max_iter=bad)
     with pytest.raises(ParameterError, match="separation = 'yes'"):
         ring_system(PARAMS, 16, separation="yes")
     from stickslip.brake.waves import moreau_difference

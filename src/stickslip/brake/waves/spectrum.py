@@ -203,11 +203,13 @@ def _checked(wave, nodes) -> int:
     return nodes
 
 
-def wave_spectrum(wave, nodes: int = 128, tol: float = 1e-10) -> WaveSpectrum:
+def wave_spectrum(wave, nodes: int = 128, tol: float = 1e-10, max_iter: int = 200) -> WaveSpectrum:
     """The discrete ring's wave near ``wave`` (a `TravellingWave`; one that separates from the shaft
     on the ring whose nodes may leave it too) on ``nodes`` nodes (a multiple of ``wave.n``) and the
-    multipliers of its node-shift map."""
+    multipliers of its node-shift map; ``max_iter`` returns of the map at most (iterations and
+    Newton steps: a marginal wave near a grazing contact may take dozens, a minute each at 128 nodes)."""
     nodes, tol = _checked(wave, nodes), SYSTEM_Q.check("tol", tol)
+    max_iter = SYSTEM_Q.check("max_iter", max_iter)
     separates = any(z.kind == SEPARATION for z in wave.zones)
     if not separates and not any(z.kind == STICK for z in wave.zones):
         raise ParameterError("wave", wave.structure, "a wave with a stick zone (its onset is the map's section) or "
@@ -224,7 +226,7 @@ def wave_spectrum(wave, nodes: int = 128, tol: float = 1e-10) -> WaveSpectrum:
         shift = np.concatenate([shift, nodes + shift])
     try:
         cycle = relative_cycle(system, x0, v0, shift, contact=0, state=section, horizon=1.5 * period, tol=tol,
-                               max_iter=200)
+                               max_iter=max_iter)
     except NoSolutionError as err:
         raise NoSolutionError(f"no wave of the ring of {nodes} nodes near the continuous one ({err})") from None
     if not separates and np.any(cycle.event_state == OPEN):
