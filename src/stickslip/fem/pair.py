@@ -11,7 +11,8 @@ mapped onto each slave segment by projection along the segment's normal,
     D_jk = int phi_j N_k ds = delta_jk int N_j ds,     M_jl = int phi_j N_l ds     (slave line),
 
 computed exactly (the overlap of every pair of segments, 2-point Gauss: the integrands are
-quadratic). Why mortar and not node-to-segment: a uniform pressure passes a non-matching
+quadratic). Quadratic cells (curved 3-node segments, on either side) have quadratic dual
+multipliers and their own integration (`stickslip.fem.mortar2`). Why mortar and not node-to-segment: a uniform pressure passes a non-matching
 interface exactly (the contact patch test), which one-pass node-to-segment fails. Why dual
 multipliers: ``D`` is diagonal, so the contact conditions are node by node (``D_jj lambda_j``
 is the node's normal force) as the rigid-surface contact's are, and a stiff partner gives
@@ -71,6 +72,7 @@ from ..results import Result
 from .assembly import BodySystem, transport_operators
 from .cea import PENALTY
 from .facets import facet_deviation
+from .mortar2 import quadratic_mortar
 from .static import ITERATIONS, PRESSURE_ITERATIONS, settled, within_friction
 from .surfaces import MAX_SPEED
 
@@ -152,21 +154,22 @@ def _inward(points, edges):
 
 
 def _linear(body, group, option):
-    if body.order != 1:  # quadratic cells: curved 3-node segments, whose mortar this is not
-        raise ParameterError(option, group, "a boundary group of a mesh of linear cells: a pair of bodies takes "
-                             "linear triangles or quadrilaterals (this mesh has quadratic ones). The mortar "
-                             "integrals here are exact for straight 2-node segments with linear dual multipliers; "
-                             "quadratic cells need quadratic dual multipliers and the projection onto curved "
-                             "segments, which are not implemented. Mesh both bodies with linear cells, finer "
-                             "along a curved contact (a segment of length h on a radius R sags h^2 / (8 R): keep "
-                             "that well below the interference)")
     return body.oriented(group, option)[:, :2]
 
 
 def mortar(slave_body, slave_group: str, master_body, master_group: str) -> Mortar:
     """The mortar coupling of ``slave_group`` of ``slave_body`` with ``master_group`` of
-    ``master_body`` (see the module docstring); a slave segment that overlaps no master segment
+    ``master_body`` (see the module docstring; with quadratic cells on either side,
+    `stickslip.fem.mortar2`); a slave segment that overlaps no master segment
     contributes to ``D`` only (its nodes cannot touch: their ``M`` row sums fall short)."""
+    if slave_body.order == 2 or master_body.order == 2:
+        s_edges = slave_body.oriented(slave_group, "slave_group")
+        m_edges = master_body.oriented(master_group, "master_group")
+        span = float(np.sum(np.hypot(*(slave_body.points[s_edges[:, 1], :2] - slave_body.points[s_edges[:, 0], :2]).T)))
+        nodes, normal, D, M, deep, away, found = quadratic_mortar(slave_body, s_edges, master_body, m_edges,
+                                                                  REACH * span)
+        _refuse(deep, away, found, span, slave_group, master_group)
+        return Mortar(nodes, normal, D, M)
     s_edges = _linear(slave_body, slave_group, "slave_group")
     m_edges = _linear(master_body, master_group, "master_group")
     xs, xm = slave_body.points, master_body.points
@@ -225,18 +228,22 @@ def mortar(slave_body, slave_group: str, master_body, master_group: str) -> Mort
                         Mr.append(where[int(j)])
                         Mc.append(int(l))
                         Mv.append(weight * nj * nl)
+    _refuse(deep, away, found, lengths.sum(), slave_group, master_group)
+    D = sp.csr_matrix((Dv, (Dr, Dc)), shape=(len(nodes), len(xs)))
+    M = sp.csr_matrix((Mv, (Mr, Mc)), shape=(len(nodes), len(xm)))
+    return Mortar(nodes, normal, D, M)
+
+
+def _refuse(deep, away, found, span, slave_group, master_group):
     if deep < 0.0:
         raise ParameterError("slave_group", slave_group, f"a group that does not interpenetrate the master's group "
                              f"{master_group!r} (it lies {-deep:.3g} m inside it, more than {REACH:g} x the slave "
-                             f"line's length {lengths.sum():.3g} m)", also=("master_group",))
+                             f"line's length {span:.3g} m)", also=("master_group",))
     if not found:
         why = ("faces away from it (the bodies must lie on either side of the contact)" if away else
                f"is farther than {REACH:g} x its length from it everywhere")
         raise ParameterError("master_group", master_group, f"a boundary group that faces the slave group "
                              f"{slave_group!r} (it {why})", also=("slave_group",))
-    D = sp.csr_matrix((Dv, (Dr, Dc)), shape=(len(nodes), len(xs)))
-    M = sp.csr_matrix((Mv, (Mr, Mc)), shape=(len(nodes), len(xm)))
-    return Mortar(nodes, normal, D, M)
 
 
 def sliding(coupling: Mortar, motion, points, required: bool = True) -> tuple[np.ndarray, np.ndarray]:
@@ -658,7 +665,10 @@ def steady_pair(problem: PairProblem, max_iterations: int | None = None) -> Pair
 
 def facets(problem: PairProblem) -> float:
     """The largest deviation of the master's segments under the slave line from the curve
-    through their nodes [m] (`stickslip.fem.facets`): 0 for a straight master."""
+    through their nodes [m] (`stickslip.fem.facets`): 0 for a straight master, and for quadratic
+    cells (their curved segments follow a circle to ``h^4 / R^3``, not ``h^2 / R``)."""
+    if problem.master.body.order == 2:
+        return 0.0
     edges = problem.master.body.oriented(problem.master_group, "master_group")[:, :2]
     touched = np.zeros(len(problem.master.body.points), bool)
     touched[np.unique(problem.coupling.M.tocoo().col)] = True
@@ -678,7 +688,7 @@ def _facets(problem: PairProblem, active: np.ndarray, gap: np.ndarray) -> None:
                     "%.2f times the %.3g m of interference the contact carries: the contact pressure alternates "
                     "between zero and about twice its mean from node to node (a segment of length h on a radius R "
                     "deviates by h^2 / (8 R)); refine the partner's mesh along the contact until the deviation is "
-                    "below %.2g of the interference", problem.master_group, deviation, deviation / overlap,
+                    "below %.2g of the interference, or mesh it with quadratic cells (curved segments)", problem.master_group, deviation, deviation / overlap,
                     overlap, FACETS)
 
 
