@@ -10,8 +10,68 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def _blocks(name):
-    """The Python blocks of a page: ```python, or an executed page's ```{code-cell} python."""
-    return re.findall(r"```(?:python|\{code-cell\} python)\n(.*?)```", (ROOT / name).read_text(), flags=re.S)
+    """The Python blocks of a page: ```python, or an executed page's ```{code-cell} python, as
+    Python: without a cell's options (``:tags: [...]``) and IPython's magics (``%matplotlib inline``)."""
+    blocks = re.findall(r"```(?:python|\{code-cell\} python)\n(.*?)```", (ROOT / name).read_text(), flags=re.S)
+    return ["\n".join(line for line in block.splitlines() if not re.match(r"%|:\w+:", line)) for block in blocks]
+
+
+#: The pages whose examples run when the docs are built (myst-nb), as docs/check_html.py names them.
+EXECUTED_PAGES = ("tutorial-oscillator", "tutorial-brake", "tutorial-fem", "tutorial-halfspace", "tutorial-your-body",
+                  "systems", "rsf", "sweeps-on-a-cluster")
+#: A comment saying what a line gives instead of a cell printing it.
+RESULT_COMMENT = re.compile(r"#\s*(?:gives|returns|->|=>)")
+
+
+def executed_page_problems(text: str) -> list[str]:
+    """Why a page is not one whose examples run and show their results: not a myst-nb page, no
+    code cell, a Python block that is not a cell (unless it says it is not run), a line whose value
+    is thrown away (a bare expression before a cell's last line: the page showed "x.y  # 0.4"), a
+    comment giving a result."""
+    import ast
+
+    found = []
+    if not text.startswith("---\nfile_format: mystnb\n"):
+        found.append("not a myst-nb page (file_format: mystnb)")
+    cells = re.findall(r"```\{code-cell\} (?:python|ipython3)\n(.*?)```", text, flags=re.S)
+    if not cells:
+        found.append("no code cell")
+    for block in re.findall(r"```python\n(.*?)```", text, flags=re.S):
+        if not block.startswith("# not run"):
+            found.append(f"a Python block that does not run: {block.splitlines()[0]!r}")
+    for cell in cells:
+        code = "\n".join(line for line in cell.splitlines() if not re.match(r"%|:\w+:", line))
+        body = ast.parse(code).body
+        lines = code.splitlines()
+        for i, statement in enumerate(body):
+            if isinstance(statement, ast.Expr) and not isinstance(statement.value, (ast.Call, ast.Constant)):
+                if i < len(body) - 1:
+                    found.append(f"a value thrown away: {ast.get_source_segment(code, statement)!r}")
+                elif "#" in lines[statement.end_lineno - 1]:  # a value shown, and stated again by hand
+                    found.append(f"a result in a comment: {lines[statement.end_lineno - 1].strip()!r}")
+        found += [f"a result in a comment: {line.strip()!r}" for line in code.splitlines() if RESULT_COMMENT.search(line)]
+    return found
+
+
+def test_every_tutorial_page_runs_its_examples_and_shows_their_results():
+    problems = {name: bad for name in EXECUTED_PAGES if (bad := executed_page_problems((ROOT / "docs" / f"{name}.md").read_text()))}
+    assert not problems, problems
+    html_check = (ROOT / "docs" / "check_html.py").read_text()
+    assert all(f'"{name}"' in html_check for name in EXECUTED_PAGES)  # the built pages are checked for output and a picture
+
+
+def test_a_page_of_comments_instead_of_outputs_is_found():
+    old = "# A page\n\n```python\nosc.stick_limits        # (-0.6, 0.6)\nosc.equilibrium  # gives 0.4\n```\n"
+    assert executed_page_problems(old) == ["not a myst-nb page (file_format: mystnb)", "no code cell",
+                                           "a Python block that does not run: 'osc.stick_limits        # (-0.6, 0.6)'"]
+    front = "---\nfile_format: mystnb\n---\n"
+    cell = "```{code-cell} python\n%matplotlib inline\ncycle.period, cycle.stick_time   # 6.71, 2.0\nx = f(1)  # -> 0.5\nfig\n```\n"
+    assert executed_page_problems(front + cell) == ["a value thrown away: 'cycle.period, cycle.stick_time'",
+                                                    "a result in a comment: 'x = f(1)  # -> 0.5'"]
+    last = "```{code-cell} python\nprint(1)\nosc.equilibrium  # 0.4: steady sliding\n```\n"
+    assert executed_page_problems(front + last) == ["a result in a comment: 'osc.equilibrium  # 0.4: steady sliding'"]
+    good = "```{code-cell} python\n:tags: [remove-cell]\nprint(cycle.period)\nfig\n```\n```python\n# not run here: SLURM\nx\n```\n"
+    assert executed_page_problems(front + good) == []
 
 
 def test_readme_example_runs(tmp_path, monkeypatch):
@@ -33,8 +93,9 @@ def test_tutorial_examples_run(tmp_path, monkeypatch):
     assert any(e["kind"] == "grazing" for e in namespace["stick_slip"].events)
 
 
-def test_systems_page_runs(monkeypatch):
-    monkeypatch.chdir(ROOT)  # it reads the example file by its path in the repository, and writes nothing
+@pytest.mark.slow  # with the friction damper's frequency response run as a command (about 10 s); `make docs` runs the page too
+def test_systems_page_runs(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # its first (hidden) cell copies the repository's examples beside it
     namespace = {}
     for block in _blocks("docs/systems.md"):
         exec(block, namespace)
@@ -57,7 +118,8 @@ def test_brake_tutorial_runs(tmp_path, monkeypatch):
         exec(block, namespace)
     assert namespace["wave"].regime == "stick-slip-separation" and namespace["s"].p_e > 0
     assert namespace["regime"].regime.startswith("stick")
-    assert not namespace["spectrum"].stable and namespace["table"]["speed_error"].values[-1] < 1e-3
+    # the discrete wave's speed converges at second order on 32 and 64 nodes, and the wave is unstable
+    assert not namespace["spectrum"].stable and abs(namespace["table"]["observed_order"].values[-1] - 2) < 0.1
 
 
 def test_halfspace_tutorial_runs(tmp_path, monkeypatch):
@@ -123,8 +185,8 @@ def test_readme_command_lines_use_only_options_their_commands_have():
 
 
 @pytest.mark.slow  # two rate-and-state cycles and a branch of four (Radau): the slowest test of the fast set, 112 s
-def test_rsf_page_runs(monkeypatch):
-    monkeypatch.chdir(ROOT)  # it reads an example file by its path in the repository
+def test_rsf_page_runs(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # its first (hidden) cell copies the repository's examples beside it
     namespace = {}
     for block in _blocks("docs/rsf.md"):
         exec(block, namespace)
