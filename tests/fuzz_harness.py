@@ -90,6 +90,10 @@ _PROGRESS = re.compile(r"^[\w .-]+: (\S+ of \S+ done(, about .+ left)?|.+, [\d.]
                        r"|done in [\d.]+ s( \(from its checkpoint\))?: (?P<n>\d+) of (?P=n) checks pass)$")
 
 
+#: The same, for the modules that judge trials.
+PROGRESS = _PROGRESS
+
+
 def example_sweep() -> str:
     """A sweep config of two cheap points (oscillator cycles), written once per process."""
     if not _SWEEP:
@@ -208,6 +212,7 @@ BAD_PATHS = {"a folder": "{tmp}", "a missing folder": "{tmp}/missing/x{suffix}",
              "under a file": "{tmp}/file/x{suffix}", "another suffix": "{tmp}/x.txt",
              "a name too long": "{tmp}/" + "n" * 300 + "{suffix}"}
 _SUFFIX = {"--plot": ".png", "--checkpoint": ".nc", "--out": ".nc", "--export": "", "--xdmf": ".xdmf", "--store": ".zarr"}
+SUFFIX = _SUFFIX  # each output option's suffix, for the modules that make its paths
 #: Options that name a folder to create (any name, parents made): only unwritable places are bad.
 FOLDERS = {("brake campaign", "--out"), ("brake campaign", "--export"), ("reproduce", "--out")}
 

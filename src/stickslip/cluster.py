@@ -66,9 +66,9 @@ def client(scheduler, workers: int | None = None, announce=None):
         else:
             try:
                 made = stack.enter_context(Client(scheduler, timeout=CONNECT_SECONDS))
-            except (OSError, TimeoutError, ValueError) as err:
+            except Exception as err:  # noqa: BLE001 - a server that is not Dask makes the protocol raise anything
                 raise ParameterError("scheduler", scheduler, f"the address of a running Dask scheduler ({type(err).__name__}: "
-                                     f"none answered within {CONNECT_SECONDS:g} s)") from None
+                                     f"none answered as one within {CONNECT_SECONDS:g} s)") from None
         if announce is not None:
             link = getattr(made, "dashboard_link", None)
             announce(f"Dask scheduler {made.scheduler.address}" + (f", dashboard {link}" if link else ""))
@@ -83,10 +83,37 @@ def reachable(address: str, option: str = "scheduler") -> None:
     host, _, port = address.split("://", 1)[1].rpartition(":")
     try:
         with socket.create_connection((host.strip("[]"), int(port)), timeout=CONNECT_SECONDS):
-            return
+            pass
     except (OSError, ValueError) as err:
         raise ParameterError(option, address, f"the address of a running Dask scheduler (tcp://HOST:PORT; "
                              f"{type(err).__name__}: none answered within {CONNECT_SECONDS:g} s)") from None
+    identity = _identity(address)
+    if not isinstance(identity, dict) or identity.get("type") != "Scheduler":
+        why = identity if isinstance(identity, str) else f"it says it is {identity!r:.60}"
+        raise ParameterError(option, address, "the address of a running Dask scheduler (a server answers there, "
+                             f"but not as a Dask scheduler within {2 * CONNECT_SECONDS:g} s: {why})")
+
+
+def _identity(address: str):
+    """What the server at ``address`` says it is, asked in Dask's own protocol (its handshake, then
+    the ``identity`` request every Dask server answers); a string saying why if it could not be
+    asked: garbage, silence (at most 2 x `CONNECT_SECONDS`) or a closed connection."""
+    import asyncio
+
+    async def ask():
+        from distributed.comm import connect
+
+        comm = await connect(address, timeout=CONNECT_SECONDS)
+        try:
+            await comm.write({"op": "identity"})
+            return await comm.read()
+        finally:
+            comm.abort()
+
+    try:
+        return asyncio.run(asyncio.wait_for(ask(), 2 * CONNECT_SECONDS))
+    except Exception as err:  # noqa: BLE001 - whatever a server that is not Dask makes the protocol raise
+        return f"{type(err).__name__}: {str(err)[:80] or 'no answer'}"
 
 
 def guarded(func, *args):

@@ -45,6 +45,9 @@ __all__ = ["exclusive", "die_with_parent", "content_digest", "to_netcdf", "write
 def to_netcdf(ds, path, **options) -> None:
     """``ds.to_netcdf(path, **options)``; when `distributed` was never imported in this process
     (so no Dask client exists), without importing it to look for one."""
+    if not hasattr(ds, "to_netcdf") or not isinstance(path, (str, os.PathLike)):
+        raise ParameterError("ds" if not hasattr(ds, "to_netcdf") else "path", ds if not hasattr(ds, "to_netcdf") else path,
+                             "an xarray.Dataset" if not hasattr(ds, "to_netcdf") else "a path (str or os.PathLike)")
     names = ("distributed", "dask.distributed")
     if any(name in sys.modules for name in names):  # imported (a client may exist), or guarded
         ds.to_netcdf(path, **options)
@@ -61,6 +64,8 @@ def to_netcdf(ds, path, **options) -> None:
 
 def content_digest(arrays: Mapping[str, object]) -> str:
     """SHA-256 of every array's name, shape, type and values (a changed byte changes it)."""
+    if not isinstance(arrays, Mapping):
+        raise ParameterError("arrays", arrays, "a mapping of names to arrays")
     digest = hashlib.sha256()
     for name in sorted(map(str, arrays)):
         values = np.asarray(arrays[name])
@@ -131,6 +136,8 @@ def write_xdmf_series(path, points: np.ndarray, cells: list, steps) -> Path:
     ``.xdmf`` with the new ``.h5``). meshio 5.3 would put the HDF5 file in the working folder
     (meshio issue 1442): the writer here puts it beside the XDMF file.
     """
+    if not isinstance(path, (str, os.PathLike)):
+        raise ParameterError("path", path, "a path (str or os.PathLike) ending in .xdmf")
     import shutil
     import tempfile
 

@@ -223,7 +223,7 @@ def make_law(name: str, *, fs: float, fd: float, tau: float | None = None, vs: f
     ``tau`` is the weakening rate [s/m] of ``linear-weakening``, ``vs`` the Stribeck speed
     [m/s] of ``stribeck``; each is required by its law and refused by the others.
     """
-    if name not in _REGISTRY:
+    if not isinstance(name, str) or name not in _REGISTRY:
         raise ParameterError("law", name, "one of " + ", ".join(law_names()))
     needs = {"coulomb": None, "linear-weakening": "tau", "stribeck": "vs"}[name]
     for given, value in (("tau", tau), ("vs", vs)):

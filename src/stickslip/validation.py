@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import math
+import os
+import pathlib
 import sys
 from numbers import Real
 
@@ -112,3 +114,96 @@ def count(name: str, value, most: int, what: str = "") -> int:
     if v > most:
         raise ParameterError(name, value, f"an integer from 1 to {most}" + (f" ({what})" if what else ""))
     return v
+
+
+def _shown(value):
+    """``value`` for a message: itself when short, else its type."""
+    text = repr(value)
+    return value if len(text) <= 60 else f"<{type(value).__name__}>"
+
+
+def instance(name: str, value, kind, what: str):
+    """``value`` if it is a ``kind`` (a class or a tuple of them), else a `ParameterError` saying
+    ``what`` it must be (a model object passed where a number was meant, a number for a model)."""
+    if not isinstance(value, kind):
+        raise ParameterError(name, _shown(value), what)
+    return value
+
+
+def function(name: str, value):
+    """``value`` if it can be called (a function of the user's), else a `ParameterError`."""
+    if not callable(value):
+        raise ParameterError(name, _shown(value), "a function (something callable)")
+    return value
+
+
+def finite_array(name: str, value, ndim: int | None = None, empty: bool = False):
+    """``value`` as a float array of finite numbers (of ``ndim`` dimensions, if given; non-empty
+    unless ``empty``): text, None, nested lists of uneven length, NaN or infinities are refused."""
+    import numpy as np
+
+    try:
+        array = np.asarray(value, dtype=float)
+    except (TypeError, ValueError, OverflowError):
+        raise ParameterError(name, _shown(value), "an array of finite real numbers") from None
+    if ndim is not None and array.ndim != ndim:
+        raise ParameterError(name, _shown(value), f"an array of finite real numbers of {ndim} dimension"
+                             f"{'s' if ndim != 1 else ''} (this one has {array.ndim})")
+    if not empty and array.size == 0:
+        raise ParameterError(name, _shown(value), "a non-empty array of finite real numbers")
+    if not np.isfinite(array).all():
+        raise ParameterError(name, _shown(value), "an array of finite real numbers (this one holds NaN or infinities)")
+    return array
+
+
+def real_array(name: str, value):
+    """``value`` as a float array (any shape; NaN passes through, as numpy's functions take it): for
+    the vectorised formulas, whose only bad input is one that is not numbers at all."""
+    import numpy as np
+
+    try:
+        return np.asarray(value, dtype=float)
+    except (TypeError, ValueError, OverflowError):
+        raise ParameterError(name, _shown(value), "a real number or an array of them") from None
+
+
+def special_kind(path) -> str | None:
+    """What ``path`` is when it is neither a regular file nor absent: ``"a FIFO"``, ``"a device"``,
+    ``"a socket"``, ``"a folder"``, ``"a dangling symbolic link (to TARGET)"``; None for a regular
+    file (or a link to one) and for a name that does not exist. Reading a FIFO or a device such as
+    /dev/zero waits or reads for ever, and writing over one replaces the device: both are refused
+    before any work."""
+    import stat
+
+    if not isinstance(path, (str, os.PathLike)):
+        raise ParameterError("path", path, "a path (str or os.PathLike)")
+    path = pathlib.Path(path)
+    try:
+        mode = os.stat(path).st_mode
+    except FileNotFoundError:
+        if os.path.islink(path):
+            return f"a dangling symbolic link (to {os.readlink(path)}, which does not exist)"
+        return None
+    except OSError:  # a loop of links, a name too long, a part that is a file: the callers' own checks say it
+        return None
+    if stat.S_ISREG(mode):
+        return None
+    if stat.S_ISDIR(mode):
+        return "a folder"
+    if stat.S_ISFIFO(mode):
+        return "a FIFO (named pipe)"
+    if stat.S_ISSOCK(mode):
+        return "a socket"
+    return "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode) else "not a regular file"
+
+
+def regular_input(name: str, path, what: str = "a readable file") -> pathlib.Path:
+    """``path`` if it is an existing regular file (or a link to one), else a `ParameterError`
+    naming ``name`` and saying what the path is (a FIFO, a device, a folder, a dangling link,
+    nothing): checked before opening it, which for a FIFO or /dev/zero would never end."""
+    if not isinstance(path, (str, os.PathLike)):
+        raise ParameterError(name, path, f"{what} (a path)")
+    kind = special_kind(path)
+    if kind is not None:
+        raise ParameterError(name, str(path), f"{what}, a regular file (this is {kind})")
+    return pathlib.Path(path)

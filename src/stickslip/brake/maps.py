@@ -25,6 +25,7 @@ from .reduced.params import PhysicalParams
 from .ring.integrate import integrate, perturbed_steady
 from .ring import classify
 from .waves.solve import find_waves
+from .. import validation as check
 
 __all__ = ["REGIME_CODES", "regime_code", "wave_regime_map", "ring_regime_map"]
 
@@ -56,6 +57,7 @@ def _ring_point(material, omega, nodes, transits, friction, mismatch) -> dict:
 def wave_regime_map(frictions, mismatches, store, *, omega: float = 50.0, modes: int = 4,
                     material: dict | None = None, **options):
     """Regime of the principal ``modes``-wave at every ``(f, d)``; ``options`` go to `run_sweep`."""
+    frictions, mismatches = check.finite_array("frictions", frictions, 1), check.finite_array("mismatches", mismatches, 1)
     omega, modes = Q.check("omega", omega), Q.check("modes", modes)
     func = functools.partial(_wave_point, dict(material or {}), omega, modes)
     return run_sweep(func, {"friction": list(frictions), "mismatch": list(mismatches)}, store,
@@ -67,6 +69,7 @@ def wave_regime_map(frictions, mismatches, store, *, omega: float = 50.0, modes:
 def ring_regime_map(frictions, mismatches, store, *, omega: float = 50.0, nodes: int = 128,
                     transits: float = 150.0, material: dict | None = None, **options):
     """Limit regime of the ring integration at every ``(f, d)``; ``options`` go to `run_sweep`."""
+    frictions, mismatches = check.finite_array("frictions", frictions, 1), check.finite_array("mismatches", mismatches, 1)
     omega, nodes = Q.check("omega", omega), Q.check("nodes", nodes)
     transits = Q.check("transits", transits)
     func = functools.partial(_ring_point, dict(material or {}), omega, nodes, transits)

@@ -128,6 +128,9 @@ def parse_modes(text: str) -> list[int]:
         raise ParameterError("--wave-numbers", text, "a list like 1-20, 8 or 2,4,8") from None
     if not modes or min(modes) < 1 or max(modes) > 100_000:
         raise ParameterError("--wave-numbers", text, "mode numbers from 1 to 100000")
+    if len(set(modes)) < len(modes):  # a mode twice was computed and printed twice
+        twice = sorted({m for m in modes if modes.count(m) > 1})
+        raise ParameterError("--wave-numbers", text, f"each mode number once ({twice[0]} is given twice)")
     return modes
 
 

@@ -19,6 +19,7 @@ from rich.table import Table
 from rich.text import Text
 
 from ..errors import NoSolutionError, ParameterError
+from ..validation import special_kind
 from ..quantities import FEM, MAX_POINTS, Quantity, lookup
 from . import status
 
@@ -221,6 +222,8 @@ def axis(option: str, text: str) -> tuple[str, list[float]]:
     if log and min(lo, hi) <= 0:
         raise ParameterError(option, text, "lo, hi > 0 for a logarithmic axis (:log)")
     values = np.logspace(np.log10(lo), np.log10(hi), n) if log else np.linspace(lo, hi, n)
+    if len(set(values.tolist())) < n:  # lo = hi, or closer than n doubles apart: a point computed twice
+        raise ParameterError(option, text, f"name=lo:hi:n with {n} distinct values from lo to hi (lo != hi), {example}")
     return name.strip(), [float(v) for v in values]
 
 
@@ -317,6 +320,9 @@ def output_path(name: str, path: Path | None, suffix: str | tuple[str, ...],
         allowed = suffixes[0] if len(suffixes) == 1 else ", ".join(suffixes[:-1]) + " or " + suffixes[-1]
         raise ParameterError(name, str(path), f"a file name ending in {allowed}")
     _name_fits(name, path)
+    kind = special_kind(path)
+    if kind is not None and kind != "a folder":  # a FIFO blocks its reader, a device is replaced by the file
+        raise ParameterError(name, str(path), f"a regular file or a new name (this is {kind})")
     try:
         if path.is_dir():
             raise ParameterError(name, str(path), "a file name, not a folder")
@@ -345,6 +351,9 @@ def output_folder(name: str, path: Path, suffix: str | None = None) -> Path:
     if suffix is not None and path.suffix.lower() != suffix:
         raise ParameterError(name, str(path), f"a folder name ending in {suffix}")
     _name_fits(name, path)
+    kind = special_kind(path)
+    if kind is not None and kind != "a folder":
+        raise ParameterError(name, str(path), f"a folder (created if absent), not {kind}")
     try:
         if path.exists() and not path.is_dir():
             raise ParameterError(name, str(path), "a folder (created if absent), not a file")

@@ -45,6 +45,7 @@ import numpy as np
 import typer
 
 from ..errors import MISSING, NoSolutionError, ParameterError
+from ..validation import regular_input
 from ..quantities import COMMON, MAX_POINTS
 from .common import Overwrite, declared, scheduler_option, emit, output_folder, progress_bar, units_of
 from .helptext import command_tree
@@ -189,13 +190,16 @@ def _store_name(key: str) -> str:
 
 def read_study(path: Path, app) -> Study:
     """Read and check the sweep config ``path``; every problem in one `ParameterError`."""
-    path = Path(path)
+    path = regular_input("CONFIG", path, "a readable TOML file")
     try:
         data = tomllib.loads(path.read_text(encoding="utf-8"))
     except OSError as err:
         raise ParameterError("CONFIG", str(path), f"a readable TOML file ({err.strerror})") from None
     except (UnicodeDecodeError, tomllib.TOMLDecodeError) as err:
         raise ParameterError("CONFIG", str(path), f"a valid TOML file in UTF-8 ({err})") from None
+    except RecursionError:
+        raise ParameterError("CONFIG", str(path), "a TOML file without deeply nested arrays or tables (a sweep "
+                             "config nests three levels)") from None
     problems: list[str] = [f"unknown key {k}" for k in sorted(set(data) - _KEYS)]
     text = data.get("command")
     words = tuple(str(text).split()) if isinstance(text, str) else ()
@@ -215,6 +219,7 @@ def read_study(path: Path, app) -> Study:
         problems.append(f"config is only for the fem commands ({' '.join(words)} takes none)")
     fixed, sets, axes, keys, unparsed = {}, {}, {}, {}, set()
     key_of = _config_keys(config, problems) if config is not None and config.is_file() else None
+    spelled: dict = {}  # what each option or config number was given as: a second spelling of it is refused
     for section in ("fixed", "axes"):
         table = data.get(section, {})
         if not isinstance(table, dict):
@@ -237,6 +242,13 @@ def read_study(path: Path, app) -> Study:
                                 + (" nor a number of its config" if key_of is not None else "")
                                 + f" ({', '.join(known) or 'none'})")
                 continue
+            same = target if isinstance(target, str) else name
+            if (section, same) in spelled:
+                problems.append(f"{section}.{spelled[section, same]} and {section}.{raw} are one "
+                                f"{'config number' if isinstance(target, str) else 'option'} ({same}) given twice: "
+                                "keep one")
+                continue
+            spelled[section, same] = raw
             kind = _kind_problem(section, raw, value, target)
             if kind:
                 problems.append(kind)
@@ -247,6 +259,10 @@ def read_study(path: Path, app) -> Study:
                 (sets if isinstance(target, str) else fixed)[target if isinstance(target, str) else name] = value
                 continue
             values = _values(raw, value, problems)
+            if len(set(values)) < len(values):  # a point computed twice, and a grid whose axis is not a coordinate
+                twice = sorted({v for v in values if values.count(v) > 1})
+                problems.append(f"axes.{raw} repeats {', '.join(f'{v:g}' for v in twice[:3])}: each value once")
+                values = []
             if not values and not isinstance(target, str):
                 unparsed.add(params[name].opts[0])
             if values:
@@ -371,6 +387,7 @@ def _check_values(study: Study, command) -> list[str]:
         if bad:
             problems.append(f"axes.{name} = {bad[0][0]:g}: {bad[0][1]}" + (f" (and {len(bad) - 1} more of its values)"
                                                                           if len(bad) > 1 else ""))
+    problems += _combinations(study, options, params)
     if study.config is not None:
         from ..fem.config import load_config
 
@@ -386,6 +403,31 @@ def _check_values(study: Study, command) -> list[str]:
                         seen.add(message)
                         problems.append(f"config {study.config}: {message}" if axis is None else
                                         f"axes.{_shown(study, axis)} = {value:g}: {message}")
+    return problems
+
+
+#: Rules between two options of one command, ``(larger, smaller)``: the grid holds every
+#: combination of the axes' values, so the rule holds at every point iff it holds between the
+#: smallest value of the one and the largest of the other (checked before any point runs).
+AT_LEAST = [("fs", "fd")]
+
+
+def _combinations(study: Study, options: dict, params: dict) -> list[str]:
+    """The points of the grid that break a rule of `AT_LEAST` (the first one, and how many)."""
+    problems = []
+    for big, small in AT_LEAST:
+        if big not in params or small not in params:
+            continue
+        bigs, smalls = options.get(big, [study.fixed.get(big)]), options.get(small, [study.fixed.get(small)])
+        if any(not isinstance(v, (int, float)) or isinstance(v, bool) for v in [*bigs, *smalls]):
+            continue  # left out (the option's default) or refused above
+        broken = [(b, s) for b in bigs for s in smalls if b < s]
+        if broken:
+            b, s = broken[0]
+            where = lambda n: f"axes.{n}" if n in options else f"fixed.{n}"  # noqa: E731
+            problems.append(f"{where(big)} = {b:g} with {where(small)} = {s:g}: {params[big].opts[0]} must be >= "
+                            f"{params[small].opts[0]} at every point of the grid ({len(broken)} of "
+                            f"{len(bigs) * len(smalls)} combinations are not)")
     return problems
 
 

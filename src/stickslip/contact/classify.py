@@ -39,6 +39,7 @@ from ..quantities import COMMON as Q
 from ..cf import finish
 from ..errors import ParameterError
 from .states import SEPARATION, STATE_NAMES, STICK, count_zones, regime_code, regime_name
+from .. import validation as check
 
 xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
@@ -47,6 +48,9 @@ __all__ = ["RegimeResult", "classify", "pattern_shift", "pattern_speed"]
 
 def pattern_shift(x1: np.ndarray, x2: np.ndarray, max_shift: float = np.pi) -> float:
     """Shift ``s`` (radians, ``|s| <= max_shift``) with ``x2(theta) ~ x1(theta - s)``."""
+    x1, x2 = check.finite_array("x1", x1, 1), check.finite_array("x2", x2, 1)
+    if x1.size != x2.size:
+        raise ParameterError("x2", f"{x2.size} values", f"as many values as x1 ({x1.size})")
     max_shift = Q.check("max_shift", max_shift)
     N = x1.size
     a, b = x1 - x1.mean(), x2 - x2.mean()

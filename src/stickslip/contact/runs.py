@@ -633,6 +633,12 @@ def run_explicit(cls, scheme, u0, v0, settings: dict, t_end: float, *, checkpoin
     it holds this run (else `ParameterError`; ``overwrite=True`` starts afresh instead),
     and is written as it goes.
     """
+    if not (isinstance(cls, type) and issubclass(cls, RunRecord)):
+        raise ParameterError("cls", cls, "a RunRecord class (stickslip.contact.RunRecord or a subclass)")
+    if not all(callable(getattr(scheme, name, None)) for name in ("initial_state", "steady_reference")):
+        raise ParameterError("scheme", type(scheme).__name__, "an explicit scheme (stickslip.contact.ExplicitScheme)")
+    if not isinstance(settings, dict) or "contact" not in settings:
+        raise ParameterError("settings", settings, "the settings of stickslip.contact.prepare")
     with contextlib.ExitStack() as stack:
         if checkpoint is not None:  # one writer per checkpoint, for the whole run
             stack.enter_context(exclusive(checkpoint, "checkpoint"))

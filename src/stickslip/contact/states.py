@@ -17,6 +17,7 @@ reverse slip: ``stick-slip-separation``, say.
 """
 
 from __future__ import annotations
+from ..errors import ParameterError
 
 import numpy as np
 
@@ -38,19 +39,32 @@ REGIME_ATTRS = {"flag_values": list(REGIME_CODES.values()), "flag_meanings": " "
 
 def regime_name(present) -> str:
     """``stick-slip-separation-reverse-slip`` style name of a set of state names (``none`` if empty)."""
+    try:
+        present = set(present) if not isinstance(present, (str, bytes)) else None
+    except TypeError:
+        present = None
+    if present is None:
+        raise ParameterError("present", present, "a collection of state names (" + ", ".join(_ORDER) + ")")
     names = [k for k in _ORDER if k in set(present)]
     return "-".join(k.replace("_", "-") for k in names) if names else "none"
 
 
 def regime_code(name: str) -> int:
     """Integer code of a regime name (`REGIME_CODES`; ``other`` for combinations without a code)."""
+    if not isinstance(name, str):
+        raise ParameterError("name", name, "a regime name (text), e.g. " + ", ".join(list(REGIME_CODES)[:3]))
     return REGIME_CODES.get(name, REGIME_CODES["other"])
 
 
 def count_zones(mask: np.ndarray, min_run: int = 1, periodic: bool = True) -> int:
     """Number of runs of ``True`` of length >= ``min_run`` in a 1-D mask along a closed contact
     line (``periodic``: a run may wrap around its end) or an open one."""
-    mask = np.asarray(mask, dtype=bool)
+    try:
+        mask = np.asarray(mask, dtype=bool)
+    except (TypeError, ValueError):
+        mask = None
+    if mask is None or mask.ndim != 1:
+        raise ParameterError("mask", mask if mask is None else mask.tolist(), "a 1-D array of booleans")
     if mask.all():
         return 1 if periodic or mask.size >= min_run else 0
     if not mask.any():
@@ -64,7 +78,13 @@ def count_zones(mask: np.ndarray, min_run: int = 1, periodic: bool = True) -> in
 
 def state_fractions(state: np.ndarray) -> np.ndarray:
     """Fraction of the nodes in each state (columns in the order of `STATE_NAMES`), over the last axis."""
-    state = np.asarray(state)
+    try:
+        state = np.asarray(state)
+    except ValueError:  # a ragged list
+        state = np.asarray([])
+    if state.ndim == 0 or state.size == 0 or state.dtype.kind not in "iubf" or not np.isfinite(state).all():
+        raise ParameterError("state", state.tolist() if state.size <= 8 else f"array of shape {state.shape}",
+                             "a non-empty array of state codes (integers)")
     if state.ndim == 1:  # one row (every sample of a run): one pass
         return np.bincount(state.astype(np.intp), minlength=len(STATE_NAMES))[: len(STATE_NAMES)] / state.size
     counts = np.stack([np.sum(state == code, axis=-1) for code in range(len(STATE_NAMES))], axis=-1)

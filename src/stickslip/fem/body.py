@@ -30,6 +30,7 @@ import numpy as np
 
 from ..errors import ParameterError
 from ..quantities import FEM as Q, MAX_MESH_NODES
+import os
 
 __all__ = ["Body", "read_body", "body_from_meshio", "edge_middles", "CELL_KINDS"]
 
@@ -251,6 +252,8 @@ def _cell_groups(mesh, blocks, kind: str) -> dict:
 
 def read_body(path) -> Body:
     """The `Body` of a mesh file meshio reads (gmsh ``.msh``, VTK, XDMF, ...)."""
+    if not isinstance(path, (str, os.PathLike)):
+        raise ParameterError("mesh", path, "an existing mesh file (a path)")
     import meshio
 
     path = Path(path)

@@ -86,6 +86,7 @@ from pathlib import Path
 
 from ..quantities import FEM as Q
 from ..errors import ParameterError
+from ..validation import regular_input
 from .assembly import MAX_STRAIN, PLANES, Material, assemble
 from .body import read_body
 from .orthotropic import Orthotropic
@@ -210,7 +211,7 @@ def load_config(path, overrides=None) -> FemConfig:
 
 def read_toml(path) -> dict:
     """The TOML of a config file, or one `ParameterError` naming it."""
-    path = Path(path)
+    path = regular_input("config", path, "a readable TOML file")
     try:
         return tomllib.loads(path.read_text(encoding="utf-8"))
     except OSError as err:

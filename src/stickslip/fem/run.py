@@ -27,6 +27,7 @@ from ..contact.runs import RunFormat, RunRecord, prepare, run_explicit
 from ..errors import ParameterError
 from .scheme import BodyScheme, ContactProblem
 from .static import steady_contact
+from .. import validation as check
 
 __all__ = ["BodyInitial", "BodyRun", "perturbed_steady_body", "preload_body", "integrate_body", "classify_body"]
 
@@ -132,6 +133,7 @@ def integrate_body(problem: ContactProblem, t_end: float | None = None, *, trans
     set `BodyScheme`; the books and ``checkpoint`` behave as in `stickslip.brake.fem.integrate_fem`;
     ``volume_every`` [transits] keeps volume snapshots (one at ``t = 0`` too) for `stickslip.fem.paraview.write_run_xdmf`.
     """
+    check.instance("problem", problem, ContactProblem, "a stickslip.fem.ContactProblem")
     scheme = BodyScheme(problem, beta2, courant, time_step)
     initial = perturbed_steady_body(scheme) if initial is None else initial
     if not isinstance(initial, BodyInitial) or initial.u.shape != (scheme.free.size,):

@@ -191,6 +191,8 @@ def steady_contact(system: BodySystem, frames: ContactFrames, friction: float = 
     iteration is then within about 1e-8 / (1 - rate) of its limit); `PRESSURE_ITERATIONS` at most,
     else a `NoSolutionError` that says so.
     """
+    check.instance("system", system, BodySystem, "a stickslip.fem.BodySystem")
+    check.instance("frames", frames, ContactFrames, "a stickslip.fem.ContactFrames")
     friction = Q.check("friction", friction)
     max_iterations = max(ITERATIONS, 2 * len(frames.nodes)) if max_iterations is None else \
         Q.check("max_iterations", max_iterations)

@@ -50,6 +50,7 @@ from ..errors import NoSolutionError, ParameterError
 from .arrays import MAX_B, b_array
 from .inverse import inverse_problem
 from .waves import Radok, radok
+from .. import validation as check
 
 xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
@@ -63,7 +64,15 @@ __all__ = ["StickSlipWave", "InterfaceFields", "wave_from_inverse", "decaying_wa
 
 def periodic_X(z, b, lam):
     """Canonical function ``X(z) = s(z)^(-lam)`` (principal branch), ``Im z != 0``, ``a = 1``."""
-    z = np.asarray(z, dtype=complex)
+    try:
+        z = np.asarray(z, dtype=complex)
+    except (TypeError, ValueError):
+        raise ParameterError("z", z, "a complex number or an array of them") from None
+    if z.size == 0 or not np.isfinite(z).all():
+        raise ParameterError("z", z.tolist() if z.size <= 8 else f"{z.size} values", "finite complex numbers")
+    b, lam = check.finite_array("b", b), check.finite_array("lam", lam)
+    if (b <= 1.0).any():
+        raise ParameterError("b", b.tolist() if b.size <= 8 else f"{b.size} values", "> 1 (the period over the slip zone)")
     s = np.sin(np.pi * (z - b) / b) / np.sin(np.pi * (z - 1.0) / b)
     return np.exp(-lam * np.log(s))
 

@@ -161,6 +161,7 @@ def continue_cycle(osc: Oscillator, stop: float, *, parameter: str = "belt_speed
         Arclength steps in scaled units (parameter relative to its start value,
         section coordinate relative to ``f_s N / k``).
     """
+    check.instance("osc", osc, Oscillator, "a stickslip.oscillator.Oscillator")
     start = osc.parameter(parameter)
     stop = Q.check("stop", stop)
     if stop == start:

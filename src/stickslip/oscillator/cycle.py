@@ -25,6 +25,7 @@ from ..quantities import OSCILLATOR as Q
 from ..errors import NoSolutionError
 from .model import Mode, Oscillator
 from .simulate import Engine, Trajectory
+from .. import validation as check
 
 xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
@@ -49,6 +50,8 @@ class ReturnMap:
 
 def return_map(engine: Engine, x: float) -> ReturnMap:
     """``P(x)`` and ``P'(x)`` on the section ``v = 0`` (upward)."""
+    check.instance("engine", engine, Engine, "a stickslip.oscillator.Engine")
+    x = check.finite("x", x)
     traj = engine.run(x, 0.0, return_horizon(engine.osc), section=0.0)
     if traj.status != 1:
         reason = traj.message if traj.status < 0 else "the orbit settles without returning"
@@ -237,6 +240,7 @@ def limit_cycle(osc: Oscillator, x0: float | None = None, v0: float | None = Non
     NoSolutionError
         If the orbit settles on the equilibrium or shooting fails.
     """
+    check.instance("osc", osc, Oscillator, "a stickslip.oscillator.Oscillator")
     x0, v0 = osc.start(osc.stick_limits[1] if x0 is None else x0, osc.belt_speed if v0 is None else v0)
     rtol = Q.check("rtol", rtol)
     tol = Q.check("tol", tol)

@@ -220,6 +220,9 @@ class Engine:
     """
 
     def __init__(self, osc: Oscillator, method: str = "auto", rtol: float = 1e-12, variational=False):
+        if not isinstance(osc, Oscillator):
+            raise ParameterError("osc", osc if isinstance(osc, (int, float, str, type(None))) else type(osc).__name__,
+                                 "a stickslip.oscillator.Oscillator")
         if method not in METHODS:
             raise ParameterError("method", method, "one of " + ", ".join(METHODS))
         if method == "closed-form" and osc.friction.affine is None:
@@ -420,6 +423,8 @@ def simulate(osc: Oscillator, t_end: float, x0: float | None = None, v0: float =
     Trajectory
         Check ``status``: negative means the run stopped early (``message`` says why).
     """
+    if not isinstance(osc, Oscillator):
+        raise ParameterError("osc", osc if isinstance(osc, (int, float, str, type(None))) else type(osc).__name__, "a stickslip.oscillator.Oscillator")
     t_end = Q.check("t_end", t_end)
     longest = MAX_PERIODS * 2 * np.pi / osc.omega
     if t_end > longest:

@@ -26,6 +26,7 @@ from ..results import Result
 from ..errors import ParameterError
 from ..quantities import OSCILLATOR as Q, lookup
 from .model import Oscillator
+from .. import validation as check
 
 __all__ = ["EquilibriumStability", "HopfPoint", "equilibrium_stability", "hopf_points", "damping_coefficients"]
 
@@ -71,6 +72,7 @@ class EquilibriumStability(Result):
 
 def equilibrium_stability(osc: Oscillator) -> EquilibriumStability:
     """Equilibrium position, eigenvalues and effective damping ``c + N mu'(V)``."""
+    check.instance("osc", osc, Oscillator, "a stickslip.oscillator.Oscillator")
     return EquilibriumStability(osc.equilibrium, np.sort_complex(osc.equilibrium_eigenvalues()),
                                 osc.effective_damping)
 
@@ -110,6 +112,7 @@ def hopf_points(osc: Oscillator, parameter: str, lo: float, hi: float, num: int 
     For the linear-weakening law ``d1 = c - f_d tau N`` does not depend on ``V``; its
     Hopf point is in the damping, ``c_H = f_d tau N`` (or in ``tau``, ``N``).
     """
+    check.instance("osc", osc, Oscillator, "a stickslip.oscillator.Oscillator")
     osc.parameter(parameter)
     lo, hi = Q.check("lo", lo), Q.check("hi", hi)
     if not lo < hi:

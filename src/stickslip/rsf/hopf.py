@@ -22,6 +22,7 @@ from typing import Callable
 
 import numpy as np
 
+from .. import validation as check
 from ..errors import NoSolutionError, ParameterError
 from ..results import Result
 from .slider import SpringSlider, complex_jacobian, directional
@@ -76,9 +77,24 @@ def first_lyapunov_coefficient(field: Callable, x0, step: float = 1e-4) -> tuple
     """``(l1, error, w)`` of the vector ``field`` (a function of a state that takes complex
     arguments) at its equilibrium ``x0``, where its Jacobian has eigenvalues ``+-i w``; ``step`` the
     difference step, in the units of the state (the error: ``l1`` at ``step`` against ``step / 2``)."""
-    x0 = np.asarray(x0, dtype=float)
+    field = check.function("field", field)
+    x0 = check.finite_array("x0", x0, ndim=1)
+    if x0.size < 2:
+        raise ParameterError("x0", x0.tolist(), "a state of at least 2 variables (a Hopf pair needs two)")
+    step = check.positive("step", step)
+    try:
+        value = np.asarray(field(x0.astype(complex)))
+    except TypeError as err:
+        raise ParameterError("field", getattr(field, "__name__", field), f"a function of one state vector "
+                             f"({type(err).__name__}: {err})") from None
+    if value.shape != x0.shape or value.dtype.kind not in "fc" or not np.isfinite(value).all():
+        raise ParameterError("field", getattr(field, "__name__", field), f"a function returning {x0.size} finite "
+                             f"numbers at x0 (it returned shape {value.shape}, {value.dtype})")
     coarse, w = _coefficient(field, x0, step)
     fine, _ = _coefficient(field, x0, step / 2)
+    if not (math.isfinite(fine) and math.isfinite(coarse)):
+        raise NoSolutionError(f"the first Lyapunov coefficient came out {fine} at step {step:g}: the field is not "
+                              "smooth enough about x0 at that step")
     return fine, abs(fine - coarse), w
 
 

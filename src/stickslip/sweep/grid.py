@@ -16,7 +16,7 @@ import dask
 import numpy as np
 
 from .. import validation as check
-from ..cluster import guarded, is_distributed
+from ..cluster import check_scheduler, guarded, is_distributed, reachable
 from ..errors import ParameterError
 from ..files import exclusive
 from ..quantities import COMMON as Q, MAX_POINTS
@@ -28,10 +28,18 @@ from .stream import described, failure_error, stream
 __all__ = ["run_sweep", "evaluate_point"]
 
 log = logging.getLogger("stickslip.sweep")
+#: dask's own names of its local schedulers, which `dask.compute` takes as well.
+DASK_NAMES = ("sync", "single-threaded", "threading", "multiprocessing")
 
 
 def evaluate_point(func, names: Sequence[str], sizes: Mapping[str, int], point: dict) -> list:
     """``func(**point)``'s outputs ``names`` in order (``sizes[name]`` numbers for a vector output)."""
+    func = check.function("func", func)
+    if isinstance(names, str) or not isinstance(names, Sequence) or not all(isinstance(n, str) for n in names):
+        raise ParameterError("names", names, "a list of output names (text)")
+    if not isinstance(sizes, Mapping) or not isinstance(point, Mapping):
+        raise ParameterError("sizes" if not isinstance(sizes, Mapping) else "point",
+                             sizes if not isinstance(sizes, Mapping) else point, "a mapping (dict)")
     result = func(**point)
     missing = [n for n in names if n not in result]
     if missing:
@@ -111,6 +119,11 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
         raise ParameterError("axes", axes, "a mapping of names to lists of finite numbers") from None
     if not axes or any(len(v) == 0 for v in axes.values()):
         raise ParameterError("axes", axes, "a mapping of names to non-empty value lists")
+    for name, values in axes.items():  # a value twice is a point computed twice on an axis that is no coordinate
+        if len(set(values)) < len(values):
+            raise ParameterError(f"axes[{name!r}]", values if len(values) <= 8 else f"{len(values)} values",
+                                 "a list of distinct values (one repeats)")
+    func = check.function("func", func)
     points = math.prod(len(v) for v in axes.values())
     if points > MAX_POINTS:
         raise ParameterError("axes", {k: len(v) for k, v in axes.items()}, f"a grid of at most {MAX_POINTS:.0e} points "
@@ -123,6 +136,11 @@ def run_sweep(func: Callable[..., Mapping[str, float]], axes: Mapping[str, Seque
     if not isinstance(store, (str, os.PathLike)):
         raise ParameterError("store", store, "a path (str or os.PathLike) of a Zarr directory")
     batch = Q.check("batch", batch)
+    if not (isinstance(scheduler, str) and scheduler in DASK_NAMES) and (isinstance(scheduler, str) or not (callable(scheduler)
+                                                                          or is_distributed(scheduler))):
+        check_scheduler(scheduler)  # before the store is made
+        if is_distributed(scheduler) and "://" in scheduler:
+            reachable(scheduler)  # a server that is not a Dask scheduler is refused here, not mid-sweep
     if workers is not None:  # each worker process holds its own interpreter (about 200 MB)
         workers = Q.check("workers", workers)
     if scheduler == "processes" and workers == 1:

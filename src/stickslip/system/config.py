@@ -52,6 +52,7 @@ import tomllib
 from pathlib import Path
 
 from ..errors import MISSING, ParameterError
+from ..validation import regular_input
 from ..friction import make_law
 from ..rsf import RateState
 from .model import Contact, ForceHistory, Harmonic, System
@@ -186,7 +187,7 @@ def read_table(path) -> dict:
     file`` if it cannot be read)."""
     if not isinstance(path, (str, os.PathLike)):
         raise ParameterError("system file", path, "a path to a TOML file")
-    path = Path(path)
+    path = regular_input("system file", path, "a readable UTF-8 TOML file")
     try:
         text = path.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as err:
@@ -196,4 +197,7 @@ def read_table(path) -> dict:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as err:
         raise ParameterError("system file", str(path), f"valid TOML ({err})") from None
+    except RecursionError:
+        raise ParameterError("system file", str(path), "a TOML file without deeply nested arrays or tables (a "
+                             "system file nests two levels)") from None
     return data

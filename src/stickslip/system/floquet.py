@@ -27,6 +27,7 @@ from ..results import Result
 from .flow import CLOSING, OPEN, STATE_FLAGS, Flow
 from .model import System
 from .simulate import SystemRun, land, simulate, zero_slip
+from .. import validation as check
 
 xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
@@ -47,6 +48,10 @@ def saltation(f_minus: np.ndarray, f_plus: np.ndarray, normal: np.ndarray, rate:
     """``I + (f+ - f-) n^T / (n . f-)``: the jump of the linearised flow at a transversal crossing.
     Where the switching function depends on time too (a forced system), ``rate`` is its whole
     rate of change before the crossing, ``n . f- + dh/dt``."""
+    f_minus, f_plus = check.finite_array("f_minus", f_minus, 1), check.finite_array("f_plus", f_plus, 1)
+    normal = check.finite_array("normal", normal, 1)
+    if not f_minus.size == f_plus.size == normal.size:
+        raise ParameterError("normal", normal.size, f"a vector of the size of f_minus and f_plus ({f_minus.size})")
     rate = float(normal @ f_minus) if rate is None else float(rate)
     if rate == 0.0:
         raise NoSolutionError("a grazing event (the switching function is tangent to the flow): the monodromy "
@@ -110,6 +115,7 @@ def _lands(system: System, flow: Flow, row: int, owner: int) -> bool:
 def monodromy(system: System, run: SystemRun | tuple) -> np.ndarray:
     """``d(x, v)(t_end) / d(x, v)(0)`` of a run simulated with ``segments=True`` (or of a tuple
     of its segments: up to just after the last one's events)."""
+    check.instance("system", system, System, "a stickslip.system.System")
     segments = run if isinstance(run, tuple) else run.segments
     if not segments:
         raise ParameterError("run", "a run without segments", "a run of simulate(..., segments=True)")
@@ -127,6 +133,12 @@ def monodromy(system: System, run: SystemRun | tuple) -> np.ndarray:
 
 def without_own(multipliers: np.ndarray) -> np.ndarray:
     """The multipliers but the flow's own (the one nearest 1), in their order."""
+    try:
+        multipliers = np.asarray(multipliers, dtype=complex)
+    except (TypeError, ValueError):
+        raise ParameterError("multipliers", multipliers, "a non-empty vector of (complex) numbers") from None
+    if multipliers.ndim != 1 or multipliers.size == 0:
+        raise ParameterError("multipliers", multipliers.tolist(), "a non-empty vector of (complex) numbers")
     return np.delete(multipliers, np.argmin(np.abs(multipliers - 1.0)))
 
 

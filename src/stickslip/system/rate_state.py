@@ -41,6 +41,7 @@ from .flow import OPEN, STATE_FLAGS
 from .simulate import MAX_INSTANT_EVENTS, MAX_NUMBERS
 from .smoothkernel import Compiled, Failed, compiled_laws
 from .steady import SteadySliding
+from .. import validation as check
 
 xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
@@ -68,6 +69,7 @@ def _constant_normal(system: System, which: str) -> None:
 def is_rate_state(system: System) -> bool:
     """True when a contact's law is rate-and-state (the system then moves by `rate_state_simulate`;
     its other contacts, which may stick, need a constant normal force: checked, an error if not)."""
+    check.instance("system", system, System, "a stickslip.system.System")
     rsf = any(isinstance(c.friction, RateState) for c in system.contacts)
     if rsf:
         _constant_normal(system, "rate-and-state contacts")
@@ -80,6 +82,7 @@ def integrated(system: System) -> bool:
     a unilateral contact's law depends on the slip speed (its force ``s N(x) mu(v)`` is not linear).
     With rate-and-state contacts every contact needs a constant normal force, without them no contact
     may be rigid (checked, an error if not)."""
+    check.instance("system", system, System, "a stickslip.system.System")
     if is_rate_state(system):
         return True
     smooth = any(getattr(c.friction, "affine", None) is None or (c.unilateral and c.friction.affine[1] != 0.0)

@@ -113,6 +113,8 @@ def choose_states(system: System, z: np.ndarray, states: tuple, zero: set, relea
     ``zero`` (at zero slip velocity) stick unless their sticking force exceeds ``f_s N``
     (released in the force's direction), ``released`` (contact -> sign) slip at once. ``flows``
     caches the flows of the force history's ``piece``."""
+    if not isinstance(system, System):
+        raise ParameterError("system", system, "a stickslip.system.System")
     st = list(states)
     for i in zero:  # a frictionless contact never sticks: its force is 0 whichever way it slips
         st[i] = released.get(i, 1 if _frictionless(system.contacts[i]) else 0)

@@ -32,6 +32,7 @@ import numpy as np
 from ...quantities import BRAKE as Q
 from ...contact import RunFormat, RunRecord, prepare, run_explicit
 from ...contact.runs import MAX_VOLUME
+from ... import validation as check
 from ...errors import ParameterError
 from ..reduced import BrakeParams
 from .scheme import FemScheme
@@ -48,7 +49,7 @@ class FemInitial:
     label: str = "user"
 
     def __post_init__(self):
-        u, v = (np.asarray(x, dtype=float) for x in (self.u, self.v))
+        u, v = (check.finite_array(name, x, empty=True) for name, x in (("u", self.u), ("v", self.v)))
         for name, x in (("u", u), ("v", v)):
             if x.ndim != 1 or x.shape != u.shape or not np.all(np.isfinite(x)):
                 raise ParameterError(name, f"array of shape {x.shape}", f"finite, 1-D, shape {u.shape}")

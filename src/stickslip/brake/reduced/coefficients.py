@@ -33,6 +33,8 @@ from scipy.optimize import brentq
 from ...results import Result
 from ...cf import finish
 from ...quantities import BRAKE as Q
+from ... import validation as check
+from ...errors import ParameterError
 
 xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
@@ -41,6 +43,9 @@ __all__ = ["ReducedCoefficients", "coefficients", "shape_integrals", "coupling",
 
 def shape_integrals(xi):
     """``(A, B, C1, C2)`` of [13] (vectorised over ``xi > 1``; all positive)."""
+    xi = check.finite_array("xi", xi)
+    if (xi <= 1.0).any():
+        raise ParameterError("xi", xi.tolist() if xi.size <= 8 else f"{xi.size} values", "> 1 (outer over inner radius)")
     xi = np.asarray(xi, dtype=float)
     e = xi**2 - 1.0
     ell = (1.0 + e) * np.log1p(e) / e  # = 2 xi^2 ln(xi) / (xi^2 - 1)
@@ -51,12 +56,16 @@ def shape_integrals(xi):
 
 def elastic_moduli(nu):
     """``(ã, b̃) = ((lambda + 2 mu)/E, mu/E)``."""
+    nu = check.finite_array("nu", nu)
+    if ((nu <= -1.0) | (nu >= 0.5)).any():
+        raise ParameterError("nu", nu.tolist() if nu.size <= 8 else f"{nu.size} values", "in (-1, 0.5) (Poisson's ratio)")
     nu = np.asarray(nu, dtype=float)
     return (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu)), 1.0 / (2.0 * (1.0 + nu))
 
 
 def coupling(xi, nu):
     """``gamma B D = ã C1 - b̃ C2``: the sign and size of the U-V coupling, free of ``gamma``."""
+    xi, nu = check.finite_array("xi", xi), check.finite_array("nu", nu)
     _, _, C1, C2 = shape_integrals(xi)
     at, bt = elastic_moduli(nu)
     return at * C1 - bt * C2

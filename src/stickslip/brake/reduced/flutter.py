@@ -40,6 +40,7 @@ from ...quantities import BRAKE as Q
 from ...errors import ParameterError
 from .coefficients import ReducedCoefficients
 from .params import BrakeParams
+from ... import validation as check
 
 xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
@@ -54,6 +55,7 @@ def unstable_root(K, eps):
     Computed without cancellation; for ``eps = 0`` the root ``+i sqrt(K)`` is returned.
     The other root is ``-s``.
     """
+    K, eps = check.finite_array("K", K), check.finite_array("eps", eps)
     K, eps = np.asarray(K, dtype=float), np.asarray(eps, dtype=float)
     modulus = np.hypot(K, eps)
     beta = np.sqrt((modulus + K) / 2.0)  # |Im s|
@@ -228,5 +230,6 @@ def separation_number(params: BrakeParams) -> float:
     """``S = g delta sqrt(a) / |D|``: contact is lost where ``D V' > g delta``, and a stick-slip
     wave has ``|V'| ~ 1/sqrt(a)`` (velocities of the order of the shaft speed), so separation
     needs ``S`` of order one or less. ``S = kappa * (gamma g) sqrt(gamma a) / (gamma |D|)``."""
+    check.instance("params", params, BrakeParams, "a stickslip.brake.BrakeParams")
     c = params.coefficients()
     return float(c.g * params.delta * np.sqrt(c.a) / abs(c.D))

@@ -30,12 +30,14 @@ from ...contact import RunFormat, RunRecord, prepare, run_explicit
 from ...errors import ParameterError
 from ..reduced import BrakeParams
 from .scheme import RingScheme
+from ... import validation as check
 
 __all__ = ["InitialCondition", "RingRun", "integrate", "perturbed_steady", "transit_time", "initial_from_wave"]
 
 
 def transit_time(params: BrakeParams) -> float:
     """``2 pi / sqrt(a)``: one trip of a P-wave around the ring (paper time ``Omega t``)."""
+    check.instance("params", params, BrakeParams, "a stickslip.brake.BrakeParams")
     return float(2.0 * np.pi / np.sqrt(params.coefficients().a))
 
 
@@ -50,7 +52,7 @@ class InitialCondition:
     label: str = "user"
 
     def __post_init__(self):
-        arrays = [np.asarray(getattr(self, k), dtype=float) for k in ("U", "V", "Ud", "Vd")]
+        arrays = [check.finite_array(k, getattr(self, k), empty=True) for k in ("U", "V", "Ud", "Vd")]
         n = arrays[0].shape
         for name, arr in zip(("U", "V", "Ud", "Vd"), arrays):
             if arr.ndim != 1 or arr.shape != n or not np.all(np.isfinite(arr)):
@@ -94,6 +96,9 @@ def perturbed_steady(params: BrakeParams, nodes: int = 512, amplitude: float = 1
 
 def initial_from_wave(wave, nodes: int) -> InitialCondition:
     """The wave sampled on ``nodes`` points at ``t = 0`` (``U_t = -c U'``, ``V_t = -c V'``)."""
+    if not all(hasattr(wave, name) for name in ("evaluate", "c", "n")):  # the ring does not import the waves
+        raise ParameterError("wave", type(wave).__name__, "a stickslip.brake.TravellingWave")
+    nodes = Q.check("nodes", nodes)
     theta = 2 * np.pi * np.arange(nodes) / nodes
     e = wave.evaluate(theta)
     return InitialCondition(e["U"], e["V"], -wave.c * e["dU"], -wave.c * e["dV"], label=f"wave n={wave.n}")

@@ -28,6 +28,7 @@ from ...quantities import BRAKE as Q
 from scipy.integrate import solve_ivp
 
 from .zones import CONTACT, SEPARATION, STICK, slip_sign
+from ... import validation as check
 
 __all__ = ["energy_balance", "integrate_wave"]
 
@@ -60,6 +61,9 @@ def energy_balance(wave) -> dict:
     for a periodic wave) and ``residual``
     (``|shaft_work - sliding - impacts| / shaft_work``).
     """
+    from .result import TravellingWave
+    
+    check.instance("wave", wave, TravellingWave, "a stickslip.brake.TravellingWave")
     fl, starts, r = wave._flows(), wave._starts, wave._scaling.root_gamma
     x, wq = _gauss()
     shaft = sliding = ring = ring_abs = 0.0
@@ -114,6 +118,9 @@ def integrate_wave(wave, rtol: float = 1e-11, atol: float = 1e-13, num: int = 50
     ``switching`` (the worst mismatch of a switching condition on the numerical state),
     ``periodicity`` (``|y(after one period) - y(start)|``) and ``zones`` (time order).
     """
+    from .result import TravellingWave
+    
+    check.instance("wave", wave, TravellingWave, "a stickslip.brake.TravellingWave")
     rtol, atol, num = Q.check("rtol", rtol), Q.check("atol", atol), Q.check("points", num, "num")
     fl, starts, m = wave._flows(), wave._starts, len(wave.zones)
     direction = wave.layout.direction

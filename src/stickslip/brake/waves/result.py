@@ -20,6 +20,7 @@ from ...cf import finish
 from ..reduced.params import BrakeParams
 from .boundsco import Layout, passed
 from .zones import KINDS, REVERSE, SEPARATION, SLIP, STICK, Scaling, ZoneFlows
+from ...errors import ParameterError
 
 xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
@@ -37,6 +38,12 @@ REGIMES = {
 
 def regime_name(kinds) -> str:
     """Paper's name of a regime from its zone kinds (order-free)."""
+    try:
+        kinds = frozenset(kinds) if not isinstance(kinds, (str, bytes)) else None
+    except TypeError:
+        kinds = None
+    if kinds is None:
+        raise ParameterError("kinds", kinds, "a collection of zone kinds (" + ", ".join(KINDS) + ")")
     key = frozenset(kinds)
     return REGIMES.get(key, "-".join(k for k in KINDS if k in key))
 

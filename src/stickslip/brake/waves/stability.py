@@ -35,6 +35,7 @@ from ...cf import finish
 from ...quantities import BRAKE as Q
 from ...errors import ParameterError
 from .zones import Scaling
+from ... import validation as check
 
 xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
@@ -142,6 +143,9 @@ def wave_persistence(wave, nodes: int = 512, periods: int = 30, perturbation: fl
     cfl : float
         ``dt sqrt(a) / dtheta`` (``<= 0.5``).
     """
+    from .result import TravellingWave
+    
+    check.instance("wave", wave, TravellingWave, "a stickslip.brake.TravellingWave")
     nodes, periods = Q.check("nodes", nodes), Q.check("periods", periods)
     if nodes % wave.n:
         raise ParameterError("nodes", nodes, f"a multiple of the mode number n = {wave.n}")
