@@ -46,7 +46,7 @@ for _nb in sorted((DOCS.parent / "notebooks").glob("*.ipynb")):
     shutil.copyfile(_nb, NOTEBOOKS / _nb.name)
 nb_execution_mode = "cache"
 nb_execution_cache_path = str(DOCS.parent / "build" / "docs" / "jupyter_cache")
-nb_execution_timeout = 900
+nb_execution_timeout = 300  # seconds per cell: the slowest takes about 30 s on a loaded 2-core machine
 nb_execution_raise_on_error = True
 nb_execution_in_temp = True
 nb_execution_show_tb = True

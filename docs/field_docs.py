@@ -155,12 +155,13 @@ def owner_field(module: str, fullname: str) -> bool:
 
 
 def drop_field_attributes(app, doctree) -> None:
-    """doctree-read: a dataclass field autodoc listed as an attribute (it has a ``#:`` comment) is
-    removed, with its index entry: its comment is in the fields' table."""
+    """doctree-read: a dataclass field autodoc listed as an attribute or a method (it has a ``#:``
+    comment) is removed, with its index entry: its comment is in the fields' table."""
     from sphinx import addnodes
 
     for desc in list(doctree.findall(addnodes.desc)):
-        if desc.get("domain") != "py" or desc.get("objtype") != "attribute" or not desc.children:
+        # a field with a ``#:`` comment is an attribute, or a method when its default is a staticmethod
+        if desc.get("domain") != "py" or desc.get("objtype") not in ("attribute", "method") or not desc.children:
             continue
         sig = desc.children[0]
         if sig.get("module", "").startswith("stickslip") and owner_field(sig["module"], sig.get("fullname", "")):

@@ -84,3 +84,29 @@ def test_the_field_lines_napoleon_writes_go_into_the_table():
     described = field_docs.take_field_lines(lines, {"period", "stable"})
     assert described == {"period": "the period, in seconds", "stable": "whether it is stable"}
     assert lines == ["A run.", "", ":param other: not a field", ""]
+
+
+def test_a_field_autodoc_lists_as_an_attribute_or_a_method_is_dropped_and_a_method_kept():
+    """`RunFormat.scales` is a field with a ``#:`` comment whose default is a staticmethod: autodoc
+    listed it as a method, after the table that has it (the build of issue 44 found it)."""
+    import sys
+
+    from docutils import nodes
+    from sphinx import addnodes
+
+    sys.path.insert(0, str(ROOT / "docs"))
+    try:
+        import field_docs
+    finally:
+        sys.path.remove(str(ROOT / "docs"))
+    page = nodes.section()
+    for objtype, fullname in [("method", "RunFormat.scales"), ("attribute", "RunFormat.notes"),
+                              ("method", "RunFormat.not_a_field"), ("attribute", "ExplicitScheme.PARAMS")]:
+        page += addnodes.index(entries=[])
+        desc = addnodes.desc(domain="py", objtype=objtype)
+        desc += addnodes.desc_signature(module="stickslip.contact", fullname=fullname)
+        page += desc
+    field_docs.drop_field_attributes(None, page)
+    kept = [d.children[0]["fullname"] for d in page.findall(addnodes.desc)]
+    assert kept == ["RunFormat.not_a_field", "ExplicitScheme.PARAMS"]
+    assert len(list(page.findall(addnodes.index))) == 2  # their index entries went with them
