@@ -12,8 +12,9 @@ mapped onto each slave segment by projection along the segment's normal,
 
 computed exactly (the overlap of every pair of segments, 2-point Gauss: the integrands are
 quadratic). Quadratic cells (curved 3-node segments, on either side) have quadratic dual
-multipliers and their own integration (`stickslip.fem.mortar2`). Why mortar and not node-to-segment: a uniform pressure passes a non-matching
-interface exactly (the contact patch test), which one-pass node-to-segment fails. Why dual
+multipliers and their own integration (`stickslip.fem.mortar2`). Why mortar and not
+node-to-segment: a uniform pressure passes a non-matching interface exactly (the contact
+patch test), which one-pass node-to-segment fails. Why dual
 multipliers: ``D`` is diagonal, so the contact conditions are node by node (``D_jj lambda_j``
 is the node's normal force) as the rigid-surface contact's are, and a stiff partner gives
 exactly its active sets (standard multipliers oscillate at the line's ends and lift a
@@ -80,8 +81,8 @@ xr = lazy.load("xarray")  # imported on first use: commands that make no dataset
 
 log = logging.getLogger("stickslip.fem")
 
-__all__ = ["Mortar", "PairProblem", "PairSteady", "Rotation", "Translation", "mortar", "sliding", "steady_pair", "facets",
-           "FACETS"]
+__all__ = ["Mortar", "PairProblem", "PairSteady", "Rotation", "Translation", "mortar", "sliding", "steady_pair",
+           "facets", "FACETS"]
 
 GAUSS = (0.5 - 0.5 / math.sqrt(3.0), 0.5 + 0.5 / math.sqrt(3.0))
 #: Steady sliding warns where the master's facets deviate from its curve by more than this
@@ -688,8 +689,8 @@ def _facets(problem: PairProblem, active: np.ndarray, gap: np.ndarray) -> None:
                     "%.2f times the %.3g m of interference the contact carries: the contact pressure alternates "
                     "between zero and about twice its mean from node to node (a segment of length h on a radius R "
                     "deviates by h^2 / (8 R)); refine the partner's mesh along the contact until the deviation is "
-                    "below %.2g of the interference, or mesh it with quadratic cells (curved segments)", problem.master_group, deviation, deviation / overlap,
-                    overlap, FACETS)
+                    "below %.2g of the interference, or mesh it with quadratic cells (curved segments)",
+                    problem.master_group, deviation, deviation / overlap, overlap, FACETS)
 
 
 def _solve_pair(K, F, G_A, B_A, scale, rhs):
