@@ -227,7 +227,7 @@ def config_cases() -> list[Case]:
                         make={"p.toml": pad.replace("friction = 0.5", f"friction = {value}")}))
         for key in ("normal_force", "surface_speed"):
             out.append(Case("subnormal in a config", ["system", "stability", "{file:s.toml}", "--json"],
-                            "system file", make={"s.toml": _system_with(system, key, value)}))
+                            f"contact[0].{key}", make={"s.toml": _system_with(system, key, value)}))  # the file's key
     return out
 
 

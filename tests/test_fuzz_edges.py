@@ -254,6 +254,14 @@ def test_an_option_given_without_the_one_it_needs_is_refused(args, name, tmp_pat
     assert list(tmp_path.iterdir()) == []
 
 
+def test_a_window_no_run_can_fill_is_refused_before_the_run(tmp_path, capsys):
+    """fem run --window 1e-300 integrated, wrote the run, then refused the window (found by
+    tests/fuzz_report.py as a late refusal)."""
+    refused(capsys, ["fem", "run", example_config(), "--transits", "2", "--out", str(tmp_path / "g.nc"), "--window",
+                     "1e-300"], "--window = 1e-300", ">= 0.0625 transits")
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_first_lyapunov_coefficient_and_run_sweep_check_their_arguments(tmp_path):
     """Both had no input checks: a number for the field gave TypeError, NaN in x0 went to
     numpy's eig (LinAlgError), a number for the point function went to the workers."""

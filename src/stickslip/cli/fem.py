@@ -43,6 +43,9 @@ StartOpt = Annotated[Start, typer.Option("--start", help=(
     "stick: the preload moving with a flat surface (the 1-DOF oscillator's stick segment)."))]
 
 
+#: Samples per transit of `fem run` (`stickslip.fem.integrate_body`, `integrate_pair`): its tail's
+#: snapshots are at most this dense, so a shorter --window than 2 samples never holds 3 of them.
+DENSEST = 32
 Set = Annotated[Optional[list[str]], typer.Option("--set", help=(
     "Replace a number of the config for this run: KEY=VALUE, the key as the config writes it (contact.friction, "
     "material[1].young) or its last part when that is one key (friction); repeatable."))]
@@ -236,6 +239,9 @@ def run(config: Config,
     if window is not None and not (math.isfinite(window) and 0.0 < window <= transits):
         raise ParameterError("--window", window, f"in (0, {transits:g}] transits (at most --transits)",
                              also=("--transits",))
+    if window is not None and window < 2.0 / DENSEST:  # no run can hold 3 snapshots in it: said before the run
+        raise ParameterError("--window", window, f">= {2.0 / DENSEST:g} transits (3 snapshots at the densest "
+                             f"sampling of a run, {DENSEST} a transit)")
     status.phase("reading the config and the mesh")
     cfg = _problem(config, set_)
     if cfg.partner is not None:
