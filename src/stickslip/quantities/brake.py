@@ -56,6 +56,8 @@ BRAKE = Domain("brake", units="the paper's: time Omega t, lengths in R, traction
     Q("periods", "1", "wave periods of the persistence run", "[1, 100000]", integer=True),
     Q("perturbation", "1", "relative perturbation of the wave", "[0, 1]"),
     Q("cfl", "1", "Courant number of the persistence run", "(0, 0.5]"),
+    Q("max_iter", "1", "most returns of the discrete ring's node-shift map (iterations and Newton steps) while its "
+      "wave is looked for", "[1, 1e6]", integer=True),
     Q("spectrum_nodes", "1", "nodes of the discrete ring whose wave's multipliers are computed", "[8, 1024]",
       integer=True, why="dense matrices of twice the nodes: 512 nodes take minutes"),
     Q("penalty", "1", "contact penalty of the flutter grid", "(0, 1e12]"),

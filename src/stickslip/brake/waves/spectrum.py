@@ -209,7 +209,7 @@ def wave_spectrum(wave, nodes: int = 128, tol: float = 1e-10, max_iter: int = 20
     multipliers of its node-shift map; ``max_iter`` returns of the map at most (iterations and
     Newton steps: a marginal wave near a grazing contact may take dozens, a minute each at 128 nodes)."""
     nodes, tol = _checked(wave, nodes), SYSTEM_Q.check("tol", tol)
-    max_iter = SYSTEM_Q.check("max_iter", max_iter)
+    max_iter = Q.check("max_iter", max_iter)
     separates = any(z.kind == SEPARATION for z in wave.zones)
     if not separates and not any(z.kind == STICK for z in wave.zones):
         raise ParameterError("wave", wave.structure, "a wave with a stick zone (its onset is the map's section) or "
