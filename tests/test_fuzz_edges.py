@@ -288,6 +288,15 @@ def test_first_lyapunov_coefficient_and_run_sweep_check_their_arguments(tmp_path
     assert list(tmp_path.iterdir()) == []
 
 
+def test_the_shape_integrals_refuse_a_ratio_whose_square_overflows():
+    """xi = 1e300 gave NaN integrals without a word (found by tests/fuzz_report.py)."""
+    from stickslip.brake import shape_integrals
+
+    with pytest.raises(ParameterError, match=r"in \(1, 1e150\]") as err:
+        shape_integrals([2.0, 1e300])
+    assert err.value.name == "xi" and all(v > 0 for v in shape_integrals([1.5, 1e150])[0])
+
+
 #: A sample of the public callables for the fast set (the slow set walks them all).
 SAMPLE = ["stickslip.oscillator.limit_cycle", "stickslip.oscillator.simulate", "stickslip.oscillator.hopf_points",
           "stickslip.brake.transit_time", "stickslip.brake.shape_integrals", "stickslip.brake.ring.initial_from_wave",

@@ -44,8 +44,9 @@ __all__ = ["ReducedCoefficients", "coefficients", "shape_integrals", "coupling",
 def shape_integrals(xi):
     """``(A, B, C1, C2)`` of [13] (vectorised over ``xi > 1``; all positive)."""
     xi = check.finite_array("xi", xi)
-    if (xi <= 1.0).any():
-        raise ParameterError("xi", xi.tolist() if xi.size <= 8 else f"{xi.size} values", "> 1 (outer over inner radius)")
+    if (xi <= 1.0).any() or (xi > 1e150).any():  # beyond, xi^2 overflows
+        raise ParameterError("xi", xi.tolist() if xi.size <= 8 else f"{xi.size} values", "in (1, 1e150] (outer over "
+                             "inner radius)")
     xi = np.asarray(xi, dtype=float)
     e = xi**2 - 1.0
     ell = (1.0 + e) * np.log1p(e) / e  # = 2 xi^2 ln(xi) / (xi^2 - 1)
