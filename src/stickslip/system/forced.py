@@ -145,10 +145,22 @@ def _run(system: System, z: np.ndarray, states: tuple, horizon: float, samples: 
 
 
 def _newton_step(system: System, run: SystemRun, residual: np.ndarray, states: tuple) -> np.ndarray:
-    """``d`` on the stick of ``states`` with ``(P' - I) d = -r`` there (least squares: singular at a
-    fold, or where a contact sticks through the period anywhere)."""
+    """``d`` on the stick of ``states`` with ``(P' - I) d = -r`` there, by least squares. Where it is
+    singular (a multiplier within `NEUTRAL` of 1: a contact stuck through the period, anywhere), the
+    step along that family of responses is the one that moves the sticking contacts least, as a slow
+    change of the force leaves them (the shortest step moved them with the rest: along a branch the
+    stuck block of examples/friction_damper drifted a third of the structure's change each step, and
+    reached its stick limit early)."""
     Q, R = _on_stick(system, run, states)
-    return Q @ np.linalg.lstsq(R - np.eye(R.shape[0]), -Q.T @ residual, rcond=None)[0]
+    U, s, Vt = np.linalg.svd(R - np.eye(R.shape[0]))
+    keep = s > NEUTRAL * max(1.0, s[0])
+    d = Vt[keep].T @ ((U[:, keep].T @ (-Q.T @ residual)) / s[keep])
+    family, n = Vt[~keep].T, system.dofs
+    held = np.array([np.concatenate([c.direction, np.zeros(n)]) for c, st in zip(system.contacts, states)
+                     if st == 0]).reshape(-1, 2 * n) @ Q  # each sticking contact's position along its direction
+    if family.shape[1] and held.shape[0]:
+        d = d - family @ np.linalg.lstsq(held @ family, held @ d, rcond=None)[0]
+    return Q @ d
 
 
 def _sizes(system: System, run: SystemRun) -> np.ndarray:
