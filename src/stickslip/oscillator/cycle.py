@@ -51,7 +51,7 @@ class ReturnMap:
 def return_map(engine: Engine, x: float) -> ReturnMap:
     """``P(x)`` and ``P'(x)`` on the section ``v = 0`` (upward)."""
     check.instance("engine", engine, Engine, "a stickslip.oscillator.Engine")
-    x = check.finite("x", x)
+    x = Q.check("x0", x, "x")  # a start on the section
     traj = engine.run(x, 0.0, return_horizon(engine.osc), section=0.0)
     if traj.status != 1:
         reason = traj.message if traj.status < 0 else "the orbit settles without returning"

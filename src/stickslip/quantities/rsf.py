@@ -13,6 +13,8 @@ _LOG_WHY = "the law's logarithms: beyond it a slip rate of the model is further 
 
 RSF = Domain("rsf", units="SI, per unit area of the interface", quantities=[
     # parameters of the law
+    Q("lyapunov_step", "1", "difference step of the first Lyapunov coefficient, in the units of the state",
+      "(0, 1e6]"),
     Q("a", "1", "direct-effect parameter a of rate-and-state friction", "[1e-8, 1]", symbol="a",
       why="a <= 0 has no instantaneous strengthening (the slip rate is not determined by the stress); measured "
           "values are 1e-4 to 1e-1, and below 1e-8 the slip rate's response to stress overflows"),

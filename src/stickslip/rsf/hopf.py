@@ -24,6 +24,7 @@ import numpy as np
 
 from .. import validation as check
 from ..errors import NoSolutionError, ParameterError
+from ..quantities import RSF as Q
 from ..results import Result
 from .slider import SpringSlider, complex_jacobian, directional
 from .stability import linear_stability
@@ -81,7 +82,7 @@ def first_lyapunov_coefficient(field: Callable, x0, step: float = 1e-4) -> tuple
     x0 = check.finite_array("x0", x0, ndim=1)
     if x0.size < 2:
         raise ParameterError("x0", x0.tolist(), "a state of at least 2 variables (a Hopf pair needs two)")
-    step = check.positive("step", step)
+    step = Q.check("lyapunov_step", step, "step")
     try:
         value = np.asarray(field(x0.astype(complex)))
     except TypeError as err:
