@@ -85,7 +85,7 @@ _CONFIG: list[str] = []
 
 
 #: A status line of a long job without a terminal (`stickslip.cli.status`): a loop's progress, or the phase.
-_PROGRESS = re.compile(r"^[\w .-]+: (\S+ of \S+ done(, about .+ left)?|.+, [\d.]+ (s|min|h) so far"
+_PROGRESS = re.compile(r"^[\w .-]+: (\S+ of \S+ done(, [\d.]+ (s|min|h) so far)?(, about .+ left)?|.+, [\d.]+ (s|min|h) so far"
                        r"|started \(figure \d+ of \d+, .+ elapsed\): .+"  # reproduce's figures
                        r"|done in [\d.]+ s( \(from its checkpoint\))?: (?P<n>\d+) of (?P=n) checks pass)$")
 

@@ -5,7 +5,8 @@ every `STATUS_SECONDS` it writes one line on stderr saying what the command is d
 how long, or, while a loop reports its progress (`progress`), how far it is and the time left::
 
     fem run: steady sliding, 2 min so far
-    general body: 6.1 of 20 done, about 3 min left
+    general body: 6.1 of 20 done, 2 min so far, about 3 min left
+    branch points: 12 of 10000 done, 60 s so far, about 15.1 h left
 
 A command that ends within `STATUS_SECONDS` writes none. On a terminal the commands show rich's
 progress bars instead (`stickslip.cli.common.progress_bar`), and no heartbeat runs.
@@ -80,7 +81,7 @@ class Heartbeat:
                 label, t0, d0, done, total, _ = self._loop
                 rate = (done - d0) / (now - t0) if done > d0 and now > t0 else None
                 left = f", about {duration((total - done) / rate)} left" if rate else ""
-                return f"{label}: {min(done, total):.6g} of {total:.6g} done{left}"
+                return f"{label}: {min(done, total):.6g} of {total:.6g} done, {duration(now - t0)} so far{left}"
             return f"{self.command}: {self._phase}, {duration(now - self._since)} so far"
 
     def _write(self, text: str) -> None:

@@ -12,7 +12,7 @@ import typer
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import COMMON, SYSTEM as Q
 from .helptext import Typer
-from .common import Replace, declared, emit, output_path, overwrite_needs, write_netcdf
+from .common import Replace, declared, emit, output_path, overwrite_needs, progress_bar, write_netcdf
 
 _emit = functools.partial(emit, model="system")
 
@@ -223,9 +223,10 @@ def continue_cmd(file: File,
         if psi0 is not None and not is_rate_state(first):
             raise ParameterError("--psi0", psi0, "left out: it is the state of rate-and-state contacts, and this "
                                  "system has none")
-        branch = continue_system(build, start, stop, points=points, x0=_numbers("--x0", x0, n),
-                                 v0=_numbers("--v0", v0, n), transient=transient, tol=tol, parameter=parameter,
-                                 periods=periods, psi0=_psi(psi0, first))
+        with progress_bar("branch points") as tick:  # without a terminal: the heartbeat's time left
+            branch = continue_system(build, start, stop, points=points, x0=_numbers("--x0", x0, n),
+                                     v0=_numbers("--v0", v0, n), transient=transient, tol=tol, parameter=parameter,
+                                     periods=periods, psi0=_psi(psi0, first), progress=tick)
     _emit(branch.to_dict(), json, "continuation")
     if out is not None:
         write_netcdf(branch.to_xarray(), out)

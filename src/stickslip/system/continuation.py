@@ -145,14 +145,15 @@ def _solve(build, p, start, horizon, tol):
 
 def continue_system(build: Callable[[float], System], start: float, stop: float, *, points: int = 41, x0=None,
                     v0=None, transient: float | None = None, tol: float | None = None, parameter: str = "parameter",
-                    periods: int = 1, psi0=None) -> SystemBranch:
+                    periods: int = 1, psi0=None, progress: Callable[[int, int], None] | None = None) -> SystemBranch:
     """Follow the limit cycle of ``build(start)`` (the one the motion from ``x0``, ``v0`` settles on
     after ``transient`` seconds, default 100, as `limit_cycle` finds it) over ``points`` equally
     spaced values to ``stop`` (see the module), each to ``tol`` (default 1e-10). ``parameter`` names
     the parameter in messages and results. A system with a periodic force: its periodic response
     over ``periods`` forcing periods (`forced_response`). A system with rate-and-state contacts: its
     smooth cycles (`stickslip.system.rate_state_branch`; ``psi0`` their states at the start, the
-    transient and ``tol`` by default as `rate_state_cycle` has them)."""
+    transient and ``tol`` by default as `rate_state_cycle` has them). ``progress(done, points)``, if
+    given, is called as each value is done (a status line's time left on a long branch)."""
     if not callable(build):
         raise ParameterError("build", build, "a function of the parameter's value returning a System")
     start, stop = Q.check("parameter_value", start, "start"), Q.check("parameter_value", stop, "stop")
@@ -173,7 +174,7 @@ def continue_system(build: Callable[[float], System], start: float, stop: float,
             raise ParameterError("periods", periods, "1 for a system with rate-and-state contacts (its cycles are "
                                  "unforced)")
         return continue_rate_state(build, start, stop, points=points, x0=x0, v0=v0, psi0=psi0, transient=transient,
-                                   tol=1e-7 if tol is None else tol, parameter=parameter)
+                                   tol=1e-7 if tol is None else tol, parameter=parameter, progress=progress)
     if psi0 is not None:
         raise ParameterError("psi0", psi0, "left out: it is the state of rate-and-state contacts, and this system "
                              "has none")
@@ -192,6 +193,8 @@ def continue_system(build: Callable[[float], System], start: float, stop: float,
     here = _solve(build, start, state, 3.0 * cycle.period, tol)
     values = np.linspace(start, stop, points)
     rows, events, stopped = [(start, *here)], [], f"reached stop = {stop:g}"
+    tick = progress or (lambda done, total: None)
+    tick(1, points)
     for p in values[1:]:
         prev = rows[-1]
         guess = (prev[2], prev[3], state[2])
@@ -230,6 +233,7 @@ def continue_system(build: Callable[[float], System], start: float, stop: float,
             events.append({"change": "stability", "value": value, "before": "stable" if was else "unstable",
                            "after": "unstable" if was else "stable", "crossing": crossing})
         rows.append((p, *now))
+        tick(len(rows), points)
     width = max(1, min(8, 2 * n - (0 if forced else 1)))
     mult = np.full((len(rows), width), np.nan)
     for i, r in enumerate(rows):

@@ -65,7 +65,7 @@ def _settled(system: System, eq: RateStateEquations, prev: tuple, rtol: float, t
 
 def continue_rate_state(build: Callable[[float], System], start: float, stop: float, *, points: int = 41,
                         x0=None, v0=None, psi0=None, transient: float | None = None, tol: float = 1e-7,
-                        parameter: str = "parameter", rtol: float = 1e-9):
+                        parameter: str = "parameter", rtol: float = 1e-9, progress=None):
     """The `SystemBranch` of the limit cycles of ``build(p)`` (rate-and-state contacts at every
     contact) for ``points`` values from ``start`` to ``stop`` (see the module); the cycle at ``start``
     the one the motion from ``(x0, v0, psi0)`` settles on after ``transient`` (`rate_state_cycle`).
@@ -80,6 +80,8 @@ def continue_rate_state(build: Callable[[float], System], start: float, stop: fl
     events, stopped = [], f"reached stop = {stop:g}"
     values = list(np.linspace(start, stop, points)[1:])
     targets, halvings = list(values), 0  # (halvings of the step to the next of the values)
+    tick = progress or (lambda done, total: None)
+    tick(1, points)
     while targets:
         prev, p = rows[-1], float(targets[0])
         try:
@@ -123,6 +125,7 @@ def continue_rate_state(build: Callable[[float], System], start: float, stop: fl
         size = new_size
         if targets.pop(0) in values:  # one of the values reached: its steps may be halved anew
             halvings = 0
+            tick(points - len(targets), points)
     n = first.dofs
     width = max(1, min(8, min(r[3].size for r in rows)))
     mult = np.array([np.abs(r[3][:width]) for r in rows])
