@@ -3,14 +3,22 @@
 Every plot function reads an `xarray.Dataset` (a result's ``to_xarray()`` or a figure's
 data), draws on a `matplotlib.figure.Figure` it is given or creates, and returns it.
 Nothing here imports `matplotlib.pyplot` or switches the backend, so a Jupyter user keeps
-theirs; `save` writes a figure to a file.
+theirs; `save` writes a figure to a file. Every public function checks its arguments at entry
+(a `ParameterError` naming the argument, its value and what it may be).
 """
 
 from __future__ import annotations
 
+import os
+import sys
+
 import numpy as np
-from matplotlib.figure import Figure
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure, FigureBase
 from matplotlib.lines import Line2D
+
+from .errors import ParameterError
+from .validation import count, finite_array, in_range, instance, positive, real_array
 
 __all__ = ["new_figure", "save", "modal_line", "oscillator_phase", "state_image", "state_legend", "zone_legend",
            "mode_handles", "legend_beside", "legend_above", "wrap", "label_curves", "plot_cycle", "plot_trajectory",
@@ -28,9 +36,75 @@ PARAMETER_UNITS = {"mass": "kg", "stiffness": "N/m", "normal_force": "N", "belt_
                    "fs": "1", "fd": "1", "vs": "m/s", "tau": "s/m"}
 
 
+# --- argument checks -------------------------------------------------------------------------
+def _given(value):
+    """``value`` for a message: itself when short, else its type."""
+    return value if len(repr(value)) <= 60 else f"<{type(value).__name__}>"
+
+
+def _axes(name: str, ax):
+    return instance(name, ax, Axes, "a matplotlib Axes (one of the axes of a Figure)")
+
+
+def _figure(name: str, fig, optional: bool = True, sub: bool = True):
+    if fig is None and optional:
+        return None
+    kinds = "a matplotlib Figure or SubFigure" if sub else "a matplotlib Figure (not a SubFigure)"
+    return instance(name, fig, FigureBase if sub else Figure, kinds + (" or None (a new one)" if optional else ""))
+
+
+def _text(name: str, value, optional: bool = False):
+    if value is None and optional:
+        return None
+    return instance(name, value, str, "a text (str)" + (" or None" if optional else ""))
+
+
+def _line(name: str, value):
+    """A curve's coordinates: a 1-D array of real numbers (NaN breaks the curve)."""
+    array = real_array(name, value)
+    if array.ndim != 1:
+        raise ParameterError(name, _given(value), f"a 1-D array of real numbers (this one has {array.ndim} "
+                             "dimensions)")
+    return array
+
+
+def _dataset(name: str, ds, what: str, needed: tuple[str, ...]):
+    """``ds`` if it is an `xarray.Dataset` holding the numeric variables ``needed``."""
+    xr = sys.modules.get("xarray")  # a dataset has loaded xarray: anything else is refused without it
+    if xr is None or not isinstance(ds, xr.Dataset):
+        raise ParameterError(name, _given(ds), f"an xarray.Dataset of {what}")
+    missing = [v for v in needed if v not in ds.variables or ds[v].dtype.kind not in "iufb"]
+    if missing:
+        has = ", ".join(sorted(map(str, ds.variables))) or "no variables"
+        raise ParameterError(name, f"<Dataset of {has}>", f"an xarray.Dataset of {what}, with the numeric "
+                             f"variables {', '.join(needed)} ({', '.join(missing)} missing or not numbers)")
+    return ds
+
+
+def _keys(name: str, values, known, optional: bool = False):
+    """``values``: an iterable of keys of ``known`` (a `ParameterError` naming the first other)."""
+    if values is None and optional:
+        return None
+    if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
+        raise ParameterError(name, _given(values), f"a list of some of {list(known)}")
+    values = list(values)
+    for v in values:
+        if not isinstance(v, (str, int, np.integer)) or isinstance(v, bool) or v not in known:
+            raise ParameterError(name, _given(values), f"a list of some of {list(known)} ({v!r} is none of them)")
+    return values
+
+
+OSCILLATOR = ("t", "x", "v", "mode")
+
+
 def new_figure(fig: Figure | None = None, ncols: int = 1, nrows: int = 1, size=(6.4, 4.8)):
     """``(fig, axes)``: ``ncols x nrows`` axes (a flat list) on ``fig``, or on a new `Figure`
     of ``size`` per panel (inches)."""
+    _figure("fig", fig)
+    ncols, nrows = count("ncols", ncols, 100, "panels across"), count("nrows", nrows, 100, "panels down")
+    size = finite_array("size", size, 1)
+    if size.size != 2 or (size <= 0).any():
+        raise ParameterError("size", _given(size.tolist()), "(width, height) of a panel in inches, both > 0")
     if fig is None:
         fig = Figure(figsize=(size[0] * ncols, size[1] * nrows))
     axes = fig.subplots(nrows, ncols, squeeze=False)
@@ -40,6 +114,16 @@ def new_figure(fig: Figure | None = None, ncols: int = 1, nrows: int = 1, size=(
 def save(fig: Figure, path, dpi: int = 120) -> list[str]:
     """Lay out and write ``fig`` (the format from the suffix of ``path``); return its
     `legibility_problems` (empty: legible)."""
+    _figure("fig", fig, optional=False, sub=False)
+    if not isinstance(path, (str, os.PathLike)) and not hasattr(path, "write"):
+        raise ParameterError("path", _given(path), "a file name (str or os.PathLike) or a file opened for writing")
+    if isinstance(path, (str, os.PathLike)):
+        suffix = os.path.splitext(os.fspath(path))[1].lstrip(".").lower()
+        formats = fig.canvas.get_supported_filetypes()
+        if suffix not in formats:
+            raise ParameterError("path", _given(path), f"a file name ending in one of .{', .'.join(sorted(formats))} "
+                                 "(the format)")
+    positive("dpi", dpi)
     fig.tight_layout()
     problems = legibility_problems(fig)
     fig.savefig(path, dpi=dpi)
@@ -55,13 +139,17 @@ def lay_out(fig) -> None:
 
 def legend_beside(ax, *args, **kwargs):
     """A legend to the right of ``ax``, off its data (the layout makes room for it)."""
+    _axes("ax", ax)
     return ax.legend(*args, **{"fontsize": 8, "loc": "upper left", "bbox_to_anchor": (1.02, 1.0),
                                "borderaxespad": 0.0, **kwargs})
 
 
 def legend_above(ax, *args, **kwargs):
     """A legend over ``ax`` in one row (by default), off its data: ``ax`` has no title then."""
+    _axes("ax", ax)
     handles = args[0] if args else kwargs.get("handles")
+    if handles is not None and not isinstance(handles, (list, tuple)):
+        raise ParameterError("handles", _given(handles), "a list of legend handles (artists)")
     ncol = len(handles) if handles is not None else len(ax.get_legend_handles_labels()[0])
     return ax.legend(*args, **{"fontsize": 8, "loc": "lower center", "bbox_to_anchor": (0.5, 1.02),
                                "borderaxespad": 0.0, "ncol": max(ncol, 1), **kwargs})
@@ -71,6 +159,8 @@ def wrap(text: str, width: int = 90) -> str:
     """``text`` broken into lines of at most ``width`` characters (titles that must fit the figure)."""
     import textwrap
 
+    _text("text", text)
+    width = count("width", width, 10**6, "characters a line")
     return "\n".join(textwrap.fill(line, width) for line in text.split("\n"))
 
 
@@ -82,6 +172,21 @@ def label_curves(ax, curves, labels, fontsize: float = 8.0, shrink: float = 0.8)
     no point of any curve, no other label and stays inside the axes is taken, else the least
     covered. Call it after the limits are final. Text sizes are estimated before the layout,
     on axes ``shrink`` times their current size (a margin for the layout to come)."""
+    _axes("ax", ax)
+    if not isinstance(curves, (list, tuple)):
+        raise ParameterError("curves", _given(curves), "a list of (x, y) pairs of 1-D arrays")
+    for k, curve in enumerate(curves):
+        if not isinstance(curve, (list, tuple)) or len(curve) != 2:
+            raise ParameterError(f"curves[{k}]", _given(curve), "an (x, y) pair of 1-D arrays")
+        x, y = _line(f"curves[{k}][0]", curve[0]), _line(f"curves[{k}][1]", curve[1])
+        if x.size != y.size or not (np.isfinite(x) & np.isfinite(y)).any():
+            raise ParameterError(f"curves[{k}]", f"<x of {x.size}, y of {y.size} points>", "x and y of the same "
+                                 "length with at least one point of finite x and y")
+    if not isinstance(labels, (list, tuple)) or len(labels) != len(curves):
+        raise ParameterError("labels", _given(labels), f"a list of {len(curves)} texts, one a curve")
+    for k, label in enumerate(labels):
+        _text(f"labels[{k}]", label)
+    fontsize, shrink = positive("fontsize", fontsize), in_range("shrink", shrink, 0.0, 1.0, lo_open=True)
     fig = ax.figure
     pos = ax.get_position()
     width, height = pos.width * fig.get_figwidth() * shrink, pos.height * fig.get_figheight() * shrink
@@ -132,13 +237,21 @@ def label_curves(ax, curves, labels, fontsize: float = 8.0, shrink: float = 0.8)
 
 def mode_handles(modes=(0, 1, -1)) -> list:
     """Legend handles of the contact-mode colours of `modal_line`."""
+    modes = _keys("modes", modes, MODE_COLOURS)
     return [Line2D([], [], color=MODE_COLOURS[m], label=MODE_LABELS[m]) for m in modes]
 
 
 def modal_line(ax, x, y, mode, lw=1.2, alpha=1.0):
     """A curve coloured by contact mode (stick, slip, reverse slip)."""
-    x, y, mode = np.asarray(x), np.asarray(y), np.asarray(mode)
+    _axes("ax", ax)
+    x, y, mode = _line("x", x), _line("y", y), _line("mode", mode)
+    if not x.size == y.size == mode.size:
+        raise ParameterError("y", f"<{y.size} points>", f"as many points as x ({x.size}), and mode as many "
+                             f"({mode.size})")
+    lw, alpha = positive("lw", lw), in_range("alpha", alpha, 0.0, 1.0)
     ok = np.isfinite(x) & np.isfinite(y)
+    if not np.isfinite(mode[ok]).all():
+        raise ParameterError("mode", "<NaN where x and y are numbers>", "a contact mode (-1, 0, 1) at every point")
     x, y, mode = x[ok], y[ok], mode[ok]
     if x.size == 0:
         return
@@ -152,6 +265,9 @@ def modal_line(ax, x, y, mode, lw=1.2, alpha=1.0):
 
 def oscillator_phase(ax, ds, title: str | None = None) -> None:
     """Phase portrait ``(x, v)`` of a simulated or periodic trajectory dataset."""
+    _axes("ax", ax)
+    _dataset("ds", ds, "a trajectory (Trajectory or LimitCycle .to_xarray())", OSCILLATOR[1:])
+    _text("title", title, optional=True)
     modal_line(ax, ds["x"].values, ds["v"].values, ds["mode"].values)
     ax.axhline(ds.attrs.get("belt_speed_m_per_s", np.nan), color="0.6", lw=0.6, ls=":")
     ax.set_xlabel("x [m]")
@@ -167,6 +283,15 @@ def state_image(ax, state, title: str = "", extent=(0, 2 * np.pi, 0, 2)):
     (explain its colours with `state_legend`)."""
     from matplotlib.colors import ListedColormap
 
+    _axes("ax", ax)
+    array = real_array("state", state)
+    if array.ndim != 2 or array.size == 0:
+        raise ParameterError("state", _given(state), "a 2-D array of node states 0 to 3 (rows: times, columns: "
+                             "nodes)")
+    _text("title", title)
+    extent = finite_array("extent", extent, 1)
+    if extent.size != 4:
+        raise ParameterError("extent", _given(extent.tolist()), "(left, right, bottom, top): 4 finite numbers")
     im = ax.imshow(state, aspect="auto", origin="lower", cmap=ListedColormap(STATE_COLOURS), vmin=-0.5, vmax=3.5,
                    interpolation="nearest", extent=extent)
     if title:
@@ -179,6 +304,7 @@ def state_legend(ax, **kwargs) -> None:
     """A legend of the four contact-node states (by default beside ``ax``, off its image)."""
     from matplotlib.patches import Patch
 
+    _axes("ax", ax)
     names = ("stick", "slip", "reverse slip", "separation")
     handles = [Patch(facecolor=c, edgecolor="0.5", lw=0.5, label=n) for c, n in zip(STATE_COLOURS, names)]
     legend_beside(ax, handles=handles, **{"title": "node state", "title_fontsize": 8, **kwargs})
@@ -187,6 +313,9 @@ def state_legend(ax, **kwargs) -> None:
 def zone_legend(ax, kinds=None, marker=None, **kwargs) -> None:
     """A legend of the zone kinds of a travelling wave (``kinds``: those shown, default all;
     ``marker``: zones drawn as markers rather than lines)."""
+    _axes("ax", ax)
+    kinds = _keys("kinds", kinds, ZONE_COLOURS, optional=True)
+    _text("marker", marker, optional=True)
     kinds = [k for k in ZONE_COLOURS if kinds is None or k in kinds]
     style = {"ls": "none", "marker": marker, "ms": 5} if marker else {}
     ax.legend([Line2D([], [], color=ZONE_COLOURS[k], **style) for k in kinds], kinds,
@@ -195,6 +324,7 @@ def zone_legend(ax, kinds=None, marker=None, **kwargs) -> None:
 
 def plot_cycle(ds, fig: Figure | None = None) -> Figure:
     """A limit cycle (`LimitCycle.to_xarray`): phase portrait and ``x(t)``."""
+    _dataset("ds", ds, "a limit cycle (LimitCycle.to_xarray())", OSCILLATOR)
     fig, (ax1, ax2) = new_figure(fig, 2, size=(5.5, 4.2))
     oscillator_phase(ax1, ds, "limit cycle")
     ax2.plot(ds["t"], ds["x"], lw=1)
@@ -205,6 +335,7 @@ def plot_cycle(ds, fig: Figure | None = None) -> Figure:
 
 def plot_trajectory(ds, fig: Figure | None = None) -> Figure:
     """A simulated trajectory (`Trajectory.to_xarray`): phase portrait and ``x(t)`` by contact mode."""
+    _dataset("ds", ds, "a trajectory (Trajectory.to_xarray())", OSCILLATOR)
     fig, (ax1, ax2) = new_figure(fig, 2, size=(5.5, 4.2))
     oscillator_phase(ax1, ds, "phase portrait")
     modal_line(ax2, ds["t"].values, ds["x"].values, ds["mode"].values)
@@ -215,6 +346,8 @@ def plot_trajectory(ds, fig: Figure | None = None) -> Figure:
 
 def plot_branch(ds, fig: Figure | None = None) -> Figure:
     """A branch of limit cycles (`Branch.to_xarray`): amplitude and period, stable or not."""
+    _dataset("ds", ds, "a branch (Branch.to_xarray())", ("parameter_value", "stable", "amplitude", "period"))
+    _figure("fig", fig)
     fig, axes = new_figure(fig, 2, size=(5.5, 4.2))
     p = ds["parameter_value"].values
     stable = ds["stable"].values.astype(bool)
@@ -234,6 +367,12 @@ def plot_stability_map(ds, fig: Figure | None = None) -> Figure:
     """A CEA sweep with tracked modes (`stickslip.fem.tracking.Tracked.to_xarray`): growth rate
     and frequency of every branch against the swept value, its unstable stretches in red and
     thick, each critical value a circle."""
+    _dataset("ds", ds, "tracked modes (Tracked.to_xarray())", ("value", "growth_rate", "frequency", "growing",
+                                                                "critical", "critical_frequency"))
+    if "branch" not in ds.dims:
+        raise ParameterError("ds", f"<Dataset of dimensions {', '.join(map(str, ds.dims))}>", "tracked modes along "
+                             "a dimension 'branch' (Tracked.to_xarray())")
+    _figure("fig", fig)
     fig, (ax1, ax2) = new_figure(fig, 2, size=(5.5, 5.6))
     x = ds["value"].values
     key = str(ds.attrs.get("swept_key", "value"))
@@ -263,6 +402,21 @@ def plot_oscillator_map(ds, regimes: dict, fig: Figure | None = None) -> Figure:
     """A regime map of the oscillator over its two sweep axes (``regime`` codes named by ``regimes``)."""
     from matplotlib.colors import BoundaryNorm, ListedColormap
 
+    _dataset("ds", ds, "a regime map (codes in a 2-D variable 'regime')", ("regime",))
+    if ds["regime"].ndim != 2:
+        raise ParameterError("ds", f"<Dataset with a {ds['regime'].ndim}-D regime>", "a regime map over two axes "
+                             "(a 2-D variable 'regime')")
+    if not isinstance(regimes, dict) or not regimes:
+        raise ParameterError("regimes", _given(regimes), "a dict of regime codes (integers) to names")
+    for k in regimes:
+        if isinstance(k, bool) or not isinstance(k, (int, np.integer, str)) or not str(k).lstrip("-").isdigit():
+            raise ParameterError("regimes", _given(regimes), f"a dict of regime codes (integers) to names ({k!r} is "
+                                 "no integer)")
+    codes = ds["regime"].values[np.isfinite(ds["regime"].values)]
+    unnamed = sorted(set(int(c) for c in codes) - {int(k) for k in regimes})
+    if unnamed:
+        raise ParameterError("regimes", _given(regimes), f"a name for every code of ds.regime ({unnamed} have none)")
+    _figure("fig", fig)
     fig, (ax,) = new_figure(fig, size=(8.4, 5.2))
     names = [d for d in ds["regime"].dims]
     codes = sorted(int(k) for k in regimes)
@@ -287,6 +441,9 @@ def plot_oscillator_map(ds, regimes: dict, fig: Figure | None = None) -> Figure:
 
 def plot_interface_fields(ds, fig: Figure | None = None) -> Figure:
     """The interface fields of a half-space wave (``StickSlipWave.fields(...).to_xarray()``)."""
+    _dataset("ds", ds, "a half-space wave's fields (StickSlipWave.fields(...).to_xarray())",
+             ("x", "zone", "stress_yy", "stress_xy", "u_xx", "slip_velocity", "material_velocity"))
+    _figure("fig", fig)
     fig = Figure(figsize=(8, 8)) if fig is None else fig
     axes = fig.subplots(3, 1, sharex=True)
     x = ds.x.values
@@ -361,6 +518,9 @@ def legibility_problems(fig: Figure, width_in: float | None = REPORT_WIDTH_IN) -
     """
     import re
 
+    _figure("fig", fig, optional=False, sub=False)
+    if width_in is not None:
+        width_in = positive("width_in", width_in)
     fig.draw_without_rendering()
     scale = 72.0 / fig.dpi  # display pixels -> points
     shrink = min(1.0, width_in / fig.get_figwidth()) if width_in else 1.0

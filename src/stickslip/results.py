@@ -21,6 +21,7 @@ import numpy as np
 import lazy_loader as lazy
 
 from .cf import finish
+from .errors import ParameterError
 from .quantities import lookup
 
 xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
@@ -30,6 +31,11 @@ __all__ = ["Result", "scalars"]
 
 def scalars(data: dict, prefix: str = "") -> list[tuple[str, object]]:
     """``(dotted key, value)`` of the numbers, booleans and short texts of a nested dict."""
+    if not isinstance(data, dict):
+        shown = data if len(repr(data)) <= 60 else f"<{type(data).__name__}>"
+        raise ParameterError("data", shown, "a dict (a result's to_dict())")
+    if not isinstance(prefix, str):
+        raise ParameterError("prefix", prefix, "a text (str) put before every key")
     out = []
     for key, value in data.items():
         name = f"{prefix}{key}"
