@@ -173,8 +173,20 @@ class FakeServer:
                     conn.sendall(b"HTTP/1.1 200 OK\r\nContent-Length: 5\r\n\r\nhello" * 20)
                 conn.close()
             else:
-                self.held = self.held[-50:] + [conn]
-        self.sock.close()
+                while len(self.held) >= 50:  # the oldest closed, not left to the garbage collector
+                    self.held.pop(0).close()
+                self.held.append(conn)
+        self.stop()
+
+    def stop(self) -> None:
+        """Close the held connections and the listening socket (the serving thread ends)."""
+        self.until = 0.0
+        for conn in self.held:
+            with contextlib.suppress(OSError):
+                conn.close()
+        self.held = []
+        with contextlib.suppress(OSError):
+            self.sock.close()
 
 
 def scheduler_cases(servers: dict) -> list[Case]:

@@ -137,12 +137,15 @@ def test_a_scheduler_that_answers_garbage_is_refused_before_the_store(tmp_path):
     from stickslip.sweep import run_sweep
 
     server = FakeServer("garbage", lifetime=60)
-    with time_limit(40):
-        with pytest.raises(ParameterError, match="not as a Dask scheduler") as err:
-            reachable(server.address, "--scheduler")
-        assert err.value.name == "--scheduler" and err.value.value == server.address
-        with pytest.raises(ParameterError, match="not as a Dask scheduler"):
-            run_sweep(_one, {"x": [1.0, 2.0]}, tmp_path / "s.zarr", outputs={"y": "1"}, scheduler=server.address)
+    try:
+        with time_limit(40):
+            with pytest.raises(ParameterError, match="not as a Dask scheduler") as err:
+                reachable(server.address, "--scheduler")
+            assert err.value.name == "--scheduler" and err.value.value == server.address
+            with pytest.raises(ParameterError, match="not as a Dask scheduler"):
+                run_sweep(_one, {"x": [1.0, 2.0]}, tmp_path / "s.zarr", outputs={"y": "1"}, scheduler=server.address)
+    finally:
+        server.stop()  # its sockets closed here, not by the garbage collector in a later test
     assert list(tmp_path.iterdir()) == []
 
 
@@ -158,9 +161,12 @@ def test_a_scheduler_that_never_answers_is_refused_within_the_stated_time(tmp_pa
     server = FakeServer("silent", lifetime=120)
     sweep = tmp_path / "s.toml"
     sweep.write_text(SWEEP_HEAD + SWEEP_FIXED + "fd = 0.3\nfs = 0.5\n[axes]\nbelt_speed = [0.1, 0.2]\n")
-    with time_limit(int(2 * CONNECT_SECONDS) + 20):
-        refused(capsys, ["sweep", str(sweep), "--out", str(tmp_path / "s.zarr"), "--scheduler", server.address],
-                "--scheduler", "not as a Dask scheduler", seconds=int(2 * CONNECT_SECONDS) + 15)
+    try:
+        with time_limit(int(2 * CONNECT_SECONDS) + 20):
+            refused(capsys, ["sweep", str(sweep), "--out", str(tmp_path / "s.zarr"), "--scheduler", server.address],
+                    "--scheduler", "not as a Dask scheduler", seconds=int(2 * CONNECT_SECONDS) + 15)
+    finally:
+        server.stop()  # the held connections closed here, not by the garbage collector in a later test
     assert not (tmp_path / "s.zarr").exists()
 
 
