@@ -19,6 +19,7 @@ not name the option).
 from __future__ import annotations
 
 import collections
+import contextlib
 import dataclasses
 import json
 import math
@@ -699,3 +700,22 @@ def main() -> None:
 
 if __name__ == "__main__":
     main()
+
+
+class Hang(Exception):
+    """A call that did not answer within `time_limit`."""
+
+
+@contextlib.contextmanager
+def time_limit(seconds: int):
+    """A hang guard, not a timing check: `Hang` after ``seconds`` (a FIFO opened for reading
+    blocks until then)."""
+    def alarm(signum, frame):
+        raise Hang(f"no answer after {seconds} s")
+    old = signal.signal(signal.SIGALRM, alarm)
+    signal.alarm(seconds)
+    try:
+        yield
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, old)

@@ -14,8 +14,6 @@ extreme value at a time, on an otherwise valid and cheap invocation (`fuzz_harne
 
 from __future__ import annotations
 
-import contextlib
-import signal
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -24,6 +22,7 @@ from hypothesis import strategies as st
 from stickslip.cli import run
 
 from .budget import examples
+from .fuzz_harness import time_limit
 from .fuzz_harness import (BASE, EXTREMES, NEVER_NUMBERS, OPTIONS, PATH_OPTIONS, args_for, bad_places,
                            path_args, problems, trial)
 
@@ -32,21 +31,6 @@ def test_every_command_has_a_base_invocation():
     assert {c for c, _ in OPTIONS} <= set(BASE) and len(OPTIONS) > 60
 
 
-class Hang(Exception):
-    pass
-
-
-@contextlib.contextmanager
-def time_limit(seconds):
-    def alarm(signum, frame):
-        raise Hang(f"no answer after {seconds} s")
-    old = signal.signal(signal.SIGALRM, alarm)
-    signal.alarm(seconds)
-    try:
-        yield
-    finally:
-        signal.alarm(0)
-        signal.signal(signal.SIGALRM, old)
 
 
 @pytest.mark.parametrize("command, option", OPTIONS, ids=[f"{c} {o}" for c, o in OPTIONS])

@@ -8,7 +8,6 @@ any work (nothing is written), and raises the package's own errors."""
 
 from __future__ import annotations
 
-import contextlib
 import json
 import os
 import pathlib
@@ -23,27 +22,11 @@ from stickslip.cli import app, run
 from stickslip.cli.common import output_folder, output_path
 from stickslip.errors import NoSolutionError, ParameterError
 
-from .fuzz_harness import SYSTEM_FILE, example_config
+from .fuzz_harness import SYSTEM_FILE, example_config, time_limit
 from .fuzz_report import (APART, SWEEP_FIXED, SWEEP_HEAD, FakeServer, judge_api, public_callables, required,
                           special)
 
 
-class Hang(Exception):
-    pass
-
-
-@contextlib.contextmanager
-def time_limit(seconds: int):
-    """A guard, not a timing check: a FIFO opened for reading blocks until the limit."""
-    def alarm(signum, frame):
-        raise Hang(f"no answer after {seconds} s")
-    old = signal.signal(signal.SIGALRM, alarm)
-    signal.alarm(seconds)
-    try:
-        yield
-    finally:
-        signal.alarm(0)
-        signal.signal(signal.SIGALRM, old)
 
 
 def refused(capsys, args, *words, seconds: int = 30):
