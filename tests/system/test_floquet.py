@@ -127,3 +127,19 @@ def test_a_cycle_scaled_by_its_forces_and_speeds_is_the_scaled_cycle(scale):
     assert np.abs(cycle.x0 / scale - ref.x0).max() <= 1e-8 * np.abs(ref.x0).max()
     assert np.abs(cycle.v0 / scale - ref.v0).max() <= 1e-8 * np.abs(ref.v0).max()
     assert np.abs(np.abs(cycle.multipliers[:3]) - np.abs(ref.multipliers[:3])).max() < 1e-8
+
+
+def test_the_saltation_matrix_maps_the_field_before_onto_the_field_after_and_keeps_the_surface():
+    """The defining properties of ``S = I + (f+ - f-) n^T / (n . f-)`` (the saltation matrix of a transversal crossing):
+    ``S f- = f+`` (a start moved along the flow before the crossing arrives moved along the flow after
+    it), and ``S t = t`` for every ``t`` in the switching surface (``n . t = 0``): the first fails for
+    the transpose, the second for a wrong denominator. Random fields, a random normal."""
+    from stickslip.system.floquet import saltation
+    rng = np.random.default_rng(7)
+    for _ in range(5):
+        f_minus, f_plus, normal = rng.normal(size=(3, 6))
+        S = saltation(f_minus, f_plus, normal)
+        np.testing.assert_allclose(S @ f_minus, f_plus, rtol=1e-12, atol=1e-12)
+        tangent = rng.normal(size=6)
+        tangent -= normal * (normal @ tangent) / (normal @ normal)
+        np.testing.assert_allclose(S @ tangent, tangent, rtol=1e-12, atol=1e-12)

@@ -37,6 +37,7 @@ from ..quantities import SYSTEM as Q
 from .branch import AMPLITUDE_SAMPLES, SystemBranch, parameter_units
 from .config import as_file_keys, system_from_dict
 from .floquet import inside, limit_cycle, monodromy, return_fixed_point, without_own
+from .flow import Flow
 from .forced import extent, forced_response, forcing_period, stroboscopic_fixed_point, stroboscopic_multipliers
 from .model import System
 from .rate_state import integrated
@@ -129,17 +130,18 @@ def _solve(build, p, start, horizon, tol):
     ``(FORCED, periods)``: the periodic response over that many forcing periods (``horizon`` unused)."""
     system = build(p)
     z, states, signature = start
-    if signature[0] == FORCED:
-        period = signature[1] * forcing_period(system)
-        n = system.dofs
-        y, states, run = stroboscopic_fixed_point(system, z[:2 * n], states, period, tol, 50, newton_after=0,
-                                                  near=1.0)
-        z, segments = np.concatenate([y, [1.0]]), run.segments
-        mult = stroboscopic_multipliers(system, run, states)
-    else:
-        period, z, states, segments = return_fixed_point(system, z, states, signature, horizon, tol, 50,
-                                                         newton_after=0)
-        mult = without_own(np.linalg.eigvals(monodromy(system, segments)))
+    with Flow.shared(system):  # its returns, Newton steps and monodromy meet the same contact states
+        if signature[0] == FORCED:
+            period = signature[1] * forcing_period(system)
+            n = system.dofs
+            y, states, run = stroboscopic_fixed_point(system, z[:2 * n], states, period, tol, 50, newton_after=0,
+                                                      near=1.0)
+            z, segments = np.concatenate([y, [1.0]]), run.segments
+            mult = stroboscopic_multipliers(system, run, states)
+        else:
+            period, z, states, segments = return_fixed_point(system, z, states, signature, horizon, tol, 50,
+                                                             newton_after=0)
+            mult = without_own(np.linalg.eigvals(monodromy(system, segments)))
     return period, z, states, _sequence(segments), mult[np.argsort(-np.abs(mult))]
 
 

@@ -24,7 +24,7 @@ from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import SYSTEM as Q
 from ..results import Result
-from .flow import CLOSING, OPEN, STATE_FLAGS, Flow
+from .flow import CLOSING, OPEN, STATE_FLAGS, Flow, shares_flows
 from .model import System
 from .simulate import SystemRun, land, simulate, zero_slip
 from .. import validation as check
@@ -59,7 +59,8 @@ def saltation(f_minus: np.ndarray, f_plus: np.ndarray, normal: np.ndarray, rate:
     return np.eye(f_minus.size) + np.outer(f_plus - f_minus, normal) / rate
 
 
-def jump(system: System, segment, z: np.ndarray, flows: dict, skip: int | None = None) -> tuple:
+def jump(system: System, segment, z: np.ndarray, flows: dict, skip: int | None = None,
+         onto: np.ndarray | None = None) -> tuple:
     """``(S, f)``: the saltation matrix of the events that ended ``segment`` (at its end state
     ``z``) and the field ``f`` after them. Events at the same instant (of contacts a symmetry
     makes switch together) are taken one contact after another, each with its own switching
@@ -68,7 +69,9 @@ def jump(system: System, segment, z: np.ndarray, flows: dict, skip: int | None =
     there without a switching function of its own reaching zero (released because another one
     stuck: the load moves to it) changes with the last crossing: the field after that crossing
     is the one of every new state. Without the contact ``skip`` (its own switch is the
-    section's, projected by the caller)."""
+    section's, projected by the caller). With ``onto`` (2n rows), ``S @ onto`` in place of ``S``: each
+    crossing's saltation is the identity plus a rank-one term (an impact's reset the identity plus a
+    few columns' term), applied as such (no product of 2n-square matrices)."""
     n = system.dofs
     flow = Flow.cached(system, segment.states, flows)
     crossed, seen = [], set()
@@ -82,7 +85,7 @@ def jump(system: System, segment, z: np.ndarray, flows: dict, skip: int | None =
     if not steps and crossed and final != segment.states:
         steps = crossed[-1:]  # only consequential changes: they go with the last crossing
     states = list(segment.states)
-    out = np.eye(2 * n)
+    out = np.eye(2 * n) if onto is None else np.array(onto, dtype=float)
     f_minus = flow.A @ z  # the whole field: with harmonic forces the switching functions move in time too
     for k, (r, owner) in enumerate(steps):
         prior = list(states)  # with the changes of the steps before (contacts landed at the same instant)
@@ -93,16 +96,20 @@ def jump(system: System, segment, z: np.ndarray, flows: dict, skip: int | None =
         rate = flow.rows[r] @ f_minus
         if _lands(system, flow, r, owner):  # a plastic impact: z+ = R z- (R of the state it lands in, even
             landed, z = land(system, flow, z, prior, [owner], flows)  # if pulled off at once: `simulate`)
-            R = Flow.cached(system, tuple(landed), flows).projection()
+            reset = Flow.cached(system, tuple(landed), flows)
             f_plus = after.A @ z
             if rate == 0.0:
                 raise NoSolutionError(f"contact {owner} touches its surface with no normal velocity (a grazing "
                                       "impact): the monodromy is not defined there")
-            step = R + np.outer(f_plus[:2 * n] - R @ f_minus[:2 * n], flow.rows[r][:2 * n]) / rate
+            # (R + (f+ - R f-) h^T / rate) out, R the reset
+            u, out = f_plus[:2 * n] - reset.project(f_minus[:2 * n]), reset.project(out)
         else:
             f_plus = after.A @ z
-            step = saltation(f_minus[:2 * n], f_plus[:2 * n], flow.rows[r][:2 * n], rate)
-        out = step @ out
+            if rate == 0.0:
+                raise NoSolutionError("a grazing event (the switching function is tangent to the flow): the "
+                                      "monodromy is not defined there")
+            u = f_plus[:2 * n] - f_minus[:2 * n]  # (I + (f+ - f-) h^T / rate) out: `saltation`
+        out += np.outer(u / rate, flow.rows[r][:2 * n] @ out)
         f_minus = f_plus
     return out, f_minus[:2 * n]
 
@@ -127,7 +134,7 @@ def monodromy(system: System, run: SystemRun | tuple) -> np.ndarray:
         step = expm(seg.duration * flow.A)
         out = step[:2 * n, :2 * n] @ out
         if seg.rows:
-            out = jump(system, seg, step @ seg.z, flows)[0] @ out
+            out = jump(system, seg, step @ seg.z, flows, onto=out)[0]
     return out
 
 
@@ -223,8 +230,7 @@ def _newton_step(system: System, segments: tuple, residual: np.ndarray, states: 
     before = monodromy(system, segments[:-1]) if len(segments) > 1 else np.eye(2 * n)
     phi = expm(end.duration * flow.A)
     ze = phi @ end.z
-    others, f_minus = jump(system, end, ze, flows, skip=target)
-    phi = others @ phi[:2 * n, :2 * n] @ before
+    phi, f_minus = jump(system, end, ze, flows, skip=target, onto=phi[:2 * n, :2 * n] @ before)
     row = next(r for r in end.rows if flow.owners[r] == target)
     normal = flow.rows[row][:2 * n]
     rate = float(normal @ f_minus)
@@ -233,7 +239,7 @@ def _newton_step(system: System, segments: tuple, residual: np.ndarray, states: 
     deriv = phi - np.outer(f_minus, normal @ phi) / rate
     if _lands(system, flow, row, target):  # the section is a landing: its reset
         landed, _ = land(system, flow, ze, list(end.states), [target], flows)
-        deriv = Flow.cached(system, tuple(landed), flows).projection() @ deriv
+        deriv = Flow.cached(system, tuple(landed), flows).project(deriv)
     deriv = deriv[back]
     rows = [deriv - np.eye(2 * n), normal[back][None, :]]  # the section at the start: n . B^-1 z
     for i, st in enumerate(states):
@@ -309,6 +315,7 @@ def return_fixed_point(system: System, z: np.ndarray, states: tuple, signature: 
                           f"iterations (the last return missed it by {miss:.3g} of the orbit's size)")
 
 
+@shares_flows
 def limit_cycle(system: System, x0=None, v0=None, *, transient: float = 100.0, tol: float = 1e-10,
                 max_iter: int = 200) -> SystemCycle:
     """The periodic orbit the motion from ``(x0, v0)`` settles on after ``transient`` seconds.

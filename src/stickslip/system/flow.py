@@ -25,7 +25,10 @@ round-off: compiled, in `stickslip.system.search`.
 
 from __future__ import annotations
 
+import functools
 import math
+from contextlib import contextmanager
+from contextvars import ContextVar
 
 import numpy as np
 from scipy.linalg import expm
@@ -33,7 +36,7 @@ from scipy.linalg import expm
 from .model import System
 from .search import EVENT, NO_EVENT, search
 
-__all__ = ["Flow", "CACHE_BYTES", "SLIP_ZERO", "STICK_LIMIT", "LAW_LIMIT", "OPENING", "CLOSING", "OPEN", "STATE_FLAGS"]
+__all__ = ["Flow", "shares_flows", "CACHE_BYTES", "SLIP_ZERO", "STICK_LIMIT", "LAW_LIMIT", "OPENING", "CLOSING", "OPEN", "STATE_FLAGS"]
 
 _NO_STEP, _EMPTY = np.zeros((1, 1)), np.zeros(0)
 #: Steps per fastest time scale ``1/max|eig(A)|`` of the event search: a switching function
@@ -56,6 +59,36 @@ CACHE_BYTES = 2 * 2**30
 STATE_FLAGS = {"flag_values": np.array([-1, 0, 1, OPEN], dtype=np.int8), "flag_meanings": "reverse_slip stick slip open"}
 
 
+def _nonzero_rows(X: np.ndarray) -> np.ndarray:
+    """The indices of the rows of ``X`` with a nonzero."""
+    return np.flatnonzero(np.any(X != 0.0, axis=1))
+
+
+def _pinv(X: np.ndarray) -> np.ndarray:
+    """The pseudo-inverse of the square ``X``; of a diagonal one (contacts on distinct degrees of freedom
+    of a lumped mass) without an SVD: ``1/d`` where ``|d|`` exceeds `numpy.linalg.pinv`'s cutoff, else 0."""
+    d = np.diag(X)
+    if np.any(X - np.diag(d)):
+        return np.linalg.pinv(X)
+    big = np.abs(d) > 1e-15 * np.abs(d).max(initial=0.0)
+    return np.diag(np.divide(1.0, d, out=np.zeros_like(d), where=big))
+
+
+#: The flows shared by one computation (`Flow.shared`): its system and the cache, or None.
+_SHARED: ContextVar = ContextVar("stickslip_shared_flows", default=None)
+
+
+def shares_flows(function):
+    """``function(system, ...)`` run within `Flow.shared` of its ``system`` (the first argument)."""
+    @functools.wraps(function)
+    def within(system, *args, **kwargs):
+        if not isinstance(system, System):  # the function's own checks say what it takes
+            return function(system, *args, **kwargs)
+        with Flow.shared(system):
+            return function(system, *args, **kwargs)
+    return within
+
+
 class Flow:
     """The flow of the contact state ``states`` (a tuple of -1, 0, 1 per contact), on the ``piece``
     of the system's `ForceHistory` (if it has one)."""
@@ -63,10 +96,9 @@ class Flow:
     def __init__(self, system: System, states: tuple[int, ...], piece: int = 0):
         n, size = system.dofs, system.size
         self.states = tuple(int(s) for s in states)
-        W, Minv = system.directions, system.inverse_mass
+        W, minv = system.directions, system.apply_inverse_mass
         stuck = [i for i, s in enumerate(self.states) if s == 0]
-        c_eff = system.damping.copy()
-        k_eff = system.stiffness.copy()
+        k_eff, c_eff = system.stiffness, system.damping  # copied only where a contact changes them
         g = system.force.copy()
         B = system.forcing_matrix  # the harmonic forces B e: carried with g (columns 2n:-1 of z)
         if system.history is not None:  # this piece's offset + rate t (t: the last of e)
@@ -80,6 +112,7 @@ class Flow:
         kn = system.normal_directions  # k_n n per contact (columns)
         push = np.zeros(len(self.states))  # N(x) n on the structure: k_n n n^T, N_0 n
         fric = np.zeros(len(self.states))  # a unilateral contact slipping: F = s mu0 N(x): s mu0 k_n w n^T, ...
+        falling = np.zeros(len(self.states))  # a slipping contact's N mu1: C_eff = C - sum N mu1 w w^T
         closed = [j for j, (c, s) in enumerate(zip(system.contacts, self.states)) if c.rigid and s != OPEN]
         pressed = []  # the force direction of each closed rigid contact's reaction: n (+ s mu0 w slipping)
         for j, (c, s) in enumerate(zip(system.contacts, self.states)):
@@ -102,26 +135,42 @@ class Flow:
                 g += w * s * mu0 * c.normal_force
                 continue
             N = c.normal_force
-            c_eff -= N * mu1 * np.outer(w, w)
+            falling[j] = N * mu1
             g += w * N * (s * mu0 - mu1 * V)
             force_rows[j, n:2 * n] = N * mu1 * w
             force_rows[j, -1] = N * (s * mu0 - mu1 * V)
-        if push.any():
-            k_eff += (system.normal_units * push) @ kn.T
-        if fric.any():
-            k_eff += (W * fric) @ kn.T
+        # M^-1 K_eff and M^-1 C_eff: the system's own (computed once) unless a contact changes K or C
+        if push.any() or fric.any():
+            k_eff = k_eff + (system.normal_units * push + W * fric) @ kn.T
+            minv_k = minv(k_eff)
+        else:
+            minv_k = system.inverse_mass_stiffness
+        if falling.any():
+            c_eff = c_eff - (W * falling) @ W.T
+            minv_c = minv(c_eff)
+        else:
+            minv_c = system.inverse_mass_damping
+        minv_g, minv_b = minv(g), minv(B)
         if stuck or closed:
-            # M a = r + E mu, G^T a = 0 (sticking: w . a = 0; closed: n . a = 0): mu = -L r
+            # M a = r + E mu, G^T a = 0 (sticking: w . a = 0; closed: n . a = 0): mu = -L r,
+            # L = (G^T M^-1 E)^+ G^T M^-1 and P = M^-1 - M^-1 E L; P's products with K, C, g, B are
+            # taken as M^-1 (.) - M^-1 E (L (.)): the constraints (a few columns) are all that is
+            # multiplied per state, never an n x n product (a ring of 2N = 1024 degrees of freedom:
+            # the wave-stability figure's flows spent 85 s of 230 in n x n products)
             G = np.hstack([W[:, stuck], system.normal_units[:, closed]])
             E = np.hstack([W[:, stuck], np.array(pressed).T.reshape(n, len(closed))])
-            # one pseudo-inverse and one M^-1 E serve L, Q and (all constraints held) the impact:
-            # the same products in the same order as written out three times (2N = 256 degrees of
-            # freedom: the wave-stability figure's flows spent 13 s of 20 in three equal SVDs)
-            Ainv, MinvE = np.linalg.pinv(G.T @ Minv @ E), Minv @ E
-            L = Ainv @ G.T @ Minv
-            P = Minv - MinvE @ L
+            MinvG, MinvE = minv(G), minv(E)
+            Ainv = _pinv(MinvG.T @ E)  # (G^T M^-1 E)^+: M^-1 is symmetric
+            L = Ainv @ MinvG.T
+            # a contact's direction has a few nonzeros (and M^-1 E too, a lumped mass): the rows where M^-1 G
+            # and M^-1 E are nonzero are all that the products need (all rows where they are dense)
+            rg, rows_e = _nonzero_rows(MinvG), _nonzero_rows(MinvE)
+            LK, Lg, LB = Ainv @ (MinvG[rg].T @ k_eff[rg]), L @ g, L @ B
+            LC = Ainv @ (MinvG[rg].T @ c_eff[rg]) if c_eff.any() else None
             mu = np.zeros((len(stuck) + len(closed), size))
-            mu[:, :n], mu[:, n:2 * n], mu[:, -1], mu[:, e] = L @ k_eff, L @ c_eff, -L @ g, -L @ B
+            mu[:, :n], mu[:, -1], mu[:, e] = LK, -Lg, -LB
+            if LC is not None:
+                mu[:, n:2 * n] = LC
             force_rows[stuck] = mu[:len(stuck)]
             normal[closed] = mu[len(stuck):]
             for j in closed:
@@ -133,26 +182,32 @@ class Flow:
             Q = MinvE @ Ainv
             target = np.array([system.contacts[i].surface_speed for i in stuck] + [0.0] * len(closed))
             self._stick = (Q, G, target)
-            Nc = system.normal_units[:, closed]  # the closed rigid contacts' positions: n . x = 0 exactly
-            self._onto = (Minv @ Nc @ np.linalg.pinv(Nc.T @ Minv @ Nc), Nc) if closed else None
+            Nc, MinvNc = G[:, len(stuck):], MinvG[:, len(stuck):]  # the closed rigid contacts: n . x = 0 exactly
+            self._onto = (MinvNc @ _pinv(Nc.T @ MinvNc), Nc) if closed else None
             # an impact: impulses only where a rigid contact holds (a finite normal force takes none)
             held = [k for k, i in enumerate(stuck) if system.contacts[i].rigid] + list(range(len(stuck), G.shape[1]))
             if len(held) == G.shape[1]:
                 Gi, MinvEi, Ki = G, MinvE, Ainv
             else:
-                Gi, Ei = G[:, held], E[:, held]
-                MinvEi, Ki = Minv @ Ei, np.linalg.pinv(Gi.T @ Minv @ Ei)
+                Gi, MinvEi = G[:, held], MinvE[:, held]
+                Ki = _pinv(Gi.T @ MinvEi)
             self._impact = (MinvEi, Ki, Gi, target[held], [i for i in stuck if system.contacts[i].rigid], closed)
         else:
-            P = Minv
             self._stick = self._onto = self._impact = None
         self.normal_rows = normal
         A = np.zeros((size, size))
-        A[:n, n:2 * n] = np.eye(n)
-        A[n:2 * n, :n] = -P @ k_eff
-        A[n:2 * n, n:2 * n] = -P @ c_eff
-        A[n:2 * n, -1] = P @ g
-        A[n:2 * n, e] = P @ B
+        A[np.arange(n), n + np.arange(n)] = 1.0
+        A[n:2 * n, :n] = -minv_k
+        A[n:2 * n, n:2 * n] = -minv_c
+        A[n:2 * n, -1] = minv_g
+        A[n:2 * n, e] = minv_b
+        if stuck or closed:  # -P K = -M^-1 K + M^-1 E (L K), ...: on the rows of M^-1 E's nonzeros
+            ME = MinvE[rows_e]
+            A[n + rows_e, :n] += ME @ LK
+            if LC is not None:
+                A[n + rows_e, n:2 * n] += ME @ LC
+            A[n + rows_e, -1] -= ME @ Lg
+            A[n + rows_e, e] -= ME @ LB
         A[e, e] = system.rotation
         A[e, -1] = system.clock
         self.A, self.n = A, n
@@ -161,33 +216,38 @@ class Flow:
         slip[:, n:2 * n] = -W.T
         slip[:, -1] = [c.surface_speed for c in system.contacts]
         self.slip_rows = slip
-        rows, owners, kinds = [], [], []  # switching functions: an event when one reaches zero from above
+        # switching functions (an event when one reaches zero from above), in the order of the contacts:
+        # each row a factor times a row of one source (the rows built together, per kind)
+        owners, kinds, factors = [], [], []
         for i, (c, s) in enumerate(zip(system.contacts, self.states)):
             if s == OPEN:  # N(x) < 0 while open (a rigid contact: the gap n . x > 0): closes where it reaches 0
-                rows.append((1.0 if c.rigid else -1.0) * c.normal_row(n, system.extra))
-                owners.append(i)
-                kinds.append(CLOSING)
+                owners.append(i), kinds.append(CLOSING), factors.append(1.0 if c.rigid else -1.0)
                 continue
-            if c.unilateral:
-                rows.append(normal[i].copy())
-                owners.append(i)
-                kinds.append(OPENING)
-            if s == 0:
-                limit = c.friction.static * normal[i]
-                rows += [limit - force_rows[i], limit + force_rows[i]]
+            if c.unilateral:  # N(x) > 0 while closed: opens where it reaches 0
+                owners.append(i), kinds.append(OPENING), factors.append(1.0)
+            if s == 0:  # f_s N -+ F
                 owners += [i, i]
                 kinds += [STICK_LIMIT, STICK_LIMIT]
-            else:
-                rows.append(s * slip[i])
-                owners.append(i)
-                kinds.append(SLIP_ZERO)
-                if math.isfinite(c.friction.max_speed):  # the law holds up to it: |v_r| < max_speed
-                    valid = -s * slip[i]
-                    valid[-1] += c.friction.max_speed
-                    rows.append(valid)
-                    owners.append(i)
-                    kinds.append(LAW_LIMIT)
-        self.rows, self.owners, self.kinds = np.array(rows), np.array(owners), np.array(kinds)
+                factors += [-1.0, 1.0]
+            else:  # s v_r; and -s v_r + max_speed where the law ends
+                owners.append(i), kinds.append(SLIP_ZERO), factors.append(float(s))
+                if math.isfinite(c.friction.max_speed):
+                    owners.append(i), kinds.append(LAW_LIMIT), factors.append(-float(s))
+        owners, kinds, factors = np.array(owners), np.array(kinds), np.array(factors)
+        rows = np.empty((owners.size, size))
+        for kind, source in ((CLOSING, system.normal_rows), (OPENING, normal), (SLIP_ZERO, slip), (LAW_LIMIT, slip),
+                             (STICK_LIMIT, force_rows)):
+            k = np.flatnonzero(kinds == kind)
+            if k.size:
+                rows[k] = factors[k, None] * source[owners[k]]
+        k = np.flatnonzero(kinds == STICK_LIMIT)
+        if k.size:
+            static = np.array([system.contacts[i].friction.static for i in owners[k]])
+            rows[k] = static[:, None] * normal[owners[k]] + rows[k]
+        k = np.flatnonzero(kinds == LAW_LIMIT)
+        if k.size:
+            rows[k, -1] += [system.contacts[i].friction.max_speed for i in owners[k]]
+        self.rows, self.owners, self.kinds = rows, owners, kinds
         # a bound of the fastest time scale: the infinity norm of A scaled by diag(s I, I), s^2 = |P K|
         # (at least the spectral radius, and equal to it for a chain's Laplacian; no eigensolve)
         stiff = float(np.abs(A[n:2 * n, :n]).sum(axis=1).max()) if n else 0.0
@@ -207,13 +267,30 @@ class Flow:
         """The flow of ``states``, built once per ``cache`` (a run or a monodromy revisits few states;
         one cache per ``piece`` of a force history) while the cache holds at most `CACHE_BYTES`: the
         flows used longest ago are dropped beyond it (built again if met again)."""
-        flow = cache.pop(states, None)
+        key, shared = states, _SHARED.get()
+        if shared is not None and shared[0] is system:  # one cache for the whole computation (`shared`)
+            cache, key = shared[1], (states, piece)
+        flow = cache.pop(key, None)
         if flow is None:
             flow = cls(system, states, piece)
-        cache[states] = flow  # the most recently used last
+        cache[key] = flow  # the most recently used last
         while len(cache) > 1 and len(cache) * flow.nbytes > CACHE_BYTES:
             del cache[next(iter(cache))]
         return flow
+
+    @staticmethod
+    @contextmanager
+    def shared(system: System):
+        """Within it, every flow of ``system`` that `cached` gives is built once for all the runs,
+        monodromies and Newton steps of one computation (a cycle's returns revisit the same contact
+        states; each run's own cache rebuilt them: 12,681 flows for 24,042 uses in the waves' stability
+        figure), in the cache's bytes (`CACHE_BYTES`). Scoped, so that a computation's numbers depend
+        on its own inputs only (a flow keeps its step's exponential once its search has taken many)."""
+        token = _SHARED.set((system, {}))
+        try:
+            yield
+        finally:
+            _SHARED.reset(token)
 
     def propagate(self, z: np.ndarray, t: float) -> np.ndarray:
         """``expm(t A) z``."""
@@ -267,6 +344,16 @@ class Flow:
         if self._impact is not None:
             ME, K, G, _, _, _ = self._impact
             out[n:, n:] -= ME @ K @ G.T
+        return out
+
+    def project(self, X: np.ndarray) -> np.ndarray:
+        """``projection() @ X`` (``X`` a vector or 2n rows) without forming the projection: the identity
+        but on the velocities, ``v - M^-1 E K G^T v`` (a few columns)."""
+        out = np.array(X, dtype=float)
+        if self._impact is not None:
+            ME, K, G, _, _, _ = self._impact
+            n = self.n
+            out[n:] -= ME @ (K @ (G.T @ out[n:]))
         return out
 
     def acceleration(self, z: np.ndarray) -> np.ndarray:

@@ -390,6 +390,32 @@ class System:
             self._cache["minv"] = scipy.linalg.cho_solve((self._chol, True), np.eye(self.dofs))
         return self._cache["minv"]
 
+    def apply_inverse_mass(self, X: np.ndarray) -> np.ndarray:
+        """``M^-1 X`` (``X`` a vector or columns): a diagonal (lumped) mass's by a division per row."""
+        if "mdiag" not in self._cache:
+            M = self.mass
+            self._cache["mdiag"] = np.diag(M).copy() if not np.any(M - np.diag(np.diag(M))) else None
+        d = self._cache["mdiag"]
+        if d is None:
+            return self.inverse_mass @ X
+        return X / d if X.ndim == 1 else X / d[:, None]
+
+    @property
+    def inverse_mass_stiffness(self) -> np.ndarray:
+        """``M^-1 K`` (computed once, read-only)."""
+        return self._product("minvK", self.stiffness)
+
+    @property
+    def inverse_mass_damping(self) -> np.ndarray:
+        """``M^-1 C`` (computed once, read-only)."""
+        return self._product("minvC", self.damping)
+
+    def _product(self, key: str, X: np.ndarray) -> np.ndarray:
+        if key not in self._cache:
+            self._cache[key] = self.apply_inverse_mass(X)
+            self._cache[key].setflags(write=False)
+        return self._cache[key]
+
     @property
     def directions(self) -> np.ndarray:
         """``W``: one column per contact (computed once)."""

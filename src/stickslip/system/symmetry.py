@@ -26,6 +26,7 @@ from ..errors import NoSolutionError, ParameterError
 from ..quantities import SYSTEM as Q
 from ..results import Result
 from .floquet import cycle_dataset, entries, monodromy, period_events, return_fixed_point, without_own
+from .flow import shares_flows
 from .model import System
 from .simulate import simulate
 
@@ -126,6 +127,7 @@ class RelativeCycle(Result):
                              "system with frictional contacts: wave moving by one cell, its multipliers")
 
 
+@shares_flows
 def relative_cycle(system: System, x0, v0, shift, *, contact: int, state: int, states=None, horizon: float,
                    tol: float = 1e-10, max_iter: int = 50) -> RelativeCycle:
     """The wave near the motion from ``(x0, v0)`` (contact ``states`` as `simulate` takes them)
