@@ -82,7 +82,7 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
 
 
 FIGURE = FigureSpec(
-    key="brake-fem-regimes", cost=150, title="Section 3.1 — FE regimes over geometry and shaft speed",
+    key="brake-fem-regimes", cost=132, title="Section 3.1 — FE regimes over geometry and shaft speed",
     model="brake-like system, finite elements",
     claim="(Asked by the specification: the paper gives no geometry.) How the limit regime moves when the ring's "
           "thickness ξ = R*/R and the shaft speed Ω change.",

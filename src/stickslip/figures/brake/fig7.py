@@ -36,7 +36,7 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
 
 
 FIGURE = FigureSpec(
-    key="fig7", cost=145, title="Figure 7 — FE: stick-slip wave with 4 modes (f = 0.2, δ = 0.004, Ω = 1 rad/s)",
+    key="fig7", cost=190, title="Figure 7 — FE: stick-slip wave with 4 modes (f = 0.2, δ = 0.004, Ω = 1 rad/s)",
     model="brake-like system, finite elements",
     claim="For f = 0.2, δ = 0.004 and Ω = 1 rad/s the limit cycle is a stick-slip wave with 4 modes.",
     method=METHOD, errata=("B5",),

@@ -40,7 +40,7 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
 
 
 FIGURE = FigureSpec(
-    key="fig8", cost=200, title="Figure 8 — FE: stick-separation wave with 2 modes (f = 2, δ = 0.004, Ω = 80 rad/s)",
+    key="fig8", cost=162, title="Figure 8 — FE: stick-separation wave with 2 modes (f = 2, δ = 0.004, Ω = 80 rad/s)",
     model="brake-like system, finite elements",
     claim="For a very high friction (f > 1.5), a high angular velocity and a small mismatch, a stick-separation wave; "
           "with 2 modes for f = 2, δ = 0.004, Ω = 80 rad/s.",

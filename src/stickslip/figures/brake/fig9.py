@@ -43,7 +43,7 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
 
 
 FIGURE = FigureSpec(
-    key="fig9", cost=240, title="Figure 9 — FE: stick-slip-separation wave with 8 modes, radial displacement",
+    key="fig9", cost=171, title="Figure 9 — FE: stick-slip-separation wave with 8 modes, radial displacement",
     model="brake-like system, finite elements",
     claim="For Ω = 50 rad/s, δ = 0.001 and f = 0.7 a stick-slip-separation wave with 8 modes; the radial "
           "displacement shows the propagation.",

@@ -105,7 +105,7 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
 
 
 FIGURE = FigureSpec(
-    key="brake-initial-condition", title="Section 3.1 — the limit regime depends on the initial condition",
+    key="brake-initial-condition", cost=16, title="Section 3.1 — the limit regime depends on the initial condition",
     model="brake-like system, reduced model [12] by the method of lines",
     claim="It has been found that the limit regime may be different for two different initial conditions.",
     method="The same parameters (f = 0.7, δ = 0.001, Ω = 50 rad/s, β2 = 0.9) started from steady sliding plus a mode-2 "

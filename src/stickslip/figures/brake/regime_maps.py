@@ -83,7 +83,7 @@ def check(ds: xr.Dataset) -> list[Check]:
 
 
 FIGURE = FigureSpec(
-    key="brake-regime-maps", cost=125, title="Beyond the paper — regime maps over friction and mismatch",
+    key="brake-regime-maps", cost=133, title="Beyond the paper — regime maps over friction and mismatch",
     model="brake-like system, reduced model: shooting and time integration",
     claim="'The stick-slip regime occurs if the normal contact pressure is high enough or for a small coefficient of "
           "friction ... the stick-slip-separation wave may be obtained when the mismatch is small enough or when the "

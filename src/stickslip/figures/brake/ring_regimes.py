@@ -204,7 +204,7 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
 
 
 FIGURE = FigureSpec(
-    key="brake-ring-regimes", cost=50, title="Section 3.1 — limit regimes of the ring (reduced model, time integration)",
+    key="brake-ring-regimes", cost=48, title="Section 3.1 — limit regimes of the ring (reduced model, time integration)",
     model="brake-like system, reduced model [12] by the method of lines",
     claim="Direct time integration reaches limit regimes: for f = 0.2, δ = 0.004, Ω = 1 rad/s a stick-slip wave with "
           "4 modes; for f = 0.7, δ = 0.001, Ω = 50 rad/s a stick-slip-separation wave with 8 modes; for f = 2, "

@@ -245,7 +245,7 @@ def describe(ds: xr.Dataset) -> str:
 
 
 FIGURE = FigureSpec(
-    key="wave-stability", cost=800, title="Beyond the paper — the stability of the travelling waves",
+    key="wave-stability", cost=150, title="Beyond the paper — the stability of the travelling waves",
     model="reduced brake model (ring), travelling waves",
     claim="(The paper's open problem, not a claim of it.) The stick-slip waves of Figures 5 and 11 in permanent "
           "contact are unstable: on the discrete ring their node-shift map has multipliers outside the unit circle, "

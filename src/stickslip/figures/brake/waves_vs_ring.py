@@ -121,7 +121,7 @@ def check(ds: xr.Dataset) -> list[Check]:
 
 
 FIGURE = FigureSpec(
-    key="brake-waves-vs-ring", title="Section 3 — travelling waves against the time integration; their stability",
+    key="brake-waves-vs-ring", cost=8, title="Section 3 — travelling waves against the time integration; their stability",
     model="brake-like system, reduced model: multiple shooting vs method of lines",
     claim="The reduced model admits stick-slip and stick-slip-separation travelling waves, found semi-analytically; "
           "the stability of these waves is an open problem (conclusion of the paper).",

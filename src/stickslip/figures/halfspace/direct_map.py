@@ -69,7 +69,7 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
 
 
 FIGURE = FigureSpec(
-    key="halfspace-direct-map", title="Beyond the paper — the direct problem over the loading plane",
+    key="halfspace-direct-map", cost=10, title="Beyond the paper — the direct problem over the loading plane",
     model="rigid body on an elastic half-space",
     claim="(The paper could not solve it: Newton fails.) Given the loading (T, v, v*), find the wave (c̄, b).",
     method="b eliminated by the second equation, every sign change in c̄ bracketed on a grid and refined by Brent; "

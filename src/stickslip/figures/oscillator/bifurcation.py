@@ -143,7 +143,7 @@ def check(ds: xr.Dataset) -> list[Check]:
 
 
 FIGURE = FigureSpec(
-    key="oscillator-bifurcation", cost=71, title="Beyond the paper — limit cycles vs belt speed",
+    key="oscillator-bifurcation", cost=14, title="Beyond the paper — limit cycles vs belt speed",
     model="1-DOF friction oscillator, Stribeck and Coulomb with damping",
     claim="(Not in the paper.) The stick-slip cycle of a falling friction law persists up to a belt speed where "
           "it grazes the stick segment; steady sliding loses stability at a Hopf point where c + N μ'(V) = 0.",

@@ -93,7 +93,7 @@ def check(ds: xr.Dataset) -> list[Check]:
 
 
 FIGURE = FigureSpec(
-    key="oscillator-regimes", cost=47, title="Beyond the paper — regime map of the Stribeck oscillator",
+    key="oscillator-regimes", cost=9, title="Beyond the paper — regime map of the Stribeck oscillator",
     model="1-DOF friction oscillator, Stribeck law with viscous damping",
     claim="(Not in the paper.) Where in (V, c) steady sliding, stick-slip, or both are the long-time behaviour.",
     method="A resumable Dask sweep (Zarr store) over a (V, c) grid: linear stability of steady sliding, and shooting "
