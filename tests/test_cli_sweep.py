@@ -283,3 +283,25 @@ def test_the_oscillator_map_gives_what_a_sweep_of_the_cycle_command_gives(oscill
     for name in ("period", "stick_time", "amplitude"):
         np.testing.assert_allclose(preset[name].values[sticks], generic[name].values[sticks], rtol=1e-12)
         assert preset[name].attrs["units"] == generic[name].attrs["units"]
+
+
+def test_two_swept_config_numbers_that_break_their_rule_together_are_refused_before_any_point(tmp_path, capsys):
+    """static_friction >= friction at every point of the grid: [0.2, 0.5] x [0.6, 0.3] breaks it only at
+    (0.5, 0.3), which the config's check (one axis varied at a time, the others at their first: (0.2, 0.6),
+    (0.5, 0.6), (0.2, 0.3)) does not see; the sweep ran and stored the point as failed."""
+    (tmp_path / "block.toml").write_bytes((EXAMPLES / "block_on_belt" / "block.toml").read_bytes())
+    (tmp_path / "block.msh").write_text("not a mesh: its problem is said with the grid's\n")
+    config = _write(tmp_path, """
+command = "fem steady"
+config = "block.toml"
+outputs = ["friction_force"]
+[axes]
+friction = [0.2, 0.5]
+static_friction = [0.6, 0.3]
+""")
+    assert run(["sweep", str(config), "--out", str(tmp_path / "s.zarr"), "--scheduler", "synchronous"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err, err
+    assert "axes.contact.static_friction = 0.3 with axes.contact.friction = 0.5" in err, err
+    assert "1 of 4 combinations" in err and "block.msh" in err and "2 problems" in err, err
+    assert not (tmp_path / "s.zarr").exists()

@@ -391,6 +391,8 @@ def _check_values(study: Study, command) -> list[str]:
     if study.config is not None:
         from ..fem.config import load_config
 
+        problems += _config_combinations(study)
+
         first = {k: v[0] for k, v in study.axes.items()}
         seen = set()
         for axis, values in [(None, [None]), *((k, v) for k, v in study.axes.items() if study.keys[k].startswith(_CONFIG))]:
@@ -410,6 +412,8 @@ def _check_values(study: Study, command) -> list[str]:
 #: combination of the axes' values, so the rule holds at every point iff it holds between the
 #: smallest value of the one and the largest of the other (checked before any point runs).
 AT_LEAST = [("fs", "fd")]
+#: The same between two swept numbers of a fem command's config (their full keys).
+CONFIG_AT_LEAST = [("contact.static_friction", "contact.friction")]
 
 
 def _combinations(study: Study, options: dict, params: dict) -> list[str]:
@@ -427,6 +431,25 @@ def _combinations(study: Study, options: dict, params: dict) -> list[str]:
             where = lambda n: f"axes.{n}" if n in options else f"fixed.{n}"  # noqa: E731
             problems.append(f"{where(big)} = {b:g} with {where(small)} = {s:g}: {params[big].opts[0]} must be >= "
                             f"{params[small].opts[0]} at every point of the grid ({len(broken)} of "
+                            f"{len(bigs) * len(smalls)} combinations are not)")
+    return problems
+
+
+def _config_combinations(study: Study) -> list[str]:
+    """The points of the grid that break a rule of `CONFIG_AT_LEAST` between two swept numbers (the first
+    one, and how many): the config's own check varies one axis at a time (the others at their first),
+    which sees a number swept against a fixed one, not two axes' values together."""
+    axis_of = {k.removeprefix(_CONFIG): a for a, k in study.keys.items() if k.startswith(_CONFIG)}
+    problems = []
+    for big, small in CONFIG_AT_LEAST:
+        if big not in axis_of or small not in axis_of:
+            continue
+        bigs, smalls = study.axes[axis_of[big]], study.axes[axis_of[small]]
+        broken = [(b, v) for b in bigs for v in smalls if b < v]
+        if broken:
+            b, v = broken[0]
+            problems.append(f"axes.{_shown(study, axis_of[big])} = {b:g} with axes.{_shown(study, axis_of[small])} = "
+                            f"{v:g}: {big} must be >= {small} at every point of the grid ({len(broken)} of "
                             f"{len(bigs) * len(smalls)} combinations are not)")
     return problems
 
