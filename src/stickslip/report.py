@@ -211,13 +211,16 @@ def start_order(specs: list[FigureSpec], data_dir: Path) -> list[FigureSpec]:
 
 
 def reproduce(out: Path, *, quick: bool = False, only: str | None = None, force: bool = False,
-              progress=None, workers: int = 1) -> Summary:
+              progress=None, workers: int = 1, waiting=None) -> Summary:
     """Compute, plot and check the selected figures, record each, then write ``report.md`` and
     ``report.html`` from every figure recorded in ``out`` (this run's and earlier runs').
+    ``progress(spec)`` is called as each figure is taken up here.
 
     With ``workers > 1`` the figures to compute (those without a checkpoint of this code and
     mode) are computed in that many worker processes (`stickslip.sweep.process_pool`), the
-    longest first, while this process plots, checks and records each as its data arrive."""
+    longest first, while this process plots, checks and records each as its data arrive; each
+    time it goes back to waiting for them, ``waiting(keys, done, total)`` is called with the keys
+    of the figures still computing and the numbers of figures recorded and selected."""
     specs = select(only)
     out = Path(out)
     data_dir = out / "data"
@@ -244,14 +247,20 @@ def reproduce(out: Path, *, quick: bool = False, only: str | None = None, force:
                                                bool(forced.get(s.key)), number.get(s.key, 0), len(specs), begun)
         # the figures computed in workers are plotted, checked and logged as each arrives (in the
         # order they finish: a short one queued last no longer holds back those done before it)
-        waiting = {future: key for key, future in apart.items()}
-        for future in as_completed(waiting):
+        pending = {future: key for key, future in apart.items()}
+        computing = set(pending.values())
+        if waiting and computing:
+            waiting(sorted(computing), len(summary.outcomes), len(specs))
+        for future in as_completed(pending):
             computed = future.result()  # the seconds of its computation (the wait for it is not its time)
-            for spec in (s for s in specs if sources[s.key].key == waiting[future]):
+            computing.discard(pending[future])
+            for spec in (s for s in specs if sources[s.key].key == pending[future]):
                 if progress:
                     progress(spec)
                 ds, _ = _load_or_compute(sources[spec.key], data_dir, quick, fingerprint, False)
                 _record(summary, spec, ds, False, time.perf_counter() - computed, out, quick, fingerprint)
+            if waiting and computing:
+                waiting(sorted(computing), len(summary.outcomes), len(specs))
         for spec in (s for s in specs if sources[s.key].key not in apart):
             if progress:
                 progress(spec)

@@ -50,7 +50,10 @@ def reproduce(out: Annotated[Path, typer.Option(help="Output directory.")] = Pat
     status.start()
     try:
         summary = run(out, quick=quick, only=only, force=force, workers=workers or os.cpu_count() or 1,
-                      progress=lambda spec: (status.update(f"{spec.key}: {spec.title}"), phase(f"figure {spec.key}")))
+                      progress=lambda spec: (status.update(f"{spec.key}: {spec.title}"), phase(f"figure {spec.key}")),
+                      waiting=lambda keys, done, total: (status.update(f"computing {', '.join(keys)}"),
+                                                         phase(f"{done} of {total} figures done, computing "
+                                                               f"{', '.join(keys)}")))
     finally:
         status.stop()
     if json:
