@@ -12,7 +12,8 @@ interpreter), the API calls forked with a time limit.
 CLI classes: special files (FIFOs, devices, dangling links, folders) as inputs and as outputs,
 a scheduler address that answers but is not Dask, repeated values in lists, deep nesting and
 subnormal numbers in config files, options that only mean something together given apart, two
-spellings of one key in one file, a sweep's combination rule (fs >= fd) broken at some point,
+spellings of one key in one file, a sweep's combination rule (fs >= fd; a fem config's static_friction >=
+friction) broken at some point,
 and the special values of every declared range (`fuzz_harness.declared_cases`). API classes:
 every callable of the public modules' ``__all__`` with every required argument bad, and every
 parameter of `tests.test_fuzz_api.CALLS` with its bad and declared special values.
@@ -316,6 +317,11 @@ def combination_cases() -> list[Case]:
                         ("", "fs = [0.5, 0.6]\nfd = [0.3, 0.55]\n"), ("fd = 0.5\n", "fs = { start = 0.6, stop = 0.4, num = 3 }\n")):
         out.append(sweep_case("sweep combination rule", SWEEP_HEAD + SWEEP_FIXED + fixed + "[axes]\n" + axes
                               + "belt_speed = [0.1, 0.2]\n"))
+    for axes in ("friction = [0.2, 0.5]\nstatic_friction = [0.6, 0.3]\n",  # a fem config's two numbers together
+                 "contact.static_friction = [0.4, 0.45]\ncontact.friction = [0.3, 0.5]\n"):
+        fem = 'command = "fem steady"\nconfig = "pad.toml"\noutputs = ["normal_force"]\n[axes]\n' + axes
+        out.append(Case("sweep combination rule", ["sweep", "{file:fem.toml}", "--out", "{tmp}/s.zarr", "--workers", "1",
+                                                    "--json"], "CONFIG", make={"fem.toml": fem, "pad.toml": "{pad}"}))
     return out
 
 
