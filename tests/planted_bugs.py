@@ -411,6 +411,25 @@ MUTANTS: list[dict] = [
        "return np.diag(np.divide(2.0, d, out=np.zeros_like(d), where=big))",
        "system flow: the pseudo-inverse of a diagonal constraint matrix twice too large",
        [T + "system/test_simulate.py", T + "system/test_floquet.py", T + "system/test_rigid.py"]),
+    # 3-D solids (issue 45's first increment)
+    _m("solid-lame-swapped", F + "solid.py",
+       "return ddot(2.0 * mu * eu + lam * eye(trace(eu), 3), sym_grad(v))",
+       "return ddot(2.0 * lam * eu + mu * eye(trace(eu), 3), sym_grad(v))",
+       "3-D solid: the Lame parameters swapped in the stiffness", [T + "fem/test_solid.py"]),
+    _m("solid-shear-factor", F + "solid.py",
+       "return ddot(2.0 * mu * eu + lam * eye(trace(eu), 3), sym_grad(v))",
+       "return ddot(mu * eu + lam * eye(trace(eu), 3), sym_grad(v))",
+       "3-D solid: the stress 2 mu eps without its factor 2", [T + "fem/test_solid.py"]),
+    _m("solid-mass-density", F + "solid.py", "return m.density * dot(u, v)", "return dot(u, v)",
+       "3-D solid: the mass without the density", [T + "fem/test_solid.py"]),
+    _m("solid-roller-axis", F + "solid.py", "held.append(3 * solid.nodes(group, \"rollers\") + AXES[axis])",
+       "held.append(3 * solid.nodes(group, \"rollers\") + (AXES[axis] + 1) % 3)",
+       "3-D solid: a roller holds the degree of freedom of the next axis", [T + "fem/test_solid.py"]),
+    _m("solid-units", F + "solid.py", 'UNITS = {"m": 1.0, "mm": 1e-3}', 'UNITS = {"m": 1.0, "mm": 1e3}',
+       "3-D solid: a mesh in millimetres scaled up instead of down", [T + "fem/test_solid.py"]),
+    _m("solid-turn", F + "solid.py", "cells[vol < 0] = cells[vol < 0][:, [0, 2, 1, 3]]  # turned round",
+       "cells[vol < 0] = cells[vol < 0][:, [0, 1, 2, 3]]  # turned round",
+       "3-D solid: tetrahedra numbered the other way not turned round", [T + "fem/test_solid.py"]),
 ]
 
 UNCAUGHT: list[dict] = []  # every planted bug of the list is caught (issue 44 moved the last four)

@@ -311,11 +311,12 @@ def test_a_public_function_given_bad_arguments_raises_a_parameter_error_naming_o
 
 #: Public callables left raising Python's or numpy's exceptions, and why (tests/fuzz_report.py
 #: counts them as foreign exceptions): `Mode` is an Enum (``Mode(x)`` is Python's lookup); the
-#: others are records the solvers build, not entry points. (`plotting` and `results.scalars` were
-#: here until they could import `errors`: they check their arguments now.)
+#: others are records the solvers and readers build (`read_solid` a `Solid`), not entry points.
+#: (`plotting` and `results.scalars` were here until they could import `errors`: they check their
+#: arguments now.)
 KNOWN = ("stickslip.oscillator.Mode(",
          "stickslip.oscillator.Trajectory(", "stickslip.brake.waves.ZoneFlows(", "stickslip.fem.BodySystem(",
-         "stickslip.system.Flow(")
+         "stickslip.system.Flow(", "stickslip.fem.Solid(", "stickslip.fem.SolidSystem(")
 
 
 @pytest.mark.slow

@@ -21,7 +21,11 @@
   (`integrate_body`, `classify_body`), from perturbed steady sliding or the preload
   (`perturbed_steady_body`, `preload_body`);
 * `paraview`: XDMF time series of a run's volume snapshots and of the CEA mode shapes;
-* `config`: the TOML config of `stickslip fem steady | cea | run`.
+* `config`: the TOML config of `stickslip fem steady | cea | run`;
+* `solid`: a 3-D elastic body (linear tetrahedra or hexahedra, a material per cell group, its
+  length unit stated), its stiffness and lumped mass, clamps and rollers on face groups and its
+  modes (`read_solid`, `assemble_solid`, `supported_dofs`, `solid_modes`): the first increment of
+  3-D; contact, the CEA and runs of solids come next.
 """
 
 from .assembly import BodySystem, Material, assemble
@@ -32,6 +36,8 @@ from .pair import PairProblem, PairSteady, Rotation, Translation, steady_pair
 from .pair_run import PairRun, PairScheme, integrate_pair
 from .run import BodyInitial, BodyRun, classify_body, integrate_body, perturbed_steady_body, preload_body
 from .scheme import BodyScheme, ContactProblem
+from .solid import (Solid, SolidSystem, assemble_solid, read_solid, solid_from_meshio, solid_modes,
+                    supported_dofs)
 from .static import SteadyContact, steady_contact
 from .surfaces import ContactFrames, RigidCylinder, RigidFlat, contact_frames
 
@@ -40,4 +46,5 @@ __all__ = ["Body", "read_body", "body_from_meshio", "CELL_KINDS", "Material", "B
            "ContactProblem", "BodyScheme", "CeaModes", "complex_eigenvalues", "BodyInitial", "BodyRun",
            "integrate_body", "classify_body", "perturbed_steady_body", "preload_body", "Spring", "Load",
            "PairProblem", "PairSteady", "Rotation", "Translation", "steady_pair", "PairScheme", "PairRun",
-           "integrate_pair"]
+           "integrate_pair", "Solid", "SolidSystem", "read_solid", "solid_from_meshio", "assemble_solid",
+           "supported_dofs", "solid_modes"]

@@ -1,0 +1,323 @@
+"""A 3-D elastic body (a solid: a pad, a backplate, a disc) read from a mesh, its stiffness and lumped
+mass (scikit-fem), its supports and its modes.
+
+`read_solid(path, units)` reads any mesh meshio reads (gmsh ``.msh`` first) whose cells are volumes:
+linear tetrahedra or hexahedra (meshio's ``tetra``, ``hexahedron``; quadratic cells are refused, said
+so, in this first increment of 3-D). ``units`` is the length unit of the mesh's coordinates, ``"m"``
+or ``"mm"`` (a CAD model in millimetres read as metres is a brake 1000 times too large: no default).
+Face groups are the named sets of boundary faces (gmsh physical groups of dimension 2: triangles on
+tetrahedra, quadrilaterals on hexahedra) where supports and contacts act; cell groups the named sets
+of cells (physical groups of dimension 3: a lining, a backplate), each of which may have its own
+material. Checked on the way in, each refused with a `ParameterError` naming the mesh and the problem:
+a flat mesh, no volume cells or cells of two kinds, degenerate cells (volume below 1e-10 of the mean),
+parts that share no node, face groups whose faces are not on the boundary. Tetrahedra turned the other
+way are turned round; an inverted hexahedron is refused (it is a mesh error, not an orientation).
+
+`assemble_solid(solid, material)`: ``K`` (CSR, N/m) and the lumped mass (kg per degree of freedom: row
+sums of the consistent mass, positive on linear cells) on the Cartesian degrees of freedom ``3 i``,
+``3 i + 1``, ``3 i + 2`` of node ``i``, with ``material`` one `stickslip.fem.assembly.Material` or one
+per cell group. The physics is the 2-D bodies' without the plane: Lamé's ``lambda = E nu / ((1 + nu)
+(1 - 2 nu))`` and ``mu = E / (2 (1 + nu))`` (a material's ``plane = "stress"`` means nothing in 3-D
+and is refused). `supported_dofs` gives the degrees of freedom a clamp (all three) or a roller (the
+one along a coordinate axis) holds on a face group; `solid_modes` the lowest natural frequencies.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import scipy.sparse as sp
+
+from ..errors import ParameterError
+from ..quantities import MAX_MESH_NODES
+from ..validation import count as checked_count, regular_input
+from .assembly import Material
+
+__all__ = ["Solid", "SolidSystem", "read_solid", "solid_from_meshio", "assemble_solid", "supported_dofs",
+           "solid_modes", "VOLUME_KINDS", "UNITS"]
+
+#: meshio volume cells read, and the faces of their boundary groups.
+VOLUME_KINDS = {"tetra": "triangle", "hexahedron": "quad"}
+#: Not yet (said when met): quadratic volume cells.
+LATER = ("tetra10", "hexahedron27", "wedge", "pyramid")
+#: Length units of a mesh's coordinates, in metres.
+UNITS = {"m": 1.0, "mm": 1e-3}
+#: The local faces of each cell kind (meshio's node numbering), each seen from outside the cell.
+_FACES = {"tetra": [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]],
+          "hexahedron": [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]]}
+AXES = {"x": 0, "y": 1, "z": 2}
+
+
+@dataclass(frozen=True, eq=False)
+class Solid:
+    """Nodes ``points`` (``(n, 3)`` in metres), cells ``(m, 4 | 8)`` (meshio's numbering, tetrahedra of
+    positive volume), ``kind`` (``tetra`` or ``hexahedron``), ``faces``: face group -> its faces
+    (``(f, 3 | 4)`` node indices), ``cell_groups``: cell group -> the sorted indices of its cells."""
+
+    points: np.ndarray
+    cells: np.ndarray
+    kind: str
+    faces: dict = field(default_factory=dict)
+    cell_groups: dict = field(default_factory=dict)
+    source: str = "mesh"
+
+    @property
+    def volumes(self) -> np.ndarray:
+        """Each cell's volume [m^3] (a hexahedron's as its five tetrahedra's, exact for flat faces)."""
+        return np.abs(_volumes(self.points, self.cells, self.kind))
+
+    def nodes(self, group: str, option: str = "group") -> np.ndarray:
+        """The sorted nodes of a face group; ``option`` names it in an error."""
+        if group not in self.faces:
+            raise ParameterError(option, group, f"a face group of {self.source} ({', '.join(self.faces) or 'none'})")
+        return np.unique(self.faces[group])
+
+    def describe(self) -> str:
+        return (f"{self.source}: {len(self.points)} nodes, {len(self.cells)} {self.kind} cells, face groups "
+                f"{', '.join(self.faces) or 'none'}, cell groups {', '.join(self.cell_groups) or 'none'}")
+
+
+def _tet_volumes(p: np.ndarray, t: np.ndarray) -> np.ndarray:
+    a, b, c, d = (p[t[:, k]] for k in range(4))
+    return np.einsum("ij,ij->i", b - a, np.cross(c - a, d - a)) / 6.0
+
+
+#: A hexahedron as five tetrahedra (meshio's numbering), each positive on a positive hexahedron.
+_HEX_TETS = [[0, 1, 3, 4], [1, 2, 3, 6], [1, 4, 5, 6], [3, 6, 7, 4], [1, 3, 4, 6]]
+
+
+def _volumes(p: np.ndarray, cells: np.ndarray, kind: str) -> np.ndarray:
+    """Signed volumes (positive: the numbering turns as meshio's)."""
+    if kind == "tetra":
+        return _tet_volumes(p, cells)
+    return sum(_tet_volumes(p, cells[:, tet]) for tet in _HEX_TETS)
+
+
+def solid_from_meshio(mesh, source: str = "mesh", units: str | None = None) -> Solid:
+    """A `Solid` from a `meshio.Mesh` whose coordinates are in ``units`` (``"m"`` or ``"mm"``)."""
+    if units not in UNITS:
+        raise ParameterError("units", units, f"the length unit of the mesh's coordinates: {' or '.join(UNITS)} "
+                             "(a CAD model is often in mm; no default)")
+    try:
+        points, blocks = np.asarray(mesh.points, dtype=float), list(mesh.cells)
+    except (AttributeError, TypeError, ValueError):
+        raise ParameterError("mesh", source, "a meshio.Mesh") from None
+    def refuse(why):
+        raise ParameterError("mesh", source, why)
+    if points.ndim != 2 or points.shape[1] != 3 or not len(points):
+        refuse("a mesh of points in three dimensions")
+    if not np.all(np.isfinite(points)):
+        refuse("a mesh whose coordinates are finite")
+    if len(points) > MAX_MESH_NODES:
+        refuse(f"a mesh of at most {MAX_MESH_NODES} nodes (it has {len(points)})")
+    later = sorted({b.type for b in blocks if b.type in LATER})
+    if later:
+        refuse(f"linear tetrahedra or hexahedra (it has {', '.join(later)}: quadratic and other volume cells "
+               "come in a later release)")
+    kinds = sorted({b.type for b in blocks if b.type in VOLUME_KINDS})
+    if not kinds:
+        refuse(f"a mesh with volume cells ({', '.join(VOLUME_KINDS)}; it has "
+               f"{', '.join(sorted({b.type for b in blocks})) or 'none'}: a 2-D mesh is read by stickslip.fem.read_body)")
+    if len(kinds) > 1:
+        refuse(f"one kind of volume cell (it has {' and '.join(kinds)})")
+    kind = kinds[0]
+    extent = points.max(axis=0) - points.min(axis=0)
+    if extent.min() <= 1e-9 * extent.max():
+        refuse("a solid (its points lie in a plane: a 2-D mesh is read by stickslip.fem.read_body)")
+    volume_blocks = [k for k, b in enumerate(blocks) if b.type == kind]
+    cells = np.concatenate([np.asarray(blocks[k].data, dtype=np.int64) for k in volume_blocks])
+    if cells.min() < 0 or cells.max() >= len(points):
+        refuse("cells whose nodes are points of the mesh")
+    vol = _volumes(points, cells, kind)
+    mean = float(np.abs(vol).mean())
+    if not mean > 0 or np.any(np.abs(vol) < 1e-10 * mean):
+        refuse(f"cells of positive volume ({int(np.sum(np.abs(vol) < 1e-10 * max(mean, 1e-300)))} are degenerate)")
+    if kind == "tetra":
+        cells[vol < 0] = cells[vol < 0][:, [0, 2, 1, 3]]  # turned round
+    elif np.any(vol < 0):
+        refuse(f"hexahedra numbered as meshio numbers them ({int(np.sum(vol < 0))} are inverted)")
+    # the cells' groups and the faces' groups (gmsh physical groups through meshio's cell_sets)
+    offsets = np.cumsum([0] + [len(blocks[k].data) for k in volume_blocks])
+    cell_groups, faces = {}, {}
+    face_kind = VOLUME_KINDS[kind]
+    boundary = _boundary_faces(cells, kind)
+    for name, per_block in getattr(mesh, "cell_sets", {}).items():
+        if name.startswith("gmsh:"):
+            continue
+        own = [np.asarray(per_block[k], dtype=np.int64) + offsets[i] for i, k in enumerate(volume_blocks)
+               if k < len(per_block) and per_block[k] is not None and len(per_block[k])]
+        if own:
+            cell_groups[name] = np.unique(np.concatenate(own))
+        found = [np.asarray(blocks[k].data, dtype=np.int64)[np.asarray(per_block[k], dtype=np.int64)]
+                 for k, b in enumerate(blocks) if b.type == face_kind and k < len(per_block)
+                 and per_block[k] is not None and len(per_block[k])]
+        if found:
+            group = np.concatenate(found)
+            inside = [f for f in group if tuple(sorted(f)) not in boundary]
+            if inside:
+                refuse(f"face group {name!r} on the boundary ({len(inside)} of its {len(group)} faces are inside the "
+                       "solid or not faces of its cells)")
+            faces[name] = group
+    _connected(cells, len(points), source)
+    used = np.unique(cells)
+    if len(used) < len(points):  # points no cell uses (gmsh's geometry points): dropped, the numbering kept dense
+        new = -np.ones(len(points), dtype=np.int64)
+        new[used] = np.arange(len(used))
+        points, cells = points[used], new[cells]
+        faces = {name: new[f] for name, f in faces.items()}
+    return Solid(points * UNITS[units], cells, kind, faces, cell_groups, source)
+
+
+def _boundary_faces(cells: np.ndarray, kind: str) -> set:
+    """The faces (sorted node tuples) that belong to one cell only."""
+    counts: dict = {}
+    for local in _FACES[kind]:
+        for face in map(tuple, np.sort(cells[:, local], axis=1)):
+            counts[face] = counts.get(face, 0) + 1
+    return {f for f, k in counts.items() if k == 1}
+
+
+def _connected(cells: np.ndarray, n: int, source: str) -> None:
+    from scipy.sparse.csgraph import connected_components
+
+    rows = np.repeat(np.arange(len(cells)), cells.shape[1])
+    incidence = sp.csr_array((np.ones(rows.size), (rows, cells.ravel())), shape=(len(cells), n))
+    parts, labels = connected_components(incidence.T @ incidence, directed=False)
+    used = np.unique(cells)
+    parts = len(np.unique(labels[used]))
+    if parts > 1:
+        raise ParameterError("mesh", source, f"one connected solid (its cells form {parts} parts that share no node: "
+                             "parts meshed apart, their interface nodes duplicated; mesh them as one, or join them "
+                             "with a contact)")
+
+
+def read_solid(path, units: str | None = None) -> Solid:
+    """Read a 3-D mesh file (any format meshio reads) whose coordinates are in ``units``."""
+    import meshio
+
+    path = regular_input("mesh", path, "a mesh file meshio reads")
+    try:
+        with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
+            mesh = meshio.read(path)
+    except Exception as err:  # noqa: BLE001 - meshio raises many kinds
+        raise ParameterError("mesh", str(path), f"a mesh file meshio reads ({type(err).__name__}: {err})") from None
+    return solid_from_meshio(mesh, Path(path).name, units)
+
+
+@dataclass(frozen=True, eq=False)
+class SolidSystem:
+    """``K`` (CSR, N/m) and the lumped ``mass`` (kg per degree of freedom) of ``solid``."""
+
+    solid: Solid
+    K: sp.csr_array
+    mass: np.ndarray
+
+    @property
+    def n_dofs(self) -> int:
+        return 3 * len(self.solid.points)
+
+
+def _materials(solid: Solid, material) -> list[tuple[np.ndarray, Material]]:
+    """``(cells, Material)`` pairs covering every cell once."""
+    if isinstance(material, Material):
+        pairs = [(np.arange(len(solid.cells)), material)]
+    elif isinstance(material, dict) and material:
+        unknown = sorted(set(material) - set(solid.cell_groups))
+        if unknown:
+            raise ParameterError("material", unknown[0], f"a cell group of {solid.source} "
+                                 f"({', '.join(solid.cell_groups) or 'none'})")
+        pairs = [(solid.cell_groups[g], m) for g, m in material.items()]
+        for g, m in material.items():
+            if not isinstance(m, Material):
+                raise ParameterError(f"material[{g}]", m, "a stickslip.fem.Material")
+        seen = np.zeros(len(solid.cells), dtype=int)
+        for cells, _ in pairs:
+            seen[cells] += 1
+        if np.any(seen != 1):
+            raise ParameterError("material", sorted(material), f"one material for every cell ({int(np.sum(seen == 0))} "
+                                 f"cells have none, {int(np.sum(seen > 1))} two or more)")
+    else:
+        raise ParameterError("material", material, "a stickslip.fem.Material or {cell group: Material}")
+    for _, m in pairs:
+        if m.plane != "strain":
+            raise ParameterError("plane", m.plane, "'strain' (its default) for a solid: plane stress is a 2-D model")
+    return pairs
+
+
+def assemble_solid(solid: Solid, material) -> SolidSystem:
+    """Stiffness and lumped mass of ``solid`` with ``material`` (one, or one per cell group)."""
+    from skfem import Basis, BilinearForm, ElementHex1, ElementTetP1, ElementVector, MeshHex1, MeshTet1, asm
+    from skfem.helpers import ddot, dot, sym_grad, trace, eye
+    from skfem.io.meshio import INV_HEX_MAPPING
+
+    if not isinstance(solid, Solid):
+        raise ParameterError("solid", solid, "a stickslip.fem.solid.Solid (read_solid)")
+    pairs = _materials(solid, material)
+    if solid.kind == "tetra":
+        mesh, element = MeshTet1(solid.points.T, solid.cells.T, sort_t=False), ElementVector(ElementTetP1())
+    else:
+        mesh = MeshHex1(solid.points.T, solid.cells[:, INV_HEX_MAPPING[:8]].T, sort_t=False)
+        element = ElementVector(ElementHex1())
+    n = 3 * len(solid.points)
+    K, M = sp.csr_array((n, n)), sp.csr_array((n, n))
+    for cells, m in pairs:
+        lam = m.young * m.poisson / ((1 + m.poisson) * (1 - 2 * m.poisson))
+        mu = m.young / (2 * (1 + m.poisson))
+        basis = Basis(mesh, element, elements=cells)
+
+        @BilinearForm
+        def stiffness(u, v, w):
+            eu = sym_grad(u)
+            return ddot(2.0 * mu * eu + lam * eye(trace(eu), 3), sym_grad(v))
+
+        @BilinearForm
+        def inertia(u, v, w):
+            return m.density * dot(u, v)
+
+        K = K + asm(stiffness, basis)
+        M = M + asm(inertia, basis)
+    mass = np.asarray(M.sum(axis=1)).ravel()
+    return SolidSystem(solid, sp.csr_array(K), mass)
+
+
+def supported_dofs(solid: Solid, clamped=(), rollers=None) -> np.ndarray:
+    """The degrees of freedom held: every one of the nodes of each face group in ``clamped``, and
+    along its axis (``"x"``, ``"y"`` or ``"z"``) those of each face group of ``rollers``
+    (``{group: axis}``: a symmetry plane or a sliding support normal to that axis). A roller along
+    another direction comes in a later release."""
+    held = [3 * solid.nodes(g, "clamped")[:, None] + np.arange(3) for g in ([clamped] if isinstance(clamped, str)
+                                                                           else list(clamped))]
+    for group, axis in dict(rollers or {}).items():
+        if axis not in AXES:
+            raise ParameterError(f"rollers[{group}]", axis, "a coordinate axis: x, y or z")
+        held.append(3 * solid.nodes(group, "rollers") + AXES[axis])
+    return np.unique(np.concatenate([np.ravel(h) for h in held])) if held else np.zeros(0, dtype=np.int64)
+
+
+def solid_modes(system: SolidSystem, held=(), count: int = 6) -> tuple[np.ndarray, np.ndarray]:
+    """``(frequencies [Hz], shapes)``: the ``count`` lowest natural frequencies of ``system`` with the
+    degrees of freedom ``held`` at zero, and their shapes (one column per mode, every degree of freedom;
+    mass-normalised). Rigid-body modes of an unsupported solid come out near 0 Hz."""
+    from scipy.sparse.linalg import eigsh
+
+    if not isinstance(system, SolidSystem):
+        raise ParameterError("system", system, "a SolidSystem (assemble_solid)")
+    n = system.n_dofs
+    held = np.asarray(held, dtype=np.int64).ravel()
+    if held.size and (held.min() < 0 or held.max() >= n):
+        raise ParameterError("held", f"{held.size} indices", f"degrees of freedom of the solid (0 to {n - 1})")
+    free = np.setdiff1d(np.arange(n), held)
+    k = checked_count("count", count, max(1, min(len(free) - 1, 500)), "modes")
+    Kf = system.K[free][:, free]
+    Mf = sp.diags_array(system.mass[free])
+    shift = -1e-6 * float(np.max(Kf.diagonal() / system.mass[free]))  # below zero: a free solid's rigid modes
+    values, vectors = eigsh(sp.csc_array(Kf), k=k, M=sp.csc_array(Mf), sigma=shift, which="LM")
+    order = np.argsort(values)
+    shapes = np.zeros((n, k))
+    shapes[free] = vectors[:, order]
+    return np.sqrt(np.clip(values[order], 0.0, None)) / (2 * math.pi), shapes
