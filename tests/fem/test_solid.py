@@ -178,3 +178,45 @@ def test_turned_tetrahedra_are_turned_back_and_an_inside_face_group_is_refused()
     with pytest.raises(ParameterError, match="face group 'mid' on the boundary"):
         solid_from_meshio(box((1.0, 1.0, 1.0), (2, 1, 1), middle=True), units="m")
     assert "mid" not in solid.faces and set(solid.faces) == {"x0", "x1", "y0", "y1", "z0", "z1"}
+
+
+PAD = """
+import gmsh, sys
+gmsh.initialize()
+gmsh.option.setNumber("General.Terminal", 0)
+lining = gmsh.model.occ.addBox(0, 0, 0, 100, 50, 10)  # millimetres, as CAD draws it
+plate = gmsh.model.occ.addBox(0, 0, 10, 100, 50, 5)
+gmsh.model.occ.fragment([(3, lining)], [(3, plate)])  # one mesh: the interface's nodes shared
+gmsh.model.occ.synchronize()
+(_, a), (_, b) = gmsh.model.getEntities(3)
+gmsh.model.addPhysicalGroup(3, [a], name="lining")
+gmsh.model.addPhysicalGroup(3, [b], name="backplate")
+at = lambda z: [s for _, s in gmsh.model.getEntities(2) if abs(gmsh.model.occ.getCenterOfMass(2, s)[2] - z) < 1e-9]
+gmsh.model.addPhysicalGroup(2, at(0.0), name="friction")
+gmsh.model.addPhysicalGroup(2, at(15.0), name="piston")
+gmsh.option.setNumber("Mesh.MeshSizeMax", 5.0)
+gmsh.model.mesh.generate(3)
+gmsh.write(sys.argv[1])
+gmsh.finalize()
+"""
+
+
+def test_a_gmsh_pad_of_two_materials_in_millimetres_is_read_with_its_groups_and_weighs_what_its_parts_weigh(tmp_path):
+    """A user's pad: a lining on a backplate drawn in millimetres with gmsh's OCC kernel, physical groups for
+    both volumes and two faces. Read in mm it is 0.1 m long; its mass is each part's density times its
+    box's volume (closed form, to round-off); clamped at the piston face it has no rigid mode."""
+    import subprocess
+    import sys
+
+    (tmp_path / "pad.py").write_text(PAD)
+    subprocess.run([sys.executable, "pad.py", "pad.msh"], cwd=tmp_path, check=True)
+    solid = read_solid(tmp_path / "pad.msh", "mm")
+    assert set(solid.cell_groups) == {"lining", "backplate"} and set(solid.faces) == {"friction", "piston"}
+    assert solid.points.max(axis=0) == pytest.approx([0.1, 0.05, 0.015], rel=1e-12)
+    np.testing.assert_allclose(solid.points[solid.nodes("friction"), 2], 0.0, atol=1e-15)
+    lining, steel = Material(young=1e9, poisson=0.25, density=2500.0), STEEL
+    system = assemble_solid(solid, {"lining": lining, "backplate": steel})
+    expected = 0.1 * 0.05 * (0.010 * lining.density + 0.005 * steel.density)
+    assert system.mass[2::3].sum() == pytest.approx(expected, rel=1e-12)
+    f, _ = solid_modes(system, supported_dofs(solid, clamped="piston"), count=2)
+    assert f[0] > 1000.0

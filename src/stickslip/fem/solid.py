@@ -258,10 +258,11 @@ def assemble_solid(solid: Solid, material) -> SolidSystem:
     if not isinstance(solid, Solid):
         raise ParameterError("solid", solid, "a stickslip.fem.solid.Solid (read_solid)")
     pairs = _materials(solid, material)
+    p = np.ascontiguousarray(solid.points.T)
     if solid.kind == "tetra":
-        mesh, element = MeshTet1(solid.points.T, solid.cells.T, sort_t=False), ElementVector(ElementTetP1())
+        mesh, element = MeshTet1(p, np.ascontiguousarray(solid.cells.T), sort_t=False), ElementVector(ElementTetP1())
     else:
-        mesh = MeshHex1(solid.points.T, solid.cells[:, INV_HEX_MAPPING[:8]].T, sort_t=False)
+        mesh = MeshHex1(p, np.ascontiguousarray(solid.cells[:, INV_HEX_MAPPING[:8]].T), sort_t=False)
         element = ElementVector(ElementHex1())
     n = 3 * len(solid.points)
     K, M = sp.csr_array((n, n)), sp.csr_array((n, n))
