@@ -236,3 +236,18 @@ def test_a_cycle_with_reverse_slip_counts_it_in_its_slip_time():
     assert cycle.reverse_slip_time > 0.1 * cycle.period
     assert cycle.stick_time + cycle.slip_time == pytest.approx(cycle.period, rel=1e-12)
     assert cycle.v_max > 0.5  # faster than the belt: reverse slip
+
+
+def test_under_strong_damping_the_default_start_is_the_models_own_not_an_x0_refused_as_the_users():
+    """The default start of a cycle search is the stick segment's upper end ``(f_s N - c V) / k``: with
+    c V >> f_s N it lies c V / k from steady sliding, and the start's bound (a multiple of the model's
+    length scale) refused it as ``invalid x0 = -599999.6``, an option the user never gave (found by the
+    deep fuzz: `oscillator continue --damping 3000001`). The length scale holds c V / k: the search runs
+    and says what it finds (here no cycle: the orbit is overdamped)."""
+    osc = Oscillator(1.0, 1.0, 1.0, 0.2, Coulomb(0.6, 0.4), damping=3000001.0)
+    x0, v0 = osc.start(osc.stick_limits[1], osc.belt_speed)
+    assert x0 == osc.stick_limits[1]
+    with pytest.raises(NoSolutionError):
+        limit_cycle(osc)
+    with pytest.raises(ParameterError, match="x0"):  # a start the user gives far beyond every scale is still refused
+        osc.start(osc.equilibrium - 1e15, osc.belt_speed)

@@ -123,19 +123,21 @@ class Oscillator:
 
     def start(self, x0: float, v0: float) -> tuple[float, float]:
         """A starting state ``(x0, v0)`` within `MAX_START` of this oscillator's own scales: the
-        displacement from steady sliding at most that many times ``L = max(f_s N / k, V / w)``,
-        the velocity from the belt's at most that many times ``w L`` (farther starts are no
-        friction problem: the spring alone carries them for a time beyond any event loop)."""
+        displacement from steady sliding at most that many times ``L = max(f_s N / k, V / w, c V / k)``
+        (``c V / k``: the stick segment's shift by the damping force), the velocity from the belt's at
+        most that many times ``w L`` (farther starts are no friction problem: the spring alone carries
+        them for a time beyond any event loop)."""
         x0, v0 = Q.check("x0", x0), Q.check("v0", v0)
-        length = max(self.friction.static * self.normal_force / self.stiffness, self.belt_speed / self.omega)
+        length = max(self.friction.static * self.normal_force / self.stiffness, self.belt_speed / self.omega,
+                     abs(self.damping * self.belt_speed) / self.stiffness)
+        scales = ("mass", "stiffness", "normal_force", "belt_speed", "fs", "damping")
         if abs(x0 - self.equilibrium) > MAX_START * length:
             raise ParameterError("x0", x0, f"within {MAX_START:g} x {length:.4g} m of steady sliding at "
-                                 f"{self.equilibrium:.6g} m (the oscillator's length scale max(f_s N/k, V/w))",
-                                 also=("mass", "stiffness", "normal_force", "belt_speed", "fs"))
+                                 f"{self.equilibrium:.6g} m (the oscillator's length scale max(f_s N/k, V/w, c V/k))",
+                                 also=scales)
         if abs(v0 - self.belt_speed) > MAX_START * self.omega * length:
             raise ParameterError("v0", v0, f"within {MAX_START:g} x {self.omega * length:.4g} m/s of the belt speed "
-                                 f"{self.belt_speed:g} m/s (w times the oscillator's length scale)",
-                                 also=("mass", "stiffness", "normal_force", "belt_speed", "fs"))
+                                 f"{self.belt_speed:g} m/s (w times the oscillator's length scale)", also=scales)
         return x0, v0
 
     @property
