@@ -430,6 +430,11 @@ MUTANTS: list[dict] = [
     _m("solid-turn", F + "solid.py", "cells[vol < 0] = cells[vol < 0][:, [0, 2, 1, 3]]  # turned round",
        "cells[vol < 0] = cells[vol < 0][:, [0, 1, 2, 3]]  # turned round",
        "3-D solid: tetrahedra numbered the other way not turned round", [T + "fem/test_solid.py"]),
+    _m("solid-pressure-sign", F + "solid.py", "return -load.pressure * dot(w.n, v)  # w.n: the outward normal",
+       "return load.pressure * dot(w.n, v)  # w.n: the outward normal",
+       "3-D solid: a pressure pulls the face out instead of pushing it in", [T + "fem/test_solid.py"]),
+    _m("solid-rigid-rotations", F + "solid.py", "rigid[:, :, 3 + k] = np.cross(w, r)", "rigid[:, :, 3 + k] = 0.0",
+       "3-D solid: the static solve's support check forgets the rotations", [T + "fem/test_solid.py"]),
 ]
 
 UNCAUGHT: list[dict] = []  # every planted bug of the list is caught (issue 44 moved the last four)

@@ -8,8 +8,9 @@ import numpy as np
 import pytest
 
 from stickslip.errors import ParameterError
-from stickslip.fem import Material
-from stickslip.fem.solid import assemble_solid, read_solid, solid_from_meshio, solid_modes, supported_dofs
+from stickslip.fem import Load, Material
+from stickslip.fem.solid import (assemble_solid, read_solid, solid_from_meshio, solid_modes, solid_static,
+                                 supported_dofs)
 
 STEEL = Material(young=2.1e11, poisson=0.3, density=7850.0)
 #: A structured box's cube split into six tetrahedra round its diagonal 0-6 (Kuhn): conforming across cubes.
@@ -220,3 +221,40 @@ def test_a_gmsh_pad_of_two_materials_in_millimetres_is_read_with_its_groups_and_
     assert system.mass[2::3].sum() == pytest.approx(expected, rel=1e-12)
     f, _ = solid_modes(system, supported_dofs(solid, clamped="piston"), count=2)
     assert f[0] > 1000.0
+
+
+@pytest.mark.parametrize("kind", ["tetra", "hexahedron"])
+def test_a_prism_on_rollers_pressed_at_its_end_shortens_as_the_constrained_modulus_says_exactly(kind):
+    """Pressure p on the end x = L, the other faces on rollers: u_x = -p x / (lambda + 2 mu), u_y = u_z = 0,
+    a linear field, which linear cells hold exactly (to round-off; a perturbed interior would still)."""
+    solid = solid_from_meshio(box((0.5, 0.1, 0.2), (5, 2, 3), kind), units="m")
+    p = 3e6
+    system = assemble_solid(solid, STEEL, loads=[Load("x1", pressure=p)])
+    u = solid_static(system, supported_dofs(solid, rollers=ROLLERS)).reshape(-1, 3)
+    lam = STEEL.young * STEEL.poisson / ((1 + STEEL.poisson) * (1 - 2 * STEEL.poisson))
+    mu = STEEL.young / (2 * (1 + STEEL.poisson))
+    exact = -p * solid.points[:, 0] / (lam + 2 * mu)
+    scale = np.abs(exact).max()
+    assert np.abs(u[:, 0] - exact).max() <= 1e-9 * scale
+    assert np.abs(u[:, 1:]).max() <= 1e-9 * scale
+
+
+def test_a_pressure_on_each_face_of_a_box_pushes_with_p_times_its_area_along_its_inward_normal():
+    """The load's resultant on each face group: -p A n (n outward), and no moment about the face's centre."""
+    solid = solid_from_meshio(box((0.4, 0.2, 0.1), (4, 3, 2)), units="m")
+    size = np.array([0.4, 0.2, 0.1])
+    for name in ("x0", "x1", "y0", "y1", "z0", "z1"):
+        axis, sign = "xyz".index(name[0]), (1.0 if name[1] == "1" else -1.0)
+        f = assemble_solid(solid, STEEL, loads=[Load(name, pressure=2e5)]).load.reshape(-1, 3)
+        area = np.prod(np.delete(size, axis))
+        expected = np.zeros(3)
+        expected[axis] = -2e5 * area * sign
+        np.testing.assert_allclose(f.sum(axis=0), expected, atol=1e-9 * 2e5 * area)
+        centre = size / 2
+        centre[axis] = size[axis] if sign > 0 else 0.0
+        moment = np.cross(solid.points - centre, f).sum(axis=0)
+        assert np.abs(moment).max() <= 1e-9 * 2e5 * area * size.max()
+    with pytest.raises(ParameterError, match="load.group"):
+        assemble_solid(solid, STEEL, loads=[Load("x2", pressure=1.0)])
+    with pytest.raises(ParameterError, match="rigid motion"):
+        solid_static(assemble_solid(solid, STEEL, loads=[Load("x1", pressure=1.0)]))

@@ -39,7 +39,7 @@ from ..validation import count as checked_count, regular_input
 from .assembly import Material
 
 __all__ = ["Solid", "SolidSystem", "read_solid", "solid_from_meshio", "assemble_solid", "supported_dofs",
-           "solid_modes", "VOLUME_KINDS", "UNITS"]
+           "solid_modes", "solid_static", "VOLUME_KINDS", "UNITS"]
 
 #: meshio volume cells read, and the faces of their boundary groups.
 VOLUME_KINDS = {"tetra": "triangle", "hexahedron": "quad"}
@@ -211,11 +211,13 @@ def read_solid(path, units: str | None = None) -> Solid:
 
 @dataclass(frozen=True, eq=False)
 class SolidSystem:
-    """``K`` (CSR, N/m) and the lumped ``mass`` (kg per degree of freedom) of ``solid``."""
+    """``K`` (CSR, N/m), the lumped ``mass`` (kg per degree of freedom) and the constant ``load``
+    (N per degree of freedom, from pressures on face groups) of ``solid``."""
 
     solid: Solid
     K: sp.csr_array
     mass: np.ndarray
+    load: np.ndarray
 
     @property
     def n_dofs(self) -> int:
@@ -249,21 +251,45 @@ def _materials(solid: Solid, material) -> list[tuple[np.ndarray, Material]]:
     return pairs
 
 
-def assemble_solid(solid: Solid, material) -> SolidSystem:
-    """Stiffness and lumped mass of ``solid`` with ``material`` (one, or one per cell group)."""
-    from skfem import Basis, BilinearForm, ElementHex1, ElementTetP1, ElementVector, MeshHex1, MeshTet1, asm
-    from skfem.helpers import ddot, dot, sym_grad, trace, eye
+def _skfem(solid: Solid):
+    """The scikit-fem mesh of ``solid`` (node ``i`` its point ``i``) and the vector element of its cells."""
+    from skfem import ElementHex1, ElementTetP1, ElementVector, MeshHex1, MeshTet1
     from skfem.io.meshio import INV_HEX_MAPPING
+
+    p = np.ascontiguousarray(solid.points.T)
+    if solid.kind == "tetra":
+        return MeshTet1(p, np.ascontiguousarray(solid.cells.T), sort_t=False), ElementVector(ElementTetP1())
+    t = np.ascontiguousarray(solid.cells[:, INV_HEX_MAPPING[:8]].T)
+    return MeshHex1(p, t, sort_t=False), ElementVector(ElementHex1())
+
+
+def _facets(mesh, faces: np.ndarray) -> np.ndarray:
+    """The scikit-fem facet numbers of ``faces`` (node indices, any order within a face)."""
+    index = {tuple(sorted(f)): k for k, f in enumerate(mesh.facets.T.tolist())}
+    return np.array([index[tuple(sorted(f))] for f in faces.tolist()], dtype=np.int64)
+
+
+def assemble_solid(solid: Solid, material, loads=()) -> SolidSystem:
+    """Stiffness and lumped mass of ``solid`` with ``material`` (one, or one per cell group), and the
+    load of ``loads``: `stickslip.fem.Load` on face groups, a uniform ``pressure`` [Pa] (positive: into
+    the solid) on each (a traction comes in a later release)."""
+    from skfem import Basis, BilinearForm, FacetBasis, LinearForm, asm
+    from skfem.helpers import ddot, dot, eye, sym_grad, trace
+
+    from .boundary import Load
 
     if not isinstance(solid, Solid):
         raise ParameterError("solid", solid, "a stickslip.fem.solid.Solid (read_solid)")
     pairs = _materials(solid, material)
-    p = np.ascontiguousarray(solid.points.T)
-    if solid.kind == "tetra":
-        mesh, element = MeshTet1(p, np.ascontiguousarray(solid.cells.T), sort_t=False), ElementVector(ElementTetP1())
-    else:
-        mesh = MeshHex1(p, np.ascontiguousarray(solid.cells[:, INV_HEX_MAPPING[:8]].T), sort_t=False)
-        element = ElementVector(ElementHex1())
+    loads = list(loads) if isinstance(loads, (list, tuple)) else [loads]
+    for load in loads:
+        if not isinstance(load, Load):
+            raise ParameterError("loads", load, "stickslip.fem.Load (a pressure on a face group)")
+        solid.nodes(load.group, "load.group")
+        if any(load.traction):
+            raise ParameterError("load.traction", load.traction, "(0, 0) on a solid: a traction of three components "
+                                 "comes in a later release (a pressure is taken)")
+    mesh, element = _skfem(solid)
     n = 3 * len(solid.points)
     K, M = sp.csr_array((n, n)), sp.csr_array((n, n))
     for cells, m in pairs:
@@ -282,8 +308,45 @@ def assemble_solid(solid: Solid, material) -> SolidSystem:
 
         K = K + asm(stiffness, basis)
         M = M + asm(inertia, basis)
+    f = np.zeros(n)
+    for load in loads:
+        if load.pressure == 0.0:
+            continue
+        facets = FacetBasis(mesh, element, facets=_facets(mesh, solid.faces[load.group]))
+
+        @LinearForm
+        def pushed(v, w):
+            return -load.pressure * dot(w.n, v)  # w.n: the outward normal
+
+        f += asm(pushed, facets)
     mass = np.asarray(M.sum(axis=1)).ravel()
-    return SolidSystem(solid, sp.csr_array(K), mass)
+    return SolidSystem(solid, sp.csr_array(K), mass, f)
+
+
+def solid_static(system: SolidSystem, held=()) -> np.ndarray:
+    """The static displacement under the system's load with the degrees of freedom ``held`` at zero
+    (every degree of freedom; a sparse direct solve). A solid free to move as a rigid body is refused."""
+    from scipy.sparse.linalg import splu
+
+    if not isinstance(system, SolidSystem):
+        raise ParameterError("system", system, "a SolidSystem (assemble_solid)")
+    n = system.n_dofs
+    held = np.asarray(held, dtype=np.int64).ravel()
+    if held.size and (held.min() < 0 or held.max() >= n):
+        raise ParameterError("held", f"{held.size} indices", f"degrees of freedom of the solid (0 to {n - 1})")
+    r = system.solid.points - system.solid.points.mean(axis=0)
+    rigid = np.zeros((len(r), 3, 6))  # the six rigid motions: three translations, three rotations w x r
+    rigid[:, [0, 1, 2], [0, 1, 2]] = 1.0
+    for k, w in enumerate(np.eye(3)):
+        rigid[:, :, 3 + k] = np.cross(w, r)
+    rigid = rigid.reshape(n, 6)
+    if not held.size or np.linalg.matrix_rank(rigid[held], tol=1e-9 * np.abs(rigid).max()) < 6:
+        raise ParameterError("held", f"{held.size} degrees of freedom", "supports that hold every rigid motion "
+                             "(three translations and three rotations; some are free)")
+    free = np.setdiff1d(np.arange(n), held)
+    u = np.zeros(n)
+    u[free] = splu(sp.csc_array(system.K[free][:, free])).solve(system.load[free])
+    return u
 
 
 def supported_dofs(solid: Solid, clamped=(), rollers=None) -> np.ndarray:
