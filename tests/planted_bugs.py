@@ -446,6 +446,16 @@ MUTANTS: list[dict] = [
     _m("solid-turn-middles", F + "solid.py", "[0, 2, 1, 3, 6, 5, 4, 7, 9, 8][:cells.shape[1]]",
        "[0, 2, 1, 3, 4, 5, 6, 7, 8, 9][:cells.shape[1]]",
        "3-D solid: a turned quadratic tetrahedron keeps its edge middles where they were", [T + "fem/test_solid.py"]),
+    _m("solid-ortho-turn-transposed", F + "solid.py", 'turned = np.einsum("pi,qj,rk,sl,ijkl->pqrs", A, A, A, A, tensor)',
+       'turned = np.einsum("ip,jq,kr,ls,ijkl->pqrs", A, A, A, A, tensor)',
+       "3-D orthotropic solid: its stiffness turned by the inverse of its axes", [T + "fem/test_solid.py"]),
+    _m("solid-ortho-shear-factor", F + "solid.py", "vu = [eu[i, j] * (1.0 if i == j else 2.0) for i, j in VOIGT]",
+       "vu = [eu[i, j] for i, j in VOIGT]",
+       "3-D orthotropic solid: tensor shear strains where the Voigt stiffness takes engineering ones",
+       [T + "fem/test_solid.py"]),
+    _m("solid-ortho-g13-g23", F + "solid.py", "S[3, 3], S[4, 4], S[5, 5] = 1 / self.g23, 1 / self.g13, 1 / self.g12",
+       "S[3, 3], S[4, 4], S[5, 5] = 1 / self.g13, 1 / self.g23, 1 / self.g12",
+       "3-D orthotropic solid: the 1-3 and 2-3 shear moduli swapped", [T + "fem/test_solid.py"]),
 ]
 
 UNCAUGHT: list[dict] = []  # every planted bug of the list is caught (issue 44 moved the last four)

@@ -36,7 +36,7 @@ from .pair import PairProblem, PairSteady, Rotation, Translation, steady_pair
 from .pair_run import PairRun, PairScheme, integrate_pair
 from .run import BodyInitial, BodyRun, classify_body, integrate_body, perturbed_steady_body, preload_body
 from .scheme import BodyScheme, ContactProblem
-from .solid import (Solid, SolidSystem, assemble_solid, read_solid, solid_from_meshio, solid_modes, solid_static,
+from .solid import (OrthotropicSolid, Solid, SolidSystem, assemble_solid, read_solid, solid_from_meshio, solid_modes, solid_static,
                     supported_dofs)
 from .static import SteadyContact, steady_contact
 from .surfaces import ContactFrames, RigidCylinder, RigidFlat, contact_frames
@@ -47,4 +47,4 @@ __all__ = ["Body", "read_body", "body_from_meshio", "CELL_KINDS", "Material", "B
            "integrate_body", "classify_body", "perturbed_steady_body", "preload_body", "Spring", "Load",
            "PairProblem", "PairSteady", "Rotation", "Translation", "steady_pair", "PairScheme", "PairRun",
            "integrate_pair", "Solid", "SolidSystem", "read_solid", "solid_from_meshio", "assemble_solid",
-           "supported_dofs", "solid_modes", "solid_static"]
+           "supported_dofs", "solid_modes", "solid_static", "OrthotropicSolid"]

@@ -36,12 +36,12 @@ import numpy as np
 import scipy.sparse as sp
 
 from ..errors import ParameterError
-from ..quantities import MAX_MESH_NODES
+from ..quantities import FEM as Q, MAX_MESH_NODES
 from ..validation import count as checked_count, regular_input
 from .assembly import Material
 
-__all__ = ["Solid", "SolidSystem", "read_solid", "solid_from_meshio", "assemble_solid", "supported_dofs",
-           "solid_modes", "solid_static", "VOLUME_KINDS", "UNITS"]
+__all__ = ["Solid", "SolidSystem", "OrthotropicSolid", "read_solid", "solid_from_meshio", "assemble_solid",
+           "supported_dofs", "solid_modes", "solid_static", "VOLUME_KINDS", "UNITS"]
 
 #: meshio volume cells read, and the faces of their boundary groups.
 VOLUME_KINDS = {"tetra": "triangle", "hexahedron": "quad", "tetra10": "triangle6"}
@@ -228,9 +228,88 @@ class SolidSystem:
         return 3 * len(self.solid.points)
 
 
+#: Voigt order of the stress and (engineering) strain components: 11, 22, 33, 23, 13, 12.
+VOIGT = ((0, 0), (1, 1), (2, 2), (1, 2), (0, 2), (0, 1))
+
+
+@dataclass(frozen=True)
+class OrthotropicSolid:
+    """An orthotropic linear elastic material in three dimensions (a brake lining): Young's moduli ``e1,
+    e2, e3`` [Pa] along its axes, Poisson's ratios ``nu12, nu13, nu23`` (``nu_ij``: the contraction along
+    ``j`` per strain along ``i`` under a stress along ``i``), shear moduli ``g12, g13, g23`` [Pa],
+    ``density`` [kg/m^3], and its axes 1 and 2 as two orthogonal directions ``axis1``, ``axis2`` in the
+    solid's x, y, z (default x and y; axis 3 is their cross product). A transversely isotropic lining
+    (isotropic in its plane, its axis 3 the pressing direction) is the case ``e1 = e2``, ``nu13 = nu23``,
+    ``g13 = g23``, ``g12 = e1 / (2 (1 + nu12))``. The compliance must be positive definite."""
+
+    e1: float
+    e2: float
+    e3: float
+    nu12: float
+    nu13: float
+    nu23: float
+    g12: float
+    g13: float
+    g23: float
+    density: float
+    axis1: tuple = (1.0, 0.0, 0.0)
+    axis2: tuple = (0.0, 1.0, 0.0)
+
+    def __post_init__(self):
+        for name in ("e1", "e2", "e3", "nu12", "nu13", "nu23", "g12", "g13", "g23", "density"):
+            object.__setattr__(self, name, Q.check(name, getattr(self, name)))
+        axes = []
+        for name in ("axis1", "axis2"):
+            try:
+                a = np.asarray(getattr(self, name), dtype=float)
+            except (TypeError, ValueError):
+                a = np.zeros(0)
+            if a.shape != (3,) or not np.all(np.isfinite(a)) or not np.linalg.norm(a) > 0:
+                raise ParameterError(name, getattr(self, name), "a direction: three finite numbers, not all zero")
+            axes.append(a / np.linalg.norm(a))
+        if abs(axes[0] @ axes[1]) > 1e-9:
+            raise ParameterError("axis2", self.axis2, f"a direction orthogonal to axis1 = {self.axis1} (cosine "
+                                 f"{axes[0] @ axes[1]:.3g})")
+        object.__setattr__(self, "axis1", tuple(axes[0]))
+        object.__setattr__(self, "axis2", tuple(axes[1]))
+        if not np.all(np.linalg.eigvalsh(self.compliance[:3, :3]) > 0):
+            raise ParameterError("nu12", self.nu12, "Poisson's ratios that make the compliance positive definite (the "
+                                 "material must store energy under every strain)", also=("nu13", "nu23"))
+
+    @property
+    def compliance(self) -> np.ndarray:
+        """``S`` [1/Pa] in the material axes (6 x 6, Voigt with engineering shear strains)."""
+        e1, e2, e3, n12, n13, n23 = self.e1, self.e2, self.e3, self.nu12, self.nu13, self.nu23
+        S = np.zeros((6, 6))
+        S[:3, :3] = [[1 / e1, -n12 / e1, -n13 / e1], [-n12 / e1, 1 / e2, -n23 / e2], [-n13 / e1, -n23 / e2, 1 / e3]]
+        S[3, 3], S[4, 4], S[5, 5] = 1 / self.g23, 1 / self.g13, 1 / self.g12
+        return S
+
+    @property
+    def stiffness(self) -> np.ndarray:
+        """``D`` [Pa] in the solid's x, y, z (6 x 6, Voigt): the material's, turned onto its axes as a
+        fourth-order tensor, ``C_pqrs = A_pi A_qj A_rk A_sl C_ijkl`` (``A``'s columns the axes)."""
+        C_m = np.linalg.inv(self.compliance)
+        tensor = np.zeros((3, 3, 3, 3))
+        for I, (i, j) in enumerate(VOIGT):
+            for J, (k, l) in enumerate(VOIGT):
+                for a, b in {(i, j), (j, i)}:
+                    for c, d in {(k, l), (l, k)}:
+                        tensor[a, b, c, d] = C_m[I, J]
+        a1, a2 = np.array(self.axis1), np.array(self.axis2)
+        A = np.column_stack([a1, a2, np.cross(a1, a2)])
+        turned = np.einsum("pi,qj,rk,sl,ijkl->pqrs", A, A, A, A, tensor)
+        return np.array([[turned[i, j, k, l] for k, l in VOIGT] for i, j in VOIGT])
+
+    @property
+    def young(self) -> float:
+        """The stiffest of the moduli [Pa] (a scale of strains and loads)."""
+        return float(max(self.e1, self.e2, self.e3))
+
+
 def _materials(solid: Solid, material) -> list[tuple[np.ndarray, Material]]:
     """``(cells, Material)`` pairs covering every cell once."""
-    if isinstance(material, Material):
+    if isinstance(material, (Material, OrthotropicSolid)):
         pairs = [(np.arange(len(solid.cells)), material)]
     elif isinstance(material, dict) and material:
         unknown = sorted(set(material) - set(solid.cell_groups))
@@ -239,8 +318,8 @@ def _materials(solid: Solid, material) -> list[tuple[np.ndarray, Material]]:
                                  f"({', '.join(solid.cell_groups) or 'none'})")
         pairs = [(solid.cell_groups[g], m) for g, m in material.items()]
         for g, m in material.items():
-            if not isinstance(m, Material):
-                raise ParameterError(f"material[{g}]", m, "a stickslip.fem.Material")
+            if not isinstance(m, (Material, OrthotropicSolid)):
+                raise ParameterError(f"material[{g}]", m, "a stickslip.fem.Material or OrthotropicSolid")
         seen = np.zeros(len(solid.cells), dtype=int)
         for cells, _ in pairs:
             seen[cells] += 1
@@ -248,9 +327,10 @@ def _materials(solid: Solid, material) -> list[tuple[np.ndarray, Material]]:
             raise ParameterError("material", sorted(material), f"one material for every cell ({int(np.sum(seen == 0))} "
                                  f"cells have none, {int(np.sum(seen > 1))} two or more)")
     else:
-        raise ParameterError("material", material, "a stickslip.fem.Material or {cell group: Material}")
+        raise ParameterError("material", material, "a stickslip.fem.Material or OrthotropicSolid, or "
+                             "{cell group: one of them}")
     for _, m in pairs:
-        if m.plane != "strain":
+        if isinstance(m, Material) and m.plane != "strain":
             raise ParameterError("plane", m.plane, "'strain' (its default) for a solid: plane stress is a 2-D model")
     return pairs
 
@@ -318,14 +398,24 @@ def assemble_solid(solid: Solid, material, loads=()) -> SolidSystem:
     to_ours = sp.csr_array((np.ones(n), (ours, np.arange(n))), shape=(n, n))  # scikit-fem's dofs -> ours
     K, M = sp.csr_array((n, n)), sp.csr_array((n, n))
     for cells, m in pairs:
-        lam = m.young * m.poisson / ((1 + m.poisson) * (1 - 2 * m.poisson))
-        mu = m.young / (2 * (1 + m.poisson))
         basis = Basis(mesh, element, elements=cells)
+        if isinstance(m, OrthotropicSolid):
+            D = m.stiffness
 
-        @BilinearForm
-        def stiffness(u, v, w):
-            eu = sym_grad(u)
-            return ddot(2.0 * mu * eu + lam * eye(trace(eu), 3), sym_grad(v))
+            @BilinearForm
+            def stiffness(u, v, w):  # sum_IJ D_IJ eps_J(u) eps_I(v), Voigt with engineering shears
+                eu, ev = sym_grad(u), sym_grad(v)
+                vu = [eu[i, j] * (1.0 if i == j else 2.0) for i, j in VOIGT]
+                vv = [ev[i, j] * (1.0 if i == j else 2.0) for i, j in VOIGT]
+                return sum(D[I, J] * vu[J] * vv[I] for I in range(6) for J in range(6) if D[I, J] != 0.0)
+        else:
+            lam = m.young * m.poisson / ((1 + m.poisson) * (1 - 2 * m.poisson))
+            mu = m.young / (2 * (1 + m.poisson))
+
+            @BilinearForm
+            def stiffness(u, v, w):
+                eu = sym_grad(u)
+                return ddot(2.0 * mu * eu + lam * eye(trace(eu), 3), sym_grad(v))
 
         @BilinearForm
         def inertia(u, v, w):
