@@ -456,6 +456,10 @@ MUTANTS: list[dict] = [
     _m("solid-ortho-g13-g23", F + "solid.py", "S[3, 3], S[4, 4], S[5, 5] = 1 / self.g23, 1 / self.g13, 1 / self.g12",
        "S[3, 3], S[4, 4], S[5, 5] = 1 / self.g13, 1 / self.g23, 1 / self.g12",
        "3-D orthotropic solid: the 1-3 and 2-3 shear moduli swapped", [T + "fem/test_solid.py"]),
+    _m("cad-step-units", F + "cad.py", 'gmsh.option.setString("Geometry.OCCTargetUnit", "M")',
+       'gmsh.option.setString("Geometry.OCCTargetUnit", "MM")',
+       "CAD: a STEP imported in millimetres into a mesh read as metres (a brake 1000 times too large)",
+       [T + "fem/test_solid.py"]),
 ]
 
 UNCAUGHT: list[dict] = []  # every planted bug of the list is caught (issue 44 moved the last four)

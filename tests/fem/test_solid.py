@@ -413,3 +413,45 @@ def test_a_shear_wave_along_an_orthotropic_prism_travels_at_the_shear_modulus_of
     f, shapes = solid_modes(assemble_solid(solid, m), np.unique(held), count=4)
     moving = [k for k in range(len(f)) if np.abs(shapes[polarisation::3, k]).max() > 0.99 * np.abs(shapes[:, k]).max()]
     assert abs(f[moving[0]] / exact - 1.0) < 0.01, (f, exact)
+
+
+STEP = """
+import gmsh, sys
+gmsh.initialize()
+gmsh.option.setNumber("General.Terminal", 0)
+gmsh.model.occ.addBox(0, 0, 0, 100, 50, 10)  # a lining, in millimetres (the STEP's header says so)
+gmsh.model.occ.addBox(0, 0, 10, 100, 50, 5)  # its backplate
+gmsh.model.occ.synchronize()
+gmsh.write(sys.argv[1])
+gmsh.finalize()
+"""
+
+
+@pytest.mark.parametrize("order", [1, 2])
+def test_a_pad_from_a_step_file_in_millimetres_is_meshed_in_metres_with_its_groups(tmp_path, order):
+    """A STEP written in mm (LENGTH_UNIT ... SI_UNIT(.MILLI.,.METRE.)) by gmsh's OCC kernel: meshed by
+    `mesh_step`, read in metres it is 0.1 m long (not 100 m), its two solids share their interface (one
+    connected solid), each its own cell group, the friction and piston faces where the planes say; its
+    mass each part's density times its box's volume."""
+    import subprocess
+    import sys
+
+    from stickslip.fem.cad import mesh_step
+
+    (tmp_path / "step.py").write_text(STEP)
+    subprocess.run([sys.executable, "step.py", "pad.step"], cwd=tmp_path, check=True, capture_output=True)
+    assert "SI_UNIT(.MILLI.,.METRE.)" in (tmp_path / "pad.step").read_text()
+    out = mesh_step(tmp_path / "pad.step", tmp_path / "pad.msh", 0.006, order=order,
+                    faces={"friction": ("z", 0.0), "piston": ("z", 0.015)})
+    solid = read_solid(out, "m")
+    assert solid.kind == ("tetra" if order == 1 else "tetra10")
+    assert solid.points.max(axis=0) == pytest.approx([0.1, 0.05, 0.015], rel=1e-9)
+    assert set(solid.faces) == {"friction", "piston"} and len(solid.cell_groups) == 2
+    (a, cells_a), (b, cells_b) = sorted(solid.cell_groups.items(), key=lambda kv: solid.points[
+        solid.cells[kv[1], :4]][..., 2].mean())
+    lining, plate = Material(young=1e9, poisson=0.25, density=2500.0), STEEL
+    system = assemble_solid(solid, {a: lining, b: plate})
+    assert system.mass[0::3].sum() == pytest.approx(0.1 * 0.05 * (0.010 * 2500.0 + 0.005 * 7850.0), rel=1e-9)
+    np.testing.assert_allclose(solid.points[solid.nodes("piston"), 2], 0.015, atol=1e-12)
+    with pytest.raises(ParameterError, match="faces"):
+        mesh_step(tmp_path / "pad.step", tmp_path / "x.msh", 0.006, faces={"rim": ("z", 0.5)})

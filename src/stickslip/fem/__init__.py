@@ -24,8 +24,9 @@
 * `config`: the TOML config of `stickslip fem steady | cea | run`;
 * `solid`: a 3-D elastic body (linear tetrahedra or hexahedra, a material per cell group, its
   length unit stated), its stiffness and lumped mass, clamps and rollers on face groups and its
-  modes (`read_solid`, `assemble_solid`, `supported_dofs`, `solid_modes`): the first increment of
-  3-D; contact, the CEA and runs of solids come next.
+  modes (`read_solid`, `assemble_solid`, `supported_dofs`, `solid_modes`, `solid_static`; orthotropic
+  linings, `OrthotropicSolid`): the first increment of 3-D; contact, the CEA and runs of solids come next;
+* `cad`: a STEP file's solids meshed in metres by gmsh's OpenCASCADE kernel (`mesh_step`).
 """
 
 from .assembly import BodySystem, Material, assemble
