@@ -460,6 +460,9 @@ MUTANTS: list[dict] = [
        'gmsh.option.setString("Geometry.OCCTargetUnit", "MM")',
        "CAD: a STEP imported in millimetres into a mesh read as metres (a brake 1000 times too large)",
        [T + "fem/test_solid.py"]),
+    _m("solid-rayleigh-beta-mass", F + "solid.py", "C = C + m.alpha * sp.diags_array(lumped) + m.beta * Kg",
+       "C = C + m.alpha * sp.diags_array(lumped) + m.beta * Mg",
+       "3-D solid: Rayleigh's beta times the mass instead of the stiffness", [T + "fem/test_solid.py"]),
 ]
 
 UNCAUGHT: list[dict] = []  # every planted bug of the list is caught (issue 44 moved the last four)

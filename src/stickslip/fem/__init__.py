@@ -37,8 +37,8 @@ from .pair import PairProblem, PairSteady, Rotation, Translation, steady_pair
 from .pair_run import PairRun, PairScheme, integrate_pair
 from .run import BodyInitial, BodyRun, classify_body, integrate_body, perturbed_steady_body, preload_body
 from .scheme import BodyScheme, ContactProblem
-from .solid import (OrthotropicSolid, Solid, SolidSystem, assemble_solid, read_solid, solid_from_meshio, solid_modes, solid_static,
-                    supported_dofs)
+from .solid import (OrthotropicSolid, Solid, SolidSystem, assemble_solid, read_solid, solid_damped_modes,
+                    solid_from_meshio, solid_modes, solid_static, supported_dofs)
 from .static import SteadyContact, steady_contact
 from .surfaces import ContactFrames, RigidCylinder, RigidFlat, contact_frames
 
@@ -48,4 +48,4 @@ __all__ = ["Body", "read_body", "body_from_meshio", "CELL_KINDS", "Material", "B
            "integrate_body", "classify_body", "perturbed_steady_body", "preload_body", "Spring", "Load",
            "PairProblem", "PairSteady", "Rotation", "Translation", "steady_pair", "PairScheme", "PairRun",
            "integrate_pair", "Solid", "SolidSystem", "read_solid", "solid_from_meshio", "assemble_solid",
-           "supported_dofs", "solid_modes", "solid_static", "OrthotropicSolid"]
+           "supported_dofs", "solid_modes", "solid_static", "OrthotropicSolid", "solid_damped_modes"]

@@ -41,7 +41,7 @@ from ..validation import count as checked_count, regular_input
 from .assembly import Material
 
 __all__ = ["Solid", "SolidSystem", "OrthotropicSolid", "read_solid", "solid_from_meshio", "assemble_solid",
-           "supported_dofs", "solid_modes", "solid_static", "VOLUME_KINDS", "UNITS"]
+           "supported_dofs", "solid_modes", "solid_static", "solid_damped_modes", "VOLUME_KINDS", "UNITS"]
 
 #: meshio volume cells read, and the faces of their boundary groups.
 VOLUME_KINDS = {"tetra": "triangle", "hexahedron": "quad", "tetra10": "triangle6"}
@@ -215,13 +215,16 @@ def read_solid(path, units: str | None = None) -> Solid:
 @dataclass(frozen=True, eq=False)
 class SolidSystem:
     """``K`` (CSR, N/m), the lumped ``mass`` (kg per degree of freedom), the constant ``load`` (N per
-    degree of freedom, from pressures on face groups) and the ``consistent_mass`` (CSR, kg) of ``solid``."""
+    degree of freedom, from pressures on face groups), the ``consistent_mass`` (CSR, kg) and the Rayleigh
+    ``damping`` (CSR, N s/m: each material's ``alpha`` times its lumped mass plus ``beta`` times its K)
+    of ``solid``."""
 
     solid: Solid
     K: sp.csr_array
     mass: np.ndarray
     load: np.ndarray
     consistent_mass: sp.csr_array
+    damping: sp.csr_array
 
     @property
     def n_dofs(self) -> int:
@@ -237,8 +240,9 @@ class OrthotropicSolid:
     """An orthotropic linear elastic material in three dimensions (a brake lining): Young's moduli ``e1,
     e2, e3`` [Pa] along its axes, Poisson's ratios ``nu12, nu13, nu23`` (``nu_ij``: the contraction along
     ``j`` per strain along ``i`` under a stress along ``i``), shear moduli ``g12, g13, g23`` [Pa],
-    ``density`` [kg/m^3], and its axes 1 and 2 as two orthogonal directions ``axis1``, ``axis2`` in the
-    solid's x, y, z (default x and y; axis 3 is their cross product). A transversely isotropic lining
+    ``density`` [kg/m^3], its axes 1 and 2 as two orthogonal directions ``axis1``, ``axis2`` in the
+    solid's x, y, z (default x and y; axis 3 is their cross product), and Rayleigh damping ``alpha``
+    [1/s], ``beta`` [s]. A transversely isotropic lining
     (isotropic in its plane, its axis 3 the pressing direction) is the case ``e1 = e2``, ``nu13 = nu23``,
     ``g13 = g23``, ``g12 = e1 / (2 (1 + nu12))``. The compliance must be positive definite."""
 
@@ -254,9 +258,11 @@ class OrthotropicSolid:
     density: float
     axis1: tuple = (1.0, 0.0, 0.0)
     axis2: tuple = (0.0, 1.0, 0.0)
+    alpha: float = 0.0
+    beta: float = 0.0
 
     def __post_init__(self):
-        for name in ("e1", "e2", "e3", "nu12", "nu13", "nu23", "g12", "g13", "g23", "density"):
+        for name in ("e1", "e2", "e3", "nu12", "nu13", "nu23", "g12", "g13", "g23", "density", "alpha", "beta"):
             object.__setattr__(self, name, Q.check(name, getattr(self, name)))
         axes = []
         for name in ("axis1", "axis2"):
@@ -397,6 +403,7 @@ def assemble_solid(solid: Solid, material, loads=()) -> SolidSystem:
     n = 3 * len(solid.points)
     to_ours = sp.csr_array((np.ones(n), (ours, np.arange(n))), shape=(n, n))  # scikit-fem's dofs -> ours
     K, M = sp.csr_array((n, n)), sp.csr_array((n, n))
+    parts = []  # each material's K and consistent mass (its Rayleigh damping)
     for cells, m in pairs:
         basis = Basis(mesh, element, elements=cells)
         if isinstance(m, OrthotropicSolid):
@@ -421,8 +428,9 @@ def assemble_solid(solid: Solid, material, loads=()) -> SolidSystem:
         def inertia(u, v, w):
             return m.density * dot(u, v)
 
-        K = K + asm(stiffness, basis)
-        M = M + asm(inertia, basis)
+        Kg, Mg = to_ours @ asm(stiffness, basis) @ to_ours.T, to_ours @ asm(inertia, basis) @ to_ours.T
+        parts.append((cells, m, Kg, Mg))
+        K, M = K + Kg, M + Mg
     f = np.zeros(n)
     for load in loads:
         if load.pressure == 0.0:
@@ -434,20 +442,28 @@ def assemble_solid(solid: Solid, material, loads=()) -> SolidSystem:
             return -load.pressure * dot(w.n, v)  # w.n: the outward normal
 
         f += asm(pushed, facets)
-    K, M, f = to_ours @ K @ to_ours.T, to_ours @ M @ to_ours.T, to_ours @ f
-    if solid.kind == "tetra10":  # row sums give corners no (or negative) mass: each cell's by the diagonal of its
-        # consistent mass (Hinton-Rock-Zienkiewicz; on a straight-edged cell 6 : 32, corner : edge node)
-        mass = np.zeros(n)
-        density = np.zeros(len(solid.cells))
-        for cells, m in pairs:
-            density[cells] = m.density
-        share = density * solid.volumes
-        for k in range(10):
-            np.add.at(mass, 3 * solid.cells[:, k], share * (1.0 / 36.0 if k < 4 else 4.0 / 27.0))
-        mass[1::3], mass[2::3] = mass[0::3], mass[0::3]
-    else:
-        mass = np.asarray(M.sum(axis=1)).ravel()
-    return SolidSystem(solid, sp.csr_array(K), mass, f, sp.csr_array(M))
+    f = to_ours @ f
+    mass, C = np.zeros(n), sp.csr_array((n, n))
+    for cells, m, Kg, Mg in parts:
+        lumped = _lumped(solid, cells, m.density, Mg)
+        mass += lumped
+        if m.alpha or m.beta:  # Rayleigh, each material's own: C = sum (alpha M + beta K) over its cells
+            C = C + m.alpha * sp.diags_array(lumped) + m.beta * Kg
+    return SolidSystem(solid, sp.csr_array(K), mass, f, sp.csr_array(M), sp.csr_array(C))
+
+
+def _lumped(solid: Solid, cells: np.ndarray, density: float, consistent) -> np.ndarray:
+    """The lumped mass of ``cells``: the row sums of their ``consistent`` mass; on quadratic tetrahedra,
+    where row sums give corners no (or negative) mass, each cell's shared by the diagonal of its consistent
+    mass (Hinton-Rock-Zienkiewicz; on a straight-edged cell 6 : 32, corner : edge node)."""
+    if solid.kind != "tetra10":
+        return np.asarray(consistent.sum(axis=1)).ravel()
+    mass = np.zeros(3 * len(solid.points))
+    share = density * solid.volumes[cells]
+    for k in range(10):
+        np.add.at(mass, 3 * solid.cells[cells, k], share * (1.0 / 36.0 if k < 4 else 4.0 / 27.0))
+    mass[1::3], mass[2::3] = mass[0::3], mass[0::3]
+    return mass
 
 
 def solid_static(system: SolidSystem, held=()) -> np.ndarray:
@@ -516,3 +532,29 @@ def solid_modes(system: SolidSystem, held=(), count: int = 6, mass: str = "lumpe
     shapes = np.zeros((n, k))
     shapes[free] = vectors[:, order]
     return np.sqrt(np.clip(values[order], 0.0, None)) / (2 * math.pi), shapes
+
+
+def solid_damped_modes(system: SolidSystem, held=(), near: float = 0.0, count: int = 6) -> tuple:
+    """``(growth_rates [1/s], frequencies [Hz], shapes)`` of the damped modes ``w e^(s t)`` of ``system``
+    (``(s^2 M + s C + K) w = 0``, the lumped mass, the Rayleigh damping) with the degrees of freedom
+    ``held`` at zero: the ``count`` eigenvalues nearest ``i 2 pi near`` (the shared shift-invert search
+    of the CEA, `stickslip.fem.cea.eigenvalues_near`), one of each conjugate pair, by frequency."""
+    from .cea import eigenvalues_near
+
+    if not isinstance(system, SolidSystem):
+        raise ParameterError("system", system, "a SolidSystem (assemble_solid)")
+    if isinstance(near, bool) or not isinstance(near, (int, float)) or not 0 <= near < 1e12:
+        raise ParameterError("near", near, "a frequency in [0, 1e12) Hz to look for modes about")
+    n = system.n_dofs
+    held = np.asarray(held, dtype=np.int64).ravel()
+    if held.size and (held.min() < 0 or held.max() >= n):
+        raise ParameterError("held", f"{held.size} indices", f"degrees of freedom of the solid (0 to {n - 1})")
+    free = np.setdiff1d(np.arange(n), held)
+    k = checked_count("count", count, max(1, min(len(free) - 2, 500)), "modes")
+    Kf, Cf = sp.csc_array(system.K[free][:, free]), sp.csc_array(system.damping[free][:, free])
+    s, vectors, trusted, _, _ = eigenvalues_near(Kf, Cf, system.mass[free], near, 2 * k, True)
+    keep = np.flatnonzero(trusted)
+    order = keep[np.argsort(s[keep].imag)][:k]
+    shapes = np.zeros((n, len(order)), dtype=complex)
+    shapes[free] = vectors[:, order]
+    return s[order].real, s[order].imag / (2 * math.pi), shapes
