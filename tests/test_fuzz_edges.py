@@ -409,3 +409,23 @@ def test_results_scalars_refuses_what_is_not_a_dict():
             scalars(**kwargs)
         assert err.value.name == name
     assert scalars({"a": {"b": 1.0}, "c": "x"}, "r.") == [("r.a.b", 1.0), ("r.c", "x")]
+
+
+def test_a_complex_number_where_real_ones_are_taken_is_refused_not_cut_to_its_real_part():
+    """numpy turns 1 + 2j into 1.0 with a warning only: the wave's profile at phi = 1 + 2j was computed at
+    phi = 1 (found by the API fuzz's ComplexWarning). The validators refuse complex numbers, naming the
+    argument."""
+    import numpy as np
+
+    from stickslip import validation
+    from stickslip.brake import BrakeParams, travelling_wave
+
+    for value in (1 + 2j, [0.5, 1j], np.array([1.0 + 0j])):
+        with pytest.raises(ParameterError, match="phi"):
+            validation.real_array("phi", value)
+        with pytest.raises(ParameterError, match="x"):
+            validation.finite_array("x", value)
+    wave = travelling_wave(BrakeParams.from_physical(50.0, 1e-4, 0.7), 4)
+    with pytest.raises(ParameterError, match="phi"):
+        wave.evaluate(1 + 2j)
+    assert np.isfinite(wave.evaluate([0.1, 0.2])["P"]).all()

@@ -137,13 +137,24 @@ def function(name: str, value):
     return value
 
 
+def _real(value):
+    """``value`` as a float array; complex numbers refused (numpy would drop their imaginary parts with
+    only a warning: a result computed from other numbers than those given)."""
+    import numpy as np
+
+    if np.iscomplexobj(value):
+        raise TypeError("complex")
+    return np.asarray(value, dtype=float)
+
+
 def finite_array(name: str, value, ndim: int | None = None, empty: bool = False):
     """``value`` as a float array of finite numbers (of ``ndim`` dimensions, if given; non-empty
-    unless ``empty``): text, None, nested lists of uneven length, NaN or infinities are refused."""
+    unless ``empty``): text, None, complex numbers, nested lists of uneven length, NaN or infinities are
+    refused."""
     import numpy as np
 
     try:
-        array = np.asarray(value, dtype=float)
+        array = _real(value)
     except (TypeError, ValueError, OverflowError):
         raise ParameterError(name, _shown(value), "an array of finite real numbers") from None
     if ndim is not None and array.ndim != ndim:
@@ -158,11 +169,10 @@ def finite_array(name: str, value, ndim: int | None = None, empty: bool = False)
 
 def real_array(name: str, value):
     """``value`` as a float array (any shape; NaN passes through, as numpy's functions take it): for
-    the vectorised formulas, whose only bad input is one that is not numbers at all."""
-    import numpy as np
-
+    the vectorised formulas, whose only bad input is one that is not real numbers at all (complex ones
+    refused: numpy would drop their imaginary parts)."""
     try:
-        return np.asarray(value, dtype=float)
+        return _real(value)
     except (TypeError, ValueError, OverflowError):
         raise ParameterError(name, _shown(value), "a real number or an array of them") from None
 

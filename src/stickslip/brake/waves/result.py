@@ -17,6 +17,7 @@ import lazy_loader as lazy
 
 from ...results import Result
 from ...cf import finish
+from ...validation import real_array
 from ..reduced.params import BrakeParams
 from .boundsco import Layout, passed
 from .zones import KINDS, REVERSE, SEPARATION, SLIP, STICK, Scaling, ZoneFlows
@@ -139,7 +140,7 @@ class TravellingWave(Result):
         ``slip_velocity`` (``1 - V_t = 1 + c V'``; 0 in stick), ``zone`` (index into
         ``zones``). At a switching point the zone that starts there is used.
         """
-        phi = np.asarray(phi, dtype=float)
+        phi = real_array("phi", phi)
         local = np.mod(phi, self.period)
         bounds = np.array([z.start for z in self.zones])
         idx = np.clip(np.searchsorted(bounds, local, side="right") - 1, 0, len(self.zones) - 1)
