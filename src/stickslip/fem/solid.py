@@ -543,8 +543,7 @@ def solid_damped_modes(system: SolidSystem, held=(), near: float = 0.0, count: i
 
     if not isinstance(system, SolidSystem):
         raise ParameterError("system", system, "a SolidSystem (assemble_solid)")
-    if isinstance(near, bool) or not isinstance(near, (int, float)) or not 0 <= near < 1e12:
-        raise ParameterError("near", near, "a frequency in [0, 1e12) Hz to look for modes about")
+    near = Q.check("near", near)
     n = system.n_dofs
     held = np.asarray(held, dtype=np.int64).ravel()
     if held.size and (held.min() < 0 or held.max() >= n):
