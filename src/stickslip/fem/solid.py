@@ -466,17 +466,23 @@ def _lumped(solid: Solid, cells: np.ndarray, density: float, consistent) -> np.n
     return mass
 
 
-def solid_static(system: SolidSystem, held=()) -> np.ndarray:
-    """The static displacement under the system's load with the degrees of freedom ``held`` at zero
-    (every degree of freedom; a sparse direct solve). A solid free to move as a rigid body is refused."""
-    from scipy.sparse.linalg import splu
-
+def _held(system, held) -> tuple:
+    """``(n, held, free)``: the solid's degrees of freedom, those ``held`` (checked) and the others."""
     if not isinstance(system, SolidSystem):
         raise ParameterError("system", system, "a SolidSystem (assemble_solid)")
     n = system.n_dofs
     held = np.asarray(held, dtype=np.int64).ravel()
     if held.size and (held.min() < 0 or held.max() >= n):
         raise ParameterError("held", f"{held.size} indices", f"degrees of freedom of the solid (0 to {n - 1})")
+    return n, held, np.setdiff1d(np.arange(n), held)
+
+
+def solid_static(system: SolidSystem, held=()) -> np.ndarray:
+    """The static displacement under the system's load with the degrees of freedom ``held`` at zero
+    (every degree of freedom; a sparse direct solve). A solid free to move as a rigid body is refused."""
+    from scipy.sparse.linalg import splu
+
+    n, held, free = _held(system, held)
     r = system.solid.points - system.solid.points.mean(axis=0)
     rigid = np.zeros((len(r), 3, 6))  # the six rigid motions: three translations, three rotations w x r
     rigid[:, [0, 1, 2], [0, 1, 2]] = 1.0
@@ -486,7 +492,6 @@ def solid_static(system: SolidSystem, held=()) -> np.ndarray:
     if not held.size or np.linalg.matrix_rank(rigid[held], tol=1e-9 * np.abs(rigid).max()) < 6:
         raise ParameterError("held", f"{held.size} degrees of freedom", "supports that hold every rigid motion "
                              "(three translations and three rotations; some are free)")
-    free = np.setdiff1d(np.arange(n), held)
     u = np.zeros(n)
     u[free] = splu(sp.csc_array(system.K[free][:, free])).solve(system.load[free])
     return u
@@ -514,13 +519,7 @@ def solid_modes(system: SolidSystem, held=(), count: int = 6, mass: str = "lumpe
     out near 0 Hz."""
     from scipy.sparse.linalg import eigsh
 
-    if not isinstance(system, SolidSystem):
-        raise ParameterError("system", system, "a SolidSystem (assemble_solid)")
-    n = system.n_dofs
-    held = np.asarray(held, dtype=np.int64).ravel()
-    if held.size and (held.min() < 0 or held.max() >= n):
-        raise ParameterError("held", f"{held.size} indices", f"degrees of freedom of the solid (0 to {n - 1})")
-    free = np.setdiff1d(np.arange(n), held)
+    n, held, free = _held(system, held)
     k = checked_count("count", count, max(1, min(len(free) - 1, 500)), "modes")
     if mass not in ("lumped", "consistent"):
         raise ParameterError("mass", mass, "'lumped' or 'consistent'")
@@ -541,14 +540,8 @@ def solid_damped_modes(system: SolidSystem, held=(), near: float = 0.0, count: i
     of the CEA, `stickslip.fem.cea.eigenvalues_near`), one of each conjugate pair, by frequency."""
     from .cea import eigenvalues_near
 
-    if not isinstance(system, SolidSystem):
-        raise ParameterError("system", system, "a SolidSystem (assemble_solid)")
+    n, held, free = _held(system, held)
     near = Q.check("near", near)
-    n = system.n_dofs
-    held = np.asarray(held, dtype=np.int64).ravel()
-    if held.size and (held.min() < 0 or held.max() >= n):
-        raise ParameterError("held", f"{held.size} indices", f"degrees of freedom of the solid (0 to {n - 1})")
-    free = np.setdiff1d(np.arange(n), held)
     k = checked_count("count", count, max(1, min(len(free) - 2, 500)), "modes")
     Kf, Cf = sp.csc_array(system.K[free][:, free]), sp.csc_array(system.damping[free][:, free])
     s, vectors, trusted, _, _ = eigenvalues_near(Kf, Cf, system.mass[free], near, 2 * k, True)
