@@ -83,7 +83,7 @@ def test_a_prism_on_rollers_has_the_p_wave_modes_and_they_converge_at_order_two(
     assert np.all((1.7 < order) & (order < 2.3)), order
 
 
-def _tet_stiffness(p, m):
+def tet_stiffness(p, m):
     """The constant-strain tetrahedron written out (B^T D B V, Voigt with engineering shears)."""
     lam = m.young * m.poisson / ((1 + m.poisson) * (1 - 2 * m.poisson))
     mu = m.young / (2 * (1 + m.poisson))
@@ -116,7 +116,7 @@ def test_the_stiffness_of_tetrahedra_is_the_written_out_constant_strain_one_and_
     K = np.zeros((n, n))
     for c, cell in enumerate(solid.cells):
         dofs = (3 * cell[:, None] + np.arange(3)).ravel()
-        K[np.ix_(dofs, dofs)] += _tet_stiffness(solid.points[cell], STEEL if half[c] else soft)
+        K[np.ix_(dofs, dofs)] += tet_stiffness(solid.points[cell], STEEL if half[c] else soft)
     assert np.abs(system.K.toarray() - K).max() <= 1e-12 * np.abs(K).max()
     body_mass = np.sum(solid.volumes[half]) * STEEL.density + np.sum(solid.volumes[~half]) * soft.density
     for d in range(3):

@@ -74,6 +74,8 @@ from .assembly import BodySystem, transport_operators
 from .cea import PENALTY
 from .facets import facet_deviation
 from .mortar2 import quadratic_mortar
+from .mortar3 import solid_mortar
+from .solid import Solid, SolidSystem
 from .static import ITERATIONS, PRESSURE_ITERATIONS, settled, within_friction
 from .surfaces import MAX_SPEED
 
@@ -108,8 +110,12 @@ class Rotation:
         object.__setattr__(self, "center", Q["center"].check_pair(self.center, "center"))
 
     def velocity(self, points: np.ndarray) -> np.ndarray:
-        r = np.asarray(points, float) - np.asarray(self.center, float)
-        return self.omega * np.column_stack([-r[:, 1], r[:, 0]])
+        """The velocity at ``points`` (``(n, 2)``, or ``(n, 3)``: a solid turning about the z axis
+        through ``center``)."""
+        points = np.asarray(points, float)
+        r = points[:, :2] - np.asarray(self.center, float)
+        v = self.omega * np.column_stack([-r[:, 1], r[:, 0]])
+        return v if points.shape[1] == 2 else np.column_stack([v, np.zeros(len(v))])
 
 
 @dataclass(frozen=True)
@@ -124,7 +130,9 @@ class Translation:
             raise ParameterError("velocity", list(self.velocity), f"at most {MAX_SPEED:g} m/s in size")
 
     def velocity_at(self, points):
-        return np.tile(np.asarray(self.velocity, float), (len(points), 1))
+        """The velocity at ``points``: in the x-y plane for a solid's ``(n, 3)``."""
+        v = np.tile(np.asarray(self.velocity, float), (len(points), 1))
+        return v if np.shape(points)[1] == 2 else np.column_stack([v, np.zeros(len(v))])
 
 
 def _velocity(motion, points):
@@ -162,7 +170,14 @@ def mortar(slave_body, slave_group: str, master_body, master_group: str) -> Mort
     """The mortar coupling of ``slave_group`` of ``slave_body`` with ``master_group`` of
     ``master_body`` (see the module docstring; with quadratic cells on either side,
     `stickslip.fem.mortar2`); a slave segment that overlaps no master segment
-    contributes to ``D`` only (its nodes cannot touch: their ``M`` row sums fall short)."""
+    contributes to ``D`` only (its nodes cannot touch: their ``M`` row sums fall short). Two solids'
+    face groups: `stickslip.fem.mortar3`."""
+    if isinstance(slave_body, Solid) or isinstance(master_body, Solid):
+        nodes, normal, D, M, deep, away, found = solid_mortar(slave_body, slave_group, master_body, master_group,
+                                                              REACH)
+        seen = slave_body.points[nodes]
+        _refuse(deep, away, found, float(np.linalg.norm(np.ptp(seen, axis=0))), slave_group, master_group)
+        return Mortar(nodes, normal, D, M)
     if slave_body.order == 2 or master_body.order == 2:
         s_edges = slave_body.oriented(slave_group, "slave_group")
         m_edges = master_body.oriented(master_group, "master_group")
@@ -253,8 +268,14 @@ def sliding(coupling: Mortar, motion, points, required: bool = True) -> tuple[np
     refused, and so is one that does not slide the master along the contact at every slave node
     if ``required`` (friction needs a direction; without friction the pair may rest)."""
     n = coupling.normal
-    t0 = np.column_stack([n[:, 1], -n[:, 0]])
-    along = np.sum(_velocity(motion, np.asarray(points)[coupling.slave_nodes]) * t0, axis=1)
+    v = _velocity(motion, np.asarray(points)[coupling.slave_nodes])
+    if n.shape[1] == 3:  # a solid: the sliding in the tangent plane, its direction the slip's
+        v = v - np.sum(v * n, axis=1)[:, None] * n
+        along = np.linalg.norm(v, axis=1)
+        t0 = v / np.where(along > 0, along, 1.0)[:, None]
+    else:
+        t0 = np.column_stack([n[:, 1], -n[:, 0]])
+        along = np.sum(v * t0, axis=1)
     if np.abs(along).max() > MAX_SPEED:
         raise ParameterError("motion", motion, f"at most {MAX_SPEED:g} m/s of sliding at the contact")
     if required and not np.all(np.abs(along) > 0):
@@ -267,7 +288,10 @@ def sliding(coupling: Mortar, motion, points, required: bool = True) -> tuple[np
 class PairProblem:
     """A ``slave`` body (the pad) on a ``master`` body (the disc), both `BodySystem`: their
     contact groups, the master's ``motion`` (`Rotation` or `Translation`), the Coulomb
-    ``friction`` and each body's clamped boundary groups.
+    ``friction``, each body's clamped boundary groups and its rollers ``{group: axis}`` (a group's
+    nodes held along the coordinate axis ``"x"``, ``"y"`` or, on a solid, ``"z"``: a symmetry plane).
+    Two 2-D bodies (`BodySystem`) or two solids (`stickslip.fem.solid.SolidSystem`: a solid turns
+    about the z axis through the rotation's centre; no gyroscopic terms yet).
 
     As a `stickslip.fem.scheme.ContactProblem`'s: a ``static_friction >= friction`` (explicit
     runs; None: the same), or a friction ``law`` of the slip speed instead of both (each slave
@@ -287,11 +311,18 @@ class PairProblem:
     static_friction: float | None = None
     law: FrictionLaw | None = None
     pressure_law: PressurePower | None = None
+    rollers_slave: dict | None = None
+    rollers_master: dict | None = None
 
     def __post_init__(self):
         for name in ("slave", "master"):
-            if not isinstance(getattr(self, name), BodySystem):
-                raise ParameterError(name, getattr(self, name), "a BodySystem (see assemble)")
+            if not isinstance(getattr(self, name), (BodySystem, SolidSystem)):
+                raise ParameterError(name, getattr(self, name), "a BodySystem (see assemble) or a SolidSystem "
+                                     "(assemble_solid)")
+        if isinstance(self.slave, SolidSystem) != isinstance(self.master, SolidSystem):
+            raise ParameterError("master", self.master.body.source, f"a body of the slave's dimension (the slave "
+                                 f"{self.slave.body.source} is {self.dimension}-D, the master "
+                                 f"{5 - self.dimension}-D)", also=("slave",))
         object.__setattr__(self, "friction", Q.check("friction", self.friction))
         if self.law is not None:
             if not isinstance(self.law, FrictionLaw):
@@ -309,7 +340,11 @@ class PairProblem:
         if not isinstance(self.gyroscopic, bool) or (self.gyroscopic and not isinstance(self.motion, Rotation)):
             raise ParameterError("gyroscopic", self.gyroscopic, "true or false, true only with a turning master "
                                  "(a Rotation)")
+        if self.gyroscopic and self.dimension == 3:
+            raise ParameterError("gyroscopic", self.gyroscopic, "false for solids (a turning solid's transport "
+                                 "terms come in a later release)")
         _ = self.tangent  # the coupling and the sliding direction: a pair that cannot touch is refused here
+        _ = self.fixed  # the supports: a group or an axis that is not there is refused here
         if self.law is not None:
             speed = self.tangent[1]
             if speed.max() >= self.law.max_speed:
@@ -319,6 +354,11 @@ class PairProblem:
             object.__setattr__(self, "static_friction", float(self.law.static))
         elif self.static_friction is None:
             object.__setattr__(self, "static_friction", float(self.friction))
+
+    @property
+    def dimension(self) -> int:
+        """2 for plane bodies, 3 for solids."""
+        return 3 if isinstance(self.slave, SolidSystem) else 2
 
     @cached_property
     def kinetic(self) -> np.ndarray:
@@ -352,10 +392,21 @@ class PairProblem:
     @cached_property
     def fixed(self) -> np.ndarray:
         mask = np.zeros(self.slave.n_dofs + self.master.n_dofs, bool)
+        dim = self.dimension
         for system, groups, offset, option in ((self.slave, self.clamped_slave, 0, "clamped_slave"),
                                                (self.master, self.clamped_master, self.n_slave, "clamped_master")):
             for name in groups:
                 mask[offset + system.dofs(system.body.nodes(name, option))] = True
+            rollers = getattr(self, option.replace("clamped", "rollers"))
+            if rollers is None:
+                continue
+            if not isinstance(rollers, dict):
+                raise ParameterError(option.replace("clamped", "rollers"), rollers, "{face group: axis} or None")
+            for name, axis in rollers.items():
+                where = f"{option.replace('clamped', 'rollers')}[{name}]"
+                if not isinstance(axis, str) or len(axis) != 1 or axis not in "xyz"[:dim]:
+                    raise ParameterError(where, axis, f"a coordinate axis: {' or '.join('xyz'[:dim])}")
+                mask[offset + dim * system.body.nodes(name, where) + "xyz".index(axis)] = True
         return mask
 
     @cached_property
@@ -367,15 +418,15 @@ class PairProblem:
 
     def _rows(self, direction: np.ndarray) -> sp.csr_matrix:
         """``(sum_k D_jk d_j . u_k - sum_l M_jl d_j . u_l)_j`` as a matrix on all dofs."""
-        c = self.coupling
+        c, dim = self.coupling, self.dimension
         blocks = []
         for A, sign in ((c.D, 1.0), (c.M, -1.0)):
             A = A.tocoo()
             d = direction[A.row]
-            rows = np.concatenate([A.row, A.row])
-            cols = np.concatenate([2 * A.col, 2 * A.col + 1])
-            vals = sign * np.concatenate([A.data * d[:, 0], A.data * d[:, 1]])
-            blocks.append(sp.csr_matrix((vals, (rows, cols)), shape=(A.shape[0], 2 * A.shape[1])))
+            rows = np.tile(A.row, dim)
+            cols = np.concatenate([dim * A.col + k for k in range(dim)])
+            vals = sign * np.concatenate([A.data * d[:, k] for k in range(dim)])
+            blocks.append(sp.csr_matrix((vals, (rows, cols)), shape=(A.shape[0], dim * A.shape[1])))
         return sp.hstack(blocks).tocsr()
 
     @cached_property
@@ -414,7 +465,8 @@ class PairProblem:
         """Both dampings; with ``gyroscopic``, plus the master's gyroscopic matrix ``G``."""
         C = None
         if self.slave.C is not None or self.master.C is not None:
-            C = sp.block_diag([self.slave.damping(), self.master.damping()], format="csr")
+            C = sp.block_diag([sp.csr_matrix(s.K.shape) if s.C is None else s.C for s in (self.slave, self.master)],
+                              format="csr")
         if self.transport is not None:
             C = self.transport[0] if C is None else (C + self.transport[0]).tocsr()
         return C
@@ -543,6 +595,8 @@ class PairProblem:
                 "slave_group": self.slave_group, "master_group": self.master_group, "friction": self.friction,
                 "motion": repr(self.motion), "clamped_slave": ",".join(self.clamped_slave),
                 "clamped_master": ",".join(self.clamped_master), "slave_nodes": len(self.coupling.slave_nodes),
+                **{name: ", ".join(f"{g}: {a}" for g, a in getattr(self, name).items())
+                   for name in ("rollers_slave", "rollers_master") if getattr(self, name)},
                 "gyroscopic": int(self.gyroscopic), "problem_sha256": self.digest,
                 "static_friction": self.static_friction,
                 **({} if self.law is None else {"friction_law": repr(self.law)}),
@@ -582,7 +636,7 @@ class PairSteady(Result):
         if self.gap is not None:
             data["gap"] = (N, self.gap, {"units": "m", "long_name": "normal gap to the master in steady sliding"})
         if self.points is not None:
-            for k, axis in enumerate("xy"):
+            for k, axis in enumerate("xyz"[: self.points.shape[1]]):
                 data[axis] = (N, self.points[:, k], {"units": "m", "long_name": f"{axis} of the slave node "
                                                                                 "(reference configuration)"})
         ds = xr.Dataset(data, coords={N: (N, np.arange(len(self.pressure)), {"units": "1", "long_name":
@@ -667,8 +721,9 @@ def steady_pair(problem: PairProblem, max_iterations: int | None = None) -> Pair
 def facets(problem: PairProblem) -> float:
     """The largest deviation of the master's segments under the slave line from the curve
     through their nodes [m] (`stickslip.fem.facets`): 0 for a straight master, and for quadratic
-    cells (their curved segments follow a circle to ``h^4 / R^3``, not ``h^2 / R``)."""
-    if problem.master.body.order == 2:
+    cells (their curved segments follow a circle to ``h^4 / R^3``, not ``h^2 / R``); solids: not
+    measured yet (0: a 3-D face's facets, a later release)."""
+    if problem.dimension == 3 or problem.master.body.order == 2:
         return 0.0
     edges = problem.master.body.oriented(problem.master_group, "master_group")[:, :2]
     touched = np.zeros(len(problem.master.body.points), bool)

@@ -225,10 +225,26 @@ class SolidSystem:
     load: np.ndarray
     consistent_mass: sp.csr_array
     damping: sp.csr_array
+    materials: dict = field(default_factory=dict)  # {cell group: material}, {"": material} for one
+    group_mass: dict = field(default_factory=dict)  # {cell group: its lumped mass per dof}, for energy shares
 
     @property
     def n_dofs(self) -> int:
         return 3 * len(self.solid.points)
+
+    @property
+    def body(self) -> Solid:
+        """The solid (named as a 2-D `BodySystem`'s body: `stickslip.fem.pair` reads either)."""
+        return self.solid
+
+    @property
+    def C(self):
+        """The damping, or None where every material is undamped (as a 2-D `BodySystem`'s)."""
+        return self.damping if self.damping.nnz else None
+
+    def dofs(self, nodes) -> np.ndarray:
+        """The degrees of freedom ``3 i, 3 i + 1, 3 i + 2`` of ``nodes``."""
+        return (3 * np.asarray(nodes, dtype=np.int64)[:, None] + np.arange(3)).ravel()
 
 
 #: Voigt order of the stress and (engineering) strain components: 11, 22, 33, 23, 13, 12.
@@ -311,6 +327,12 @@ class OrthotropicSolid:
     def young(self) -> float:
         """The stiffest of the moduli [Pa] (a scale of strains and loads)."""
         return float(max(self.e1, self.e2, self.e3))
+
+    def describe(self) -> str:
+        """One line: every constant (for a file's attributes)."""
+        return (f"orthotropic: e1 = {self.e1:g} Pa, e2 = {self.e2:g} Pa, e3 = {self.e3:g} Pa, nu12 = {self.nu12:g}, "
+                f"nu13 = {self.nu13:g}, nu23 = {self.nu23:g}, g12 = {self.g12:g} Pa, g13 = {self.g13:g} Pa, "
+                f"g23 = {self.g23:g} Pa, axis1 = {self.axis1}, axis2 = {self.axis2}")
 
 
 def _materials(solid: Solid, material) -> list[tuple[np.ndarray, Material]]:
@@ -444,12 +466,16 @@ def assemble_solid(solid: Solid, material, loads=()) -> SolidSystem:
         f += asm(pushed, facets)
     f = to_ours @ f
     mass, C = np.zeros(n), sp.csr_array((n, n))
-    for cells, m, Kg, Mg in parts:
+    names = list(material) if isinstance(material, dict) else [""]  # each material's cell group
+    group_mass = {}
+    for (cells, m, Kg, Mg), name in zip(parts, names):
         lumped = _lumped(solid, cells, m.density, Mg)
         mass += lumped
+        group_mass[name] = lumped
         if m.alpha or m.beta:  # Rayleigh, each material's own: C = sum (alpha M + beta K) over its cells
             C = C + m.alpha * sp.diags_array(lumped) + m.beta * Kg
-    return SolidSystem(solid, sp.csr_array(K), mass, f, sp.csr_array(M), sp.csr_array(C))
+    return SolidSystem(solid, sp.csr_array(K), mass, f, sp.csr_array(M), sp.csr_array(C),
+                       {name: m for name, (_, m) in zip(names, pairs)}, group_mass)
 
 
 def _lumped(solid: Solid, cells: np.ndarray, density: float, consistent) -> np.ndarray:

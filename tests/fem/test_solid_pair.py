@@ -1,0 +1,147 @@
+"""Two solids in frictional contact (issue 45): the 3-D mortar (`stickslip.fem.mortar3`) through
+`stickslip.fem.pair`, against exact solutions and an independently assembled pencil.
+
+* The contact patch test: a lining on a steel block, their interface meshes not matching (5 x 3
+  against 3 x 4 cells; tetrahedra, hexahedra, quadratic tetrahedra on either side), on rollers and
+  pressed by a uniform pressure p: the exact state is uniform, sigma_zz = -p in both, so every
+  multiplier is p. Threshold, set before the run: 1e-8 relative (round-off of the solves).
+* The CEA of a pad on a block (matching interface, linear tetrahedra) against a dense solve of
+  the pencil assembled here without scikit-fem or the mortar: constant-strain tetrahedra written
+  out, lumped masses rho V / 4, node-to-node contact with each node's share of the interface's area,
+  the friction along x. Threshold, set before the run: eigenvalues equal to 1e-7 of |s|.
+"""
+
+import math
+
+import numpy as np
+import pytest
+import scipy.linalg as la
+
+from stickslip.errors import ParameterError
+from stickslip.fem import Load, Material, assemble, body_from_meshio
+from stickslip.fem.cea import complex_eigenvalues
+from stickslip.fem.pair import PairProblem, Translation, steady_pair
+from stickslip.fem.solid import assemble_solid, solid_from_meshio
+
+from .meshes import rectangle
+from .test_solid import tet_stiffness, box, quadratic
+
+STEEL = Material(young=2.1e11, poisson=0.3, density=7850.0)
+LINING = Material(young=5e9, poisson=0.25, density=2500.0)
+L, H, T = 0.02, 0.015, 0.008  # the footprint's side, the block's and the lining's thickness [m]
+
+
+def _mesh(cells, kind, height, lift=0.0):
+    mesh = box((L, L, height), cells, "tetra" if kind == "tetra10" else kind)
+    mesh = quadratic(mesh) if kind == "tetra10" else mesh
+    mesh.points[:, 2] += lift
+    return mesh
+
+
+@pytest.mark.parametrize("lining, block", [("tetra", "tetra"), ("hexahedron", "tetra"), ("tetra10", "tetra"),
+                                           ("tetra", "tetra10"), ("tetra10", "hexahedron")])
+def test_a_uniform_pressure_passes_a_non_matching_3d_interface_exactly(lining, block):
+    p = 2e6
+    pad = solid_from_meshio(_mesh((5, 3, 2), lining, T, lift=H), "lining", units="m")
+    base = solid_from_meshio(_mesh((3, 4, 3), block, H), "block", units="m")
+    problem = PairProblem(assemble_solid(pad, LINING, loads=[Load("z1", pressure=p)]), "z0",
+                          assemble_solid(base, STEEL), "z1", Translation((1.0, 0.0)),
+                          rollers_slave={"x0": "x", "y0": "y"}, rollers_master={"x0": "x", "y0": "y", "z0": "z"})
+    steady = steady_pair(problem)
+    assert steady.active.all()
+    assert np.max(np.abs(steady.pressure / p - 1.0)) < 1e-8
+    assert steady.normal_force == pytest.approx(p * L * L, rel=1e-12)
+    # free to expand sideways, each body shortens by p / E (the block's bottom held along z)
+    block_top = -steady.u[3 * len(pad.points) + 3 * base.nodes("z1") + 2]
+    pad_top = -steady.u[3 * pad.nodes("z1") + 2]
+    assert np.allclose(block_top, p * H / STEEL.young, rtol=1e-8)
+    assert np.allclose(pad_top - block_top.mean(), p * T / LINING.young, rtol=1e-8)
+
+
+def _independent_pencil(pad, base, friction, interference):
+    """``(K_r, M_r)``: the pencil of the pad (top clamped) on the block (bottom clamped), matching interface,
+    assembled here: constant-strain tetrahedra, masses rho V / 4, node-to-node contact rows
+    ``a_j n . (u_pad - u_block)`` (n = +z, a_j the node's share of the interface's area) and the
+    friction ``f lambda_j`` on the pad along +x (the block moves along +x), on the block along -x."""
+    parts = [(pad, LINING, 0), (base, STEEL, 3 * len(pad.points))]
+    n = sum(3 * len(s.points) for s, _, _ in parts)
+    K, mass = np.zeros((n, n)), np.zeros(n)
+    for solid, m, off in parts:
+        for cell in solid.cells:
+            dofs = off + (3 * cell[:, None] + np.arange(3)).ravel()
+            K[np.ix_(dofs, dofs)] += tet_stiffness(solid.points[cell], m)
+            volume = abs(np.linalg.det(np.column_stack([np.ones(4), solid.points[cell]]))) / 6.0
+            mass[dofs] += m.density * volume / 4.0
+    held = np.zeros(n, bool)
+    held[(3 * pad.nodes("z1")[:, None] + np.arange(3)).ravel()] = True
+    held[3 * len(pad.points) + (3 * base.nodes("z0")[:, None] + np.arange(3)).ravel()] = True
+    bottom = pad.nodes("z0")
+    area = np.zeros(len(pad.points))
+    for tri in pad.faces["z0"]:
+        a = 0.5 * np.linalg.norm(np.cross(*(pad.points[tri[1:]] - pad.points[tri[0]])))
+        area[tri] += a / 3.0
+    rows_g, rows_b = np.zeros((len(bottom), n)), np.zeros((len(bottom), n))
+    for j, node in enumerate(bottom):
+        xy = pad.points[node, :2]
+        partner = int(np.argmin(np.linalg.norm(base.points[:, :2] - xy, axis=1) + np.abs(base.points[:, 2] - H)))
+        assert np.allclose(base.points[partner], [*xy, H])
+        for sign, dof in ((1.0, 3 * node), (-1.0, 3 * len(pad.points) + 3 * partner)):
+            rows_g[j, dof + 2] = sign * area[node]
+            rows_b[j, dof + 2] = sign * area[node]
+            rows_b[j, dof] = sign * friction * area[node]
+    free = ~held
+    # M u'' + K u = B^T lambda, G u = 0: u = Z q (Z spanning G's null space), and Y^T B^T = 0 (Y spanning B's)
+    Z, Y = la.null_space(rows_g[:, free]), la.null_space(rows_b[:, free])
+    return Y.T @ K[free][:, free] @ Z, Y.T @ (mass[free][:, None] * Z)
+
+
+def test_the_3d_cea_of_a_pad_on_a_block_is_the_dense_solve_of_an_independently_assembled_pencil():
+    friction, interference = 0.6, 2e-7
+    pad = solid_from_meshio(_mesh((2, 2, 1), "tetra", T, lift=H - interference), "pad", units="m")
+    base = solid_from_meshio(_mesh((2, 2, 2), "tetra", H), "block", units="m")
+    problem = PairProblem(assemble_solid(pad, LINING), "z0", assemble_solid(base, STEEL), "z1",
+                          Translation((1.0, 0.0)), friction=friction, clamped_slave=("z1",), clamped_master=("z0",))
+    assert problem.steady.active.all()
+    band = (0.0, 60e3)
+    modes = complex_eigenvalues(problem, band, count=20)
+    Kr, Mr = _independent_pencil(pad, base, friction, interference)
+    s = np.sqrt(-la.eigvals(Kr, Mr).astype(complex))  # K_r q = -s^2 M_r q
+    s = np.where(s.imag < 0, -s, s)
+    s = s[(s.imag / (2 * math.pi) >= band[0]) & (s.imag / (2 * math.pi) <= band[1])]
+    assert len(s) == len(modes.s) > 5
+    for value in modes.s:
+        assert np.min(np.abs(s - value)) < 1e-7 * abs(value)
+    assert np.any(modes.unstable)  # friction 0.6 couples two of the pad's modes: flutter
+
+
+def test_a_solid_with_a_plane_body_and_surfaces_that_face_away_are_refused(tmp_path):
+    pad = assemble_solid(solid_from_meshio(_mesh((2, 2, 1), "tetra", T, lift=H), "pad", units="m"), LINING)
+    base = assemble_solid(solid_from_meshio(_mesh((2, 2, 2), "tetra", H), "block", units="m"), STEEL)
+    plane = assemble(body_from_meshio(rectangle(tmp_path / "plane.msh")), STEEL)
+    with pytest.raises(ParameterError, match="slave's dimension"):
+        PairProblem(pad, "z0", plane, "top", Translation((1.0, 0.0)))
+    with pytest.raises(ParameterError, match="faces the slave group"):
+        PairProblem(pad, "z0", base, "z0", Translation((1.0, 0.0)))  # the block's bottom faces away from the pad
+    with pytest.raises(ParameterError, match=r"rollers_slave\[x0\].*x or y or z"):
+        PairProblem(pad, "z0", base, "z1", Translation((1.0, 0.0)), rollers_slave={"x0": "w"})
+
+
+def test_a_pad_pressed_deep_into_the_block_or_held_far_from_it_is_refused_saying_which():
+    base = assemble_solid(solid_from_meshio(_mesh((2, 2, 2), "tetra", H), "block", units="m"), STEEL)
+    for lift, said in ((H - 0.004, "does not interpenetrate"), (H + 0.004, "farther than")):
+        pad = assemble_solid(solid_from_meshio(_mesh((2, 2, 1), "tetra", T, lift=lift), "pad", units="m"), LINING)
+        with pytest.raises(ParameterError, match=said):
+            PairProblem(pad, "z0", base, "z1", Translation((1.0, 0.0)))
+
+
+def test_on_a_side_face_the_sliding_is_the_master_velocity_less_its_normal_part():
+    """A pad against the block's face x = L, the block moving at (1, 1, 0) m/s: the slip is along y at
+    1 m/s (the normal part of the velocity, along x, does not slide)."""
+    base = assemble_solid(solid_from_meshio(_mesh((2, 2, 2), "tetra", H), "block", units="m"), STEEL)
+    side = _mesh((2, 2, 1), "tetra", T)
+    side.points[:, 0] += L
+    pad = assemble_solid(solid_from_meshio(side, "pad", units="m"), LINING)
+    problem = PairProblem(pad, "x0", base, "x1", Translation((1.0, 1.0)), friction=0.3)
+    t, speed = problem.tangent
+    assert np.allclose(problem.coupling.normal, [1.0, 0.0, 0.0])
+    assert np.allclose(t, [0.0, 1.0, 0.0]) and np.allclose(speed, 1.0)
