@@ -31,7 +31,7 @@ LINING = Material(young=5e9, poisson=0.25, density=2500.0)
 L, H, T = 0.02, 0.015, 0.008  # the footprint's side, the block's and the lining's thickness [m]
 
 
-def _mesh(cells, kind, height, lift=0.0):
+def solid_mesh(cells, kind, height, lift=0.0):
     mesh = box((L, L, height), cells, "tetra" if kind == "tetra10" else kind)
     mesh = quadratic(mesh) if kind == "tetra10" else mesh
     mesh.points[:, 2] += lift
@@ -42,8 +42,8 @@ def _mesh(cells, kind, height, lift=0.0):
                                            ("tetra", "tetra10"), ("tetra10", "hexahedron")])
 def test_a_uniform_pressure_passes_a_non_matching_3d_interface_exactly(lining, block):
     p = 2e6
-    pad = solid_from_meshio(_mesh((5, 3, 2), lining, T, lift=H), "lining", units="m")
-    base = solid_from_meshio(_mesh((3, 4, 3), block, H), "block", units="m")
+    pad = solid_from_meshio(solid_mesh((5, 3, 2), lining, T, lift=H), "lining", units="m")
+    base = solid_from_meshio(solid_mesh((3, 4, 3), block, H), "block", units="m")
     problem = PairProblem(assemble_solid(pad, LINING, loads=[Load("z1", pressure=p)]), "z0",
                           assemble_solid(base, STEEL), "z1", Translation((1.0, 0.0)),
                           rollers_slave={"x0": "x", "y0": "y"}, rollers_master={"x0": "x", "y0": "y", "z0": "z"})
@@ -97,8 +97,8 @@ def _independent_pencil(pad, base, friction, interference):
 
 def test_the_3d_cea_of_a_pad_on_a_block_is_the_dense_solve_of_an_independently_assembled_pencil():
     friction, interference = 0.6, 2e-7
-    pad = solid_from_meshio(_mesh((2, 2, 1), "tetra", T, lift=H - interference), "pad", units="m")
-    base = solid_from_meshio(_mesh((2, 2, 2), "tetra", H), "block", units="m")
+    pad = solid_from_meshio(solid_mesh((2, 2, 1), "tetra", T, lift=H - interference), "pad", units="m")
+    base = solid_from_meshio(solid_mesh((2, 2, 2), "tetra", H), "block", units="m")
     problem = PairProblem(assemble_solid(pad, LINING), "z0", assemble_solid(base, STEEL), "z1",
                           Translation((1.0, 0.0)), friction=friction, clamped_slave=("z1",), clamped_master=("z0",))
     assert problem.steady.active.all()
@@ -115,8 +115,8 @@ def test_the_3d_cea_of_a_pad_on_a_block_is_the_dense_solve_of_an_independently_a
 
 
 def test_a_solid_with_a_plane_body_and_surfaces_that_face_away_are_refused(tmp_path):
-    pad = assemble_solid(solid_from_meshio(_mesh((2, 2, 1), "tetra", T, lift=H), "pad", units="m"), LINING)
-    base = assemble_solid(solid_from_meshio(_mesh((2, 2, 2), "tetra", H), "block", units="m"), STEEL)
+    pad = assemble_solid(solid_from_meshio(solid_mesh((2, 2, 1), "tetra", T, lift=H), "pad", units="m"), LINING)
+    base = assemble_solid(solid_from_meshio(solid_mesh((2, 2, 2), "tetra", H), "block", units="m"), STEEL)
     plane = assemble(body_from_meshio(rectangle(tmp_path / "plane.msh")), STEEL)
     with pytest.raises(ParameterError, match="slave's dimension"):
         PairProblem(pad, "z0", plane, "top", Translation((1.0, 0.0)))
@@ -127,9 +127,9 @@ def test_a_solid_with_a_plane_body_and_surfaces_that_face_away_are_refused(tmp_p
 
 
 def test_a_pad_pressed_deep_into_the_block_or_held_far_from_it_is_refused_saying_which():
-    base = assemble_solid(solid_from_meshio(_mesh((2, 2, 2), "tetra", H), "block", units="m"), STEEL)
+    base = assemble_solid(solid_from_meshio(solid_mesh((2, 2, 2), "tetra", H), "block", units="m"), STEEL)
     for lift, said in ((H - 0.004, "does not interpenetrate"), (H + 0.004, "farther than")):
-        pad = assemble_solid(solid_from_meshio(_mesh((2, 2, 1), "tetra", T, lift=lift), "pad", units="m"), LINING)
+        pad = assemble_solid(solid_from_meshio(solid_mesh((2, 2, 1), "tetra", T, lift=lift), "pad", units="m"), LINING)
         with pytest.raises(ParameterError, match=said):
             PairProblem(pad, "z0", base, "z1", Translation((1.0, 0.0)))
 
@@ -137,8 +137,8 @@ def test_a_pad_pressed_deep_into_the_block_or_held_far_from_it_is_refused_saying
 def test_on_a_side_face_the_sliding_is_the_master_velocity_less_its_normal_part():
     """A pad against the block's face x = L, the block moving at (1, 1, 0) m/s: the slip is along y at
     1 m/s (the normal part of the velocity, along x, does not slide)."""
-    base = assemble_solid(solid_from_meshio(_mesh((2, 2, 2), "tetra", H), "block", units="m"), STEEL)
-    side = _mesh((2, 2, 1), "tetra", T)
+    base = assemble_solid(solid_from_meshio(solid_mesh((2, 2, 2), "tetra", H), "block", units="m"), STEEL)
+    side = solid_mesh((2, 2, 1), "tetra", T)
     side.points[:, 0] += L
     pad = assemble_solid(solid_from_meshio(side, "pad", units="m"), LINING)
     problem = PairProblem(pad, "x0", base, "x1", Translation((1.0, 1.0)), friction=0.3)
