@@ -92,7 +92,7 @@ def _independent_pencil(pad, base, friction, interference):
     free = ~held
     # M u'' + K u = B^T lambda, G u = 0: u = Z q (Z spanning G's null space), and Y^T B^T = 0 (Y spanning B's)
     Z, Y = la.null_space(rows_g[:, free]), la.null_space(rows_b[:, free])
-    return Y.T @ K[free][:, free] @ Z, Y.T @ (mass[free][:, None] * Z)
+    return Y.T @ K[free][:, free] @ Z, Y.T @ (mass[free][:, None] * Z), (Z, K, mass, free)
 
 
 def test_the_3d_cea_of_a_pad_on_a_block_is_the_dense_solve_of_an_independently_assembled_pencil():
@@ -104,14 +104,34 @@ def test_the_3d_cea_of_a_pad_on_a_block_is_the_dense_solve_of_an_independently_a
     assert problem.steady.active.all()
     band = (0.0, 60e3)
     modes = complex_eigenvalues(problem, band, count=20)
-    Kr, Mr = _independent_pencil(pad, base, friction, interference)
-    s = np.sqrt(-la.eigvals(Kr, Mr).astype(complex))  # K_r q = -s^2 M_r q
+    Kr, Mr, (Z, K, mass, free) = _independent_pencil(pad, base, friction, interference)
+    mu, q = la.eig(Kr, Mr)
+    s = np.sqrt(-mu.astype(complex))  # K_r q = -s^2 M_r q
     s = np.where(s.imag < 0, -s, s)
-    s = s[(s.imag / (2 * math.pi) >= band[0]) & (s.imag / (2 * math.pi) <= band[1])]
+    inside = (s.imag / (2 * math.pi) >= band[0]) & (s.imag / (2 * math.pi) <= band[1])
+    s, q = s[inside], q[:, inside]
     assert len(s) == len(modes.s) > 5
     for value in modes.s:
         assert np.min(np.abs(s - value)) < 1e-7 * abs(value)
     assert np.any(modes.unstable)  # friction 0.6 couples two of the pad's modes: flutter
+    # each mode's energy in the pad, from the independent pencil's eigenvectors, the masses and K written here
+    from stickslip.fem.shares import energy_shares
+
+    modes = complex_eigenvalues(problem, band, count=20, mode_shapes=True)
+    shares = energy_shares(problem, modes)
+    pad_dofs = 3 * len(pad.points)
+    for k, value in enumerate(modes.s):
+        j = int(np.argmin(np.abs(s - value)))
+        if np.sort(np.abs(s - value))[1] < 1e-6 * abs(value):
+            continue  # a repeated eigenvalue: its shapes are not unique
+        u = np.zeros(len(mass), complex)
+        u[free] = Z @ q[:, j]
+        kinetic = mass * np.abs(u) ** 2
+        strain = [np.vdot(u[part], K[part][:, part] @ u[part]).real for part in (slice(0, pad_dofs),
+                                                                                  slice(pad_dofs, None))]
+        assert shares.kinetic_share.sel(part="slave").values[k] == pytest.approx(kinetic[:pad_dofs].sum() /
+                                                                                  kinetic.sum(), abs=1e-6)
+        assert shares.strain_share.sel(part="slave").values[k] == pytest.approx(strain[0] / sum(strain), abs=1e-6)
 
 
 def test_a_solid_with_a_plane_body_and_surfaces_that_face_away_are_refused(tmp_path):
@@ -145,3 +165,71 @@ def test_on_a_side_face_the_sliding_is_the_master_velocity_less_its_normal_part(
     t, speed = problem.tangent
     assert np.allclose(problem.coupling.normal, [1.0, 0.0, 0.0])
     assert np.allclose(t, [0.0, 1.0, 0.0]) and np.allclose(speed, 1.0)
+
+
+def _halves(mesh):
+    """``mesh`` (hexahedra) with the cell groups ``left`` (x < its middle) and ``right``."""
+    hexes = mesh.cells[0].data
+    x = mesh.points[hexes].mean(axis=1)[:, 0]
+    middle = 0.5 * (mesh.points[:, 0].min() + mesh.points[:, 0].max())
+    for name, cells in (("left", np.flatnonzero(x < middle)), ("right", np.flatnonzero(x > middle))):
+        mesh.cell_sets[name] = [cells] + [np.array([], dtype=int)] * (len(mesh.cells) - 1)
+    del mesh.cell_sets["all"]
+    return mesh
+
+
+def test_a_pair_symmetric_about_its_interface_and_its_middle_puts_a_quarter_of_each_modes_energy_in_each_part():
+    """Two equal steel blocks of hexahedra, one on the other (mirror images about the interface), each
+    clamped at its far face, each of two halves along x (cell groups): every mode is symmetric or
+    antisymmetric about both planes (the footprint 20 x 14 mm, so that no two modes of the other
+    symmetries share a frequency), so each quarter holds a quarter of its kinetic and strain energy."""
+    from stickslip.fem.shares import energy_shares
+
+    size, cells = (0.02, 0.014, 0.01), (4, 2, 2)
+    low = _halves(box(size, cells, "hexahedron"))
+    high = _halves(box(size, cells, "hexahedron"))
+    high.points[:, 2] = 0.02 - high.points[:, 2] - 1e-8  # mirrored, pressed 10 nm into the lower block
+    high.cells[0].data[:] = high.cells[0].data[:, [4, 5, 6, 7, 0, 1, 2, 3]]
+    halves = {"left": STEEL, "right": STEEL}
+    a = assemble_solid(solid_from_meshio(high, "upper", units="m"), halves)
+    b = assemble_solid(solid_from_meshio(low, "lower", units="m"), halves)
+    # mirrored, the upper block's group z1 is its lower face, z0 its upper one
+    problem = PairProblem(a, "z1", b, "z1", Translation((1.0, 0.0)), clamped_slave=("z0",), clamped_master=("z0",))
+    modes = complex_eigenvalues(problem, (0.0, 150e3), count=20, mode_shapes=True)
+    shares = energy_shares(problem, modes)
+    assert len(modes.s) >= 8 and sorted(shares.part.values) == ["master:left", "master:right", "slave:left",
+                                                                "slave:right"]
+    assert np.allclose(shares.kinetic_share, 0.25, atol=1e-6)
+    assert np.allclose(shares.strain_share, 0.25, atol=1e-6)
+
+
+def test_the_modes_of_a_pair_of_solids_go_to_paraview_and_to_a_universal_file_as_computed(tmp_path):
+    """Read back by meshio's XDMF reader and by pyuff (dataset 2411, then a 55 per mode): the
+    eigenvalue and the complex shape at each node, to the file format's six digits."""
+    import meshio
+    import pyuff
+
+    from stickslip.fem.paraview import write_modes_xdmf
+    from stickslip.fem.uff import write_modes_uff
+
+    pad = solid_from_meshio(solid_mesh((2, 2, 1), "tetra", T, lift=H - 2e-7), "pad", units="m")
+    base = solid_from_meshio(solid_mesh((2, 2, 2), "tetra", H), "block", units="m")
+    problem = PairProblem(assemble_solid(pad, LINING), "z0", assemble_solid(base, STEEL), "z1",
+                          Translation((1.0, 0.0)), friction=0.6, clamped_slave=("z1",), clamped_master=("z0",))
+    modes = complex_eigenvalues(problem, (0.0, 60e3), count=20, mode_shapes=True)
+    free = np.flatnonzero(~problem.fixed)
+    n = len(pad.points) + len(base.points)
+    first = np.zeros(3 * n, complex)
+    first[free] = modes.shapes[:free.size, 0]
+    first = (first / np.abs(first).max()).reshape(-1, 3)
+    sets = pyuff.UFF(str(write_modes_uff(problem, modes, tmp_path / "modes.uff"))).read_sets()
+    assert [d["type"] for d in sets] == [2411] + [55] * len(modes.s)
+    assert np.allclose(sets[0]["z"], np.concatenate([pad.points[:, 2], base.points[:, 2]]), rtol=1e-5)
+    assert abs(sets[1]["eig"] - modes.s[0]) < 1e-5 * abs(modes.s[0])
+    got = np.column_stack([sets[1]["r1"], sets[1]["r2"], sets[1]["r3"]])
+    assert np.allclose(got, first, atol=1e-5)
+    with meshio.xdmf.TimeSeriesReader(write_modes_xdmf(problem, modes, tmp_path / "modes.xdmf")) as reader:
+        points, cells = reader.read_points_cells()
+        _, data, _ = reader.read_data(0)
+    assert points.shape == (n, 3) and cells[0].type == "tetra"
+    assert np.allclose(data["mode_real"] + 1j * data["mode_imag"], first, atol=1e-12)

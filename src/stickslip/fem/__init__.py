@@ -25,8 +25,14 @@
 * `solid`: a 3-D elastic body (linear tetrahedra or hexahedra, a material per cell group, its
   length unit stated), its stiffness and lumped mass, clamps and rollers on face groups and its
   modes (`read_solid`, `assemble_solid`, `supported_dofs`, `solid_modes`, `solid_static`; orthotropic
-  linings, `OrthotropicSolid`): the first increment of 3-D; contact, the CEA and runs of solids come next;
-* `cad`: a STEP file's solids meshed in metres by gmsh's OpenCASCADE kernel (`mesh_step`).
+  linings, `OrthotropicSolid`); explicit runs of solids come next;
+* `cad`: a STEP file's solids meshed in metres by gmsh's OpenCASCADE kernel (`mesh_step`);
+* `mortar3`: the mortar coupling of two solids' faces (`PairProblem` takes two solids: steady sliding
+  and the full CEA as for 2-D bodies);
+* `reduced`: the modally reduced CEA of a pair and its friction sweeps (`modal_basis`, `reduced_modes`,
+  `reduced_sweep`);
+* `shares`: each mode's kinetic and strain energy by body and cell group (`energy_shares`);
+* `uff`: complex mode shapes to the Universal File Format for NVH tools (`write_modes_uff`).
 """
 
 from .assembly import BodySystem, Material, assemble
@@ -39,7 +45,10 @@ from .run import BodyInitial, BodyRun, classify_body, integrate_body, perturbed_
 from .scheme import BodyScheme, ContactProblem
 from .solid import (OrthotropicSolid, Solid, SolidSystem, assemble_solid, read_solid, solid_damped_modes,
                     solid_from_meshio, solid_modes, solid_static, supported_dofs)
+from .reduced import ModalBasis, modal_basis, reduced_modes, reduced_sweep
+from .shares import energy_shares
 from .static import SteadyContact, steady_contact
+from .uff import write_modes_uff
 from .surfaces import ContactFrames, RigidCylinder, RigidFlat, contact_frames
 
 __all__ = ["Body", "read_body", "body_from_meshio", "CELL_KINDS", "Material", "BodySystem", "assemble",
@@ -47,5 +56,6 @@ __all__ = ["Body", "read_body", "body_from_meshio", "CELL_KINDS", "Material", "B
            "ContactProblem", "BodyScheme", "CeaModes", "complex_eigenvalues", "BodyInitial", "BodyRun",
            "integrate_body", "classify_body", "perturbed_steady_body", "preload_body", "Spring", "Load",
            "PairProblem", "PairSteady", "Rotation", "Translation", "steady_pair", "PairScheme", "PairRun",
-           "integrate_pair", "Solid", "SolidSystem", "read_solid", "solid_from_meshio", "assemble_solid",
+           "integrate_pair", "ModalBasis", "modal_basis", "reduced_modes", "reduced_sweep", "energy_shares",
+           "write_modes_uff", "Solid", "SolidSystem", "read_solid", "solid_from_meshio", "assemble_solid",
            "supported_dofs", "solid_modes", "solid_static", "OrthotropicSolid", "solid_damped_modes"]

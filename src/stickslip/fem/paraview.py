@@ -18,9 +18,10 @@ Both write the body's mesh (points at ``z = 0``, in m) with `stickslip.files.wri
   (`complex_eigenvalues(..., mode_shapes=True)`; of a pair of bodies too, both meshes in one
   with the point data ``body``, 0 the slave and 1 the master), one step per mode (the step's "time" is the
   mode's index in ``modes``, most unstable first): ``mode_real``, ``mode_imag`` (the complex
-  shape, normalised to a largest displacement of 1), ``mode_amplitude`` and, constant over
-  the mesh, ``growth_rate`` [1/s] and ``frequency`` [Hz]. Vectors are Cartesian, padded with
-  ``z = 0``.
+  shape, normalised to a largest displacement of 1: ``Re(w e^(i phi))`` animates it), ``mode_amplitude``
+  and, constant over the mesh, ``growth_rate`` [1/s] and ``frequency`` [Hz]. Vectors are Cartesian, a
+  2-D body's padded with ``z = 0``; a pair of solids is written in 3-D (its reduced CEA's modes too,
+  `stickslip.fem.reduced`).
 """
 
 from __future__ import annotations
@@ -41,14 +42,15 @@ __all__ = ["write_run_xdmf", "write_modes_xdmf", "run_snapshot"]
 
 
 def _mesh(body):
-    points = np.column_stack([body.points, np.zeros(len(body.points))])
+    """Points ``(n, 3)`` (a 2-D body's at ``z = 0``) and the cell block of a body or a solid."""
+    points = body.points if body.points.shape[1] == 3 else np.column_stack([body.points, np.zeros(len(body.points))])
     return points, [(body.kind, body.cells.astype(np.int64))]
 
 
-def _vectors(xy: np.ndarray) -> np.ndarray:
-    """``(2 n,)`` Cartesian dof values -> ``(n, 3)`` vectors."""
-    xy = np.asarray(xy).reshape(-1, 2)
-    return np.column_stack([xy, np.zeros(len(xy), dtype=xy.dtype)])
+def _vectors(xy: np.ndarray, dim: int = 2) -> np.ndarray:
+    """``(dim n,)`` Cartesian dof values -> ``(n, 3)`` vectors."""
+    xy = np.asarray(xy).reshape(-1, dim)
+    return xy if dim == 3 else np.column_stack([xy, np.zeros(len(xy), dtype=xy.dtype)])
 
 
 def write_run_xdmf(run: BodyRun | PairRun, path) -> Path:
@@ -135,15 +137,16 @@ def _pair_run(run: PairRun, path) -> Path:
 def _pair_modes(problem, modes: CeaModes, path) -> Path:
     """The mode shapes of a pair of bodies: both meshes in one (`_both`)."""
     points, cells, which = _both(problem)
-    free = problem.linearised()[3]
-    n = len(points)
+    free = np.flatnonzero(~problem.fixed)
+    n, dim = len(points), problem.dimension
 
     def step(k):
-        u = np.zeros(2 * n, dtype=complex)
+        u = np.zeros(dim * n, dtype=complex)
         u[free] = modes.shapes[:free.size, k]
         u = u / np.abs(u).max()
-        amplitude = np.hypot(np.abs(u[0::2]), np.abs(u[1::2]))
-        return float(k), {"mode_real": _vectors(u.real), "mode_imag": _vectors(u.imag), "mode_amplitude": amplitude,
+        amplitude = np.sqrt(np.sum(np.abs(u.reshape(-1, dim)) ** 2, axis=1))
+        return float(k), {"mode_real": _vectors(u.real, dim), "mode_imag": _vectors(u.imag, dim),
+                          "mode_amplitude": amplitude,
                           "growth_rate": np.full(n, modes.growth_rate[k]), "frequency": np.full(n, modes.frequency[k]),
                           "body": which}, {}
 

@@ -227,6 +227,7 @@ class SolidSystem:
     damping: sp.csr_array
     materials: dict = field(default_factory=dict)  # {cell group: material}, {"": material} for one
     group_mass: dict = field(default_factory=dict)  # {cell group: its lumped mass per dof}, for energy shares
+    group_stiffness: dict = field(default_factory=dict)  # {cell group: its stiffness (CSR)}, for energy shares
 
     @property
     def n_dofs(self) -> int:
@@ -467,15 +468,15 @@ def assemble_solid(solid: Solid, material, loads=()) -> SolidSystem:
     f = to_ours @ f
     mass, C = np.zeros(n), sp.csr_array((n, n))
     names = list(material) if isinstance(material, dict) else [""]  # each material's cell group
-    group_mass = {}
+    group_mass, group_stiffness = {}, {}
     for (cells, m, Kg, Mg), name in zip(parts, names):
         lumped = _lumped(solid, cells, m.density, Mg)
         mass += lumped
-        group_mass[name] = lumped
+        group_mass[name], group_stiffness[name] = lumped, sp.csr_array(Kg)
         if m.alpha or m.beta:  # Rayleigh, each material's own: C = sum (alpha M + beta K) over its cells
             C = C + m.alpha * sp.diags_array(lumped) + m.beta * Kg
     return SolidSystem(solid, sp.csr_array(K), mass, f, sp.csr_array(M), sp.csr_array(C),
-                       {name: m for name, (_, m) in zip(names, pairs)}, group_mass)
+                       {name: m for name, (_, m) in zip(names, pairs)}, group_mass, group_stiffness)
 
 
 def _lumped(solid: Solid, cells: np.ndarray, density: float, consistent) -> np.ndarray:

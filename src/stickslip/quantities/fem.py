@@ -36,6 +36,8 @@ FEM = Domain("fem", units="SI", quantities=[
     Q("g13", "Pa", "shear modulus of an orthotropic solid in its 1-3 plane (3-D)", "[1000, 1e13]", why=YOUNG_WHY),
     Q("g23", "Pa", "shear modulus of an orthotropic solid in its 2-3 plane (3-D)", "[1000, 1e13]", why=YOUNG_WHY),
     Q("near", "Hz", "frequency about which a solid's damped modes are looked for", "[0, 1e12)"),
+    Q("top", "Hz", "highest real mode of a reduction basis (the reduced CEA)", "[0, 1e12)"),
+    Q("augmented", "1", "static vectors of the contact forces in a reduction basis", "[0, 1e9]", integer=True),
     Q("nu12", "1", "Poisson's ratio of an orthotropic material: contraction along 2 per strain along 1", "(-1, 10)",
       why=ORTHO_WHY),
     Q("nu13", "1", "Poisson's ratio of an orthotropic material: out of the plane per strain along 1", "(-1, 10)",
