@@ -288,8 +288,9 @@ def sliding(coupling: Mortar, motion, points, required: bool = True) -> tuple[np
 class PairProblem:
     """A ``slave`` body (the pad) on a ``master`` body (the disc), both `BodySystem`: their
     contact groups, the master's ``motion`` (`Rotation` or `Translation`), the Coulomb
-    ``friction``, each body's clamped boundary groups and its rollers ``{group: axis}`` (a group's
-    nodes held along the coordinate axis ``"x"``, ``"y"`` or, on a solid, ``"z"``: a symmetry plane).
+    ``friction``, each body's clamped boundary groups and its rollers ``{group: axes}`` (a group's
+    nodes held along the coordinate axis ``"x"``, ``"y"`` or, on a solid, ``"z"``: a symmetry plane;
+    ``"xy"``: along both, a face held in its plane).
     Two 2-D bodies (`BodySystem`) or two solids (`stickslip.fem.solid.SolidSystem`: a solid turns
     about the z axis through the rotation's centre; no gyroscopic terms yet).
 
@@ -404,9 +405,12 @@ class PairProblem:
                 raise ParameterError(option.replace("clamped", "rollers"), rollers, "{face group: axis} or None")
             for name, axis in rollers.items():
                 where = f"{option.replace('clamped', 'rollers')}[{name}]"
-                if not isinstance(axis, str) or len(axis) != 1 or axis not in "xyz"[:dim]:
-                    raise ParameterError(where, axis, f"a coordinate axis: {' or '.join('xyz'[:dim])}")
-                mask[offset + dim * system.body.nodes(name, where) + "xyz".index(axis)] = True
+                if not isinstance(axis, str) or not axis or len(set(axis)) != len(axis) or \
+                        any(a not in "xyz"[:dim] for a in axis):
+                    raise ParameterError(where, axis, f"coordinate axes: {' or '.join('xyz'[:dim])}, or several "
+                                         "of them (\"xy\": held along both)")
+                for a in axis:
+                    mask[offset + dim * system.body.nodes(name, where) + "xyz".index(a)] = True
         return mask
 
     @cached_property
