@@ -9,8 +9,8 @@ entry, so that on the free degrees of freedom the stiffness at a Coulomb frictio
 
 (``G_A``, ``T_A`` the active nodes' weighted normal and sliding rows, ``W`` their weights). The basis
 is the ``count`` lowest real modes ``Phi`` of the undamped structure with its contact springs,
-``K0 Phi = M Phi Omega^2`` (a sparse shift-invert Lanczos), by default with the static responses to
-unit forces at the contact nodes (``augment``: see `modal_basis`), as Ritz vectors ``Psi``
+``K0 Phi = M Phi Omega^2`` (a sparse shift-invert Lanczos), by default with static responses to
+the modes' contact forces (``augment``: see `modal_basis`), as Ritz vectors ``Psi``
 (``Psi^T M Psi = I``), and the complex problem is solved in that subspace,
 ``(s^2 I + s Psi^T C Psi + Psi^T K(mu) Psi) q = 0``
 (``C`` the bodies' Rayleigh damping), densely: cheap enough that a friction sweep costs one
@@ -74,7 +74,8 @@ class ModalBasis:
 
 
 def _parts(problem: PairProblem, penalty: float):
-    """``(K0, F, M, C, free, active)`` on the free degrees of freedom (see the module docstring)."""
+    """``(K0, F, M, C, free, active, springs)`` on the free degrees of freedom (see the module
+    docstring; ``springs = K0 - K``, the contact's)."""
     st = problem.steady
     if not st.loaded:
         raise NoSolutionError("steady sliding of the pair carries no contact force: press the bodies together")
@@ -83,27 +84,36 @@ def _parts(problem: PairProblem, penalty: float):
     K = problem.K[free][:, free]
     k = penalty * float(np.abs(K.diagonal()).max())
     W2G = sp.diags(1.0 / problem.coupling.weight[A] ** 2) @ problem.G[A][:, free]
-    K0 = (K + k * problem.G[A][:, free].T @ W2G).tocsc()
+    springs = (k * problem.G[A][:, free].T @ W2G).tocsc()
+    K0 = (K + springs).tocsc()
     F = (k * problem.T[A][:, free].T @ W2G).tocsc()
     C = None if problem.C is None else problem.C[free][:, free]
-    return K0, F, problem.mass[free], C, free, A
+    return K0, F, problem.mass[free], C, free, A, springs
 
 
 #: Static vectors solved at once (a block of right-hand sides).
 BLOCK = 64
 
 
-def modal_basis(problem: PairProblem, count: int, penalty: float | None = None, augment: str = "contact") -> ModalBasis:
+def modal_basis(problem: PairProblem, count: int, penalty: float | None = None, augment: str = "modes") -> ModalBasis:
     """The ``count`` lowest real modes of ``problem`` about its steady sliding with the contact's
     penalty springs (``penalty`` as the full CEA's, default `stickslip.fem.cea.PENALTY`), and the
-    reduced operators (see the module docstring). ``augment="contact"`` (the default) adds to the
-    modes the static responses to a unit normal and a unit sliding force at each active contact node
-    (``(K0 - sigma M)^-1 [G_A^T, T_A^T]``, ``sigma`` just below the lowest mode), and the basis is the
-    Ritz vectors of both: the friction forces' local, static part, which the modes of a stiff contact
-    reach only through its stiffest modes (on a pad on a block of 240 dofs, 80 modes left a growth
-    rate 110 1/s off the full CEA's 3552; with the static vectors, 0.03 1/s). ``augment="none"``: the
-    modes alone, the reduction commercial tools use. Coulomb friction only: a friction law or a
-    pressure law is refused (their coefficients vary with the sliding speed and the pressure)."""
+    reduced operators (see the module docstring).
+
+    The friction forces' local, static part is what the modes of a stiff contact reach only through
+    its stiffest modes, so by default static vectors are added and the basis is the Ritz vectors of
+    all (``(K0 - sigma M)^-1 loads``, ``sigma`` just below the lowest mode):
+    ``augment="modes"`` (the default): two per mode, the responses to its friction forces ``F phi``
+    and to its contact springs' forces ``(K0 - K) phi``; ``augment="nodes"``: two per active contact
+    node, the responses to a unit normal and a unit sliding force there (every contact force is in
+    their span; costly where the contact has thousands of nodes); ``augment="none"``: the modes alone,
+    the reduction commercial tools use. On a pad on a block of 240 dofs, 80 modes alone left a growth
+    rate 110 1/s off the full CEA's 3552 and the critical friction 0.9 % off (1-5 % from 20 to 160
+    modes, not converging); with the nodes' static vectors 0.03 1/s and 1.3e-4, the modes' 0.04 1/s
+    and 1.2e-4; but with 20 modes the modes' static vectors gave a spurious instability (a critical
+    friction 43 % low): check a result against a basis of twice the modes (or the full CEA).
+    Coulomb friction only: a friction law or a pressure law is refused (their coefficients vary with
+    the sliding speed and the pressure)."""
     from scipy.sparse.linalg import eigsh, splu
 
     if not isinstance(problem, PairProblem):
@@ -111,17 +121,21 @@ def modal_basis(problem: PairProblem, count: int, penalty: float | None = None, 
     if problem.law is not None or problem.pressure_law is not None:
         raise ParameterError("problem", "a pair with a friction or pressure law", "a pair with Coulomb friction "
                              "(the reduced CEA of laws comes in a later release; the full CEA takes them)")
-    if augment not in ("contact", "none"):
-        raise ParameterError("augment", augment, "'contact' (the static vectors of the contact forces) or 'none'")
+    if augment not in ("modes", "nodes", "none"):
+        raise ParameterError("augment", augment, "'modes' (static vectors of each mode's contact forces), 'nodes' "
+                             "(of unit forces at each contact node) or 'none'")
     penalty = Q.check("penalty", PENALTY if penalty is None else penalty)
-    K0, F, mass, C, free, active = _parts(problem, penalty)
+    K0, F, mass, C, free, active, springs = _parts(problem, penalty)
     count = checked_count("count", count, max(2, min(MAX_BASIS, free.size - 2)), "modes")
     shift = -1e-6 * float(np.max(K0.diagonal() / mass))  # below the lowest (the pair may still move freely)
     values, phi = eigsh(K0, k=count, M=sp.diags(mass).tocsc(), sigma=shift, which="LM")
     top = float(np.sqrt(max(values.max(), 0.0)) / (2 * math.pi))
     vectors = [phi]
-    if augment == "contact":
-        loads = sp.vstack([problem.G[active][:, free], problem.T[active][:, free]]).T.tocsc()
+    if augment != "none":
+        if augment == "nodes":
+            loads = sp.vstack([problem.G[active][:, free], problem.T[active][:, free]]).T.tocsc()
+        else:
+            loads = sp.csc_matrix(np.hstack([F @ phi, springs @ phi]))
         lu = splu((K0 - shift * sp.diags(mass)).tocsc())
         vectors += [lu.solve(loads[:, j:j + BLOCK].toarray()) for j in range(0, loads.shape[1], BLOCK)]
     V = np.hstack(vectors)
@@ -190,11 +204,14 @@ def reduced_sweep(basis: ModalBasis, frictions, band=None, tol: float = 1e-4) ->
     tol = Q.check("onset_tolerance", tol, "tol")
     band = reduced_modes(basis, values[0], band).band
 
+    lo, hi = band
+
     def solve(value):
-        modes = reduced_modes(basis, value, band)
         s, q = _eigen(basis, value)
-        pick = [int(np.argmin(np.abs(s - z))) for z in modes.s]
-        return modes.s, q[:, pick].T
+        f = s.imag / (2 * math.pi)
+        inside = np.flatnonzero((f >= lo) & (f <= hi))
+        order = inside[np.argsort(-s.real[inside], kind="stable")]
+        return s[order], q[:, order].T
 
     points = [solve(v) for v in values]
     s, _ = track([p[0] for p in points], [p[1] for p in points])
