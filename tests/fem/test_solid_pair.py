@@ -146,9 +146,10 @@ def test_a_solid_with_a_plane_body_and_surfaces_that_face_away_are_refused(tmp_p
         PairProblem(pad, "z0", base, "z1", Translation((1.0, 0.0)), rollers_slave={"x0": "w"})
 
 
-def test_a_pad_pressed_deep_into_the_block_or_held_far_from_it_is_refused_saying_which():
+def test_a_pad_pressed_deep_into_the_block_or_held_far_from_it_or_overlapping_it_by_a_strain_is_refused_saying_which():
     base = assemble_solid(solid_from_meshio(solid_mesh((2, 2, 2), "tetra", H), "block", units="m"), STEEL)
-    for lift, said in ((H - 0.004, "does not interpenetrate"), (H + 0.004, "farther than")):
+    for lift, said in ((H - 0.004, "does not interpenetrate"), (H + 0.004, "farther than"),
+                       (H - 0.0003, r"overlap by 0\.0003 m, a strain of 0\.0375")):  # 0.3 mm into 8 mm
         pad = assemble_solid(solid_from_meshio(solid_mesh((2, 2, 1), "tetra", T, lift=lift), "pad", units="m"), LINING)
         with pytest.raises(ParameterError, match=said):
             PairProblem(pad, "z0", base, "z1", Translation((1.0, 0.0)))

@@ -93,6 +93,9 @@ GAUSS = (0.5 - 0.5 / math.sqrt(3.0), 0.5 + 0.5 / math.sqrt(3.0))
 #: mesh, 21 % of the face's nodes lost their pressure; at 0.31, a 4-mm pad on it, none; at 1.7
 #: and 2.1, a 6-mm disc mesh, 41 and 64 %; at 0.07 and 0.09, a 1.5-mm one, none).
 FACETS = 1.0 / 3.0
+#: The largest overlap of a pair's meshes, over the slave's thickness along the contact normal: a strain
+#: scale (issue 45: 2 mm into an 8 mm lining, 0.25, ran at 1.5 GPa).
+INTERFERENCE = 0.02
 #: Master segments farther than this times the slave line's length (either side) are not its
 #: partners; a body farther inside the other is refused (as a rigid surface's, `contact_frames`).
 REACH = 0.05
@@ -346,6 +349,7 @@ class PairProblem:
                                  "terms come in a later release)")
         _ = self.tangent  # the coupling and the sliding direction: a pair that cannot touch is refused here
         _ = self.fixed  # the supports: a group or an axis that is not there is refused here
+        self._interference()
         if self.law is not None:
             speed = self.tangent[1]
             if speed.max() >= self.law.max_speed:
@@ -355,6 +359,23 @@ class PairProblem:
             object.__setattr__(self, "static_friction", float(self.law.static))
         elif self.static_friction is None:
             object.__setattr__(self, "static_friction", float(self.friction))
+
+    def _interference(self) -> None:
+        """An overlap of the meshes beyond `INTERFERENCE` times the slave's thickness along the contact
+        normal is refused (a strain of that size is not a preload: 2 mm into an 8 mm lining ran at 1.5 GPa)."""
+        c = self.coupling
+        can = np.asarray(c.M.sum(axis=1)).ravel() > 0.5 * c.weight
+        if not can.any():
+            return
+        overlap = float(max(0.0, -np.min(self.gap[can] / c.weight[can])))
+        mean = c.normal.mean(axis=0)
+        along = self.slave.body.points @ (mean / np.linalg.norm(mean))
+        thickness = float(np.ptp(along))
+        if overlap > INTERFERENCE * thickness:
+            raise ParameterError("slave_group", self.slave_group, f"a contact whose meshes overlap by at most "
+                                 f"{INTERFERENCE:g} x the slave's thickness along the normal ({thickness:.4g} m): they "
+                                 f"overlap by {overlap:.4g} m, a strain of {overlap / thickness:.3g} (check the meshes' "
+                                 "positions and units; press the bodies together with a load)", also=("master_group",))
 
     @property
     def dimension(self) -> int:
