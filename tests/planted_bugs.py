@@ -506,6 +506,10 @@ MUTANTS: list[dict] = [
     _m("pair-interference-unchecked", F + "pair.py", "        if overlap > INTERFERENCE * thickness:",
        "        if overlap > 1e3 * INTERFERENCE * thickness:",
        "pair: meshes overlapping by a strain of several percent taken as a preload", [T + "fem/test_solid_pair.py"]),
+    _m("cea-real-lu-imaginary", F + "cea.py", "+ 1j * self.lu.solve(np.ascontiguousarray(b.imag))",
+       "- 1j * self.lu.solve(np.ascontiguousarray(b.imag))",
+       "CEA: the real LU of an undamped problem solving a complex right-hand side's imaginary part with the "
+       "wrong sign", [T + "fem/test_solid_pair.py", T + "fem/test_cea.py"]),
     _m("pair3-sliding-normal-kept", F + "pair.py", "v = v - np.sum(v * n, axis=1)[:, None] * n",
        "v = v + np.sum(v * n, axis=1)[:, None] * n",
        "pair of solids: the sliding direction not projected onto the tangent plane",

@@ -201,7 +201,7 @@ def eigenvalues_near(K_eff, C_eff, mass, shift_hz: float, count: int, vectors: b
 
     The pencil ``[[0, om I], [-K, -om C]] x = s [[I, 0], [0, om M]] x`` of ``x = (w, s w / om)`` is
     shift-inverted about ``sigma = i 2 pi shift_hz`` (one sparse LU of
-    ``K + sigma C + sigma^2 M``), so that Arnoldi returns the ``count``
+    ``K + sigma C + sigma^2 M``, in real arithmetic where ``C`` is zero), so that Arnoldi returns the ``count``
     eigenvalues nearest ``sigma`` in the complex ``s`` plane: a strongly unstable mode (far
     from the imaginary axis) is as near as a neutral one at the same distance. The farthest
     of them may have neighbours just as far that were not returned, so only those nearer than
@@ -212,7 +212,7 @@ def eigenvalues_near(K_eff, C_eff, mass, shift_hz: float, count: int, vectors: b
     C = sp.csr_matrix((n, n)) if C_eff is None else C_eff
     M = mass if sp.issparse(mass) else sp.diags(np.asarray(mass, dtype=float))  # lumped (a vector) or a matrix
     sigma = 1j * w0
-    lu = sla.splu((K_eff + sigma * C + sigma**2 * M).astype(complex).tocsc())
+    lu = _factor(K_eff, C, M, sigma)
     # x = (w, s w / om): with om of the order of the frequencies, both halves of an
     # eigenvector are of one size (with om = 1 Arnoldi loses 1e-6 of s near sigma = 0)
     om = max(w0, math.sqrt(np.mean(np.abs(K_eff.diagonal())) / np.mean(np.abs(M.diagonal()))))
@@ -239,6 +239,25 @@ def eigenvalues_near(K_eff, C_eff, mass, shift_hz: float, count: int, vectors: b
     s = np.where(flip, np.conj(s), s)  # one of each conjugate pair: Im s >= 0
     vec = np.where(flip, np.conj(vec), vec)[:n]
     return s, (vec if vectors else None), dist < radius, upper, radius
+
+
+class _RealLU:
+    """The LU of a real ``Q(sigma)`` solving complex right-hand sides by parts (undamped problems: half
+    the memory of a complex LU, and on the 3-D brake a quarter of its time)."""
+
+    def __init__(self, A):
+        self.lu = sla.splu(A.tocsc())
+
+    def solve(self, b):
+        return self.lu.solve(np.ascontiguousarray(b.real)) + 1j * self.lu.solve(np.ascontiguousarray(b.imag))
+
+
+def _factor(K, C, M, sigma):
+    """The sparse LU of ``Q(sigma) = K + sigma C + sigma^2 M`` (SuperLU): real where ``C`` is zero and
+    ``sigma`` imaginary (``Q = K - w^2 M``), complex otherwise."""
+    if C.nnz == 0 or not np.any(C.data):
+        return _RealLU(K + (sigma**2).real * M)
+    return sla.splu((K + sigma * C + sigma**2 * M).astype(complex).tocsc())
 
 
 def count_sketch(n: int, size: int):
