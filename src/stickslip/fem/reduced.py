@@ -97,7 +97,7 @@ BLOCK = 64
 
 def modal_basis(problem: PairProblem, count: int, penalty: float | None = None, augment: str = "modes") -> ModalBasis:
     """The ``count`` lowest real modes of ``problem`` about its steady sliding with the contact's
-    penalty springs (``penalty`` as the full CEA's, default `stickslip.fem.cea.PENALTY`), and the
+    penalty springs (one more where the last is one of a repeated pair), (``penalty`` as the full CEA's, default `stickslip.fem.cea.PENALTY`), and the
     reduced operators (see the module docstring).
 
     The friction forces' local, static part is what the modes of a stiff contact reach only through
@@ -127,8 +127,17 @@ def modal_basis(problem: PairProblem, count: int, penalty: float | None = None, 
     penalty = Q.check("penalty", PENALTY if penalty is None else penalty)
     K0, F, mass, C, free, active, springs = _parts(problem, penalty)
     count = checked_count("count", count, max(2, min(MAX_BASIS, free.size - 2)), "modes")
-    shift = -1e-6 * float(np.max(K0.diagonal() / mass))  # below the lowest (the pair may still move freely)
-    values, phi = eigsh(K0, k=count, M=sp.diags(mass).tocsc(), sigma=shift, which="LM")
+    # below the lowest mode (the pair may still move freely), by the structure's typical stiffness over mass
+    # (not the largest: the contact springs' would put the shift far below the modes, and Lanczos would crawl)
+    shift = -1e-6 * float(np.median(K0.diagonal() / mass))
+    start = np.random.default_rng(20261128).standard_normal(free.size)  # the same basis in every run
+    values, phi = eigsh(K0, k=min(count + 2, free.size - 1), M=sp.diags(mass).tocsc(), sigma=shift, which="LM",
+                        v0=start)
+    order = np.argsort(values)
+    values, phi = values[order], phi[:, order]
+    while count < len(values) and values[count] - values[count - 1] <= 1e-6 * values[count]:
+        count += 1  # a repeated mode (a disc's doublet) is kept whole: half of one makes the basis arbitrary
+    values, phi = values[:count], phi[:, :count]
     top = float(np.sqrt(max(values.max(), 0.0)) / (2 * math.pi))
     vectors = [phi]
     if augment != "none":
