@@ -47,6 +47,7 @@ def write_step(path) -> Path:
     gmsh.initialize(["-noenv"])
     try:
         gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.option.setString("Geometry.OCCTargetUnit", "MM")  # written in millimetres, whatever was set before
         occ = gmsh.model.occ
         outer = occ.addCylinder(0, 0, 0, 0, 0, DISC, OUTER)
         bore = occ.addCylinder(0, 0, 0, 0, 0, DISC, BORE)

@@ -114,7 +114,7 @@ def modal_basis(problem: PairProblem, count: int, penalty: float | None = None, 
     friction 43 % low): check a result against a basis of twice the modes (or the full CEA).
     Coulomb friction only: a friction law or a pressure law is refused (their coefficients vary with
     the sliding speed and the pressure)."""
-    from scipy.sparse.linalg import eigsh, splu
+    from scipy.sparse.linalg import LinearOperator, eigsh, splu
 
     if not isinstance(problem, PairProblem):
         raise ParameterError("problem", problem, "a stickslip.fem.PairProblem")
@@ -131,8 +131,10 @@ def modal_basis(problem: PairProblem, count: int, penalty: float | None = None, 
     # (not the largest: the contact springs' would put the shift far below the modes, and Lanczos would crawl)
     shift = -1e-6 * float(np.median(K0.diagonal() / mass))
     start = np.random.default_rng(20261128).standard_normal(free.size)  # the same basis in every run
+    lu = splu((K0 - shift * sp.diags(mass)).tocsc())  # one factorisation for Lanczos and the static vectors
+    inverse = LinearOperator(K0.shape, matvec=lu.solve, dtype=float)
     values, phi = eigsh(K0, k=min(count + 2, free.size - 1), M=sp.diags(mass).tocsc(), sigma=shift, which="LM",
-                        v0=start)
+                        v0=start, OPinv=inverse)
     order = np.argsort(values)
     values, phi = values[order], phi[:, order]
     while count < len(values) and values[count] - values[count - 1] <= 1e-6 * values[count]:
@@ -145,7 +147,6 @@ def modal_basis(problem: PairProblem, count: int, penalty: float | None = None, 
             loads = sp.vstack([problem.G[active][:, free], problem.T[active][:, free]]).T.tocsc()
         else:
             loads = sp.csc_matrix(np.hstack([F @ phi, springs @ phi]))
-        lu = splu((K0 - shift * sp.diags(mass)).tocsc())
         vectors += [lu.solve(loads[:, j:j + BLOCK].toarray()) for j in range(0, loads.shape[1], BLOCK)]
     V = np.hstack(vectors)
     root = np.sqrt(mass)[:, None]
