@@ -510,6 +510,9 @@ MUTANTS: list[dict] = [
        "- 1j * self.lu.solve(np.ascontiguousarray(b.imag))",
        "CEA: the real LU of an undamped problem solving a complex right-hand side's imaginary part with the "
        "wrong sign", [T + "fem/test_solid_pair.py", T + "fem/test_cea.py"]),
+    _m("solid-held-truncated", F + "solid.py", "    if given.size and not np.issubdtype(given.dtype, np.integer):",
+       "    if False:", "3-D solid: held degrees of freedom given as floats truncated to integers (1.5 holds 1)",
+       [T + "fem/test_solid.py"]),
     _m("pair3-sliding-normal-kept", F + "pair.py", "v = v - np.sum(v * n, axis=1)[:, None] * n",
        "v = v + np.sum(v * n, axis=1)[:, None] * n",
        "pair of solids: the sliding direction not projected onto the tangent plane",

@@ -473,3 +473,14 @@ def test_rayleigh_damping_of_a_solid_damps_each_mode_as_its_closed_form_says():
     np.testing.assert_allclose(growth, -zeta_w, rtol=1e-8)
     np.testing.assert_allclose(2 * math.pi * freq, np.sqrt(w**2 - zeta_w**2), rtol=1e-8)
     assert shapes.shape == (3 * len(solid.points), 3)
+
+
+def test_held_degrees_of_freedom_that_are_not_integers_are_refused_not_truncated():
+    """1.5 is no degree of freedom: numpy's int64 cast made it 1 (held the wrong one, silently)."""
+    solid = solid_from_meshio(box((0.02, 0.01, 0.01), (2, 1, 1)), units="m")
+    system = assemble_solid(solid, STEEL)
+    held = supported_dofs(solid, clamped="x0")
+    for bad in (held + 0.5, held.astype(float), ["a"]):
+        with pytest.raises(ParameterError, match="integer indices"):
+            solid_modes(system, bad, count=2)
+    assert solid_modes(system, held, count=2)[0].size == 2

@@ -498,7 +498,14 @@ def _held(system, held) -> tuple:
     if not isinstance(system, SolidSystem):
         raise ParameterError("system", system, "a SolidSystem (assemble_solid)")
     n = system.n_dofs
-    held = np.asarray(held, dtype=np.int64).ravel()
+    try:
+        given = np.asarray(held).ravel()
+    except (TypeError, ValueError):
+        given = np.asarray([None])
+    if given.size and not np.issubdtype(given.dtype, np.integer):
+        raise ParameterError("held", f"{given.size} values of type {given.dtype}", "integer indices of degrees of "
+                             "freedom (supported_dofs gives them; a float such as 1.5 names no degree of freedom)")
+    held = given.astype(np.int64)
     if held.size and (held.min() < 0 or held.max() >= n):
         raise ParameterError("held", f"{held.size} indices", f"degrees of freedom of the solid (0 to {n - 1})")
     return n, held, np.setdiff1d(np.arange(n), held)
