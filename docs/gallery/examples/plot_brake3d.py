@@ -33,9 +33,7 @@ for b in np.flatnonzero(~np.isnan(tracked.critical)):
     print(f"branch {b:2d}: unstable above friction {tracked.critical[b]:.4f} at {tracked.critical_frequency[b]:7.1f} Hz")
 
 modes = reduced_modes(basis, 0.8, band=(1e3, 12e3), mode_shapes=True)
-free = np.flatnonzero(~problem.fixed)
-u = np.zeros(problem.slave.n_dofs + problem.master.n_dofs, complex)
-u[free] = modes.shapes[:, 0]
+u = problem.displacements(modes.shapes)[:, 0]
 disc = problem.master.body
 face = disc.nodes("rubbing")
 w = u[problem.slave.n_dofs:].reshape(-1, 3)[face, 2]

@@ -363,8 +363,7 @@ class PairProblem:
     def _interference(self) -> None:
         """An overlap of the meshes beyond `INTERFERENCE` times the slave's thickness along the contact
         normal is refused (a strain of that size is not a preload: 2 mm into an 8 mm lining ran at 1.5 GPa)."""
-        c = self.coupling
-        can = np.asarray(c.M.sum(axis=1)).ravel() > 0.5 * c.weight
+        c, can = self.coupling, self.can_touch
         if not can.any():
             return
         overlap = float(max(0.0, -np.min(self.gap[can] / c.weight[can])))
@@ -376,6 +375,24 @@ class PairProblem:
                                  f"{INTERFERENCE:g} x the slave's thickness along the normal ({thickness:.4g} m): they "
                                  f"overlap by {overlap:.4g} m, a strain of {overlap / thickness:.3g} (check the meshes' "
                                  "positions and units; press the bodies together with a load)", also=("master_group",))
+
+    @cached_property
+    def can_touch(self) -> np.ndarray:
+        """Each slave node whose line or face overlaps the master's (its ``M`` row sum at least half its
+        weight): the others cannot touch."""
+        c = self.coupling
+        return np.asarray(c.M.sum(axis=1)).ravel() > 0.5 * c.weight
+
+    def displacements(self, shapes: np.ndarray) -> np.ndarray:
+        """Mode shapes on the free dofs (columns: a CEA's, full or reduced; multipliers after them are
+        left out) as displacements of every dof of both bodies, the held ones 0."""
+        free = np.flatnonzero(~self.fixed)
+        if shapes.ndim != 2 or shapes.shape[0] < free.size:
+            raise ParameterError("modes", f"shapes of {shapes.shape[0]} dofs", f"the modes of this problem "
+                                 f"({free.size} free dofs)")
+        w = np.zeros((self.slave.n_dofs + self.master.n_dofs, shapes.shape[1]), dtype=complex)
+        w[free] = shapes[:free.size]
+        return w
 
     @property
     def dimension(self) -> int:
@@ -415,17 +432,16 @@ class PairProblem:
     def fixed(self) -> np.ndarray:
         mask = np.zeros(self.slave.n_dofs + self.master.n_dofs, bool)
         dim = self.dimension
-        for system, groups, offset, option in ((self.slave, self.clamped_slave, 0, "clamped_slave"),
-                                               (self.master, self.clamped_master, self.n_slave, "clamped_master")):
-            for name in groups:
-                mask[offset + system.dofs(system.body.nodes(name, option))] = True
-            rollers = getattr(self, option.replace("clamped", "rollers"))
+        for system, who, offset in ((self.slave, "slave", 0), (self.master, "master", self.n_slave)):
+            for name in getattr(self, f"clamped_{who}"):
+                mask[offset + system.dofs(system.body.nodes(name, f"clamped_{who}"))] = True
+            rollers = getattr(self, f"rollers_{who}")
             if rollers is None:
                 continue
             if not isinstance(rollers, dict):
-                raise ParameterError(option.replace("clamped", "rollers"), rollers, "{face group: axis} or None")
+                raise ParameterError(f"rollers_{who}", rollers, "{face group: axis} or None")
             for name, axis in rollers.items():
-                where = f"{option.replace('clamped', 'rollers')}[{name}]"
+                where = f"rollers_{who}[{name}]"
                 if not isinstance(axis, str) or not axis or len(set(axis)) != len(axis) or \
                         any(a not in "xyz"[:dim] for a in axis):
                     raise ParameterError(where, axis, f"coordinate axes: {' or '.join('xyz'[:dim])}, or several "
@@ -692,8 +708,7 @@ def steady_pair(problem: PairProblem, max_iterations: int | None = None) -> Pair
     free = np.flatnonzero(~problem.fixed)
     K, F, G, T = problem.K[free][:, free], problem.load[free], problem.G[:, free], problem.T[:, free]
     g0 = problem.gap
-    reach = np.asarray(c.M.sum(axis=1)).ravel()  # a slave node whose line overlaps no master cannot touch
-    can = reach > 0.5 * weight
+    can = problem.can_touch  # a slave node whose line overlaps no master cannot touch
     size = max(float(np.ptp(problem.slave.body.points)), float(np.ptp(problem.master.body.points)))
     tol = 1e-12 * size * weight  # a gap of 1e-12 of the bodies' size is touching [m^2]
     nearest = max(0.0, float(np.min(g0[can] / weight[can]))) if can.any() else 0.0

@@ -137,13 +137,11 @@ def _pair_run(run: PairRun, path) -> Path:
 def _pair_modes(problem, modes: CeaModes, path) -> Path:
     """The mode shapes of a pair of bodies: both meshes in one (`_both`)."""
     points, cells, which = _both(problem)
-    free = np.flatnonzero(~problem.fixed)
     n, dim = len(points), problem.dimension
+    shapes = problem.displacements(modes.shapes)
 
     def step(k):
-        u = np.zeros(dim * n, dtype=complex)
-        u[free] = modes.shapes[:free.size, k]
-        u = u / np.abs(u).max()
+        u = shapes[:, k] / np.abs(shapes[:, k]).max()
         amplitude = np.sqrt(np.sum(np.abs(u.reshape(-1, dim)) ** 2, axis=1))
         return float(k), {"mode_real": _vectors(u.real, dim), "mode_imag": _vectors(u.imag, dim),
                           "mode_amplitude": amplitude,

@@ -55,12 +55,7 @@ def energy_shares(problem: PairProblem, modes: CeaModes) -> xr.Dataset:
         raise ParameterError("problem", problem, "a stickslip.fem.PairProblem")
     if not isinstance(modes, CeaModes) or modes.shapes is None:
         raise ParameterError("modes", type(modes).__name__, "CeaModes with shapes (mode_shapes=True)")
-    free = np.flatnonzero(~problem.fixed)
-    if modes.shapes.shape[0] < free.size:
-        raise ParameterError("modes", f"shapes of {modes.shapes.shape[0]} dofs", f"the modes of this problem "
-                             f"({free.size} free dofs)")
-    w = np.zeros((problem.slave.n_dofs + problem.master.n_dofs, modes.shapes.shape[1]), dtype=complex)
-    w[free] = modes.shapes[:free.size]
+    w = problem.displacements(modes.shapes)
     names, kinetic, strain = [], [], []
     for name, (m, K) in parts(problem).items():
         names.append(name)

@@ -38,14 +38,13 @@ def write_modes_uff(problem: PairProblem, modes: CeaModes, path) -> Path:
     points = np.vstack([problem.slave.body.points, problem.master.body.points])
     if dim == 2:
         points = np.column_stack([points, np.zeros(len(points))])
-    free = np.flatnonzero(~problem.fixed)
+    shapes = problem.displacements(modes.shapes)
     nodes = np.arange(1, len(points) + 1)
     sets = [pyuff.prepare_2411(node_nums=nodes, def_cs=np.ones(len(nodes), int), disp_cs=np.ones(len(nodes), int),
                                color=np.ones(len(nodes), int), x=points[:, 0], y=points[:, 1], z=points[:, 2],
                                return_full_dict=True)]
     for k, s in enumerate(modes.s):
-        u = np.zeros(dim * len(points), dtype=complex)
-        u[free] = modes.shapes[:free.size, k]
+        u = shapes[:, k]
         u = (u / np.abs(u).max()).reshape(-1, dim)
         r3 = u[:, 2] if dim == 3 else np.zeros(len(points), complex)
         sets.append(pyuff.prepare_55(id1=f"stickslip CEA mode {k}", id2=f"growth rate {s.real:.6g} 1/s",
