@@ -212,7 +212,8 @@ PATH_OPTIONS = options_typed(pathlib.Path)
 BAD_PATHS = {"a folder": "{tmp}", "a missing folder": "{tmp}/missing/x{suffix}", "an unwritable place": "/proc/x{suffix}",
              "under a file": "{tmp}/file/x{suffix}", "another suffix": "{tmp}/x.txt",
              "a name too long": "{tmp}/" + "n" * 300 + "{suffix}"}
-_SUFFIX = {"--plot": ".png", "--checkpoint": ".nc", "--out": ".nc", "--export": "", "--xdmf": ".xdmf", "--store": ".zarr"}
+_SUFFIX = {"--plot": ".png", "--checkpoint": ".nc", "--out": ".nc", "--export": "", "--xdmf": ".xdmf", "--store": ".zarr",
+           "--uff": ".uff"}
 SUFFIX = _SUFFIX  # each output option's suffix, for the modules that make its paths
 #: Options that name a folder to create (any name, parents made): only unwritable places are bad.
 FOLDERS = {("brake campaign", "--out"), ("brake campaign", "--export"), ("reproduce", "--out")}

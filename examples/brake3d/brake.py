@@ -13,8 +13,12 @@ on the disc's upper face, the disc turning at ``omega`` (the pad's middle slides
 The lining is transversely isotropic about its thickness (z); the disc is grey cast iron. Gyroscopic
 and transport terms of the turning disc are not included in 3-D yet (said by the pair).
 
+`write_config(folder)` writes the same brake as a config of `stickslip fem` beside the meshes
+(``stickslip fem steady brake.toml``, ``stickslip fem cea brake.toml``).
+
 Usage: ``python brake.py [out_folder] [pad_size_mm] [disc_size_mm] [order]``: the steady sliding,
-the full CEA in 1-12 kHz, a reduced friction sweep, the energy shares, ParaView and UFF files.
+the full CEA in 1-12 kHz, a reduced friction sweep, the energy shares, ParaView and UFF files, and
+the config.
 """
 
 from __future__ import annotations
@@ -79,6 +83,66 @@ def build(step, folder, pad_size: float = 8.0, disc_size: float = 15.0, order: i
                        clamped_master=("bore",), rollers_slave={"piston": "xy"})
 
 
+CONFIG = """# The brake of examples/brake3d as a config of `stickslip fem` (python -m pydoc stickslip.fem.config_solid)
+dimension = 3
+units = "m"                          # mesh_step writes metres
+mesh = "pad.msh"
+rollers = {{ piston = "xy" }}        # the caliper's abutments hold the backplate in its plane
+
+[[material]]                         # the lining: transversely isotropic about z
+group = "{lining}"
+e1 = 6e9
+e2 = 6e9
+e3 = 2.5e9
+nu12 = 0.25
+nu13 = 0.1
+nu23 = 0.1
+g12 = 2.4e9
+g13 = 1.2e9
+g23 = 1.2e9
+density = 2500.0
+
+[[material]]                         # the steel backplate
+group = "{backplate}"
+young = 2.1e11
+poisson = 0.3
+density = 7850.0
+
+[contact]
+group = "friction"
+friction = {friction}
+
+[[load]]
+group = "piston"
+pressure = {pressure}
+
+[partner]                            # the cast-iron disc, turning about z
+mesh = "disc.msh"
+group = "rubbing"
+clamped = ["bore"]
+omega = {omega}
+[partner.material]
+young = 1.1e11
+poisson = 0.26
+density = 7200.0
+
+[cea]
+band = [1000.0, 12000.0]
+count = 30
+{reduced}"""
+
+
+def write_config(folder, friction: float = 0.4, pressure: float = 1e6, omega: float = 10.0,
+                 reduced_modes: int | None = None) -> Path:
+    """``brake.toml`` in ``folder`` (beside the meshes `build` wrote there): the same brake for the
+    command line; with ``reduced_modes``, its CEA the reduced one."""
+    path = Path(folder) / "brake.toml"
+    path.write_text(CONFIG.format(lining=LINING_NAME, backplate=BACKPLATE_NAME, friction=friction, pressure=pressure,
+                                  omega=omega, reduced="" if reduced_modes is None else
+                                  f"reduced_modes = {int(reduced_modes)}\n"))
+    return path
+
+
 def main(folder="brake3d", pad_size=8.0, disc_size=15.0, order=1):
     from stickslip.fem import (complex_eigenvalues, energy_shares, modal_basis, reduced_sweep,
                                write_modes_uff)
@@ -103,6 +167,7 @@ def main(folder="brake3d", pad_size=8.0, disc_size=15.0, order=1):
         print(f"  branch {b}: critical friction {tracked.critical[b]:.4f} at {tracked.critical_frequency[b]:.1f} Hz")
     write_modes_xdmf(problem, modes, folder / "modes.xdmf")
     write_modes_uff(problem, modes, folder / "modes.uff")
+    print(f"the same brake for the command line: {write_config(folder)}")
     return problem, modes, tracked
 
 

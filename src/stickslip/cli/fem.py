@@ -90,7 +90,9 @@ def steady(config: Config, json: Json = False,
     problem = cfg.problem()
     st = problem.steady
     if not st.loaded:
-        print(f"warning: the contact carries no load (normal force {st.to_dict()['normal_force']:.3g} N/m, at most "
+        d = st.to_dict()  # solids' forces are normal_load [N], plane bodies' normal_force [N/m]
+        force, unit = (d["normal_load"], "N") if "normal_load" in d else (d["normal_force"], "N/m")
+        print(f"warning: the contact carries no load (normal force {force:.3g} {unit}, at most "
               f"{st.load_floor:.3g}): the body only touches, and which nodes count as active is round-off",
               file=sys.stderr)
     if out is not None:  # the file first: what is printed is what was kept
@@ -119,35 +121,60 @@ def cea(config: Config, json: Json = False,
         plot: Annotated[Optional[Path], typer.Option(help=(
             "With --sweep: write the stability map (growth rate and frequency of every branch against the swept "
             "value, unstable stretches marked) to this file: PNG, SVG or PDF by its suffix."))] = None,
-        scheduler: Scheduler = None, set_: Set = None):
+        scheduler: Scheduler = None, set_: Set = None,
+        uff: Annotated[Optional[Path], typer.Option(help=(
+            "Write the complex mode shapes of a pair to this Universal File (.uff or .unv: the nodes as dataset "
+            "2411, each mode as dataset 55, for NVH tools); lengths in m."))] = None):
     """Complex eigenvalue analysis of steady sliding over [cea] band: growth rate [1/s] and
-    frequency [Hz] of every mode found, most unstable first."""
+    frequency [Hz] of every mode found, most unstable first (with [cea] reduced_modes, of the
+    modally reduced pair)."""
     from ..fem import complex_eigenvalues
     from ..fem.paraview import write_modes_xdmf
 
     if sweep is not None or store is not None or plot is not None or workers is not None or scheduler is not None:
         if set_:
             raise ParameterError("--set", set_[0], "left out with --sweep (write the fixed numbers into the config)")
+        if uff is not None:
+            raise ParameterError("--uff", str(uff), "left out with --sweep (the mode shapes of one CEA)")
         return _cea_sweep(config, json, out, xdmf, overwrite, sweep, store, workers, plot, scheduler)
-    overwrite_needs(overwrite, "--out or --xdmf", out, xdmf)
+    overwrite_needs(overwrite, "--out, --xdmf or --uff", out, xdmf, uff)
     out = output_path("--out", out, ".nc", overwrite)
     xdmf = xdmf_path(xdmf, overwrite)
+    uff = output_path("--uff", uff, (".uff", ".unv"), overwrite)
     cfg = _problem(config, set_)
+    if uff is not None and cfg.partner is None:
+        raise ParameterError("--uff", str(uff), "given with a [partner] (the UFF writer takes a pair's modes)")
     problem = cfg.problem()
-    result = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=xdmf is not None,
-                                 complete_below=cfg.complete_below, **cfg.cea_options)
+    shapes = xdmf is not None or uff is not None
+    if cfg.reduced is not None:
+        from ..fem.reduced import modal_basis, reduced_modes
+
+        status.phase("the reduction basis")
+        basis = modal_basis(problem, cfg.reduced["count"], cfg.cea_options.get("penalty"), cfg.reduced["augment"])
+        result = reduced_modes(basis, band=cfg.band, mode_shapes=shapes)
+    else:
+        result = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=shapes,
+                                     complete_below=cfg.complete_below, **cfg.cea_options)
     if not result.s.size:  # nothing to report or write: said, not an empty success
         raise NoSolutionError(f"no mode of steady sliding has its frequency in cea.band = {list(cfg.band)} Hz (every "
                               f"mode there with |growth rate| below {result.complete_below:.4g} 1/s would have been "
                               "found): widen the band")
     if xdmf is not None:
         write_modes_xdmf(problem, result, xdmf)
+    if uff is not None:
+        from ..fem.uff import write_modes_uff
+
+        write_modes_uff(problem, result, uff)
     if out is not None:  # the files first: what is printed is what was kept
         write_netcdf(result.to_xarray(), out)
     data = result.to_dict()
     if not result.complete:
         print(f"warning: modes growing or decaying faster than {result.complete_below:.4g} 1/s may be missing "
               f"(asked: {result.asked_below:.4g} 1/s); raise [cea] count", file=sys.stderr)
+    if cfg.reduced is not None:  # every mode of the reduced problem in the band: no shifts, nothing left out
+        _emit({"modes": data["modes"], "unstable": data["unstable"], "neutral": data["neutral"],
+               "params": data["params"]}, json, "reduced complex eigenvalue analysis")
+        return
     _emit({"modes": data["modes"], "unstable": data["unstable"], "neutral": data["neutral"],
            "complete_below": data["complete_below"], "asked_below": data["asked_below"],
            "shift_count": len(data["shifts"]), "params": data["params"]}, json, "complex eigenvalue analysis")
@@ -155,8 +182,6 @@ def cea(config: Config, json: Json = False,
 
 def _cea_sweep(config, json, out, xdmf, overwrite, sweep, store, workers, plot, scheduler):
     """`fem cea --sweep`: the tracked sweep (`stickslip.fem.tracking.cea_sweep`)."""
-    import numpy as np
-
     from ..errors import MISSING
     from ..fem.config import load_config, read_toml, resolve_key
     from ..fem.tracking import cea_sweep
@@ -168,6 +193,8 @@ def _cea_sweep(config, json, out, xdmf, overwrite, sweep, store, workers, plot, 
         raise ParameterError(option, str(value), "left out without --sweep KEY=LO:HI:N (it belongs to a sweep)")
     if xdmf is not None:
         raise ParameterError("--xdmf", str(xdmf), "left out with --sweep (the mode shapes of one CEA)")
+    if load_config(config).reduced is not None:
+        return _reduced_sweep(config, json, out, overwrite, sweep, store, workers, plot, scheduler)
     if store is None:
         raise ParameterError("--store", MISSING, "given with --sweep: the sweep's checkpoint (a .zarr folder)")
     overwrite_needs(overwrite, "--out, --store or --plot", out, store, plot)
@@ -194,12 +221,56 @@ def _cea_sweep(config, json, out, xdmf, overwrite, sweep, store, workers, plot, 
         from .. import plotting
 
         plotting.save(plotting.plot_stability_map(ds), plot)
+    _emit({"swept_key": key, "sweep_points": len(values), "branches": len(tracked.s), "critical": _critical(tracked),
+           "store": str(store)}, json, "CEA sweep")
+
+
+def _critical(tracked) -> list:
+    """Each branch's critical value, turn and coupling partner, lowest first."""
+    import numpy as np
+
     critical = [{"branch": int(b), "critical": float(tracked.critical[b]),
                  "critical_frequency": float(tracked.critical_frequency[b]), "turn": int(tracked.turn[b]),
                  "partner": int(tracked.partner[b])} for b in np.flatnonzero(np.isfinite(tracked.critical))]
-    critical.sort(key=lambda c: c["critical"])
-    _emit({"swept_key": key, "sweep_points": len(values), "branches": len(tracked.s), "critical": critical,
-           "store": str(store)}, json, "CEA sweep")
+    return sorted(critical, key=lambda c: c["critical"])
+
+
+def _reduced_sweep(config, json, out, overwrite, sweep, store, workers, plot, scheduler):
+    """`fem cea --sweep friction=...` with [cea] reduced_modes: one basis, the reduced CEA at every value
+    (`stickslip.fem.reduced.reduced_sweep`)."""
+    from ..fem.config import load_config, read_toml, resolve_key
+    from ..fem.reduced import modal_basis, reduced_sweep
+    from .common import axis
+
+    for option, value in (("--store", store), ("--workers", workers), ("--scheduler", scheduler)):
+        if value is not None:
+            raise ParameterError(option, str(value), "left out with cea.reduced_modes (a reduced friction sweep is one "
+                                 "basis, then seconds in one process: nothing to resume or share out)")
+    name, values = axis("--sweep", sweep)
+    key = resolve_key(read_toml(config), name, "--sweep")
+    if key != "contact.friction":
+        raise ParameterError("--sweep", sweep, "a sweep of contact.friction with cea.reduced_modes (the basis is of one "
+                             "structure: sweep another key with the full CEA, reduced_modes left out)")
+    if any(b <= a for a, b in zip(values, values[1:])):
+        raise ParameterError("--sweep", sweep, "LO < HI (the values increase)")
+    overwrite_needs(overwrite, "--out or --plot", out, plot)
+    out = output_path("--out", out, ".nc", overwrite)
+    plot = output_path("--plot", plot, FIGURE_SUFFIXES, overwrite)
+    cfg = load_config(config)
+    status.phase("the reduction basis")
+    basis = modal_basis(cfg.problem(), cfg.reduced["count"], cfg.cea_options.get("penalty"), cfg.reduced["augment"])
+    status.phase("the reduced sweep")
+    tracked = reduced_sweep(basis, values, band=cfg.band)
+    ds = tracked.to_xarray()
+    if out is not None:
+        write_netcdf(ds, out)
+    if plot is not None:
+        from .. import plotting
+
+        plotting.save(plotting.plot_stability_map(ds), plot)
+    _emit({"swept_key": key, "sweep_points": len(values), "branches": len(tracked.s), "critical": _critical(tracked),
+           "reduced_modes": basis.modes, "static_vectors": basis.augmented, "basis_top_hz": basis.top}, json,
+          "reduced CEA sweep")
 
 
 @app.command()
@@ -244,6 +315,9 @@ def run(config: Config,
                              f"sampling of a run, {DENSEST} a transit)")
     status.phase("reading the config and the mesh")
     cfg = _problem(config, set_)
+    if cfg.dimension == 3:
+        raise ParameterError("config", str(config), "a config of plane bodies for fem run (explicit runs of solids "
+                             "come in a later release; fem steady and fem cea take solids)")
     if cfg.partner is not None:
         return _run_pair(cfg, transits, beta2, time_step, start, amplitude, out, xdmf, volume_every, window, overwrite,
                          json)

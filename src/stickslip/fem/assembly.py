@@ -94,9 +94,9 @@ class Material:
         lam, mu = self.lame
         return math.sqrt((lam + 2 * mu) / self.density)
 
-    def describe(self) -> str:
-        """One line: every constant (for a file's attributes)."""
-        return (f"isotropic: young = {self.young:g} Pa, poisson = {self.poisson:g}, plane {self.plane}"
+    def describe(self, plane: bool = True) -> str:
+        """One line: every constant (for a file's attributes; ``plane=False``: of a solid, without its plane)."""
+        return (f"isotropic: young = {self.young:g} Pa, poisson = {self.poisson:g}" + (f", plane {self.plane}" if plane else "")
                 + (" (scaled units)" if self.scaled else ""))
 
 

@@ -32,7 +32,7 @@ from ..errors import ParameterError
 from ..quantities import FEM as Q, MAX_MESH_NODES
 import os
 
-__all__ = ["Body", "read_body", "body_from_meshio", "edge_middles", "CELL_KINDS"]
+__all__ = ["Body", "read_body", "read_meshio", "named_sets", "body_from_meshio", "edge_middles", "CELL_KINDS"]
 
 #: meshio cell types accepted for the body: linear and quadratic triangles and quadrilaterals.
 CELL_KINDS = ("triangle", "quad", "triangle6", "quad9")
@@ -184,7 +184,7 @@ def body_from_meshio(mesh, source: str = "mesh") -> Body:
     boundary = _boundary_edges(cells[:, :_CORNERS[kind]])
     middles = edge_middles(cells, kind) if quadratic else {}
     groups, cell_groups = {}, _cell_groups(mesh, blocks, kind)
-    for name, per_block in getattr(mesh, "cell_sets", {}).items():
+    for name, per_block in named_sets(mesh).items():
         if name.startswith("gmsh:"):
             continue
         edges = [(t, d[np.asarray(idx, dtype=np.int64)]) for (t, d), idx in zip(blocks, per_block)
@@ -240,7 +240,7 @@ def _cell_groups(mesh, blocks, kind: str) -> dict:
         offsets.append(at if t == kind else -1)
         at += len(d) if t == kind else 0
     out = {}
-    for name, per_block in getattr(mesh, "cell_sets", {}).items():
+    for name, per_block in named_sets(mesh).items():
         if name.startswith("gmsh:"):
             continue
         found = [start + np.asarray(idx, dtype=np.int64) for start, idx in zip(offsets, per_block)
@@ -250,8 +250,25 @@ def _cell_groups(mesh, blocks, kind: str) -> dict:
     return out
 
 
-def read_body(path) -> Body:
-    """The `Body` of a mesh file meshio reads (gmsh ``.msh``, VTK, XDMF, ...)."""
+def named_sets(mesh) -> dict:
+    """``{name: per block, the indices of its cells}`` of a `meshio.Mesh`: its ``cell_sets`` (gmsh 4
+    files, meshio's own), or where a file has none, its gmsh physical groups by their names (``field_data``
+    and the ``gmsh:physical`` tags of MSH 2.2 files, which meshio reads into no sets)."""
+    sets = {k: v for k, v in (getattr(mesh, "cell_sets", None) or {}).items() if not k.startswith("gmsh:")}
+    tags = (getattr(mesh, "cell_data", None) or {}).get("gmsh:physical")
+    if sets or tags is None:
+        return sets
+    out = {}
+    for name, (tag, dim) in (getattr(mesh, "field_data", None) or {}).items():
+        per_block = [np.flatnonzero(np.asarray(t) == tag) for t in tags]
+        if any(len(b) for b in per_block):
+            out[str(name)] = per_block
+    return out
+
+
+def read_meshio(path):
+    """The `meshio.Mesh` of a mesh file meshio reads (gmsh ``.msh``, VTK, XDMF, ...), its reader's
+    complaints caught into a `ParameterError` naming the file."""
     if not isinstance(path, (str, os.PathLike)):
         raise ParameterError("mesh", path, "an existing mesh file (a path)")
     import meshio
@@ -261,9 +278,14 @@ def read_body(path) -> Body:
         raise ParameterError("mesh", str(path), "an existing mesh file")
     try:  # meshio prints its own complaint and calls sys.exit on a file no reader takes: both caught
         with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
-            mesh = meshio.read(path)
+            return meshio.read(path)
     except (Exception, SystemExit) as err:  # noqa: BLE001 - whatever the reader of that format raises
         why = "no reader of meshio takes it" if isinstance(err, SystemExit) else \
             f"{type(err).__name__}: {str(err).splitlines()[0] if str(err) else 'unreadable'}"
         raise ParameterError("mesh", str(path), f"a mesh file meshio reads ({why})") from None
+
+
+def read_body(path) -> Body:
+    """The `Body` of a mesh file meshio reads (gmsh ``.msh``, VTK, XDMF, ...)."""
+    mesh = read_meshio(path)
     return body_from_meshio(mesh, str(path))

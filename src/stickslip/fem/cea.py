@@ -193,7 +193,8 @@ class CeaModes(Result):
         d = self.to_dict()
         return finish(ds, "complex eigenvalue analysis of steady sliding", "fem",
                       params={**(self.params or {}), "unstable_count": d["unstable"], "neutral_count": d["neutral"],
-                              **{k: d[k] for k in ("band_lo", "band_hi", "complete_below", "asked_below")}})
+                              **{k: d[k] for k in ("band_lo", "band_hi", "complete_below", "asked_below")
+                                 if math.isfinite(d[k])}})  # (a reduced CEA's: every mode of its band, no bound)
 
 
 def eigenvalues_near(K_eff, C_eff, mass, shift_hz: float, count: int, vectors: bool):

@@ -89,21 +89,27 @@ from ..errors import ParameterError
 from ..validation import regular_input
 from .assembly import MAX_STRAIN, PLANES, Material, assemble
 from .body import read_body
+from .config_solid import dimension_of, read_mesh, reduced_of, rollers_of, solid_materials, units_of
+from .solid import assemble_solid, read_solid
 from .orthotropic import Orthotropic
-from .pair import PairProblem, Rotation, Translation, mortar, sliding
+from .pair import INTERFERENCE, PairProblem, Rotation, Translation, interference_refusal, mortar, sliding
 from .boundary import LIMIT, Load, Spring
+from .checks import (group_list as _group_list, mesh_file as _mesh_file, number as _number, pair as _pair,
+                     problem_text as _problem, toml as _toml)
 from .scheme import ContactProblem
 from .surfaces import MAX_SPEED, RigidCylinder, RigidFlat, contact_frames
 
 __all__ = ["FemConfig", "Partner", "load_config", "numeric_keys", "read_toml", "resolve_key"]
 
-_KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "partner", "cea", "spring", "load"},
-          "partner": {"mesh", "group", "clamped", "omega", "center", "velocity", "material", "gyroscopic"},
+_KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "partner", "cea", "spring", "load", "dimension",
+               "units", "rollers"},
+          "partner": {"mesh", "group", "clamped", "omega", "center", "velocity", "material", "gyroscopic", "rollers"},
           "contact": {"group", "friction", "static_friction", "law", "stribeck_speed", "weakening", "pressure_exponent",
                       "reference_pressure"},
           "surface": {"kind", "radius", "omega", "center", "body_inside", "point", "normal", "velocity",
                       "interference"},
-          "cea": {"band", "count", "complete_below", "mass_matrix", "contact_model", "penalty"}}
+          "cea": {"band", "count", "complete_below", "mass_matrix", "contact_model", "penalty", "reduced_modes",
+                  "augment"}}
 _MATERIAL = {"young", "poisson", "density", "plane", "alpha", "beta"}
 #: The keys of an orthotropic material (`stickslip.fem.orthotropic.Orthotropic`), instead of young and poisson.
 _ORTHOTROPIC = {"e1", "e2", "e3", "nu12", "nu13", "nu23", "g12", "angle"}
@@ -120,6 +126,7 @@ class Partner:
     material: Material | dict
     body: object = field(default=None, repr=False, compare=False)
     gyroscopic: bool = False
+    rollers: dict = field(default_factory=dict)  # {face or boundary group: axes}
 
 
 @dataclass(frozen=True)
@@ -144,20 +151,27 @@ class FemConfig:
     partner: Partner | None = None  # an elastic counter-body ([partner]) instead of the surface
     cea_options: dict = field(default_factory=dict)  # [cea] mass_matrix, contact_model, penalty (as given)
     pressure_law: object = None  # a stickslip.friction.PressurePower ([contact] pressure_exponent), or None
+    dimension: int = 2  # 2: plane bodies; 3: solids (stickslip.fem.config_solid)
+    units: str | None = None  # the length unit of a 3-D config's meshes
+    rollers: dict = field(default_factory=dict)  # {group: axes} of the body (a pair's slave)
+    reduced: dict | None = None  # [cea] reduced_modes and augment: the reduced CEA (stickslip.fem.reduced)
 
     def problem(self) -> ContactProblem | PairProblem:
         """Assemble the body and set the contact up (the mesh is read again if not kept); with a
         ``[partner]``, both bodies and their mortar contact."""
-        body = self.body if self.body is not None else read_body(self.mesh)
+        read = read_body if self.dimension == 2 else lambda path: read_solid(path, self.units)
+        body = self.body if self.body is not None else read(self.mesh)
         if self.partner is not None:
             p = self.partner
-            other = p.body if p.body is not None else read_body(p.mesh)
+            other = p.body if p.body is not None else read(p.mesh)
             friction = {"law": self.law} if self.law is not None else {"friction": self.friction,
                                                                          "static_friction": self.static_friction}
-            return PairProblem(assemble(body, self.material, self.springs, self.loads), self.group,
-                               assemble(other, p.material), p.group, p.motion, clamped_slave=self.clamped,
+            slave, master = ((assemble(body, self.material, self.springs, self.loads), assemble(other, p.material))
+                             if self.dimension == 2 else (assemble_solid(body, self.material, self.loads),
+                                                          assemble_solid(other, p.material)))
+            return PairProblem(slave, self.group, master, p.group, p.motion, clamped_slave=self.clamped,
                                clamped_master=p.clamped, gyroscopic=p.gyroscopic, pressure_law=self.pressure_law,
-                               **friction)
+                               rollers_slave=self.rollers or None, rollers_master=p.rollers or None, **friction)
         for name in (*self.clamped, self.group):
             body.group(name, "clamped" if name in self.clamped else "contact.group")
         frames = contact_frames(body, self.group, self.surface)
@@ -166,36 +180,6 @@ class FemConfig:
             return ContactProblem(system, frames, clamped=self.clamped, law=self.law, pressure_law=self.pressure_law)
         return ContactProblem(system, frames, self.friction, self.clamped, self.static_friction,
                               pressure_law=self.pressure_law)
-
-
-def _problem(err: ParameterError) -> str:
-    """A `ParameterError` as one problem of the list: ``where = value must be ...``."""
-    return f"{err.name} = {_toml(err.value)} must be {err.allowed}"
-
-
-def _number(problems, where, value, name=None):
-    """The declared quantity ``name`` (default: the key after the last dot) at ``where``."""
-    q = Q[name or where.rsplit(".", 1)[-1]]
-    if value is None:
-        problems.append(f"{where} is missing ({q.allowed})")
-        return None
-    try:
-        return q.check(value, where)
-    except ParameterError as err:
-        problems.append(_problem(err))
-        return None
-
-
-def _pair(problems, where, value, name=None):
-    q = Q[name or where.rsplit(".", 1)[-1]]
-    if value is None:
-        problems.append(f"{where} is missing (two numbers [x, y], each {q.allowed})")
-        return None
-    try:
-        return q.check_pair(value, where)
-    except ParameterError as err:
-        problems.append(_problem(err))
-        return None
 
 
 def load_config(path, overrides=None) -> FemConfig:
@@ -304,9 +288,12 @@ def _checked(path: Path, data: dict) -> FemConfig:
             continue
         extra = sorted(k for k in table if k not in keys and not (section == "" and k in _KNOWN))
         problems += [f"unknown key {'' if not section else section + '.'}{k}" for k in extra]
+    dimension = dimension_of(problems, data)
+    units = units_of(problems, data, dimension)
     mesh_path = _mesh_file(problems, path, data.get("mesh"), "mesh")
     clamped = _group_list(problems, data.get("clamped", []), "clamped")
-    materials = _materials(problems, data.get("material"))
+    rollers = rollers_of(problems, data.get("rollers"), "rollers", dimension)
+    materials = _materials(problems, data.get("material"), "material", dimension)
     young = _stiffest(data.get("material"))
     c = data.get("contact", {}) if isinstance(data.get("contact", {}), dict) else {}
     group = c.get("group")
@@ -323,12 +310,22 @@ def _checked(path: Path, data: dict) -> FemConfig:
     pressure_law = _pressure_law(problems, c)
     springs = _springs(problems, data.get("spring", []))
     loads = _loads(problems, data.get("load", []))
+    if dimension == 3:
+        problems += ["spring: springs on solids come in a later release"] if springs else []
+        problems += [f"load[{i}].traction = {list(x.traction)!r} must be [0, 0] on a solid (a traction of three "
+                     "components comes in a later release; a pressure is taken)" for i, x in enumerate(loads)
+                     if any(x.traction)]
     partner = None
-    if "partner" in data:
+    if dimension == 3 and "partner" not in data:
+        problems.append("[partner] is missing: a config of solids needs its elastic counter-body (a rigid "
+                        "[surface] for solids comes in a later release: give the disc as a [partner])")
+        surface = None
+    elif "partner" in data:
         if "surface" in data:
             problems.append("[surface] and [partner] exclude each other (a rigid counter-surface or an elastic "
                             "counter-body)")
-        partner = _partner(problems, path, data["partner"] if isinstance(data["partner"], dict) else {})
+        partner = _partner(problems, path, data["partner"] if isinstance(data["partner"], dict) else {}, dimension,
+                           units)
         surface = None
     else:
         surface = _surface(problems, data.get("surface", {}) if isinstance(data.get("surface", {}), dict) else {},
@@ -353,10 +350,17 @@ def _checked(path: Path, data: dict) -> FemConfig:
                 options[key] = Q.check(key, e[key], f"cea.{key}")
             except ParameterError as err:
                 problems.append(_problem(err))
+    reduced = reduced_of(problems, e, options)
+    if reduced is not None and partner is None and "partner" not in data:
+        problems.append("cea.reduced_modes applies to a pair of bodies ([partner]; the reduced CEA of a body on a "
+                        "rigid surface comes in a later release)")
     if "penalty" in e:
         options["penalty"] = _number(problems, "cea.penalty", e["penalty"])
-        if options.get("contact_model") != "penalty":
-            problems.append('cea.penalty applies with cea.contact_model = "penalty" only')
+        if options.get("contact_model") != "penalty" and reduced is None:
+            problems.append('cea.penalty applies with cea.contact_model = "penalty" only (or cea.reduced_modes)')
+    if rollers and "partner" not in data:
+        problems.append("rollers apply to a pair of bodies ([partner]); a body on a rigid surface is held by clamped "
+                        "and springs")
     if young is not None:
         big = MAX_STRAIN * young
         problems += [f"load[{i}].pressure = {x.pressure!r} must be at most {MAX_STRAIN:g} x material.young = {big:.4g} "
@@ -365,7 +369,9 @@ def _checked(path: Path, data: dict) -> FemConfig:
         problems += [f"load[{i}].traction = {list(x.traction)!r} must be at most {MAX_STRAIN:g} x material.young = "
                      f"{big:.4g} Pa in size (linear elasticity holds for small strains)" for i, x in enumerate(loads)
                      if max(map(abs, x.traction)) > big]
-    body = _body(problems, mesh_path, clamped, group, springs, loads, data, surface)
+    body = None if mesh_path is None else read_mesh(problems, mesh_path, "mesh", dimension, units)
+    if body is not None:
+        _body(problems, body, mesh_path, clamped, group, data, surface, rollers)
     if body is not None:
         _cell_groups(problems, body, materials)
     if partner is not None and body is not None and partner.body is not None and isinstance(group, str) \
@@ -376,33 +382,11 @@ def _checked(path: Path, data: dict) -> FemConfig:
                              f"{'s' if len(problems) > 1 else ''}: " + "; ".join(problems))
     material = materials[""] if list(materials) == [""] else materials
     return FemConfig(path, mesh_path, tuple(clamped), material, group, friction, surface, tuple(band), count,
-                     static, springs, loads, body, below, law, partner, options, pressure_law)
+                     static, springs, loads, body, below, law, partner, options, pressure_law, dimension, units,
+                     rollers, reduced)
 
 
-def _mesh_file(problems, path: Path, mesh, where: str) -> Path | None:
-    """The mesh file named at ``where`` (relative to the config's folder), or None with the problem."""
-    if not isinstance(mesh, str):
-        problems.append(f"{where} must be the path of a mesh file")
-        return None
-    mesh_path = (path.parent / mesh) if not Path(mesh).is_absolute() else Path(mesh)
-    if not mesh_path.is_file():
-        problems.append(f"{where} = {mesh!r}: no such file ({mesh_path})")
-        return None
-    return mesh_path
-
-
-def _group_list(problems, value, where: str) -> list:
-    """A list of boundary group names at ``where``, each once, or [] with the problem."""
-    if isinstance(value, list) and all(isinstance(c, str) for c in value):
-        twice = sorted({c for c in value if value.count(c) > 1})
-        if twice:
-            problems.append(f"{where} = {value!r} must name each group once ({', '.join(map(repr, twice))} twice)")
-        return list(dict.fromkeys(value))
-    problems.append(f"{where} = {value!r} must be a list of boundary group names")
-    return []
-
-
-def _partner(problems, path: Path, p: dict) -> Partner | None:
+def _partner(problems, path: Path, p: dict, dimension: int = 2, units: str | None = None) -> Partner | None:
     """The ``[partner]`` table: its mesh (read), group, clamps, motion and materials."""
     group = p.get("group")
     mesh_path = _mesh_file(problems, path, p.get("mesh"), "partner.mesh")
@@ -421,30 +405,31 @@ def _partner(problems, path: Path, p: dict) -> Partner | None:
         motion = None if velocity is None else Translation(velocity)
         if "center" in p:
             problems.append("partner.center applies with partner.omega only (a translating partner has no centre)")
-    materials = _materials(problems, p.get("material"), "partner.material")
+    materials = _materials(problems, p.get("material"), "partner.material", dimension)
+    rollers = rollers_of(problems, p.get("rollers"), "partner.rollers", dimension)
     gyroscopic = p.get("gyroscopic", False)
     if not isinstance(gyroscopic, bool) or (gyroscopic and "omega" not in p):
         problems.append(f"partner.gyroscopic = {_toml(gyroscopic)} must be true or false, true only with "
                         "partner.omega (a turning partner)")
         gyroscopic = False
-    body = None
-    if mesh_path is not None:
-        try:
-            body = read_body(mesh_path)
-        except ParameterError as err:
-            problems.append(f"partner.mesh: {err}")
+    if gyroscopic and dimension == 3:
+        problems.append("partner.gyroscopic = true must be false for solids (a turning solid's gyroscopic and "
+                        "transport terms come in a later release)")
+        gyroscopic = False
+    body = None if mesh_path is None else read_mesh(problems, mesh_path, "partner.mesh", dimension, units)
     if body is not None:
         have = ", ".join(sorted(body.groups)) or "none"
         problems += [f"{where} = {name!r} is not a boundary group of {mesh_path.name} (it has: {have})"
                      for where, name in [("partner.group", group)] + [(f"partner.clamped[{i}]", c)
                                                                       for i, c in enumerate(clamped)]
+                     + [(f"partner.rollers.{r}", r) for r in rollers]
                      if isinstance(name, str) and name not in body.groups]
         _cell_groups(problems, body, materials, "partner.material")
     if None in (motion, body) or not materials or not isinstance(group, str) or group not in body.groups \
             or any(m is None for m in materials.values()):
         return None
     return Partner(mesh_path, group, tuple(clamped), motion, materials[""] if list(materials) == [""] else materials,
-                   body, gyroscopic)
+                   body, gyroscopic, rollers)
 
 
 def _facing(problems, body, group: str, partner: Partner, friction) -> None:
@@ -453,6 +438,9 @@ def _facing(problems, body, group: str, partner: Partner, friction) -> None:
     try:
         coupling = mortar(body, group, partner.body, partner.group)
         sliding(coupling, partner.motion, body.points, required=bool(friction))
+        overlap, thickness = coupling.overlap(body.points, partner.body.points)
+        if overlap > INTERFERENCE * thickness:
+            raise ParameterError("slave_group", group, interference_refusal(overlap, thickness))
     except ParameterError as err:
         where = {"slave_group": "contact.group", "master_group": "partner.group", "motion": "partner motion"}
         problems.append(f"{where.get(err.name, err.name)} = {_toml(err.value) if err.name != 'motion' else ''} must "
@@ -504,7 +492,7 @@ def _pressure_law(problems, c: dict):
     return None if None in (n, reference) else PressurePower(reference, n)
 
 
-def _materials(problems, raw, key: str = "material") -> dict:
+def _materials(problems, raw, key: str = "material", dimension: int = 2) -> dict:
     """``{cell group: Material or Orthotropic}`` of ``[material]`` (the whole body, group "") or of
     ``[[material]]`` tables, each with its ``group`` (None for a table with a problem); problems
     named as written (``material.young``, ``material[1].young``). A table with ``e1`` is
@@ -523,6 +511,8 @@ def _materials(problems, raw, key: str = "material") -> dict:
         problems.append(f"{key} must be a table [{key}] (the whole body) or tables [[{key}]] with a group "
                         "each")
         return {}
+    if dimension == 3:
+        return solid_materials(problems, tables, key)
     out = {}
     for where, m in tables:
         ortho = "e1" in m
@@ -608,18 +598,12 @@ def _cell_groups(problems, body, materials: dict, key: str = "material") -> None
                         f"group with a material ({have})")
 
 
-def _body(problems, mesh_path, clamped, group, springs, loads, data, surface):
-    """The mesh, read if it exists; every group name checked against it, and the surface against
-    the contact group (so that these problems join the others in one message)."""
-    if mesh_path is None or not mesh_path.is_file():
-        return None
-    try:
-        body = read_body(mesh_path)
-    except ParameterError as err:
-        problems.append(str(err))
-        return None
+def _body(problems, body, mesh_path, clamped, group, data, surface, rollers=None) -> None:
+    """Every group name checked against the mesh read, and the surface against the contact group (so
+    that these problems join the others in one message)."""
     have = ", ".join(sorted(body.groups)) or "none"
     named = [(f"clamped[{i}]", name) for i, name in enumerate(clamped)] + [("contact.group", group)]
+    named += [(f"rollers.{name}", name) for name in rollers or {}]
     named += [(f"{kind}[{i}].group", t["group"]) for kind in ("spring", "load")
               for i, t in enumerate(data.get(kind, []) if isinstance(data.get(kind, []), list) else [])
               if isinstance(t, dict) and isinstance(t.get("group"), str)]
@@ -635,14 +619,13 @@ def _body(problems, mesh_path, clamped, group, springs, loads, data, surface):
                  for where, name in missing]
     push = data.get("surface", {}).get("interference", 0.0) if isinstance(data.get("surface"), dict) else 0.0
     if isinstance(group, str) and group in body.groups and not _interference(problems, body, group, push):
-        return body
+        return
     if surface is not None and isinstance(group, str) and group in body.groups:
         try:
             contact_frames(body, group, surface)
         except ParameterError as err:
             where = "surface" if err.name == "surface" else f"surface.{err.name} = {_toml(err.value)}"
             problems.append(f"{where} must be {err.allowed}")
-    return body
 
 
 def _made(problems, kind, *args):
@@ -671,8 +654,8 @@ def _interference(problems, body, group, push) -> bool:
     width: a strain that linear elasticity describes (a pad pushed 2 mm into its 8 mm lining ran at
     1.5 GPa without a word)."""
     if not isinstance(push, (int, float)) or isinstance(push, bool) or not math.isfinite(push) \
-            or push not in Q["interference"].range:
-        return True  # (refused as a number already)
+            or push not in Q["interference"].range or push == 0:
+        return True  # (refused as a number already, or nothing pushed)
     points = body.points[body.nodes(group)]
     length = float(np.ptp(points, axis=0).max()) if len(points) > 1 else 0.0
     if abs(push) > MAX_INTERFERENCE * length:
@@ -686,11 +669,6 @@ def _interference(problems, body, group, push) -> bool:
                         f"{MAX_STRAIN * width:.4g} m (linear elasticity is a model of small strains)")
         return False
     return True
-
-
-def _toml(value) -> str:
-    """A value as it is written in the config."""
-    return str(value).lower() if isinstance(value, bool) else repr(value)
 
 
 def _tables(problems, name, value, keys):

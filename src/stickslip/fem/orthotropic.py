@@ -144,8 +144,9 @@ class Orthotropic:
             fastest = max(fastest, 0.5 * (g11 + g22) + math.hypot(0.5 * (g11 - g22), g12))
         return math.sqrt(fastest / self.density)
 
-    def describe(self) -> str:
-        """One line: every constant (for a file's attributes)."""
+    def describe(self, plane: bool = True) -> str:
+        """One line: every constant (for a file's attributes; ``plane`` as `stickslip.fem.Material.describe`'s:
+        a plane body's material always has its plane)."""
         out = f", e3 = {self.e3:g} Pa, nu13 = {self.nu13:g}, nu23 = {self.nu23:g}" if self.plane == "strain" else ""
         return (f"orthotropic: e1 = {self.e1:g} Pa, e2 = {self.e2:g} Pa, nu12 = {self.nu12:g}, g12 = {self.g12:g} Pa"
                 f"{out}, angle = {self.angle:g} deg, plane {self.plane}")

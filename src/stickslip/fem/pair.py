@@ -83,8 +83,8 @@ xr = lazy.load("xarray")  # imported on first use: commands that make no dataset
 
 log = logging.getLogger("stickslip.fem")
 
-__all__ = ["Mortar", "PairProblem", "PairSteady", "Rotation", "Translation", "mortar", "sliding", "steady_pair",
-           "facets", "FACETS"]
+__all__ = ["INTERFERENCE", "Mortar", "PairProblem", "PairSteady", "Rotation", "Translation", "interference_refusal",
+           "mortar", "sliding", "steady_pair", "facets", "FACETS"]
 
 GAUSS = (0.5 - 0.5 / math.sqrt(3.0), 0.5 + 0.5 / math.sqrt(3.0))
 #: Steady sliding warns where the master's facets deviate from its curve by more than this
@@ -157,6 +157,31 @@ class Mortar:
     @property
     def weight(self) -> np.ndarray:
         return np.asarray(self.D.sum(axis=1)).ravel()
+
+    @property
+    def can_touch(self) -> np.ndarray:
+        """Each slave node whose line or face overlaps the master's (its ``M`` row sum at least half its
+        weight): the others cannot touch."""
+        return np.asarray(self.M.sum(axis=1)).ravel() > 0.5 * self.weight
+
+    def overlap(self, slave_points: np.ndarray, master_points: np.ndarray) -> tuple[float, float]:
+        """``(overlap, thickness)`` [m]: how far the meshes at these points overlap along the contact
+        normal (the deepest slave node that can touch) and the slave's thickness along the mean normal."""
+        can = self.can_touch
+        if not can.any():
+            return 0.0, 1.0
+        gap = sum(self.normal[:, k] * (self.D @ slave_points[:, k] - self.M @ master_points[:, k])
+                  for k in range(slave_points.shape[1]))
+        mean = self.normal.mean(axis=0)
+        thickness = float(np.ptp(slave_points @ (mean / np.linalg.norm(mean))))
+        return float(max(0.0, -np.min(gap[can] / self.weight[can]))), thickness
+
+
+def interference_refusal(overlap: float, thickness: float) -> str:
+    """What a contact whose meshes overlap by more than `INTERFERENCE` x the slave's thickness must be."""
+    return (f"a contact whose meshes overlap by at most {INTERFERENCE:g} x the slave's thickness along the normal "
+            f"({thickness:.4g} m): they overlap by {overlap:.4g} m, a strain of {overlap / thickness:.3g} (check the "
+            "meshes' positions and units; press the bodies together with a load)")
 
 
 def _inward(points, edges):
@@ -363,25 +388,15 @@ class PairProblem:
     def _interference(self) -> None:
         """An overlap of the meshes beyond `INTERFERENCE` times the slave's thickness along the contact
         normal is refused (a strain of that size is not a preload: 2 mm into an 8 mm lining ran at 1.5 GPa)."""
-        c, can = self.coupling, self.can_touch
-        if not can.any():
-            return
-        overlap = float(max(0.0, -np.min(self.gap[can] / c.weight[can])))
-        mean = c.normal.mean(axis=0)
-        along = self.slave.body.points @ (mean / np.linalg.norm(mean))
-        thickness = float(np.ptp(along))
+        overlap, thickness = self.coupling.overlap(self.slave.body.points, self.master.body.points)
         if overlap > INTERFERENCE * thickness:
-            raise ParameterError("slave_group", self.slave_group, f"a contact whose meshes overlap by at most "
-                                 f"{INTERFERENCE:g} x the slave's thickness along the normal ({thickness:.4g} m): they "
-                                 f"overlap by {overlap:.4g} m, a strain of {overlap / thickness:.3g} (check the meshes' "
-                                 "positions and units; press the bodies together with a load)", also=("master_group",))
+            raise ParameterError("slave_group", self.slave_group, interference_refusal(overlap, thickness),
+                                 also=("master_group",))
 
-    @cached_property
+    @property
     def can_touch(self) -> np.ndarray:
-        """Each slave node whose line or face overlaps the master's (its ``M`` row sum at least half its
-        weight): the others cannot touch."""
-        c = self.coupling
-        return np.asarray(c.M.sum(axis=1)).ravel() > 0.5 * c.weight
+        """Each slave node that can touch the master (`Mortar.can_touch`)."""
+        return self.coupling.can_touch
 
     def displacements(self, shapes: np.ndarray) -> np.ndarray:
         """Mode shapes on the free dofs (columns: a CEA's, full or reduced; multipliers after them are
@@ -643,7 +658,7 @@ class PairProblem:
                 **({} if self.law is None else {"friction_law": repr(self.law)}),
                 **({} if self.pressure_law is None else {"pressure_exponent": self.pressure_law.exponent,
                                                          "reference_pressure": self.pressure_law.reference}),
-                "materials": "; ".join(f"{name}: {m.describe()}, density = {m.density:g} kg/m3"
+                "materials": "; ".join(f"{name}: {m.describe(plane=self.dimension == 2)}, density = {m.density:g} kg/m3"
                                        for name, m in self.materials.items())}
 
 
@@ -651,7 +666,8 @@ class PairProblem:
 class PairSteady(Result):
     """Steady sliding of a pair: the displacements of both bodies ``u`` [m] (slave dofs first),
     per slave node the contact ``pressure`` [Pa] (the multiplier), ``active``, and the forces
-    on the slave's mesh nodes ``slave_force`` [N/m]."""
+    on the slave's mesh nodes ``slave_force`` [N/m]; ``normal_force`` and ``friction_force`` the totals
+    [N/m; N between solids]."""
 
     MODEL: ClassVar[str] = "fem"
 
@@ -666,6 +682,7 @@ class PairSteady(Result):
     points: np.ndarray | None = None  # the slave nodes' reference positions [m] (for to_xarray)
     gap: np.ndarray | None = None  # each slave node's normal gap in steady sliding [m]
     coefficients: np.ndarray | None = None  # each slave node's friction coefficient (law and pressure)
+    dimension: int = 2  # 3: solids, whose forces are in N (normal_load, friction_load), not N/m
 
     def to_xarray(self) -> xr.Dataset:
         """The slave's contact nodes (in mesh order): position, pressure, state, gap."""
@@ -691,8 +708,11 @@ class PairSteady(Result):
         return bool(self.normal_force > self.load_floor)
 
     def to_dict(self) -> dict:
+        """The forces as ``normal_force`` and ``friction_force`` [N/m] of plane bodies, ``normal_load`` and
+        ``friction_load`` [N] of solids."""
+        forces = ("normal_force", "friction_force") if self.dimension == 2 else ("normal_load", "friction_load")
         return {"contact_nodes": len(self.pressure), "active_nodes": int(self.active.sum()),
-                "normal_force": self.normal_force, "friction_force": self.friction_force,
+                forces[0]: self.normal_force, forces[1]: self.friction_force,
                 "max_pressure": float(self.pressure.max()), "iterations": int(self.iterations),
                 "loaded": self.loaded, "params": self.params}
 
@@ -748,8 +768,8 @@ def steady_pair(problem: PairProblem, max_iterations: int | None = None) -> Pair
             _facets(problem, active, g0 / weight)
             normal = float(weight @ lam)  # the multiplier is the pressure, interpolated along the slave line
             return PairSteady(u, lam, active.copy(), iteration, normal, float(weight @ (mu * lam)),
-                              1e-10 * young * size, problem.to_attrs(), problem.slave.body.points[c.slave_nodes],
-                              gap / weight, mu)
+                              1e-10 * young * size ** (problem.dimension - 1), problem.to_attrs(),
+                              problem.slave.body.points[c.slave_nodes], gap / weight, mu, problem.dimension)
         if any(np.array_equal(old, new) for old in seen):
             raise NoSolutionError(f"no steady sliding of the pair at friction {problem.friction:g}: the active set "
                                   "cycles")

@@ -66,6 +66,9 @@ class PairScheme(FemScheme):
     time_step: float | None = None
 
     def __post_init__(self):
+        if isinstance(self.params, PairProblem) and self.params.dimension == 3:
+            raise ParameterError("params", "a pair of solids", "a pair of plane bodies (explicit runs of solids "
+                                 "come in a later release; steady sliding and the CEA take solids)")
         self.validate_common()
         self.check_time_step()
         _ = self.kinetic_law  # a law the kernel is not compiled for is refused here, before anything runs

@@ -11,8 +11,10 @@ tetrahedra, quadrilaterals on hexahedra) where supports and contacts act; cell g
 of cells (physical groups of dimension 3: a lining, a backplate), each of which may have its own
 material. Checked on the way in, each refused with a `ParameterError` naming the mesh and the problem:
 a flat mesh, no volume cells or cells of two kinds, degenerate cells (volume below 1e-10 of the mean),
-parts that share no node, face groups whose faces are not on the boundary. Tetrahedra turned the other
-way are turned round; an inverted hexahedron is refused (it is a mesh error, not an orientation).
+parts that share no node, face groups whose faces are not on the boundary. Tetrahedra numbered the other
+way are turned round (a numbering matter); an inverted hexahedron is refused (it is a mesh error, not an
+orientation), and so is a tangled mesh (an inside face whose two cells lie on the same side of it: an
+inverted cell that turning round would hide).
 
 `assemble_solid(solid, material)`: ``K`` (CSR, N/m) and the lumped mass (kg per degree of freedom: row
 sums of the consistent mass on linear cells; on quadratic tetrahedra each cell's mass shared by the
@@ -26,8 +28,6 @@ one along a coordinate axis) holds on a face group; `solid_modes` the lowest nat
 
 from __future__ import annotations
 
-import contextlib
-import io
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -39,6 +39,7 @@ from ..errors import ParameterError
 from ..quantities import FEM as Q, MAX_MESH_NODES
 from ..validation import count as checked_count, regular_input
 from .assembly import Material
+from .body import named_sets
 
 __all__ = ["Solid", "SolidSystem", "OrthotropicSolid", "read_solid", "solid_from_meshio", "assemble_solid",
            "supported_dofs", "solid_modes", "solid_static", "solid_damped_modes", "VOLUME_KINDS", "UNITS"]
@@ -72,6 +73,11 @@ class Solid:
     def volumes(self) -> np.ndarray:
         """Each cell's volume [m^3] (a hexahedron's as its five tetrahedra's, exact for flat faces)."""
         return np.abs(_volumes(self.points, self.cells, self.kind))
+
+    @property
+    def groups(self) -> dict:
+        """The face groups (as a 2-D `stickslip.fem.body.Body`'s boundary groups)."""
+        return self.faces
 
     def nodes(self, group: str, option: str = "group") -> np.ndarray:
         """The sorted nodes of a face group; ``option`` names it in an error."""
@@ -144,12 +150,16 @@ def solid_from_meshio(mesh, source: str = "mesh", units: str | None = None) -> S
         cells[vol < 0] = cells[vol < 0][:, [0, 2, 1, 3, 6, 5, 4, 7, 9, 8][:cells.shape[1]]]
     elif np.any(vol < 0):
         refuse(f"hexahedra numbered as meshio numbers them ({int(np.sum(vol < 0))} are inverted)")
-    # the cells' groups and the faces' groups (gmsh physical groups through meshio's cell_sets)
+    folded = _folded(cells, kind)
+    if folded:
+        refuse(f"a mesh without inverted cells ({folded} faces inside it have their two cells on the same side: "
+               "a node moved through a face, a tangled mesh)")
+    # the cells' groups and the faces' groups (gmsh physical groups through meshio's cell_sets, or MSH 2.2's tags)
     offsets = np.cumsum([0] + [len(blocks[k].data) for k in volume_blocks])
     cell_groups, faces = {}, {}
     face_kind = VOLUME_KINDS[kind]
     boundary = _boundary_faces(cells, kind)
-    for name, per_block in getattr(mesh, "cell_sets", {}).items():
+    for name, per_block in named_sets(mesh).items():
         if name.startswith("gmsh:"):
             continue
         own = [np.asarray(per_block[k], dtype=np.int64) + offsets[i] for i, k in enumerate(volume_blocks)
@@ -174,6 +184,19 @@ def solid_from_meshio(mesh, source: str = "mesh", units: str | None = None) -> S
         points, cells = points[used], new[cells]
         faces = {name: new[f] for name, f in faces.items()}
     return Solid(points * UNITS[units], cells, kind, faces, cell_groups, source)
+
+
+def _folded(cells: np.ndarray, kind: str) -> int:
+    """How many faces shared by two cells are seen the same way round from both (each cell's faces
+    turned outward, `_FACES`): two cells on the same side of their face, a fold."""
+    local = np.array(_FACES["tetra" if kind.startswith("tetra") else kind])
+    f = cells[:, local].reshape(-1, local.shape[1])
+    first = np.argmin(f, axis=1)  # each face's cycle started at its least node: its turn is then whether
+    rolled = np.take_along_axis(f, (first[:, None] + np.arange(f.shape[1])) % f.shape[1], axis=1)
+    forward = rolled[:, 1] < rolled[:, -1]  # it runs up or down from there
+    _, inverse, counts = np.unique(np.sort(f, axis=1), axis=0, return_inverse=True, return_counts=True)
+    ups = np.bincount(inverse.ravel(), weights=forward, minlength=len(counts))
+    return int(np.sum((counts == 2) & (ups != 1)))
 
 
 def _boundary_faces(cells: np.ndarray, kind: str) -> set:
@@ -201,14 +224,10 @@ def _connected(cells: np.ndarray, n: int, source: str) -> None:
 
 def read_solid(path, units: str | None = None) -> Solid:
     """Read a 3-D mesh file (any format meshio reads) whose coordinates are in ``units``."""
-    import meshio
+    from .body import read_meshio
 
     path = regular_input("mesh", path, "a mesh file meshio reads")
-    try:
-        with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
-            mesh = meshio.read(path)
-    except Exception as err:  # noqa: BLE001 - meshio raises many kinds
-        raise ParameterError("mesh", str(path), f"a mesh file meshio reads ({type(err).__name__}: {err})") from None
+    mesh = read_meshio(path)
     return solid_from_meshio(mesh, Path(path).name, units)
 
 
@@ -329,11 +348,12 @@ class OrthotropicSolid:
         """The stiffest of the moduli [Pa] (a scale of strains and loads)."""
         return float(max(self.e1, self.e2, self.e3))
 
-    def describe(self) -> str:
-        """One line: every constant (for a file's attributes)."""
+    def describe(self, plane: bool = False) -> str:
+        """One line: every constant (for a file's attributes; ``plane`` ignored: a solid has none)."""
+        axes = [f"[{', '.join(f'{a:g}' for a in axis)}]" for axis in (self.axis1, self.axis2)]
         return (f"orthotropic: e1 = {self.e1:g} Pa, e2 = {self.e2:g} Pa, e3 = {self.e3:g} Pa, nu12 = {self.nu12:g}, "
                 f"nu13 = {self.nu13:g}, nu23 = {self.nu23:g}, g12 = {self.g12:g} Pa, g13 = {self.g13:g} Pa, "
-                f"g23 = {self.g23:g} Pa, axis1 = {self.axis1}, axis2 = {self.axis2}")
+                f"g23 = {self.g23:g} Pa, axis1 = {axes[0]}, axis2 = {axes[1]}")
 
 
 def _materials(solid: Solid, material) -> list[tuple[np.ndarray, Material]]:

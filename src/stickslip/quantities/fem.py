@@ -129,6 +129,8 @@ FEM = Domain("fem", units="SI", quantities=[
     Q('shifts', 'Hz', 'shifts of the eigenvalue search'),
     Q('normal_force', 'N/m', 'total normal contact force per unit thickness'),
     Q('friction_force', 'N/m', 'total friction force per unit thickness'),
+    Q('normal_load', 'N', 'total normal contact force between two solids'),
+    Q('friction_load', 'N', 'total friction force between two solids'),
     Q('max_node_force', 'N/m', 'largest normal force on one contact node per unit thickness'),
     Q('contact_nodes', '1', 'nodes of the contact group'),
     Q('active_nodes', '1', 'contact nodes in contact'),
@@ -150,6 +152,11 @@ FEM = Domain("fem", units="SI", quantities=[
     Q("penalty", "1", "penalty stiffness over the largest diagonal entry of the stiffness", "[1, 1e12]",
       why="below 1 the springs are softer than the body and hold nothing; beyond 1e12 the pencil loses every digit "
           "to round-off"),
+    Q("dimension", "1", "dimension of a config's bodies: 2 (plane) or 3 (solids)", "[2, 3]", integer=True),
+    Q("reduced_modes", "1", "real modes of the reduction basis of a config's reduced CEA", "[2, 2000]",
+      integer=True, why="beyond 2000 modes the dense reduced problem costs more than the full sparse one"),
+    Q("augment", "", "the static vectors of a reduction basis: of each mode's contact forces, of unit forces at "
+      "each contact node, or none", choices=("modes", "nodes", "none")),
     Q('slave_mesh', '', 'mesh file of the slave body of a pair (the pad)'),
     Q('master_mesh', '', 'mesh file of the master body of a pair (the disc)'),
     Q('slave_group', '', "the slave body's boundary group in contact"),
