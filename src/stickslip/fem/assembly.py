@@ -56,7 +56,9 @@ class Material:
     """Linear elastic material: Young's modulus ``young`` [Pa], Poisson's ratio ``poisson``,
     ``density`` [kg/m^3], ``plane`` ``"strain"`` (default) or ``"stress"``, and Rayleigh
     damping ``C = alpha M + beta K`` (``alpha`` [1/s], ``beta`` [s]; on a mesh, an explicit run
-    bounds them further: `ContactProblem.check_damping`). Ranges: `stickslip.quantities.FEM`.
+    bounds them further: `ContactProblem.check_damping`), and a structural ``loss_factor`` ``eta``
+    (the CEA's stiffness of its cells times ``1 + i eta``: every mode damped about ``eta / 2``
+    whatever its frequency; refused in explicit runs). Ranges: `stickslip.quantities.FEM`.
 
     ``scaled=True`` says the numbers are in the units of a scaled model (the paper's annulus:
     ``E = 1``, lengths in ``R``, density ``gamma``), not SI: ``young`` and ``density`` are then
@@ -70,6 +72,7 @@ class Material:
     alpha: float = 0.0
     beta: float = 0.0
     scaled: bool = False
+    loss_factor: float = 0.0
 
     def __post_init__(self):
         if not isinstance(self.scaled, bool):
@@ -77,7 +80,7 @@ class Material:
         suffix = "_scaled" if self.scaled else ""
         for name in ("young", "density"):
             object.__setattr__(self, name, Q.check(name + suffix, getattr(self, name), name))
-        for name in ("poisson", "plane") + (() if self.scaled else ("alpha", "beta")):
+        for name in ("poisson", "plane", "loss_factor") + (() if self.scaled else ("alpha", "beta")):
             object.__setattr__(self, name, Q.check(name, getattr(self, name)))
         for name in ("alpha", "beta") if self.scaled else ():
             object.__setattr__(self, name, COMMON.check("scaled_damping", getattr(self, name), name))
@@ -97,6 +100,7 @@ class Material:
     def describe(self, plane: bool = True) -> str:
         """One line: every constant (for a file's attributes; ``plane=False``: of a solid, without its plane)."""
         return (f"isotropic: young = {self.young:g} Pa, poisson = {self.poisson:g}" + (f", plane {self.plane}" if plane else "")
+                + (f", loss factor {self.loss_factor:g}" if self.loss_factor else "")
                 + (" (scaled units)" if self.scaled else ""))
 
 
@@ -110,7 +114,8 @@ class BodySystem:
     """The assembled body: ``K``, the lumped ``mass`` and the constant ``load`` on all ``2 n``
     Cartesian dofs; ``springs`` and ``loads`` are what `assemble` added; ``material`` as given
     to it (one `Material` or ``{cell group: Material}``); ``C`` the Rayleigh damping of the
-    materials' cells (None: undamped)."""
+    materials' cells (None: undamped); ``S`` the structural damping ``sum eta K`` of the materials with a
+    loss factor (None: none; the CEA's stiffness is ``K + i S``)."""
 
     body: Body
     material: Material | dict
@@ -120,6 +125,7 @@ class BodySystem:
     springs: tuple = ()
     loads: tuple = ()
     C: sp.csr_matrix | None = None
+    S: sp.csr_matrix | None = None
 
     def __post_init__(self):
         if self.load is None:
@@ -449,6 +455,13 @@ def assemble(body: Body, material, springs=(), loads=()) -> BodySystem:
             if orthotropic:
                 C = C + _anisotropic_stiffness(basis, order, beta[:, None, None] * D)
         C = sp.csr_matrix(C)
+    S = None
+    if any(m.loss_factor > 0 for m in mats):  # each material's stiffness times its loss factor (springs: none)
+        eta = value("loss_factor")
+        S = _stiffness(basis, order, eta * lame[:, 0], eta * lame[:, 1])
+        if orthotropic:
+            S = S + _anisotropic_stiffness(basis, order, eta[:, None, None] * D)
+        S = sp.csr_matrix(S)
     if springs:
         _check_springs(body, springs, K.diagonal())
         K = (K + boundary_springs(body, springs)).tocsr()
@@ -458,7 +471,7 @@ def assemble(body: Body, material, springs=(), loads=()) -> BodySystem:
                 b = float(betas[body.cells_along(spring.group)].max())
                 C = (C + b * boundary_springs(body, [spring])).tocsr() if b > 0 else C
     load = boundary_load(body, loads) if loads else None
-    return BodySystem(body, material, K, lumped, load, springs, loads, C)
+    return BodySystem(body, material, K, lumped, load, springs, loads, C, S)
 
 
 def _check_springs(body: Body, springs, elastic: np.ndarray) -> None:

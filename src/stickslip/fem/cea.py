@@ -83,6 +83,9 @@ def linearised(problem: ContactProblem, mass_matrix: str = "lumped", contact_mod
         raise ParameterError("penalty", penalty, 'left out unless contact_model = "penalty"', also=("contact_model",))
     scheme = BodyScheme(problem)
     K = scheme.stiffness
+    if problem.system.S is not None:  # loss factors: K + i S, in the scheme's frames on the free dofs as K
+        S = (scheme.rotation.T @ problem.system.S @ scheme.rotation).tocsr()[scheme.free][:, scheme.free]
+        K = (K + 1j * S).tocsr()
     normal, tangent = scheme.contact_dofs
     steady = problem.steady
     if not steady.loaded:
@@ -102,7 +105,7 @@ def linearised(problem: ContactProblem, mass_matrix: str = "lumped", contact_mod
     P = sp.csr_matrix((f, (tangent, normal)), shape=K.shape)  # P[t, n] = f_j
     if contact_model == "penalty":  # every free dof kept; the springs' force -k w_n, and f times it on t
         keep = np.arange(scheme.free.size)
-        k = penalty * float(np.abs(K.diagonal()).max())
+        k = penalty * float(np.abs(K.real.diagonal()).max())
         K = K + k * sp.csr_matrix((np.ones(len(normal)), (normal, normal)), shape=K.shape) + k * P
         rows = sp.identity(K.shape[0], format="csr")
     else:  # each tangential row less f times its node's normal row: (I - P) A
@@ -237,9 +240,12 @@ def eigenvalues_near(K_eff, C_eff, mass, shift_hz: float, count: int, vectors: b
     radius = 0.9 * dist.max()
     upper = (w0 + radius) / (2.0 * math.pi)
     flip = s.imag < 0
+    trusted = dist < radius
+    if np.iscomplexobj(K_eff.data):  # a loss factor: K (1 + i eta) holds for Im s > 0 only, and its pencil's
+        trusted &= ~flip  # eigenvalues below the axis are no modes (their conjugates would grow): dropped
     s = np.where(flip, np.conj(s), s)  # one of each conjugate pair: Im s >= 0
     vec = np.where(flip, np.conj(vec), vec)[:n]
-    return s, (vec if vectors else None), dist < radius, upper, radius
+    return s, (vec if vectors else None), trusted, upper, radius
 
 
 class _RealLU:
@@ -256,7 +262,7 @@ class _RealLU:
 def _factor(K, C, M, sigma):
     """The sparse LU of ``Q(sigma) = K + sigma C + sigma^2 M`` (SuperLU): real where ``C`` is zero and
     ``sigma`` imaginary (``Q = K - w^2 M``), complex otherwise."""
-    if C.nnz == 0 or not np.any(C.data):
+    if (C.nnz == 0 or not np.any(C.data)) and not np.iscomplexobj(K.data):
         return _RealLU(K + (sigma**2).real * M)
     return sla.splu((K + sigma * C + sigma**2 * M).astype(complex).tocsc())
 

@@ -10,6 +10,8 @@
     plane = "strain"                # or "stress"
     alpha = 0.0                     # Rayleigh damping C = alpha M + beta K (optional)
     beta = 0.0
+    loss_factor = 0.0               # structural damping: the CEA's stiffness times (1 + i loss_factor)
+                                    # (optional; the CEA only, refused by fem run)
 
     # or one material per cell group of the mesh (gmsh physical surfaces), every group one:
     # [[material]]
@@ -110,7 +112,7 @@ _KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "partner", "
                       "interference"},
           "cea": {"band", "count", "complete_below", "mass_matrix", "contact_model", "penalty", "reduced_modes",
                   "augment"}}
-_MATERIAL = {"young", "poisson", "density", "plane", "alpha", "beta"}
+_MATERIAL = {"young", "poisson", "density", "plane", "alpha", "beta", "loss_factor"}
 #: The keys of an orthotropic material (`stickslip.fem.orthotropic.Orthotropic`), instead of young and poisson.
 _ORTHOTROPIC = {"e1", "e2", "e3", "nu12", "nu13", "nu23", "g12", "angle"}
 
@@ -535,7 +537,8 @@ def _materials(problems, raw, key: str = "material", dimension: int = 2) -> dict
             problems.append(f"{where}.plane = {_toml(plane)} must be one of {', '.join(PLANES)}")
         common = {"density": _number(problems, f"{where}.density", m.get("density")), "plane": plane,
                   "alpha": _number(problems, f"{where}.alpha", m.get("alpha", 0.0)),
-                  "beta": _number(problems, f"{where}.beta", m.get("beta", 0.0))}
+                  "beta": _number(problems, f"{where}.beta", m.get("beta", 0.0)),
+                  "loss_factor": _number(problems, f"{where}.loss_factor", m.get("loss_factor", 0.0))}
         if ortho:
             given = {k: _number(problems, f"{where}.{k}", m.get(k)) for k in ("e1", "e2", "nu12", "g12")}
             given["angle"] = _number(problems, f"{where}.angle", m.get("angle", 0.0))

@@ -9,7 +9,7 @@
                                     # (a symmetry plane, a sliding support; optional, the partner's too)
 
     [[material]]                    # one per cell group, or one [material] for the whole body (no plane in 3-D)
-    group = "lining"                # isotropic: young, poisson, density, alpha, beta; or orthotropic (a lining):
+    group = "lining"                # isotropic: young, poisson, density, alpha, beta, loss_factor; or orthotropic:
     e1 = 9e9                        # e1, e2, e3, nu12, nu13, nu23, g12, g13, g23 and density, its axes
     axis1 = [1.0, 0.0, 0.0]         # axis1, axis2 = [x, y, z] (default x and y; axis 3 their cross product)
 
@@ -44,9 +44,9 @@ __all__ = ["dimension_of", "units_of", "read_mesh", "solid_materials", "rollers_
 VOLUME_CELLS = {"tetra", "tetra10", "hexahedron", "hexahedron20", "hexahedron27", "wedge", "wedge15", "pyramid",
                 "pyramid13"}
 #: The keys of a solid's isotropic and orthotropic materials.
-ISOTROPIC = {"young", "poisson", "density", "alpha", "beta"}
+ISOTROPIC = {"young", "poisson", "density", "alpha", "beta", "loss_factor"}
 ORTHOTROPIC = {"e1", "e2", "e3", "nu12", "nu13", "nu23", "g12", "g13", "g23", "density", "axis1", "axis2", "alpha",
-               "beta"}
+               "beta", "loss_factor"}
 
 
 def dimension_of(problems, data: dict) -> int:
@@ -124,8 +124,8 @@ def solid_materials(problems, tables: list, key: str) -> dict:
         if name in out:
             problems.append(f"{where}.group = {name!r} must name each cell group once ({name!r} has a material already)")
             continue
-        common = {k: number(problems, f"{where}.{k}", m.get(k, 0.0 if k in ("alpha", "beta") else None))
-                  for k in ("density", "alpha", "beta")}
+        common = {k: number(problems, f"{where}.{k}", m.get(k, None if k == "density" else 0.0))
+                  for k in ("density", "alpha", "beta", "loss_factor")}
         if ortho:
             args = {k: number(problems, f"{where}.{k}", m.get(k)) for k in ("e1", "e2", "e3", "nu12", "nu13", "nu23",
                                                                            "g12", "g13", "g23")}

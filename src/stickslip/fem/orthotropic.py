@@ -42,7 +42,8 @@ class Orthotropic:
     """In-plane orthotropic linear elastic material (see the module docstring): ``e1, e2`` [Pa],
     ``nu12``, ``g12`` [Pa], ``density`` [kg/m^3], ``angle`` [deg], ``plane`` ``"strain"``
     (default; then ``e3`` [Pa], ``nu13``, ``nu23`` too) or ``"stress"``, Rayleigh ``alpha`` [1/s]
-    and ``beta`` [s]. Ranges: `stickslip.quantities.FEM`."""
+    and ``beta`` [s], a structural ``loss_factor`` (`stickslip.fem.Material`'s). Ranges:
+    `stickslip.quantities.FEM`."""
 
     e1: float
     e2: float
@@ -56,12 +57,13 @@ class Orthotropic:
     nu23: float | None = None
     alpha: float = 0.0
     beta: float = 0.0
+    loss_factor: float = 0.0
 
     #: Orthotropic constants are SI only (a scaled model is isotropic).
     scaled = False
 
     def __post_init__(self):
-        for name in ("e1", "e2", "g12", "density", "nu12", "angle", "plane", "alpha", "beta"):
+        for name in ("e1", "e2", "g12", "density", "nu12", "angle", "plane", "alpha", "beta", "loss_factor"):
             object.__setattr__(self, name, Q.check(name, getattr(self, name)))
         out = ("e3", "nu13", "nu23")
         if self.plane == "strain":
@@ -149,4 +151,5 @@ class Orthotropic:
         a plane body's material always has its plane)."""
         out = f", e3 = {self.e3:g} Pa, nu13 = {self.nu13:g}, nu23 = {self.nu23:g}" if self.plane == "strain" else ""
         return (f"orthotropic: e1 = {self.e1:g} Pa, e2 = {self.e2:g} Pa, nu12 = {self.nu12:g}, g12 = {self.g12:g} Pa"
-                f"{out}, angle = {self.angle:g} deg, plane {self.plane}")
+                f"{out}, angle = {self.angle:g} deg, plane {self.plane}"
+                + (f", loss factor {self.loss_factor:g}" if self.loss_factor else ""))

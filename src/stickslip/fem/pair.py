@@ -517,6 +517,15 @@ class PairProblem:
         return K if self.transport is None else (K - self.transport[1]).tocsr()
 
     @cached_property
+    def S(self):
+        """Both bodies' structural damping ``sum eta K`` (their materials' loss factors), or None: the
+        CEA's stiffness is ``K + i S``."""
+        if self.slave.S is None and self.master.S is None:
+            return None
+        return sp.block_diag([sp.csr_matrix(s.K.shape) if s.S is None else s.S for s in (self.slave, self.master)],
+                             format="csr")
+
+    @cached_property
     def C(self):
         """Both dampings; with ``gyroscopic``, plus the master's gyroscopic matrix ``G``."""
         C = None
@@ -605,9 +614,11 @@ class PairProblem:
         B = c * (self.G[A] + sp.diags(self.kinetic[A] * g * rate) @ self.T[A])[:, free]
         G = c * self.G[A][:, free]
         K = self.K[free][:, free]
+        k = None if contact_model != "penalty" else penalty * float(np.abs(K.diagonal()).max())
+        if self.S is not None:  # loss factors: K + i S (structural damping, in the frequency domain)
+            K = (K + 1j * self.S[free][:, free]).tocsr()
         multipliers = 0 if contact_model == "penalty" else len(A)
         if contact_model == "penalty":  # lambda = -k W^-2 G u: the force B^T lambda on the left as k B^T W^-2 G
-            k = penalty * float(np.abs(K.diagonal()).max())
             K = (K + (k / c**2) * B.T @ sp.diags(1.0 / self.coupling.weight[A] ** 2) @ G).tocsr()
         else:
             K = sp.bmat([[K, -B.T], [G, None]], format="csr")

@@ -67,6 +67,7 @@ class ModalBasis:
     modes: int = 0
     top: float = 0.0
     augmented: int = 0
+    structural: np.ndarray | None = None  # Psi^T S Psi of the materials' loss factors (None: none)
 
     @property
     def count(self) -> int:
@@ -157,9 +158,10 @@ def modal_basis(problem: PairProblem, count: int, penalty: float | None = None, 
     ritz, Y = la.eigh(0.5 * (Kv + Kv.T))
     psi = V @ Y
     Cr = None if C is None else psi.T @ (C @ psi)
+    Sr = None if problem.S is None else psi.T @ (problem.S[free][:, free] @ psi)
     return ModalBasis(np.sqrt(np.clip(ritz, 0.0, None)) / (2 * math.pi), psi, np.diag(ritz), psi.T @ (F @ psi),
                       Cr, float(problem.friction), free, float(penalty), problem.to_attrs(), count, top,
-                      psi.shape[1] - count)
+                      psi.shape[1] - count, Sr)
 
 
 def _eigen(basis: ModalBasis, friction: float):
@@ -167,6 +169,8 @@ def _eigen(basis: ModalBasis, friction: float):
     modal coordinates (columns)."""
     n = basis.count
     K = basis.stiffness + friction * basis.friction_stiffness
+    if basis.structural is not None:  # loss factors: K + i S (its eigenvalues below the axis are no modes)
+        K = K + 1j * basis.structural
     C = np.zeros((n, n)) if basis.damping is None else basis.damping
     A = np.block([[np.zeros((n, n)), np.eye(n)], [-K, -C]])
     s, v = la.eig(A)

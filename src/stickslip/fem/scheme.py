@@ -53,6 +53,11 @@ def check_damping(materials: dict, omega_max: float) -> tuple[float, float]:
     damping within the material's ranges goes. The explicit scheme damps with one ``(alpha,
     beta)``: materials with different ones are refused here (steady sliding and the CEA take
     them)."""
+    lossy = {k: m.loss_factor for k, m in materials.items() if getattr(m, "loss_factor", 0.0)}
+    if lossy:
+        raise ParameterError("material.loss_factor", ", ".join(f"{k or 'body'}: {v:g}" for k, v in lossy.items()),
+                             "0 in an explicit run (a structural loss factor, a stiffness times (1 + i eta), is a "
+                             "model of the frequency domain: the CEA takes it; damp a run with alpha and beta)")
     pairs = {(m.alpha, m.beta) for m in materials.values()}
     if len(pairs) > 1:
         names = ", ".join(f"{k}: alpha = {m.alpha:g}, beta = {m.beta:g}" for k, m in materials.items())

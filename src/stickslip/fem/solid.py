@@ -247,6 +247,7 @@ class SolidSystem:
     materials: dict = field(default_factory=dict)  # {cell group: material}, {"": material} for one
     group_mass: dict = field(default_factory=dict)  # {cell group: its lumped mass per dof}, for energy shares
     group_stiffness: dict = field(default_factory=dict)  # {cell group: its stiffness (CSR)}, for energy shares
+    S: sp.csr_array | None = None  # the structural damping sum eta K of materials with a loss factor (None: none)
 
     @property
     def n_dofs(self) -> int:
@@ -278,7 +279,7 @@ class OrthotropicSolid:
     ``j`` per strain along ``i`` under a stress along ``i``), shear moduli ``g12, g13, g23`` [Pa],
     ``density`` [kg/m^3], its axes 1 and 2 as two orthogonal directions ``axis1``, ``axis2`` in the
     solid's x, y, z (default x and y; axis 3 is their cross product), and Rayleigh damping ``alpha``
-    [1/s], ``beta`` [s]. A transversely isotropic lining
+    [1/s], ``beta`` [s], a structural ``loss_factor`` (`stickslip.fem.Material`'s). A transversely isotropic lining
     (isotropic in its plane, its axis 3 the pressing direction) is the case ``e1 = e2``, ``nu13 = nu23``,
     ``g13 = g23``, ``g12 = e1 / (2 (1 + nu12))``. The compliance must be positive definite."""
 
@@ -296,9 +297,11 @@ class OrthotropicSolid:
     axis2: tuple = (0.0, 1.0, 0.0)
     alpha: float = 0.0
     beta: float = 0.0
+    loss_factor: float = 0.0
 
     def __post_init__(self):
-        for name in ("e1", "e2", "e3", "nu12", "nu13", "nu23", "g12", "g13", "g23", "density", "alpha", "beta"):
+        for name in ("e1", "e2", "e3", "nu12", "nu13", "nu23", "g12", "g13", "g23", "density", "alpha", "beta",
+                     "loss_factor"):
             object.__setattr__(self, name, Q.check(name, getattr(self, name)))
         axes = []
         for name in ("axis1", "axis2"):
@@ -353,7 +356,8 @@ class OrthotropicSolid:
         axes = [f"[{', '.join(f'{a:g}' for a in axis)}]" for axis in (self.axis1, self.axis2)]
         return (f"orthotropic: e1 = {self.e1:g} Pa, e2 = {self.e2:g} Pa, e3 = {self.e3:g} Pa, nu12 = {self.nu12:g}, "
                 f"nu13 = {self.nu13:g}, nu23 = {self.nu23:g}, g12 = {self.g12:g} Pa, g13 = {self.g13:g} Pa, "
-                f"g23 = {self.g23:g} Pa, axis1 = {axes[0]}, axis2 = {axes[1]}")
+                f"g23 = {self.g23:g} Pa, axis1 = {axes[0]}, axis2 = {axes[1]}"
+                + (f", loss factor {self.loss_factor:g}" if self.loss_factor else ""))
 
 
 def _materials(solid: Solid, material) -> list[tuple[np.ndarray, Material]]:
@@ -486,7 +490,7 @@ def assemble_solid(solid: Solid, material, loads=()) -> SolidSystem:
 
         f += asm(pushed, facets)
     f = to_ours @ f
-    mass, C = np.zeros(n), sp.csr_array((n, n))
+    mass, C, S = np.zeros(n), sp.csr_array((n, n)), None
     names = list(material) if isinstance(material, dict) else [""]  # each material's cell group
     group_mass, group_stiffness = {}, {}
     for (cells, m, Kg, Mg), name in zip(parts, names):
@@ -495,8 +499,11 @@ def assemble_solid(solid: Solid, material, loads=()) -> SolidSystem:
         group_mass[name], group_stiffness[name] = lumped, sp.csr_array(Kg)
         if m.alpha or m.beta:  # Rayleigh, each material's own: C = sum (alpha M + beta K) over its cells
             C = C + m.alpha * sp.diags_array(lumped) + m.beta * Kg
+        if m.loss_factor:  # structural: the CEA's stiffness K + i sum eta K over each material's cells
+            S = m.loss_factor * Kg if S is None else S + m.loss_factor * Kg
     return SolidSystem(solid, sp.csr_array(K), mass, f, sp.csr_array(M), sp.csr_array(C),
-                       {name: m for name, (_, m) in zip(names, pairs)}, group_mass, group_stiffness)
+                       {name: m for name, (_, m) in zip(names, pairs)}, group_mass, group_stiffness,
+                       None if S is None else sp.csr_array(S))
 
 
 def _lumped(solid: Solid, cells: np.ndarray, density: float, consistent) -> np.ndarray:

@@ -47,6 +47,9 @@ FEM = Domain("fem", units="SI", quantities=[
     Q("alpha", "1/s", "Rayleigh damping: mass coefficient", "[0, 1e9]", symbol="alpha",
       why="a mode of frequency f has the damping ratio alpha / (4 pi f): 1e9 1/s overdamps every mode below "
           "80 MHz"),
+    Q("loss_factor", "1", "structural loss factor: the material's stiffness times (1 + i eta) in the CEA", "[0, 1]",
+      symbol="eta", why="every mode of a material of loss factor eta has the damping ratio about eta / 2: 1 damps "
+      "each by half its critical damping (linings measure 0.02-0.3)"),
     Q("beta", "s", "Rayleigh damping: stiffness coefficient", "[0, 0.01]", symbol="beta",
       why="a mode of frequency f has the damping ratio pi beta f: 0.01 s overdamps every mode above 32 Hz"),
     # the contact, the surface, springs and loads
