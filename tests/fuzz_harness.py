@@ -70,6 +70,8 @@ BASE = {
     "fem run": ["{config}", "--transits", "2", "--out", "{tmp}/g.nc"],
     "fem cea": ["{config}"],
     "fem steady": ["{config}"],
+    "fem map": ["{config}", "--over", "young=1e10:2e10:2", "--friction", "0:0.01:2", "--store", "{tmp}/fm.zarr",
+                "--workers", "1"],
     "sweep": ["{sweep}", "--out", "{tmp}/s.zarr", "--workers", "1"],
     "system simulate": [SYSTEM_FILE, "--t-end", "5", "--out", "{tmp}/y.nc"],
     "system cycle": [SYSTEM_FILE, "--transient", "30", "--out", "{tmp}/yc.nc"],

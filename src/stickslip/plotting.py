@@ -399,6 +399,30 @@ def plot_stability_map(ds, fig: Figure | None = None) -> Figure:
     return fig
 
 
+def plot_friction_map(ds, fig: Figure | None = None) -> Figure:
+    """A stability map over the friction and one more number (`stickslip.fem.maps.stability_map`): the
+    largest growth rate of the band's modes over both axes (diverging about 0: stable blue, growing red),
+    the onset friction of each value a black line."""
+    from matplotlib.colors import TwoSlopeNorm
+
+    _dataset("ds", ds, "a stability map (stability_map)", ("max_growth_rate", "onset", "value", "friction"))
+    _figure("fig", fig)
+    fig, (ax,) = new_figure(fig, size=(6.4, 4.6))
+    g = ds["max_growth_rate"].values
+    top = float(np.nanmax(np.abs(g))) if np.any(np.isfinite(g)) else 1.0
+    top = top if top > 0 else 1.0
+    mesh = ax.pcolormesh(ds["friction"].values, ds["value"].values, g, shading="nearest", cmap="RdBu_r",
+                         norm=TwoSlopeNorm(0.0, -top, top))
+    fig.colorbar(mesh, ax=ax, label="largest growth rate [1/s]")
+    onset = ds["onset"].values
+    ax.plot(onset, ds["value"].values, "k-o", ms=3, lw=1.2, label="onset friction")
+    key = str(ds.attrs.get("swept_key", "value"))
+    units = ds["value"].attrs.get("units", "1") or "1"
+    ax.set(xlabel="friction coefficient", ylabel=f"{key} [{units}]", title="stability map")
+    ax.legend(loc="lower left", fontsize=8)
+    return fig
+
+
 def plot_oscillator_map(ds, regimes: dict, fig: Figure | None = None) -> Figure:
     """A regime map of the oscillator over its two sweep axes (``regime`` codes named by ``regimes``)."""
     from matplotlib.colors import BoundaryNorm, ListedColormap

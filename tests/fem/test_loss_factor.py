@@ -31,7 +31,7 @@ from stickslip.fem.shares import energy_shares
 from stickslip.fem.solid import assemble_solid, solid_from_meshio
 
 from .meshes import rectangle
-from .test_solid_pair import H, LINING, STEEL, T, _independent_pencil, solid_mesh
+from .test_solid_pair import H, LINING, STEEL, T, independent_pencil, solid_mesh
 
 ETA = 0.08
 
@@ -49,11 +49,11 @@ def _pad_on_block(eta_pad, eta_block, friction=0.6, interference=2e-7):
     return problem, pad, base
 
 
-def test_the_3d_cea_with_a_loss_factor_is_the_dense_solve_of_the_independent_pencil_times_one_plus_i_eta():
+def test_the_3d_cea_with_a_loss_factor_is_the_dense_solve_of_theindependent_pencil_times_one_plus_i_eta():
     problem, pad, base = _pad_on_block(ETA, ETA)
     band = (0.0, 60e3)
     modes = complex_eigenvalues(problem, band, count=20)
-    Kr, Mr, _ = _independent_pencil(pad, base, 0.6, 2e-7)
+    Kr, Mr, _ = independent_pencil(pad, base, 0.6, 2e-7)
     mu = la.eigvals(Kr, Mr)
     s = np.sqrt(-(1 + 1j * ETA) * mu.astype(complex))
     s = np.where(s.imag < 0, -s, s)  # of the two roots, the one above the axis

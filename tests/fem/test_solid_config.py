@@ -58,7 +58,7 @@ poisson = 0.3
 density = 7850.0
 
 [cea]
-band = [0.0, 400000.0]
+band = [0.0, 150000.0]
 {cea}
 """
 

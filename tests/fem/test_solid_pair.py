@@ -58,7 +58,7 @@ def test_a_uniform_pressure_passes_a_non_matching_3d_interface_exactly(lining, b
     assert np.allclose(pad_top - block_top.mean(), p * T / LINING.young, rtol=1e-8)
 
 
-def _independent_pencil(pad, base, friction, interference):
+def independent_pencil(pad, base, friction, interference):
     """``(K_r, M_r)``: the pencil of the pad (top clamped) on the block (bottom clamped), matching interface,
     assembled here: constant-strain tetrahedra, masses rho V / 4, node-to-node contact rows
     ``a_j n . (u_pad - u_block)`` (n = +z, a_j the node's share of the interface's area) and the
@@ -104,7 +104,7 @@ def test_the_3d_cea_of_a_pad_on_a_block_is_the_dense_solve_of_an_independently_a
     assert problem.steady.active.all()
     band = (0.0, 60e3)
     modes = complex_eigenvalues(problem, band, count=20)
-    Kr, Mr, (Z, K, mass, free) = _independent_pencil(pad, base, friction, interference)
+    Kr, Mr, (Z, K, mass, free) = independent_pencil(pad, base, friction, interference)
     mu, q = la.eig(Kr, Mr)
     s = np.sqrt(-mu.astype(complex))  # K_r q = -s^2 M_r q
     s = np.where(s.imag < 0, -s, s)

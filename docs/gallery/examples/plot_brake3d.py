@@ -56,3 +56,23 @@ right.set_ylabel("y [mm]")
 right.set_title(f"disc, out of plane: {modes.frequency[0]:.0f} Hz")
 fig.colorbar(dots, ax=right, label="Re w_z (scaled)")
 fig
+
+# %%
+# A stability map over the friction and the lining's modulus through its thickness (``e3``, of
+# the transversely isotropic lining): the brake written as a `stickslip fem` config
+# (``brake.write_config``, the reduced CEA of 60 modes), one reduction basis per modulus, the
+# friction swept on it, the modes tracked and the onset (the least friction at which a mode turns
+# unstable, however slowly it grows there) found by multisection. As ``stickslip fem map brake.toml
+# --over e3=1.5e9:4.5e9:5 --friction 0:0.8:17 --store map.zarr`` does, resumably.
+from stickslip.fem.maps import stability_map  # noqa: E402
+from stickslip.plotting import plot_friction_map  # noqa: E402
+
+with tempfile.TemporaryDirectory() as folder:
+    brake.build(brake.write_step(Path(folder) / "brake.step"), folder, pad_size=8.0, disc_size=15.0)
+    config = brake.write_config(folder, reduced_modes=60)
+    smap = stability_map(config, "material[0].e3", np.linspace(1.5e9, 4.5e9, 5), np.linspace(0.0, 0.8, 17),
+                         Path(folder) / "map.zarr", workers=1)
+for e3, onset, f in zip(smap["value"].values, smap["onset"].values, smap["onset_frequency"].values):
+    print(f"e3 = {e3 / 1e9:.2f} GPa: first unstable at friction {onset:.3f} ({f:.0f} Hz)")
+map_figure = plot_friction_map(smap)
+map_figure

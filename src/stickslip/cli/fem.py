@@ -273,6 +273,70 @@ def _reduced_sweep(config, json, out, overwrite, sweep, store, workers, plot, sc
           "reduced CEA sweep")
 
 
+@app.command("map")
+def map_(config: Config,
+         over: Annotated[str, typer.Option("--over", help=(
+             "The map's other axis, KEY=LO:HI:N (or :log): a number of the config besides the friction, e.g. "
+             "pressure=2e5:2e6:6, partner.omega=5:50:10, material[0].e3=1e9:5e9:5."))],
+         friction: Annotated[str, typer.Option("--friction", help=(
+             "The frictions of each row, LO:HI:N (e.g. 0:0.8:41)."))],
+         store: Annotated[Path, typer.Option(help=(
+             "The map's checkpoint, a Zarr store (.zarr): each row kept as it finishes, resumed if it holds this "
+             "map, refused if it holds another."))],
+         out: Annotated[Optional[Path], typer.Option(help=(
+             "Write the map to this netCDF file (.nc): largest growth rate [1/s], its frequency [Hz] and the "
+             "number of growing modes on (value, friction); the onset friction of each value."))] = None,
+         plot: Annotated[Optional[Path], typer.Option(help=(
+             "Write the map's picture (the largest growth rate over both axes, the onset friction drawn) to this "
+             "file: PNG, SVG or PDF by its suffix."))] = None,
+         workers: Annotated[Optional[int], declared(COMMON["workers"], "--workers", "Default: all cores.")] = None,
+         scheduler: Scheduler = None, overwrite: Replace = False, json: Json = False):
+    """A stability map over the friction and one more number of the config: the CEA (with [cea]
+    reduced_modes, the reduced one and its tracked friction sweep) at every point, the onset
+    friction of each value."""
+    import numpy as np
+
+    from ..fem.config import load_config, read_toml, resolve_key
+    from ..fem.maps import stability_map
+    from .common import axis, output_folder
+
+    overwrite_needs(overwrite, "--out, --store or --plot", out, store, plot)
+    out = output_path("--out", out, ".nc", overwrite)
+    plot = output_path("--plot", plot, FIGURE_SUFFIXES, overwrite)
+    store = output_folder("--store", store, ".zarr")
+    name, values = axis("--over", over)
+    _, frictions = axis("--friction", f"friction={friction}")
+    key = resolve_key(read_toml(config), name, "--over")
+    if key == "contact.friction":
+        raise ParameterError("--over", over, "a number of the config other than contact.friction (--friction gives "
+                             "the friction axis)")
+    for option, text, seq in (("--over", over, values), ("--friction", friction, frictions)):
+        if any(b <= a for a, b in zip(seq, seq[1:])):
+            raise ParameterError(option, text, "LO < HI (the values increase)")
+    try:  # every corner a valid config, checked before any work
+        for v in (values[0], values[-1]):
+            for f in (frictions[0], frictions[-1]):
+                load_config(config, {key: v, "contact.friction": f})
+    except ParameterError as err:
+        raise ParameterError("--over", over, f"values each valid in the config with the frictions of --friction: "
+                             f"{err.allowed}") from None
+    with progress_bar("stability map") as tick:
+        ds = stability_map(config, key, values, frictions, store, workers=workers, progress=tick, overwrite=overwrite,
+                           scheduler=scheduler or "processes")
+    if out is not None:
+        write_netcdf(ds, out)
+    if plot is not None:
+        from .. import plotting
+
+        plotting.save(plotting.plot_friction_map(ds), plot)
+    onsets = [{"value": float(v), "onset": float(o), "onset_frequency": float(f)}
+              for v, o, f in zip(ds["value"].values, ds["onset"].values, ds["onset_frequency"].values)
+              if math.isfinite(o)]
+    _emit({"swept_key": key, "values": len(values), "frictions": len(frictions), "onsets": onsets,
+           "stable_values": int(np.sum(~np.isfinite(ds["onset"].values))), "store": str(store)}, json,
+          "stability map")
+
+
 @app.command()
 def run(config: Config,
         transits: Annotated[float, declared(Q["transits"], "--transits")] = 20.0,

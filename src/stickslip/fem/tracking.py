@@ -52,7 +52,7 @@ xr = lazy.load("xarray")  # imported on first use: commands that make no dataset
 
 log = logging.getLogger("stickslip.fem")
 
-__all__ = ["cea_sweep", "track", "Tracked", "MIN_MAC", "SKETCH", "SEARCH"]
+__all__ = ["cea_sweep", "solve_point", "track", "Tracked", "MIN_MAC", "SKETCH", "SEARCH", "MAX_MODES"]
 
 #: Rows of the sketch of a mode shape.
 SKETCH = 256
@@ -64,10 +64,10 @@ SEARCH = "critical_search"
 MAX_MODES = 200
 
 
-def _solve(config, key, value, modes_kept):
-    """``(s, sketches)`` of the CEA of ``config`` with ``key = value``: eigenvalues and the
-    sketched shapes on the free dofs (unit length), at most ``modes_kept``."""
-    cfg = load_config(config, {key: value})
+def solve_point(config, overrides: dict, modes_kept: int, key: str | None = None, value: float | None = None):
+    """``(s, sketches)`` of the CEA of ``config`` with its numbers ``overrides`` (and ``key = value``):
+    eigenvalues and the sketched shapes on the free dofs (unit length), at most ``modes_kept``."""
+    cfg = load_config(config, {**overrides, **({} if key is None else {key: value})})
     problem = cfg.problem()
     modes = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=True, complete_below=cfg.complete_below,
                                 **cfg.cea_options)
@@ -87,7 +87,7 @@ def _solve(config, key, value, modes_kept):
 
 def _point(config: str, key: str, modes_kept: int, value: float) -> dict:
     """One point of the sweep as `run_sweep` stores it (NaN-padded to ``modes_kept``)."""
-    s, x = _solve(config, key, value, modes_kept)
+    s, x = solve_point(config, {key: value}, modes_kept)
     pad = lambda a, size: np.concatenate([a, np.full(size - a.size, np.nan)])  # noqa: E731
     return {"modes": float(len(s)), "s_real": pad(s.real, modes_kept), "s_imag": pad(s.imag, modes_kept),
             "sketch_real": pad(x.real.ravel(), modes_kept * SKETCH),
@@ -195,7 +195,7 @@ def cea_sweep(config, key: str, values, store, *, tol: float = 1e-2, workers: in
     with exclusive(store, "store"):  # the search's CEAs go to the sweep's store, checked by run_sweep
         keep = OffGrid(store, SEARCH)
         stored = {v: unpack(arrays) for v, arrays in keep.load().items()}
-        solve = functools.partial(stored_solve, functools.partial(_solve, str(config), key, modes_kept=kept), keep)
+        solve = functools.partial(stored_solve, functools.partial(solve_point, str(config), {}, kept, key), keep)
         with worker_pool(scheduler, workers) as evaluate:
             found = search(values, s, s_points, sketches, tol, solve, evaluate, width, stored)
     if found.rounds:

@@ -155,6 +155,11 @@ FEM = Domain("fem", units="SI", quantities=[
     Q("penalty", "1", "penalty stiffness over the largest diagonal entry of the stiffness", "[1, 1e12]",
       why="below 1 the springs are softer than the body and hold nothing; beyond 1e12 the pencil loses every digit "
           "to round-off"),
+    Q("max_growth_rate", "1/s", "largest growth rate of the band's modes at a point of a stability map"),
+    Q("most_unstable_frequency", "Hz", "frequency of the mode of largest growth rate at a point of a stability map"),
+    Q("unstable_modes", "1", "modes that grow at a point of a stability map"),
+    Q("onset", "1", "least friction coefficient at which a mode turns unstable (NaN: none over the map's frictions)"),
+    Q("onset_frequency", "Hz", "frequency of the mode that turns unstable at the onset friction"),
     Q("dimension", "1", "dimension of a config's bodies: 2 (plane) or 3 (solids)", "[2, 3]", integer=True),
     Q("reduced_modes", "1", "real modes of the reduction basis of a config's reduced CEA", "[2, 2000]",
       integer=True, why="beyond 2000 modes the dense reduced problem costs more than the full sparse one"),
