@@ -16,12 +16,15 @@ import json
 import meshio
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from stickslip.cli import run
 from stickslip.errors import ParameterError
 from stickslip.fem.config import load_config
 from stickslip.fem.pair import steady_pair
 
+from ..budget import examples
 from .meshes import rectangle
 from .test_solid import box
 
@@ -113,6 +116,7 @@ def test_fem_steady_and_cea_take_a_config_of_solids(tmp_path, capsys):
     assert len(modes) >= 20 and uff.stat().st_size > 0
 
 
+@pytest.mark.slow
 def test_the_reduced_cea_of_a_config_with_every_vector_is_the_full_one(tmp_path, capsys):
     """With as many vectors as free dofs (modes and their static vectors span everything), the
     reduced CEA is the full one with penalty contact (1e-6 of |s|, threshold set before the run)."""
@@ -209,3 +213,42 @@ def test_load_config_names_every_problem_of_a_3d_config_at_once(tmp_path):
     with pytest.raises(ParameterError) as err:
         load_config(config)
     assert "units is missing" in str(err.value) and "material.young = -1.0" in str(err.value)
+
+
+#: key -> (its text in CONFIG, the TOML to put there with {v} the value): every number and the 3-D keys
+FUZZ = {"dimension": ("dimension = 3", "dimension = {v}"), "units": ('units = "mm"', "units = {v}"),
+        "rollers": ('rollers = { x0 = "x", y0 = "y" }', "rollers = {v}"),
+        "material.young": ("young = 5e9", "young = {v}"), "material.poisson": ("poisson = 0.25", "poisson = {v}"),
+        "material.density": ("density = 2500.0", "density = {v}"),
+        "material.loss_factor": ("density = 2500.0", "density = 2500.0\nloss_factor = {v}"),
+        "contact.friction": ("friction = 0.3", "friction = {v}"),
+        "load[0].pressure": ("pressure = 2e6", "pressure = {v}"),
+        "partner.velocity": ("velocity = [1.0, 0.0]", "velocity = [{v}, 0.0]"),
+        "partner.material.young": ("young = 2.1e11", "young = {v}"),
+        "cea.reduced_modes": ("[cea]", "[cea]\nreduced_modes = {v}")}
+
+
+@settings(max_examples=examples(40), suppress_health_check=[HealthCheck.function_scoped_fixture], deadline=None)
+@given(key=st.sampled_from(sorted(FUZZ)), value=st.one_of(
+    st.sampled_from(["0", "-1", "1e300", "-1e300", "1e-300", "5e-324", "nan", "inf", '"abc"', "true", "[]", "{}",
+                     "10000000000000000000000"]), st.floats(allow_nan=False, allow_infinity=False).map(repr)))
+def test_a_generated_value_in_a_3d_key_gives_finite_numbers_or_one_line(tmp_path_factory, key, value, capsys):
+    if not _FUZZ_FOLDER:  # the meshes written once for every example
+        _FUZZ_FOLDER.append(tmp_path_factory.mktemp("fuzz3"))
+        write(_FUZZ_FOLDER[0])
+    folder = _FUZZ_FOLDER[0]
+    old, new = FUZZ[key]
+    text = CONFIG.format(extra="", cea="")
+    assert old in text
+    config = folder / "fuzz.toml"
+    config.write_text(text.replace(old, new.format(v=value), 1))
+    code = run(["fem", "steady", str(config), "--json"])
+    out, err = capsys.readouterr()
+    assert code in (0, 1, 2), (key, value, code, err)
+    if code == 0:
+        assert np.all(np.isfinite([v for v in json.loads(out).values() if isinstance(v, float)])), (key, value, out)
+    else:
+        assert err.count("\n") == 1 and "Traceback" not in err, (key, value, err)
+
+
+_FUZZ_FOLDER: list = []

@@ -348,6 +348,14 @@ class PairProblem:
             if not isinstance(getattr(self, name), (BodySystem, SolidSystem)):
                 raise ParameterError(name, getattr(self, name), "a BodySystem (see assemble) or a SolidSystem "
                                      "(assemble_solid)")
+        for name in ("slave_group", "master_group"):
+            if not isinstance(getattr(self, name), str):
+                raise ParameterError(name, getattr(self, name), "the name of a boundary (or face) group")
+        for name in ("clamped_slave", "clamped_master"):
+            value = getattr(self, name)
+            if isinstance(value, str) or not isinstance(value, (list, tuple)) or \
+                    not all(isinstance(g, str) for g in value):
+                raise ParameterError(name, value, "a list of boundary (or face) group names")
         if isinstance(self.slave, SolidSystem) != isinstance(self.master, SolidSystem):
             raise ParameterError("master", self.master.body.source, f"a body of the slave's dimension (the slave "
                                  f"{self.slave.body.source} is {self.dimension}-D, the master "

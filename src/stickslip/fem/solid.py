@@ -108,7 +108,7 @@ def _volumes(p: np.ndarray, cells: np.ndarray, kind: str) -> np.ndarray:
 
 def solid_from_meshio(mesh, source: str = "mesh", units: str | None = None) -> Solid:
     """A `Solid` from a `meshio.Mesh` whose coordinates are in ``units`` (``"m"`` or ``"mm"``)."""
-    if units not in UNITS:
+    if not isinstance(units, str) or units not in UNITS:
         raise ParameterError("units", units, f"the length unit of the mesh's coordinates: {' or '.join(UNITS)} "
                              "(a CAD model is often in mm; no default)")
     try:
@@ -563,8 +563,14 @@ def supported_dofs(solid: Solid, clamped=(), rollers=None) -> np.ndarray:
     along its axis (``"x"``, ``"y"`` or ``"z"``) those of each face group of ``rollers``
     (``{group: axis}``: a symmetry plane or a sliding support normal to that axis). A roller along
     another direction comes in a later release."""
-    held = [3 * solid.nodes(g, "clamped")[:, None] + np.arange(3) for g in ([clamped] if isinstance(clamped, str)
-                                                                           else list(clamped))]
+    if not isinstance(solid, Solid):
+        raise ParameterError("solid", solid, "a stickslip.fem.solid.Solid (read_solid)")
+    groups = [clamped] if isinstance(clamped, str) else clamped
+    if not isinstance(groups, (list, tuple)) or not all(isinstance(g, str) for g in groups):
+        raise ParameterError("clamped", clamped, "a face group name or a list of them")
+    if rollers is not None and not isinstance(rollers, dict):
+        raise ParameterError("rollers", rollers, "{face group: axis} or None")
+    held = [3 * solid.nodes(g, "clamped")[:, None] + np.arange(3) for g in groups]
     for group, axis in dict(rollers or {}).items():
         if axis not in AXES:
             raise ParameterError(f"rollers[{group}]", axis, "a coordinate axis: x, y or z")

@@ -11,6 +11,7 @@ digits (the format's ``E13.5``).
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import numpy as np
@@ -31,6 +32,8 @@ def write_modes_uff(problem: PairProblem, modes: CeaModes, path) -> Path:
         raise ParameterError("problem", problem, "a stickslip.fem.PairProblem")
     if not isinstance(modes, CeaModes) or modes.shapes is None:
         raise ParameterError("modes", type(modes).__name__, "CeaModes with shapes (mode_shapes=True)")
+    if not isinstance(path, (str, os.PathLike)):
+        raise ParameterError("path", path, "a new .uff or .unv file in an existing folder (a path)")
     path = Path(path)
     if path.suffix.lower() not in (".uff", ".unv") or path.is_dir() or not path.parent.is_dir():
         raise ParameterError("path", str(path), "a new .uff or .unv file in an existing folder")

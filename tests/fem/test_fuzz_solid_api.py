@@ -1,0 +1,115 @@
+"""Fuzzing the Python API of the 3-D bodies (issue 45), as `tests/test_fuzz_api.py` fuzzes the rest:
+each public parameter, one bad value at a time (NaN, infinities, 0, -1, 1e300, 1e-300, a subnormal,
+text, None, a bool, a list, a complex, a huge integer), must give a result or a `ParameterError` /
+`NoSolutionError`, never another exception type."""
+
+import warnings
+
+import numpy as np
+import pytest
+
+from stickslip.errors import NoSolutionError, ParameterError
+from stickslip.fem import Load, Material, OrthotropicSolid
+from stickslip.fem.pair import PairProblem, Translation
+from stickslip.fem.solid import assemble_solid, solid_from_meshio, solid_modes, supported_dofs
+
+from ..test_fuzz_api import BAD
+from .test_solid_pair import H, LINING, STEEL, T, solid_mesh
+
+_MADE: dict = {}
+
+
+def _made():
+    """A pad on a block, its CEA with shapes and a reduction basis, made once."""
+    if not _MADE:
+        from stickslip.fem.cea import complex_eigenvalues
+        from stickslip.fem.reduced import modal_basis
+
+        pad = solid_from_meshio(solid_mesh((2, 2, 1), "tetra", T, lift=H - 2e-7), "pad", units="m")
+        base = solid_from_meshio(solid_mesh((2, 2, 2), "tetra", H), "block", units="m")
+        problem = PairProblem(assemble_solid(pad, LINING), "z0", assemble_solid(base, STEEL), "z1",
+                              Translation((1.0, 0.0)), friction=0.3, clamped_slave=("z1",), clamped_master=("z0",))
+        _MADE.update(pad=pad, base=base, problem=problem,
+                     modes=complex_eigenvalues(problem, (0.0, 60e3), 20, mode_shapes=True),
+                     basis=modal_basis(problem, 20))
+    return _MADE
+
+
+ORTHO = dict(e1=9e9, e2=6e9, e3=3e9, nu12=0.25, nu13=0.2, nu23=0.15, g12=2.5e9, g13=1.5e9, g23=1.2e9, density=2400.0)
+
+
+def _pair(**k):
+    m = _made()
+    args = dict(slave=m["problem"].slave, slave_group="z0", master=m["problem"].master, master_group="z1",
+                motion=Translation((1.0, 0.0)), friction=0.3, clamped_slave=("z1",), clamped_master=("z0",))
+    return PairProblem(**{**args, **k})
+
+
+def _reduced(name, **k):
+    from stickslip.fem import reduced
+
+    m = _made()
+    if name == "modal_basis":
+        return reduced.modal_basis(**{"problem": m["problem"], "count": 10, **k})
+    if name == "reduced_modes":
+        return reduced.reduced_modes(**{"basis": m["basis"], **k})
+    return reduced.reduced_sweep(**{"basis": m["basis"], "frictions": [0.0, 0.5], **k})
+
+
+def _shares(**k):
+    from stickslip.fem.shares import energy_shares
+
+    m = _made()
+    return energy_shares(**{"problem": m["problem"], "modes": m["modes"], **k})
+
+
+def _uff(**k):
+    import tempfile
+
+    from stickslip.fem.uff import write_modes_uff
+
+    m = _made()
+    return write_modes_uff(**{"problem": m["problem"], "modes": m["modes"], "path": tempfile.mkdtemp() + "/m.uff",
+                              **k})
+
+
+CALLS = {
+    "Material loss_factor": (lambda **k: Material(**{"young": 1e10, "poisson": 0.3, "density": 2500.0, **k}),
+                             ["loss_factor"]),
+    "OrthotropicSolid": (lambda **k: OrthotropicSolid(**{**ORTHO, **k}),
+                         [*ORTHO, "axis1", "axis2", "alpha", "beta", "loss_factor"]),
+    "solid_from_meshio": (lambda **k: solid_from_meshio(**{"mesh": solid_mesh((1, 1, 1), "tetra", T), "units": "m",
+                                                           **k}), ["mesh", "source", "units"]),
+    "assemble_solid": (lambda **k: assemble_solid(**{"solid": _made()["pad"], "material": LINING,
+                                                     "loads": [Load("z1", pressure=1e6)], **k}),
+                       ["solid", "material", "loads"]),
+    "supported_dofs": (lambda **k: supported_dofs(**{"solid": _made()["pad"], "clamped": ("z1",), **k}),
+                       ["solid", "clamped", "rollers"]),
+    "solid_modes": (lambda **k: solid_modes(**{"system": _made()["problem"].slave,
+                                               "held": supported_dofs(_made()["pad"], ("z1",)), **k}),
+                    ["system", "held", "count", "mass"]),
+    "PairProblem solids": (_pair, ["slave", "slave_group", "master", "master_group", "motion", "friction",
+                                   "clamped_slave", "clamped_master", "gyroscopic", "static_friction",
+                                   "rollers_slave", "rollers_master"]),
+    "modal_basis": (lambda **k: _reduced("modal_basis", **k), ["problem", "count", "penalty", "augment"]),
+    "reduced_modes": (lambda **k: _reduced("reduced_modes", **k), ["basis", "friction", "band", "mode_shapes"]),
+    "reduced_sweep": (lambda **k: _reduced("reduced_sweep", **k), ["basis", "frictions", "band", "tol"]),
+    "energy_shares": (_shares, ["problem", "modes"]),
+    "write_modes_uff": (_uff, ["problem", "modes", "path"]),
+}
+CASES = [(name, param) for name, (_, params) in CALLS.items() for param in params]
+
+
+@pytest.mark.parametrize("name, param", CASES, ids=[f"{n} {p}" for n, p in CASES])
+def test_bad_values_give_a_parameter_error_or_a_result(name, param, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    func = CALLS[name][0]
+    for value in BAD:
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", RuntimeWarning)
+                func(**{param: value})
+        except (ParameterError, NoSolutionError) as err:
+            assert str(err)
+        except Exception as err:  # noqa: BLE001 - what the test is for
+            pytest.fail(f"{name}({param}={value!r}) raised {type(err).__name__}: {err}")
