@@ -6,9 +6,11 @@ commands on it (issue 45).
   not matching, both on rollers given by the config: every multiplier is p and the normal load
   p L^2 [N] (the exact state is uniform). Thresholds, set before the run: 1e-8 relative. Read in
   metres, the load would be 1e6 times larger; without the rollers the pair would be free to move.
-* Bad input: a 2-D mesh given to a 3-D config and the reverse, no units, a rigid surface or springs
-  with solids, a plane, an interference beyond 2 % of the pad's thickness, a tangled mesh; each one
-  line naming the key, exit 2, nothing written.
+* Springs on the pad's pressed face (``[[spring]]`` of three components): the contact pressure is the
+  closed form's share of the load (1e-8).
+* Bad input: a 2-D mesh given to a 3-D config and the reverse, no units, a rigid surface with solids,
+  springs and tractions of two components, a plane, an interference beyond 2 % of the pad's
+  thickness, a tangled mesh; each one line naming the key, exit 2, nothing written.
 """
 
 import json
@@ -103,6 +105,19 @@ def test_a_config_in_millimetres_passes_the_patch_test_with_its_rollers(tmp_path
     assert sliding.friction_force == pytest.approx(0.3 * P * (L / 1000) ** 2, rel=1e-8)
 
 
+def test_springs_on_the_pressed_face_take_their_share_of_the_load_as_the_closed_form_says(tmp_path):
+    """Springs of total stiffness k along z on the pad's pressed face (with the pressure p): the state stays
+    uniform, the contact pressure p_c = p / (1 + k (T / E_pad + H / E_block) / A), the springs carrying
+    the rest (uniaxial stress: the sides are free). Threshold, set before the run: 1e-8."""
+    k = 1e8
+    config = write(tmp_path, extra='[[spring]]\ngroup = "z1"\nstiffness = [0.0, 0.0, 1e8]\n')
+    steady = steady_pair(load_config(config, {"contact.friction": 0.0}).problem())
+    area, compliance = (L / 1000) ** 2, (T / 1000) / 5e9 + (H / 1000) / 2.1e11
+    expected = P / (1 + k * compliance / area)
+    assert 0.3 < expected / P < 0.9
+    assert np.max(np.abs(steady.pressure / expected - 1.0)) < 1e-8
+
+
 def test_fem_steady_and_cea_take_a_config_of_solids(tmp_path, capsys):
     config = write(tmp_path, cea="count = 20")
     assert run(["fem", "steady", str(config), "--json"]) == 0
@@ -168,8 +183,9 @@ def test_a_2d_mesh_in_a_3d_config_and_a_3d_mesh_in_a_2d_config_are_named(tmp_pat
     (("dimension = 3", "dimension = 4"), ["dimension = 4 must be"]),
     (("[contact]", "[surface]\nkind = \"flat\"\n[contact]"), ["[surface] and [partner] exclude each other"]),
     (("poisson = 0.25", "poisson = 0.25\nplane = \"strain\""), ["material.plane applies to plane bodies"]),
-    (("[contact]", "[[spring]]\ngroup = \"z1\"\nstiffness = [1e6, 0.0]\n[contact]"), ["springs on solids"]),
-    (("pressure = 2e6", "pressure = 2e6\ntraction = [1e5, 0.0]"), ["load[0].traction"]),
+    (("[contact]", "[[spring]]\ngroup = \"z1\"\nstiffness = [1e6, 0.0]\n[contact]"), ["spring[0].stiffness",
+                                                                                    "three numbers"]),
+    (("pressure = 2e6", "pressure = 2e6\ntraction = [1e5, 0.0]"), ["load[0].traction", "three numbers"]),
     (('velocity = [1.0, 0.0]', 'omega = 3.0\ngyroscopic = true'), ["partner.gyroscopic = true must be false"]),
     (('x0 = "x", y0 = "y" }', 'x0 = "w", y0 = "y" }'), ["rollers.x0 = 'w' must be"]),
     (('x0 = "x", y0 = "y" }', 'x0 = "x", side = "y" }'), ["rollers.side = 'side' is not a boundary group"]),

@@ -425,6 +425,11 @@ def assemble(body: Body, material, springs=(), loads=()) -> BodySystem:
     for name, items, kind in (("springs", springs, Spring), ("loads", loads, Load)):
         if not all(isinstance(x, kind) for x in items):
             raise ParameterError(name, items, f"a sequence of {kind.__name__}")
+    for where, items, field in (("spring", springs, "stiffness"), ("load", loads, "traction")):
+        for i, x in enumerate(items):
+            if len(getattr(x, field)) != 2:
+                raise ParameterError(f"{where}[{i}].{field}", list(getattr(x, field)), "two numbers [x, y] on a "
+                                     "plane body (three are a solid's)")
     stiffest = max(m.young for m in materials.values())
     for i, x in enumerate(loads):
         size = max(abs(x.pressure), *map(abs, x.traction))

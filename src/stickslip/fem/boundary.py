@@ -37,7 +37,8 @@ LIMIT = Q["stiffness"].range.hi
 @dataclass(frozen=True)
 class Spring:
     """Springs along x and y from the nodes of boundary ``group`` to the ground, total
-    ``stiffness = (kx, ky)`` >= 0 [Pa = N/m per metre of thickness]."""
+    ``stiffness = (kx, ky)`` >= 0 [Pa = N/m per metre of thickness]; on a solid's face group
+    ``(kx, ky, kz)`` [N/m] (`stickslip.fem.solid.assemble_solid`)."""
 
     group: str
     stiffness: tuple
@@ -45,16 +46,16 @@ class Spring:
     def __post_init__(self):
         if not isinstance(self.group, str):
             raise ParameterError("spring.group", self.group, "the name of a boundary group")
-        k = Q["stiffness"].check_pair(self.stiffness, "spring.stiffness")
+        k = Q["stiffness"].check_vector(self.stiffness, "spring.stiffness")
         if max(k) == 0:
-            raise ParameterError("spring.stiffness", self.stiffness, "two numbers >= 0, not both zero")
+            raise ParameterError("spring.stiffness", self.stiffness, "numbers >= 0, not all zero")
         object.__setattr__(self, "stiffness", k)
 
 
 @dataclass(frozen=True)
 class Load:
     """A uniform ``pressure`` [Pa] (positive: into the body) and ``traction = (tx, ty)`` [Pa]
-    on boundary ``group``."""
+    on boundary ``group`` (on a solid's face group ``(tx, ty, tz)``)."""
 
     group: str
     pressure: float = 0.0
@@ -64,7 +65,7 @@ class Load:
         if not isinstance(self.group, str):
             raise ParameterError("load.group", self.group, "the name of a boundary group")
         object.__setattr__(self, "pressure", Q.check("pressure", self.pressure, "load.pressure"))
-        object.__setattr__(self, "traction", Q["traction"].check_pair(self.traction, "load.traction"))
+        object.__setattr__(self, "traction", Q["traction"].check_vector(self.traction, "load.traction"))
 
 
 #: 4-point Gauss rule on [-1, 1] for the quadratic edges

@@ -9,7 +9,7 @@ from pathlib import Path
 from ..errors import ParameterError
 from ..quantities import FEM as Q
 
-__all__ = ["problem_text", "number", "pair", "toml", "mesh_file", "group_list"]
+__all__ = ["problem_text", "number", "pair", "vector", "toml", "mesh_file", "group_list"]
 
 
 def problem_text(err: ParameterError) -> str:
@@ -37,6 +37,19 @@ def pair(problems, where, value, name=None):
         return None
     try:
         return q.check_pair(value, where)
+    except ParameterError as err:
+        problems.append(problem_text(err))
+        return None
+
+
+def vector(problems, where, value, size: int, name=None):
+    """``size`` numbers (a plane body's two, a solid's three) of the declared quantity at ``where``."""
+    q = Q[name or where.rsplit(".", 1)[-1]]
+    if value is None:
+        problems.append(f"{where} is missing ({size} numbers, each {q.allowed})")
+        return None
+    try:
+        return q.check_vector(value, where, (size,))
     except ParameterError as err:
         problems.append(problem_text(err))
         return None

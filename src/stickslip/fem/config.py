@@ -97,7 +97,7 @@ from .orthotropic import Orthotropic
 from .pair import INTERFERENCE, PairProblem, Rotation, Translation, interference_refusal, mortar, sliding
 from .boundary import LIMIT, Load, Spring
 from .checks import (group_list as _group_list, mesh_file as _mesh_file, number as _number, pair as _pair,
-                     problem_text as _problem, toml as _toml)
+                     problem_text as _problem, toml as _toml, vector as _vector)
 from .scheme import ContactProblem
 from .surfaces import MAX_SPEED, RigidCylinder, RigidFlat, contact_frames
 
@@ -169,7 +169,7 @@ class FemConfig:
             friction = {"law": self.law} if self.law is not None else {"friction": self.friction,
                                                                          "static_friction": self.static_friction}
             slave, master = ((assemble(body, self.material, self.springs, self.loads), assemble(other, p.material))
-                             if self.dimension == 2 else (assemble_solid(body, self.material, self.loads),
+                             if self.dimension == 2 else (assemble_solid(body, self.material, self.loads, self.springs),
                                                           assemble_solid(other, p.material)))
             return PairProblem(slave, self.group, master, p.group, p.motion, clamped_slave=self.clamped,
                                clamped_master=p.clamped, gyroscopic=p.gyroscopic, pressure_law=self.pressure_law,
@@ -310,13 +310,8 @@ def _checked(path: Path, data: dict) -> FemConfig:
             static = None
     law = _law(problems, c, friction, static)
     pressure_law = _pressure_law(problems, c)
-    springs = _springs(problems, data.get("spring", []))
-    loads = _loads(problems, data.get("load", []))
-    if dimension == 3:
-        problems += ["spring: springs on solids come in a later release"] if springs else []
-        problems += [f"load[{i}].traction = {list(x.traction)!r} must be [0, 0] on a solid (a traction of three "
-                     "components comes in a later release; a pressure is taken)" for i, x in enumerate(loads)
-                     if any(x.traction)]
+    springs = _springs(problems, data.get("spring", []), dimension)
+    loads = _loads(problems, data.get("load", []), dimension)
     partner = None
     if dimension == 3 and "partner" not in data:
         problems.append("[partner] is missing: a config of solids needs its elastic counter-body (a rigid "
@@ -685,22 +680,23 @@ def _tables(problems, name, value, keys):
     return [(f"{name}[{i}]", t) for i, t in enumerate(value) if isinstance(t.get("group"), str)]
 
 
-def _springs(problems, value):
+def _springs(problems, value, dimension: int = 2):
     out = []
     for where, t in _tables(problems, "spring", value, {"group", "stiffness"}):
-        k = _pair(problems, f"{where}.stiffness", t.get("stiffness"))
+        k = _vector(problems, f"{where}.stiffness", t.get("stiffness"), dimension)
         if k is not None and max(k) == 0:
-            problems.append(f"{where}.stiffness = {list(k)!r} must be two numbers in [0, {LIMIT:g}], not both zero")
+            problems.append(f"{where}.stiffness = {list(k)!r} must be {dimension} numbers in [0, {LIMIT:g}], not all "
+                            "zero")
         elif k is not None:
             out.append(Spring(t["group"], k))
     return tuple(out)
 
 
-def _loads(problems, value):
+def _loads(problems, value, dimension: int = 2):
     out = []
     for where, t in _tables(problems, "load", value, {"group", "pressure", "traction"}):
         p = _number(problems, f"{where}.pressure", t.get("pressure", 0.0))
-        q = _pair(problems, f"{where}.traction", t.get("traction", [0.0, 0.0]))
+        q = _vector(problems, f"{where}.traction", t.get("traction", [0.0] * dimension), dimension)
         if None not in (p, q):
             out.append(Load(t["group"], p, q))
     return tuple(out)

@@ -13,9 +13,13 @@
     e1 = 9e9                        # e1, e2, e3, nu12, nu13, nu23, g12, g13, g23 and density, its axes
     axis1 = [1.0, 0.0, 0.0]         # axis1, axis2 = [x, y, z] (default x and y; axis 3 their cross product)
 
-    [[load]]                        # a pressure on a face group (a traction on a solid comes later)
+    [[load]]                        # a pressure [Pa] and a traction [tx, ty, tz] [Pa] on a face group
     group = "piston"
     pressure = 1e6
+
+    [[spring]]                      # springs from a face group's nodes to the ground, total [kx, ky, kz] [N/m]
+    group = "abutment"
+    stiffness = [0.0, 1e7, 0.0]
 
     [partner]                       # the disc, as in 2-D: mesh, group, clamped, rollers, material(s); it turns
     omega = 30.0                    # at omega [rad/s] about the z axis through center = [x, y] [m], or
@@ -26,7 +30,7 @@
     augment = "modes"               # its static vectors: "modes" (default), "nodes" or "none"
 
 Not in 3-D yet, refused when written: ``[surface]`` (a rigid counter-surface: give the disc as a
-``[partner]``), ``[[spring]]``, a load's ``traction``, ``partner.gyroscopic``, ``plane``.
+``[partner]``), ``partner.gyroscopic``, ``plane``.
 """
 
 from __future__ import annotations

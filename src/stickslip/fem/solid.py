@@ -234,7 +234,7 @@ def read_solid(path, units: str | None = None) -> Solid:
 @dataclass(frozen=True, eq=False)
 class SolidSystem:
     """``K`` (CSR, N/m), the lumped ``mass`` (kg per degree of freedom), the constant ``load`` (N per
-    degree of freedom, from pressures on face groups), the ``consistent_mass`` (CSR, kg) and the Rayleigh
+    degree of freedom, from pressures and tractions on face groups), the ``consistent_mass`` (CSR, kg) and the Rayleigh
     ``damping`` (CSR, N s/m: each material's ``alpha`` times its lumped mass plus ``beta`` times its K)
     of ``solid``."""
 
@@ -426,26 +426,36 @@ def _facets(mesh, vertex: np.ndarray, faces: np.ndarray) -> np.ndarray:
     return np.array([ours[tuple(sorted(f[:corners]))] for f in faces.tolist()], dtype=np.int64)
 
 
-def assemble_solid(solid: Solid, material, loads=()) -> SolidSystem:
-    """Stiffness and lumped mass of ``solid`` with ``material`` (one, or one per cell group), and the
+def assemble_solid(solid: Solid, material, loads=(), springs=()) -> SolidSystem:
+    """Stiffness and lumped mass of ``solid`` with ``material`` (one, or one per cell group), the
     load of ``loads``: `stickslip.fem.Load` on face groups, a uniform ``pressure`` [Pa] (positive: into
-    the solid) on each (a traction comes in a later release)."""
+    the solid) and ``traction = (tx, ty, tz)`` [Pa] on each, and ``springs``: `stickslip.fem.Spring` from
+    a face group's nodes to the ground, total ``stiffness = (kx, ky, kz)`` [N/m] shared by the nodes'
+    integrals of their shape functions over the group (so a rigid motion of the group meets exactly
+    the total; a quadratic triangle's corners get none, as a uniform traction gives them no force)."""
     from skfem import Basis, BilinearForm, FacetBasis, LinearForm, asm
     from skfem.helpers import ddot, dot, eye, sym_grad, trace
 
-    from .boundary import Load
+    from .boundary import Load, Spring
 
     if not isinstance(solid, Solid):
         raise ParameterError("solid", solid, "a stickslip.fem.solid.Solid (read_solid)")
     pairs = _materials(solid, material)
     loads = list(loads) if isinstance(loads, (list, tuple)) else [loads]
-    for load in loads:
+    springs = list(springs) if isinstance(springs, (list, tuple)) else [springs]
+    for i, load in enumerate(loads):
         if not isinstance(load, Load):
-            raise ParameterError("loads", load, "stickslip.fem.Load (a pressure on a face group)")
+            raise ParameterError("loads", load, "stickslip.fem.Load (a pressure and a traction on a face group)")
         solid.nodes(load.group, "load.group")
-        if any(load.traction):
-            raise ParameterError("load.traction", load.traction, "(0, 0) on a solid: a traction of three components "
-                                 "comes in a later release (a pressure is taken)")
+        if len(load.traction) != 3 and any(load.traction):
+            raise ParameterError(f"load[{i}].traction", list(load.traction), "three numbers [tx, ty, tz] on a solid")
+    for i, spring in enumerate(springs):
+        if not isinstance(spring, Spring):
+            raise ParameterError("springs", spring, "stickslip.fem.Spring (springs on a face group)")
+        solid.nodes(spring.group, "spring.group")
+        if len(spring.stiffness) != 3:
+            raise ParameterError(f"spring[{i}].stiffness", list(spring.stiffness), "three numbers [kx, ky, kz] on a "
+                                 "solid")
     mesh, element, ours, vertex = _skfem(solid)
     n = 3 * len(solid.points)
     to_ours = sp.csr_array((np.ones(n), (ours, np.arange(n))), shape=(n, n))  # scikit-fem's dofs -> ours
@@ -480,16 +490,30 @@ def assemble_solid(solid: Solid, material, loads=()) -> SolidSystem:
         K, M = K + Kg, M + Mg
     f = np.zeros(n)
     for load in loads:
-        if load.pressure == 0.0:
+        t = np.zeros(3) if len(load.traction) != 3 else np.asarray(load.traction, float)
+        if load.pressure == 0.0 and not t.any():
             continue
         facets = FacetBasis(mesh, element, facets=_facets(mesh, vertex, solid.faces[load.group]))
 
         @LinearForm
         def pushed(v, w):
-            return -load.pressure * dot(w.n, v)  # w.n: the outward normal
+            return -load.pressure * dot(w.n, v) + t[0] * v[0] + t[1] * v[1] + t[2] * v[2]  # w.n: the outward normal
 
         f += asm(pushed, facets)
     f = to_ours @ f
+    if springs:  # each node's share: its shape function's integral over the group, over the group's area
+        diag = np.zeros(n)
+
+        @LinearForm
+        def area(v, w):
+            return v[0]
+
+        for spring in springs:
+            share = (to_ours @ asm(area, FacetBasis(mesh, element, facets=_facets(mesh, vertex,
+                                                                                     solid.faces[spring.group]))))[0::3]
+            for d in range(3):
+                diag[d::3] += spring.stiffness[d] * share / share.sum()
+        K = K + sp.diags_array(diag)
     mass, C, S = np.zeros(n), sp.csr_array((n, n)), None
     names = list(material) if isinstance(material, dict) else [""]  # each material's cell group
     group_mass, group_stiffness = {}, {}

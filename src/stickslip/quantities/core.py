@@ -184,6 +184,21 @@ class Quantity:
             raise ParameterError(name, list(value) if isinstance(value, tuple) else value,
                                  f"two numbers [x, y], each {self.allowed}") from None
 
+    def check_vector(self, value, name: str | None = None, sizes=(2, 3)) -> tuple:
+        """Two or three components (of a plane body, of a solid: ``sizes``), each allowed."""
+        name = self.name if name is None else name
+        words = " or ".join({2: "two numbers [x, y]", 3: "three numbers [x, y, z]"}[n] for n in sizes)
+        try:
+            parts = list(value)
+        except TypeError:
+            raise ParameterError(name, value, f"{words}, each {self.allowed}") from None
+        if len(parts) not in sizes:
+            raise ParameterError(name, parts, f"{words}, each {self.allowed}")
+        try:
+            return tuple(self.check(x, name) for x in parts)
+        except ParameterError:
+            raise ParameterError(name, parts, f"{words}, each {self.allowed}") from None
+
     # -- descriptions -------------------------------------------------------------------
     def help(self, note: str = "") -> str:
         """The help of a command-line option: ``Mass m [kg], in (0, 1e15].`` plus ``note``."""
