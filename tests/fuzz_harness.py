@@ -21,6 +21,7 @@ from __future__ import annotations
 import collections
 import contextlib
 import dataclasses
+import itertools
 import json
 import math
 import os
@@ -70,6 +71,7 @@ BASE = {
     "fem run": ["{config}", "--transits", "2", "--out", "{tmp}/g.nc"],
     "fem cea": ["{config}"],
     "fem steady": ["{config}"],
+    "fem mesh": ["{step}", "{tmp}/m.msh", "--size", "0.03"],
     "fem map": ["{config}", "--over", "young=1e10:2e10:2", "--friction", "0:0.01:2", "--store", "{tmp}/fm.zarr",
                 "--workers", "1"],
     "sweep": ["{sweep}", "--out", "{tmp}/s.zarr", "--workers", "1"],
@@ -113,6 +115,25 @@ def example_sweep() -> str:
 
 
 _SWEEP: list[str] = []
+
+
+def example_step() -> str:
+    """The brake example's STEP (three solids, in millimetres), written once per process."""
+    if not _STEP:
+        import atexit
+        import shutil
+        import subprocess
+
+        folder = pathlib.Path(tempfile.mkdtemp(prefix="stickslip-fuzz-step-"))
+        atexit.register(shutil.rmtree, folder, ignore_errors=True)
+        example = pathlib.Path(__file__).resolve().parents[1] / "examples" / "brake3d"
+        subprocess.run([sys.executable, "-c", f"import sys; sys.path.insert(0, {str(example)!r}); import brake; "
+                        "brake.write_step('brake.step')"], cwd=folder, check=True, capture_output=True)
+        _STEP.append(str(folder / "brake.step"))
+    return _STEP[0]
+
+
+_STEP: list = []
 
 
 def example_config() -> str:
@@ -243,8 +264,9 @@ def path_args(command: str, option: str, kind: str, tmp) -> list[str]:
 def args_for(command: str, option: str, value: str, tmp) -> list[str]:
     """The base invocation of ``command`` with ``option value`` (and ``--json``)."""
     base = [a.replace("{tmp}", str(tmp)) for a in BASE[command]]
-    positional = [example_config() if a == "{config}" else example_sweep() if a == "{sweep}" else a
-                  for a in base[:1] if not a.startswith("--")]
+    lead = list(itertools.takewhile(lambda a: not a.startswith("--"), base))
+    positional = [example_config() if a == "{config}" else example_sweep() if a == "{sweep}" else
+                  example_step() if a == "{step}" else a for a in lead]
     base = base[len(positional):]
     drop = {option}
     for group in SAME_QUANTITY:

@@ -273,6 +273,55 @@ def _reduced_sweep(config, json, out, overwrite, sweep, store, workers, plot, sc
           "reduced CEA sweep")
 
 
+@app.command("mesh")
+def mesh(step: Annotated[Path, typer.Argument(help="The STEP file (its solids; any length unit its header states).")],
+         out: Annotated[Path, typer.Argument(help="The gmsh mesh to write (.msh), in metres: a config's mesh with "
+                                                  "units = \"m\".")],
+         size: Annotated[float, declared(Q["mesh_size"], "--size")],
+         order: Annotated[int, declared(Q["element_order"], "--order")] = 1,
+         solid: Annotated[Optional[list[str]], typer.Option("--solid", help=(
+             "Mesh only this solid of the STEP (its label, or solid1, solid2, ... by its place in the file); "
+             "repeatable: the solids given are fused where they touch (a lining on its backplate)."))] = None,
+         face: Annotated[Optional[list[str]], typer.Option("--face", help=(
+             "A face group NAME=AXIS:VALUE: the boundary surfaces in the plane x, y or z = VALUE [m], or on the "
+             "cylinder r = VALUE [m] about z (a disc's bore); repeatable."))] = None,
+         overwrite: Replace = False, json: Json = False):
+    """Mesh a STEP file's solids (gmsh's OpenCASCADE kernel) into a mesh for a config of solids: each
+    solid a cell group, each --face a face group."""
+    from ..fem.cad import CYLINDER, PLANES, mesh_step
+    from ..fem.solid import read_solid
+
+    out = output_path("OUT", out, ".msh", overwrite)
+    if out is None:
+        raise ParameterError("OUT", "", "a .msh file to write")
+    faces = {}
+    for text in face or ():
+        name, _, where = text.partition("=")
+        axis, _, value = where.partition(":")
+        try:
+            number = float(value)
+        except ValueError:
+            number = None
+        if not name or axis not in PLANES + (CYLINDER,) or number is None or not math.isfinite(number):
+            raise ParameterError("--face", text, "NAME=AXIS:VALUE with AXIS x, y, z (a plane) or r (a cylinder about "
+                                 "z) and VALUE in metres, e.g. friction=z:0.012 or bore=r:0.06")
+        if name in faces:
+            raise ParameterError("--face", text, f"each group once ({name!r} is given twice)")
+        faces[name] = (axis, number)
+    status.phase("meshing")
+    partial = out.with_name(out.name + ".partial.msh")  # written whole or not at all
+    try:
+        mesh_step(step, partial, size, faces=faces, order=order, solids=list(solid) if solid else None)
+        made = read_solid(partial, "m")
+        partial.replace(out)
+    finally:
+        partial.unlink(missing_ok=True)
+    extent = made.points.max(axis=0) - made.points.min(axis=0)
+    _emit({"mesh": str(out), "nodes": len(made.points), "cells": len(made.cells), "cell_kind": made.kind,
+           "dofs": 3 * len(made.points), "face_groups": sorted(made.faces), "cell_groups": sorted(made.cell_groups),
+           "extent": [float(x) for x in extent]}, json, "mesh of a STEP file")
+
+
 @app.command("map")
 def map_(config: Config,
          over: Annotated[str, typer.Option("--over", help=(

@@ -64,6 +64,8 @@ EXAMPLES = {
     "fem steady": "stickslip fem steady examples/block_on_belt/block.toml --out steady.nc",
     "fem cea": "stickslip fem cea examples/pad_on_disc/pad.toml --sweep friction=0:0.8:41 --store sweep.zarr "
                "--plot map.png --json",
+    "fem mesh": "stickslip fem mesh brake.step pad.msh --size 0.004 --order 2 --solid lining --solid backplate "
+                "--face friction=z:0.012 --face piston=z:0.027 --json",
     "fem map": "stickslip fem map examples/pad_on_disc/pad.toml --over surface.omega=10:50:5 --friction 0:0.8:17 "
                "--store map.zarr --plot map.png --json",
     "fem run": "stickslip fem run examples/block_on_belt/block.toml --start stick --transits 2000 --window 1000 "

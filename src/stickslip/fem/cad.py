@@ -17,6 +17,7 @@ import re
 from pathlib import Path
 
 from ..errors import ParameterError
+from ..quantities import FEM as Q, MAX_MESH_NODES
 from ..validation import regular_input
 
 __all__ = ["mesh_step"]
@@ -49,10 +50,8 @@ def mesh_step(step, out, size: float, *, faces: dict | None = None, order: int =
     out = Path(out)
     if out.suffix != ".msh":
         raise ParameterError("out", str(out), "a gmsh mesh file name ending in .msh")
-    if not isinstance(size, (int, float)) or isinstance(size, bool) or not 0 < size < 1e3:
-        raise ParameterError("size", size, "the largest cell in metres, in (0, 1000)")
-    if order not in (1, 2):
-        raise ParameterError("order", order, "1 (linear tetrahedra) or 2 (quadratic)")
+    size = Q.check("mesh_size", size, "size")
+    order = Q.check("element_order", order, "order")
     faces, _select = dict(faces or {}), solids
     for name, where in faces.items():
         if not (isinstance(where, (tuple, list)) and len(where) == 2 and where[0] in PLANES + (CYLINDER,)
@@ -83,6 +82,11 @@ def mesh_step(step, out, size: float, *, faces: dict | None = None, order: int =
             _, children = gmsh.model.occ.fragment(solids[:1], solids[1:])
             gmsh.model.occ.synchronize()
             names = {t: names[tag] for (_, tag), kids in zip(solids, children) for _, t in kids}
+        volume = sum(gmsh.model.occ.getMass(3, tag) for _, tag in gmsh.model.getEntities(3))
+        least = (volume * (8 if order == 2 else 1) / MAX_MESH_NODES) ** (1 / 3)  # about a node per cell size cubed
+        if size < least:
+            raise ParameterError("size", size, f"at least {least:.3g} m for this STEP's {volume:.3g} m^3 (a finer "
+                                 f"mesh would pass the {MAX_MESH_NODES} nodes a mesh may have)")
         for _, tag in gmsh.model.getEntities(3):
             gmsh.model.addPhysicalGroup(3, [tag], name=names[tag])
         lo, hi = gmsh.model.getBoundingBox(-1, -1)[:3], gmsh.model.getBoundingBox(-1, -1)[3:]
