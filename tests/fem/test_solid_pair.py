@@ -234,3 +234,27 @@ def test_the_modes_of_a_pair_of_solids_go_to_paraview_and_to_a_universal_file_as
         _, data, _ = reader.read_data(0)
     assert points.shape == (n, 3) and cells[0].type == "tetra"
     assert np.allclose(data["mode_real"] + 1j * data["mode_imag"], first, atol=1e-12)
+
+
+@pytest.mark.slow
+def test_a_stiffening_block_tends_to_a_rigid_counter_surface_in_proportion_to_its_compliance():
+    """The pad on a block whose Young's modulus grows (1e12, 1e13 Pa) against the block held rigid (every
+    face clamped: the pad then slides on a rigid surface): each of the rigid limit's modes (friction 0.6,
+    one of them flutter) is at a distance falling as the block's compliance, 1 / E. Thresholds, set before
+    the run: the distance's ratio over the last decade in [8, 13] for every mode, and within 1e-4 of |s|
+    at 1e13 Pa."""
+    pad = solid_from_meshio(solid_mesh((2, 2, 1), "tetra", T, lift=H - 2e-7), "pad", units="m")
+    base = solid_from_meshio(solid_mesh((2, 2, 1), "tetra", H), "block", units="m")  # no node inside it
+
+    def modes(young, rigid=False):
+        held = ("x0", "x1", "y0", "y1", "z0", "z1") if rigid else ("z0",)
+        problem = PairProblem(assemble_solid(pad, LINING), "z0", assemble_solid(base, Material(young, 0.3, 7850.0)),
+                              "z1", Translation((1.0, 0.0)), friction=0.6, clamped_slave=("z1",),
+                              clamped_master=held)
+        return complex_eigenvalues(problem, (0.0, 60e3), count=20).s
+
+    rigid = modes(1e12, rigid=True)
+    assert np.any(rigid.real > 1e-3 * np.abs(rigid))  # the rigid limit flutters
+    near = [np.array([np.min(np.abs(modes(young) - s)) for s in rigid]) / np.abs(rigid) for young in (1e12, 1e13)]
+    assert np.all((8.0 < near[0] / near[1]) & (near[0] / near[1] < 13.0)), near[0] / near[1]
+    assert np.all(near[1] < 1e-4), near[1]
