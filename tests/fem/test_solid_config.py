@@ -186,7 +186,6 @@ def test_a_2d_mesh_in_a_3d_config_and_a_3d_mesh_in_a_2d_config_are_named(tmp_pat
     (("[contact]", "[[spring]]\ngroup = \"z1\"\nstiffness = [1e6, 0.0]\n[contact]"), ["spring[0].stiffness",
                                                                                     "three numbers"]),
     (("pressure = 2e6", "pressure = 2e6\ntraction = [1e5, 0.0]"), ["load[0].traction", "three numbers"]),
-    (('velocity = [1.0, 0.0]', 'omega = 3.0\ngyroscopic = true'), ["partner.gyroscopic = true must be false"]),
     (('x0 = "x", y0 = "y" }', 'x0 = "w", y0 = "y" }'), ["rollers.x0 = 'w' must be"]),
     (('x0 = "x", y0 = "y" }', 'x0 = "x", side = "y" }'), ["rollers.side = 'side' is not a boundary group"]),
     (("[cea]", "[cea]\nreduced_modes = 10\ncontact_model = \"constraint\""), ["contact_model = \"constraint\""]),

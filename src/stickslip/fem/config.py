@@ -409,10 +409,6 @@ def _partner(problems, path: Path, p: dict, dimension: int = 2, units: str | Non
         problems.append(f"partner.gyroscopic = {_toml(gyroscopic)} must be true or false, true only with "
                         "partner.omega (a turning partner)")
         gyroscopic = False
-    if gyroscopic and dimension == 3:
-        problems.append("partner.gyroscopic = true must be false for solids (a turning solid's gyroscopic and "
-                        "transport terms come in a later release)")
-        gyroscopic = False
     body = None if mesh_path is None else read_mesh(problems, mesh_path, "partner.mesh", dimension, units)
     if body is not None:
         have = ", ".join(sorted(body.groups)) or "none"

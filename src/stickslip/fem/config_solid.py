@@ -30,7 +30,8 @@
     augment = "modes"               # its static vectors: "modes" (default), "nodes" or "none"
 
 Not in 3-D yet, refused when written: ``[surface]`` (a rigid counter-surface: give the disc as a
-``[partner]``), ``partner.gyroscopic``, ``plane``.
+``[partner]``), ``plane``. ``partner.gyroscopic = true``: the turning disc's gyroscopic and transport
+terms (`stickslip.fem.turning`).
 """
 
 from __future__ import annotations

@@ -320,7 +320,8 @@ class PairProblem:
     nodes held along the coordinate axis ``"x"``, ``"y"`` or, on a solid, ``"z"``: a symmetry plane;
     ``"xy"``: along both, a face held in its plane).
     Two 2-D bodies (`BodySystem`) or two solids (`stickslip.fem.solid.SolidSystem`: a solid turns
-    about the z axis through the rotation's centre; no gyroscopic terms yet).
+    about the z axis through the rotation's centre; its gyroscopic and transport terms:
+    `stickslip.fem.turning`).
 
     As a `stickslip.fem.scheme.ContactProblem`'s: a ``static_friction >= friction`` (explicit
     runs; None: the same), or a friction ``law`` of the slip speed instead of both (each slave
@@ -377,9 +378,6 @@ class PairProblem:
         if not isinstance(self.gyroscopic, bool) or (self.gyroscopic and not isinstance(self.motion, Rotation)):
             raise ParameterError("gyroscopic", self.gyroscopic, "true or false, true only with a turning master "
                                  "(a Rotation)")
-        if self.gyroscopic and self.dimension == 3:
-            raise ParameterError("gyroscopic", self.gyroscopic, "false for solids (a turning solid's transport "
-                                 "terms come in a later release)")
         _ = self.tangent  # the coupling and the sliding direction: a pair that cannot touch is refused here
         _ = self.fixed  # the supports: a group or an axis that is not there is refused here
         self._interference()
@@ -513,7 +511,12 @@ class PairProblem:
         dofs, or None without ``gyroscopic``."""
         if not self.gyroscopic:
             return None
-        G, B = transport_operators(self.master, self.motion.omega, self.motion.center)
+        if self.dimension == 3:
+            from .turning import solid_transport_operators
+
+            G, B = solid_transport_operators(self.master, self.motion.omega, self.motion.center)
+        else:
+            G, B = transport_operators(self.master, self.motion.omega, self.motion.center)
         zero = sp.csr_matrix((self.n_slave, self.n_slave))
         return sp.block_diag([zero, G], format="csr"), sp.block_diag([zero, B], format="csr")
 

@@ -42,7 +42,8 @@ from .assembly import Material
 from .body import named_sets
 
 __all__ = ["Solid", "SolidSystem", "OrthotropicSolid", "read_solid", "solid_from_meshio", "assemble_solid",
-           "supported_dofs", "solid_modes", "solid_static", "solid_damped_modes", "VOLUME_KINDS", "UNITS"]
+           "supported_dofs", "solid_modes", "solid_static", "solid_damped_modes", "skfem_mesh", "VOLUME_KINDS",
+           "UNITS"]
 
 #: meshio volume cells read, and the faces of their boundary groups.
 VOLUME_KINDS = {"tetra": "triangle", "hexahedron": "quad", "tetra10": "triangle6"}
@@ -388,7 +389,7 @@ def _materials(solid: Solid, material) -> list[tuple[np.ndarray, Material]]:
     return pairs
 
 
-def _skfem(solid: Solid):
+def skfem_mesh(solid: Solid):
     """``(mesh, element, ours, vertex)``: the scikit-fem mesh and vector element of ``solid``'s cells, our
     degree of freedom of each of scikit-fem's (found by place: a quadratic mesh's vertices are numbered
     anew by scikit-fem) and our node of each of its vertices."""
@@ -456,7 +457,7 @@ def assemble_solid(solid: Solid, material, loads=(), springs=()) -> SolidSystem:
         if len(spring.stiffness) != 3:
             raise ParameterError(f"spring[{i}].stiffness", list(spring.stiffness), "three numbers [kx, ky, kz] on a "
                                  "solid")
-    mesh, element, ours, vertex = _skfem(solid)
+    mesh, element, ours, vertex = skfem_mesh(solid)
     n = 3 * len(solid.points)
     to_ours = sp.csr_array((np.ones(n), (ours, np.arange(n))), shape=(n, n))  # scikit-fem's dofs -> ours
     K, M = sp.csr_array((n, n)), sp.csr_array((n, n))
