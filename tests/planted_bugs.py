@@ -518,9 +518,8 @@ MUTANTS: list[dict] = [
        [T + "fem/test_solid_config.py"]),
     _m("config3-rollers-dropped", F + "config.py", "rollers_slave=self.rollers or None,", "rollers_slave=None,",
        "3-D config: the pad's rollers not passed to the pair", [T + "fem/test_solid_config.py"]),
-    _m("config3-interference-unchecked", F + "config.py", "        if overlap > INTERFERENCE * thickness:\n"
-       '            raise ParameterError("slave_group", group', "        if False:\n"
-       '            raise ParameterError("slave_group", group',
+    _m("config3-interference-unchecked", F + "config.py",
+       "        coupling.check_interference(body.points, partner.body.points, group)\n", "",
        "config: meshes of a pair overlapping by several percent of the pad not refused before assembly",
        [T + "fem/test_solid_config.py"]),
     _m("solid-fold-unchecked", F + "solid.py", "return int(np.sum((counts == 2) & (ups != 1)))",
@@ -577,6 +576,9 @@ MUTANTS: list[dict] = [
        "G, B = solid_transport_operators(self.master, self.motion.omega, self.motion.center)",
        "G, B = solid_transport_operators(self.master, 0.0, self.motion.center)",
        "pair of solids: gyroscopic=True taken without the turning disc's terms", [T + "fem/test_turning.py"]),
+    _m("pair-clamps-first-only", F + "pair.py", '            for name in getattr(self, f"clamped_{who}"):',
+       '            for name in getattr(self, f"clamped_{who}")[:1]:',
+       "pair: only the first clamped group of each body held", [T + "fem/test_solid_pair.py"]) | {"slow_hints": True},
     _m("msh22-groups-ignored", F + "body.py", "    if sets or tags is None:\n        return sets",
        "    if True:\n        return sets", "meshes: an MSH 2.2 file's physical groups not read (every group missing)",
        [T + "fem/test_solid_config.py"]),

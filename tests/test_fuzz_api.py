@@ -245,7 +245,12 @@ DOMAIN = {**{n: "oscillator" for n in ("Oscillator", "Coulomb", "Stribeck", "sim
 @pytest.mark.parametrize("name, param", CASES, ids=[f"{n} {p}" for n, p in CASES])
 def test_bad_values_give_a_parameter_error_or_a_result(name, param, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)  # a bad value such as "x" is a valid relative store path: keep it out of the tree
-    func = CALLS[name][0]
+    each_bad_value(CALLS[name][0], param, name)
+
+
+def each_bad_value(func, param: str, name: str) -> None:
+    """``func(param=value)`` for each of `BAD`: a result, or a `ParameterError` / `NoSolutionError` that
+    says something; any other exception fails, named."""
     for value in BAD:
         try:
             with warnings.catch_warnings():
@@ -253,3 +258,5 @@ def test_bad_values_give_a_parameter_error_or_a_result(name, param, tmp_path, mo
                 func(**{param: value})
         except (ParameterError, NoSolutionError) as err:
             assert str(err)
+        except Exception as err:  # noqa: BLE001 - what the fuzz is for
+            pytest.fail(f"{name}({param}={value!r}) raised {type(err).__name__}: {err}")

@@ -31,12 +31,28 @@ from .meshes import ring, two_layers
 RHO = 7800.0
 
 
-def _eig(M, C, K):
+def dense_eig(M, C, K):
+    """``(s, shapes)`` of ``M u'' + C u' + K u = 0``: the dense first-order pencil (scipy)."""
     n = M.shape[0]
     A = np.block([[np.zeros((n, n)), np.eye(n)], [-K, -C]])
     B = np.block([[np.eye(n), np.zeros((n, n))], [np.zeros((n, n)), M]])
     s, V = sla.eig(A, B)
     return s, V[:n]
+
+
+def shifted_mismatch(turning, fixed, wave_number, omega, w1, sign=1.0):
+    """For each turning-frame mode (``turning = (s, shapes)``) above the axis and below ``3 w1``: how far
+    (relative to ``|s|``) the nearest space-fixed mode (``fixed``) of the same wave number is from
+    ``s - sign i n omega``; ``inf`` where no space-fixed mode has that wave number."""
+    (s_turning, V), (s_fixed, W) = turning, fixed
+    n_fixed = np.array([wave_number(W[:, k]) for k in range(len(s_fixed))])
+    out = []
+    for k in np.flatnonzero((s_turning.imag > 0) & (np.abs(s_turning) < 3 * w1)):
+        n = wave_number(V[:, k])
+        target = s_turning[k] - sign * 1j * n * omega
+        same = n_fixed == n  # the same wave (its direction of travel too), not merely the same eigenvalue
+        out.append(np.min(np.abs(s_fixed[same] - target)) / abs(target) if same.any() else np.inf)
+    return np.array(out)
 
 
 def _mismatch(n_theta, n_r, sign=1.0):
@@ -50,8 +66,7 @@ def _mismatch(n_theta, n_r, sign=1.0):
     w1 = float(np.sqrt(sla.eigh(K, M, eigvals_only=True, subset_by_index=[0, 0])[0]))
     omega = 0.05 * w1
     G, B = (x.toarray()[sub] for x in transport_operators(system, omega))
-    s_turning, V = _eig(M, 2 * omega * J, K - omega**2 * M)
-    s_fixed, W = _eig(M, G, K - B)
+    turning, fixed = dense_eig(M, 2 * omega * J, K - omega**2 * M), dense_eig(M, G, K - B)
     rim = body.nodes("rim")
     where = {int(d): k for k, d in enumerate(free)}
     x, y = body.points[rim].T
@@ -65,14 +80,7 @@ def _mismatch(n_theta, n_r, sign=1.0):
         m = int(np.argmax(np.abs(np.fft.fft(ur)) ** 2 + np.abs(np.fft.fft(ut)) ** 2))
         return m if m <= n_theta // 2 else m - n_theta
 
-    n_fixed = np.array([wave_number(W[:, k]) for k in range(len(s_fixed))])
-    out = []
-    for k in np.flatnonzero((s_turning.imag > 0) & (np.abs(s_turning) < 3 * w1)):
-        n = wave_number(V[:, k])
-        target = s_turning[k] - sign * 1j * n * omega
-        same = n_fixed == n  # the same wave (its direction of travel too), not merely the same eigenvalue
-        out.append(np.min(np.abs(s_fixed[same] - target)) / abs(target) if same.any() else np.inf)
-    return np.array(out)
+    return shifted_mismatch(turning, fixed, wave_number, omega, w1, sign)
 
 
 @pytest.mark.slow

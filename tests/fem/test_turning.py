@@ -27,6 +27,7 @@ from stickslip.fem.solid import assemble_solid, skfem_mesh, solid_from_meshio, s
 from stickslip.fem.turning import solid_transport_operators
 
 from .test_solid import box
+from .test_transport import dense_eig, shifted_mismatch
 
 
 def _two_materials():
@@ -86,14 +87,6 @@ def annulus(n_theta, n_r, inner=0.1, outer=0.15, thick=0.004):
     return solid_from_meshio(meshio.Mesh(points, cells, cell_sets=sets), "annulus", units="m")
 
 
-def _eig(M, C, K):
-    n = M.shape[0]
-    A = np.block([[np.zeros((n, n)), np.eye(n)], [-K, -C]])
-    Bm = np.block([[np.eye(n), np.zeros((n, n))], [np.zeros((n, n)), M]])
-    s, V = sla.eig(A, Bm)
-    return s, V[:n]
-
-
 RHO = 7800.0
 
 
@@ -115,8 +108,7 @@ def _mismatch(n_theta, n_r, sign=1.0):
     w1 = float(np.sqrt(sla.eigh(K, M, eigvals_only=True, subset_by_index=[0, 0])[0]))
     omega = 0.05 * w1
     G, B = (x.toarray()[sub] for x in solid_transport_operators(system, omega))
-    s_turning, V = _eig(M, 2 * omega * J, K - omega**2 * Mxy)
-    s_fixed, W = _eig(M, G, K - B)
+    turning, fixed = dense_eig(M, 2 * omega * J, K - omega**2 * Mxy), dense_eig(M, G, K - B)
     rim = solid.nodes("rim")
     where = {int(d): k for k, d in enumerate(free)}
     x, y = solid.points[rim, 0], solid.points[rim, 1]
@@ -134,14 +126,7 @@ def _mismatch(n_theta, n_r, sign=1.0):
         m = int(np.argmax(power))
         return m if m <= n_theta // 2 else m - n_theta
 
-    n_fixed = np.array([wave_number(W[:, k]) for k in range(len(s_fixed))])
-    out = []
-    for k in np.flatnonzero((s_turning.imag > 0) & (np.abs(s_turning) < 3 * w1)):
-        n = wave_number(V[:, k])
-        target = s_turning[k] - sign * 1j * n * omega
-        same = n_fixed == n
-        out.append(np.min(np.abs(s_fixed[same] - target)) / abs(target) if same.any() else np.inf)
-    return np.array(out)
+    return shifted_mismatch(turning, fixed, wave_number, omega, w1, sign)
 
 
 @pytest.mark.slow

@@ -205,8 +205,9 @@ def xdmf_snapshots(xdmf, every, overwrite: bool = False) -> tuple:
 AXIS_HELP = "name=lo:hi:n, n values from lo to hi (append :log for logarithmic spacing)"
 
 
-def axis(option: str, text: str) -> tuple[str, list[float]]:
-    """A map axis ``name=lo:hi:n`` (linear) or ``name=lo:hi:n:log`` -> ``(name, values)``."""
+def axis(option: str, text: str, increasing: bool = False) -> tuple[str, list[float]]:
+    """A map axis ``name=lo:hi:n`` (linear) or ``name=lo:hi:n:log`` -> ``(name, values)``; with
+    ``increasing``, ``lo < hi`` (a sweep whose tracking and critical values run upwards)."""
     example = "e.g. belt_speed=0.05:1.5:40 or mismatch=1e-7:1e-4:12:log"
     try:
         name, _, spec = text.partition("=")
@@ -224,6 +225,8 @@ def axis(option: str, text: str) -> tuple[str, list[float]]:
     values = np.logspace(np.log10(lo), np.log10(hi), n) if log else np.linspace(lo, hi, n)
     if len(set(values.tolist())) < n:  # lo = hi, or closer than n doubles apart: a point computed twice
         raise ParameterError(option, text, f"name=lo:hi:n with {n} distinct values from lo to hi (lo != hi), {example}")
+    if increasing and hi < lo:
+        raise ParameterError(option, text, "LO < HI (the values increase)")
     return name.strip(), [float(v) for v in values]
 
 

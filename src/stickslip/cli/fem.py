@@ -147,11 +147,10 @@ def cea(config: Config, json: Json = False,
     problem = cfg.problem()
     shapes = xdmf is not None or uff is not None
     if cfg.reduced is not None:
-        from ..fem.reduced import modal_basis, reduced_modes
+        from ..fem.reduced import config_basis, reduced_modes
 
         status.phase("the reduction basis")
-        basis = modal_basis(problem, cfg.reduced["count"], cfg.cea_options.get("penalty"), cfg.reduced["augment"])
-        result = reduced_modes(basis, band=cfg.band, mode_shapes=shapes)
+        result = reduced_modes(config_basis(cfg, problem), band=cfg.band, mode_shapes=shapes)
     else:
         result = complex_eigenvalues(problem, cfg.band, cfg.count, mode_shapes=shapes,
                                      complete_below=cfg.complete_below, **cfg.cea_options)
@@ -201,7 +200,7 @@ def _cea_sweep(config, json, out, xdmf, overwrite, sweep, store, workers, plot, 
     out = output_path("--out", out, ".nc", overwrite)
     plot = output_path("--plot", plot, FIGURE_SUFFIXES, overwrite)
     store = output_folder("--store", store, ".zarr")
-    name, values = axis("--sweep", sweep)
+    name, values = axis("--sweep", sweep, increasing=True)
     key = resolve_key(read_toml(config), name, "--sweep")
     try:  # every value a valid config, checked before any work
         for value in values:
@@ -209,20 +208,23 @@ def _cea_sweep(config, json, out, xdmf, overwrite, sweep, store, workers, plot, 
     except ParameterError as err:
         raise ParameterError("--sweep", sweep, f"values of {key} each valid in the config: at {value:g}, "
                              f"{err.allowed}") from None
-    if any(b <= a for a, b in zip(values, values[1:])):
-        raise ParameterError("--sweep", sweep, "LO < HI (the values increase)")
     with progress_bar("CEA sweep") as tick:
         tracked = cea_sweep(config, key, values, store, workers=workers, progress=tick, overwrite=overwrite,
                             scheduler=scheduler or "processes")
-    ds = tracked.to_xarray()
+    _keep(tracked.to_xarray(), out, plot, "plot_stability_map")
+    _emit({"swept_key": key, "sweep_points": len(values), "branches": len(tracked.s), "critical": _critical(tracked),
+           "store": str(store)}, json, "CEA sweep")
+
+
+def _keep(ds, out, plot, draw: str) -> None:
+    """Write a sweep's or a map's dataset to ``out`` (.nc) and its picture by `stickslip.plotting`'s
+    ``draw`` to ``plot``, each if asked (before anything is printed: what is printed was kept)."""
     if out is not None:
         write_netcdf(ds, out)
     if plot is not None:
         from .. import plotting
 
-        plotting.save(plotting.plot_stability_map(ds), plot)
-    _emit({"swept_key": key, "sweep_points": len(values), "branches": len(tracked.s), "critical": _critical(tracked),
-           "store": str(store)}, json, "CEA sweep")
+        plotting.save(getattr(plotting, draw)(ds), plot)
 
 
 def _critical(tracked) -> list:
@@ -239,35 +241,27 @@ def _reduced_sweep(config, json, out, overwrite, sweep, store, workers, plot, sc
     """`fem cea --sweep friction=...` with [cea] reduced_modes: one basis, the reduced CEA at every value
     (`stickslip.fem.reduced.reduced_sweep`)."""
     from ..fem.config import load_config, read_toml, resolve_key
-    from ..fem.reduced import modal_basis, reduced_sweep
+    from ..fem.reduced import config_basis, reduced_sweep
     from .common import axis
 
     for option, value in (("--store", store), ("--workers", workers), ("--scheduler", scheduler)):
         if value is not None:
             raise ParameterError(option, str(value), "left out with cea.reduced_modes (a reduced friction sweep is one "
                                  "basis, then seconds in one process: nothing to resume or share out)")
-    name, values = axis("--sweep", sweep)
+    name, values = axis("--sweep", sweep, increasing=True)
     key = resolve_key(read_toml(config), name, "--sweep")
     if key != "contact.friction":
         raise ParameterError("--sweep", sweep, "a sweep of contact.friction with cea.reduced_modes (the basis is of one "
                              "structure: sweep another key with the full CEA, reduced_modes left out)")
-    if any(b <= a for a, b in zip(values, values[1:])):
-        raise ParameterError("--sweep", sweep, "LO < HI (the values increase)")
     overwrite_needs(overwrite, "--out or --plot", out, plot)
     out = output_path("--out", out, ".nc", overwrite)
     plot = output_path("--plot", plot, FIGURE_SUFFIXES, overwrite)
     cfg = load_config(config)
     status.phase("the reduction basis")
-    basis = modal_basis(cfg.problem(), cfg.reduced["count"], cfg.cea_options.get("penalty"), cfg.reduced["augment"])
+    basis = config_basis(cfg, cfg.problem())
     status.phase("the reduced sweep")
     tracked = reduced_sweep(basis, values, band=cfg.band)
-    ds = tracked.to_xarray()
-    if out is not None:
-        write_netcdf(ds, out)
-    if plot is not None:
-        from .. import plotting
-
-        plotting.save(plotting.plot_stability_map(ds), plot)
+    _keep(tracked.to_xarray(), out, plot, "plot_stability_map")
     _emit({"swept_key": key, "sweep_points": len(values), "branches": len(tracked.s), "critical": _critical(tracked),
            "reduced_modes": basis.modes, "static_vectors": basis.augmented, "basis_top_hz": basis.top}, json,
           "reduced CEA sweep")
@@ -353,15 +347,12 @@ def map_(config: Config,
     out = output_path("--out", out, ".nc", overwrite)
     plot = output_path("--plot", plot, FIGURE_SUFFIXES, overwrite)
     store = output_folder("--store", store, ".zarr")
-    name, values = axis("--over", over)
-    _, frictions = axis("--friction", f"friction={friction}")
+    name, values = axis("--over", over, increasing=True)
+    _, frictions = axis("--friction", f"friction={friction}", increasing=True)
     key = resolve_key(read_toml(config), name, "--over")
     if key == "contact.friction":
         raise ParameterError("--over", over, "a number of the config other than contact.friction (--friction gives "
                              "the friction axis)")
-    for option, text, seq in (("--over", over, values), ("--friction", friction, frictions)):
-        if any(b <= a for a, b in zip(seq, seq[1:])):
-            raise ParameterError(option, text, "LO < HI (the values increase)")
     try:  # every corner a valid config, checked before any work
         for v in (values[0], values[-1]):
             for f in (frictions[0], frictions[-1]):
@@ -372,12 +363,7 @@ def map_(config: Config,
     with progress_bar("stability map") as tick:
         ds = stability_map(config, key, values, frictions, store, workers=workers, progress=tick, overwrite=overwrite,
                            scheduler=scheduler or "processes")
-    if out is not None:
-        write_netcdf(ds, out)
-    if plot is not None:
-        from .. import plotting
-
-        plotting.save(plotting.plot_friction_map(ds), plot)
+    _keep(ds, out, plot, "plot_friction_map")
     onsets = [{"value": float(v), "onset": float(o), "onset_frequency": float(f)}
               for v, o, f in zip(ds["value"].values, ds["onset"].values, ds["onset_frequency"].values)
               if math.isfinite(o)]

@@ -94,7 +94,7 @@ from .body import read_body
 from .config_solid import dimension_of, read_mesh, reduced_of, rollers_of, solid_materials, units_of
 from .solid import assemble_solid, read_solid
 from .orthotropic import Orthotropic
-from .pair import INTERFERENCE, PairProblem, Rotation, Translation, interference_refusal, mortar, sliding
+from .pair import PairProblem, Rotation, Translation, mortar, sliding
 from .boundary import LIMIT, Load, Spring
 from .checks import (group_list as _group_list, mesh_file as _mesh_file, number as _number, pair as _pair,
                      problem_text as _problem, toml as _toml, vector as _vector)
@@ -431,9 +431,7 @@ def _facing(problems, body, group: str, partner: Partner, friction) -> None:
     try:
         coupling = mortar(body, group, partner.body, partner.group)
         sliding(coupling, partner.motion, body.points, required=bool(friction))
-        overlap, thickness = coupling.overlap(body.points, partner.body.points)
-        if overlap > INTERFERENCE * thickness:
-            raise ParameterError("slave_group", group, interference_refusal(overlap, thickness))
+        coupling.check_interference(body.points, partner.body.points, group)
     except ParameterError as err:
         where = {"slave_group": "contact.group", "master_group": "partner.group", "motion": "partner motion"}
         problems.append(f"{where.get(err.name, err.name)} = {_toml(err.value) if err.name != 'motion' else ''} must "

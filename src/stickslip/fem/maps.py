@@ -52,11 +52,9 @@ def _row(config: str, key: str, frictions: tuple, tol: float, value: float) -> d
 
     cfg = load_config(config, {key: value})
     if cfg.reduced is not None:
-        from .reduced import modal_basis, reduced_sweep
+        from .reduced import config_basis, reduced_sweep
 
-        basis = modal_basis(cfg.problem(), cfg.reduced["count"], cfg.cea_options.get("penalty"),
-                            cfg.reduced["augment"])
-        tracked = reduced_sweep(basis, frictions, band=cfg.band, tol=tol)
+        tracked = reduced_sweep(config_basis(cfg, cfg.problem()), frictions, band=cfg.band, tol=tol)
         columns, critical, turn, at = ([tracked.s[:, p] for p in range(len(frictions))], tracked.critical,
                                        tracked.turn, tracked.critical_frequency)
     else:

@@ -83,8 +83,8 @@ xr = lazy.load("xarray")  # imported on first use: commands that make no dataset
 
 log = logging.getLogger("stickslip.fem")
 
-__all__ = ["INTERFERENCE", "Mortar", "PairProblem", "PairSteady", "Rotation", "Translation", "interference_refusal",
-           "mortar", "sliding", "steady_pair", "facets", "FACETS"]
+__all__ = ["Mortar", "PairProblem", "PairSteady", "Rotation", "Translation", "mortar", "sliding", "steady_pair",
+           "facets", "FACETS"]
 
 GAUSS = (0.5 - 0.5 / math.sqrt(3.0), 0.5 + 0.5 / math.sqrt(3.0))
 #: Steady sliding warns where the master's facets deviate from its curve by more than this
@@ -164,24 +164,28 @@ class Mortar:
         weight): the others cannot touch."""
         return np.asarray(self.M.sum(axis=1)).ravel() > 0.5 * self.weight
 
-    def overlap(self, slave_points: np.ndarray, master_points: np.ndarray) -> tuple[float, float]:
-        """``(overlap, thickness)`` [m]: how far the meshes at these points overlap along the contact
-        normal (the deepest slave node that can touch) and the slave's thickness along the mean normal."""
+    def gap(self, slave_points: np.ndarray, master_points: np.ndarray) -> np.ndarray:
+        """The weighted normal gap of each slave node with the meshes at these points [m^2 on solids, m
+        on plane bodies]: ``n_j . (sum_k D_jk x_k - sum_l M_jl x_l)``."""
+        return sum(self.normal[:, k] * (self.D @ slave_points[:, k] - self.M @ master_points[:, k])
+                   for k in range(slave_points.shape[1]))
+
+    def check_interference(self, slave_points: np.ndarray, master_points: np.ndarray, slave_group: str,
+                           also=()) -> None:
+        """Refuse meshes (at these points) that overlap along the contact normal, at the deepest slave node
+        that can touch, by more than `INTERFERENCE` times the slave's thickness along the mean normal (a
+        strain of that size is not a preload: 2 mm into an 8 mm lining ran at 1.5 GPa)."""
         can = self.can_touch
         if not can.any():
-            return 0.0, 1.0
-        gap = sum(self.normal[:, k] * (self.D @ slave_points[:, k] - self.M @ master_points[:, k])
-                  for k in range(slave_points.shape[1]))
+            return
+        overlap = float(max(0.0, -np.min(self.gap(slave_points, master_points)[can] / self.weight[can])))
         mean = self.normal.mean(axis=0)
         thickness = float(np.ptp(slave_points @ (mean / np.linalg.norm(mean))))
-        return float(max(0.0, -np.min(gap[can] / self.weight[can]))), thickness
-
-
-def interference_refusal(overlap: float, thickness: float) -> str:
-    """What a contact whose meshes overlap by more than `INTERFERENCE` x the slave's thickness must be."""
-    return (f"a contact whose meshes overlap by at most {INTERFERENCE:g} x the slave's thickness along the normal "
-            f"({thickness:.4g} m): they overlap by {overlap:.4g} m, a strain of {overlap / thickness:.3g} (check the "
-            "meshes' positions and units; press the bodies together with a load)")
+        if overlap > INTERFERENCE * thickness:
+            raise ParameterError("slave_group", slave_group, f"a contact whose meshes overlap by at most "
+                                 f"{INTERFERENCE:g} x the slave's thickness along the normal ({thickness:.4g} m): they "
+                                 f"overlap by {overlap:.4g} m, a strain of {overlap / thickness:.3g} (check the meshes' "
+                                 "positions and units; press the bodies together with a load)", also=also)
 
 
 def _inward(points, edges):
@@ -392,12 +396,9 @@ class PairProblem:
             object.__setattr__(self, "static_friction", float(self.friction))
 
     def _interference(self) -> None:
-        """An overlap of the meshes beyond `INTERFERENCE` times the slave's thickness along the contact
-        normal is refused (a strain of that size is not a preload: 2 mm into an 8 mm lining ran at 1.5 GPa)."""
-        overlap, thickness = self.coupling.overlap(self.slave.body.points, self.master.body.points)
-        if overlap > INTERFERENCE * thickness:
-            raise ParameterError("slave_group", self.slave_group, interference_refusal(overlap, thickness),
-                                 also=("master_group",))
+        """Meshes overlapping by a strain are refused (`Mortar.check_interference`)."""
+        self.coupling.check_interference(self.slave.body.points, self.master.body.points, self.slave_group,
+                                         also=("master_group",))
 
     @property
     def can_touch(self) -> np.ndarray:
@@ -501,9 +502,8 @@ class PairProblem:
 
     @cached_property
     def gap(self) -> np.ndarray:
-        """The weighted normal gap of each slave node in the reference configuration [m^2]."""
-        x = np.concatenate([self.slave.body.points.ravel(), self.master.body.points.ravel()])
-        return self.G @ x
+        """The weighted normal gap of each slave node in the reference configuration (`Mortar.gap`)."""
+        return self.coupling.gap(self.slave.body.points, self.master.body.points)
 
     @cached_property
     def transport(self):

@@ -40,7 +40,7 @@ from .critical import search
 from .pair import PairProblem
 from .tracking import Tracked, track
 
-__all__ = ["ModalBasis", "modal_basis", "reduced_modes", "reduced_sweep", "MAX_BASIS"]
+__all__ = ["ModalBasis", "modal_basis", "config_basis", "reduced_modes", "reduced_sweep", "MAX_BASIS"]
 
 #: The most real modes of a basis (dense problems of twice this size).
 MAX_BASIS = 2000
@@ -162,6 +162,14 @@ def modal_basis(problem: PairProblem, count: int, penalty: float | None = None, 
     return ModalBasis(np.sqrt(np.clip(ritz, 0.0, None)) / (2 * math.pi), psi, np.diag(ritz), psi.T @ (F @ psi),
                       Cr, float(problem.friction), free, float(penalty), problem.to_attrs(), count, top,
                       psi.shape[1] - count, Sr)
+
+
+def config_basis(config, problem: PairProblem) -> ModalBasis:
+    """The basis of ``problem`` as its config (`stickslip.fem.config.FemConfig`) asks in ``[cea]``:
+    ``reduced_modes`` real modes, ``augment``, ``penalty``."""
+    if getattr(config, "reduced", None) is None:
+        raise ParameterError("cea.reduced_modes", None, "given in the config for a reduced CEA")
+    return modal_basis(problem, config.reduced["count"], config.cea_options.get("penalty"), config.reduced["augment"])
 
 
 def _eigen(basis: ModalBasis, friction: float):
