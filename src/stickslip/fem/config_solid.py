@@ -71,7 +71,7 @@ def units_of(problems, data: dict, dimension: int) -> str | None:
             problems.append(f"units = {toml(data['units'])} applies with dimension = 3 (a 2-D mesh is read in metres)")
         return None
     value = data.get("units")
-    if value not in UNITS:
+    if not isinstance(value, str) or value not in UNITS:  # (a list or a table: no key of UNITS, and unhashable)
         problems.append(f"units = {toml(value)} must be the length unit of the meshes' coordinates, "
                         f"{' or '.join(map(repr, UNITS))} (a CAD model is often in mm; no default)"
                         if value is not None else "units is missing (the length unit of the meshes' coordinates, "
