@@ -21,7 +21,7 @@ REMOTE = re.compile(r"<script\b[^>]*\bsrc=\"(?:https?:)?//[^\"]*\"|<link\b[^>]*\
 
 #: The pages whose code runs at the build (myst-nb): each shows its cells' output and a picture.
 EXECUTED = ("tutorial-oscillator", "tutorial-brake", "tutorial-fem", "tutorial-halfspace", "tutorial-your-body",
-            "systems", "rsf", "sweeps-on-a-cluster")
+            "systems", "rsf", "sweeps-on-a-cluster", "brakes-3d")
 #: An output a cell printed or showed (myst-nb), and a picture.
 CELL_OUTPUT = re.compile(r'<div class="cell_output\b')
 IMAGE = re.compile(r"<img\b[^>]*\bsrc=")

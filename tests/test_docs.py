@@ -18,7 +18,7 @@ def _blocks(name):
 
 #: The pages whose examples run when the docs are built (myst-nb), as docs/check_html.py names them.
 EXECUTED_PAGES = ("tutorial-oscillator", "tutorial-brake", "tutorial-fem", "tutorial-halfspace", "tutorial-your-body",
-                  "systems", "rsf", "sweeps-on-a-cluster")
+                  "systems", "rsf", "sweeps-on-a-cluster", "brakes-3d")
 #: A comment saying what a line gives instead of a cell printing it.
 RESULT_COMMENT = re.compile(r"#\s*(?:gives|returns|->|=>)")
 
