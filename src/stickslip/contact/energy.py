@@ -46,6 +46,7 @@ class Trace:
     lam_t: np.ndarray
     state: np.ndarray
     contact: bool
+    lam_b: np.ndarray | None = None  # across the sliding direction, between solids (its output's lam_b)
 
     @property
     def steps(self) -> int:
@@ -65,11 +66,14 @@ def trace(scheme: ExplicitScheme, state: StepState, nsteps: int, contact: bool =
     u, a = np.empty((nsteps + 1, n)), np.empty((nsteps, n))
     lam_n, lam_t, codes = np.empty((nsteps, nc)), np.empty((nsteps, nc)), np.empty((nsteps, nc), np.int8)
     out = scheme.new_output()
+    lam_b = np.empty((nsteps, nc)) if getattr(out, "lam_b", None) is not None else None
     u[0], a_start = k.u, k.a.copy()
     for m in range(nsteps):
         scheme.advance(k, 1, contact, out)
         u[m + 1], a[m], lam_n[m], lam_t[m], codes[m] = k.u, k.a, out.lam_n, out.lam_t, out.state
-    return Trace(scheme, u, a, a_start, lam_n, lam_t, codes, bool(contact))
+        if lam_b is not None:
+            lam_b[m] = out.lam_b
+    return Trace(scheme, u, a, a_start, lam_n, lam_t, codes, bool(contact), lam_b)
 
 
 @dataclass(frozen=True, eq=False)
@@ -110,6 +114,7 @@ def energy_books(tr: Trace) -> EnergyBooks:
     du = 0.5 * (tr.u[2:] - tr.u[:-2])                                       # m = 1 .. M-1
     a_prev = np.vstack([tr.a_start[None], tr.a[:-1]])
     numerical = (beta2 - 0.5) * np.einsum("mi,i,mi->m", (tr.a - a_prev)[1:], mass, du)
-    surface, friction, normal = s.contact_work(tr.lam_n[1:], tr.lam_t[1:], du)
+    across = {} if tr.lam_b is None else {"lam_b": tr.lam_b[1:]}  # the friction across the sliding, between solids
+    surface, friction, normal = s.contact_work(tr.lam_n[1:], tr.lam_t[1:], du, **across)
     return EnergyBooks(energy=kinetic + strain, kinetic=kinetic, strain=strain, surface_work=surface,
                        friction_dissipation=friction, normal_work=normal, numerical=numerical)

@@ -94,6 +94,10 @@ class RunFormat:
     position_note: str = ""  # what ``theta`` is, if not the angle of the node
     mode_note: str = "circumferential Fourier mode"
     extra_coords: Callable = staticmethod(lambda scheme: {})  # name -> (values, attrs) along the nodes
+    #: Snapshot fields a model adds to the plane ones (name -> (kind of unit, long name)), taken from
+    #: ``scheme.snapshot_fields(out, u)`` at each snapshot; with volume snapshots, ``vol_<name>`` of those of
+    #: kind ``traction`` too (the solids' ``W`` and ``Q_cross``).
+    extra_fields: Callable = staticmethod(lambda scheme: {})
     #: The SI values of the symbols of the model's scaled units (``R`` [m], ``Omega`` [rad/s],
     #: ``E`` [Pa], ``M`` [1]) when the run was set up in SI, else {}: the run's file then holds its
     #: results in SI (`results_view`).
@@ -101,8 +105,18 @@ class RunFormat:
 
     @property
     def fields(self) -> dict:
-        """``name -> (units, long_name)`` of every snapshot field."""
+        """``name -> (units, long_name)`` of every snapshot field (of a plane model; `fields_of` a scheme's)."""
         return {k: (self.units[kind], self.notes.get(k, note)) for k, (kind, note) in _SNAPSHOT.items()}
+
+    def fields_of(self, scheme) -> dict:
+        """`fields` and the ``extra_fields`` of ``scheme``."""
+        extra = {k: (self.units[kind], note) for k, (kind, note) in self.extra_fields(scheme).items()}
+        return {**self.fields, **extra}
+
+    def volume_extra(self, scheme) -> dict:
+        """``vol_<name> -> (units, long_name)`` of the extra fields kept with volume snapshots."""
+        return {f"vol_{k}": (self.units[kind], f"{note} at the volume snapshot")
+                for k, (kind, note) in self.extra_fields(scheme).items() if kind == "traction"}
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -202,7 +216,7 @@ def run_to_dataset(run) -> xr.Dataset:
         for part, arr in (("re", z.real), ("im", z.imag)):
             data[f"modes_{name}_{part}"] = ((T, "mode"), arr, {"units": fmt.units["length"],
                                                                "long_name": f"{part} of rfft({name})/N"})
-    for name, (units, long) in fmt.fields.items():
+    for name, (units, long) in fmt.fields_of(s).items():
         data[name] = ((S, X), col(snp, name, (0, N)), {"units": units, "long_name": long})
     for name in _KERNEL:
         data[f"kernel_{name}"] = ("dof", run.kernel[name], {"units": fmt.units["length"],
@@ -223,6 +237,8 @@ def run_to_dataset(run) -> xr.Dataset:
             dim, size = ("dof", run.kernel["u"].size) if where == "dof" else (X, N)
             data[name] = ((W, dim), col(snp, name, (0, size)), {"units": fmt.units[kind],
                                                                 "long_name": fmt.notes.get(name, long)})
+        for name, (units, long) in fmt.volume_extra(s).items():
+            data[name] = ((W, X), col(snp, name, (0, N)), {"units": units, "long_name": long})
         data["vol_state"] = ((W, X), col(snp, "vol_state", (0, N), np.int8),
                              {"long_name": f"{fmt.node_label} state at the volume snapshot", **STATE_ATTRS})
         coords[W] = (W, col(snp, "vol_t", 0), {"units": fmt.time_units,
@@ -260,10 +276,10 @@ def dataset_to_run(cls, ds: xr.Dataset, scheme=None):
     for name in ("U", "V"):
         series[f"modes_{name}"] = ds[f"modes_{name}_re"].values + 1j * ds[f"modes_{name}_im"].values
     snapshots = {"snap_t": ds["snap_t"].values, "state": ds["state"].values.astype(np.int8)}
-    snapshots.update({name: ds[name].values for name in fmt.fields})
+    snapshots.update({name: ds[name].values for name in fmt.fields_of(scheme)})
     kernel = {name: ds[f"kernel_{name}"].values.copy() for name in _KERNEL}
     if "vol_t" in ds.variables and ds.sizes["vol_t"]:  # none yet: left out, the books start them
-        snapshots.update({name: ds[name].values for name in ("vol_t", *_VOLUME)})
+        snapshots.update({name: ds[name].values for name in ("vol_t", *_VOLUME, *fmt.volume_extra(scheme))})
         snapshots["vol_state"] = ds["vol_state"].values.astype(np.int8)
     return cls(scheme, settings, series, snapshots, kernel, int(a["samples_done"]))
 
@@ -622,7 +638,8 @@ def volume_at_start(scheme, u0, v0, st: dict, run_format) -> dict:
     _, r_n, r_t = scheme.steady_reference() if st["contact"] else (None, 0.0, 0.0)
     scale = run_format.traction_scale(scheme)
     return {"vol_t": [0.0], "vol_u": [u0.copy()], "vol_v": [v0.copy()], "vol_P": [scale * touching * r_n],
-            "vol_Q": [scale * touching * r_t], "vol_state": [np.where(touching, SLIP_POS, SEPARATION).astype(np.int8)]}
+            "vol_Q": [scale * touching * r_t], "vol_state": [np.where(touching, SLIP_POS, SEPARATION).astype(np.int8)],
+            **{name: [np.zeros(scheme.nodes)] for name in run_format.volume_extra(scheme)}}  # none across in steady sliding
 
 
 def run_explicit(cls, scheme, u0, v0, settings: dict, t_end: float, *, checkpoint=None, every=None, progress=None,
@@ -658,6 +675,7 @@ def _run_explicit(cls, scheme, u0, v0, settings, t_end, checkpoint, every, progr
     normal, tangent = scheme.contact_dofs
     scale = run.FORMAT.traction_scale(scheme)
     st = run.settings
+    extra = bool(run.FORMAT.extra_fields(scheme))
 
     def step(k):
         scheme.advance(StepState(k["u"], k["v"], k["a"]), st["chunk"], st["contact"], out)
@@ -675,11 +693,16 @@ def _run_explicit(cls, scheme, u0, v0, settings, t_end, checkpoint, every, progr
             fields = {"snap_t": m * scheme.dt, "U": U, "V": V, "Ud": (u1[normal] - U) / scheme.dt,
                       "Vd": (u1[tangent] - V) / scheme.dt, "P": scale * out.lam_n, "Q": scale * out.lam_t,
                       "gap": scheme.gaps(u1), "state": out.state.copy()}
+            if extra:
+                fields.update(scheme.snapshot_fields(out, u0_))
             for key, v in fields.items():
                 snaps.setdefault(key, []).append(v)
         if volume_due(done, st):
             fields = {"vol_t": m * scheme.dt, "vol_u": u0_.copy(), "vol_v": k["v"].copy(), "vol_P": scale * out.lam_n,
                       "vol_Q": scale * out.lam_t, "vol_state": out.state.copy()}
+            if extra:
+                across = scheme.snapshot_fields(out, u0_)
+                fields.update({name: across[name[4:]] for name in run.FORMAT.volume_extra(scheme)})
             for key, v in fields.items():
                 snaps.setdefault(key, []).append(v)
 

@@ -15,6 +15,8 @@
 * `pair`: two deformable bodies in frictional contact (a pad on a disc turning at Omega):
   dual mortar coupling of non-matching meshes, steady sliding and the CEA (`PairProblem`);
 * `pair_run`: explicit runs of a pair, the partner Eulerian (`PairScheme`, `integrate_pair`);
+* `pair_run3`: explicit runs of two solids, a Coulomb disc per contact node (`SolidPairScheme`, `SolidPairRun`;
+  `integrate_pair` takes them);
 * `cea`: complex eigenvalue analysis of steady sliding over a frequency band, shift-invert
   Arnoldi (`complex_eigenvalues`), of a body on a rigid surface or of a pair;
 * `run`: explicit dynamics with the shared run books, checkpoints and classification
@@ -25,7 +27,7 @@
 * `solid`: a 3-D elastic body (linear tetrahedra or hexahedra, a material per cell group, its
   length unit stated), its stiffness and lumped mass, clamps and rollers on face groups and its
   modes (`read_solid`, `assemble_solid`, `supported_dofs`, `solid_modes`, `solid_static`; orthotropic
-  linings, `OrthotropicSolid`); explicit runs of solids come next;
+  linings, `OrthotropicSolid`);
 * `cad`: a STEP file's solids meshed in metres by gmsh's OpenCASCADE kernel (`mesh_step`);
 * `mortar3`: the mortar coupling of two solids' faces (`PairProblem` takes two solids: steady sliding
   and the full CEA as for 2-D bodies);
@@ -41,6 +43,7 @@ from .boundary import Load, Spring
 from .cea import CeaModes, complex_eigenvalues
 from .pair import PairProblem, PairSteady, Rotation, Translation, steady_pair
 from .pair_run import PairRun, PairScheme, integrate_pair
+from .pair_run3 import SolidPairRun, SolidPairScheme
 from .run import BodyInitial, BodyRun, classify_body, integrate_body, perturbed_steady_body, preload_body
 from .scheme import BodyScheme, ContactProblem
 from .solid import (OrthotropicSolid, Solid, SolidSystem, assemble_solid, read_solid, solid_damped_modes,
@@ -58,4 +61,5 @@ __all__ = ["Body", "read_body", "body_from_meshio", "CELL_KINDS", "Material", "B
            "PairProblem", "PairSteady", "Rotation", "Translation", "steady_pair", "PairScheme", "PairRun",
            "integrate_pair", "ModalBasis", "modal_basis", "reduced_modes", "reduced_sweep", "energy_shares",
            "write_modes_uff", "Solid", "SolidSystem", "read_solid", "solid_from_meshio", "assemble_solid",
-           "supported_dofs", "solid_modes", "solid_static", "OrthotropicSolid", "solid_damped_modes"]
+           "supported_dofs", "solid_modes", "solid_static", "OrthotropicSolid", "solid_damped_modes", "SolidPairScheme",
+           "SolidPairRun"]

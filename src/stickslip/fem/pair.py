@@ -331,7 +331,14 @@ class PairProblem:
     runs; None: the same), or a friction ``law`` of the slip speed instead of both (each slave
     node's kinetic coefficient at the master's sliding speed there, ``law.slope`` in the CEA's
     damping on the relative tangential velocity), and a ``pressure_law`` (each node's
-    coefficients times ``(P / P_ref)^(-n)`` at its multiplier ``P``)."""
+    coefficients times ``(P / P_ref)^(-n)`` at its multiplier ``P``).
+
+    ``transverse_damping`` (solids only; default false, as commercial CEAs leave it out): in the CEA,
+    the friction force turns with a slip velocity across the sliding direction, ``-mu lambda v_b / V``
+    along ``b = n x t`` at each active slave node: a damping ``B^T diag(mu g lambda / (w V)) B`` of
+    the relative velocity across (``B`` the weighted rows along ``b``). An explicit run's Coulomb
+    disc has it always; it damps every motion of the pad across the sliding (a pad on springs
+    across decays at ``mu N / (2 m V)``)."""
 
     slave: BodySystem
     slave_group: str
@@ -347,6 +354,7 @@ class PairProblem:
     pressure_law: PressurePower | None = None
     rollers_slave: dict | None = None
     rollers_master: dict | None = None
+    transverse_damping: bool = False
 
     def __post_init__(self):
         for name in ("slave", "master"):
@@ -379,6 +387,9 @@ class PairProblem:
             raise ParameterError("pressure_law", self.pressure_law, "a stickslip.friction.PressurePower or None")
         if not isinstance(self.motion, (Rotation, Translation)):
             raise ParameterError("motion", self.motion, "a Rotation or a Translation of the master")
+        if not isinstance(self.transverse_damping, bool) or (self.transverse_damping and self.dimension != 3):
+            raise ParameterError("transverse_damping", self.transverse_damping, "true or false, true only between "
+                                 "solids (plane bodies slide along their one tangent)")
         if not isinstance(self.gyroscopic, bool) or (self.gyroscopic and not isinstance(self.motion, Rotation)):
             raise ParameterError("gyroscopic", self.gyroscopic, "true or false, true only with a turning master "
                                  "(a Rotation)")
@@ -638,6 +649,11 @@ class PairProblem:
             T = self.T[A][:, free]
             slip = T.T @ sp.diags(st.pressure[A] * g * self.slopes[A] / self.coupling.weight[A]) @ T
             C = slip if C is None else (C + slip).tocsr()
+        if self.transverse_damping:  # the force turns with a slip across: -mu g lambda (B u')_j / (w_j V_j) along b
+            across = self._rows(np.cross(self.coupling.normal, self.tangent[0]))[A][:, free]
+            weights = self.kinetic[A] * g * st.pressure[A] / (self.coupling.weight[A] * self.tangent[1][A])
+            turn = (across.T @ sp.diags(weights) @ across).tocsr()
+            C = turn if C is None else (C + turn).tocsr()
         if C is not None and multipliers:
             C = sp.block_diag([C, sp.csr_matrix((multipliers, multipliers))], format="csr")
         if mass_matrix == "consistent":
@@ -676,6 +692,7 @@ class PairProblem:
                 **{name: ", ".join(f"{g}: {a}" for g, a in getattr(self, name).items())
                    for name in ("rollers_slave", "rollers_master") if getattr(self, name)},
                 "gyroscopic": int(self.gyroscopic), "problem_sha256": self.digest,
+                **({"transverse_damping": 1} if self.transverse_damping else {}),
                 "static_friction": self.static_friction,
                 **({} if self.law is None else {"friction_law": repr(self.law)}),
                 **({} if self.pressure_law is None else {"pressure_exponent": self.pressure_law.exponent,

@@ -48,7 +48,7 @@ from .run import BodyRun, perturbed_steady_body
 from .scheme import FemScheme, kernel_friction
 from .surfaces import order_along
 
-__all__ = ["PairScheme", "PairRun", "integrate_pair", "MAX_SWEEPS"]
+__all__ = ["PairScheme", "PairRun", "integrate_pair", "MAX_SWEEPS", "SOLVERS"]
 
 #: Gauss-Seidel sweeps over the contact nodes per step, at most (`stickslip.contact.coupled`).
 MAX_SWEEPS = 1000
@@ -67,8 +67,8 @@ class PairScheme(FemScheme):
 
     def __post_init__(self):
         if isinstance(self.params, PairProblem) and self.params.dimension == 3:
-            raise ParameterError("params", "a pair of solids", "a pair of plane bodies (explicit runs of solids "
-                                 "come in a later release; steady sliding and the CEA take solids)")
+            raise ParameterError("params", "a pair of solids", "a pair of plane bodies (a pair of solids: "
+                                 "stickslip.fem.pair_run3.SolidPairScheme)")
         self.validate_common()
         self.check_time_step()
         _ = self.kinetic_law  # a law the kernel is not compiled for is refused here, before anything runs
@@ -331,6 +331,11 @@ class PairRun(RunRecord):
     MODEL: ClassVar[str] = "fem"
 
 
+#: The scheme and the record of a pair's run by its dimension (3: `stickslip.fem.pair_run3`, which
+#: adds itself when `stickslip.fem` is imported).
+SOLVERS: dict = {2: (PairScheme, PairRun)}
+
+
 def integrate_pair(problem: PairProblem, t_end: float | None = None, *, transits: float | None = None,
                    amplitude: float = 1e-3, seed: int = 0, beta2: float = 0.9, courant: float = 0.9,
                    time_step: float | None = None, samples_per_transit: int = 32, snapshot_every: float = 1.0,
@@ -340,14 +345,16 @@ def integrate_pair(problem: PairProblem, t_end: float | None = None, *, transits
     """Run ``problem`` from steady sliding, its slave's contact nodes perturbed tangentially by
     white noise of RMS ``amplitude`` times the largest steady displacement there (``seed``), up
     to ``t_end`` [s] or ``transits`` of a P-wave along the slave's contact line; the other
-    options as `stickslip.fem.integrate_body`'s."""
+    options as `stickslip.fem.integrate_body`'s. A pair of solids runs `stickslip.fem.pair_run3.SolidPairScheme`
+    and returns a `stickslip.fem.pair_run3.SolidPairRun`."""
     if not isinstance(problem, PairProblem):
         raise ParameterError("problem", problem, "a PairProblem")
-    scheme = PairScheme(problem, beta2, courant, time_step)
+    scheme_type, cls = SOLVERS[problem.dimension]
+    scheme = scheme_type(problem, beta2, courant, time_step)
     initial = perturbed_steady_body(scheme, amplitude, seed)
     t_end, settings = prepare(scheme, t_end=t_end, transits=transits, samples_per_transit=samples_per_transit,
                               snapshot_every=snapshot_every, tail=tail, modes=modes, contact=contact,
                               initial=initial, progress=progress, volume_every=volume_every)
-    return run_explicit(PairRun, scheme, initial.u, initial.v, settings, t_end, checkpoint=checkpoint, every=every,
+    return run_explicit(cls, scheme, initial.u, initial.v, settings, t_end, checkpoint=checkpoint, every=every,
                         progress=progress, overwrite=overwrite)
 

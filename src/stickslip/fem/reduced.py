@@ -122,6 +122,9 @@ def modal_basis(problem: PairProblem, count: int, penalty: float | None = None, 
     if problem.law is not None or problem.pressure_law is not None:
         raise ParameterError("problem", "a pair with a friction or pressure law", "a pair with Coulomb friction "
                              "(the reduced CEA of laws comes in a later release; the full CEA takes them)")
+    if problem.transverse_damping:
+        raise ParameterError("transverse_damping", True, "false in a reduced CEA (its damping scales with the "
+                             "swept friction; the full CEA takes it)")
     if augment not in ("modes", "nodes", "none"):
         raise ParameterError("augment", augment, "'modes' (static vectors of each mode's contact forces), 'nodes' "
                              "(of unit forces at each contact node) or 'none'")
