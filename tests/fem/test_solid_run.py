@@ -194,3 +194,89 @@ def test_contact_nodes_held_along_some_axes_only_are_refused(pressed):
         SolidPairScheme(dataclasses.replace(pressed, rollers_slave={"x0": "x"}))
     with pytest.raises(ParameterError, match="rollers_master"):
         SolidPairScheme(dataclasses.replace(pressed, rollers_master={"z1": "z"}))
+
+
+RUN_CONFIG = """dimension = 3
+units = "mm"
+mesh = "pad.msh"
+[material]
+young = 1e8
+poisson = 0.25
+density = 25.0
+[contact]
+group = "z0"
+friction = 0.5
+[[load]]
+group = "z1"
+pressure = 1e4
+[[spring]]
+group = "z1"
+stiffness = [1e5, 1e5, 0.0]
+[partner]
+mesh = "block.msh"
+group = "z1"
+velocity = [1.0, 0.0]
+clamped = ["z0"]
+{partner}
+[partner.material]
+young = 1e8
+poisson = 0.25
+density = 25.0
+"""
+
+
+def _run_config(folder, partner=""):
+    from .test_solid_config import to_msh
+
+    pad = box((20.0, 20.0, 8.0), (4, 4, 2), "hexahedron")
+    pad.points[:, 2] += 10.0
+    block = box((28.0, 28.0, 10.0), (5, 5, 2), "hexahedron")
+    block.points[:, :2] -= 4.0
+    to_msh(pad, folder / "pad.msh")
+    to_msh(block, folder / "block.msh")
+    path = folder / "brake.toml"
+    path.write_text(RUN_CONFIG.format(partner=partner))
+    return path
+
+
+def test_fem_run_takes_a_config_of_solids(tmp_path, capsys):
+    import json
+
+    import meshio
+    import xarray as xr
+
+    from stickslip.cli import run
+
+    config = _run_config(tmp_path)
+    out, xdmf = tmp_path / "run.nc", tmp_path / "run.xdmf"
+    assert run(["fem", "run", str(config), "--transits", "2", "--out", str(out), "--xdmf", str(xdmf),
+                "--xdmf-every", "1", "--json"]) == 0
+    regime = json.loads(capsys.readouterr().out)
+    assert "regime" in regime
+    with xr.open_dataset(out) as ds:
+        assert ds.attrs["record"] == "SolidPairRun" and ds["P"].attrs["units"] == "N"
+        assert np.isfinite(ds["Q_cross"].values).all() and (ds["P"].values > 0).any()
+        # the load's 4 N carried by the contact at the start (the springs hold nothing along z)
+        assert ds["vol_P"].values[0].sum() == pytest.approx(1e4 * 4e-4, rel=1e-8)
+    with meshio.xdmf.TimeSeriesReader(xdmf) as reader:
+        points, _ = reader.read_points_cells()
+        _, point_data, _ = reader.read_data(reader.num_steps - 1)
+    assert points.shape == (75 + 108, 3) and point_data["displacement"].shape == (183, 3)
+    assert "contact_shear_cross" in point_data
+
+
+def test_fem_run_refuses_a_partner_held_across_its_contact_face_in_one_line(tmp_path, capsys):
+    from stickslip.cli import run
+
+    config = _run_config(tmp_path, partner='rollers = { z1 = "z" }')
+    assert run(["fem", "run", str(config), "--transits", "1", "--out", str(tmp_path / "r.nc")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "invalid partner.rollers = " in err, err
+    assert not (tmp_path / "r.nc").exists()
+
+
+def test_the_configs_transverse_damping_reaches_the_cea(tmp_path):
+    from stickslip.fem.config import load_config
+
+    assert load_config(_run_config(tmp_path, partner="transverse_damping = true")).problem().transverse_damping
+    assert not load_config(_run_config(tmp_path)).problem().transverse_damping

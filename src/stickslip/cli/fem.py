@@ -414,9 +414,6 @@ def run(config: Config,
                              f"sampling of a run, {DENSEST} a transit)")
     status.phase("reading the config and the mesh")
     cfg = _problem(config, set_)
-    if cfg.dimension == 3:
-        raise ParameterError("config", str(config), "a config of plane bodies for fem run (explicit runs of solids "
-                             "come in a later release; fem steady and fem cea take solids)")
     if cfg.partner is not None:
         return _run_pair(cfg, transits, beta2, time_step, start, amplitude, out, xdmf, volume_every, window, overwrite,
                          json)
@@ -445,14 +442,20 @@ def run(config: Config,
 def _run_pair(cfg, transits, beta2, time_step, start, amplitude, out, xdmf, volume_every, window, overwrite, json):
     """`run` of a pad on a [partner]: from perturbed steady sliding only."""
     from ..fem.paraview import write_run_xdmf
-    from ..fem.pair_run import PairScheme, integrate_pair
+    from ..fem.pair_run import SOLVERS, integrate_pair
 
     if start is not Start.steady:
         raise ParameterError("--start", start.value, "steady with a [partner] (a run of two bodies starts from their "
                              "steady sliding)")
     status.phase("assembling")
     problem = cfg.problem()
-    PairScheme(problem, beta2, time_step=time_step)  # the step and the damping refused before anything runs
+    try:  # the step, the damping and the supports refused before the run, by the config's names
+        SOLVERS[problem.dimension][0](problem, beta2, time_step=time_step)
+    except ParameterError as err:
+        keys = {"rollers_slave": "rollers", "rollers_master": "partner.rollers"}
+        if err.name not in keys:
+            raise
+        raise ParameterError(keys[err.name], err.value, err.allowed) from None
     status.phase("integrating (steady sliding of both bodies first)")
     with progress_bar("transits") as tick:
         result = integrate_pair(problem, transits=transits, amplitude=amplitude, beta2=beta2, time_step=time_step,

@@ -60,6 +60,7 @@
     # omega = 30.0                  # it turns at omega [rad/s] about center = [x, y] [m] (a disc),
     # center = [0.0, 0.0]           # or translates at velocity = [vx, vy] [m/s] (a slider)
     # gyroscopic = false            # true: a turning partner's gyroscopic and transport terms (Eulerian)
+    # transverse_damping = false    # solids: true puts the friction turning with a slip across in the CEA
     # [partner.material]            # its material(s): as [material] (or [[partner.material]] per cell group)
     # young = 1.25e11
 
@@ -105,7 +106,8 @@ __all__ = ["FemConfig", "Partner", "load_config", "numeric_keys", "read_toml", "
 
 _KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "partner", "cea", "spring", "load", "dimension",
                "units", "rollers"},
-          "partner": {"mesh", "group", "clamped", "omega", "center", "velocity", "material", "gyroscopic", "rollers"},
+          "partner": {"mesh", "group", "clamped", "omega", "center", "velocity", "material", "gyroscopic", "rollers",
+                      "transverse_damping"},
           "contact": {"group", "friction", "static_friction", "law", "stribeck_speed", "weakening", "pressure_exponent",
                       "reference_pressure"},
           "surface": {"kind", "radius", "omega", "center", "body_inside", "point", "normal", "velocity",
@@ -129,6 +131,7 @@ class Partner:
     body: object = field(default=None, repr=False, compare=False)
     gyroscopic: bool = False
     rollers: dict = field(default_factory=dict)  # {face or boundary group: axes}
+    transverse_damping: bool = False  # solids: the CEA's damping of the friction turning with a slip across
 
 
 @dataclass(frozen=True)
@@ -173,6 +176,7 @@ class FemConfig:
                                                           assemble_solid(other, p.material)))
             return PairProblem(slave, self.group, master, p.group, p.motion, clamped_slave=self.clamped,
                                clamped_master=p.clamped, gyroscopic=p.gyroscopic, pressure_law=self.pressure_law,
+                               transverse_damping=p.transverse_damping,
                                rollers_slave=self.rollers or None, rollers_master=p.rollers or None, **friction)
         for name in (*self.clamped, self.group):
             body.group(name, "clamped" if name in self.clamped else "contact.group")
@@ -409,6 +413,11 @@ def _partner(problems, path: Path, p: dict, dimension: int = 2, units: str | Non
         problems.append(f"partner.gyroscopic = {_toml(gyroscopic)} must be true or false, true only with "
                         "partner.omega (a turning partner)")
         gyroscopic = False
+    transverse = p.get("transverse_damping", False)
+    if not isinstance(transverse, bool) or (transverse and dimension != 3):
+        problems.append(f"partner.transverse_damping = {_toml(transverse)} must be true or false, true only in a "
+                        "config of solids (dimension = 3)")
+        transverse = False
     body = None if mesh_path is None else read_mesh(problems, mesh_path, "partner.mesh", dimension, units)
     if body is not None:
         have = ", ".join(sorted(body.groups)) or "none"
@@ -422,7 +431,7 @@ def _partner(problems, path: Path, p: dict, dimension: int = 2, units: str | Non
             or any(m is None for m in materials.values()):
         return None
     return Partner(mesh_path, group, tuple(clamped), motion, materials[""] if list(materials) == [""] else materials,
-                   body, gyroscopic, rollers)
+                   body, gyroscopic, rollers, transverse)
 
 
 def _facing(problems, body, group: str, partner: Partner, friction) -> None:

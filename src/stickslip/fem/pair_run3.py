@@ -13,9 +13,10 @@ dissipation, the run books (`integrate_pair` dispatches here for a pair of solid
 **The contact surface as a line.** The run books of `stickslip.contact.runs` keep the contact
 nodes along a line; here the nodes are ordered by their position along the master's motion
 (the angle about the turning axis times the mean radius for a `Rotation`, the distance along
-the velocity for a `Translation`) and ``theta = 2 pi s / L`` with ``L`` the span of that
-position: nodes across the width share their ``theta``. The transit time is ``L`` over the
-slave's P-wave speed. The Fourier modes of the books are a description, not waves.
+the velocity for a `Translation`, stored as the coordinate ``arclength``) and ``theta = 2 pi k / N``
+by rank (nodes across the width share a position). The transit time is the span ``L`` of the
+positions over the slave's P-wave speed. The Fourier modes of the books and the classification's
+zones and waves along ``theta`` are a description of the ranked nodes, not waves on the face.
 
 Snapshots add ``W`` (the contact node's displacement along ``b``) and ``Q_cross`` (the friction
 force along ``b`` [N]) to the plane fields (``Q`` along ``t``); ``P, Q`` are forces [N] per node.
@@ -252,6 +253,14 @@ class SolidPairScheme(PairScheme):
         s = self._position[self._rows]
         return s - s.min()
 
+    @cached_property
+    def theta(self) -> np.ndarray:
+        """``2 pi k / N`` for the ``k``-th of the ``N`` contact nodes along the motion (their positions are
+        in `arclength`; nodes across the width would share a position, and the classification steps by
+        the spacing of ``theta``)."""
+        count = len(self._rows)
+        return 2.0 * np.pi * np.arange(count) / count
+
     @property
     def line_length(self) -> float:
         return float(self.arclength[-1]) or float(np.ptp(self.params.slave.body.points[self.contact_nodes], axis=0).max())
@@ -279,8 +288,8 @@ _FORMAT = dataclasses.replace(
     source="two solids in contact (3-D mortar), explicit beta2 scheme [22] with multipliers [23] between the bodies, "
            "a Coulomb disc per node (stickslip.fem.pair_run3)",
     scheme=SolidPairScheme, title="run of two solids in frictional contact",
-    position_note="position of the slave contact node along the master's motion as an angle, 2 pi s / L (s from the "
-                  "first node, L the span, attribute line_length; nodes across the width share it)",
+    position_note="rank k of the slave contact node along the master's motion as an angle, 2 pi k / N (its position "
+                  "is the coordinate arclength; the span is the attribute line_length)",
     extra_fields=lambda s: ACROSS,
     extra_coords=lambda s: {"arclength": (s.arclength, {"units": "m", "long_name": "position of the slave contact "
                                                                                  "node along the master's motion"})})

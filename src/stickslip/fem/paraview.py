@@ -6,7 +6,8 @@ Both write the body's mesh (points at ``z = 0``, in m) with `stickslip.files.wri
 * `write_run_xdmf(run, path)`: the volume snapshots of `integrate_body(..., volume_every=T)`
   (or of `stickslip.fem.pair_run.integrate_pair`: both bodies in one mesh, the slave's points
   first, with the point data ``body``, 0 the slave and 1 the master, and ``material`` counting
-  the slave's materials first);
+  the slave's materials first; of two solids, Cartesian x, y, z, ``contact_shear_cross`` across the sliding
+  direction too, and no cell data);
   per snapshot (time [s]) the point data ``displacement`` [m] (total, from the unstressed
   body), ``velocity`` [m/s], and on the contact nodes ``contact_pressure`` and
   ``contact_shear`` [N per unit thickness per node] and ``contact_state`` (0 stick, 1 slip,
@@ -104,13 +105,16 @@ def _both(problem):
 
 
 def _pair_run(run: PairRun, path) -> Path:
-    """The volume snapshots of a run of a pair of bodies (`write_run_xdmf`)."""
+    """The volume snapshots of a run of a pair of bodies (`write_run_xdmf`); of solids without the cell
+    data (displacements, velocities and the contact's fields; ``contact_shear_cross`` across the sliding)."""
     scheme, snaps = run.scheme, run.snapshots
     p = scheme.params
     points, cells, which = _both(p)
-    n, ns = len(points), 2 * len(p.slave.body.points)
+    dim = p.dimension
+    n, ns = len(points), dim * len(p.slave.body.points)
     nodes = scheme.contact_nodes
-    materials = [p.slave.cell_material.astype(np.int32), (p.master.cell_material + len(p.slave.materials)).astype(np.int32)]
+    materials = None if dim == 3 else [p.slave.cell_material.astype(np.int32),
+                                       (p.master.cell_material + len(p.slave.materials)).astype(np.int32)]
 
     def on_line(values, fill=0.0, dtype=float):
         out = np.full(n, fill, dtype=dtype)
@@ -119,9 +123,13 @@ def _pair_run(run: PairRun, path) -> Path:
 
     def step(k):
         u = scheme.cartesian(snaps["vol_u"][k])
-        point_data = {"displacement": _vectors(u), "velocity": _vectors(scheme.cartesian(snaps["vol_v"][k])),
+        point_data = {"displacement": _vectors(u, dim), "velocity": _vectors(scheme.cartesian(snaps["vol_v"][k]), dim),
                       "contact_pressure": on_line(snaps["vol_P"][k]), "contact_shear": on_line(snaps["vol_Q"][k]),
                       "contact_state": on_line(snaps["vol_state"][k], -1, np.int32), "body": which}
+        if "vol_Q_cross" in snaps:
+            point_data["contact_shear_cross"] = on_line(snaps["vol_Q_cross"][k])
+        if dim == 3:
+            return float(snaps["vol_t"][k]), point_data, {}
         cell_data = {name: [] for name in ("stress_xx", "stress_yy", "stress_xy", "von_mises")}
         for system, part in ((p.slave, u[:ns]), (p.master, u[ns:])):
             sigma = cell_stress(system, part)
