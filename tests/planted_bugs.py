@@ -607,6 +607,10 @@ MUTANTS: list[dict] = [
        [T + "fem/test_solid_run.py"]),
     _m("solid-run-frame-b", F + "pair_run3.py", "return n, t, np.cross(n, t)", "return n, t, np.cross(t, t)",
        "3-D run: the frame's third vector lost (b = t x t = 0)", [T + "fem/test_solid_run.py"]),
+    _m("pair-run-supports-unchecked", F + "pair_run.py", "        self.validate_common()\n        check_supports(self.params)\n",
+       "        self.validate_common()\n",
+       "2-D pair run: a roller through the contact line taken (the node's contact dropped, or its force written "
+       "into another dof)", [T + "fem/test_pair_run.py"]),
 ]
 
 UNCAUGHT: list[dict] = []  # every planted bug of the list is caught (issue 44 moved the last four)

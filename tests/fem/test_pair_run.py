@@ -224,3 +224,17 @@ def test_a_checkpoint_of_another_pair_is_refused(bodies, tmp_path):
     assert isinstance(first, PairRun) and first.complete
     with pytest.raises(ParameterError):
         integrate_pair(_pair(bodies, friction=0.4), transits=0.5, checkpoint=path)
+
+
+@pytest.mark.parametrize("rollers", [{"rollers_slave": {"left": "x"}}, {"rollers_slave": {"left": "y"}},
+                                     {"rollers_master": {"top": "y"}}])
+def test_contact_nodes_held_along_one_axis_only_are_refused(bodies, rollers):
+    """A roller through the contact line holds a contact node along one axis: until now the scheme
+    dropped the node's contact (x held) or wrote its force into another dof (y held)."""
+    from stickslip.errors import ParameterError
+
+    _, system, under = bodies
+    problem = PairProblem(system, "bottom", assemble(under, Material(1e8, 0.25, 25.0)), "top", Translation((1.0, 0.0)),
+                          friction=0.5, clamped_slave=("top",), clamped_master=("bottom",), **rollers)
+    with pytest.raises(ParameterError, match="along some axes only"):
+        PairScheme(problem)

@@ -48,10 +48,26 @@ from .run import BodyRun, perturbed_steady_body
 from .scheme import FemScheme, kernel_friction
 from .surfaces import order_along
 
-__all__ = ["PairScheme", "PairRun", "integrate_pair", "MAX_SWEEPS", "SOLVERS"]
+__all__ = ["PairScheme", "PairRun", "integrate_pair", "MAX_SWEEPS", "SOLVERS", "check_supports"]
 
 #: Gauss-Seidel sweeps over the contact nodes per step, at most (`stickslip.contact.coupled`).
 MAX_SWEEPS = 1000
+
+
+def check_supports(problem: PairProblem) -> None:
+    """Refuse a contact node (the slave's, or a master's node facing it) held along some axes but not
+    all (rollers through a contact face): the explicit scheme writes each slave contact node in its
+    own frame and solves the forces node by node on nodes free or clamped."""
+    c, dim = problem.coupling, problem.dimension
+    facing = np.unique(c.M.tocoo().col)
+    for who, nodes, offset in (("slave", c.slave_nodes, 0), ("master", facing, problem.n_slave)):
+        held = problem.fixed[offset + dim * np.asarray(nodes)[:, None] + np.arange(dim)]
+        partly = held.any(axis=1) & ~held.all(axis=1)
+        if partly.any():
+            group = problem.slave_group if who == "slave" else problem.master_group
+            raise ParameterError(f"rollers_{who}", getattr(problem, f"rollers_{who}"), f"rollers that hold no node of "
+                                 f"the contact group {group!r} along some axes only in an explicit run (node "
+                                 f"{int(np.asarray(nodes)[partly][0])} is: each contact node is free or clamped)")
 
 
 @dataclass(frozen=True, eq=False)
@@ -70,6 +86,7 @@ class PairScheme(FemScheme):
             raise ParameterError("params", "a pair of solids", "a pair of plane bodies (a pair of solids: "
                                  "stickslip.fem.pair_run3.SolidPairScheme)")
         self.validate_common()
+        check_supports(self.params)
         self.check_time_step()
         _ = self.kinetic_law  # a law the kernel is not compiled for is refused here, before anything runs
 

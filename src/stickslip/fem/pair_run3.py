@@ -39,7 +39,7 @@ from ..contact.scheme import StepOutput, StepState
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import COMMON
 from .pair import Rotation
-from .pair_run import MAX_SWEEPS, SOLVERS, PairRun, PairScheme
+from .pair_run import MAX_SWEEPS, SOLVERS, PairRun, PairScheme, check_supports
 
 __all__ = ["SolidPairScheme", "SolidStepOutput", "SolidPairRun"]
 
@@ -78,6 +78,7 @@ class SolidPairScheme(PairScheme):
         if not hasattr(self.params, "dimension") or self.params.dimension != 3:
             raise ParameterError("params", self.params, "a PairProblem of two solids (plane bodies: PairScheme)")
         self.validate_common()
+        check_supports(self.params)
         self.check_time_step()
         _ = self.kinetic_law
         _ = self._rows
@@ -104,19 +105,6 @@ class SolidPairScheme(PairScheme):
         p = self.params
         c = p.coupling
         held = p.fixed[3 * c.slave_nodes[:, None] + np.arange(3)]
-        partly = held.any(axis=1) & ~held.all(axis=1)
-        if partly.any():
-            node = int(c.slave_nodes[np.flatnonzero(partly)[0]])
-            raise ParameterError("rollers_slave", p.rollers_slave, f"rollers that hold no node of the contact face "
-                                 f"{p.slave_group!r} along some axes only (node {node} is: an explicit run writes each "
-                                 "contact node in its own frame n, t, b; clamp the node or leave it free)")
-        facing = np.unique(c.M.tocoo().col)
-        held_m = p.fixed[p.n_slave + 3 * facing[:, None] + np.arange(3)]
-        partly = held_m.any(axis=1) & ~held_m.all(axis=1)
-        if partly.any():
-            raise ParameterError("rollers_master", p.rollers_master, f"rollers that hold no node of the contact face "
-                                 f"{p.master_group!r} along some axes only (node {int(facing[partly][0])} is: the "
-                                 "contact forces of an explicit run are solved node by node for nodes free or clamped)")
         reach = np.asarray(c.M.sum(axis=1)).ravel()
         rows = np.flatnonzero(~held.all(axis=1) & (reach > 0.5 * c.weight))
         if len(rows) < 2:
