@@ -611,6 +611,11 @@ MUTANTS: list[dict] = [
        "        self.validate_common()\n",
        "2-D pair run: a roller through the contact line taken (the node's contact dropped, or its force written "
        "into another dof)", [T + "fem/test_pair_run.py"]),
+    _m("solid-stress-strain-factor", F + "solid_stress.py", "* (0.5 if i == j else 1.0)", "* (0.5 if i == j else 0.5)",
+       "solid stresses: tensor shear strains taken for engineering ones (the shear stresses halved)",
+       [T + "fem/test_solid_run.py"]),
+    _m("solid-stress-lame", F + "solid_stress.py", "    D[[3, 4, 5], [3, 4, 5]] = mu\n", "    D[[3, 4, 5], [3, 4, 5]] = 2 * mu\n",
+       "solid stresses: an isotropic shear modulus doubled", [T + "fem/test_solid_run.py"]),
 ]
 
 UNCAUGHT: list[dict] = []  # every planted bug of the list is caught (issue 44 moved the last four)

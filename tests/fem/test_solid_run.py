@@ -260,9 +260,11 @@ def test_fem_run_takes_a_config_of_solids(tmp_path, capsys):
         assert ds["vol_P"].values[0].sum() == pytest.approx(1e4 * 4e-4, rel=1e-8)
     with meshio.xdmf.TimeSeriesReader(xdmf) as reader:
         points, _ = reader.read_points_cells()
-        _, point_data, _ = reader.read_data(reader.num_steps - 1)
+        _, point_data, cell_data = reader.read_data(reader.num_steps - 1)
     assert points.shape == (75 + 108, 3) and point_data["displacement"].shape == (183, 3)
     assert "contact_shear_cross" in point_data
+    von_mises = np.concatenate(cell_data["von_mises"])
+    assert von_mises.shape == (32 + 50,) and np.isfinite(von_mises).all() and von_mises.max() > 0
 
 
 def test_fem_run_refuses_a_partner_held_across_its_contact_face_in_one_line(tmp_path, capsys):
@@ -280,3 +282,39 @@ def test_the_configs_transverse_damping_reaches_the_cea(tmp_path):
 
     assert load_config(_run_config(tmp_path, partner="transverse_damping = true")).problem().transverse_damping
     assert not load_config(_run_config(tmp_path)).problem().transverse_damping
+
+
+def test_the_cell_stresses_of_solids_are_exact_on_the_patch_test_and_on_a_shear():
+    """A lining pressed on a block on rollers: sigma_zz = -p in every cell of both, the others 0 (exact,
+    1e-8 of p); a displacement u_x = a z: sigma_xz = G a (isotropic mu, orthotropic g13) and nothing else."""
+    from stickslip.fem import OrthotropicSolid
+    from stickslip.fem.pair import steady_pair
+    from stickslip.fem.solid_stress import solid_stress, solid_von_mises
+
+    from .test_solid_pair import H as H_BLOCK, T as T_LINING, solid_mesh
+
+    p = 2e6
+    pad = solid_from_meshio(solid_mesh((5, 3, 2), "tetra", T_LINING, lift=H_BLOCK), "lining", units="m")
+    block = solid_from_meshio(solid_mesh((3, 4, 3), "hexahedron", H_BLOCK), "block", units="m")
+    lining, steel = Material(5e9, 0.25, 2500.0), Material(2.1e11, 0.3, 7850.0)
+    problem = PairProblem(assemble_solid(pad, lining, loads=[Load("z1", pressure=p)]), "z0",
+                          assemble_solid(block, steel), "z1", Translation((1.0, 0.0)),
+                          rollers_slave={"x0": "x", "y0": "y"}, rollers_master={"x0": "x", "y0": "y", "z0": "z"})
+    u = steady_pair(problem).u
+    ns = problem.slave.n_dofs
+    for system, part in ((problem.slave, u[:ns]), (problem.master, u[ns:])):
+        sigma = solid_stress(system, part)
+        expected = np.zeros(6)
+        expected[2] = -p
+        assert np.abs(sigma - expected).max() <= 1e-8 * p
+        assert np.allclose(solid_von_mises(sigma), p, rtol=1e-8)
+    ortho = OrthotropicSolid(e1=6e9, e2=6e9, e3=2.5e9, nu12=0.25, nu13=0.1, nu23=0.1, g12=2.4e9, g13=1.2e9,
+                             g23=1.1e9, density=2500.0)
+    for material, shear in ((lining, lining.young / 2.5), (ortho, 1.2e9)):
+        system = assemble_solid(pad, material)
+        a = 1e-4
+        u = np.zeros(system.n_dofs)
+        u[0::3] = a * pad.points[:, 2]
+        sigma = solid_stress(system, u)
+        assert np.allclose(sigma[:, 4], shear * a, rtol=1e-10)
+        assert np.abs(np.delete(sigma, 4, axis=1)).max() <= 1e-10 * shear * a

@@ -7,7 +7,8 @@ Both write the body's mesh (points at ``z = 0``, in m) with `stickslip.files.wri
   (or of `stickslip.fem.pair_run.integrate_pair`: both bodies in one mesh, the slave's points
   first, with the point data ``body``, 0 the slave and 1 the master, and ``material`` counting
   the slave's materials first; of two solids, Cartesian x, y, z, ``contact_shear_cross`` across the sliding
-  direction too, and no cell data);
+  direction too, and the cells' ``stress_xx`` ... ``stress_xy`` in Voigt order, ``von_mises`` and ``material``:
+  `stickslip.fem.solid_stress`);
   per snapshot (time [s]) the point data ``displacement`` [m] (total, from the unstressed
   body), ``velocity`` [m/s], and on the contact nodes ``contact_pressure`` and
   ``contact_shear`` [N per unit thickness per node] and ``contact_state`` (0 stick, 1 slip,
@@ -105,16 +106,21 @@ def _both(problem):
 
 
 def _pair_run(run: PairRun, path) -> Path:
-    """The volume snapshots of a run of a pair of bodies (`write_run_xdmf`); of solids without the cell
-    data (displacements, velocities and the contact's fields; ``contact_shear_cross`` across the sliding)."""
+    """The volume snapshots of a run of a pair of bodies (`write_run_xdmf`; of solids, their cells' six
+    stresses, and ``contact_shear_cross`` across the sliding)."""
     scheme, snaps = run.scheme, run.snapshots
     p = scheme.params
     points, cells, which = _both(p)
     dim = p.dimension
     n, ns = len(points), dim * len(p.slave.body.points)
     nodes = scheme.contact_nodes
-    materials = None if dim == 3 else [p.slave.cell_material.astype(np.int32),
-                                       (p.master.cell_material + len(p.slave.materials)).astype(np.int32)]
+    if dim == 3:
+        from .solid_stress import solid_cell_material, solid_stress, solid_von_mises
+
+        materials = [solid_cell_material(p.slave), solid_cell_material(p.master) + len(p.slave.materials)]
+    else:
+        materials = [p.slave.cell_material.astype(np.int32),
+                     (p.master.cell_material + len(p.slave.materials)).astype(np.int32)]
 
     def on_line(values, fill=0.0, dtype=float):
         out = np.full(n, fill, dtype=dtype)
@@ -128,8 +134,16 @@ def _pair_run(run: PairRun, path) -> Path:
                       "contact_state": on_line(snaps["vol_state"][k], -1, np.int32), "body": which}
         if "vol_Q_cross" in snaps:
             point_data["contact_shear_cross"] = on_line(snaps["vol_Q_cross"][k])
-        if dim == 3:
-            return float(snaps["vol_t"][k]), point_data, {}
+        if dim == 3:  # the six stresses and von Mises of each cell (its mean, `stickslip.fem.solid_stress`)
+            names = ("stress_xx", "stress_yy", "stress_zz", "stress_yz", "stress_xz", "stress_xy")
+            cell_data = {name: [] for name in (*names, "von_mises")}
+            for system, part in ((p.slave, u[:ns]), (p.master, u[ns:])):
+                sigma = solid_stress(system, part)
+                for name, values in zip(names, sigma.T):
+                    cell_data[name].append(values)
+                cell_data["von_mises"].append(solid_von_mises(sigma))
+            cell_data["material"] = materials
+            return float(snaps["vol_t"][k]), point_data, cell_data
         cell_data = {name: [] for name in ("stress_xx", "stress_yy", "stress_xy", "von_mises")}
         for system, part in ((p.slave, u[:ns]), (p.master, u[ns:])):
             sigma = cell_stress(system, part)
