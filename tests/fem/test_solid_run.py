@@ -318,3 +318,20 @@ def test_the_cell_stresses_of_solids_are_exact_on_the_patch_test_and_on_a_shear(
         sigma = solid_stress(system, u)
         assert np.allclose(sigma[:, 4], shear * a, rtol=1e-10)
         assert np.abs(np.delete(sigma, 4, axis=1)).max() <= 1e-10 * shear * a
+
+
+@pytest.mark.parametrize("friction", [0.0, 0.5])
+def test_steady_sliding_of_a_pad_free_to_slide_away_is_refused(friction):
+    """A pad pressed by a load, nothing holding it along x and y (its rigid motion in the plane is free,
+    friction or not: a sliding force does not hold): no steady state, said, not a number 1e16 wrong."""
+    from stickslip.errors import NoSolutionError
+    from stickslip.fem.pair import steady_pair
+
+    pad, block = _solids(H)
+    problem = PairProblem(assemble_solid(pad, SOFT, loads=[Load("z1", pressure=1e4)]), "z0",
+                          assemble_solid(block, SOFT), "z1", Translation((1.0, 0.0)), friction=friction,
+                          clamped_master=("z0",))
+    with pytest.raises(NoSolutionError, match="not held"):
+        steady_pair(problem)
+    held = dataclasses.replace(problem, rollers_slave={"z1": "xy"})  # the caliper's abutments
+    assert steady_pair(held).normal_force == pytest.approx(1e4 * L * L, rel=1e-8)
