@@ -616,7 +616,7 @@ MUTANTS: list[dict] = [
        [T + "fem/test_solid_run.py"]),
     _m("solid-stress-lame", F + "solid_stress.py", "    D[[3, 4, 5], [3, 4, 5]] = mu\n", "    D[[3, 4, 5], [3, 4, 5]] = 2 * mu\n",
        "solid stresses: an isotropic shear modulus doubled", [T + "fem/test_solid_run.py"]),
-    _m("pair-held-unchecked", F + "pair.py", "HELD = 1e-3\n", "HELD = 1e30\n",
+    _m("pair-held-unchecked", F + "static.py", "HELD = 1e-3\n", "HELD = 1e30\n",
        "steady sliding of a pair: a pad free to slide away solved (numbers 1e16 wrong) instead of refused",
        [T + "fem/test_solid_run.py"]),
 ]

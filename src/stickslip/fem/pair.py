@@ -76,7 +76,7 @@ from .facets import facet_deviation
 from .mortar2 import quadratic_mortar
 from .mortar3 import solid_mortar
 from .solid import Solid, SolidSystem
-from .static import ITERATIONS, PRESSURE_ITERATIONS, settled, within_friction
+from .static import ITERATIONS, PRESSURE_ITERATIONS, held_factor, settled, within_friction
 from .surfaces import MAX_SPEED
 
 xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
@@ -96,9 +96,6 @@ FACETS = 1.0 / 3.0
 #: The largest overlap of a pair's meshes, over the slave's thickness along the contact normal: a strain
 #: scale (issue 45: 2 mm into an 8 mm lining, 0.25, ran at 1.5 GPa).
 INTERFERENCE = 0.02
-#: Steady sliding's test of a held pair: ``S y = S z`` solved back to ``z`` within this (relative, largest
-#: entry); a free rigid motion leaves an error of order 1 or more (`_solve_pair`).
-HELD = 1e-3
 #: Master segments farther than this times the slave line's length (either side) are not its
 #: partners; a body farther inside the other is refused (as a rigid surface's, `contact_frames`).
 REACH = 0.05
@@ -852,22 +849,8 @@ def _facets(problem: PairProblem, active: np.ndarray, gap: np.ndarray) -> None:
 
 def _solve_pair(K, F, G_A, B_A, scale, rhs):
     """``(u_free, lambda_A / scale)`` of ``K u - scale B_A^T l = F``, ``scale G_A u = rhs``; a pair
-    a rigid motion moves freely is a `NoSolutionError`.
-
-    Whether it is held is read from the factorisation without copying it: the solution of ``S y = S z``
-    for a fixed random ``z`` must be ``z`` (a free rigid motion makes ``S`` singular to round-off and
-    adds a large multiple of it to ``y``). Reading the pivots from ``lu.U`` copied the whole factor:
-    at 45,231 dofs of the brake it took steady sliding's peak from 1.04 to 1.55 GB and its time from
-    27 to 46 s."""
+    a rigid motion moves freely is a `NoSolutionError` (`stickslip.fem.static.held_factor`)."""
     S = sp.bmat([[K, -scale * B_A.T], [scale * G_A, None]], format="csc")
     not_held = NoSolutionError("the pair is not held (a rigid motion is free): clamp a group of each body or press "
                                "them together")
-    try:
-        lu = sla.splu(S)
-    except RuntimeError:
-        raise not_held from None
-    z = np.random.default_rng(0).uniform(1.0, 2.0, S.shape[0])
-    y = lu.solve(S @ z)
-    if not np.all(np.isfinite(y)) or np.max(np.abs(y - z)) > HELD * np.max(np.abs(z)):
-        raise not_held
-    return lu.solve(np.concatenate([F, rhs]))
+    return held_factor(S, not_held).solve(np.concatenate([F, rhs]))
