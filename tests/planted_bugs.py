@@ -619,6 +619,10 @@ MUTANTS: list[dict] = [
     _m("pair-held-unchecked", F + "static.py", "HELD = 1e-3\n", "HELD = 1e30\n",
        "steady sliding of a pair: a pad free to slide away solved (numbers 1e16 wrong) instead of refused",
        [T + "fem/test_solid_run.py"]),
+    _m("reduced-transverse-unscaled", F + "reduced.py", "        C = C + friction * basis.transverse\n",
+       "        C = C + basis.friction * basis.transverse\n",
+       "reduced CEA: the transverse damping of the problem's friction at every swept friction",
+       [T + "fem/test_solid_run.py"]),
 ]
 
 UNCAUGHT: list[dict] = []  # every planted bug of the list is caught (issue 44 moved the last four)

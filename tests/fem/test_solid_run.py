@@ -335,3 +335,18 @@ def test_steady_sliding_of_a_pad_free_to_slide_away_is_refused(friction):
         steady_pair(problem)
     held = dataclasses.replace(problem, rollers_slave={"z1": "xy"})  # the caliper's abutments
     assert steady_pair(held).normal_force == pytest.approx(1e4 * L * L, rel=1e-8)
+
+
+def test_the_reduced_cea_takes_the_transverse_damping():
+    """The pad on springs: a reduced basis of 40 modes with the contact's static vectors gives the full
+    CEA's decaying mode with transverse damping (1e-3 of |s|), at the problem's friction and at half of it."""
+    from stickslip.fem.reduced import modal_basis, reduced_modes
+
+    problem, m, N, mu, V, k = _on_springs(0.0)
+    basis = modal_basis(problem, 40)
+    for friction in (mu, mu / 2):
+        full = complex_eigenvalues(dataclasses.replace(problem, friction=friction), (0.0, 1000.0), count=6).s
+        reduced = reduced_modes(basis, friction, band=(0.0, 1000.0)).s
+        s = full[np.argmin(np.abs(full.imag - np.sqrt(k / m)))]
+        assert np.min(np.abs(reduced - s)) <= 1e-3 * abs(s), (friction, s, reduced)
+        assert -s.real == pytest.approx(friction * N / (2 * m * V), rel=1e-2)

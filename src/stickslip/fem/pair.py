@@ -618,6 +618,17 @@ class PairProblem:
     def _linearised(self) -> dict:
         return {}
 
+    def transverse_matrix(self, coefficient: np.ndarray) -> sp.csr_matrix:
+        """The damping of the friction force turning with a slip across the sliding direction, on all dofs:
+        ``B^T diag(c lambda / (w V)) B`` over steady sliding's active slave nodes (``B`` the weighted rows
+        along ``b = n x t``, ``lambda`` the steady pressure, ``c`` each node's ``coefficient``: its friction
+        coefficient, 1 for the reduced CEA's per-unit matrix). Solids only."""
+        st, c = self.steady, self.coupling
+        A = np.flatnonzero(st.active)
+        across = self._rows(np.cross(c.normal, self.tangent[0]))[A]
+        weights = np.asarray(coefficient, float)[A] * st.pressure[A] / (c.weight[A] * self.tangent[1][A])
+        return (across.T @ sp.diags(weights) @ across).tocsr()
+
     @cached_property
     def consistent_mass(self) -> sp.csr_matrix:
         """Both bodies' consistent mass matrices on all dofs."""
@@ -650,9 +661,9 @@ class PairProblem:
             slip = T.T @ sp.diags(st.pressure[A] * g * self.slopes[A] / self.coupling.weight[A]) @ T
             C = slip if C is None else (C + slip).tocsr()
         if self.transverse_damping:  # the force turns with a slip across: -mu g lambda (B u')_j / (w_j V_j) along b
-            across = self._rows(np.cross(self.coupling.normal, self.tangent[0]))[A][:, free]
-            weights = self.kinetic[A] * g * st.pressure[A] / (self.coupling.weight[A] * self.tangent[1][A])
-            turn = (across.T @ sp.diags(weights) @ across).tocsr()
+            coefficient = np.zeros(len(self.coupling.weight))
+            coefficient[A] = self.kinetic[A] * g
+            turn = self.transverse_matrix(coefficient)[free][:, free]
             C = turn if C is None else (C + turn).tocsr()
         if C is not None and multipliers:
             C = sp.block_diag([C, sp.csr_matrix((multipliers, multipliers))], format="csr")

@@ -13,7 +13,8 @@ is the ``count`` lowest real modes ``Phi`` of the undamped structure with its co
 the modes' contact forces (``augment``: see `modal_basis`), as Ritz vectors ``Psi``
 (``Psi^T M Psi = I``), and the complex problem is solved in that subspace,
 ``(s^2 I + s Psi^T C Psi + Psi^T K(mu) Psi) q = 0``
-(``C`` the bodies' Rayleigh damping), densely: cheap enough that a friction sweep costs one
+(``C`` the bodies' Rayleigh damping; with the pair's ``transverse_damping`` plus ``mu`` times the
+damping of the friction turning across per unit coefficient, about the problem's steady pressures), densely: cheap enough that a friction sweep costs one
 eigen-solve of size ``2 count`` per point. What is left out: the modes above the basis (the error
 the full CEA shows: `reduced_error`), and the change of the active set with the friction (held at
 the steady sliding's, as those tools hold the preload's).
@@ -68,6 +69,7 @@ class ModalBasis:
     top: float = 0.0
     augmented: int = 0
     structural: np.ndarray | None = None  # Psi^T S Psi of the materials' loss factors (None: none)
+    transverse: np.ndarray | None = None  # Psi^T C_b Psi per unit friction: the force turning across (None: left out)
 
     @property
     def count(self) -> int:
@@ -122,9 +124,6 @@ def modal_basis(problem: PairProblem, count: int, penalty: float | None = None, 
     if problem.law is not None or problem.pressure_law is not None:
         raise ParameterError("problem", "a pair with a friction or pressure law", "a pair with Coulomb friction "
                              "(the reduced CEA of laws comes in a later release; the full CEA takes them)")
-    if problem.transverse_damping:
-        raise ParameterError("transverse_damping", True, "false in a reduced CEA (its damping scales with the "
-                             "swept friction; the full CEA takes it)")
     if augment not in ("modes", "nodes", "none"):
         raise ParameterError("augment", augment, "'modes' (static vectors of each mode's contact forces), 'nodes' "
                              "(of unit forces at each contact node) or 'none'")
@@ -162,9 +161,13 @@ def modal_basis(problem: PairProblem, count: int, penalty: float | None = None, 
     psi = V @ Y
     Cr = None if C is None else psi.T @ (C @ psi)
     Sr = None if problem.S is None else psi.T @ (problem.S[free][:, free] @ psi)
+    Tr = None
+    if problem.transverse_damping:  # per unit friction, about the problem's steady sliding (its pressures)
+        unit = problem.transverse_matrix(np.ones(len(problem.coupling.weight)))[free][:, free]
+        Tr = psi.T @ (unit @ psi)
     return ModalBasis(np.sqrt(np.clip(ritz, 0.0, None)) / (2 * math.pi), psi, np.diag(ritz), psi.T @ (F @ psi),
                       Cr, float(problem.friction), free, float(penalty), problem.to_attrs(), count, top,
-                      psi.shape[1] - count, Sr)
+                      psi.shape[1] - count, Sr, Tr)
 
 
 def config_basis(config, problem: PairProblem) -> ModalBasis:
@@ -183,6 +186,8 @@ def _eigen(basis: ModalBasis, friction: float):
     if basis.structural is not None:  # loss factors: K + i S (its eigenvalues below the axis are no modes)
         K = K + 1j * basis.structural
     C = np.zeros((n, n)) if basis.damping is None else basis.damping
+    if basis.transverse is not None:  # the friction's turning across: in proportion to the coefficient
+        C = C + friction * basis.transverse
     A = np.block([[np.zeros((n, n)), np.eye(n)], [-K, -C]])
     s, v = la.eig(A)
     keep = s.imag >= 0
