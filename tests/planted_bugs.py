@@ -623,6 +623,13 @@ MUTANTS: list[dict] = [
        "        C = C + basis.friction * basis.transverse\n",
        "reduced CEA: the transverse damping of the problem's friction at every swept friction",
        [T + "fem/test_solid_run.py"]),
+    _m("facets3-curvature-length", F + "facets.py", "        kappa = bend / np.where(h > 0, h * h, 1.0)",
+       "        kappa = bend / np.where(h > 0, h, 1.0)",
+       "3-D facets: the normal's turn over an edge taken for the curvature (no division by the length twice)",
+       [T + "fem/test_facets3.py"]),
+    _m("facets3-unchecked", F + "pair.py", "    if problem.dimension == 3:\n        if problem.master.body.kind",
+       "    if problem.dimension == 3:\n        return 0.0\n        if problem.master.body.kind",
+       "3-D pair: a curved master's flat faces never compared with the interference", [T + "fem/test_facets3.py"]),
 ]
 
 UNCAUGHT: list[dict] = []  # every planted bug of the list is caught (issue 44 moved the last four)

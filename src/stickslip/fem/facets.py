@@ -8,6 +8,12 @@ for nodes on a circle, whatever their spacing), a segment's the mean of its ends
 where the group turns by more than `CORNER` is a corner (no curvature: a pad's corner is not
 a curved face). A straight face has none.
 
+On a solid's faces (`face_deviation`) the surface's normal curvature along each edge of a face is
+read from the turn of its normal between the edge's ends, ``|(n_b - n_a) . (x_b - x_a)| / h^2`` (the
+nodal normals the mean of the faces' about each node, a node where one of them turns by more than
+`CORNER` a corner), exact on a cylinder along any edge (Euler's ``cos^2``) and on a sphere; a face's
+deviation is its edges' largest sagitta.
+
 Where the deviation is not small against the compression the contact carries (the
 interference the bodies' overlap puts on it), the gap from node to node is set by the
 facets, not by the bodies: the pressure alternates between zero and twice its mean along the
@@ -20,7 +26,7 @@ import math
 
 import numpy as np
 
-__all__ = ["facet_deviation", "CORNER"]
+__all__ = ["facet_deviation", "face_deviation", "CORNER"]
 
 #: A node where the group's direction turns by more than this [rad] is a corner.
 CORNER = math.radians(45.0)
@@ -53,3 +59,33 @@ def facet_deviation(points: np.ndarray, edges: np.ndarray) -> np.ndarray:
     h = np.linalg.norm(points[edges[:, 1]] - points[edges[:, 0]], axis=1)
     # R - sqrt(R^2 - h^2/4) without the cancellation: k h^2 / (4 (1 + sqrt(1 - k^2 h^2 / 4)))
     return k * h**2 / (4.0 * (1.0 + np.sqrt(np.clip(1.0 - (k * h) ** 2 / 4.0, 0.0, None))))
+
+
+def face_deviation(points: np.ndarray, faces: np.ndarray) -> np.ndarray:
+    """Each face's (``faces``: corner node indices, triangles or quadrilaterals of one surface, oriented
+    alike) largest distance from the smooth surface through the nodes [m] (see the module docstring)."""
+    points = np.asarray(points, dtype=float)
+    faces = np.asarray(faces)
+    corners = faces.shape[1]
+    a, b, c = points[faces[:, 0]], points[faces[:, 1]], points[faces[:, 2]]
+    normal = np.cross(c - a, points[faces[:, 3]] - b) if corners == 4 else np.cross(b - a, c - a)  # quads: diagonals
+    unit = normal / np.linalg.norm(normal, axis=1)[:, None]
+    total = np.zeros_like(points)
+    np.add.at(total, faces.ravel(), np.repeat(normal, corners, axis=0))
+    length = np.linalg.norm(total, axis=1)
+    nodal = total / np.where(length > 0, length, 1.0)[:, None]
+    # a corner: one of its faces turned from the mean by more than CORNER (no curvature there)
+    corner = np.zeros(len(points), bool)
+    turned = np.einsum("fci,fi->fc", nodal[faces], unit) < math.cos(CORNER)
+    corner[faces[turned]] = True
+    out = np.zeros(len(faces))
+    for k in range(corners):
+        i, j = faces[:, k], faces[:, (k + 1) % corners]
+        d = points[j] - points[i]
+        h = np.linalg.norm(d, axis=1)
+        # the surface's normal curvature along the edge (Euler's: a diagonal across a cylinder bends less)
+        bend = np.where(corner[i] | corner[j], 0.0, np.abs(np.einsum("fi,fi->f", nodal[j] - nodal[i], d)))
+        kappa = bend / np.where(h > 0, h * h, 1.0)
+        sag = kappa * h**2 / (4.0 * (1.0 + np.sqrt(np.clip(1.0 - (kappa * h) ** 2 / 4.0, 0.0, None))))
+        out = np.maximum(out, sag)
+    return out

@@ -72,7 +72,7 @@ from ..quantities import FEM as Q
 from ..results import Result
 from .assembly import BodySystem, transport_operators
 from .cea import PENALTY
-from .facets import facet_deviation
+from .facets import face_deviation, facet_deviation
 from .mortar2 import quadratic_mortar
 from .mortar3 import solid_mortar
 from .solid import Solid, SolidSystem
@@ -829,15 +829,21 @@ def steady_pair(problem: PairProblem, max_iterations: int | None = None) -> Pair
 
 
 def facets(problem: PairProblem) -> float:
-    """The largest deviation of the master's segments under the slave line from the curve
-    through their nodes [m] (`stickslip.fem.facets`): 0 for a straight master, and for quadratic
-    cells (their curved segments follow a circle to ``h^4 / R^3``, not ``h^2 / R``); solids: not
-    measured yet (0: a 3-D face's facets, a later release)."""
-    if problem.dimension == 3 or problem.master.body.order == 2:
-        return 0.0
-    edges = problem.master.body.oriented(problem.master_group, "master_group")[:, :2]
+    """The largest deviation of the master's segments (faces, between solids) under the slave from the
+    curve (surface) through their nodes [m] (`stickslip.fem.facets`): 0 for a straight or flat master,
+    and for quadratic cells (their curved segments follow a circle to ``h^4 / R^3``, not ``h^2 / R``)."""
     touched = np.zeros(len(problem.master.body.points), bool)
     touched[np.unique(problem.coupling.M.tocoo().col)] = True
+    if problem.dimension == 3:
+        if problem.master.body.kind == "tetra10":
+            return 0.0
+        faces = problem.master.body.faces[problem.master_group]
+        under = touched[faces].all(axis=1)
+        # the normals from the whole group (a subset's edge would take one-sided ones), the faces under the slave's
+        return float(face_deviation(problem.master.body.points, faces)[under].max(initial=0.0))
+    if problem.master.body.order == 2:
+        return 0.0
+    edges = problem.master.body.oriented(problem.master_group, "master_group")[:, :2]
     under = touched[edges[:, 0]] & touched[edges[:, 1]]
     return float(facet_deviation(problem.master.body.points, edges[under]).max(initial=0.0))
 
@@ -850,7 +856,7 @@ def _facets(problem: PairProblem, active: np.ndarray, gap: np.ndarray) -> None:
         return
     deviation = facets(problem)
     if deviation > FACETS * overlap:
-        log.warning("the straight segments of the partner's group %r deviate from its curve by up to %.3g m, "
+        log.warning("the straight segments (flat faces) of the partner's group %r deviate from its curve by up to %.3g m, "
                     "%.2f times the %.3g m of interference the contact carries: the contact pressure alternates "
                     "between zero and about twice its mean from node to node (a segment of length h on a radius R "
                     "deviates by h^2 / (8 R)); refine the partner's mesh along the contact until the deviation is "
