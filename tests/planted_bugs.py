@@ -630,6 +630,11 @@ MUTANTS: list[dict] = [
     _m("facets3-unchecked", F + "pair.py", "    if problem.dimension == 3:\n        if problem.master.body.kind",
        "    if problem.dimension == 3:\n        return 0.0\n        if problem.master.body.kind",
        "3-D pair: a curved master's flat faces never compared with the interference", [T + "fem/test_facets3.py"]),
+    _m("prestress-gradient-transposed", F + "prestress.py", "(u.grad[k, i] * v.grad[k, j])",
+       "(u.grad[i, k] * v.grad[j, k])", "centrifugal stiffness: the displacement gradients transposed",
+       [T + "fem/test_prestress.py"]),
+    _m("prestress-radius-y-dropped", F + "prestress.py", "((w.x[0] - cx) * v[0] + (w.x[1] - cy) * v[1])",
+       "((w.x[0] - cx) * v[0])", "centrifugal load: its y component lost", [T + "fem/test_prestress.py"]),
 ]
 
 UNCAUGHT: list[dict] = []  # every planted bug of the list is caught (issue 44 moved the last four)

@@ -10,15 +10,15 @@ clamped at its bore (r = 60 mm), the piston face of the backplate pressed at ``p
 in its plane (the caliper's abutments), the lining's friction face the slave of the mortar contact
 on the disc's upper face, the disc turning at ``omega`` (the pad's middle slides at 110 mm x omega).
 
-The lining is transversely isotropic about its thickness (z); the disc is grey cast iron. Gyroscopic
-and transport terms of the turning disc are not included in 3-D yet (said by the pair).
+The lining is transversely isotropic about its thickness (z); the disc is grey cast iron. The turning
+disc's gyroscopic and transport terms are left out here (``gyroscopic=True`` puts them in).
 
 `write_config(folder)` writes the same brake as a config of `stickslip fem` beside the meshes
 (``stickslip fem steady brake.toml``, ``stickslip fem cea brake.toml``).
 
 Usage: ``python brake.py [out_folder] [pad_size_mm] [disc_size_mm] [order]``: the steady sliding,
-the full CEA in 1-12 kHz, a reduced friction sweep, the energy shares, ParaView and UFF files, and
-the config.
+the full CEA in 1-12 kHz, a reduced friction sweep, the energy shares, ParaView and UFF files, an
+explicit run to a limit regime (its file and its ParaView snapshots), and the config.
 """
 
 from __future__ import annotations
@@ -144,9 +144,9 @@ def write_config(folder, friction: float = 0.4, pressure: float = 1e6, omega: fl
 
 
 def main(folder="brake3d", pad_size=8.0, disc_size=15.0, order=1):
-    from stickslip.fem import (complex_eigenvalues, energy_shares, modal_basis, reduced_sweep,
-                               write_modes_uff)
-    from stickslip.fem.paraview import write_modes_xdmf
+    from stickslip.fem import (classify_body, complex_eigenvalues, energy_shares, integrate_pair, modal_basis,
+                               reduced_sweep, write_modes_uff)
+    from stickslip.fem.paraview import write_modes_xdmf, write_run_xdmf
 
     folder = Path(folder)
     folder.mkdir(exist_ok=True)
@@ -167,6 +167,11 @@ def main(folder="brake3d", pad_size=8.0, disc_size=15.0, order=1):
         print(f"  branch {b}: critical friction {tracked.critical[b]:.4f} at {tracked.critical_frequency[b]:.1f} Hz")
     write_modes_xdmf(problem, modes, folder / "modes.xdmf")
     write_modes_uff(problem, modes, folder / "modes.uff")
+    # an explicit run from steady sliding to a limit regime (central differences: no numerical damping)
+    run = integrate_pair(problem, transits=1200.0, beta2=0.5, checkpoint=folder / "run.nc", volume_every=100.0)
+    regime = classify_body(run, 200.0)
+    print(f"explicit run, {run.t_end * 1e3:.1f} ms: limit regime {regime.regime}, energy of the deviation "
+          f"{run.energy[-1]:.3g} J; ParaView: {write_run_xdmf(run, folder / 'run.xdmf')}")
     print(f"the same brake for the command line: {write_config(folder)}")
     return problem, modes, tracked
 

@@ -240,6 +240,7 @@ FUZZ = {"dimension": ("dimension = 3", "dimension = {v}"), "units": ('units = "m
         "load[0].pressure": ("pressure = 2e6", "pressure = {v}"),
         "partner.velocity": ("velocity = [1.0, 0.0]", "velocity = [{v}, 0.0]"),
         "partner.transverse_damping": ("velocity = [1.0, 0.0]", "velocity = [1.0, 0.0]\ntransverse_damping = {v}"),
+        "partner.prestress": ("velocity = [1.0, 0.0]", "omega = 10.0\nprestress = {v}"),
         "partner.material.young": ("young = 2.1e11", "young = {v}"),
         "cea.reduced_modes": ("[cea]", "[cea]\nreduced_modes = {v}")}
 

@@ -24,6 +24,8 @@
   (`perturbed_steady_body`, `preload_body`);
 * `paraview`: XDMF time series of a run's volume snapshots and of the CEA mode shapes;
 * `solid_stress`: the cells' mean stresses and von Mises stress of a solid at a displacement;
+* `prestress`: the stress stiffening of a turning solid's centrifugal prestress (`centrifugal_stiffness`;
+  a pair's ``prestress``);
 * `config`: the TOML config of `stickslip fem steady | cea | run`;
 * `solid`: a 3-D elastic body (linear tetrahedra or hexahedra, a material per cell group, its
   length unit stated), its stiffness and lumped mass, clamps and rollers on face groups and its

@@ -61,6 +61,7 @@
     # center = [0.0, 0.0]           # or translates at velocity = [vx, vy] [m/s] (a slider)
     # gyroscopic = false            # true: a turning partner's gyroscopic and transport terms (Eulerian)
     # transverse_damping = false    # solids: true puts the friction turning with a slip across in the CEA
+    # prestress = false             # a turning solid: true adds its centrifugal prestress's stiffening
     # [partner.material]            # its material(s): as [material] (or [[partner.material]] per cell group)
     # young = 1.25e11
 
@@ -107,7 +108,7 @@ __all__ = ["FemConfig", "Partner", "load_config", "numeric_keys", "read_toml", "
 _KNOWN = {"": {"mesh", "clamped", "material", "contact", "surface", "partner", "cea", "spring", "load", "dimension",
                "units", "rollers"},
           "partner": {"mesh", "group", "clamped", "omega", "center", "velocity", "material", "gyroscopic", "rollers",
-                      "transverse_damping"},
+                      "transverse_damping", "prestress"},
           "contact": {"group", "friction", "static_friction", "law", "stribeck_speed", "weakening", "pressure_exponent",
                       "reference_pressure"},
           "surface": {"kind", "radius", "omega", "center", "body_inside", "point", "normal", "velocity",
@@ -132,6 +133,7 @@ class Partner:
     gyroscopic: bool = False
     rollers: dict = field(default_factory=dict)  # {face or boundary group: axes}
     transverse_damping: bool = False  # solids: the CEA's damping of the friction turning with a slip across
+    prestress: bool = False  # a turning solid: the stress stiffening of its centrifugal prestress
 
 
 @dataclass(frozen=True)
@@ -176,7 +178,7 @@ class FemConfig:
                                                           assemble_solid(other, p.material)))
             return PairProblem(slave, self.group, master, p.group, p.motion, clamped_slave=self.clamped,
                                clamped_master=p.clamped, gyroscopic=p.gyroscopic, pressure_law=self.pressure_law,
-                               transverse_damping=p.transverse_damping,
+                               transverse_damping=p.transverse_damping, prestress=p.prestress,
                                rollers_slave=self.rollers or None, rollers_master=p.rollers or None, **friction)
         for name in (*self.clamped, self.group):
             body.group(name, "clamped" if name in self.clamped else "contact.group")
@@ -418,6 +420,11 @@ def _partner(problems, path: Path, p: dict, dimension: int = 2, units: str | Non
         problems.append(f"partner.transverse_damping = {_toml(transverse)} must be true or false, true only in a "
                         "config of solids (dimension = 3)")
         transverse = False
+    prestress = p.get("prestress", False)
+    if not isinstance(prestress, bool) or (prestress and (dimension != 3 or "omega" not in p)):
+        problems.append(f"partner.prestress = {_toml(prestress)} must be true or false, true only with a turning "
+                        "partner (partner.omega) in a config of solids (dimension = 3)")
+        prestress = False
     body = None if mesh_path is None else read_mesh(problems, mesh_path, "partner.mesh", dimension, units)
     if body is not None:
         have = ", ".join(sorted(body.groups)) or "none"
@@ -431,7 +438,7 @@ def _partner(problems, path: Path, p: dict, dimension: int = 2, units: str | Non
             or any(m is None for m in materials.values()):
         return None
     return Partner(mesh_path, group, tuple(clamped), motion, materials[""] if list(materials) == [""] else materials,
-                   body, gyroscopic, rollers, transverse)
+                   body, gyroscopic, rollers, transverse, prestress)
 
 
 def _facing(problems, body, group: str, partner: Partner, friction) -> None:

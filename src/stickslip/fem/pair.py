@@ -38,7 +38,8 @@ multipliers as unknowns without mass: ``(s^2 M + s C + K) u = B^T lambda``, ``G_
 (the usual engineering treatment of a turning disc). With ``gyroscopic=True`` a turning master
 is described in space-fixed (Eulerian) coordinates: its gyroscopic matrix joins the damping
 and its transport softening the stiffness (`stickslip.fem.assembly.transport_operators`),
-in steady sliding and the CEA; the centrifugal load and stress stiffening stay out.
+in steady sliding and the CEA; with ``prestress=True`` (solids) the stress stiffening of the
+centrifugal prestress too (`stickslip.fem.prestress`).
 
 **Friction laws.** Coulomb ``friction`` (and a ``static_friction`` for explicit runs), or a law of
 the slip speed (`stickslip.friction`), each slave node's coefficient ``mu_j = mu(V_j)`` at the
@@ -75,6 +76,7 @@ from .cea import PENALTY
 from .facets import face_deviation, facet_deviation
 from .mortar2 import quadratic_mortar
 from .mortar3 import solid_mortar
+from .prestress import centrifugal_stiffness
 from .solid import Solid, SolidSystem
 from .static import ITERATIONS, PRESSURE_ITERATIONS, held_factor, settled, within_friction
 from .surfaces import MAX_SPEED
@@ -338,7 +340,11 @@ class PairProblem:
     along ``b = n x t`` at each active slave node: a damping ``B^T diag(mu g lambda / (w V)) B`` of
     the relative velocity across (``B`` the weighted rows along ``b``). An explicit run's Coulomb
     disc has it always; it damps every motion of the pad across the sliding (a pad on springs
-    across decays at ``mu N / (2 m V)``)."""
+    across decays at ``mu N / (2 m V)``).
+
+    ``prestress`` (a turning solid partner; default false): the master's stiffness includes the stress
+    stiffening of its centrifugal prestress (`stickslip.fem.prestress`); with ``gyroscopic``, the
+    small vibrations about the turning disc have every term of order ``omega^2``."""
 
     slave: BodySystem
     slave_group: str
@@ -355,6 +361,7 @@ class PairProblem:
     rollers_slave: dict | None = None
     rollers_master: dict | None = None
     transverse_damping: bool = False
+    prestress: bool = False
 
     def __post_init__(self):
         for name in ("slave", "master"):
@@ -390,6 +397,10 @@ class PairProblem:
         if not isinstance(self.transverse_damping, bool) or (self.transverse_damping and self.dimension != 3):
             raise ParameterError("transverse_damping", self.transverse_damping, "true or false, true only between "
                                  "solids (plane bodies slide along their one tangent)")
+        if not isinstance(self.prestress, bool) or (self.prestress and (self.dimension != 3 or
+                                                                         not isinstance(self.motion, Rotation))):
+            raise ParameterError("prestress", self.prestress, "true or false, true only with a turning solid partner "
+                                 "(a Rotation between solids)")
         if not isinstance(self.gyroscopic, bool) or (self.gyroscopic and not isinstance(self.motion, Rotation)):
             raise ParameterError("gyroscopic", self.gyroscopic, "true or false, true only with a turning master "
                                  "(a Rotation)")
@@ -534,8 +545,14 @@ class PairProblem:
     @cached_property
     def K(self) -> sp.csr_matrix:
         """Both stiffnesses; with ``gyroscopic``, the master's less its transport softening ``B``
-        (steady in space, the turning material still accelerates through the deformation)."""
-        K = sp.block_diag([self.slave.K, self.master.K], format="csr")
+        (steady in space, the turning material still accelerates through the deformation); with
+        ``prestress``, the master's plus the stress stiffness of its centrifugal prestress
+        (`stickslip.fem.prestress`, its supports held)."""
+        master = self.master.K
+        if self.prestress:
+            held = np.flatnonzero(self.fixed[self.n_slave:])
+            master = master + centrifugal_stiffness(self.master, self.motion.omega, self.motion.center, held)[0]
+        K = sp.block_diag([self.slave.K, master], format="csr")
         return K if self.transport is None else (K - self.transport[1]).tocsr()
 
     @cached_property
@@ -687,7 +704,7 @@ class PairProblem:
                 h.update(np.ascontiguousarray(arr).tobytes())
         for arr in (c.slave_nodes, c.normal, c.D.data, c.M.indptr, c.M.indices, c.M.data, t, speed, self.fixed):
             h.update(np.ascontiguousarray(arr).tobytes())
-        h.update(repr((self.friction, self.gyroscopic, self.static_friction, repr(self.law),
+        h.update(repr((self.friction, self.gyroscopic, self.prestress, self.static_friction, repr(self.law),
                        None if self.pressure_law is None else (self.pressure_law.reference, self.pressure_law.exponent))
                       ).encode())
         return h.hexdigest()
@@ -704,6 +721,7 @@ class PairProblem:
                    for name in ("rollers_slave", "rollers_master") if getattr(self, name)},
                 "gyroscopic": int(self.gyroscopic), "problem_sha256": self.digest,
                 **({"transverse_damping": 1} if self.transverse_damping else {}),
+                **({"prestress": 1} if self.prestress else {}),
                 "static_friction": self.static_friction,
                 **({} if self.law is None else {"friction_law": repr(self.law)}),
                 **({} if self.pressure_law is None else {"pressure_exponent": self.pressure_law.exponent,

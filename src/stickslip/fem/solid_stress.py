@@ -14,10 +14,10 @@ import numpy as np
 from ..errors import ParameterError
 from .solid import VOIGT, OrthotropicSolid, SolidSystem, skfem_mesh
 
-__all__ = ["solid_stress", "solid_von_mises", "solid_cell_material"]
+__all__ = ["solid_stress", "solid_von_mises", "solid_cell_material", "voigt_stiffness"]
 
 
-def _voigt_stiffness(m) -> np.ndarray:
+def voigt_stiffness(m) -> np.ndarray:
     """``D`` [Pa] (6 x 6, Voigt with engineering shear strains) of a material of a solid."""
     if isinstance(m, OrthotropicSolid):
         return m.stiffness
@@ -48,7 +48,7 @@ def solid_stress(system: SolidSystem, u: np.ndarray) -> np.ndarray:
         grad = basis.interpolate(u[ours]).grad  # (3, 3, cells, points): d u_i / d x_j
         strain = np.stack([(grad[i, j] + grad[j, i]) * (0.5 if i == j else 1.0) for i, j in VOIGT])
         weights = basis.dx / basis.dx.sum(axis=1, keepdims=True)
-        out[cells] = np.einsum("IJ,Jcq,cq->cI", _voigt_stiffness(m), strain, weights)
+        out[cells] = np.einsum("IJ,Jcq,cq->cI", voigt_stiffness(m), strain, weights)
     return out
 
 

@@ -7,8 +7,9 @@ With the solid's velocity ``v = omega e_z x (x - c)`` (no component along z) and
 the transport softening ``B = int rho ((v . grad) N_i) . ((v . grad) N_j)`` [kg/s^2]: small
 vibrations ``u`` about the turning solid obey ``M u'' + G u' + (K - B) u = f`` (the kinetic energy of
 ``v + u' + (v . grad) u``). ``B`` holds the spin softening (a rigid turn's ``omega^2 I``); the
-centrifugal prestress and the stress stiffening it causes are left out (a strain of
-``rho omega^2 R^2 / E``: 1e-8 for a cast-iron disc of 0.14 m at 10 rad/s).
+stress stiffening of the centrifugal prestress is `stickslip.fem.prestress` (a pair's ``prestress``);
+the prestress's static strain, ``rho omega^2 R^2 / E`` (1e-8 for a cast-iron disc of 0.14 m at
+10 rad/s), is not added to the geometry.
 """
 
 from __future__ import annotations
