@@ -385,7 +385,7 @@ def run(config: Config,
         out: RunOut = None,
         xdmf: Annotated[Optional[Path], typer.Option(help=(
             "Write volume snapshots for ParaView to this XDMF file (.xdmf, data in the .h5 beside it): "
-            "displacement [m], velocity [m/s], contact forces [N/m] and states, cell stresses [Pa]; times [s]."))] = None,
+            "displacement [m], velocity [m/s], contact forces [N/m; N between solids] and states, cell stresses [Pa]; times [s]."))] = None,
         xdmf_every: XdmfEvery = None,
         window: Annotated[Optional[float], declared(Q["window_transits"], "--window", (
             "Classify the limit regime over the last this many transits, at most --transits (default the run's "
