@@ -78,6 +78,37 @@ def _uff(**k):
                               **k})
 
 
+def _scheme(**k):
+    from stickslip.fem.pair_run3 import SolidPairScheme
+
+    return SolidPairScheme(**{"params": _made()["problem"], **k})
+
+
+def _stress(**k):
+    import numpy as np
+
+    from stickslip.fem.solid_stress import solid_stress
+
+    system = _made()["problem"].slave
+    return solid_stress(**{"system": system, "u": np.zeros(system.n_dofs), **k})
+
+
+def _spun(**k):
+    from stickslip.fem.prestress import centrifugal_stiffness
+
+    return centrifugal_stiffness(**{"system": _made()["problem"].master, "omega": 10.0,
+                                    "held": supported_dofs(_made()["base"], ("z0",)), **k})
+
+
+def _faces(**k):
+    import numpy as np
+
+    from stickslip.fem.facets import face_deviation
+
+    pad = _made()["pad"]
+    return face_deviation(**{"points": pad.points, "faces": np.asarray(pad.faces["z0"]), **k})
+
+
 CALLS = {
     "Material loss_factor": (lambda **k: Material(**{"young": 1e10, "poisson": 0.3, "density": 2500.0, **k}),
                              ["loss_factor"]),
@@ -95,7 +126,11 @@ CALLS = {
                     ["system", "held", "count", "mass"]),
     "PairProblem solids": (_pair, ["slave", "slave_group", "master", "master_group", "motion", "friction",
                                    "clamped_slave", "clamped_master", "gyroscopic", "static_friction",
-                                   "rollers_slave", "rollers_master"]),
+                                   "rollers_slave", "rollers_master", "transverse_damping", "prestress"]),
+    "SolidPairScheme": (_scheme, ["params", "beta2", "courant", "time_step"]),
+    "solid_stress": (_stress, ["system", "u"]),
+    "centrifugal_stiffness": (_spun, ["system", "omega", "center", "held"]),
+    "face_deviation": (_faces, ["points", "faces"]),
     "modal_basis": (lambda **k: _reduced("modal_basis", **k), ["problem", "count", "penalty", "augment"]),
     "reduced_modes": (lambda **k: _reduced("reduced_modes", **k), ["basis", "friction", "band", "mode_shapes"]),
     "reduced_sweep": (lambda **k: _reduced("reduced_sweep", **k), ["basis", "frictions", "band", "tol"]),

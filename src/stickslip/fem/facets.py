@@ -64,8 +64,20 @@ def facet_deviation(points: np.ndarray, edges: np.ndarray) -> np.ndarray:
 def face_deviation(points: np.ndarray, faces: np.ndarray) -> np.ndarray:
     """Each face's (``faces``: corner node indices, triangles or quadrilaterals of one surface, oriented
     alike) largest distance from the smooth surface through the nodes [m] (see the module docstring)."""
-    points = np.asarray(points, dtype=float)
-    faces = np.asarray(faces)
+    from ..errors import ParameterError
+
+    try:
+        points = np.asarray(points, dtype=float)
+        faces = np.asarray(faces)
+    except (TypeError, ValueError):
+        raise ParameterError("points", "not numbers", "an (n, 3) array of node coordinates [m] and faces of "
+                             "node indices") from None
+    if points.ndim != 2 or points.shape[1] != 3 or not np.all(np.isfinite(points)):
+        raise ParameterError("points", f"an array of shape {points.shape}", "(n, 3) finite node coordinates [m]")
+    if faces.ndim != 2 or faces.shape[1] not in (3, 4) or not np.issubdtype(faces.dtype, np.integer) or \
+            (faces.size and (faces.min() < 0 or faces.max() >= len(points))):
+        raise ParameterError("faces", f"an array of shape {faces.shape}", "(f, 3) or (f, 4) corner node indices of "
+                             "the points")
     corners = faces.shape[1]
     a, b, c = points[faces[:, 0]], points[faces[:, 1]], points[faces[:, 2]]
     normal = np.cross(c - a, points[faces[:, 3]] - b) if corners == 4 else np.cross(b - a, c - a)  # quads: diagonals

@@ -42,7 +42,14 @@ def centrifugal_stiffness(system: SolidSystem, omega: float, center=(0.0, 0.0), 
     mesh, element, ours, _ = skfem_mesh(solid)
     n = 3 * len(solid.points)
     to_ours = sp.csr_array((np.ones(n), (ours, np.arange(n))), shape=(n, n))
-    held = np.unique(np.asarray(held, dtype=np.int64).ravel())
+    try:
+        given = np.asarray(held).ravel()
+    except (TypeError, ValueError):
+        given = np.asarray([None])
+    if given.size and not np.issubdtype(given.dtype, np.integer):
+        raise ParameterError("held", f"{given.size} values of type {given.dtype}", "integer indices of degrees of "
+                             "freedom (supported_dofs gives them)")
+    held = np.unique(given.astype(np.int64))
     if held.size and (held.min() < 0 or held.max() >= n):
         raise ParameterError("held", f"{held.size} indices", f"degrees of freedom of the solid (0 to {n - 1})")
     parts = []
@@ -61,7 +68,14 @@ def centrifugal_stiffness(system: SolidSystem, omega: float, center=(0.0, 0.0), 
     free = np.setdiff1d(np.arange(n), held)
     u0 = np.zeros(n)
     if omega != 0.0:
-        u0[free] = splu(sp.csc_array(system.K[free][:, free])).solve(force[free])
+        try:
+            u0[free] = splu(sp.csc_array(system.K[free][:, free])).solve(force[free])
+        except RuntimeError:
+            raise ParameterError("held", f"{held.size} degrees of freedom", "supports that hold the turning solid "
+                                 "(its stiffness is singular without them)") from None
+        if not np.all(np.isfinite(u0)) or np.abs(u0).max() > 1e6 * float(np.ptp(solid.points)):
+            raise ParameterError("held", f"{held.size} degrees of freedom", "supports that hold every rigid motion "
+                                 "of the turning solid (some are free)")
     K = sp.csr_array((n, n))
     for basis, m in parts:
         grad = basis.interpolate(u0[ours]).grad

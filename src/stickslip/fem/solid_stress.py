@@ -36,9 +36,13 @@ def solid_stress(system: SolidSystem, u: np.ndarray) -> np.ndarray:
 
     if not isinstance(system, SolidSystem):
         raise ParameterError("system", system, "a SolidSystem (assemble_solid)")
-    u = np.asarray(u, dtype=float)
-    if u.shape != (system.n_dofs,):
-        raise ParameterError("u", f"an array of shape {u.shape}", f"the {system.n_dofs} displacements of the solid")
+    try:
+        u = np.asarray(u, dtype=float)
+    except (TypeError, ValueError):
+        raise ParameterError("u", u, f"the {system.n_dofs} displacements of the solid [m]") from None
+    if u.shape != (system.n_dofs,) or not np.all(np.isfinite(u)):
+        raise ParameterError("u", f"an array of shape {u.shape}", f"the {system.n_dofs} finite displacements of the "
+                             "solid [m]")
     solid = system.solid
     mesh, element, ours, _ = skfem_mesh(solid)
     out = np.zeros((len(solid.cells), 6))
