@@ -393,3 +393,18 @@ def test_a_run_of_the_tutorial_brake_grows_at_the_rate_of_its_cea_with_transvers
     expected = discrete_rates(np.array([-cea[True].s[k] ** 2]), scheme.dt, 0.5)[0].real
     assert growth == pytest.approx(expected, rel=1e-2) and frequency == pytest.approx(cea[True].frequency[k], rel=1e-2)
     assert cea[False].growth_rate.max() > 1.5 * growth
+
+
+def test_a_run_of_two_solids_resumed_from_its_checkpoint_is_the_uninterrupted_one(pressed, tmp_path):
+    """A run stopped at one transit and resumed to two from its file equals, bit for bit, the run made at
+    once (the force across and its displacement included)."""
+    whole = integrate_pair(pressed, transits=2.0, amplitude=1.0, checkpoint=tmp_path / "whole.nc")
+    integrate_pair(pressed, transits=1.0, amplitude=1.0, checkpoint=tmp_path / "parts.nc")
+    resumed = integrate_pair(pressed, transits=2.0, amplitude=1.0, checkpoint=tmp_path / "parts.nc")
+    assert resumed.complete and np.array_equal(resumed.kernel["u"], whole.kernel["u"])
+    assert np.array_equal(resumed.energy, whole.energy)
+    # snapshots at the times both keep (a run of one transit keeps its own dense tail)
+    both, mine, theirs = np.intersect1d(resumed.snap_t, whole.snap_t, return_indices=True)
+    assert len(both) > 10
+    for name in ("Q_cross", "W", "P"):
+        assert np.array_equal(getattr(resumed, name)[mine], getattr(whole, name)[theirs]), name
