@@ -408,3 +408,29 @@ def test_a_run_of_two_solids_resumed_from_its_checkpoint_is_the_uninterrupted_on
     assert len(both) > 10
     for name in ("Q_cross", "W", "P"):
         assert np.array_equal(getattr(resumed, name)[mine], getattr(whole, name)[theirs]), name
+
+
+def test_a_pad_past_the_blocks_edge_makes_the_same_contact_wherever_the_model_sits():
+    """A pad running 7 mm past the block's edge (its edge row of slave nodes half on the block): its
+    mortar rows are scaled to sum to each node's weight (`Mortar.consistent`), so steady sliding does not
+    depend on where both bodies sit: the block's top at z = 0, 10 mm and -100 mm give the same pressures
+    (1e-9) and carry the load (1e-8). Before, the edge rows summed to 1.06 times the weight: the same
+    geometry was refused for an overlap of 0.6 mm, ran, or was "not held", by its z alone."""
+    from stickslip.fem import Spring
+    from stickslip.fem.pair import steady_pair
+
+    pressures = []
+    for lift in (0.0, H, -0.1):
+        pad, block = _solids(H)
+        pad.points[:, 0] += 0.012
+        pad.points[:, 2] += lift
+        block.points[:, 2] += lift
+        problem = PairProblem(assemble_solid(pad, SOFT, loads=[Load("z1", pressure=1e4)],
+                                             springs=[Spring("z1", (1e5, 1e5, 0.0))]), "z0",
+                              assemble_solid(block, SOFT), "z1", Translation((1.0, 0.0)), friction=0.3,
+                              clamped_master=("z0",))
+        steady = steady_pair(problem)
+        assert steady.normal_force == pytest.approx(1e4 * L * L, rel=1e-8)
+        pressures.append(steady.pressure)
+    for other in pressures[1:]:
+        assert np.abs(other - pressures[0]).max() <= 1e-9 * np.abs(pressures[0]).max()

@@ -155,6 +155,7 @@ class Mortar:
     normal: np.ndarray
     D: sp.csr_matrix
     M: sp.csr_matrix
+    reach: np.ndarray | None = None  # each row's overlap, sum_l M_jl / D_jj, before `consistent` scaled it
 
     @property
     def weight(self) -> np.ndarray:
@@ -163,8 +164,27 @@ class Mortar:
     @property
     def can_touch(self) -> np.ndarray:
         """Each slave node whose line or face overlaps the master's (its ``M`` row sum at least half its
-        weight): the others cannot touch."""
-        return np.asarray(self.M.sum(axis=1)).ravel() > 0.5 * self.weight
+        weight, `reach`): the others cannot touch."""
+        reach = np.asarray(self.M.sum(axis=1)).ravel() / self.weight if self.reach is None else self.reach
+        return reach > 0.5
+
+    @classmethod
+    def consistent(cls, slave_nodes, normal, D, M) -> "Mortar":
+        """The coupling with each row of ``M`` scaled to sum to ``D_jj``, its overlap kept as `reach`.
+
+        Where a slave node's line or face runs past the master's edge, the dual shape function is
+        integrated over part of its support only, and its row of ``M`` does not sum to ``D_jj`` (on a
+        pad overhanging a block by a cell, 1.06 and -0.16 times it): the weighted gap of that node then
+        moves with a rigid translation of both bodies, so contact depended on where the model sat in
+        space (refused, running or "not held" by the z of the block's top alone). Scaled, a rigid
+        motion moves no gap; a fully covered row sums to ``D_jj`` already and is unchanged."""
+        D, M = sp.csr_matrix(D), sp.csr_matrix(M)
+        weight = np.asarray(D.sum(axis=1)).ravel()
+        total = np.asarray(M.sum(axis=1)).ravel()
+        ok = total > 0
+        scale = np.zeros(len(total))
+        scale[ok] = weight[ok] / total[ok]
+        return cls(slave_nodes, normal, D, sp.csr_matrix(sp.diags(scale) @ M), total / weight)
 
     def gap(self, slave_points: np.ndarray, master_points: np.ndarray) -> np.ndarray:
         """The weighted normal gap of each slave node with the meshes at these points [m^2 on solids, m
@@ -211,7 +231,7 @@ def mortar(slave_body, slave_group: str, master_body, master_group: str) -> Mort
                                                               REACH)
         seen = slave_body.points[nodes]
         _refuse(deep, away, found, float(np.linalg.norm(np.ptp(seen, axis=0))), slave_group, master_group)
-        return Mortar(nodes, normal, D, M)
+        return Mortar.consistent(nodes, normal, D, M)
     if slave_body.order == 2 or master_body.order == 2:
         s_edges = slave_body.oriented(slave_group, "slave_group")
         m_edges = master_body.oriented(master_group, "master_group")
@@ -219,7 +239,7 @@ def mortar(slave_body, slave_group: str, master_body, master_group: str) -> Mort
         nodes, normal, D, M, deep, away, found = quadratic_mortar(slave_body, s_edges, master_body, m_edges,
                                                                   REACH * span)
         _refuse(deep, away, found, span, slave_group, master_group)
-        return Mortar(nodes, normal, D, M)
+        return Mortar.consistent(nodes, normal, D, M)
     s_edges = _linear(slave_body, slave_group, "slave_group")
     m_edges = _linear(master_body, master_group, "master_group")
     xs, xm = slave_body.points, master_body.points
@@ -281,7 +301,7 @@ def mortar(slave_body, slave_group: str, master_body, master_group: str) -> Mort
     _refuse(deep, away, found, lengths.sum(), slave_group, master_group)
     D = sp.csr_matrix((Dv, (Dr, Dc)), shape=(len(nodes), len(xs)))
     M = sp.csr_matrix((Mv, (Mr, Mc)), shape=(len(nodes), len(xm)))
-    return Mortar(nodes, normal, D, M)
+    return Mortar.consistent(nodes, normal, D, M)
 
 
 def _refuse(deep, away, found, span, slave_group, master_group):

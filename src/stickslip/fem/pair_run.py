@@ -124,7 +124,7 @@ class PairScheme(FemScheme):
         edges = p.slave.body.segments(p.slave_group, "slave_group")
         along = order_along(p.slave.body.points, edges, np.unique(edges))
         row_of = {int(v): k for k, v in enumerate(c.slave_nodes)}
-        reach = np.asarray(c.M.sum(axis=1)).ravel()
+        reach = c.reach * c.weight  # the overlap before the rows were made consistent
         rows = [row_of[int(v)] for v in along]
         rows = [r for r in rows if not p.fixed[2 * c.slave_nodes[r]] and reach[r] > 0.5 * c.weight[r]]
         if len(rows) < 2:

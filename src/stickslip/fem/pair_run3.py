@@ -105,7 +105,7 @@ class SolidPairScheme(PairScheme):
         p = self.params
         c = p.coupling
         held = p.fixed[3 * c.slave_nodes[:, None] + np.arange(3)]
-        reach = np.asarray(c.M.sum(axis=1)).ravel()
+        reach = c.reach * c.weight  # the overlap before the rows were made consistent
         rows = np.flatnonzero(~held.all(axis=1) & (reach > 0.5 * c.weight))
         if len(rows) < 2:
             raise ParameterError("clamped_slave", list(p.clamped_slave), "groups that leave the slave's contact face "
