@@ -639,6 +639,9 @@ MUTANTS: list[dict] = [
        "        scale[ok] = 1.0\n",
        "mortar: a slave node past the master's edge keeps a row of M that does not sum to D_jj (its gap moves "
        "with a rigid translation)", [T + "fem/test_solid_run.py"]),
+    _m("config-center-unchecked", F + "config.py", "            if float(np.hypot(*off)) > size:\n",
+       "            if False:\n", "config: a rotation centre meant in the meshes' millimetres taken in metres",
+       [T + "fem/test_solid_run.py"]),
 ]
 
 UNCAUGHT: list[dict] = []  # every planted bug of the list is caught (issue 44 moved the last four)

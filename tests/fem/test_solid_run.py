@@ -434,3 +434,16 @@ def test_a_pad_past_the_blocks_edge_makes_the_same_contact_wherever_the_model_si
         pressures.append(steady.pressure)
     for other in pressures[1:]:
         assert np.abs(other - pressures[0]).max() <= 1e-9 * np.abs(pressures[0]).max()
+
+
+def test_a_rotation_centre_given_in_the_meshes_millimetres_is_refused_in_one_line(tmp_path, capsys):
+    """units = "mm" applies to the mesh files; partner.center is in metres. A centre of [10, 10] meant in
+    millimetres ran silently at 141 m/s; a centre farther from the partner's mesh than its size is refused."""
+    from stickslip.cli import run
+
+    text = _run_config(tmp_path).read_text().replace("velocity = [1.0, 0.0]", "omega = 10.0\ncenter = [10.0, 10.0]")
+    config = tmp_path / "far.toml"
+    config.write_text(text)
+    assert run(["fem", "steady", str(config)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "partner.center = [10.0, 10.0]" in err and "in metres" in err, err

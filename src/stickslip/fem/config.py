@@ -434,6 +434,16 @@ def _partner(problems, path: Path, p: dict, dimension: int = 2, units: str | Non
                      + [(f"partner.rollers.{r}", r) for r in rollers]
                      if isinstance(name, str) and name not in body.groups]
         _cell_groups(problems, body, materials, "partner.material")
+        if isinstance(motion, Rotation):  # a disc turns about its own axis: a centre far off is a unit slip
+            xy = np.asarray(body.points)[:, :2]
+            lo, hi = xy.min(axis=0), xy.max(axis=0)
+            size = float(np.max(hi - lo))
+            off = np.maximum(np.maximum(lo - np.asarray(motion.center), np.asarray(motion.center) - hi), 0.0)
+            if float(np.hypot(*off)) > size:
+                problems.append(f"partner.center = {list(motion.center)} must be within the partner's size "
+                                f"({size:.4g} m) of its mesh, which spans x {lo[0]:.4g} to {hi[0]:.4g} m and y "
+                                f"{lo[1]:.4g} to {hi[1]:.4g} m (the centre is in metres: units apply to the mesh "
+                                "files only)")
     if None in (motion, body) or not materials or not isinstance(group, str) or group not in body.groups \
             or any(m is None for m in materials.values()):
         return None
