@@ -116,7 +116,7 @@ def test_a_stiff_heavy_partner_reproduces_the_pad_on_a_rigid_flat(bodies, laws):
     assert errors[1] <= 10 / 1e3 and errors[0] >= 5 * errors[1], errors
 
 
-def _linear_growth(scheme):
+def linear_growth(scheme):
     """The growth rate of a run from steady sliding perturbed by 1e-9, fitted to the energy's
     second half while every contact node slips (the linear regime)."""
     start = perturbed_steady_body(scheme, 1e-9, 0)
@@ -143,7 +143,7 @@ def test_a_run_grows_at_the_rate_of_the_ceas_most_unstable_mode(bodies):
     assert s.real > 1e3
     scheme = PairScheme(problem, beta2=0.5)
     expected = discrete_rates(np.array([-s**2]), scheme.dt, 0.5)[0].real
-    assert _linear_growth(scheme) == pytest.approx(expected, rel=1e-3)
+    assert linear_growth(scheme) == pytest.approx(expected, rel=1e-3)
 
 
 @pytest.mark.slow
@@ -153,7 +153,7 @@ def test_the_runs_growth_converges_to_the_ceas_at_second_order(bodies):
     problem = _pair(bodies)
     modes = complex_eigenvalues(problem, (0.0, 3e5), count=40)
     exact = modes.growth_rate.max()
-    errors = [abs(_linear_growth(PairScheme(problem, beta2=0.5, courant=c)) / exact - 1) for c in (0.9, 0.3)]
+    errors = [abs(linear_growth(PairScheme(problem, beta2=0.5, courant=c)) / exact - 1) for c in (0.9, 0.3)]
     assert 9 * 0.7 <= errors[0] / errors[1], errors  # dt / 3: at least 0.7 of second order's 9
 
 

@@ -43,6 +43,7 @@ from stickslip.fem.pair_run3 import SolidPairRun, SolidPairScheme
 from stickslip.fem.run import perturbed_steady_body
 from stickslip.fem.solid import assemble_solid, solid_from_meshio
 
+from .test_pair_run import linear_growth
 from .test_solid import box
 
 L, H, T = 0.02, 0.01, 0.008  # the pad's side, the block's and the pad's thickness [m]
@@ -142,23 +143,6 @@ def test_the_cea_with_transverse_damping_has_the_closed_forms_decay():
         assert abs(s.imag) == pytest.approx(omega if transverse else np.sqrt(k / m), rel=1e-3)
 
 
-def _linear_growth(scheme):
-    """The growth rate of a run from steady sliding perturbed by 1e-9, fitted to the energy's second
-    half while every contact node slips (the linear regime)."""
-    start = perturbed_steady_body(scheme, 1e-9, 0)
-    state, out = scheme.initial_state(start.u, start.v), scheme.new_output()
-    ref, chunk, energy = scheme.steady_reference()[0], max(1, int(2e-6 / scheme.dt)), []
-    while len(energy) < 5000:
-        scheme.advance(state, chunk, True, out)
-        energy.append(sum(scheme.energies(out.u_prev, state.u, ref)))
-        if (out.state != SLIP_POS).any():
-            break
-    t = chunk * scheme.dt * np.arange(1, len(energy) + 1)
-    keep = slice(len(energy) // 2, len(energy) - 2)
-    assert len(energy) > 200
-    return np.polyfit(t[keep], np.log(energy[keep]), 1)[0] / 2
-
-
 @pytest.mark.slow
 def test_a_run_of_two_solids_grows_at_the_rate_of_the_ceas_most_unstable_mode(pressed):
     problem = dataclasses.replace(pressed, transverse_damping=True)
@@ -170,7 +154,7 @@ def test_a_run_of_two_solids_grows_at_the_rate_of_the_ceas_most_unstable_mode(pr
     for courant in (0.9, 0.3):
         scheme = SolidPairScheme(problem, beta2=0.5, courant=courant)
         expected = discrete_rates(np.array([-s**2]), scheme.dt, 0.5)[0].real
-        growth = _linear_growth(scheme)
+        growth = linear_growth(scheme)
         errors.append(abs(growth / expected - 1))
     assert errors[0] / errors[1] >= 3 * 0.7 and errors[1] <= 0.06, errors  # first order in dt at least
     assert abs(growth - s.real) < abs(growth - without)  # nearer the disc's linearisation than the fixed direction

@@ -290,13 +290,18 @@ class PairScheme(FemScheme):
             normal, tangent, np.ascontiguousarray(nv), np.ascontiguousarray(tv), ptr, dof, w, 1.0 / self.mass, gap0,
             speed, nsteps, self.dt, self.beta2, f, self.static_friction, self.kernel_law,
             bool(contact), out.lam_n, out.lam_t, out.state, out.u_prev, MAX_SWEEPS)
-        object.__setattr__(self, "last_sweeps", int(sweeps))  # the most Gauss-Seidel sweeps a step of the call took
+        self.check_sweeps(sweeps)
+        return out
+
+    def check_sweeps(self, sweeps: int) -> None:
+        """Keep the most Gauss-Seidel sweeps a step of the last call took (``last_sweeps``); refuse a step
+        whose contact forces did not converge."""
+        object.__setattr__(self, "last_sweeps", int(sweeps))
         if sweeps > MAX_SWEEPS:
             raise NoSolutionError(f"the contact forces between the bodies did not converge in {MAX_SWEEPS} "
                                   "Gauss-Seidel sweeps in a step (a partner far lighter than the pad's nodes, or a "
                                   "step too long for the contact's stiffness); a run's checkpoint keeps its last "
                                   "good sample")
-        return out
 
     # --- time and the contact line ---------------------------------------------------------
     @cached_property

@@ -36,7 +36,7 @@ import scipy.sparse as sp
 
 from ..contact.coupled3 import coupled_advance3
 from ..contact.scheme import StepOutput, StepState
-from ..errors import NoSolutionError, ParameterError
+from ..errors import ParameterError
 from ..quantities import COMMON
 from .pair import Rotation
 from .pair_run import MAX_SWEEPS, SOLVERS, PairRun, PairScheme, check_supports
@@ -227,12 +227,7 @@ class SolidPairScheme(PairScheme):
             state.u, state.v, state.a, self._dofs, self._frame, ptr, dof, w, 1.0 / self.mass, gap0, speed, nsteps,
             self.dt, self.beta2, f, self.static_friction, self.kernel_law, bool(contact), out.forces, out.state,
             out.u_prev, MAX_SWEEPS)
-        object.__setattr__(self, "last_sweeps", int(sweeps))
-        if sweeps > MAX_SWEEPS:
-            raise NoSolutionError(f"the contact forces between the solids did not converge in {MAX_SWEEPS} "
-                                  "Gauss-Seidel sweeps in a step (a partner far lighter than the pad's nodes, or a "
-                                  "step too long for the contact's stiffness); a run's checkpoint keeps its last "
-                                  "good sample")
+        self.check_sweeps(sweeps)
         return out
 
     # --- the contact surface as a line (see the module docstring) ----------------------------

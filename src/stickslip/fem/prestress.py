@@ -20,7 +20,7 @@ import scipy.sparse as sp
 
 from ..errors import ParameterError
 from ..quantities import FEM as Q
-from .solid import VOIGT, SolidSystem, skfem_mesh
+from .solid import VOIGT, SolidSystem, skfem_mesh, split_held
 from .solid_stress import voigt_stiffness
 
 __all__ = ["centrifugal_stiffness"]
@@ -34,24 +34,12 @@ def centrifugal_stiffness(system: SolidSystem, omega: float, center=(0.0, 0.0), 
     from scipy.sparse.linalg import splu
     from skfem import Basis, BilinearForm, LinearForm, asm
 
-    if not isinstance(system, SolidSystem):
-        raise ParameterError("system", system, "a SolidSystem (assemble_solid)")
     omega = Q.check("omega", omega)
     cx, cy = Q["center"].check_pair(center, "center")
+    n, held, free = split_held(system, held)
     solid = system.solid
     mesh, element, ours, _ = skfem_mesh(solid)
-    n = 3 * len(solid.points)
     to_ours = sp.csr_array((np.ones(n), (ours, np.arange(n))), shape=(n, n))
-    try:
-        given = np.asarray(held).ravel()
-    except (TypeError, ValueError):
-        given = np.asarray([None])
-    if given.size and not np.issubdtype(given.dtype, np.integer):
-        raise ParameterError("held", f"{given.size} values of type {given.dtype}", "integer indices of degrees of "
-                             "freedom (supported_dofs gives them)")
-    held = np.unique(given.astype(np.int64))
-    if held.size and (held.min() < 0 or held.max() >= n):
-        raise ParameterError("held", f"{held.size} indices", f"degrees of freedom of the solid (0 to {n - 1})")
     parts = []
     force = np.zeros(n)
     for name, m in system.materials.items():
@@ -65,7 +53,6 @@ def centrifugal_stiffness(system: SolidSystem, omega: float, center=(0.0, 0.0), 
 
         force += to_ours @ asm(spun, basis)
         parts.append((basis, m))
-    free = np.setdiff1d(np.arange(n), held)
     u0 = np.zeros(n)
     if omega != 0.0:
         try:

@@ -42,7 +42,7 @@ from .assembly import Material
 from .body import named_sets
 
 __all__ = ["Solid", "SolidSystem", "OrthotropicSolid", "read_solid", "solid_from_meshio", "assemble_solid",
-           "supported_dofs", "solid_modes", "solid_static", "solid_damped_modes", "skfem_mesh", "VOLUME_KINDS",
+           "supported_dofs", "solid_modes", "solid_static", "solid_damped_modes", "skfem_mesh", "split_held", "VOLUME_KINDS",
            "UNITS"]
 
 #: meshio volume cells read, and the faces of their boundary groups.
@@ -545,7 +545,7 @@ def _lumped(solid: Solid, cells: np.ndarray, density: float, consistent) -> np.n
     return mass
 
 
-def _held(system, held) -> tuple:
+def split_held(system, held) -> tuple:
     """``(n, held, free)``: the solid's degrees of freedom, those ``held`` (checked) and the others."""
     if not isinstance(system, SolidSystem):
         raise ParameterError("system", system, "a SolidSystem (assemble_solid)")
@@ -568,7 +568,7 @@ def solid_static(system: SolidSystem, held=()) -> np.ndarray:
     (every degree of freedom; a sparse direct solve). A solid free to move as a rigid body is refused."""
     from scipy.sparse.linalg import splu
 
-    n, held, free = _held(system, held)
+    n, held, free = split_held(system, held)
     r = system.solid.points - system.solid.points.mean(axis=0)
     rigid = np.zeros((len(r), 3, 6))  # the six rigid motions: three translations, three rotations w x r
     rigid[:, [0, 1, 2], [0, 1, 2]] = 1.0
@@ -611,7 +611,7 @@ def solid_modes(system: SolidSystem, held=(), count: int = 6, mass: str = "lumpe
     out near 0 Hz."""
     from scipy.sparse.linalg import eigsh
 
-    n, held, free = _held(system, held)
+    n, held, free = split_held(system, held)
     k = checked_count("count", count, max(1, min(len(free) - 1, 500)), "modes")
     if mass not in ("lumped", "consistent"):
         raise ParameterError("mass", mass, "'lumped' or 'consistent'")
@@ -632,7 +632,7 @@ def solid_damped_modes(system: SolidSystem, held=(), near: float = 0.0, count: i
     of the CEA, `stickslip.fem.cea.eigenvalues_near`), one of each conjugate pair, by frequency."""
     from .cea import eigenvalues_near
 
-    n, held, free = _held(system, held)
+    n, held, free = split_held(system, held)
     near = Q.check("near", near)
     k = checked_count("count", count, max(1, min(len(free) - 2, 500)), "modes")
     Kf, Cf = sp.csc_array(system.K[free][:, free]), sp.csc_array(system.damping[free][:, free])
