@@ -105,6 +105,29 @@ def test_a_config_in_millimetres_passes_the_patch_test_with_its_rollers(tmp_path
     assert sliding.friction_force == pytest.approx(0.3 * P * (L / 1000) ** 2, rel=1e-8)
 
 
+def test_a_config_turned_about_z_with_its_rollers_along_the_turned_faces_passes_the_patch_test(tmp_path):
+    """Both meshes turned 0.6 rad about z, the sliding too, each roller given as the turned normal of its
+    face (``rollers = { x0 = [c, s, 0] }``): every multiplier is p (1e-8), the normal load p L^2."""
+    c, s = float(np.cos(0.6)), float(np.sin(0.6))
+    config = write(tmp_path)
+    for name in ("pad.msh", "block.msh"):
+        mesh = meshio.read(tmp_path / name)
+        turned = mesh.points @ np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]).T
+        mesh = meshio.read(tmp_path / name)
+        mesh.points = turned
+        meshio.write(tmp_path / name, mesh, file_format="gmsh22", binary=False)
+    x, y = f"[{c!r}, {s!r}, 0.0]", f"[{-s!r}, {c!r}, 0.0]"
+    text = (config.read_text().replace('x0 = "x", y0 = "y", z0 = "z" }', f'x0 = {x}, y0 = {y}, z0 = "z" }}')
+            .replace('x0 = "x", y0 = "y" }', f"x0 = {x}, y0 = {y} }}")
+            .replace("velocity = [1.0, 0.0]", f"velocity = [{c!r}, {s!r}]"))
+    config.write_text(text)
+    assert text.count("x0 = [") == 2
+    steady = steady_pair(load_config(config, {"contact.friction": 0.0}).problem())
+    assert steady.active.all()
+    assert np.max(np.abs(steady.pressure / P - 1.0)) < 1e-8
+    assert steady.normal_force == pytest.approx(P * (L / 1000) ** 2, rel=1e-8)
+
+
 def test_springs_on_the_pressed_face_take_their_share_of_the_load_as_the_closed_form_says(tmp_path):
     """Springs of total stiffness k along z on the pad's pressed face (with the pressure p): the state stays
     uniform, the contact pressure p_c = p / (1 + k (T / E_pad + H / E_block) / A), the springs carrying
@@ -188,6 +211,9 @@ def test_a_2d_mesh_in_a_3d_config_and_a_3d_mesh_in_a_2d_config_are_named(tmp_pat
     (("pressure = 2e6", "pressure = 2e6\ntraction = [1e5, 0.0]"), ["load[0].traction", "three numbers"]),
     (('x0 = "x", y0 = "y" }', 'x0 = "w", y0 = "y" }'), ["rollers.x0 = 'w' must be"]),
     (('x0 = "x", y0 = "y" }', 'x0 = "x", side = "y" }'), ["rollers.side = 'side' is not a boundary group"]),
+    (('x0 = "x", y0 = "y" }', 'x0 = [0.0, 0.0, 0.0], y0 = "y" }'), ["rollers.x0 = [0.0, 0.0, 0.0] must be",
+                                                                    "a direction of 3 finite numbers"]),
+    (('x0 = "x", y0 = "y" }', 'x0 = [1.0, 2.0], y0 = "y" }'), ["rollers.x0 = [1.0, 2.0] must be"]),
     (("[cea]", "[cea]\nreduced_modes = 10\ncontact_model = \"constraint\""), ["contact_model = \"constraint\""]),
 ])
 def test_bad_3d_configs_are_refused_in_one_line_naming_the_key(tmp_path, capsys, change, fragments):

@@ -2,7 +2,8 @@
 `stickslip.fem.pair`, against exact solutions and an independently assembled pencil.
 
 * The contact patch test: a lining on a steel block, their interface meshes not matching (5 x 3
-  against 3 x 4 cells; tetrahedra, hexahedra, quadratic tetrahedra on either side), on rollers and
+  against 3 x 4 cells; tetrahedra, hexahedra, quadratic tetrahedra and hexahedra of 20 and 27 nodes on
+  either side), on rollers and
   pressed by a uniform pressure p: the exact state is uniform, sigma_zz = -p in both, so every
   multiplier is p. Threshold, set before the run: 1e-8 relative (round-off of the solves).
 * The CEA of a pad on a block (matching interface, linear tetrahedra) against a dense solve of
@@ -25,6 +26,7 @@ from stickslip.fem.solid import assemble_solid, solid_from_meshio
 
 from .meshes import rectangle
 from .test_solid import tet_stiffness, box, quadratic
+from .test_solid_quadratic_hex import quadratic_hex
 
 STEEL = Material(young=2.1e11, poisson=0.3, density=7850.0)
 LINING = Material(young=5e9, poisson=0.25, density=2500.0)
@@ -32,14 +34,17 @@ L, H, T = 0.02, 0.015, 0.008  # the footprint's side, the block's and the lining
 
 
 def solid_mesh(cells, kind, height, lift=0.0):
-    mesh = box((L, L, height), cells, "tetra" if kind == "tetra10" else kind)
+    mesh = box((L, L, height), cells, "tetra" if kind == "tetra10" else kind[:10])
     mesh = quadratic(mesh) if kind == "tetra10" else mesh
+    mesh = quadratic_hex(mesh, int(kind[10:])) if kind[10:] else mesh
     mesh.points[:, 2] += lift
     return mesh
 
 
 @pytest.mark.parametrize("lining, block", [("tetra", "tetra"), ("hexahedron", "tetra"), ("tetra10", "tetra"),
-                                           ("tetra", "tetra10"), ("tetra10", "hexahedron")])
+                                           ("tetra", "tetra10"), ("tetra10", "hexahedron"),
+                                           ("hexahedron20", "tetra"), ("hexahedron27", "hexahedron20"),
+                                           ("tetra10", "hexahedron27")])
 def test_a_uniform_pressure_passes_a_non_matching_3d_interface_exactly(lining, block):
     p = 2e6
     pad = solid_from_meshio(solid_mesh((5, 3, 2), lining, T, lift=H), "lining", units="m")

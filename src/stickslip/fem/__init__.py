@@ -27,10 +27,12 @@
 * `prestress`: the stress stiffening of a turning solid's centrifugal prestress (`centrifugal_stiffness`;
   a pair's ``prestress``);
 * `config`: the TOML config of `stickslip fem steady | cea | run`;
-* `solid`: a 3-D elastic body (linear tetrahedra or hexahedra, a material per cell group, its
-  length unit stated), its stiffness and lumped mass, clamps and rollers on face groups and its
-  modes (`read_solid`, `assemble_solid`, `supported_dofs`, `solid_modes`, `solid_static`; orthotropic
-  linings, `OrthotropicSolid`);
+* `solid`: a 3-D elastic body (tetrahedra or hexahedra, linear or quadratic, a material per cell group,
+  its length unit stated), its stiffness and lumped mass, clamps and rollers on face groups and its
+  modes (`read_solid`, `assemble_solid`, `supported_dofs`, `solid_supports`, `solid_modes`,
+  `solid_static`; orthotropic linings, `OrthotropicSolid`);
+* `supports`: the held degrees of freedom of a body or a pair, rollers along coordinate axes or along
+  any direction (nodes in frames of their own, `Supports`);
 * `cad`: a STEP file's solids meshed in metres by gmsh's OpenCASCADE kernel (`mesh_step`);
 * `mortar3`: the mortar coupling of two solids' faces (`PairProblem` takes two solids: steady sliding
   and the full CEA as for 2-D bodies);
@@ -50,7 +52,8 @@ from .pair_run3 import SolidPairRun, SolidPairScheme
 from .run import BodyInitial, BodyRun, classify_body, integrate_body, perturbed_steady_body, preload_body
 from .scheme import BodyScheme, ContactProblem
 from .solid import (OrthotropicSolid, Solid, SolidSystem, assemble_solid, read_solid, solid_damped_modes,
-                    solid_from_meshio, solid_modes, solid_static, supported_dofs)
+                    solid_from_meshio, solid_modes, solid_static, solid_supports, supported_dofs)
+from .supports import Supports
 from .reduced import ModalBasis, modal_basis, reduced_modes, reduced_sweep
 from .shares import energy_shares
 from .static import SteadyContact, steady_contact
@@ -65,4 +68,4 @@ __all__ = ["Body", "read_body", "body_from_meshio", "CELL_KINDS", "Material", "B
            "integrate_pair", "ModalBasis", "modal_basis", "reduced_modes", "reduced_sweep", "energy_shares",
            "write_modes_uff", "Solid", "SolidSystem", "read_solid", "solid_from_meshio", "assemble_solid",
            "supported_dofs", "solid_modes", "solid_static", "OrthotropicSolid", "solid_damped_modes", "SolidPairScheme",
-           "SolidPairRun"]
+           "SolidPairRun", "solid_supports", "Supports"]

@@ -1,12 +1,13 @@
 """What a config (`stickslip.fem.config`) says differently for two solids in contact, ``dimension = 3``
 (a pad with its backplate on a disc, `stickslip.fem.solid` and `stickslip.fem.pair`)::
 
-    dimension = 3                   # solids: tetrahedra (linear or quadratic) or linear hexahedra
+    dimension = 3                   # solids: tetrahedra or hexahedra (linear or quadratic)
     units = "mm"                    # the length unit of both meshes' coordinates: "m" or "mm" (no default)
     mesh = "pad.msh"                # face groups (gmsh physical surfaces) where supports and contact act
     clamped = ["piston"]            # face groups held fixed (optional)
-    rollers = { side = "x" }        # face groups held along coordinate axes: "x", "y", "z" or several, "xz"
-                                    # (a symmetry plane, a sliding support; optional, the partner's too)
+    rollers = { side = "x" }        # face groups held along coordinate axes: "x", "y", "z" or several, "xz",
+                                    # or along a direction, { flank = [0.6, 0.8, 0.0] } (a symmetry plane, a
+                                    # sliding support, at any angle; optional, the partner's too)
 
     [[material]]                    # one per cell group, or one [material] for the whole body (no plane in 3-D)
     group = "lining"                # isotropic: young, poisson, density, alpha, beta, loss_factor; or orthotropic:
@@ -41,7 +42,7 @@ from ..quantities import FEM as Q
 from .assembly import Material
 from .body import body_from_meshio, read_meshio
 from .checks import number, problem_text, toml
-from .solid import AXES, UNITS, VOLUME_KINDS, OrthotropicSolid, solid_from_meshio
+from .solid import UNITS, VOLUME_KINDS, OrthotropicSolid, solid_from_meshio
 
 __all__ = ["dimension_of", "units_of", "read_mesh", "solid_materials", "rollers_of", "reduced_of", "VOLUME_CELLS"]
 
@@ -149,20 +150,26 @@ def solid_materials(problems, tables: list, key: str) -> dict:
 
 
 def rollers_of(problems, value, where: str, dimension: int) -> dict:
-    """``{face group: axes}`` of ``rollers = { group = "x" }`` (each axis once)."""
+    """``{face group: axes or direction}`` of ``rollers = { group = "x" }`` (each axis once) or
+    ``{ group = [dx, dy, dz] }`` (a direction of ``dimension`` numbers, not all 0)."""
+    from .supports import direction_of
+
     if value is None:
         return {}
-    axes = "".join(list(AXES)[:dimension])
     if not isinstance(value, dict):
         problems.append(f"{where} = {toml(value)} must be a table of groups and axes, e.g. {where} = {{ side = \"x\" }}")
         return {}
     out = {}
     for group, ax in value.items():
-        if not isinstance(ax, str) or not ax or any(a not in axes for a in ax) or len(set(ax)) < len(ax):
-            problems.append(f"{where}.{group} = {toml(ax)} must be the axes it is held along, each of {', '.join(axes)} "
-                            "at most once (\"x\", \"xz\")")
+        try:
+            direction_of(ax, dimension, f"{where}.{group}")
+        except ParameterError:
+            example = ", ".join(["0.6", "0.8", "0.0"][:dimension])
+            problems.append(f"{where}.{group} = {toml(ax)} must be the axes it is held along, each of "
+                            f"{', '.join('xyz'[:dimension])} at most once (\"x\", \"xz\"), or a direction of "
+                            f"{dimension} finite numbers, not all 0 ([{example}])")
         else:
-            out[group] = ax
+            out[group] = list(map(float, ax)) if isinstance(ax, list) else ax
     return out
 
 

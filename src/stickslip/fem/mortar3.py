@@ -5,15 +5,18 @@ exactly (the contact patch test), which one-pass node-to-surface fails; and with
 the contact conditions stay node by node.
 
 **Faces.** A group's faces are the cells' own: flat triangles (``tetra``), bilinear quadrilaterals
-(``hexahedron``) or quadratic triangles (``tetra10``; their corners span the plane used to
-integrate, so a curved quadratic face is integrated flat). On each slave face the multiplier is
+(``hexahedron``), quadratic triangles (``tetra10``) or quadrilaterals of 8 (``hexahedron20``) or 9
+(``hexahedron27``) nodes (their corners span the plane used to integrate, so a curved quadratic face is
+integrated flat). On each slave face the multiplier is
 ``sum_j phi_j lambda_j`` with dual functions ``phi_j = sum_k A_jk Nt_k`` biorthogonal to the face's
 ``Nt`` (``A = D_e M_e^-1``, ``M_e = int Nt Nt^T``, ``D_e`` the diagonal of ``int Nt``): ``Nt = N``, the
 face's shape functions, on linear and bilinear faces, so that ``D_jk = int phi_j N_k = delta_jk int N_j``
-is diagonal; on a quadratic triangle, whose corners' ``int N_j`` are 0, the shape functions
-transformed as in Popp, Wohlmuth, Gee and Wall (2012): ``Nt_corner = N_corner + a (N of its two edge
-middles)``, ``Nt_middle = (1 - 2 a) N_middle``, ``a = 1/5``; there ``D_jk = int phi_j N_k`` couples a face's
-nodes (still positive row sums ``int Nt_j``, the node's share of the area).
+is diagonal, and so on a 9-node quadrilateral (every ``int N_j`` positive: 1/36, 1/9 and 4/9 of a
+parallelogram's area); on a quadratic triangle and an 8-node quadrilateral, whose corners' ``int N_j`` are
+0 and negative (-1/12 of the area), the shape functions transformed as in Popp, Wohlmuth, Gee and Wall
+(2012): ``Nt_corner = N_corner + a (N of its two edge middles)``, ``Nt_middle = (1 - 2 a) N_middle``,
+``a = 1/5``; there ``D_jk = int phi_j N_k`` couples a face's nodes (still positive row sums ``int Nt_j``,
+the node's share of the area).
 
 **Integration.** The master faces near a slave face are projected onto its plane along its normal
 and clipped against it (Sutherland-Hodgman, both convex), and ``M_jl = int phi_j N_l`` is integrated
@@ -39,7 +42,12 @@ __all__ = ["solid_mortar", "outward_faces", "face_shapes", "TRANSFORM"]
 #: Popp et al.'s weight of a quadratic triangle's edge middles in its corners' transformed functions.
 TRANSFORM = 0.2
 #: Each face kind (by its node count) turned round: its normal reversed (meshio's numbering).
-_TURN = {3: [0, 2, 1], 4: [0, 3, 2, 1], 6: [0, 2, 1, 5, 4, 3]}
+_TURN = {3: [0, 2, 1], 4: [0, 3, 2, 1], 6: [0, 2, 1, 5, 4, 3], 8: [0, 3, 2, 1, 7, 6, 5, 4],
+         9: [0, 3, 2, 1, 7, 6, 5, 4, 8]}
+#: The corners of a face of each node count.
+CORNERS = {3: 3, 4: 4, 6: 3, 8: 4, 9: 4}
+#: The two edge middles next to each corner of the quadratic faces whose shape functions are transformed.
+_NEXT = {6: ((3, 5), (3, 4), (4, 5)), 8: ((4, 7), (4, 5), (5, 6), (6, 7))}
 
 
 def _rule():
@@ -51,12 +59,12 @@ def _rule():
 
 
 def outward_faces(solid, group: str, option: str = "group") -> np.ndarray:
-    """The faces of ``group`` of ``solid`` (``(f, 3 | 4 | 6)`` node indices), each turned so that its
+    """The faces of ``group`` of ``solid`` (``(f, 3 | 4 | 6 | 8 | 9)`` node indices), each turned so that its
     corners go round counter-clockwise seen from outside the solid (away from the cell it bounds)."""
     solid.nodes(group, option)  # a group it has
     faces = np.asarray(solid.faces[group])
-    corners = 4 if faces.shape[1] == 4 else 3
-    cells = solid.cells[:, :4] if solid.kind.startswith("tetra") else solid.cells
+    corners = CORNERS[faces.shape[1]]
+    cells = solid.cells[:, :4] if solid.kind.startswith("tetra") else solid.cells[:, :8]
     n = len(solid.points)
     rows = np.repeat(np.arange(len(cells)), cells.shape[1])
     incidence = sp.csr_array((np.ones(rows.size), (cells.ravel(), rows)), shape=(n, len(cells)))
@@ -78,7 +86,7 @@ def outward_faces(solid, group: str, option: str = "group") -> np.ndarray:
 
 def _normals(p: np.ndarray, faces: np.ndarray) -> np.ndarray:
     """Each face's normal by its corners (a quadrilateral's by its diagonals), not unit."""
-    if faces.shape[1] == 4:
+    if CORNERS[faces.shape[1]] == 4:
         return np.cross(p[faces[:, 2]] - p[faces[:, 0]], p[faces[:, 3]] - p[faces[:, 1]])
     return np.cross(p[faces[:, 1]] - p[faces[:, 0]], p[faces[:, 2]] - p[faces[:, 0]])
 
@@ -86,10 +94,22 @@ def _normals(p: np.ndarray, faces: np.ndarray) -> np.ndarray:
 def face_shapes(size: int, xi: np.ndarray) -> np.ndarray:
     """The shape functions ``(q, size)`` of a face of ``size`` nodes at local points ``xi`` ``(q, 2)``:
     a triangle's barycentric ``(xi, eta)`` (linear, or quadratic with meshio's edge middles 01, 12,
-    20), a quadrilateral's ``[-1, 1]^2`` (bilinear, corners counter-clockwise from ``(-1, -1)``)."""
+    20), a quadrilateral's ``[-1, 1]^2`` (bilinear, corners counter-clockwise from ``(-1, -1)``; of 8
+    nodes, serendipity, or 9, biquadratic, with the edge middles 01, 12, 23, 30 and the centre)."""
     x, y = xi[:, 0], xi[:, 1]
     if size == 4:
         return 0.25 * np.column_stack([(1 - x) * (1 - y), (1 + x) * (1 - y), (1 + x) * (1 + y), (1 - x) * (1 + y)])
+    if size == 9:  # products of the 1-D quadratics at -1, 0, 1
+        qx = np.column_stack([0.5 * x * (x - 1), 1 - x * x, 0.5 * x * (x + 1)])
+        qy = np.column_stack([0.5 * y * (y - 1), 1 - y * y, 0.5 * y * (y + 1)])
+        at = [(0, 0), (2, 0), (2, 2), (0, 2), (1, 0), (2, 1), (1, 2), (0, 1), (1, 1)]
+        return np.column_stack([qx[:, i] * qy[:, j] for i, j in at])
+    if size == 8:
+        sx, sy = np.array([-1, 1, 1, -1]), np.array([-1, -1, 1, 1])
+        corner = [0.25 * (1 + a * x) * (1 + b * y) * (a * x + b * y - 1) for a, b in zip(sx, sy)]
+        middle = [0.5 * (1 - x * x) * (1 - y), 0.5 * (1 + x) * (1 - y * y), 0.5 * (1 - x * x) * (1 + y),
+                  0.5 * (1 - x) * (1 - y * y)]
+        return np.column_stack(corner + middle)
     L = np.column_stack([1.0 - x - y, x, y])
     if size == 3:
         return L
@@ -98,15 +118,16 @@ def face_shapes(size: int, xi: np.ndarray) -> np.ndarray:
 
 
 def _transformed(N: np.ndarray) -> np.ndarray:
-    """The functions the dual basis is biorthogonal to: ``N`` itself, or on a quadratic triangle
-    Popp et al.'s transformed ones (see the module docstring)."""
-    if N.shape[1] != 6:
+    """The functions the dual basis is biorthogonal to: ``N`` itself, or on a quadratic triangle and
+    an 8-node quadrilateral Popp et al.'s transformed ones (see the module docstring)."""
+    if N.shape[1] not in _NEXT:
         return N
     a = TRANSFORM
     out = N.copy()
-    for corner, (m1, m2) in enumerate(((3, 5), (3, 4), (4, 5))):
+    corners = CORNERS[N.shape[1]]
+    for corner, (m1, m2) in enumerate(_NEXT[N.shape[1]]):
         out[:, corner] += a * (N[:, m1] + N[:, m2])
-    out[:, 3:] *= 1.0 - 2.0 * a
+    out[:, corners:] *= 1.0 - 2.0 * a
     return out
 
 
@@ -179,7 +200,7 @@ def solid_mortar(slave, slave_group: str, master, master_group: str, reach: floa
     s_faces = outward_faces(slave, slave_group, "slave_group")
     m_faces = outward_faces(master, master_group, "master_group")
     xs, xm = slave.points, master.points
-    sc, mc = (4 if f.shape[1] == 4 else 3 for f in (s_faces, m_faces))
+    sc, mc = (CORNERS[f.shape[1]] for f in (s_faces, m_faces))
     nodes = np.unique(s_faces)
     where = np.full(len(xs), -1)
     where[nodes] = np.arange(len(nodes))

@@ -78,6 +78,7 @@ from .mortar2 import quadratic_mortar
 from .mortar3 import solid_mortar
 from .prestress import centrifugal_stiffness
 from .solid import Solid, SolidSystem
+from .supports import Supports, direction_of, supports_from
 from .static import ITERATIONS, PRESSURE_ITERATIONS, held_factor, settled, within_friction
 from .surfaces import MAX_SPEED
 
@@ -450,13 +451,11 @@ class PairProblem:
     def displacements(self, shapes: np.ndarray) -> np.ndarray:
         """Mode shapes on the free dofs (columns: a CEA's, full or reduced; multipliers after them are
         left out) as displacements of every dof of both bodies, the held ones 0."""
-        free = np.flatnonzero(~self.fixed)
+        free = self.supports.free
         if shapes.ndim != 2 or shapes.shape[0] < free.size:
             raise ParameterError("modes", f"shapes of {shapes.shape[0]} dofs", f"the modes of this problem "
                                  f"({free.size} free dofs)")
-        w = np.zeros((self.slave.n_dofs + self.master.n_dofs, shapes.shape[1]), dtype=complex)
-        w[free] = shapes[:free.size]
-        return w
+        return self.supports.expand(np.asarray(shapes[:free.size], dtype=complex))
 
     @property
     def dimension(self) -> int:
@@ -493,26 +492,32 @@ class PairProblem:
         return self.slave.n_dofs
 
     @cached_property
+    def supports(self) -> Supports:
+        """Both bodies' supports (slave first; `stickslip.fem.supports`): clamps, and rollers along
+        coordinate axes or along any direction (a node's degrees of freedom then in its own frame)."""
+        n_slave = len(self.slave.body.points)
+        held = self._held("slave", 0) + self._held("master", n_slave)
+        return supports_from(n_slave + len(self.master.body.points), self.dimension, held)
+
+    def _held(self, who: str, offset: int) -> list:
+        """``[(nodes + offset, directions)]`` of the body ``who``'s clamps and rollers."""
+        system, dim, held = getattr(self, who), self.dimension, []
+        for name in getattr(self, f"clamped_{who}"):
+            held.append((offset + system.body.nodes(name, f"clamped_{who}"), list(np.eye(dim))))
+        rollers = getattr(self, f"rollers_{who}")
+        if rollers is None:
+            return held
+        if not isinstance(rollers, dict):
+            raise ParameterError(f"rollers_{who}", rollers, "{face group: axes or a direction} or None")
+        for name, axis in rollers.items():
+            where = f"rollers_{who}[{name}]"
+            held.append((offset + system.body.nodes(name, where), direction_of(axis, dim, where)))
+        return held
+
+    @property
     def fixed(self) -> np.ndarray:
-        mask = np.zeros(self.slave.n_dofs + self.master.n_dofs, bool)
-        dim = self.dimension
-        for system, who, offset in ((self.slave, "slave", 0), (self.master, "master", self.n_slave)):
-            for name in getattr(self, f"clamped_{who}"):
-                mask[offset + system.dofs(system.body.nodes(name, f"clamped_{who}"))] = True
-            rollers = getattr(self, f"rollers_{who}")
-            if rollers is None:
-                continue
-            if not isinstance(rollers, dict):
-                raise ParameterError(f"rollers_{who}", rollers, "{face group: axis} or None")
-            for name, axis in rollers.items():
-                where = f"rollers_{who}[{name}]"
-                if not isinstance(axis, str) or not axis or len(set(axis)) != len(axis) or \
-                        any(a not in "xyz"[:dim] for a in axis):
-                    raise ParameterError(where, axis, f"coordinate axes: {' or '.join('xyz'[:dim])}, or several "
-                                         "of them (\"xy\": held along both)")
-                for a in axis:
-                    mask[offset + dim * system.body.nodes(name, where) + "xyz".index(a)] = True
-        return mask
+        """The held degrees of freedom, each in its node's frame (`supports`)."""
+        return self.supports.held
 
     @cached_property
     def tangent(self) -> tuple[np.ndarray, np.ndarray]:
@@ -570,7 +575,7 @@ class PairProblem:
         (`stickslip.fem.prestress`, its supports held)."""
         master = self.master.K
         if self.prestress:
-            held = np.flatnonzero(self.fixed[self.n_slave:])
+            held = supports_from(len(self.master.body.points), 3, self._held("master", 0))
             master = master + centrifugal_stiffness(self.master, self.motion.omega, self.motion.center, held)[0]
         K = sp.block_diag([self.slave.K, master], format="csr")
         return K if self.transport is None else (K - self.transport[1]).tocsr()
@@ -612,9 +617,9 @@ class PairProblem:
     @cached_property
     def omega_max(self) -> float:
         """Largest free angular frequency [rad/s] of either body (Lanczos)."""
-        free = ~self.fixed
-        scale = sp.diags(1.0 / np.sqrt(self.mass[free]))
-        A = (scale @ self.K[free][:, free] @ scale).tocsc()
+        sup = self.supports
+        scale = sp.diags(1.0 / np.sqrt(sup.mass(self.mass)))
+        A = (scale @ sup.restrict(self.K) @ scale).tocsc()
         start = np.random.default_rng(0).standard_normal(A.shape[0])
         lam = sla.eigsh(A, k=1, which="LA", return_eigenvectors=False, tol=1e-10, v0=start)
         return float(np.sqrt(lam[0]) * (1.0 + 1e-6))
@@ -675,41 +680,42 @@ class PairProblem:
         st = self.steady
         if not st.loaded:
             raise NoSolutionError("steady sliding of the pair carries no contact force: press the bodies together")
-        free = np.flatnonzero(~self.fixed)
+        sup = self.supports
+        free = sup.free
         A = np.flatnonzero(st.active)
         c = self.constraint_scale
         g = self.factor(st.pressure[A])
         rate = 1.0 if self.pressure_law is None else self.pressure_law.rate
         # the friction force T^T (mu g lambda): d/d lambda = mu g (1 - n) per node
-        B = c * (self.G[A] + sp.diags(self.kinetic[A] * g * rate) @ self.T[A])[:, free]
-        G = c * self.G[A][:, free]
-        K = self.K[free][:, free]
+        B = c * sup.columns(self.G[A] + sp.diags(self.kinetic[A] * g * rate) @ self.T[A])
+        G = c * sup.columns(self.G[A])
+        K = sup.restrict(self.K)
         k = None if contact_model != "penalty" else penalty * float(np.abs(K.diagonal()).max())
         if self.S is not None:  # loss factors: K + i S (structural damping, in the frequency domain)
-            K = (K + 1j * self.S[free][:, free]).tocsr()
+            K = (K + 1j * sup.restrict(self.S)).tocsr()
         multipliers = 0 if contact_model == "penalty" else len(A)
         if contact_model == "penalty":  # lambda = -k W^-2 G u: the force B^T lambda on the left as k B^T W^-2 G
             K = (K + (k / c**2) * B.T @ sp.diags(1.0 / self.coupling.weight[A] ** 2) @ G).tocsr()
         else:
             K = sp.bmat([[K, -B.T], [G, None]], format="csr")
-        C = None if self.C is None else self.C[free][:, free]
+        C = None if self.C is None else sup.restrict(self.C)
         if self.law is not None:  # mu(V - (T u')_j / w_j): damping T^T diag(lambda g mu' / w) T (negative if falling)
-            T = self.T[A][:, free]
+            T = sup.columns(self.T[A])
             slip = T.T @ sp.diags(st.pressure[A] * g * self.slopes[A] / self.coupling.weight[A]) @ T
             C = slip if C is None else (C + slip).tocsr()
         if self.transverse_damping:  # the force turns with a slip across: -mu g lambda (B u')_j / (w_j V_j) along b
             coefficient = np.zeros(len(self.coupling.weight))
             coefficient[A] = self.kinetic[A] * g
-            turn = self.transverse_matrix(coefficient)[free][:, free]
+            turn = sup.restrict(self.transverse_matrix(coefficient))
             C = turn if C is None else (C + turn).tocsr()
         if C is not None and multipliers:
             C = sp.block_diag([C, sp.csr_matrix((multipliers, multipliers))], format="csr")
         if mass_matrix == "consistent":
-            mass = self.consistent_mass[free][:, free]
+            mass = sup.restrict(self.consistent_mass)
             if multipliers:
                 mass = sp.block_diag([mass, sp.csr_matrix((multipliers, multipliers))], format="csr")
         else:
-            mass = np.concatenate([self.mass[free], np.zeros(multipliers)])
+            mass = np.concatenate([sup.mass(self.mass), np.zeros(multipliers)])
         return K, C, mass, free
 
     @cached_property
@@ -724,6 +730,8 @@ class PairProblem:
                 h.update(np.ascontiguousarray(arr).tobytes())
         for arr in (c.slave_nodes, c.normal, c.D.data, c.M.indptr, c.M.indices, c.M.data, t, speed, self.fixed):
             h.update(np.ascontiguousarray(arr).tobytes())
+        if self.supports.rotation is not None:  # rollers along directions: their frames
+            h.update(np.ascontiguousarray(self.supports.rotation.data).tobytes())
         h.update(repr((self.friction, self.gyroscopic, self.prestress, self.static_friction, repr(self.law),
                        None if self.pressure_law is None else (self.pressure_law.reference, self.pressure_law.exponent))
                       ).encode())
@@ -813,8 +821,9 @@ def steady_pair(problem: PairProblem, max_iterations: int | None = None) -> Pair
     weight = c.weight
     max_iterations = max(ITERATIONS, 2 * len(weight)) if max_iterations is None else \
         Q.check("max_iterations", max_iterations)
-    free = np.flatnonzero(~problem.fixed)
-    K, F, G, T = problem.K[free][:, free], problem.load[free], problem.G[:, free], problem.T[:, free]
+    sup = problem.supports
+    free = sup.free
+    K, F, G, T = sup.restrict(problem.K), sup.load(problem.load), sup.columns(problem.G), sup.columns(problem.T)
     g0 = problem.gap
     can = problem.can_touch  # a slave node whose line overlaps no master cannot touch
     size = max(float(np.ptp(problem.slave.body.points)), float(np.ptp(problem.master.body.points)))
@@ -847,8 +856,7 @@ def steady_pair(problem: PairProblem, max_iterations: int | None = None) -> Pair
             raise NoSolutionError(f"steady sliding of the pair with friction depending on the pressure (exponent "
                                   f"{problem.pressure_law.exponent:g}) did not settle in {PRESSURE_ITERATIONS} "
                                   "iterations (a smaller pressure_exponent)")
-        u = np.zeros(problem.K.shape[0])
-        u[free] = x[: free.size]
+        u = sup.expand(x[: free.size])
         gap = g0 + problem.G @ u
         penetrating = can & ~active & (gap < -tol)
         new = (active & (lam >= 0.0)) | penetrating
@@ -873,7 +881,7 @@ def facets(problem: PairProblem) -> float:
     touched = np.zeros(len(problem.master.body.points), bool)
     touched[np.unique(problem.coupling.M.tocoo().col)] = True
     if problem.dimension == 3:
-        if problem.master.body.kind == "tetra10":
+        if problem.master.body.kind in ("tetra10", "hexahedron20", "hexahedron27"):
             return 0.0
         faces = problem.master.body.faces[problem.master_group]
         under = touched[faces].all(axis=1)

@@ -154,8 +154,9 @@ class PairScheme(FemScheme):
             rows += [2 * nodes + comp, 2 * nodes + comp]
             cols += [2 * nodes, 2 * nodes + 1]
             vals += [nv[:, comp], tv[:, comp]]
-        return sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
-                             shape=(n_all, n_all))
+        R = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(n_all, n_all))
+        turned = self.params.supports.rotation  # rollers along directions: their nodes' own frames (never contact nodes)
+        return R if turned is None else sp.csr_matrix(turned @ R)
 
     def cartesian(self, w: np.ndarray) -> np.ndarray:
         """Free-dof vector(s) of the scheme -> Cartesian displacements of all dofs (slave first)."""

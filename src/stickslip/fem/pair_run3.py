@@ -137,8 +137,9 @@ class SolidPairScheme(PairScheme):
                 rows.append(3 * nodes + comp)
                 cols.append(3 * nodes + k)
                 vals.append(vec[:, comp])
-        return sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
-                             shape=(n_all, n_all))
+        R = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(n_all, n_all))
+        turned = self.params.supports.rotation  # rollers along directions: their nodes' own frames (never contact nodes)
+        return R if turned is None else sp.csr_matrix(turned @ R)
 
     @cached_property
     def partners(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

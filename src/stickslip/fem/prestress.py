@@ -20,7 +20,7 @@ import scipy.sparse as sp
 
 from ..errors import ParameterError
 from ..quantities import FEM as Q
-from .solid import VOIGT, SolidSystem, skfem_mesh, split_held
+from .solid import VOIGT, SolidSystem, cell_quadrature, skfem_mesh, split_held
 from .solid_stress import voigt_stiffness
 
 __all__ = ["centrifugal_stiffness"]
@@ -36,7 +36,7 @@ def centrifugal_stiffness(system: SolidSystem, omega: float, center=(0.0, 0.0), 
 
     omega = Q.check("omega", omega)
     cx, cy = Q["center"].check_pair(center, "center")
-    n, held, free = split_held(system, held)
+    n, sup = split_held(system, held)
     solid = system.solid
     mesh, element, ours, _ = skfem_mesh(solid)
     to_ours = sp.csr_array((np.ones(n), (ours, np.arange(n))), shape=(n, n))
@@ -44,7 +44,7 @@ def centrifugal_stiffness(system: SolidSystem, omega: float, center=(0.0, 0.0), 
     force = np.zeros(n)
     for name, m in system.materials.items():
         cells = np.arange(len(solid.cells)) if name == "" else np.asarray(solid.cell_groups[name])
-        basis = Basis(mesh, element, elements=cells)
+        basis = Basis(mesh, element, elements=cells, **cell_quadrature(solid))
         rho = float(m.density)
 
         @LinearForm
@@ -54,14 +54,15 @@ def centrifugal_stiffness(system: SolidSystem, omega: float, center=(0.0, 0.0), 
         force += to_ours @ asm(spun, basis)
         parts.append((basis, m))
     u0 = np.zeros(n)
+    count = int(sup.held.sum())
     if omega != 0.0:
         try:
-            u0[free] = splu(sp.csc_array(system.K[free][:, free])).solve(force[free])
+            u0 = sup.expand(splu(sp.csc_array(sup.restrict(system.K))).solve(sup.load(force)))
         except RuntimeError:
-            raise ParameterError("held", f"{held.size} degrees of freedom", "supports that hold the turning solid "
+            raise ParameterError("held", f"{count} degrees of freedom", "supports that hold the turning solid "
                                  "(its stiffness is singular without them)") from None
         if not np.all(np.isfinite(u0)) or np.abs(u0).max() > 1e6 * float(np.ptp(solid.points)):
-            raise ParameterError("held", f"{held.size} degrees of freedom", "supports that hold every rigid motion "
+            raise ParameterError("held", f"{count} degrees of freedom", "supports that hold every rigid motion "
                                  "of the turning solid (some are free)")
     K = sp.csr_array((n, n))
     for basis, m in parts:

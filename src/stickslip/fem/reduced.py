@@ -82,16 +82,17 @@ def _parts(problem: PairProblem, penalty: float):
     st = problem.steady
     if not st.loaded:
         raise NoSolutionError("steady sliding of the pair carries no contact force: press the bodies together")
-    free = np.flatnonzero(~problem.fixed)
+    sup = problem.supports
     A = np.flatnonzero(st.active)
-    K = problem.K[free][:, free]
+    K = sup.restrict(problem.K)
     k = penalty * float(np.abs(K.diagonal()).max())
-    W2G = sp.diags(1.0 / problem.coupling.weight[A] ** 2) @ problem.G[A][:, free]
-    springs = (k * problem.G[A][:, free].T @ W2G).tocsc()
+    G = sup.columns(problem.G[A])
+    W2G = sp.diags(1.0 / problem.coupling.weight[A] ** 2) @ G
+    springs = (k * G.T @ W2G).tocsc()
     K0 = (K + springs).tocsc()
-    F = (k * problem.T[A][:, free].T @ W2G).tocsc()
-    C = None if problem.C is None else problem.C[free][:, free]
-    return K0, F, problem.mass[free], C, free, A, springs
+    F = (k * sup.columns(problem.T[A]).T @ W2G).tocsc()
+    C = None if problem.C is None else sup.restrict(problem.C)
+    return K0, F, sup.mass(problem.mass), C, sup.free, A, springs
 
 
 #: Static vectors solved at once (a block of right-hand sides).
@@ -147,7 +148,8 @@ def modal_basis(problem: PairProblem, count: int, penalty: float | None = None, 
     vectors = [phi]
     if augment != "none":
         if augment == "nodes":
-            loads = sp.vstack([problem.G[active][:, free], problem.T[active][:, free]]).T.tocsc()
+            sup = problem.supports
+            loads = sp.vstack([sup.columns(problem.G[active]), sup.columns(problem.T[active])]).T.tocsc()
         else:
             loads = sp.csc_matrix(np.hstack([F @ phi, springs @ phi]))
         vectors += [lu.solve(loads[:, j:j + BLOCK].toarray()) for j in range(0, loads.shape[1], BLOCK)]
@@ -160,10 +162,10 @@ def modal_basis(problem: PairProblem, count: int, penalty: float | None = None, 
     ritz, Y = la.eigh(0.5 * (Kv + Kv.T))
     psi = V @ Y
     Cr = None if C is None else psi.T @ (C @ psi)
-    Sr = None if problem.S is None else psi.T @ (problem.S[free][:, free] @ psi)
+    Sr = None if problem.S is None else psi.T @ (problem.supports.restrict(problem.S) @ psi)
     Tr = None
     if problem.transverse_damping:  # per unit friction, about the problem's steady sliding (its pressures)
-        unit = problem.transverse_matrix(np.ones(len(problem.coupling.weight)))[free][:, free]
+        unit = problem.supports.restrict(problem.transverse_matrix(np.ones(len(problem.coupling.weight))))
         Tr = psi.T @ (unit @ psi)
     return ModalBasis(np.sqrt(np.clip(ritz, 0.0, None)) / (2 * math.pi), psi, np.diag(ritz), psi.T @ (F @ psi),
                       Cr, float(problem.friction), free, float(penalty), problem.to_attrs(), count, top,

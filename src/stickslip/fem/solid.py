@@ -2,12 +2,13 @@
 mass (scikit-fem), its supports and its modes.
 
 `read_solid(path, units)` reads any mesh meshio reads (gmsh ``.msh`` first) whose cells are volumes:
-linear or quadratic tetrahedra or linear hexahedra (meshio's ``tetra``, ``tetra10``, ``hexahedron``;
-quadratic hexahedra are refused, said so, in this first increment of 3-D). ``units`` is the length unit
+linear or quadratic tetrahedra and hexahedra (meshio's ``tetra``, ``tetra10``, ``hexahedron``, and the
+quadratic hexahedra ``hexahedron20`` (serendipity) and ``hexahedron27`` (triquadratic); wedges and pyramids
+are refused, said so). ``units`` is the length unit
 of the mesh's coordinates, ``"m"`` or ``"mm"`` (a CAD model in millimetres read as metres is a brake
 1000 times too large: no default).
 Face groups are the named sets of boundary faces (gmsh physical groups of dimension 2: triangles on
-tetrahedra, quadrilaterals on hexahedra) where supports and contacts act; cell groups the named sets
+tetrahedra, quadrilaterals on hexahedra, of 6, 8 or 9 nodes on quadratic cells) where supports and contacts act; cell groups the named sets
 of cells (physical groups of dimension 3: a lining, a backplate), each of which may have its own
 material. Checked on the way in, each refused with a `ParameterError` naming the mesh and the problem:
 a flat mesh, no volume cells or cells of two kinds, degenerate cells (volume below 1e-10 of the mean),
@@ -18,12 +19,14 @@ inverted cell that turning round would hide).
 
 `assemble_solid(solid, material)`: ``K`` (CSR, N/m) and the lumped mass (kg per degree of freedom: row
 sums of the consistent mass on linear cells; on quadratic tetrahedra each cell's mass shared by the
-diagonal of its consistent mass, Hinton-Rock-Zienkiewicz) on the Cartesian degrees of freedom ``3 i``,
+diagonal of its consistent mass, Hinton-Rock-Zienkiewicz, and so on quadratic hexahedra: on 27 nodes
+Simpson's rule, converging at order 4; on 20 nodes at order 2 only, for modes take their consistent mass) on the Cartesian degrees of freedom ``3 i``,
 ``3 i + 1``, ``3 i + 2`` of node ``i``, with ``material`` one `stickslip.fem.assembly.Material` or one
 per cell group. The physics is the 2-D bodies' without the plane: Lamé's ``lambda = E nu / ((1 + nu)
 (1 - 2 nu))`` and ``mu = E / (2 (1 + nu))`` (a material's ``plane = "stress"`` means nothing in 3-D
 and is refused). `supported_dofs` gives the degrees of freedom a clamp (all three) or a roller (the
-one along a coordinate axis) holds on a face group; `solid_modes` the lowest natural frequencies.
+one along a coordinate axis) holds on a face group, `solid_supports` the supports with rollers along
+any direction too (`stickslip.fem.supports`); `solid_modes` the lowest natural frequencies.
 """
 
 from __future__ import annotations
@@ -43,12 +46,18 @@ from .body import named_sets
 
 __all__ = ["Solid", "SolidSystem", "OrthotropicSolid", "read_solid", "solid_from_meshio", "assemble_solid",
            "supported_dofs", "solid_modes", "solid_static", "solid_damped_modes", "skfem_mesh", "split_held", "VOLUME_KINDS",
+           "cell_quadrature", "solid_supports",
            "UNITS"]
 
 #: meshio volume cells read, and the faces of their boundary groups.
-VOLUME_KINDS = {"tetra": "triangle", "hexahedron": "quad", "tetra10": "triangle6"}
-#: Not yet (said when met): quadratic volume cells.
-LATER = ("hexahedron27", "wedge", "pyramid")
+VOLUME_KINDS = {"tetra": "triangle", "hexahedron": "quad", "tetra10": "triangle6", "hexahedron20": "quad8",
+                "hexahedron27": "quad9"}
+#: Not yet (said when met): other volume cells.
+LATER = ("wedge", "wedge15", "pyramid", "pyramid13")
+#: A quadratic hexahedron's middle-face nodes 20-25 (meshio's numbering, as VTK's): the corners of each face.
+HEX_FACE_CORNERS = ((0, 3, 7, 4), (1, 2, 6, 5), (0, 1, 5, 4), (3, 2, 6, 7), (0, 1, 2, 3), (4, 5, 6, 7))
+#: Its edge-middle nodes 8-19: the corners of each edge.
+HEX_EDGES = ((0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (0, 4), (1, 5), (2, 6), (3, 7))
 #: Length units of a mesh's coordinates, in metres.
 UNITS = {"m": 1.0, "mm": 1e-3}
 #: The local faces of each cell kind (meshio's node numbering), each seen from outside the cell.
@@ -59,9 +68,9 @@ AXES = {"x": 0, "y": 1, "z": 2}
 
 @dataclass(frozen=True, eq=False)
 class Solid:
-    """Nodes ``points`` (``(n, 3)`` in metres), cells ``(m, 4 | 10 | 8)`` (meshio's numbering, tetrahedra of
-    positive volume), ``kind`` (``tetra``, ``tetra10`` or ``hexahedron``), ``faces``: face group -> its faces
-    (``(f, 3 | 6 | 4)`` node indices), ``cell_groups``: cell group -> the sorted indices of its cells."""
+    """Nodes ``points`` (``(n, 3)`` in metres), cells ``(m, 4 | 10 | 8 | 20 | 27)`` (meshio's numbering,
+    tetrahedra of positive volume), ``kind`` (a key of `VOLUME_KINDS`), ``faces``: face group -> its faces
+    (``(f, 3 | 6 | 4 | 8 | 9)`` node indices), ``cell_groups``: cell group -> the sorted indices of its cells."""
 
     points: np.ndarray
     cells: np.ndarray
@@ -126,8 +135,8 @@ def solid_from_meshio(mesh, source: str = "mesh", units: str | None = None) -> S
         refuse(f"a mesh of at most {MAX_MESH_NODES} nodes (it has {len(points)})")
     later = sorted({b.type for b in blocks if b.type in LATER})
     if later:
-        refuse(f"tetrahedra (linear or quadratic) or linear hexahedra (it has {', '.join(later)}: these volume "
-               "cells come in a later release)")
+        refuse(f"tetrahedra or hexahedra, linear or quadratic (it has {', '.join(later)}: these volume cells come "
+               "in a later release)")
     kinds = sorted({b.type for b in blocks if b.type in VOLUME_KINDS})
     if not kinds:
         refuse(f"a mesh with volume cells ({', '.join(VOLUME_KINDS)}; it has "
@@ -172,7 +181,7 @@ def solid_from_meshio(mesh, source: str = "mesh", units: str | None = None) -> S
                  and per_block[k] is not None and len(per_block[k])]
         if found:
             group = np.concatenate(found)
-            inside = [f for f in group if tuple(sorted(f[:4 if face_kind == "quad" else 3])) not in boundary]
+            inside = [f for f in group if tuple(sorted(f[:4 if face_kind.startswith("quad") else 3])) not in boundary]
             if inside:
                 refuse(f"face group {name!r} on the boundary ({len(inside)} of its {len(group)} faces are inside the "
                        "solid or not faces of its cells)")
@@ -190,7 +199,7 @@ def solid_from_meshio(mesh, source: str = "mesh", units: str | None = None) -> S
 def _folded(cells: np.ndarray, kind: str) -> int:
     """How many faces shared by two cells are seen the same way round from both (each cell's faces
     turned outward, `_FACES`): two cells on the same side of their face, a fold."""
-    local = np.array(_FACES["tetra" if kind.startswith("tetra") else kind])
+    local = np.array(_FACES["tetra" if kind.startswith("tetra") else "hexahedron"])
     f = cells[:, local].reshape(-1, local.shape[1])
     first = np.argmin(f, axis=1)  # each face's cycle started at its least node: its turn is then whether
     rolled = np.take_along_axis(f, (first[:, None] + np.arange(f.shape[1])) % f.shape[1], axis=1)
@@ -203,7 +212,7 @@ def _folded(cells: np.ndarray, kind: str) -> int:
 def _boundary_faces(cells: np.ndarray, kind: str) -> set:
     """The faces (sorted node tuples) that belong to one cell only."""
     counts: dict = {}
-    for local in _FACES["tetra" if kind.startswith("tetra") else kind]:  # by their corners
+    for local in _FACES["tetra" if kind.startswith("tetra") else "hexahedron"]:  # by their corners
         for face in map(tuple, np.sort(cells[:, local], axis=1)):
             counts[face] = counts.get(face, 0) + 1
     return {f for f, k in counts.items() if k == 1}
@@ -394,7 +403,8 @@ def skfem_mesh(solid: Solid):
     degree of freedom of each of scikit-fem's (found by place: a quadratic mesh's vertices are numbered
     anew by scikit-fem) and our node of each of its vertices."""
     from scipy.spatial import cKDTree
-    from skfem import Basis, ElementHex1, ElementTetP1, ElementTetP2, ElementVector, MeshHex1, MeshTet1, MeshTet2
+    from skfem import (Basis, ElementHex1, ElementHex2, ElementHexS2, ElementTetP1, ElementTetP2, ElementVector,
+                       MeshHex1, MeshHex2, MeshTet1, MeshTet2)
     from skfem.io.meshio import INV_HEX_MAPPING
 
     p = np.ascontiguousarray(solid.points.T)
@@ -402,6 +412,14 @@ def skfem_mesh(solid: Solid):
         mesh, element = MeshTet1(p, np.ascontiguousarray(solid.cells.T), sort_t=False), ElementVector(ElementTetP1())
     elif solid.kind == "tetra10":  # meshio's and scikit-fem's edge order agree: (0 1) (1 2) (0 2) (0 3) (1 3) (2 3)
         mesh, element = MeshTet2(doflocs=p, t=np.ascontiguousarray(solid.cells.T)), ElementVector(ElementTetP2())
+    elif solid.kind == "hexahedron27":  # scikit-fem's reordering of meshio's numbering (its own meshio reader's)
+        t = np.ascontiguousarray(solid.cells[:, INV_HEX_MAPPING].T)
+        mesh, element = MeshHex2(doflocs=p, t=t), ElementVector(ElementHex2())
+    elif solid.kind == "hexahedron20":  # the serendipity cell's own geometry, written as a triquadratic one
+        cells, extra = _serendipity_to_27(solid.points, solid.cells)
+        geometry = np.ascontiguousarray(np.vstack([solid.points, extra]).T)
+        mesh = MeshHex2(doflocs=geometry, t=np.ascontiguousarray(cells[:, INV_HEX_MAPPING].T))
+        element = ElementVector(ElementHexS2())
     else:
         t = np.ascontiguousarray(solid.cells[:, INV_HEX_MAPPING[:8]].T)
         mesh, element = MeshHex1(p, t, sort_t=False), ElementVector(ElementHex1())
@@ -412,12 +430,39 @@ def skfem_mesh(solid: Solid):
     component = np.zeros(basis.N, dtype=np.int64)
     for c in range(3):
         component[basis.nodal_dofs[c]] = c
-        if basis.edge_dofs.size:
-            component[basis.edge_dofs[c]] = c
+        for dofs in (basis.edge_dofs, basis.facet_dofs, basis.interior_dofs):
+            if dofs.size:
+                component[dofs[c]] = c
     far, vertex = tree.query(mesh.p.T)
+    far = far[np.unique(mesh.t)]  # (a 20-node cell's added points are in mesh.p, but no cell's vertex)
     if distance.max() > 1e-9 * size or far.max() > 1e-9 * size:  # not a user's error: said, never hidden
         raise RuntimeError("stickslip.fem.solid: a scikit-fem degree of freedom is at no node of the mesh")
     return mesh, element, 3 * node + component, vertex
+
+
+def cell_quadrature(solid: Solid) -> dict:
+    """scikit-fem's ``intorder`` for ``solid``'s cells, as keyword arguments of a ``Basis``: on quadratic
+    hexahedra 3 x 3 x 3 Gauss points (exact for the stiffness and the mass of a parallelepiped; scikit-fem's
+    default, 7 x 7 x 7, costs 13 times as much), else scikit-fem's default."""
+    return {"intorder": 5} if solid.kind in ("hexahedron20", "hexahedron27") else {}
+
+
+def _serendipity_to_27(points: np.ndarray, cells: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(cells27, extra)``: 20-node hexahedra with their middle-face and centre nodes added (``extra``,
+    numbered after ``points``) where the serendipity cell puts them: a face's middle at ``-1/4`` of its
+    corners plus ``1/2`` of its edge middles, the centre at ``-1/4`` of the corners plus ``1/4`` of the
+    edge middles (the serendipity functions at those points). Its space lies in the triquadratic one, so
+    the triquadratic map through these 27 points is the serendipity cell's own map."""
+    x = points[cells]  # (m, 20, 3)
+    corners, middles = x[:, :8].sum(axis=1), x[:, 8:].sum(axis=1)
+    faces = []
+    for face in HEX_FACE_CORNERS:
+        edges = [8 + k for k, (a, b) in enumerate(HEX_EDGES) if a in face and b in face]
+        faces.append(-0.25 * x[:, list(face)].sum(axis=1) + 0.5 * x[:, edges].sum(axis=1))
+    extra = np.concatenate(faces + [-0.25 * corners + 0.25 * middles])  # face k of every cell, then the centres
+    m, n = len(cells), len(points)
+    added = n + np.arange(7)[None, :] * m + np.arange(m)[:, None]
+    return np.hstack([cells, added]), extra
 
 
 def _facets(mesh, vertex: np.ndarray, faces: np.ndarray) -> np.ndarray:
@@ -463,7 +508,7 @@ def assemble_solid(solid: Solid, material, loads=(), springs=()) -> SolidSystem:
     K, M = sp.csr_array((n, n)), sp.csr_array((n, n))
     parts = []  # each material's K and consistent mass (its Rayleigh damping)
     for cells, m in pairs:
-        basis = Basis(mesh, element, elements=cells)
+        basis = Basis(mesh, element, elements=cells, **cell_quadrature(solid))
         if isinstance(m, OrthotropicSolid):
             D = m.stiffness
 
@@ -535,8 +580,10 @@ def _lumped(solid: Solid, cells: np.ndarray, density: float, consistent) -> np.n
     """The lumped mass of ``cells``: the row sums of their ``consistent`` mass; on quadratic tetrahedra,
     where row sums give corners no (or negative) mass, each cell's shared by the diagonal of its consistent
     mass (Hinton-Rock-Zienkiewicz; on a straight-edged cell 6 : 32, corner : edge node)."""
-    if solid.kind != "tetra10":
+    if solid.kind in ("tetra", "hexahedron"):
         return np.asarray(consistent.sum(axis=1)).ravel()
+    if solid.kind != "tetra10":
+        return _hinton_rock(solid, cells, density)
     mass = np.zeros(3 * len(solid.points))
     share = density * solid.volumes[cells]
     for k in range(10):
@@ -545,11 +592,38 @@ def _lumped(solid: Solid, cells: np.ndarray, density: float, consistent) -> np.n
     return mass
 
 
+def _hinton_rock(solid: Solid, cells: np.ndarray, density: float) -> np.ndarray:
+    """Hinton-Rock-Zienkiewicz on any cells: each cell's mass ``density int dV`` shared by the
+    diagonal ``density int N_i^2 dV`` of its consistent mass (scikit-fem's shape functions, the cell's
+    own map)."""
+    from scipy.spatial import cKDTree
+    from skfem import Basis
+
+    mesh, element, _, _ = skfem_mesh(solid)
+    basis = Basis(mesh, element.elem, elements=cells, intorder=5)  # the scalar element: a function per node
+    node = cKDTree(solid.points).query(basis.doflocs.T)[1]  # skfem_mesh checked each is at a node
+    dx = basis.dx  # (cells, points)
+    diagonal = np.array([np.sum(np.asarray(phi[0]) ** 2 * dx, axis=1) for phi in basis.basis])  # (functions, cells)
+    share = density * dx.sum(axis=1) * diagonal / diagonal.sum(axis=0)
+    mass = np.zeros(3 * len(solid.points))
+    np.add.at(mass, 3 * node[basis.element_dofs[:, cells]], share)
+    mass[1::3], mass[2::3] = mass[0::3], mass[0::3]
+    return mass
+
+
 def split_held(system, held) -> tuple:
-    """``(n, held, free)``: the solid's degrees of freedom, those ``held`` (checked) and the others."""
+    """``(n, supports)``: the solid's degrees of freedom and its `stickslip.fem.supports.Supports` from
+    ``held``, one (`solid_supports`) or the indices of the degrees of freedom held (checked)."""
+    from .supports import Supports
+
     if not isinstance(system, SolidSystem):
         raise ParameterError("system", system, "a SolidSystem (assemble_solid)")
     n = system.n_dofs
+    if isinstance(held, Supports):
+        if held.n != n:
+            raise ParameterError("held", f"supports of {held.n} degrees of freedom", f"the supports of this solid "
+                                 f"({n} degrees of freedom)")
+        return n, held
     try:
         given = np.asarray(held).ravel()
     except (TypeError, ValueError):
@@ -560,7 +634,9 @@ def split_held(system, held) -> tuple:
     held = given.astype(np.int64)
     if held.size and (held.min() < 0 or held.max() >= n):
         raise ParameterError("held", f"{held.size} indices", f"degrees of freedom of the solid (0 to {n - 1})")
-    return n, held, np.setdiff1d(np.arange(n), held)
+    mask = np.zeros(n, bool)
+    mask[held] = True
+    return n, Supports(mask)
 
 
 def solid_static(system: SolidSystem, held=()) -> np.ndarray:
@@ -568,26 +644,27 @@ def solid_static(system: SolidSystem, held=()) -> np.ndarray:
     (every degree of freedom; a sparse direct solve). A solid free to move as a rigid body is refused."""
     from scipy.sparse.linalg import splu
 
-    n, held, free = split_held(system, held)
+    n, sup = split_held(system, held)
     r = system.solid.points - system.solid.points.mean(axis=0)
     rigid = np.zeros((len(r), 3, 6))  # the six rigid motions: three translations, three rotations w x r
     rigid[:, [0, 1, 2], [0, 1, 2]] = 1.0
     for k, w in enumerate(np.eye(3)):
         rigid[:, :, 3 + k] = np.cross(w, r)
     rigid = rigid.reshape(n, 6)
-    if not held.size or np.linalg.matrix_rank(rigid[held], tol=1e-9 * np.abs(rigid).max()) < 6:
-        raise ParameterError("held", f"{held.size} degrees of freedom", "supports that hold every rigid motion "
+    if sup.rotation is not None:  # each held degree of freedom's part of each rigid motion, in its node's frame
+        rigid = sup.rotation.T @ rigid
+    count = int(sup.held.sum())
+    if not count or np.linalg.matrix_rank(rigid[sup.held], tol=1e-9 * np.abs(rigid).max()) < 6:
+        raise ParameterError("held", f"{count} degrees of freedom", "supports that hold every rigid motion "
                              "(three translations and three rotations; some are free)")
-    u = np.zeros(n)
-    u[free] = splu(sp.csc_array(system.K[free][:, free])).solve(system.load[free])
-    return u
+    return sup.expand(splu(sp.csc_array(sup.restrict(system.K))).solve(sup.load(system.load)))
 
 
 def supported_dofs(solid: Solid, clamped=(), rollers=None) -> np.ndarray:
     """The degrees of freedom held: every one of the nodes of each face group in ``clamped``, and
     along its axis (``"x"``, ``"y"`` or ``"z"``) those of each face group of ``rollers``
     (``{group: axis}``: a symmetry plane or a sliding support normal to that axis). A roller along
-    another direction comes in a later release."""
+    another direction is no degree of freedom: `solid_supports` gives it."""
     if not isinstance(solid, Solid):
         raise ParameterError("solid", solid, "a stickslip.fem.solid.Solid (read_solid)")
     groups = [clamped] if isinstance(clamped, str) else clamped
@@ -597,10 +674,31 @@ def supported_dofs(solid: Solid, clamped=(), rollers=None) -> np.ndarray:
         raise ParameterError("rollers", rollers, "{face group: axis} or None")
     held = [3 * solid.nodes(g, "clamped")[:, None] + np.arange(3) for g in groups]
     for group, axis in dict(rollers or {}).items():
-        if axis not in AXES:
-            raise ParameterError(f"rollers[{group}]", axis, "a coordinate axis: x, y or z")
+        if not isinstance(axis, str) or axis not in AXES:
+            raise ParameterError(f"rollers[{group}]", axis, "a coordinate axis: x, y or z (a roller along another "
+                                 "direction: solid_supports)")
         held.append(3 * solid.nodes(group, "rollers") + AXES[axis])
     return np.unique(np.concatenate([np.ravel(h) for h in held])) if held else np.zeros(0, dtype=np.int64)
+
+
+def solid_supports(solid: Solid, clamped=(), rollers=None):
+    """The `stickslip.fem.supports.Supports` of ``solid``: every degree of freedom of the nodes of each
+    face group in ``clamped``, and for each face group of ``rollers`` (``{group: axes or direction}``)
+    its nodes held along coordinate axes (``"x"``, ``"yz"``) or along a direction ``[dx, dy, dz]`` (a
+    face at an angle: ``d . u = 0``, the node's degrees of freedom in a frame of its own). `solid_modes`,
+    `solid_static` and `solid_damped_modes` take it as ``held``."""
+    from .supports import direction_of, supports_from
+
+    if not isinstance(solid, Solid):
+        raise ParameterError("solid", solid, "a stickslip.fem.solid.Solid (read_solid)")
+    groups = [clamped] if isinstance(clamped, str) else clamped
+    if not isinstance(groups, (list, tuple)) or not all(isinstance(g, str) for g in groups):
+        raise ParameterError("clamped", clamped, "a face group name or a list of them")
+    if rollers is not None and not isinstance(rollers, dict):
+        raise ParameterError("rollers", rollers, "{face group: axes or a direction} or None")
+    held = [(solid.nodes(g, "clamped"), list(np.eye(3))) for g in groups]
+    held += [(solid.nodes(g, "rollers"), direction_of(d, 3, f"rollers[{g}]")) for g, d in dict(rollers or {}).items()]
+    return supports_from(len(solid.points), 3, held)
 
 
 def solid_modes(system: SolidSystem, held=(), count: int = 6, mass: str = "lumped") -> tuple[np.ndarray, np.ndarray]:
@@ -611,17 +709,16 @@ def solid_modes(system: SolidSystem, held=(), count: int = 6, mass: str = "lumpe
     out near 0 Hz."""
     from scipy.sparse.linalg import eigsh
 
-    n, held, free = split_held(system, held)
-    k = checked_count("count", count, max(1, min(len(free) - 1, 500)), "modes")
+    n, sup = split_held(system, held)
+    k = checked_count("count", count, max(1, min(len(sup.free) - 1, 500)), "modes")
     if mass not in ("lumped", "consistent"):
         raise ParameterError("mass", mass, "'lumped' or 'consistent'")
-    Kf = system.K[free][:, free]
-    Mf = sp.diags_array(system.mass[free]) if mass == "lumped" else system.consistent_mass[free][:, free]
-    shift = -1e-6 * float(np.max(Kf.diagonal() / system.mass[free]))  # below zero: a free solid's rigid modes
+    Kf, lumped = sup.restrict(system.K), sup.mass(system.mass)
+    Mf = sp.diags_array(lumped) if mass == "lumped" else sup.restrict(system.consistent_mass)
+    shift = -1e-6 * float(np.max(Kf.diagonal() / lumped))  # below zero: a free solid's rigid modes
     values, vectors = eigsh(sp.csc_array(Kf), k=k, M=sp.csc_array(Mf), sigma=shift, which="LM")
     order = np.argsort(values)
-    shapes = np.zeros((n, k))
-    shapes[free] = vectors[:, order]
+    shapes = sup.expand(vectors[:, order])
     return np.sqrt(np.clip(values[order], 0.0, None)) / (2 * math.pi), shapes
 
 
@@ -632,13 +729,12 @@ def solid_damped_modes(system: SolidSystem, held=(), near: float = 0.0, count: i
     of the CEA, `stickslip.fem.cea.eigenvalues_near`), one of each conjugate pair, by frequency."""
     from .cea import eigenvalues_near
 
-    n, held, free = split_held(system, held)
+    n, sup = split_held(system, held)
     near = Q.check("near", near)
-    k = checked_count("count", count, max(1, min(len(free) - 2, 500)), "modes")
-    Kf, Cf = sp.csc_array(system.K[free][:, free]), sp.csc_array(system.damping[free][:, free])
-    s, vectors, trusted, _, _ = eigenvalues_near(Kf, Cf, system.mass[free], near, 2 * k, True)
+    k = checked_count("count", count, max(1, min(len(sup.free) - 2, 500)), "modes")
+    Kf, Cf = sp.csc_array(sup.restrict(system.K)), sp.csc_array(sup.restrict(system.damping))
+    s, vectors, trusted, _, _ = eigenvalues_near(Kf, Cf, sup.mass(system.mass), near, 2 * k, True)
     keep = np.flatnonzero(trusted)
     order = keep[np.argsort(s[keep].imag)][:k]
-    shapes = np.zeros((n, len(order)), dtype=complex)
-    shapes[free] = vectors[:, order]
+    shapes = sup.expand(np.asarray(vectors[:, order], dtype=complex))
     return s[order].real, s[order].imag / (2 * math.pi), shapes

@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import ParameterError
-from .solid import VOIGT, OrthotropicSolid, SolidSystem, skfem_mesh
+from .solid import VOIGT, OrthotropicSolid, SolidSystem, cell_quadrature, skfem_mesh
 
 __all__ = ["solid_stress", "solid_von_mises", "solid_cell_material", "voigt_stiffness"]
 
@@ -48,7 +48,7 @@ def solid_stress(system: SolidSystem, u: np.ndarray) -> np.ndarray:
     out = np.zeros((len(solid.cells), 6))
     for name, m in system.materials.items():
         cells = np.arange(len(solid.cells)) if name == "" else np.asarray(solid.cell_groups[name])
-        basis = Basis(mesh, element, elements=cells)
+        basis = Basis(mesh, element, elements=cells, **cell_quadrature(solid))
         grad = basis.interpolate(u[ours]).grad  # (3, 3, cells, points): d u_i / d x_j
         strain = np.stack([(grad[i, j] + grad[j, i]) * (0.5 if i == j else 1.0) for i, j in VOIGT])
         weights = basis.dx / basis.dx.sum(axis=1, keepdims=True)

@@ -19,7 +19,7 @@ import scipy.sparse as sp
 
 from ..errors import ParameterError
 from ..quantities import FEM as Q
-from .solid import SolidSystem, skfem_mesh
+from .solid import SolidSystem, cell_quadrature, skfem_mesh
 
 __all__ = ["solid_transport_operators"]
 
@@ -46,7 +46,7 @@ def solid_transport_operators(system: SolidSystem, omega: float, center=(0.0, 0.
     A, B = sp.csr_array((n, n)), sp.csr_array((n, n))
     for name, m in system.materials.items():
         cells = np.arange(len(solid.cells)) if name == "" else solid.cell_groups[name]
-        basis = Basis(mesh, element, elements=cells)
+        basis = Basis(mesh, element, elements=cells, **cell_quadrature(solid))
         rho = float(m.density)
         A = A + to_ours @ asm(BilinearForm(lambda u, v, w: rho * dot(along(u, w), v)), basis) @ to_ours.T
         B = B + to_ours @ asm(BilinearForm(lambda u, v, w: rho * dot(along(u, w), along(v, w))), basis) @ to_ours.T
