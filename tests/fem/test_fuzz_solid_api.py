@@ -7,7 +7,8 @@ import pytest
 
 from stickslip.fem import Load, Material, OrthotropicSolid
 from stickslip.fem.pair import PairProblem, Translation
-from stickslip.fem.solid import assemble_solid, solid_from_meshio, solid_modes, supported_dofs
+from stickslip.fem.solid import assemble_solid, solid_from_meshio, solid_modes, solid_supports, supported_dofs
+from stickslip.fem.supports import direction_of
 
 from ..test_fuzz_api import each_bad_value
 from .test_solid_pair import H, LINING, STEEL, T, solid_mesh
@@ -121,6 +122,13 @@ CALLS = {
                        ["solid", "material", "loads"]),
     "supported_dofs": (lambda **k: supported_dofs(**{"solid": _made()["pad"], "clamped": ("z1",), **k}),
                        ["solid", "clamped", "rollers"]),
+    "solid_supports": (lambda **k: solid_supports(**{"solid": _made()["pad"], "clamped": ("z1",),
+                                                     "rollers": {"x0": [0.6, 0.8, 0.0]}, **k}),
+                       ["solid", "clamped", "rollers"]),
+    "direction_of": (lambda **k: direction_of(**{"value": [0.6, 0.8, 0.0], "dimension": 3, "option": "rollers.x0",
+                                                 **k}), ["value"]),
+    "solid_modes slanted": (lambda **k: solid_modes(**{"system": _made()["problem"].slave, "held": solid_supports(
+        _made()["pad"], ("z1",), {"x0": [0.6, 0.8, 0.0]}), **k}), ["held", "count"]),
     "solid_modes": (lambda **k: solid_modes(**{"system": _made()["problem"].slave,
                                                "held": supported_dofs(_made()["pad"], ("z1",)), **k}),
                     ["system", "held", "count", "mass"]),

@@ -247,3 +247,45 @@ def test_two_plane_bodies_turned_in_their_plane_on_slanted_rollers_pass_the_unif
     assert problem.supports.rotation is not None and st.active.all()
     assert np.abs(st.pressure - p).max() < 1e-9 * p
     assert st.normal_force == pytest.approx(p * 0.04, rel=1e-10)
+
+
+def _patch_pair(angle):
+    """`test_solid_pair`'s patch-test pair (hexahedra on tetrahedra) turned ``angle`` about z, sliding along
+    its turned x at f = 0.3, on rollers along its turned faces: through its contact face's edges too."""
+    c, s = math.cos(angle), math.sin(angle)
+    turn = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    L, H, T = 0.02, 0.015, 0.008
+    pm = box((L, L, T), (5, 3, 2), "hexahedron")
+    pm.points[:, 2] += H
+    pm.points = pm.points @ turn.T
+    bm = box((L, L, H), (3, 4, 3), "tetra")
+    bm.points = bm.points @ turn.T
+    x, y = (list(turn[:, 0]), list(turn[:, 1])) if angle else ("x", "y")
+    return PairProblem(assemble_solid(solid_from_meshio(pm, "pad", units="m"), Material(5e9, 0.25, 2500.0),
+                                      loads=[Load("z1", pressure=2e6)]), "z0",
+                       assemble_solid(solid_from_meshio(bm, "block", units="m"), STEEL), "z1", Translation((c, s)),
+                       friction=0.3, rollers_slave={"x0": x, "y0": y}, rollers_master={"x0": x, "y0": y, "z0": "z"})
+
+
+def test_slanted_rollers_through_the_contact_face_give_the_unturned_pairs_ceas():
+    """Rollers through the contact face's edges put contact nodes in frames of their own (the explicit
+    runs refuse them; steady sliding and the CEAs take them): the pair turned 0.5 rad about z has the
+    unturned pair's steady pressures (1e-9), full CEA below 30 kHz (1e-8 of |s|) and reduced CEA (30 modes,
+    bases without an SVD cut, 1e-9)."""
+    from stickslip.fem.cea import complex_eigenvalues
+    from stickslip.fem.reduced import modal_basis, reduced_modes
+
+    straight, slanted = _patch_pair(0.0), _patch_pair(0.5)
+    c = slanted.coupling
+    held = slanted.fixed[3 * c.slave_nodes[:, None] + np.arange(3)]
+    assert held.any(axis=1).sum() >= 4 and slanted.supports.rotation is not None
+    p1, p2 = straight.steady.pressure, slanted.steady.pressure
+    assert np.abs(p1 - p2).max() <= 1e-9 * np.abs(p1).max()
+    by_frequency = lambda s: s[np.argsort(s.imag)]  # noqa: E731
+    s1 = by_frequency(complex_eigenvalues(straight, (0.0, 3e4), count=10).s)
+    s2 = by_frequency(complex_eigenvalues(slanted, (0.0, 3e4), count=10).s)
+    assert len(s1) >= 4 and len(s1) == len(s2) and np.abs(s1 - s2).max() <= 1e-8 * np.abs(s1).max()
+    for augment in ("none", "nodes"):
+        a = by_frequency(reduced_modes(modal_basis(straight, 30, augment=augment), band=(0.0, 2e4)).s)
+        b = by_frequency(reduced_modes(modal_basis(slanted, 30, augment=augment), band=(0.0, 2e4)).s)
+        assert len(a) >= 3 and len(a) == len(b) and np.abs(a - b).max() <= 1e-9 * np.abs(a).max(), augment
