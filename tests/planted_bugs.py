@@ -697,6 +697,21 @@ MUTANTS: list[dict] = [
        "out[group] = list(map(float, ax)) if isinstance(ax, list) else ax",
        "out[group] = ax if isinstance(ax, str) else \"x\"",
        "config: a roller's direction read as the x axis", [T + "fem/test_solid_config.py"]),
+    _m("sbim-radiation-factor", "src/stickslip/sbim/antiplane.py",
+       "rate = np.where(sliding, (c / mu) * np.sign(drive) * excess, 0.0)",
+       "rate = np.where(sliding, (2 * c / mu) * np.sign(drive) * excess, 0.0)",
+       "SBIM antiplane: the radiation damping mu / (2 c) of two half-spaces on one", [T + "sbim/test_antiplane.py"]),
+    _m("sbim-kernel-sign", "src/stickslip/sbim/kernels.py", "return 1.0 - _j0_integral(T) + j1(T)",
+       "return 1.0 - _j0_integral(T) - j1(T)", "SBIM kernel: H(T) with J1's sign turned", [T + "sbim/test_antiplane.py"]),
+    _m("sbim-static-sign", "src/stickslip/sbim/antiplane.py", "(memory - np.fft.rfft(slip))",
+       "(memory + np.fft.rfft(slip))", "SBIM antiplane: the static stiffness -mu |k| w pushing the slip on",
+       [T + "sbim/test_antiplane.py"]),
+    _m("sbim-stick-never", "src/stickslip/sbim/antiplane.py",
+       "held = np.abs(drive) <= law.strength(slip, sliding)", "held = np.abs(drive) < 0.0",
+       "SBIM antiplane: a stuck node never held by its static strength", [T + "sbim/test_antiplane.py"]),
+    _m("sbim-beta-limit", "src/stickslip/sbim/antiplane.py", "math.isfinite(beta) and beta > 0.6366:",
+       "math.isfinite(beta) and beta > 0.7:", "SBIM antiplane: a step above the stable limit let through to the "
+       "range check, which does not name the limit", [T + "sbim/test_antiplane.py"]),
 ]
 
 UNCAUGHT: list[dict] = []  # every planted bug of the list is caught (issue 44 moved the last four)

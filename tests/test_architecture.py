@@ -41,6 +41,7 @@ ALLOWED = {
     "fem": BASE | {"contact", "friction", "sweep", "files"},
     "system": BASE | {"friction", "lawkernel", "dop853", "kernelcopy", "rsf", "orbits"},
     "rsf": BASE,
+    "sbim": BASE,  # the half-space in time; it will take halfspace's waves and rsf's laws
     "plotting": {"errors", "validation", "legibility"},  # its argument checks: leaves, imports stay one-way
     "legibility": {"validation"},  # reads laid-out figures, draws nothing
     "errata": set(),

@@ -102,7 +102,7 @@ RESULTS = {"Radok"}
 MODULES = {"stickslip.oscillator": "oscillator", "stickslip.friction": "oscillator", "stickslip.brake": "brake",
            "stickslip.brake.fem": "brake", "stickslip.brake.ring": "brake", "stickslip.brake.waves": "brake",
            "stickslip.halfspace": "halfspace", "stickslip.fem": "fem", "stickslip.contact": "common",
-           "stickslip.sweep": "common"}
+           "stickslip.sweep": "common", "stickslip.sbim": "sbim"}
 
 
 def _api_parameters():

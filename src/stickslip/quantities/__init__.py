@@ -32,17 +32,18 @@ from .fem import FEM
 from .halfspace import HALFSPACE
 from .oscillator import OSCILLATOR
 from .rsf import RSF
+from .sbim import SBIM
 from .system import MAX_CONTACTS, MAX_SYSTEM_DOFS, SYSTEM
 
 __all__ = ["Quantity", "Range", "Domain", "DOMAINS", "COMMON", "OSCILLATOR", "BRAKE", "HALFSPACE", "FEM",
-           "SYSTEM", "RSF",
+           "SYSTEM", "RSF", "SBIM",
            "declared", "lookup", "number", "MAX_MESH_NODES", "MAX_POINTS", "MAX_WORKERS", "MAX_SYSTEM_DOFS",
            "MAX_CONTACTS"]
 
 #: Model -> its declarations; ``common`` serves every model.
 DOMAINS = {"common": COMMON, "oscillator": OSCILLATOR, "brake": BRAKE, "halfspace": HALFSPACE, "fem": FEM,
-           "system": SYSTEM, "rsf": RSF}
-for _domain in (OSCILLATOR, BRAKE, HALFSPACE, FEM, SYSTEM, RSF):
+           "system": SYSTEM, "rsf": RSF, "sbim": SBIM}
+for _domain in (OSCILLATOR, BRAKE, HALFSPACE, FEM, SYSTEM, RSF, SBIM):
     _domain.fallback = COMMON
 
 # derived names: a branch's or a run's copy of a quantity, its real or imaginary part

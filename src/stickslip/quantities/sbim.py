@@ -1,0 +1,46 @@
+"""Interface dynamics by the spectral boundary integral method (`stickslip.sbim`), in SI units: an
+elastic half-space's surface, periodic along the interface, its tractions in Pa and slips in m.
+
+The ranges span laboratory interfaces (millimetres, megapascals) to crustal faults (hundreds of
+kilometres, gigapascals).
+"""
+
+from __future__ import annotations
+
+from .core import Domain, declare as Q
+
+#: The explicit scheme's stable limit of ``beta = c_s dt / dx`` (see `stickslip.sbim.antiplane`).
+BETA_LIMIT = 0.6366
+
+SBIM = Domain("sbim", units="SI", quantities=[
+    Q("shear_modulus", "Pa", "shear modulus mu of the half-space", "[1e3, 1e12]", symbol="mu",
+      why="from soft gels (1e3 Pa) to beyond diamond's (5e11 Pa)"),
+    Q("shear_wave_speed", "m/s", "shear wave speed c_s of the half-space", "[1, 2e4]", symbol="c_s",
+      why="from gels (metres per second) to beyond diamond's 12 km/s"),
+    Q("length", "m", "period of the interface along x (the domain)", "[1e-9, 1e9]", symbol="L"),
+    Q("elements", "1", "elements along the period (a power of two is fastest)", "[4, 1048576]", integer=True,
+      symbol="N"),
+    Q("beta", "1", "time step in units of an element's shear-wave transit, c_s dt / dx", "(0, 0.6366]",
+      symbol="beta", why="above 2/pi the explicit update of the shortest mode's static stiffness, |k| c_s dt <= 2, "
+                         "is unstable"),
+    Q("history_periods", "1", "periods of each mode kept in its convolution's history (the rest truncated)",
+      "[0.5, 1e4]", symbol="eta"),
+    Q("steps", "1", "time steps", "[1, 1e9]", integer=True),
+    Q("every", "1", "time steps between stored samples", "[1, 1e9]", integer=True),
+    Q("static_strength", "Pa", "shear strength of a stuck interface (static friction times the normal stress)",
+      "[0, 1e11]", symbol="tau_s"),
+    Q("kinetic_strength", "Pa", "shear strength of a sliding interface (Coulomb), or its weakened value "
+      "(slip-weakening)", "[0, 1e11]", symbol="tau_d"),
+    Q("weakening_slip", "m", "slip over which the strength falls from tau_s to tau_d (slip-weakening)",
+      "(0, 1e3]", symbol="D_c"),
+    Q("traction", "Pa", "applied shear traction (amplitude)", "[-1e11, 1e11]", symbol="tau_0"),
+    Q("mode", "1", "Fourier mode number along the period (0: uniform)", "[0, 524288]", integer=True),
+    # results
+    Q("t", "s", "time since the start"),
+    Q("x", "m", "position along the interface"),
+    Q("slip", "m", "slip (the surface's displacement along z, antiplane)"),
+    Q("slip_rate", "m/s", "slip rate"),
+    Q("shear_stress", "Pa", "shear traction on the interface"),
+    Q("dt", "s", "time step"),
+    Q("kernel_truncation", "1", "part of each mode's kernel integral left out by the history's truncation"),
+])

@@ -1,0 +1,25 @@
+"""Interface dynamics by the spectral boundary integral method: elastic half-spaces whose surfaces
+slide, stick and slip in time, periodic along the interface (issue 46; this is its first increment).
+
+Why a package of its own, beside `stickslip.halfspace`: the half-space package holds the paper's
+steady stick-slip waves (closed forms, Radok potentials), which this one will take as initial states
+and check against; the time-domain method also serves what the paper does not model (two half-spaces
+of different materials, faults with rate-and-state friction), as `stickslip.fem` serves bodies of any
+shape. The method's name is the one geophysics and tribology use for it (QDYN, cRacklet, uguca).
+
+- `kernels`: the half-space surface's convolution kernels mode by mode (antiplane, mode III), their
+  exact step weights and the truncation of their history;
+- `antiplane`: a half-space sliding antiplane on a rigid body (or its surface free under an applied
+  traction) in time, explicit, with Coulomb or slip-weakening friction (`run_antiplane`).
+
+Not yet: in-plane (modes I and II, with unilateral contact), two half-spaces, rate-and-state laws, the
+quasi-dynamic mode, the paper's waves as initial states, the command line.
+"""
+
+from .antiplane import (AntiplaneProblem, AntiplaneRun, Coulomb, FreeSurface, SlipWeakening, mode_traction,
+                        run_antiplane, uniform_traction)
+from .kernels import antiplane_kernel, antiplane_kernel_integral, step_weights, truncated_part
+
+__all__ = ["AntiplaneProblem", "AntiplaneRun", "Coulomb", "FreeSurface", "SlipWeakening", "mode_traction",
+           "run_antiplane", "uniform_traction", "antiplane_kernel", "antiplane_kernel_integral", "step_weights",
+           "truncated_part"]

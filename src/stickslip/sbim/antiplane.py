@@ -1,0 +1,228 @@
+"""An elastic half-space sliding antiplane on a rigid body (the paper's model 3 out of its plane), or
+its surface free under an applied traction, in time: the spectral boundary integral method.
+
+The interface ``0 <= x < L`` is periodic, cut into ``N`` elements (``dx = L / N``); the surface's
+displacement ``w`` along z is the slip on the rigid body. Its traction is the loading ``tau0(x, t)``
+plus the half-space's response (`stickslip.sbim.kernels`), ``tau = tau0 + f - (mu / c) V``, with
+``f`` the static and memory terms computed mode by mode by the FFT from the slips and the slip
+rates before the step: the radiation damping ``-(mu / c) V`` is the only term in the current rate,
+so each node's rate follows from its interface law alone (explicit; Geubelle and Rice, 1995).
+
+**Laws** (`FreeSurface`, `Coulomb`, `SlipWeakening`): the shear strength of each node. A stuck node
+holds while its driving stress ``g = tau0 + f`` stays within its static strength; a node that moves
+slides at ``V = (c / mu) sign(g) (|g| - S)`` with its sliding strength ``S``, the kinetic one (Coulomb)
+or the slip-weakened one, ``tau_s - (tau_s - tau_d) min(|slip| / D_c, 1)``, and sticks again
+(``V = 0``, ``tau = g``) when ``|g| <= S``.
+
+**Scheme.** The rate found at ``t_n`` is held over the step, ``w_{n+1} = w_n + dt V_n``, and the
+memory integral adds each past step's rate with its exact weight: first order in ``dt`` (measured in
+the tests). ``dt = beta dx / c``; ``beta <= 2/pi`` (the update of the shortest mode's static stiffness,
+``|k| c dt <= 2``). Each mode's history is kept for ``history_periods`` of its periods and truncated
+beyond (the neglected part of its kernel, `stickslip.sbim.kernels.truncated_part`, is in the result).
+A rectangular history (every mode as long as the longest) is kept: ``N/2 x eta N / beta`` complex
+numbers (100 MB at ``N = 1024``, ``eta = 4``, ``beta = 1/2``).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+
+from ..errors import ParameterError
+from ..quantities.sbim import SBIM as Q
+from ..results import Result
+from .kernels import step_weights, truncated_part
+
+__all__ = ["FreeSurface", "Coulomb", "SlipWeakening", "AntiplaneProblem", "AntiplaneRun", "run_antiplane",
+           "mode_traction", "uniform_traction"]
+
+#: Largest history kept (modes x steps, complex numbers): 2 GB.
+MAX_HISTORY = 1 << 27
+
+
+@dataclass(frozen=True)
+class FreeSurface:
+    """No strength: the surface is free under the applied traction."""
+
+    def initial(self, n: int) -> np.ndarray:
+        return np.zeros(n)
+
+    def strength(self, slip: np.ndarray, sliding: np.ndarray) -> np.ndarray:
+        return np.zeros(slip.shape)
+
+
+@dataclass(frozen=True)
+class Coulomb:
+    """Static and kinetic shear strengths [Pa] (friction coefficients times the normal stress)."""
+
+    static_strength: float
+    kinetic_strength: float
+
+    def __post_init__(self):
+        for name in ("static_strength", "kinetic_strength"):
+            object.__setattr__(self, name, Q.check(name, getattr(self, name)))
+        if self.kinetic_strength > self.static_strength:
+            raise ParameterError("kinetic_strength", self.kinetic_strength, f"at most static_strength = "
+                                 f"{self.static_strength:g} Pa", also=("static_strength",))
+
+    def strength(self, slip: np.ndarray, sliding: np.ndarray) -> np.ndarray:
+        return np.where(sliding, self.kinetic_strength, self.static_strength)
+
+
+@dataclass(frozen=True)
+class SlipWeakening:
+    """Linear slip-weakening: from ``static_strength`` to ``kinetic_strength`` [Pa] over
+    ``weakening_slip`` [m] of slip (a stuck node keeps the strength its slip has reached)."""
+
+    static_strength: float
+    kinetic_strength: float
+    weakening_slip: float
+
+    def __post_init__(self):
+        for name in ("static_strength", "kinetic_strength", "weakening_slip"):
+            object.__setattr__(self, name, Q.check(name, getattr(self, name)))
+        if self.kinetic_strength > self.static_strength:
+            raise ParameterError("kinetic_strength", self.kinetic_strength, f"at most static_strength = "
+                                 f"{self.static_strength:g} Pa", also=("static_strength",))
+
+    def strength(self, slip: np.ndarray, sliding: np.ndarray) -> np.ndarray:
+        fall = np.minimum(np.abs(slip) / self.weakening_slip, 1.0)
+        return self.static_strength - (self.static_strength - self.kinetic_strength) * fall
+
+
+def uniform_traction(traction: float) -> Callable:
+    """A loading ``tau0(x, t) = traction`` [Pa] applied at ``t = 0``."""
+    value = Q.check("traction", traction)
+    return lambda x, t: np.full(np.shape(x), value)
+
+
+def mode_traction(traction: float, mode: int, length: float) -> Callable:
+    """A loading ``tau0 = traction cos(2 pi mode x / length)`` [Pa] applied at ``t = 0``."""
+    value, mode, length = Q.check("traction", traction), Q.check("mode", mode), Q.check("length", length)
+    return lambda x, t: value * np.cos(2.0 * math.pi * mode * x / length)
+
+
+@dataclass(frozen=True)
+class AntiplaneProblem:
+    """A half-space (``shear_modulus`` [Pa], ``shear_wave_speed`` [m/s]) whose surface, periodic over
+    ``length`` [m] in ``elements``, slides antiplane on a rigid body under the ``law`` and the loading
+    ``traction`` (a function of ``x`` [m] and ``t`` [s] giving Pa); ``beta``, ``history_periods``: the
+    scheme's (module docstring)."""
+
+    shear_modulus: float
+    shear_wave_speed: float
+    length: float
+    elements: int
+    traction: Callable
+    law: object = field(default_factory=FreeSurface)
+    beta: float = 0.5
+    history_periods: float = 4.0
+
+    def __post_init__(self):
+        for name in ("shear_modulus", "shear_wave_speed", "length", "elements", "history_periods"):
+            object.__setattr__(self, name, Q.check(name, getattr(self, name)))
+        beta = self.beta
+        if isinstance(beta, (int, float)) and not isinstance(beta, bool) and math.isfinite(beta) and beta > 0.6366:
+            raise ParameterError("beta", beta, "at most the explicit scheme's stable limit 2/pi = 0.6366 (c_s dt / dx; "
+                                 "above it the shortest mode's static stiffness makes the step unstable)")
+        object.__setattr__(self, "beta", Q.check("beta", beta))
+        if not callable(self.traction):
+            raise ParameterError("traction", self.traction, "a function of (x [m], t [s]) giving the shear traction "
+                                 "[Pa] (uniform_traction, mode_traction)")
+        if not isinstance(self.law, (FreeSurface, Coulomb, SlipWeakening)):
+            raise ParameterError("law", self.law, "FreeSurface(), Coulomb(...) or SlipWeakening(...)")
+
+    @property
+    def dx(self) -> float:
+        return self.length / self.elements
+
+    @property
+    def dt(self) -> float:
+        return self.beta * self.dx / self.shear_wave_speed
+
+    @property
+    def x(self) -> np.ndarray:
+        return np.arange(self.elements) * self.dx
+
+    @property
+    def wavenumbers(self) -> np.ndarray:
+        """``|k|`` of the real FFT's modes [1/m]."""
+        return 2.0 * math.pi * np.arange(self.elements // 2 + 1) / self.length
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class AntiplaneRun(Result):
+    """Samples ``t`` [s] of the slip, slip rate and shear stress at each ``x`` [m] (``(samples, N)``)."""
+
+    problem: AntiplaneProblem
+    t: np.ndarray
+    slip: np.ndarray
+    slip_rate: np.ndarray
+    shear_stress: np.ndarray
+    kernel_truncation: float
+
+    def to_dict(self) -> dict:
+        p = self.problem
+        return {"shear_modulus": p.shear_modulus, "shear_wave_speed": p.shear_wave_speed, "length": p.length,
+                "elements": p.elements, "beta": p.beta, "dt": p.dt, "history_periods": p.history_periods,
+                "kernel_truncation": self.kernel_truncation, "samples": len(self.t), "law": type(p.law).__name__}
+
+    def to_xarray(self):
+        import xarray as xr
+
+        from ..cf import finish
+
+        ds = xr.Dataset({name: (("t", "x"), getattr(self, name)) for name in ("slip", "slip_rate", "shear_stress")},
+                        coords={"t": self.t, "x": self.problem.x})
+        return finish(ds, "antiplane sliding of an elastic half-space on a rigid body (spectral boundary integral "
+                      "method)", "sbim", params={k: v for k, v in self.to_dict().items() if not isinstance(v, str)})
+
+
+def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1) -> AntiplaneRun:
+    """Run ``problem`` from rest for ``steps`` steps, storing every ``every``-th (and the last)."""
+    if not isinstance(problem, AntiplaneProblem):
+        raise ParameterError("problem", problem, "an AntiplaneProblem")
+    steps, every = Q.check("steps", steps), Q.check("every", every)
+    p = problem
+    n, mu, c, dt = p.elements, p.shear_modulus, p.shear_wave_speed, p.dt
+    k = p.wavenumbers
+    omega = k * c
+    count = np.zeros(k.size, dtype=np.int64)
+    count[1:] = np.minimum(steps, np.ceil(p.history_periods * 2.0 * math.pi / (omega[1:] * dt))).astype(np.int64)
+    length = int(max(count.max(), 1))
+    if k.size * length > MAX_HISTORY:
+        raise ParameterError("steps", steps, f"a history of at most {MAX_HISTORY} numbers ({k.size} modes x {length} "
+                             "steps asked: fewer history_periods, elements or steps)", also=("history_periods",))
+    W = step_weights(omega, dt, count, length)  # (modes, lags)
+    history = np.zeros((k.size, length), dtype=complex)  # rate modes, lag 0 = the last step's
+    x = p.x
+    slip = np.zeros(n)
+    sliding = np.zeros(n, bool)
+    law = p.law
+    out_t, out_slip, out_rate, out_stress = [], [], [], []
+    for step in range(steps + 1):
+        t = step * dt
+        memory = np.einsum("kj,kj->k", W, history)
+        f = np.fft.irfft(mu * k * (memory - np.fft.rfft(slip)), n)
+        drive = p.traction(x, t) + f
+        if not np.all(np.isfinite(drive)):
+            raise ParameterError("traction", "a loading", f"finite tractions (not finite at t = {t:g} s)")
+        held = np.abs(drive) <= law.strength(slip, sliding)  # a stuck node holds up to its static strength
+        excess = np.abs(drive) - law.strength(slip, np.ones(n, bool))  # a moving one meets its sliding strength
+        sliding = ~held & (excess > 0.0)
+        rate = np.where(sliding, (c / mu) * np.sign(drive) * excess, 0.0)
+        if step % every == 0 or step == steps:
+            out_t.append(t)
+            out_slip.append(slip.copy())
+            out_rate.append(rate)
+            out_stress.append(drive - (mu / c) * rate)
+        if step == steps:
+            break
+        slip = slip + dt * rate
+        history = np.roll(history, 1, axis=1)
+        history[:, 0] = np.fft.rfft(rate)
+    return AntiplaneRun(p, np.array(out_t), np.array(out_slip), np.array(out_rate), np.array(out_stress),
+                        truncated_part(p.history_periods))
