@@ -41,6 +41,8 @@ SYSTEM_FILE = str(pathlib.Path(__file__).resolve().parents[1] / "examples" / "tw
 #: A system with a harmonic force (a friction damper).
 DAMPER_FILE = str(pathlib.Path(__file__).resolve().parents[1] / "examples" / "friction_damper" / "friction_damper.toml")
 RSF = ["--a", "0.01", "--b", "0.015", "--dc", "1e-5", "--normal-stress", "1e7"]
+#: A laboratory record (synthetic, examples/rsf/make_record.py) for `rsf fit`.
+RECORD_FILE = str(pathlib.Path(__file__).resolve().parents[1] / "examples" / "rsf" / "velocity_step.csv")
 BRAKE = ["--omega", "50", "--mismatch", "1e-4", "--friction", "0.7"]
 #: A valid, fast invocation of every command ({tmp} is a fresh folder).
 BASE = {
@@ -85,6 +87,7 @@ BASE = {
     # a stiffness just below the critical 5e9 Pa/m: a small cycle that settles in 3 s (8 s at 3e9)
     "rsf cycle": RSF + ["--stiffness", "4.9e9", "--mass", "1e9", "--load-velocity", "1e-6", "--tol", "1e-3",
                         "--cycles", "2"],
+    "rsf fit": [RECORD_FILE],
 }
 _CONFIG: list[str] = []
 

@@ -712,6 +712,16 @@ MUTANTS: list[dict] = [
     _m("sbim-beta-limit", "src/stickslip/sbim/antiplane.py", "math.isfinite(beta) and beta > 0.6366:",
        "math.isfinite(beta) and beta > 0.7:", "SBIM antiplane: a step above the stable limit let through to the "
        "range check, which does not name the limit", [T + "sbim/test_antiplane.py"]),
+    _m("fit-errors-of-logs", "src/stickslip/rsf/fit.py", "errors = np.concatenate([sd[:1], values[1:] * sd[1:]])",
+       "errors = np.concatenate([sd[:1], sd[1:]])",
+       "rsf fit: the standard errors of the logarithms reported as the parameters'", [T + "rsf/test_fit.py"])
+    | {"slow_hints": True},
+    _m("fit-history-early", "src/stickslip/rsf/fit.py", "np.flatnonzero(np.diff(self.load_velocity) != 0.0) + 1",
+       "np.flatnonzero(np.diff(self.load_velocity) != 0.0)",
+       "rsf fit: each velocity change of the record one sample early", [T + "rsf/test_fit.py"]) | {"slow_hints": True},
+    _m("fit-repeated-time", "src/stickslip/rsf/fit.py", "    if np.any(np.diff(t) <= 0.0):",
+       "    if np.any(np.diff(t) < 0.0):", "rsf fit: a record with a repeated time taken",
+       [T + "rsf/test_fit.py"]),
 ]
 
 UNCAUGHT: list[dict] = []  # every planted bug of the list is caught (issue 44 moved the last four)

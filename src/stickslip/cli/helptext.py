@@ -82,6 +82,7 @@ EXAMPLES = {
                      "--load-velocity 1e-6",
     "rsf cycle": "stickslip rsf cycle --a 0.01 --b 0.015 --dc 1e-5 --normal-stress 1e7 --stiffness 4.5e9 "
                  "--mass 1e9 --load-velocity 1e-6 --tol 1e-4 --json",
+    "rsf fit": "stickslip rsf fit examples/rsf/velocity_step.csv --json",
 }
 
 

@@ -128,3 +128,15 @@ def cycle(a: A, b: B, dc: Dc, normal_stress: Sigma, stiffness: K, load_velocity:
 
     slider = _slider(a, b, dc, f0, v_ref, evolution, b2, dc2, regularized, normal_stress, stiffness, mass)
     _emit(slider_cycle(slider, load_velocity, cycles=cycles, tol=tol).to_dict(), json, "limit cycle")
+
+
+@app.command()
+def fit(record: Annotated[Path, typer.Argument(help="A CSV record with the header columns time [s], friction and "
+                                                    "load_velocity [m/s] (a velocity step or slide-hold-slide).")],
+        states: Annotated[int, _opt("states")] = 1,
+        evolution: Ev = Evolution.aging, json: Json = False):
+    """a, b, D_c, the stiffness k / sigma and f0 of a laboratory record, with their standard errors."""
+    from ..rsf.fit import fit_record, read_record
+
+    result = fit_record(read_record(record), states=states, evolution=evolution.value)
+    _emit(result.to_dict(), json, "rate-and-state fit")
