@@ -115,3 +115,30 @@ def test_bad_input_is_refused_naming_it(change, name):
 def test_a_kinetic_strength_above_the_static_one_is_refused():
     with pytest.raises(ParameterError, match="kinetic_strength"):
         Coulomb(4e6, 6e6)
+
+
+def test_the_ragged_history_convolves_as_a_dense_sum_written_here_compiled_or_not():
+    """Each mode's memory ``sum_j W_j V_{s-1-j}`` over its own count of past steps, against the sum written
+    out here over a dense array; the compiled kernels give the interpreted ones' numbers bit for bit."""
+    from stickslip.sbim.history import KERNELS, History
+    from stickslip.sbim.kernels import ragged_step_weights, step_weights
+
+    rng = np.random.default_rng(0)
+    omega, dt, counts, steps = np.array([0.0, 1.0, 2.0, 5.0]), 0.3, np.array([0, 7, 4, 2]), 12
+    dense = step_weights(omega, dt, counts, 7)
+    flat = ragged_step_weights(omega, dt, counts)
+    assert np.array_equal(flat, np.concatenate([dense[m, :n] for m, n in enumerate(counts)]))
+    rates = rng.normal(size=(steps, 4)) + 1j * rng.normal(size=(steps, 4))
+    runs = {}
+    for name in ("interpreted", "compiled"):
+        h = History(flat, counts, steps)
+        h.kernels = getattr(KERNELS, name)
+        got = []
+        for s in range(steps):
+            got.append(h.memory(s).copy())
+            h.push(s, rates[s])
+        runs[name] = np.array(got)
+    for s in range(steps):
+        expected = [sum(dense[m, j] * rates[s - 1 - j, m] for j in range(min(counts[m], s))) for m in range(4)]
+        assert np.allclose(runs["interpreted"][s], expected, rtol=1e-14, atol=1e-14)
+    assert np.array_equal(runs["interpreted"], runs["compiled"])

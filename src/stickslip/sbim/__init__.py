@@ -18,8 +18,8 @@ quasi-dynamic mode, the paper's waves as initial states, the command line.
 
 from .antiplane import (AntiplaneProblem, AntiplaneRun, Coulomb, FreeSurface, SlipWeakening, mode_traction,
                         run_antiplane, uniform_traction)
-from .kernels import antiplane_kernel, antiplane_kernel_integral, step_weights, truncated_part
+from .kernels import antiplane_kernel, antiplane_kernel_integral, ragged_step_weights, step_weights, truncated_part
 
 __all__ = ["AntiplaneProblem", "AntiplaneRun", "Coulomb", "FreeSurface", "SlipWeakening", "mode_traction",
            "run_antiplane", "uniform_traction", "antiplane_kernel", "antiplane_kernel_integral", "step_weights",
-           "truncated_part"]
+           "ragged_step_weights", "truncated_part"]

@@ -29,7 +29,7 @@ import numpy as np
 
 from ..errors import ParameterError
 
-__all__ = ["antiplane_kernel", "antiplane_kernel_integral", "step_weights", "truncated_part"]
+__all__ = ["antiplane_kernel", "antiplane_kernel_integral", "step_weights", "ragged_step_weights", "truncated_part"]
 
 
 def _times(name: str, value) -> np.ndarray:
@@ -86,6 +86,28 @@ def step_weights(omega: np.ndarray, dt: float, count: np.ndarray, length: int) -
     out[moving] = np.diff(A, axis=1) / omega[moving, None]
     out[np.arange(length)[None, :] >= np.asarray(count)[:, None]] = 0.0
     return out
+
+
+def ragged_step_weights(omega: np.ndarray, dt: float, count: np.ndarray) -> np.ndarray:
+    """`step_weights` of each mode up to its own ``count``, one mode after another (a flat array of
+    ``sum(count)`` weights)."""
+    omega = _times("omega", omega).ravel()
+    if isinstance(dt, bool) or not isinstance(dt, (int, float, np.floating)) or not 0 < dt < 1e300:
+        raise ParameterError("dt", dt, "a time step > 0 [s]")
+    count = _times("count", count).ravel()
+    if count.size != omega.size or np.any(count != np.round(count)) or count.sum() > (1 << 27):
+        raise ParameterError("count", f"{count.size} values", f"a whole number of steps per mode ({omega.size}), "
+                             "2^27 in all at most")
+    count = count.astype(np.int64)
+    parts = []
+    for w, n in zip(omega, count):
+        if n <= 0:
+            continue
+        if w == 0.0:
+            parts.append(np.zeros(n))
+            continue
+        parts.append(np.diff(antiplane_kernel_integral(w * dt * np.arange(n + 1, dtype=float))) / w)
+    return np.concatenate(parts) if parts else np.zeros(0)
 
 
 def truncated_part(history_periods: float) -> float:

@@ -1,0 +1,96 @@
+"""The antiplane spectral boundary integral method (`stickslip.sbim`): the cost of a step against the
+number of elements N, and against a direct convolution in space and time written here.
+
+A half-space surface free under a traction pulse (a sum of modes), beta = 0.5, each mode's history 4
+of its periods. The direct method is the same discrete problem without the FFT: the traction at each
+node is the sum over nodes and past steps of a space-time influence matrix (here its modes'
+kernels summed into real space once, ``N x N x steps``) times the slip rates, O(N^2 x steps) a step;
+the spectral one costs O(N log N) plus each mode's own history, about ``(eta N / beta) ln(N / 2)``.
+
+    .venv/bin/python benchmarks/sbim_antiplane.py [--largest 14] [--steps 200]
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import time
+
+import numpy as np
+
+from stickslip.sbim import AntiplaneProblem, FreeSurface, run_antiplane
+from stickslip.sbim.kernels import step_weights
+
+MU, C, L = 3e10, 3000.0, 1000.0
+
+
+def pulse(x, t):
+    return 1e6 * np.exp(-(((x - L / 2) / (L / 20)) ** 2))
+
+
+def spectral(N, steps):
+    from stickslip.sbim.history import KERNELS
+
+    KERNELS.compiled  # noqa: B018 - loaded now: every size timed compiled (a short run would choose Python's loop)
+    problem = AntiplaneProblem(MU, C, L, N, pulse, FreeSurface(), beta=0.5, history_periods=4.0)
+    run_antiplane(problem, 2)  # compiled and cached on the first size
+    t = time.perf_counter()
+    run = run_antiplane(problem, steps, every=steps)
+    return (time.perf_counter() - t) / steps, run
+
+
+def direct(N, steps):
+    """The same steps by a direct space-time convolution: ``f_i = sum_j sum_l G[l, i - j] V_j(n - 1 - l)``
+    with ``G`` the influence of a unit rate held over a step at lag ``l`` (its modes summed into real
+    space), the static term ``-mu |k| w`` in real space as a dense matrix too."""
+    problem = AntiplaneProblem(MU, C, L, N, pulse, FreeSurface(), beta=0.5, history_periods=4.0)
+    k = problem.wavenumbers
+    dt = problem.dt
+    W = step_weights(k * C, dt, np.full(k.size, steps), steps)  # every lag kept: the direct method truncates nothing
+    G = np.fft.irfft(MU * k[:, None] * W, N, axis=0).T  # (lags, N): influence at a distance
+    S = np.fft.irfft(-MU * k, N)  # static: -mu |k| w in real space
+    idx = (np.arange(N)[:, None] - np.arange(N)[None, :]) % N
+    Gm = G[:, idx]  # (lags, N, N)
+    Sm = S[idx]
+    x = problem.x
+    rates, slip = [], np.zeros(N)
+    t0 = time.perf_counter()
+    for n in range(steps + 1):
+        f = Sm @ slip
+        for lag, v in enumerate(reversed(rates)):
+            f += Gm[lag] @ v
+        rate = (C / MU) * (pulse(x, n * dt) + f)
+        if n == steps:
+            break
+        slip = slip + dt * rate
+        rates.append(rate)
+    return (time.perf_counter() - t0) / steps, slip
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--largest", type=int, default=14, help="log2 of the largest N")
+    parser.add_argument("--steps", type=int, default=200)
+    args = parser.parse_args()
+    print("N        s/step (spectral)   per N log2 N [ns]")
+    costs = {}
+    for p in range(8, args.largest + 1):
+        N = 2 ** p
+        per_step, _ = spectral(N, args.steps)
+        costs[N] = per_step
+        print(f"{N:<8} {per_step:<19.3e} {1e9 * per_step / (N * p):.1f}")
+    N, steps = 256, 100
+    s_direct, slip_direct = direct(N, steps)
+    s_spectral, run = spectral(N, steps)
+    # the two agree where the spectral history is not truncated (100 steps: every mode's whole history at N = 256
+    # up to its 4 periods; the direct one keeps all)
+    print(f"direct at N = {N}, {steps} steps: {s_direct:.3e} s/step; spectral {s_spectral:.3e} s/step; "
+          f"ratio direct / spectral {s_direct / s_spectral:.1f}")
+    big = max(costs)
+    print(f"N = {big}: {costs[big]:.3e} s/step, 1e5 steps would take {1e5 * costs[big]:.0f} s")
+    print(f"growth from N = 256 to {big}: {costs[big] / costs[256]:.1f} (N log N alone: "
+          f"{big * math.log2(big) / (256 * 8):.1f})")
+
+
+if __name__ == "__main__":
+    main()
