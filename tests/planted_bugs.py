@@ -712,6 +712,16 @@ MUTANTS: list[dict] = [
     _m("sbim-beta-limit", "src/stickslip/sbim/antiplane.py", "math.isfinite(beta) and beta > 0.6366:",
        "math.isfinite(beta) and beta > 0.7:", "SBIM antiplane: a step above the stable limit let through to the "
        "range check, which does not name the limit", [T + "sbim/test_antiplane.py"]),
+    _m("qd-fault-stiffness", "src/stickslip/sbim/quasidynamic.py", "return self.shear_modulus * k / self.sides",
+       "return self.shear_modulus * k", "quasi-dynamic: a fault's static stiffness that of one half-space",
+       [T + "sbim/test_quasidynamic.py"]),
+    _m("qd-radiation-sides", "src/stickslip/sbim/quasidynamic.py",
+       "return self.shear_modulus / (self.sides * self.shear_wave_speed)",
+       "return self.shear_modulus / self.shear_wave_speed",
+       "quasi-dynamic: a fault's radiation damping that of one half-space", [T + "sbim/test_quasidynamic.py"]),
+    _m("qd-static-sign", "src/stickslip/sbim/quasidynamic.py", "np.fft.irfft(-K * np.fft.rfft(slip), n)",
+       "np.fft.irfft(K * np.fft.rfft(slip), n)", "quasi-dynamic: the static stress pushing the slip on",
+       [T + "sbim/test_quasidynamic.py"]),
     _m("fit-errors-of-logs", "src/stickslip/rsf/fit.py", "errors = np.concatenate([sd[:1], values[1:] * sd[1:]])",
        "errors = np.concatenate([sd[:1], sd[1:]])",
        "rsf fit: the standard errors of the logarithms reported as the parameters'", [T + "rsf/test_fit.py"])

@@ -41,7 +41,7 @@ ALLOWED = {
     "fem": BASE | {"contact", "friction", "sweep", "files"},
     "system": BASE | {"friction", "lawkernel", "dop853", "kernelcopy", "rsf", "orbits"},
     "rsf": BASE,
-    "sbim": BASE,  # the half-space in time; it will take halfspace's waves and rsf's laws
+    "sbim": BASE | {"rsf", "jit"},  # the half-space in time: rsf's laws, compiled kernels (halfspace's waves to come)
     "plotting": {"errors", "validation", "legibility"},  # its argument checks: leaves, imports stay one-way
     "legibility": {"validation"},  # reads laid-out figures, draws nothing
     "errata": set(),

@@ -10,16 +10,19 @@ shape. The method's name is the one geophysics and tribology use for it (QDYN, c
 - `kernels`: the half-space surface's convolution kernels mode by mode (antiplane, mode III), their
   exact step weights and the truncation of their history;
 - `antiplane`: a half-space sliding antiplane on a rigid body (or its surface free under an applied
-  traction) in time, explicit, with Coulomb or slip-weakening friction (`run_antiplane`).
+  traction) in time, explicit, with Coulomb or slip-weakening friction (`run_antiplane`);
+- `quasidynamic`: a rate-and-state interface, antiplane, in the quasi-dynamic approximation (the static
+  response and the radiation damping; adaptive steps), on a rigid body or a fault (`run_quasidynamic`).
 
-Not yet: in-plane (modes I and II, with unilateral contact), two half-spaces, rate-and-state laws, the
-quasi-dynamic mode, the paper's waves as initial states, the command line.
+Not yet: in-plane (modes I and II, with unilateral contact), two half-spaces of different materials,
+rate-and-state in the fully dynamic mode, the paper's waves as initial states, the command line.
 """
 
 from .antiplane import (AntiplaneProblem, AntiplaneRun, Coulomb, FreeSurface, SlipWeakening, mode_traction,
                         run_antiplane, uniform_traction)
+from .quasidynamic import QuasiDynamicProblem, QuasiDynamicRun, run_quasidynamic
 from .kernels import antiplane_kernel, antiplane_kernel_integral, ragged_step_weights, step_weights, truncated_part
 
 __all__ = ["AntiplaneProblem", "AntiplaneRun", "Coulomb", "FreeSurface", "SlipWeakening", "mode_traction",
            "run_antiplane", "uniform_traction", "antiplane_kernel", "antiplane_kernel_integral", "step_weights",
-           "ragged_step_weights", "truncated_part"]
+           "ragged_step_weights", "truncated_part", "QuasiDynamicProblem", "QuasiDynamicRun", "run_quasidynamic"]
