@@ -49,7 +49,7 @@ ALLOWED = {
     "report": BASE | {"figures", "errata", "plotting", "files", "sweep", "__init__"},  # sweep: its process pool
     "cli": BASE | MODELS | {"friction", "contact", "sweep", "cluster", "files", "plotting", "figures", "report", "__init__"},
     "__main__": {"cli"},
-    "precompile": MODELS | {"friction"},  # a small case of each compiled path
+    "precompile": MODELS | {"friction", "sbim"},  # a small case of each compiled path
     "__init__": {"version"},
 }
 #: Sub-models of stickslip.brake and what each may import from the others.

@@ -64,12 +64,24 @@ def _fe_annulus() -> None:
     integrate_fem(BrakeParams.from_physical(50.0, 1e-4, 0.7), 64, 4, transits=0.2)
 
 
+def _sbim_history() -> None:
+    import numpy as np
+
+    from .sbim.history import KERNELS, History
+
+    h = History(np.ones(3, complex), np.array([0, 2, 1]), 2)
+    h.kernels = KERNELS.compiled
+    h.memory(1)
+    h.push(1, np.zeros(3, complex))
+
+
 #: The compiled paths, the longest to compile first: name -> a small case of it.
 PATHS = {"oscillator under a law that is not affine (DOP853 with the law)": _stribeck_oscillator,
          "systems under laws that are not affine (DOP853 with the laws)": _smooth_system,
          "systems' limit cycles (the event search)": _system_cycle,
          "the FE annulus (the explicit contact step)": _fe_annulus,
-         "oscillator under an affine law (closed-form pieces)": _affine_oscillator}
+         "oscillator under an affine law (closed-form pieces)": _affine_oscillator,
+         "the spectral boundary integral method's convolution": _sbim_history}
 
 
 def _timed(name: str) -> float:

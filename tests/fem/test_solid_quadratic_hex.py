@@ -87,6 +87,7 @@ def test_a_prism_of_quadratic_hexahedra_has_the_p_wave_modes_at_order_four(nodes
         assert np.all((3.5 < order) & (order < 4.5)), (mass, order)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("nodes, lumped", [(20, (1.7, 2.3)), (27, (3.3, 4.7))])
 def test_a_box_of_quadratic_hexahedra_on_rollers_has_both_families_of_modes_at_order_four(nodes, lumped):
     """The 8 lowest modes of the 1 x 0.83 x 0.45 m box on rollers on every face (compressional and

@@ -32,6 +32,7 @@ def normal(axis):
     return list(TURN[:, "xyz".index(axis)])
 
 
+@pytest.mark.slow
 def test_a_turned_box_on_rollers_along_its_faces_has_the_closed_form_modes_at_order_four():
     """The 1 x 0.83 x 0.45 m box of 27-node hexahedra turned by 0.7 rad about (1, 2, 3), on rollers on every
     face along that face's turned normal: its 8 lowest modes (consistent mass) against the box's closed form
@@ -185,6 +186,7 @@ def test_the_energy_books_close_on_slanted_rollers(slanted):
     assert np.abs(books.residual).max() <= 1e-10 * np.abs(np.diff(books.energy)).max()
 
 
+@pytest.mark.slow
 def test_slanted_rollers_give_the_same_steady_sliding_full_and_reduced_cea_as_the_unturned_pair(slanted):
     """The slanted pair is the unturned pair (rollers along coordinate axes, the path the dense independent
     pencil of `test_solid_pair` verifies) turned: the same steady pressures (1e-9), the same full CEA
