@@ -117,6 +117,12 @@ def test_a_roller_direction_that_is_none_is_refused_naming_it(value):
         direction_of(value, 3, "rollers.flank")
 
 
+def test_a_direction_of_huge_or_tiny_numbers_is_the_same_direction():
+    for scale in (1e300, 1e-140, 1.0):
+        d = direction_of([scale, scale, 0.0], 3, "rollers.x0")[0]
+        assert np.allclose(d, [2 ** -0.5, 2 ** -0.5, 0.0], rtol=1e-15)
+
+
 def test_a_solid_with_a_direction_for_supported_dofs_is_sent_to_solid_supports():
     solid = solid_from_meshio(box((1.0, 1.0, 1.0), (1, 1, 1)), units="m")
     from stickslip.fem.solid import supported_dofs

@@ -49,9 +49,10 @@ def direction_of(value, dimension: int, option: str):
         d = np.zeros(0)
     if isinstance(value, bool) or (isinstance(value, (list, tuple)) and any(isinstance(x, bool) for x in value)) or \
             d.shape != (dimension,) or not np.all(np.isfinite(d)) or \
-            not np.linalg.norm(d) > 1e-150:
+            not np.abs(d).max() > 1e-150:
         raise ParameterError(option, value, f"coordinate axes ({' or '.join(axes)}) or a direction of {dimension} "
                              "finite numbers, not all 0")
+    d = d / np.abs(d).max()  # first to its largest component: [1e300, 1e300, 0] has no finite norm
     return [d / np.linalg.norm(d)]
 
 
