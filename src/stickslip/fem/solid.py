@@ -660,18 +660,25 @@ def solid_static(system: SolidSystem, held=()) -> np.ndarray:
     return sup.expand(splu(sp.csc_array(sup.restrict(system.K))).solve(sup.load(system.load)))
 
 
-def supported_dofs(solid: Solid, clamped=(), rollers=None) -> np.ndarray:
-    """The degrees of freedom held: every one of the nodes of each face group in ``clamped``, and
-    along its axis (``"x"``, ``"y"`` or ``"z"``) those of each face group of ``rollers``
-    (``{group: axis}``: a symmetry plane or a sliding support normal to that axis). A roller along
-    another direction is no degree of freedom: `solid_supports` gives it."""
+def _support_groups(solid, clamped, rollers, rollers_allowed: str) -> list:
+    """The clamped face groups as a list, ``solid``, ``clamped`` and ``rollers`` checked (`supported_dofs`,
+    `solid_supports`)."""
     if not isinstance(solid, Solid):
         raise ParameterError("solid", solid, "a stickslip.fem.solid.Solid (read_solid)")
     groups = [clamped] if isinstance(clamped, str) else clamped
     if not isinstance(groups, (list, tuple)) or not all(isinstance(g, str) for g in groups):
         raise ParameterError("clamped", clamped, "a face group name or a list of them")
     if rollers is not None and not isinstance(rollers, dict):
-        raise ParameterError("rollers", rollers, "{face group: axis} or None")
+        raise ParameterError("rollers", rollers, rollers_allowed)
+    return list(groups)
+
+
+def supported_dofs(solid: Solid, clamped=(), rollers=None) -> np.ndarray:
+    """The degrees of freedom held: every one of the nodes of each face group in ``clamped``, and
+    along its axis (``"x"``, ``"y"`` or ``"z"``) those of each face group of ``rollers``
+    (``{group: axis}``: a symmetry plane or a sliding support normal to that axis). A roller along
+    another direction is no degree of freedom: `solid_supports` gives it."""
+    groups = _support_groups(solid, clamped, rollers, "{face group: axis} or None")
     held = [3 * solid.nodes(g, "clamped")[:, None] + np.arange(3) for g in groups]
     for group, axis in dict(rollers or {}).items():
         if not isinstance(axis, str) or axis not in AXES:
@@ -689,13 +696,7 @@ def solid_supports(solid: Solid, clamped=(), rollers=None):
     `solid_static` and `solid_damped_modes` take it as ``held``."""
     from .supports import direction_of, supports_from
 
-    if not isinstance(solid, Solid):
-        raise ParameterError("solid", solid, "a stickslip.fem.solid.Solid (read_solid)")
-    groups = [clamped] if isinstance(clamped, str) else clamped
-    if not isinstance(groups, (list, tuple)) or not all(isinstance(g, str) for g in groups):
-        raise ParameterError("clamped", clamped, "a face group name or a list of them")
-    if rollers is not None and not isinstance(rollers, dict):
-        raise ParameterError("rollers", rollers, "{face group: axes or a direction} or None")
+    groups = _support_groups(solid, clamped, rollers, "{face group: axes or a direction} or None")
     held = [(solid.nodes(g, "clamped"), list(np.eye(3))) for g in groups]
     held += [(solid.nodes(g, "rollers"), direction_of(d, 3, f"rollers[{g}]")) for g, d in dict(rollers or {}).items()]
     return supports_from(len(solid.points), 3, held)
