@@ -5,8 +5,12 @@ the equations of elastodynamics solved here, not by the code. Thresholds set bef
 * One Fourier mode of the surface under a traction ``T0 cos(k x)`` applied at ``t = 0`` moves as
   ``W(t) = (c T0 / mu) int_0^t J0(omega u) du`` (the Laplace transform of the antiplane wave equation
   in the half-space: ``W(s) = c T0 / (mu s sqrt(s^2 + omega^2))``), integrated here by quadrature;
-  the static limit ``T0 / (mu |k|)``. The scheme is first order: over three periods, the error's
-  observed order from beta = 0.2 to 0.05 in [0.8, 1.3] and within 2 % of the static slip at 0.05.
+  the static limit ``T0 / (mu |k|)``. Over three periods, the error within 2 % of the static slip at
+  beta = 0.05 and its observed order from beta = 0.2 to 0.05 in [1.7, 2.3]: the first threshold, [0.8,
+  1.3], was set for the weights of a rate held over the step (first order, measured 1.0) and failed
+  at 2.00 with the scheme's weights since issue 46's second increment (each step's slip at its end,
+  stable to beta = 2/pi where the others were not): this smooth problem converges at second order with
+  them, a measurement, not a property claimed for every run; the new range was set after seeing it.
 * The radiation-damping limit: a uniform traction step slides the surface at ``V = c T0 / mu`` at
   once and for ever (1e-12); on a patch of half-width ``a`` the centre slides at that rate until the
   waves from the patch's edges arrive at ``t = a / c`` (1 % before ``0.8 a / c``).
@@ -39,7 +43,7 @@ def exact_mode(t, T0, k):
     return np.array([C * T0 / MU * quad(lambda u: j0(k * C * u), 0.0, s, limit=500)[0] for s in t])
 
 
-def test_one_mode_of_the_free_surface_follows_the_exact_step_response_at_first_order():
+def test_one_mode_of_the_free_surface_follows_the_exact_step_response():
     T0, m, N = 1e6, 2, 32
     k = 2 * math.pi * m / L
     period = 2 * math.pi / (k * C)
@@ -56,7 +60,7 @@ def test_one_mode_of_the_free_surface_follows_the_exact_step_response_at_first_o
     static = T0 / (MU * k)
     order = math.log(errors[0] / errors[1]) / math.log(4.0)
     assert errors[1] <= 0.02 * static, (errors, static)
-    assert 0.8 <= order <= 1.3, (order, errors)
+    assert 1.7 <= order <= 2.3, (order, errors)
 
 
 def test_a_uniform_traction_step_slides_the_surface_at_the_radiation_damping_rate():
@@ -119,15 +123,18 @@ def test_a_kinetic_strength_above_the_static_one_is_refused():
 
 def test_the_ragged_history_convolves_as_a_dense_sum_written_here_compiled_or_not():
     """Each mode's memory ``sum_j W_j V_{s-1-j}`` over its own count of past steps, against the sum written
-    out here over a dense array; the compiled kernels give the interpreted ones' numbers bit for bit."""
+    out here over a dense array of the weights ``dt H(omega (j + 1) dt)`` (H by quadrature here); the
+    compiled kernels give the interpreted ones' numbers bit for bit."""
     from stickslip.sbim.history import KERNELS, History
-    from stickslip.sbim.kernels import ragged_step_weights, step_weights
+    from stickslip.sbim.kernels import ragged_step_weights
 
     rng = np.random.default_rng(0)
     omega, dt, counts, steps = np.array([0.0, 1.0, 2.0, 5.0]), 0.3, np.array([0, 7, 4, 2]), 12
-    dense = step_weights(omega, dt, counts, 7)
+    H = lambda T: 1.0 - quad(lambda u: j1(u) / u, 0.0, T, limit=500)[0]  # noqa: E731
+    dense = np.array([[dt * H(w * dt * (j + 1)) if j < n and w > 0 else 0.0 for j in range(7)]
+                      for w, n in zip(omega, counts)])
     flat = ragged_step_weights(omega, dt, counts)
-    assert np.array_equal(flat, np.concatenate([dense[m, :n] for m, n in enumerate(counts)]))
+    assert np.allclose(flat, np.concatenate([dense[m, :n] for m, n in enumerate(counts)]), rtol=1e-10, atol=1e-13)
     rates = rng.normal(size=(steps, 4)) + 1j * rng.normal(size=(steps, 4))
     runs = {}
     for name in ("interpreted", "compiled"):

@@ -11,6 +11,7 @@ _TITLES = {"oscillator": "The 1-DOF friction oscillator (`stickslip oscillator`,
            "fem": "Any 2-D body (`stickslip fem`, `stickslip.fem`)",
            "system": "Linear structures with several frictional contacts (`stickslip.system`)",
            "rsf": "Rate-and-state friction and the spring-slider (`stickslip.rsf`)",
+           "sbim": "Interfaces in time by the spectral boundary integral method (`stickslip.sbim`)",
            "common": "Shared by every model"}
 
 
@@ -55,7 +56,7 @@ def markdown(domains: dict[str, Domain]) -> str:
            "of the files written and these tables are all read from there. This page is generated "
            "(`python -m stickslip.quantities`); a name missing from a model's table is looked up under "
            "*Shared by every model*.\n"]
-    for name in ("oscillator", "brake", "halfspace", "fem", "system", "rsf", "common"):
+    for name in ("oscillator", "brake", "halfspace", "fem", "system", "rsf", "sbim", "common"):
         domain = domains[name]
         out.append(f"## {_TITLES[name]}\n")
         if domain.units:

@@ -14,15 +14,29 @@ shape. The method's name is the one geophysics and tribology use for it (QDYN, c
 - `quasidynamic`: a rate-and-state interface, antiplane, in the quasi-dynamic approximation (the static
   response and the radiation damping; adaptive steps), on a rigid body or a fault (`run_quasidynamic`).
 
-Not yet: in-plane (modes I and II, with unilateral contact), two half-spaces of different materials,
-rate-and-state in the fully dynamic mode, the paper's waves as initial states, the command line.
+- `inplane_kernels`: the in-plane (modes I and II) stiffness of the surface and its kernels, by folding
+  the Bromwich integral onto the branch cut;
+- `inplane`: a half-space sliding in its plane on a rigid body with unilateral contact (separation and
+  closing) and Coulomb or slip-weakening friction, or its surface free (`run_inplane`);
+- `stability`: each mode's recurrence and its roots; a run in which the scheme would grow is refused.
+
+Not yet: two half-spaces of different materials, rate-and-state in the fully dynamic mode, the flutter
+instability's dispersion relation and regularised laws, the paper's waves as initial states, the
+command line.
 """
 
 from .antiplane import (AntiplaneProblem, AntiplaneRun, Coulomb, FreeSurface, SlipWeakening, mode_traction,
                         run_antiplane, uniform_traction)
+from .inplane import (CoulombFriction, InplaneProblem, InplaneRun, SlipWeakeningFriction, mode_load, run_inplane,
+                      uniform_load)
+from .inplane_kernels import inplane_kernel_integrals, inplane_kernels, inplane_stiffness, static_stiffness
 from .quasidynamic import QuasiDynamicProblem, QuasiDynamicRun, run_quasidynamic
+from .stability import check_stable, growing_roots
 from .kernels import antiplane_kernel, antiplane_kernel_integral, ragged_step_weights, step_weights, truncated_part
 
 __all__ = ["AntiplaneProblem", "AntiplaneRun", "Coulomb", "FreeSurface", "SlipWeakening", "mode_traction",
            "run_antiplane", "uniform_traction", "antiplane_kernel", "antiplane_kernel_integral", "step_weights",
-           "ragged_step_weights", "truncated_part", "QuasiDynamicProblem", "QuasiDynamicRun", "run_quasidynamic"]
+           "ragged_step_weights", "truncated_part", "QuasiDynamicProblem", "QuasiDynamicRun", "run_quasidynamic",
+           "CoulombFriction", "InplaneProblem", "InplaneRun", "SlipWeakeningFriction", "mode_load", "run_inplane",
+           "uniform_load", "inplane_kernel_integrals", "inplane_kernels", "inplane_stiffness", "static_stiffness",
+           "check_stable", "growing_roots"]

@@ -59,13 +59,15 @@ class History:
         self.weights = np.asarray(weights, dtype=complex)
         self.buffer = np.zeros(self.size, dtype=complex)
         self.kernels = KERNELS.choose(STEP_COST * self.size * steps)
-        self._out = np.zeros(self.counts.size, dtype=complex)
 
-    def memory(self, step: int) -> np.ndarray:
-        """Each mode's convolution at ``step``."""
-        self.kernels.convolve(self.weights, self.buffer, self.offsets, self.counts, step, self._out)
+    def memory(self, step: int, weights: np.ndarray | None = None) -> np.ndarray:
+        """Each mode's convolution at ``step`` (a new array), with this history's weights or others of the
+        same layout (another kernel over the same rates)."""
+        out = np.zeros(self.counts.size, dtype=complex)
+        w = self.weights if weights is None else weights
+        self.kernels.convolve(w, self.buffer, self.offsets, self.counts, step, out)
         KERNELS.charge(self.kernels, STEP_COST * self.size)
-        return self._out
+        return out
 
     def push(self, step: int, rates: np.ndarray) -> None:
         self.kernels.push(self.buffer, self.offsets, self.counts, step, np.ascontiguousarray(rates, dtype=complex))

@@ -29,6 +29,7 @@ import numpy as np
 from ..errors import NoSolutionError, ParameterError
 from ..quantities.sbim import SBIM as Q
 from ..results import Result
+from .fields import space_time
 
 __all__ = ["QuasiDynamicProblem", "QuasiDynamicRun", "run_quasidynamic"]
 
@@ -108,14 +109,8 @@ class QuasiDynamicRun(Result):
                 "samples": len(self.t), "geometry": p.geometry}
 
     def to_xarray(self):
-        import xarray as xr
-
-        from ..cf import finish
-
-        ds = xr.Dataset({"slip": (("t", "x"), self.slip), "slip_rate": (("t", "x"), self.slip_rate)},
-                        coords={"t": self.t, "x": self.problem.x})
-        return finish(ds, f"quasi-dynamic rate-and-state interface ({self.problem.geometry})", "sbim",
-                      params={k: v for k, v in self.to_dict().items() if not isinstance(v, str)})
+        return space_time(self, ("slip", "slip_rate"), f"quasi-dynamic rate-and-state interface "
+                          f"({self.problem.geometry})")
 
 
 def _rates(problem: QuasiDynamicProblem, drive: np.ndarray, psi: np.ndarray, guess: np.ndarray) -> np.ndarray:

@@ -1,0 +1,269 @@
+"""An elastic half-space sliding in its plane on a rigid body (the paper's model 3), with unilateral
+contact and friction, or its surface free under applied tractions, in time: the spectral boundary
+integral method, modes I and II.
+
+The interface ``0 <= x < L`` is periodic, cut into ``N`` elements; the half-space lies above it
+(``y > 0``), the rigid body below, at rest. The surface's displacements are the slip ``U_x`` on the
+rigid body and the opening ``U_y`` (``>= 0`` in contact problems). Its tractions are the loading
+``(tau0, sigma0)(x, t)`` (the stresses with the surface held, negative ``sigma0`` compressive) plus the
+half-space's response (`stickslip.sbim.inplane_kernels`)::
+
+    sigma_xy = G_x - (mu / c_s) V_x,     sigma_yy = G_y - eta (mu / c_s) V_y,
+
+``G`` the loading and the static, coupling and memory terms computed mode by mode by the FFT from the
+displacements and the rates before the step (explicit, as `stickslip.sbim.antiplane`).
+
+**Laws.** `FreeSurface`: both tractions vanish. `CoulombFriction` and `SlipWeakeningFriction`:
+unilateral contact with the rigid body and a friction coefficient, static and kinetic or slip-weakened
+from static to kinetic over ``weakening_slip``. A closed node whose normal drive ``G_y`` is compressive
+stays closed (``V_y = 0``, ``sigma_yy = G_y``); otherwise it opens or moves free (``sigma_yy = 0``),
+and a gap that would close within the step closes exactly at its end (``V_y = -U_y / dt``, the impact's
+compression in ``sigma_yy``). The shear strength is the coefficient times ``N = max(-sigma_yy, 0)``: a
+stuck node holds while ``|G_x|`` stays within the static strength, a moving node slides at
+``V_x = (c_s / mu) sign(G_x) (|G_x| - f N)`` with the kinetic (or weakened) ``f`` and sticks again when
+``|G_x| <= f N``; an open node slides free.
+
+**Scheme.** First order (the rates held over a step, `stickslip.sbim.antiplane`); ``dt = beta dx /
+c_s``. Each mode keeps ``history_periods`` of its shear
+periods of rates, their weights faded over that window (`stickslip.sbim.inplane_kernels.hann_taper`:
+a kernel cut short lets the free surface's Rayleigh mode grow); the largest part of a kernel's
+integral left out by the cut is in the result. A run in which any mode of the scheme would grow by
+more than 1 % over its steps is refused (`stickslip.sbim.stability`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+
+from ..errors import ParameterError
+from ..quantities.sbim import SBIM as Q
+from ..results import Result
+from .antiplane import MAX_HISTORY, FreeSurface
+from .fields import space_time
+from .history import History
+from .stability import check_stable
+from .inplane_kernels import inplane_step_weights, inplane_truncation, static_stiffness, wave_speed_ratio
+
+#: Most dimensionless times in a run's kernel table (`stickslip.sbim.inplane_kernels.kernel_table`).
+MAX_TABLE = 1 << 24
+#: Most shear periods of history in-plane.
+MAX_PERIODS = 64.0
+#: Largest Poisson's ratio in-plane (c_p / c_s = 7.1).
+MAX_POISSON = 0.49
+
+__all__ = ["CoulombFriction", "SlipWeakeningFriction", "InplaneProblem", "InplaneRun", "run_inplane",
+           "uniform_load", "mode_load"]
+
+
+def _coefficients(law) -> None:
+    for name in ("static_friction", "kinetic_friction"):
+        object.__setattr__(law, name, Q.check(name, getattr(law, name)))
+    if law.kinetic_friction > law.static_friction:
+        raise ParameterError("kinetic_friction", law.kinetic_friction, f"at most static_friction = "
+                             f"{law.static_friction:g}", also=("static_friction",))
+
+
+@dataclass(frozen=True)
+class CoulombFriction:
+    """Unilateral contact with static and kinetic friction coefficients."""
+
+    static_friction: float
+    kinetic_friction: float
+
+    def __post_init__(self):
+        _coefficients(self)
+
+    def coefficient(self, slip: np.ndarray, sliding: np.ndarray) -> np.ndarray:
+        return np.where(sliding, self.kinetic_friction, self.static_friction)
+
+
+@dataclass(frozen=True)
+class SlipWeakeningFriction:
+    """Unilateral contact with a friction coefficient falling linearly with slip from ``static_friction``
+    to ``kinetic_friction`` over ``weakening_slip`` [m]."""
+
+    static_friction: float
+    kinetic_friction: float
+    weakening_slip: float
+
+    def __post_init__(self):
+        _coefficients(self)
+        object.__setattr__(self, "weakening_slip", Q.check("weakening_slip", self.weakening_slip))
+
+    def coefficient(self, slip: np.ndarray, sliding: np.ndarray) -> np.ndarray:
+        fall = np.minimum(np.abs(slip) / self.weakening_slip, 1.0)
+        return self.static_friction - (self.static_friction - self.kinetic_friction) * fall
+
+
+def uniform_load(traction: float, normal_traction: float) -> Callable:
+    """Shear ``traction`` and ``normal_traction`` [Pa] (negative: compression), uniform, from ``t = 0``."""
+    tau, sigma = Q.check("traction", traction), Q.check("normal_traction", normal_traction)
+    return lambda x, t: (np.full(np.shape(x), tau), np.full(np.shape(x), sigma))
+
+
+def mode_load(traction: float, normal_traction: float, mode: int, length: float) -> Callable:
+    """``(traction, normal_traction) cos(2 pi mode x / length)`` [Pa] from ``t = 0``."""
+    tau, sigma = Q.check("traction", traction), Q.check("normal_traction", normal_traction)
+    mode, length = Q.check("mode", mode), Q.check("length", length)
+    return lambda x, t: (tau * np.cos(2.0 * math.pi * mode * x / length),
+                         sigma * np.cos(2.0 * math.pi * mode * x / length))
+
+
+@dataclass(frozen=True)
+class InplaneProblem:
+    """A half-space (``shear_modulus`` [Pa], ``shear_wave_speed`` [m/s], ``poisson``) whose surface,
+    periodic over ``length`` [m] in ``elements``, slides in its plane on a rigid body under the ``law``
+    and the ``load`` (a function of ``x`` [m] and ``t`` [s] giving the shear and normal tractions [Pa]:
+    `uniform_load`, `mode_load`); ``beta``, ``history_periods``: the scheme's (module docstring)."""
+
+    shear_modulus: float
+    shear_wave_speed: float
+    poisson: float
+    length: float
+    elements: int
+    load: Callable
+    law: object = field(default_factory=FreeSurface)
+    beta: float = 0.3
+    history_periods: float = 16.0
+
+    def __post_init__(self):
+        for name in ("shear_modulus", "shear_wave_speed", "poisson", "length", "elements", "history_periods"):
+            object.__setattr__(self, name, Q.check(name, getattr(self, name)))
+        beta = self.beta
+        object.__setattr__(self, "beta", Q.check("beta", beta))
+        if self.poisson > MAX_POISSON:
+            raise ParameterError("poisson", self.poisson, f"at most {MAX_POISSON} in-plane (the kernels' quadrature "
+                                 "grows with c_p / c_s)")
+        if self.history_periods > MAX_PERIODS:
+            raise ParameterError("history_periods", self.history_periods, f"at most {MAX_PERIODS:g} in-plane (the "
+                                 "kernels' quadrature grows with the square of the history; their tails beyond are "
+                                 "below 1e-4 of their start)")
+        if not callable(self.load):
+            raise ParameterError("load", self.load, "a function of (x [m], t [s]) giving the shear and normal "
+                                 "tractions [Pa] (uniform_load, mode_load)")
+        if not isinstance(self.law, (FreeSurface, CoulombFriction, SlipWeakeningFriction)):
+            raise ParameterError("law", self.law, "FreeSurface(), CoulombFriction(...) or SlipWeakeningFriction(...)")
+
+    @property
+    def eta(self) -> float:
+        """``c_p / c_s``."""
+        return wave_speed_ratio(self.poisson)
+
+    @property
+    def dx(self) -> float:
+        return self.length / self.elements
+
+    @property
+    def dt(self) -> float:
+        return self.beta * self.dx / self.shear_wave_speed
+
+    @property
+    def x(self) -> np.ndarray:
+        return np.arange(self.elements) * self.dx
+
+    @property
+    def wavenumbers(self) -> np.ndarray:
+        return 2.0 * math.pi * np.arange(self.elements // 2 + 1) / self.length
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class InplaneRun(Result):
+    """Samples ``t`` [s] of the slip, opening, their rates and the tractions at each ``x`` (``(samples, N)``)."""
+
+    problem: InplaneProblem
+    t: np.ndarray
+    slip: np.ndarray
+    opening: np.ndarray
+    slip_rate: np.ndarray
+    opening_rate: np.ndarray
+    shear_stress: np.ndarray
+    normal_traction: np.ndarray
+    kernel_truncation: float
+
+    FIELDS = ("slip", "opening", "slip_rate", "opening_rate", "shear_stress", "normal_traction")
+
+    def to_dict(self) -> dict:
+        p = self.problem
+        return {"shear_modulus": p.shear_modulus, "shear_wave_speed": p.shear_wave_speed, "poisson": p.poisson,
+                "length": p.length, "elements": p.elements, "beta": p.beta, "dt": p.dt,
+                "history_periods": p.history_periods, "kernel_truncation": self.kernel_truncation,
+                "samples": len(self.t), "law": type(p.law).__name__}
+
+    def to_xarray(self):
+        return space_time(self, self.FIELDS, "in-plane sliding of an elastic half-space on a rigid body (spectral "
+                          "boundary integral method)")
+
+
+def _step_law(law, Gx, Gy, slip, gap, sliding, dt, rad):
+    """The rates and tractions of one step at each node (module docstring)."""
+    rad_t, rad_n = rad
+    if isinstance(law, FreeSurface):
+        return Gx / rad_t, Gy / rad_n, np.zeros_like(Gx), np.zeros_like(Gy), sliding
+    Vy = np.where((gap > 0.0) | (Gy > 0.0), Gy / rad_n, 0.0)
+    Vy = np.maximum(Vy, -gap / dt)  # a gap closing within the step closes at its end
+    syy = Gy - rad_n * Vy
+    N = np.maximum(-syy, 0.0)
+    held = np.abs(Gx) <= law.coefficient(slip, sliding) * N
+    excess = np.abs(Gx) - law.coefficient(slip, np.ones(slip.shape, bool)) * N
+    sliding = ~held & (excess > 0.0)
+    Vx = np.where(sliding, np.sign(Gx) * excess / rad_t, 0.0)
+    return Vx, Vy, Gx - rad_t * Vx, syy, sliding
+
+
+def run_inplane(problem: InplaneProblem, steps: int, every: int = 1) -> InplaneRun:
+    """Run ``problem`` from rest for ``steps`` steps, storing every ``every``-th (and the last)."""
+    if not isinstance(problem, InplaneProblem):
+        raise ParameterError("problem", problem, "an InplaneProblem")
+    steps, every = Q.check("steps", steps), Q.check("every", every)
+    p = problem
+    n, mu, cs, dt, eta = p.elements, p.shear_modulus, p.shear_wave_speed, p.dt, p.eta
+    k = p.wavenumbers
+    T1 = 2.0 * math.pi * p.beta / n  # k_1 c_s dt
+    asked = p.history_periods * n / p.beta  # about the kernel table's length
+    if asked > MAX_TABLE:
+        raise ParameterError("beta", p.beta, f"a kernel table of at most {MAX_TABLE} times (history_periods x elements "
+                             f"/ beta = {asked:.3g}: a larger beta, fewer history_periods or elements)",
+                             also=("history_periods", "elements"))
+    window = np.zeros(k.size, dtype=np.int64)
+    window[1:] = np.ceil(p.history_periods * 2.0 * math.pi / (T1 * np.arange(1, k.size)))
+    count = np.minimum(steps, window)
+    if int(count.sum()) > MAX_HISTORY // 2:
+        raise ParameterError("steps", steps, f"a history of at most {MAX_HISTORY // 2} numbers per component "
+                             f"({int(count.sum())} asked: fewer history_periods, elements or steps)",
+                             also=("history_periods",))
+    check_stable("inplane", p.beta, n, p.history_periods, steps, p.poisson)
+    w11, w22, w12 = inplane_step_weights(p.poisson, T1, dt, count, window)
+    hx, hy = History(w11, count, steps), History(w22, count, steps)
+    s11, s22, s12 = static_stiffness(p.poisson)
+    muk = mu * k
+    x = p.x
+    Ux, Uy = np.zeros(n), np.zeros(n)
+    sliding = np.zeros(n, bool)
+    rad = (mu / cs, eta * mu / cs)
+    out = {name: [] for name in ("t",) + InplaneRun.FIELDS}
+    for step in range(steps + 1):
+        t = step * dt
+        ux, uy = np.fft.rfft(Ux), np.fft.rfft(Uy)
+        fx = muk * (hx.memory(step) - s11 * ux) + 1j * muk * (s12 * uy - hy.memory(step, w12))
+        fy = muk * (hy.memory(step) - s22 * uy) - 1j * muk * (s12 * ux - hx.memory(step, w12))
+        tau0, sigma0 = p.load(x, t)
+        Gx = tau0 + np.fft.irfft(fx, n)
+        Gy = sigma0 + np.fft.irfft(fy, n)
+        if not (np.all(np.isfinite(Gx)) and np.all(np.isfinite(Gy))):
+            raise ParameterError("load", "a loading", f"finite tractions (not finite at t = {t:g} s)")
+        Vx, Vy, sxy, syy, sliding = _step_law(p.law, Gx, Gy, Ux, Uy, sliding, dt, rad)
+        if step % every == 0 or step == steps:
+            for name, value in zip(out, (t, Ux.copy(), Uy.copy(), Vx, Vy, sxy, syy)):
+                out[name].append(value)
+        if step == steps:
+            break
+        Ux, Uy = Ux + dt * Vx, Uy + dt * Vy
+        if not isinstance(p.law, FreeSurface):
+            Uy = np.maximum(Uy, 0.0)  # closed to round-off
+        hx.push(step, np.fft.rfft(Vx))
+        hy.push(step, np.fft.rfft(Vy))
+    return InplaneRun(p, *(np.array(out[name]) for name in out), inplane_truncation(p.poisson, p.history_periods))
