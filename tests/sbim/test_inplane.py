@@ -180,11 +180,13 @@ def test_coulomb_contact_sticks_slides_and_opens():
 
 def test_a_gap_closes_exactly_and_the_impact_compresses():
     """Opened by tension, then pressed: the gap closes to 0 (not below) and the normal traction is
-    compressive from then on; the opening never negative."""
+    compressive from then on; the opening never negative and always the sum of its rates."""
     load = lambda x, t: (np.zeros_like(x), np.where(t < 0.01, 1e6, -5e6) + 0 * x)  # noqa: E731
     run = run_inplane(InplaneProblem(MU, C, NU, L, 16, load, CoulombFriction(0.5, 0.5)), 200)
     assert run.opening.min() >= 0.0 and run.opening[-1].max() == 0.0
     assert run.opening.max() > 0.0 and (run.normal_traction[-1] <= 0.0).all()
+    dt = run.problem.dt  # the opening is its rate's sum: the closing step stops at contact, not beyond
+    assert np.abs(np.cumsum(run.opening_rate[:-1], axis=0) * dt - run.opening[1:]).max() <= 1e-12 * run.opening.max()
 
 
 def test_a_run_is_a_cf_dataset():
