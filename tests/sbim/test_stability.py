@@ -8,6 +8,8 @@ computed here and against runs.
   500 steps at most that of the first 500). With the exact weights of a rate held over the step (the
   first increment's) the antiplane run grows at beta = 0.6: the test below shows it, as the reason for
   the scheme's weights.
+* The in-plane memory faded over its window keeps a long free run stable where the same memory cut short
+  grows (its recurrence's eigenvalues computed here).
 * A free in-plane surface at nu = 0.4 is refused at beta = 0.3 (the instantaneous coupling 2 - c_p / c_s
   is negative there; its shortest modes grow), naming beta; at nu = 1/4 it is accepted.
 """
@@ -102,3 +104,17 @@ def test_a_free_surface_above_a_third_in_poisson_is_refused_naming_beta():
         run_inplane(InplaneProblem(MU, C, 0.4, L, 32, load, beta=0.3), 2000)
     assert "grow" in str(info.value) and "history_periods" in str(info.value)
     run_inplane(InplaneProblem(MU, C, 0.25, L, 32, load, beta=0.3), 2000)
+
+
+def test_the_faded_memory_keeps_a_long_free_run_stable_where_a_cut_one_grows():
+    """A free surface at nu = 1/4 with 8 periods of history over 4000 steps: accepted with the scheme's
+    faded memory; the same memory cut short at its window (faded over a window 300 times longer)
+    has a root outside the unit circle for the longest mode (the Rayleigh mode growing slowly; the count
+    is the one checked against the companion matrix above)."""
+    N = 128
+    run = run_inplane(InplaneProblem(MU, C, 0.25, L, N, rough(N, 3), beta=0.3, history_periods=8), 4000, every=4000)
+    assert np.all(np.isfinite(run.opening))
+    a = 2 * math.pi * 0.3 / N
+    M = int(math.ceil(8 * 2 * math.pi / a))
+    assert growing_roots(a, M, "inplane", 0.25) == 0
+    assert growing_roots(a, M, "inplane", 0.25, window_steps=1 << 20) > 0  # a window 300 times longer
