@@ -210,3 +210,9 @@ def test_bad_input_is_refused_naming_it(change, name):
 def test_a_kinetic_friction_above_the_static_one_is_refused():
     with pytest.raises(ParameterError, match="kinetic_friction"):
         CoulombFriction(0.4, 0.6)
+
+
+@pytest.mark.parametrize("load", [lambda x, t: x, lambda x, t: (1.0, "a"), lambda x, t: (np.ones(3), 0.0)])
+def test_a_load_giving_other_than_two_tractions_per_node_is_refused(load):
+    with pytest.raises(ParameterError, match="load"):
+        run_inplane(InplaneProblem(MU, C, NU, L, 16, load, CoulombFriction(0.5, 0.4)), 5)

@@ -214,6 +214,18 @@ def _step_law(law, Gx, Gy, slip, gap, sliding, dt, rad):
     return Vx, Vy, Gx - rad_t * Vx, syy, sliding
 
 
+def _loaded(load, x, t):
+    """The shear and normal tractions of ``load`` at ``t``, each one per node, or refused."""
+    try:
+        tau0, sigma0 = load(x, t)
+        tau0 = np.broadcast_to(np.asarray(tau0, dtype=float), x.shape)
+        sigma0 = np.broadcast_to(np.asarray(sigma0, dtype=float), x.shape)
+    except (TypeError, ValueError) as err:
+        raise ParameterError("load", "a loading", f"a function of (x, t) giving two arrays, the shear and normal "
+                             f"tractions [Pa] at the {x.size} nodes ({err})") from None
+    return tau0, sigma0
+
+
 def run_inplane(problem: InplaneProblem, steps: int, every: int = 1) -> InplaneRun:
     """Run ``problem`` from rest for ``steps`` steps, storing every ``every``-th (and the last)."""
     if not isinstance(problem, InplaneProblem):
@@ -250,9 +262,8 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1) -> InplaneR
         ux, uy = np.fft.rfft(Ux), np.fft.rfft(Uy)
         fx = muk * (hx.memory(step) - s11 * ux) + 1j * muk * (s12 * uy - hy.memory(step, w12))
         fy = muk * (hy.memory(step) - s22 * uy) - 1j * muk * (s12 * ux - hx.memory(step, w12))
-        tau0, sigma0 = p.load(x, t)
-        Gx = tau0 + np.fft.irfft(fx, n)
-        Gy = sigma0 + np.fft.irfft(fy, n)
+        Gx, Gy = _loaded(p.load, x, t)
+        Gx, Gy = Gx + np.fft.irfft(fx, n), Gy + np.fft.irfft(fy, n)
         if not (np.all(np.isfinite(Gx)) and np.all(np.isfinite(Gy))):
             raise ParameterError("load", "a loading", f"finite tractions (not finite at t = {t:g} s)")
         Vx, Vy, sxy, syy, sliding = _step_law(p.law, Gx, Gy, Ux, Uy, sliding, dt, rad)
