@@ -7,6 +7,9 @@ node is the sum over nodes and past steps of a space-time influence matrix (here
 kernels summed into real space once, ``N x N x steps``) times the slip rates, O(N^2 x steps) a step;
 the spectral one costs O(N log N) plus each mode's own history, about ``(eta N / beta) ln(N / 2)``.
 
+The in-plane runs' cost a step is printed beside (two components, four convolutions, 16 periods of
+history at beta = 0.3; the run's set-up, its kernel table and stability check, not timed).
+
     .venv/bin/python benchmarks/sbim_antiplane.py [--largest 14] [--steps 200]
 """
 
@@ -18,8 +21,8 @@ import time
 
 import numpy as np
 
-from stickslip.sbim import AntiplaneProblem, FreeSurface, run_antiplane
-from stickslip.sbim.kernels import step_weights
+from stickslip.sbim import AntiplaneProblem, FreeSurface, InplaneProblem, run_antiplane, run_inplane
+from stickslip.sbim.kernels import ragged_step_weights
 
 MU, C, L = 3e10, 3000.0, 1000.0
 
@@ -46,7 +49,10 @@ def direct(N, steps):
     problem = AntiplaneProblem(MU, C, L, N, pulse, FreeSurface(), beta=0.5, history_periods=4.0)
     k = problem.wavenumbers
     dt = problem.dt
-    W = step_weights(k * C, dt, np.full(k.size, steps), steps)  # every lag kept: the direct method truncates nothing
+    counts = np.full(k.size, steps)
+    counts[0] = 0
+    W = np.zeros((k.size, steps))  # the scheme's weights at every lag: the direct method truncates nothing
+    W[1:] = ragged_step_weights(k[1:] * C, dt, counts[1:]).reshape(k.size - 1, steps)
     G = np.fft.irfft(MU * k[:, None] * W, N, axis=0).T  # (lags, N): influence at a distance
     S = np.fft.irfft(-MU * k, N)  # static: -mu |k| w in real space
     idx = (np.arange(N)[:, None] - np.arange(N)[None, :]) % N
@@ -65,6 +71,15 @@ def direct(N, steps):
         slip = slip + dt * rate
         rates.append(rate)
     return (time.perf_counter() - t0) / steps, slip
+
+
+def inplane(N, steps):
+    """In-plane (`stickslip.sbim.inplane`): two components, four convolutions a step, beta = 0.3, 16 periods."""
+    problem = InplaneProblem(MU, C, 0.25, L, N, lambda x, t: (pulse(x, t), -pulse(x, t)), FreeSurface(), beta=0.3)
+    run_inplane(problem, 2)
+    t = time.perf_counter()
+    run_inplane(problem, steps, every=steps)
+    return (time.perf_counter() - t) / steps
 
 
 def main():
@@ -86,6 +101,8 @@ def main():
     # up to its 4 periods; the direct one keeps all)
     print(f"direct at N = {N}, {steps} steps: {s_direct:.3e} s/step; spectral {s_spectral:.3e} s/step; "
           f"ratio direct / spectral {s_direct / s_spectral:.1f}")
+    for N in (256, 1024, 4096):
+        print(f"in-plane at N = {N}: {inplane(N, args.steps):.3e} s/step (antiplane {costs.get(N, float('nan')):.3e})")
     big = max(costs)
     print(f"N = {big}: {costs[big]:.3e} s/step, 1e5 steps would take {1e5 * costs[big]:.0f} s")
     print(f"growth from N = 256 to {big}: {costs[big] / costs[256]:.1f} (N log N alone: "

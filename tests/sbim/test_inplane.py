@@ -27,8 +27,9 @@ from scipy.integrate import quad
 from scipy.optimize import brentq
 
 from stickslip.errors import ParameterError
-from stickslip.sbim import (CoulombFriction, FreeSurface, InplaneProblem, SlipWeakeningFriction, inplane_kernels,
+from stickslip.sbim import (CoulombFriction, FreeSurface, InplaneProblem, SlipWeakeningFriction,
                             inplane_kernel_integrals, inplane_stiffness, mode_load, run_inplane, uniform_load)
+from stickslip.sbim.inplane_kernels import inplane_kernels
 
 MU, C, L, NU = 3e10, 3000.0, 1000.0, 0.25
 ETA = math.sqrt(2 * (1 - NU) / (1 - 2 * NU))

@@ -15,7 +15,8 @@ shape. The method's name is the one geophysics and tribology use for it (QDYN, c
   response and the radiation damping; adaptive steps), on a rigid body or a fault (`run_quasidynamic`).
 
 - `inplane_kernels`: the in-plane (modes I and II) stiffness of the surface and its kernels, by folding
-  the Bromwich integral onto the branch cut;
+  the Bromwich integral onto the branch cut (the module; its function of the same name is not
+  re-exported here, where the name is the module's);
 - `inplane`: a half-space sliding in its plane on a rigid body with unilateral contact (separation and
   closing) and Coulomb or slip-weakening friction, or its surface free (`run_inplane`);
 - `stability`: each mode's recurrence and its roots; a run in which the scheme would grow is refused.
@@ -29,7 +30,7 @@ from .antiplane import (AntiplaneProblem, AntiplaneRun, Coulomb, FreeSurface, Sl
                         run_antiplane, uniform_traction)
 from .inplane import (CoulombFriction, InplaneProblem, InplaneRun, SlipWeakeningFriction, mode_load, run_inplane,
                       uniform_load)
-from .inplane_kernels import inplane_kernel_integrals, inplane_kernels, inplane_stiffness, static_stiffness
+from .inplane_kernels import inplane_kernel_integrals, inplane_stiffness, static_stiffness
 from .quasidynamic import QuasiDynamicProblem, QuasiDynamicRun, run_quasidynamic
 from .stability import check_stable, growing_roots
 from .kernels import antiplane_kernel, antiplane_kernel_integral, ragged_step_weights, step_weights, truncated_part
@@ -38,5 +39,5 @@ __all__ = ["AntiplaneProblem", "AntiplaneRun", "Coulomb", "FreeSurface", "SlipWe
            "run_antiplane", "uniform_traction", "antiplane_kernel", "antiplane_kernel_integral", "step_weights",
            "ragged_step_weights", "truncated_part", "QuasiDynamicProblem", "QuasiDynamicRun", "run_quasidynamic",
            "CoulombFriction", "InplaneProblem", "InplaneRun", "SlipWeakeningFriction", "mode_load", "run_inplane",
-           "uniform_load", "inplane_kernel_integrals", "inplane_kernels", "inplane_stiffness", "static_stiffness",
+           "uniform_load", "inplane_kernel_integrals", "inplane_stiffness", "static_stiffness",
            "check_stable", "growing_roots"]
