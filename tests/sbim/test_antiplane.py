@@ -149,3 +149,9 @@ def test_the_ragged_history_convolves_as_a_dense_sum_written_here_compiled_or_no
         expected = [sum(dense[m, j] * rates[s - 1 - j, m] for j in range(min(counts[m], s))) for m in range(4)]
         assert np.allclose(runs["interpreted"][s], expected, rtol=1e-14, atol=1e-14)
     assert np.array_equal(runs["interpreted"], runs["compiled"])
+
+
+@pytest.mark.parametrize("traction", [lambda x, t: "a", lambda x, t: np.ones(3), lambda x, t: (x, x)])
+def test_a_traction_giving_other_than_one_number_per_node_is_refused(traction):
+    with pytest.raises(ParameterError, match="traction"):
+        run_antiplane(AntiplaneProblem(MU, C, L, 16, traction), 5)

@@ -207,7 +207,11 @@ def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1) -> Anti
         t = step * dt
         memory = history.memory(step)
         f = np.fft.irfft(mu * k * (memory - np.fft.rfft(slip)), n)
-        drive = p.traction(x, t) + f
+        try:
+            drive = np.broadcast_to(np.asarray(p.traction(x, t), dtype=float), x.shape) + f
+        except (TypeError, ValueError) as err:
+            raise ParameterError("traction", "a loading", f"a function of (x, t) giving the shear traction [Pa] at the "
+                                 f"{n} nodes ({err})") from None
         if not np.all(np.isfinite(drive)):
             raise ParameterError("traction", "a loading", f"finite tractions (not finite at t = {t:g} s)")
         held = np.abs(drive) <= law.strength(slip, sliding)  # a stuck node holds up to its static strength
