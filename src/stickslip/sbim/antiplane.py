@@ -38,7 +38,7 @@ import numpy as np
 from ..errors import ParameterError
 from ..quantities.sbim import SBIM as Q
 from ..results import Result
-from .fields import space_time
+from .fields import PeriodicGrid, space_time
 from .history import History
 from .kernels import ragged_step_weights, truncated_part
 from .stability import check_stable
@@ -113,7 +113,7 @@ def mode_traction(traction: float, mode: int, length: float) -> Callable:
 
 
 @dataclass(frozen=True)
-class AntiplaneProblem:
+class AntiplaneProblem(PeriodicGrid):
     """A half-space (``shear_modulus`` [Pa], ``shear_wave_speed`` [m/s]) whose surface, periodic over
     ``length`` [m] in ``elements``, slides antiplane on a rigid body under the ``law`` and the loading
     ``traction`` (a function of ``x`` [m] and ``t`` [s] giving Pa); ``beta``, ``history_periods``: the
@@ -141,23 +141,6 @@ class AntiplaneProblem:
                                  "[Pa] (uniform_traction, mode_traction)")
         if not isinstance(self.law, (FreeSurface, Coulomb, SlipWeakening)):
             raise ParameterError("law", self.law, "FreeSurface(), Coulomb(...) or SlipWeakening(...)")
-
-    @property
-    def dx(self) -> float:
-        return self.length / self.elements
-
-    @property
-    def dt(self) -> float:
-        return self.beta * self.dx / self.shear_wave_speed
-
-    @property
-    def x(self) -> np.ndarray:
-        return np.arange(self.elements) * self.dx
-
-    @property
-    def wavenumbers(self) -> np.ndarray:
-        """``|k|`` of the real FFT's modes [1/m]."""
-        return 2.0 * math.pi * np.arange(self.elements // 2 + 1) / self.length
 
 
 @dataclass(frozen=True, eq=False, repr=False)

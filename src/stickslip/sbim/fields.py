@@ -1,8 +1,34 @@
-"""A run's samples in space and time as a CF dataset: one builder for every run of `stickslip.sbim`."""
+"""What every periodic interface of `stickslip.sbim` shares: its grid in space and time (`PeriodicGrid`)
+and its run's samples as a CF dataset (`space_time`)."""
 
 from __future__ import annotations
 
-__all__ = ["space_time"]
+import math
+
+import numpy as np
+
+__all__ = ["PeriodicGrid", "space_time"]
+
+
+class PeriodicGrid:
+    """The grid of a problem with ``length``, ``elements``, ``beta`` and ``shear_wave_speed``."""
+
+    @property
+    def dx(self) -> float:
+        return self.length / self.elements
+
+    @property
+    def dt(self) -> float:
+        return self.beta * self.dx / self.shear_wave_speed
+
+    @property
+    def x(self) -> np.ndarray:
+        return np.arange(self.elements) * self.dx
+
+    @property
+    def wavenumbers(self) -> np.ndarray:
+        """``|k|`` of the real FFT's modes [1/m]."""
+        return 2.0 * math.pi * np.arange(self.elements // 2 + 1) / self.length
 
 
 def space_time(run, names: tuple[str, ...], title: str):

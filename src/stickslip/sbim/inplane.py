@@ -43,7 +43,7 @@ from ..errors import ParameterError
 from ..quantities.sbim import SBIM as Q
 from ..results import Result
 from .antiplane import MAX_HISTORY, FreeSurface
-from .fields import space_time
+from .fields import PeriodicGrid, space_time
 from .history import History
 from .stability import check_stable
 from .inplane_kernels import inplane_step_weights, inplane_truncation, static_stiffness, wave_speed_ratio
@@ -114,7 +114,7 @@ def mode_load(traction: float, normal_traction: float, mode: int, length: float)
 
 
 @dataclass(frozen=True)
-class InplaneProblem:
+class InplaneProblem(PeriodicGrid):
     """A half-space (``shear_modulus`` [Pa], ``shear_wave_speed`` [m/s], ``poisson``) whose surface,
     periodic over ``length`` [m] in ``elements``, slides in its plane on a rigid body under the ``law``
     and the ``load`` (a function of ``x`` [m] and ``t`` [s] giving the shear and normal tractions [Pa]:
@@ -152,22 +152,6 @@ class InplaneProblem:
     def eta(self) -> float:
         """``c_p / c_s``."""
         return wave_speed_ratio(self.poisson)
-
-    @property
-    def dx(self) -> float:
-        return self.length / self.elements
-
-    @property
-    def dt(self) -> float:
-        return self.beta * self.dx / self.shear_wave_speed
-
-    @property
-    def x(self) -> np.ndarray:
-        return np.arange(self.elements) * self.dx
-
-    @property
-    def wavenumbers(self) -> np.ndarray:
-        return 2.0 * math.pi * np.arange(self.elements // 2 + 1) / self.length
 
 
 @dataclass(frozen=True, eq=False, repr=False)
