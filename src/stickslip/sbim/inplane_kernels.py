@@ -47,7 +47,8 @@ from ..errors import ParameterError
 from ..quantities.sbim import SBIM
 
 __all__ = ["wave_speed_ratio", "static_stiffness", "inplane_stiffness", "inplane_kernels",
-           "inplane_kernel_integrals", "inplane_step_weights", "inplane_truncation", "hann_taper", "kernel_table", "KERNEL_NAMES"]
+           "inplane_kernel_integrals", "inplane_step_weights", "inplane_truncation", "hann_taper", "kernel_table",
+           "KERNEL_NAMES"]
 
 #: The three kernels' names, in the order `inplane_kernels` returns them.
 KERNEL_NAMES = ("h11", "h22", "h12")
