@@ -43,6 +43,16 @@ SBIM = Domain("sbim", units="SI", quantities=[
     Q("static_friction", "1", "static friction coefficient of the interface (in-plane)", "[0, 10]", symbol="f_s"),
     Q("kinetic_friction", "1", "kinetic friction coefficient, or its weakened value (in-plane)", "[0, 10]",
       symbol="f_d"),
+    Q("friction", "1", "friction coefficient of steady sliding (the flutter equation)", "[0, 10]", symbol="f"),
+    Q("relaxation", "1", "a mode's Prakash-Clifton relaxation, k c_s t_r (0: Coulomb's law)", "[0, 1e12]",
+      symbol="kappa"),
+    Q("relaxation_time", "s", "Prakash-Clifton relaxation time of steady sliding, L / (V0 + V*) (0: Coulomb's law)",
+      "[0, 1e6]", symbol="t_r"),
+    Q("wavenumber", "1/m", "wavenumber of a perturbation along the interface", "(0, 1e12]", symbol="k"),
+    Q("relaxation_slip", "m", "slip over which the pressure the strength sees follows the contact pressure "
+      "(Prakash-Clifton)", "(0, 1e3]", symbol="L"),
+    Q("relaxation_speed", "m/s", "slip rate added to |V| in the Prakash-Clifton relaxation (a node at rest "
+      "still relaxes)", "(0, 1e4]", symbol="V*"),
     Q("normal_traction", "Pa", "normal traction sigma_yy on the interface, applied (amplitude) or in a run (negative: compression)",
       "[-1e11, 1e11]", symbol="sigma_0"),
     Q("traction", "Pa", "applied shear traction (amplitude)", "[-1e11, 1e11]", symbol="tau_0"),

@@ -19,7 +19,10 @@ shape. The method's name is the one geophysics and tribology use for it (QDYN, c
   re-exported here, where the name is the module's);
 - `inplane`: a half-space sliding in its plane on a rigid body with unilateral contact (separation and
   closing) and Coulomb or slip-weakening friction, or its surface free (`run_inplane`);
-- `stability`: each mode's recurrence and its roots; a run in which the scheme would grow is refused.
+- `stability`: each mode's recurrence and its roots; a run in which the scheme would grow is refused;
+- `interface`: the in-plane interface laws (contact, friction, Prakash and Clifton's regularisation);
+- `flutter`: the flutter instability of steady sliding (its dispersion relation and roots) and whether
+  a run's law is well posed.
 
 Not yet: two half-spaces of different materials, rate-and-state in the fully dynamic mode, the flutter
 instability's dispersion relation and regularised laws, the paper's waves as initial states, the
@@ -28,8 +31,9 @@ command line.
 
 from .antiplane import (AntiplaneProblem, AntiplaneRun, Coulomb, FreeSurface, SlipWeakening, mode_traction,
                         run_antiplane, uniform_traction)
-from .inplane import (CoulombFriction, InplaneProblem, InplaneRun, SlipWeakeningFriction, mode_load, run_inplane,
-                      uniform_load)
+from .flutter import FLUTTER_ONSET, flutter_growth, flutter_roots, ill_posedness
+from .inplane import InplaneProblem, InplaneRun, mode_load, run_inplane, uniform_load
+from .interface import CoulombFriction, PrakashClifton, SlipWeakeningFriction
 from .inplane_kernels import inplane_kernel_integrals, inplane_stiffness, static_stiffness
 from .quasidynamic import QuasiDynamicProblem, QuasiDynamicRun, run_quasidynamic
 from .stability import check_stable, growing_roots
@@ -40,4 +44,5 @@ __all__ = ["AntiplaneProblem", "AntiplaneRun", "Coulomb", "FreeSurface", "SlipWe
            "ragged_step_weights", "truncated_part", "QuasiDynamicProblem", "QuasiDynamicRun", "run_quasidynamic",
            "CoulombFriction", "InplaneProblem", "InplaneRun", "SlipWeakeningFriction", "mode_load", "run_inplane",
            "uniform_load", "inplane_kernel_integrals", "inplane_stiffness", "static_stiffness",
-           "check_stable", "growing_roots"]
+           "check_stable", "growing_roots", "PrakashClifton", "FLUTTER_ONSET", "flutter_growth", "flutter_roots",
+           "ill_posedness"]

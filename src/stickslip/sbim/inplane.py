@@ -13,15 +13,12 @@ half-space's response (`stickslip.sbim.inplane_kernels`)::
 ``G`` the loading and the static, coupling and memory terms computed mode by mode by the FFT from the
 displacements and the rates before the step (explicit, as `stickslip.sbim.antiplane`).
 
-**Laws.** `FreeSurface`: both tractions vanish. `CoulombFriction` and `SlipWeakeningFriction`:
-unilateral contact with the rigid body and a friction coefficient, static and kinetic or slip-weakened
-from static to kinetic over ``weakening_slip``. A closed node whose normal drive ``G_y`` is compressive
-stays closed (``V_y = 0``, ``sigma_yy = G_y``); otherwise it opens or moves free (``sigma_yy = 0``),
-and a gap that would close within the step closes exactly at its end (``V_y = -U_y / dt``, the impact's
-compression in ``sigma_yy``). The shear strength is the coefficient times ``N = max(-sigma_yy, 0)``: a
-stuck node holds while ``|G_x|`` stays within the static strength, a moving node slides at
-``V_x = (c_s / mu) sign(G_x) (|G_x| - f N)`` with the kinetic (or weakened) ``f`` and sticks again when
-``|G_x| <= f N``; an open node slides free.
+**Laws** (`stickslip.sbim.interface`): `FreeSurface` (both tractions vanish); unilateral contact
+with the rigid body and `CoulombFriction` or `SlipWeakeningFriction`, their strength the coefficient
+times the contact pressure, or the pressure relaxed over a slip (`PrakashClifton`). Sliding at a
+coefficient above 1 without that regularisation is ill-posed (`stickslip.sbim.flutter`): such a run
+goes on, says so on the ``stickslip.sbim`` log and keeps the statement in its result
+(``ill_posed``, the dataset's ``well_posedness``).
 
 **Scheme.** First order (the rates held over a step, `stickslip.sbim.antiplane`); ``dt = beta dx /
 c_s``. Each mode keeps ``history_periods`` of its shear
@@ -33,6 +30,7 @@ more than 1 % over its steps is refused (`stickslip.sbim.stability`).
 
 from __future__ import annotations
 
+import logging
 import math
 from dataclasses import dataclass, field
 from typing import Callable
@@ -44,7 +42,9 @@ from ..quantities.sbim import SBIM as Q
 from ..results import Result
 from .antiplane import MAX_HISTORY, FreeSurface
 from .fields import PeriodicGrid, space_time
+from .flutter import ill_posedness
 from .history import History
+from .interface import LAWS, CoulombFriction, PrakashClifton, SlipWeakeningFriction, interface_step
 from .stability import check_stable
 from .inplane_kernels import inplane_step_weights, inplane_truncation, static_stiffness, wave_speed_ratio
 
@@ -55,48 +55,10 @@ MAX_PERIODS = 64.0
 #: Largest Poisson's ratio in-plane (c_p / c_s = 7.1).
 MAX_POISSON = 0.49
 
-__all__ = ["CoulombFriction", "SlipWeakeningFriction", "InplaneProblem", "InplaneRun", "run_inplane",
-           "uniform_load", "mode_load"]
+log = logging.getLogger("stickslip.sbim")
 
-
-def _coefficients(law) -> None:
-    for name in ("static_friction", "kinetic_friction"):
-        object.__setattr__(law, name, Q.check(name, getattr(law, name)))
-    if law.kinetic_friction > law.static_friction:
-        raise ParameterError("kinetic_friction", law.kinetic_friction, f"at most static_friction = "
-                             f"{law.static_friction:g}", also=("static_friction",))
-
-
-@dataclass(frozen=True)
-class CoulombFriction:
-    """Unilateral contact with static and kinetic friction coefficients."""
-
-    static_friction: float
-    kinetic_friction: float
-
-    def __post_init__(self):
-        _coefficients(self)
-
-    def coefficient(self, slip: np.ndarray, sliding: np.ndarray) -> np.ndarray:
-        return np.where(sliding, self.kinetic_friction, self.static_friction)
-
-
-@dataclass(frozen=True)
-class SlipWeakeningFriction:
-    """Unilateral contact with a friction coefficient falling linearly with slip from ``static_friction``
-    to ``kinetic_friction`` over ``weakening_slip`` [m]."""
-
-    static_friction: float
-    kinetic_friction: float
-    weakening_slip: float
-
-    def __post_init__(self):
-        _coefficients(self)
-        object.__setattr__(self, "weakening_slip", Q.check("weakening_slip", self.weakening_slip))
-
-    def coefficient(self, slip: np.ndarray, sliding: np.ndarray) -> np.ndarray:
-        fall = np.minimum(np.abs(slip) / self.weakening_slip, 1.0)
-        return self.static_friction - (self.static_friction - self.kinetic_friction) * fall
+__all__ = ["CoulombFriction", "SlipWeakeningFriction", "PrakashClifton", "InplaneProblem", "InplaneRun",
+           "run_inplane", "uniform_load", "mode_load"]
 
 
 def uniform_load(traction: float, normal_traction: float) -> Callable:
@@ -145,8 +107,9 @@ class InplaneProblem(PeriodicGrid):
         if not callable(self.load):
             raise ParameterError("load", self.load, "a function of (x [m], t [s]) giving the shear and normal "
                                  "tractions [Pa] (uniform_load, mode_load)")
-        if not isinstance(self.law, (FreeSurface, CoulombFriction, SlipWeakeningFriction)):
-            raise ParameterError("law", self.law, "FreeSurface(), CoulombFriction(...) or SlipWeakeningFriction(...)")
+        if not isinstance(self.law, LAWS):
+            raise ParameterError("law", self.law, "FreeSurface(), CoulombFriction(...), SlipWeakeningFriction(...) "
+                                 "or PrakashClifton(...)")
 
     @property
     def eta(self) -> float:
@@ -167,6 +130,7 @@ class InplaneRun(Result):
     shear_stress: np.ndarray
     normal_traction: np.ndarray
     kernel_truncation: float
+    ill_posed: str = ""
 
     FIELDS = ("slip", "opening", "slip_rate", "opening_rate", "shear_stress", "normal_traction")
 
@@ -175,27 +139,14 @@ class InplaneRun(Result):
         return {"shear_modulus": p.shear_modulus, "shear_wave_speed": p.shear_wave_speed, "poisson": p.poisson,
                 "length": p.length, "elements": p.elements, "beta": p.beta, "dt": p.dt,
                 "history_periods": p.history_periods, "kernel_truncation": self.kernel_truncation,
-                "samples": len(self.t), "law": type(p.law).__name__}
+                "samples": len(self.t), "law": type(p.law).__name__, "well_posed": not self.ill_posed,
+                "ill_posedness": self.ill_posed}
 
     def to_xarray(self):
-        return space_time(self, self.FIELDS, "in-plane sliding of an elastic half-space on a rigid body (spectral "
-                          "boundary integral method)")
-
-
-def _step_law(law, Gx, Gy, slip, gap, sliding, dt, rad):
-    """The rates and tractions of one step at each node (module docstring)."""
-    rad_t, rad_n = rad
-    if isinstance(law, FreeSurface):
-        return Gx / rad_t, Gy / rad_n, np.zeros_like(Gx), np.zeros_like(Gy), sliding
-    Vy = np.where((gap > 0.0) | (Gy > 0.0), Gy / rad_n, 0.0)
-    Vy = np.maximum(Vy, -gap / dt)  # a gap closing within the step closes at its end
-    syy = Gy - rad_n * Vy
-    N = np.maximum(-syy, 0.0)
-    held = np.abs(Gx) <= law.coefficient(slip, sliding) * N
-    excess = np.abs(Gx) - law.coefficient(slip, np.ones(slip.shape, bool)) * N
-    sliding = ~held & (excess > 0.0)
-    Vx = np.where(sliding, np.sign(Gx) * excess / rad_t, 0.0)
-    return Vx, Vy, Gx - rad_t * Vx, syy, sliding
+        ds = space_time(self, self.FIELDS, "in-plane sliding of an elastic half-space on a rigid body (spectral "
+                        "boundary integral method)")
+        ds.attrs["well_posedness"] = self.ill_posed or "well posed"
+        return ds
 
 
 def _loaded(load, x, t):
@@ -232,6 +183,9 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1) -> InplaneR
                              f"({int(count.sum())} asked: fewer history_periods, elements or steps)",
                              also=("history_periods",))
     check_stable("inplane", p.beta, n, p.history_periods, steps, p.poisson)
+    ill = "" if isinstance(p.law, (FreeSurface, PrakashClifton)) else ill_posedness(p.law, p.poisson)
+    if ill:
+        log.warning("%s", ill)
     w11, w22, w12 = inplane_step_weights(p.poisson, T1, dt, count, window)
     hx, hy = History(w11, count, steps), History(w22, count, steps)
     s11, s22, s12 = static_stiffness(p.poisson)
@@ -239,6 +193,7 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1) -> InplaneR
     x = p.x
     Ux, Uy = np.zeros(n), np.zeros(n)
     sliding = np.zeros(n, bool)
+    pressure = None
     rad = (mu / cs, eta * mu / cs)
     out = {name: [] for name in ("t",) + InplaneRun.FIELDS}
     for step in range(steps + 1):
@@ -250,7 +205,7 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1) -> InplaneR
         Gx, Gy = Gx + np.fft.irfft(fx, n), Gy + np.fft.irfft(fy, n)
         if not (np.all(np.isfinite(Gx)) and np.all(np.isfinite(Gy))):
             raise ParameterError("load", "a loading", f"finite tractions (not finite at t = {t:g} s)")
-        Vx, Vy, sxy, syy, sliding = _step_law(p.law, Gx, Gy, Ux, Uy, sliding, dt, rad)
+        Vx, Vy, sxy, syy, sliding, pressure = interface_step(p.law, Gx, Gy, Ux, Uy, sliding, pressure, dt, rad)
         if step % every == 0 or step == steps:
             for name, value in zip(out, (t, Ux.copy(), Uy.copy(), Vx, Vy, sxy, syy)):
                 out[name].append(value)
@@ -261,4 +216,4 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1) -> InplaneR
             Uy = np.maximum(Uy, 0.0)  # closed to round-off
         hx.push(step, np.fft.rfft(Vx))
         hy.push(step, np.fft.rfft(Vy))
-    return InplaneRun(p, *(np.array(out[name]) for name in out), inplane_truncation(p.poisson, p.history_periods))
+    return InplaneRun(p, *(np.array(out[name]) for name in out), inplane_truncation(p.poisson, p.history_periods), ill)
