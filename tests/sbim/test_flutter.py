@@ -206,6 +206,7 @@ def test_growth_in_physical_units():
     (lambda: PrakashClifton(CoulombFriction(1, 1), 0.0, 1.0), "relaxation_slip"),
     (lambda: PrakashClifton(CoulombFriction(1, 1), 1e-3, 0.0), "relaxation_speed"),
     (lambda: ill_posedness("coulomb", 0.25), "law"),
+    (lambda: ill_posedness(PrakashClifton(CoulombFriction(1, 1), 1e-3, 1.0), "x"), "poisson"),
 ])
 def test_bad_input_is_named(call, name):
     with pytest.raises(ParameterError) as err:

@@ -161,6 +161,7 @@ def ill_posedness(law, poisson: float) -> str:
     """Why a run with the friction ``law`` (`stickslip.sbim.interface`) is ill-posed, or ``""``: sliding at
     a coefficient it can take flutters, at a growth rate proportional to the wavenumber; regularised
     (`PrakashClifton`) it is not."""
+    poisson = Q.check("poisson", poisson)
     if not hasattr(law, "sliding_coefficients"):
         raise ParameterError("law", law, "a friction law of stickslip.sbim (CoulombFriction, ...)")
     if getattr(law, "relaxation_slip", None) is not None:
