@@ -41,13 +41,15 @@ ALLOWED = {
     "fem": BASE | {"contact", "friction", "sweep", "files"},
     "system": BASE | {"friction", "lawkernel", "dop853", "kernelcopy", "rsf", "orbits"},
     "rsf": BASE,
-    "sbim": BASE | {"rsf", "jit"},  # the half-space in time: rsf's laws, compiled kernels (halfspace's waves to come)
+    "sbim": BASE | {"rsf", "jit", "files"},  # the half-space in time: rsf's laws, compiled kernels, its run file
+    # (halfspace's waves to come)
     "plotting": {"errors", "validation", "legibility"},  # its argument checks: leaves, imports stay one-way
     "legibility": {"validation"},  # reads laid-out figures, draws nothing
     "errata": set(),
     "figures": BASE | MODELS | {"contact", "friction", "sweep", "files", "plotting"},
     "report": BASE | {"figures", "errata", "plotting", "files", "sweep", "__init__"},  # sweep: its process pool
-    "cli": BASE | MODELS | {"friction", "contact", "sweep", "cluster", "files", "plotting", "figures", "report", "__init__"},
+    "cli": BASE | MODELS | {"friction", "contact", "sweep", "cluster", "files", "plotting", "figures", "report", "__init__",
+                            "sbim"},
     "__main__": {"cli"},
     "precompile": MODELS | {"friction", "sbim"},  # a small case of each compiled path
     "__init__": {"version"},

@@ -493,3 +493,30 @@ def plot_interface_fields(ds, fig: Figure | None = None) -> Figure:
                       f"v = {a.get('v', float('nan')):.3g}, T = {a.get('T', float('nan')):.3g}")
     lay_out(fig)
     return fig
+
+
+def plot_space_time(ds, names=("slip_rate", "normal_traction"), fig: Figure | None = None) -> Figure:
+    """Fields of an interface run over ``x`` and ``t`` (an `stickslip.sbim` run's ``to_xarray()``), one
+    image each, side by side."""
+    _dataset("ds", ds, "an interface run's fields (InplaneRun.to_xarray())", ("t", "x") + tuple(names))
+    _figure("fig", fig)
+    fig = Figure(figsize=(4.2 * len(names) + 1.0, 4.8)) if fig is None else fig
+    axes = np.atleast_1d(fig.subplots(1, len(names), sharey=True))
+    t, x = ds.t.values, ds.x.values
+    extent = (x[0] / 1e3, x[-1] / 1e3, t[-1], t[0])
+    for ax, name in zip(axes, names):
+        values = ds[name].values
+        signed = bool(np.nanmin(values) < 0 < np.nanmax(values))
+        top = float(np.nanmax(np.abs(values))) or 1.0
+        image = ax.imshow(values, aspect="auto", extent=extent, interpolation="nearest",
+                          cmap="RdBu_r" if signed else "viridis", vmin=-top if signed else None,
+                          vmax=top if signed else None)
+        units = ds[name].attrs.get("units", "1")
+        fig.colorbar(image, ax=ax, label=f"{name.replace('_', ' ')} [{units}]")
+        ax.set_xlabel("x [km]")
+    axes[0].set_ylabel("t [s]")
+    status = ds.attrs.get("well_posedness", "")
+    if status.startswith("ill-posed"):
+        fig.suptitle("ill-posed: the result depends on the grid (see the run's well_posedness)", fontsize=9)
+    lay_out(fig)
+    return fig

@@ -10,13 +10,17 @@ from typing import Annotated, Optional
 
 import typer
 
+from ..errors import MISSING, ParameterError
 from ..quantities import HALFSPACE as Q
+from ..quantities import SBIM
 from .helptext import Typer
-from .common import FIGURE_HELP, FIGURE_SUFFIXES, Replace, declared, emit, output_path, overwrite_needs, write_netcdf
+from .common import (FIGURE_HELP, FIGURE_SUFFIXES, Overwrite, Replace, declared, emit, output_path, overwrite_needs,
+                     progress_bar, write_netcdf)
 
 _emit = functools.partial(emit, model="halfspace")  # results are printed with the units of this model
 
-app = Typer(no_args_is_help=True, rich_markup_mode=None, help="Rigid body sliding on an elastic half-space: periodic stick-slip waves.")
+app = Typer(no_args_is_help=True, rich_markup_mode=None, help="Rigid body sliding on an elastic half-space: periodic "
+            "stick-slip waves, and the interface in time (run).")
 
 
 class System(str, Enum):
@@ -79,3 +83,106 @@ def fields(b: B, c: C, v_star: VStar, nu: Nu = 0.3, mu: Mu = 0.5, system: System
             from .. import plotting
 
             plotting.save(plotting.plot_interface_fields(ds), plot)
+
+
+class Law(str, Enum):
+    coulomb = "coulomb"
+    slip_weakening = "slip-weakening"
+    free = "free"
+
+
+def _sb(name: str, flag: str, note: str = ""):
+    return declared(SBIM[name], flag, note)
+
+
+@app.command()
+def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a CF dataset, written as it goes and at "
+                                                "the end; a killed run resumes from it (--overwrite starts afresh).")],
+        shear_modulus: Annotated[float, _sb("shear_modulus", "--shear-modulus")] = 3e10,
+        shear_wave_speed: Annotated[float, _sb("shear_wave_speed", "--shear-wave-speed")] = 3464.0,
+        poisson: Annotated[float, _sb("poisson", "--poisson", "At most 0.49 in-plane.")] = 0.25,
+        length: Annotated[float, _sb("length", "--length")] = 40e3,
+        elements: Annotated[int, _sb("elements", "--elements")] = 512,
+        law: Annotated[Law, typer.Option("--law", help="Interface law: unilateral contact with Coulomb or "
+                                         "slip-weakening friction, or a free surface.")] = Law.slip_weakening,
+        static_friction: Annotated[float, _sb("static_friction", "--static-friction")] = 0.6,
+        kinetic_friction: Annotated[float, _sb("kinetic_friction", "--kinetic-friction")] = 0.5,
+        weakening_slip: Annotated[float, _sb("weakening_slip", "--weakening-slip", "Slip-weakening only.")] = 0.4,
+        relaxation_slip: Annotated[Optional[float], _sb("relaxation_slip", "--relaxation-slip",
+                                                        "With --relaxation-speed: Prakash-Clifton.")] = None,
+        relaxation_speed: Annotated[Optional[float], _sb("relaxation_speed", "--relaxation-speed")] = None,
+        traction: Annotated[float, _sb("traction", "--traction", "Uniform.")] = 28e6,
+        normal_traction: Annotated[float, _sb("normal_traction", "--normal-traction", "Uniform.")] = -50e6,
+        patch_traction: Annotated[float, _sb("patch_traction", "--patch-traction")] = 3e6,
+        patch_width: Annotated[float, _sb("patch_width", "--patch-width")] = 8e3,
+        patch_centre: Annotated[Optional[float], _sb("patch_centre", "--patch-centre", "Default: the middle.")] = None,
+        beta: Annotated[float, _sb("beta", "--beta")] = 0.3,
+        history_periods: Annotated[float, _sb("history_periods", "--history-periods")] = 16.0,
+        duration: Annotated[Optional[float], _sb("t_end", "--duration", "Default: 1.5 length / c_s.")] = None,
+        every: Annotated[int, _sb("every", "--every")] = 10,
+        plot: Annotated[Optional[Path], typer.Option(help=FIGURE_HELP + " Slip rate and normal traction over x and "
+                                                     "t.")] = None,
+        overwrite: Overwrite = False, json: Json = False):
+    """A half-space sliding in its plane on a rigid body, in time (spectral boundary integral method):
+    uniform tractions with more shear on a patch; slip, opening, rates and tractions over x and t."""
+    import hashlib
+    import json as json_module
+
+    import numpy as np
+
+    from ..sbim import (CoulombFriction, FreeSurface, InplaneProblem, PrakashClifton, SlipWeakeningFriction,
+                        run_inplane)
+    from ..sbim.inplane import partial_run, patch_load
+    from ..sbim.runfile import Checkpoint
+    from ..files import exclusive
+    from .. import __version__
+
+    out = output_path("--out", out, ".nc")
+    plot = output_path("--plot", plot, FIGURE_SUFFIXES, overwrite)
+    if (relaxation_slip is None) != (relaxation_speed is None):
+        given = "--relaxation-slip" if relaxation_slip is not None else "--relaxation-speed"
+        other = "--relaxation-speed" if relaxation_slip is not None else "--relaxation-slip"
+        raise ParameterError(other, MISSING, f"given with {given} (Prakash-Clifton needs both)")
+    if law is Law.free and relaxation_slip is not None:
+        raise ParameterError("--relaxation-slip", relaxation_slip, "left out with --law free (no friction to regularise)")
+    centre = length / 2 if patch_centre is None else patch_centre
+    if centre > length or patch_width > length:
+        bad = ("--patch-centre", centre) if centre > length else ("--patch-width", patch_width)
+        raise ParameterError(*bad, f"at most --length = {length:g} m", also=("--length",))
+    if kinetic_friction > static_friction and law is not Law.free:
+        raise ParameterError("--kinetic-friction", kinetic_friction, f"at most --static-friction = {static_friction:g}")
+    friction = {Law.coulomb: lambda: CoulombFriction(static_friction, kinetic_friction),
+                Law.slip_weakening: lambda: SlipWeakeningFriction(static_friction, kinetic_friction, weakening_slip),
+                Law.free: FreeSurface}[law]()
+    if relaxation_slip is not None:
+        friction = PrakashClifton(friction, relaxation_slip, relaxation_speed)
+    load = patch_load(traction, normal_traction, patch_traction, patch_width, centre)
+    problem = InplaneProblem(shear_modulus, shear_wave_speed, poisson, length, elements, load, friction, beta=beta,
+                             history_periods=history_periods)
+    t_end = 1.5 * length / shear_wave_speed if duration is None else duration
+    if t_end / problem.dt > 1e9:
+        raise ParameterError("--duration", t_end, f"at most {1e9 * problem.dt:.4g} s here (1e9 steps of {problem.dt:.3g} s)",
+                             also=("--elements", "--beta"))
+    steps = max(1, int(round(t_end / problem.dt)))
+    settings = {"version": __version__, "law": law.value, **{k: v for k, v in locals().items() if k in (
+        "shear_modulus", "shear_wave_speed", "poisson", "length", "elements", "static_friction", "kinetic_friction",
+        "weakening_slip", "relaxation_slip", "relaxation_speed", "traction", "normal_traction", "patch_traction",
+        "patch_width", "centre", "beta", "history_periods", "steps", "every")}}
+    key = hashlib.sha256(json_module.dumps(settings, sort_keys=True).encode()).hexdigest()
+    with exclusive(out, "--out"):
+        if overwrite and out.exists():
+            out.unlink()
+        checkpoint = Checkpoint(out, key, lambda state: partial_run(problem, state).to_xarray())
+        with progress_bar("running the interface") as tick:
+            result = run_inplane(problem, steps, every=every, checkpoint=checkpoint, progress=tick)
+    ds = result.to_xarray()
+    slipped = np.abs(result.slip[-1]) > 1e-9 * max(1.0, float(np.abs(result.slip).max()))
+    summary = {**result.to_dict(), "t_end": float(result.t[-1]), "steps": steps,
+               "peak_slip_rate": float(np.abs(result.slip_rate).max()), "final_max_slip": float(np.abs(result.slip[-1]).max()),
+               "peak_opening": float(result.opening.max()), "slipped_fraction": float(slipped.mean()),
+               "open_fraction_at_end": float((result.opening[-1] > 0).mean()), "out": str(out)}
+    emit(summary, json, "interface run", model="sbim")  # an ill-posed law is said on stderr by the run (its log)
+    if plot:
+        from .. import plotting
+
+        plotting.save(plotting.plot_space_time(ds), plot)

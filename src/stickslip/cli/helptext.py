@@ -61,6 +61,7 @@ EXAMPLES = {
     "halfspace direct": "stickslip halfspace direct --T 9.52e-4 --v 3.514e-3 --v-star 0.001 --nu 0.3 --mu 0.5 --json",
     "halfspace fields": "stickslip halfspace fields --b 11.358 --c -0.7 --v-star 0.001 --plot fig14.png "
                         "--out fields.nc",
+    "halfspace run": "stickslip halfspace run --out run.nc --elements 256 --plot run.png --json",
     "fem steady": "stickslip fem steady examples/block_on_belt/block.toml --out steady.nc",
     "fem cea": "stickslip fem cea examples/pad_on_disc/pad.toml --sweep friction=0:0.8:41 --store sweep.zarr "
                "--plot map.png --json",

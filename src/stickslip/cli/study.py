@@ -57,6 +57,13 @@ __all__ = ["Study", "read_study", "run_point", "command"]
 
 #: The model (vocabulary of units) of each command group.
 MODELS = {"oscillator": "oscillator", "brake": "brake", "halfspace": "halfspace", "fem": "fem"}
+#: Commands whose vocabulary is not their group's.
+COMMAND_MODELS = {("halfspace", "run"): "sbim"}
+
+
+def model_of(words: tuple) -> str:
+    """The vocabulary of units of the command ``words``."""
+    return COMMAND_MODELS.get(tuple(words), MODELS.get(words[0], "common"))
 #: Commands that are sweeps themselves, or write no result: not swept.
 NOT_SWEPT = {("reproduce",), ("sweep",), ("oscillator", "map"), ("brake", "map"), ("brake", "campaign"),
              ("oscillator", "continue"), ("brake", "continue")}
@@ -66,7 +73,7 @@ REPLICATE = "replicate"
 _CONFIG = "config:"  # the swept key is a number of the command's config
 _KEYS = {"command", "config", "outputs", "fixed", "axes", "title"}
 #: Commands that write their run as it goes (``--out``) and resume it: one checkpoint per point.
-RESUMABLE = {("brake", "integrate"), ("brake", "fem"), ("fem", "run")}
+RESUMABLE = {("brake", "integrate"), ("brake", "fem"), ("fem", "run"), ("halfspace", "run")}
 
 
 class Study:
@@ -85,7 +92,7 @@ class Study:
 
     @property
     def model(self) -> str:
-        return MODELS.get(self.words[0], "common")
+        return model_of(self.words)
 
     def attrs(self) -> dict:
         """Every parameter of the sweep (a resume with others is refused)."""
@@ -280,7 +287,7 @@ def read_study(path: Path, app) -> Study:
                         f"{MAX_POINTS:.0e}: split the study)")
     outputs = {}
     names = data.get("outputs")
-    model = MODELS.get(words[0], "common")
+    model = model_of(words)
     if not isinstance(names, list) or not names or not all(isinstance(n, str) for n in names):
         problems.append(f"outputs must be a non-empty list of the numbers {' '.join(words)} --json prints "
                         "(e.g. [\"period\"]; a nested one as \"a.b\", an entry of a list as \"a[0].b\")")

@@ -58,7 +58,7 @@ MAX_POISSON = 0.49
 log = logging.getLogger("stickslip.sbim")
 
 __all__ = ["CoulombFriction", "SlipWeakeningFriction", "PrakashClifton", "InplaneProblem", "InplaneRun",
-           "run_inplane", "uniform_load", "mode_load"]
+           "run_inplane", "partial_run", "uniform_load", "mode_load", "patch_load"]
 
 
 def uniform_load(traction: float, normal_traction: float) -> Callable:
@@ -73,6 +73,22 @@ def mode_load(traction: float, normal_traction: float, mode: int, length: float)
     mode, length = Q.check("mode", mode), Q.check("length", length)
     return lambda x, t: (tau * np.cos(2.0 * math.pi * mode * x / length),
                          sigma * np.cos(2.0 * math.pi * mode * x / length))
+
+
+def patch_load(traction: float, normal_traction: float, patch_traction: float, patch_width: float,
+               patch_centre: float) -> Callable:
+    """Uniform shear ``traction`` and ``normal_traction`` [Pa], with ``patch_traction`` more shear on
+    ``|x - patch_centre| < patch_width / 2`` [m] (periodic), from ``t = 0``."""
+    tau, sigma = Q.check("traction", traction), Q.check("normal_traction", normal_traction)
+    extra = Q.check("patch_traction", patch_traction)
+    width, centre = Q.check("patch_width", patch_width), Q.check("patch_centre", patch_centre)
+
+    def load(x, t):
+        period = float(x[-1] + x[1] - x[0]) if np.size(x) > 1 else 1.0
+        d = np.abs((x - centre + period / 2) % period - period / 2)
+        return np.where(d < width / 2, tau + extra, tau), np.full(np.shape(x), sigma)
+
+    return load
 
 
 @dataclass(frozen=True)
@@ -161,11 +177,21 @@ def _loaded(load, x, t):
     return tau0, sigma0
 
 
-def run_inplane(problem: InplaneProblem, steps: int, every: int = 1) -> InplaneRun:
-    """Run ``problem`` from rest for ``steps`` steps, storing every ``every``-th (and the last)."""
+def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=None, progress=None) -> InplaneRun:
+    """Run ``problem`` from rest for ``steps`` steps, storing every ``every``-th (and the last).
+
+    ``checkpoint``: an object with ``resume() -> state or None``, ``due(step) -> bool`` and
+    ``save(state)`` (`stickslip.sbim.runfile.Checkpoint` keeps it in a file): the run starts from the
+    state it resumes, and hands it the state (a dict of arrays) whenever it is due. A resumed run
+    is the uninterrupted one, to the last bit. ``progress(done, total)``: called every 64 steps."""
     if not isinstance(problem, InplaneProblem):
         raise ParameterError("problem", problem, "an InplaneProblem")
     steps, every = Q.check("steps", steps), Q.check("every", every)
+    if checkpoint is not None and not all(callable(getattr(checkpoint, m, None)) for m in ("resume", "due", "save")):
+        raise ParameterError("checkpoint", checkpoint, "None or an object with resume(), due(step) and save(state) "
+                             "(stickslip.sbim.runfile.Checkpoint)")
+    if progress is not None and not callable(progress):
+        raise ParameterError("progress", progress, "a callable progress(done, total) or None")
     p = problem
     n, mu, cs, dt, eta = p.elements, p.shear_modulus, p.shear_wave_speed, p.dt, p.eta
     k = p.wavenumbers
@@ -196,7 +222,15 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1) -> InplaneR
     pressure = None
     rad = (mu / cs, eta * mu / cs)
     out = {name: [] for name in ("t",) + InplaneRun.FIELDS}
-    for step in range(steps + 1):
+    start = 0
+    state = checkpoint.resume() if checkpoint is not None else None
+    if state is not None:
+        start, Ux, Uy = int(state["step"]), state["Ux"].copy(), state["Uy"].copy()
+        sliding = state["sliding"].astype(bool)
+        pressure = state["pressure"].copy() if state["pressure"].size else None
+        hx.buffer[:], hy.buffer[:] = state["hx"], state["hy"]
+        out = {name: list(state["out_" + name]) for name in out}
+    for step in range(start, steps + 1):
         t = step * dt
         ux, uy = np.fft.rfft(Ux), np.fft.rfft(Uy)
         fx = muk * (hx.memory(step) - s11 * ux) + 1j * muk * (s12 * uy - hy.memory(step, w12))
@@ -216,4 +250,25 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1) -> InplaneR
             Uy = np.maximum(Uy, 0.0)  # closed to round-off
         hx.push(step, np.fft.rfft(Vx))
         hy.push(step, np.fft.rfft(Vy))
+        if progress is not None and step % 64 == 0:
+            progress(step, steps)
+        if checkpoint is not None and checkpoint.due(step + 1):
+            checkpoint.save(_state(step + 1, Ux, Uy, sliding, pressure, hx, hy, out))
+    if checkpoint is not None and start <= steps:
+        checkpoint.save(_state(steps + 1, Ux, Uy, sliding, pressure, hx, hy, out))
     return InplaneRun(p, *(np.array(out[name]) for name in out), inplane_truncation(p.poisson, p.history_periods), ill)
+
+
+def _state(step, Ux, Uy, sliding, pressure, hx, hy, out) -> dict:
+    """A run's whole state before ``step`` (``steps + 1``: done), for its checkpoint."""
+    n = Ux.size
+    samples = {"out_" + name: np.array(v, dtype=float).reshape((len(v),) if name == "t" else (len(v), n))
+               for name, v in out.items()}
+    return {"step": np.int64(step), "Ux": Ux, "Uy": Uy, "sliding": sliding.astype(np.int8),
+            "pressure": np.zeros(0) if pressure is None else pressure, "hx": hx.buffer, "hy": hy.buffer, **samples}
+
+
+def partial_run(problem: InplaneProblem, state: dict, ill_posed: str = "") -> InplaneRun:
+    """The samples of a checkpoint's ``state`` as a run (`stickslip.sbim.runfile`)."""
+    return InplaneRun(problem, *(state["out_" + name] for name in ("t",) + InplaneRun.FIELDS),
+                      inplane_truncation(problem.poisson, problem.history_periods), ill_posed)

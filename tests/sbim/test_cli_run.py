@@ -1,0 +1,143 @@
+"""`stickslip halfspace run`: an in-plane interface in time from the command line, written as it goes
+and resumed after a kill to the last bit; an ill-posed law said; bad options in one line."""
+
+import json
+import math
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from stickslip.cli import run
+
+SMALL = ["--elements", "64", "--duration", "3", "--every", "5"]
+
+
+def _call(args, capsys):
+    code = run(args)
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_a_run_writes_its_fields_and_prints_finite_numbers(tmp_path, capsys):
+    nc, png = tmp_path / "run.nc", tmp_path / "run.png"
+    code, out, err = _call(["halfspace", "run", "--out", str(nc), "--plot", str(png), "--json", *SMALL], capsys)
+    assert code == 0, err
+    data = json.loads(out)
+    assert data["well_posed"] is True and data["ill_posedness"] == ""
+    assert all(math.isfinite(v) for v in data.values() if isinstance(v, float))
+    assert data["t_end"] == pytest.approx(3.0, rel=0.01) and png.stat().st_size > 10_000
+    with xr.open_dataset(nc) as ds:
+        assert ds.slip_rate.shape == (data["samples"], 64) and ds.attrs["Conventions"].startswith("CF")
+        assert ds.slip_rate.attrs["units"] == "m/s" and ds.attrs["well_posedness"] == "well posed"
+        # the patch (3 MPa over 8 km, the default) overstressed beyond the static strength slides at once at
+        # the radiation-damping rate c_s (tau - f_s sigma) / mu at its middle
+        first = ds.slip_rate.isel(t=0).sel(x=20e3, method="nearest")
+        assert float(first) == pytest.approx(3464.0 * (31e6 - 0.6 * 50e6) / 3e10, rel=1e-9)
+
+
+def test_an_ill_posed_law_runs_and_says_so(tmp_path, capsys):
+    code, out, err = _call(["halfspace", "run", "--out", str(tmp_path / "r.nc"), "--law", "coulomb",
+                            "--static-friction", "2", "--kinetic-friction", "1.5", "--traction", "80e6", "--json",
+                            *SMALL], capsys)
+    data = json.loads(out)
+    assert code == 0 and data["well_posed"] is False and "ill-posed" in data["ill_posedness"]
+    assert "ill-posed" in err
+    code, out, err = _call(["halfspace", "run", "--out", str(tmp_path / "p.nc"), "--law", "coulomb",
+                            "--static-friction", "2", "--kinetic-friction", "1.5", "--traction", "80e6",
+                            "--relaxation-slip", "1e-3", "--relaxation-speed", "0.1", "--json", *SMALL], capsys)
+    assert code == 0 and json.loads(out)["well_posed"] is True and "ill-posed" not in err
+
+
+KILLABLE = textwrap.dedent("""
+    import sys
+    import stickslip.sbim.runfile as runfile
+    runfile.CHECKPOINT_SECONDS = 0.0  # write at every step, so that a kill finds a state
+    from stickslip.cli import run
+    sys.exit(run(sys.argv[1:]))
+""")
+
+
+def test_a_killed_run_resumes_to_the_uninterrupted_result_and_another_runs_file_is_refused(tmp_path, capsys):
+    args = ["halfspace", "run", "--elements", "64", "--duration", "12", "--every", "4"]
+    whole, part = tmp_path / "whole.nc", tmp_path / "part.nc"
+    assert _call([*args, "--out", str(whole)], capsys)[0] == 0
+    proc = subprocess.Popen([sys.executable, "-c", KILLABLE, *args, "--out", str(part)], stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL, start_new_session=True)
+    done = 0
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and proc.poll() is None:
+        try:
+            with xr.open_dataset(part) as ds:
+                done = int(ds.attrs["steps_done"])
+        except Exception:  # noqa: BLE001 - not written yet, or being replaced
+            pass
+        if done >= 50:
+            break
+        time.sleep(0.05)
+    os.killpg(proc.pid, signal.SIGKILL)
+    proc.wait()
+    with xr.open_dataset(part) as ds:
+        done = int(ds.attrs["steps_done"])
+    assert 50 <= done  # killed part-way (a run of about 890 steps)
+    code, _, err = _call([*args, "--out", str(part)], capsys)
+    assert code == 0, err
+    with xr.open_dataset(whole) as a, xr.open_dataset(part) as b:
+        total = int(a.attrs["steps_done"])
+        assert done < total
+        for name in ("slip", "opening", "slip_rate", "normal_traction", "shear_stress"):
+            np.testing.assert_array_equal(a[name].values, b[name].values)
+    code, out, err = _call([*args[:-1], "13", "--out", str(part)], capsys)
+    assert code == 2 and out == "" and err.count("\n") == 1 and "--out" in err and "another run" in err
+
+
+@pytest.mark.parametrize("args, flag", [
+    (["--elements", "3"], "--elements"),
+    (["--poisson", "0.495"], "poisson"),
+    (["--relaxation-slip", "1e-3"], "--relaxation-speed"),
+    (["--patch-width", "1e6"], "--patch-width"),
+    (["--kinetic-friction", "0.7"], "--kinetic-friction"),
+    (["--duration", "1e300"], "--duration"),
+    (["--duration", "nan"], "--duration"),
+    (["--beta", "0.9"], "--beta"),
+    (["--law", "free", "--relaxation-slip", "1", "--relaxation-speed", "1"], "--relaxation-slip"),
+])
+def test_bad_options_are_one_line_naming_the_option(tmp_path, capsys, args, flag):
+    code, out, err = _call(["halfspace", "run", "--out", str(tmp_path / "r.nc"), *args], capsys)
+    assert code == 2 and out == "" and err.count("\n") == 1 and flag in err
+    assert not (tmp_path / "r.nc").exists()
+
+
+def test_the_output_is_checked_before_any_work(tmp_path, capsys):
+    code, _, err = _call(["halfspace", "run", "--out", str(tmp_path / "no" / "r.nc")], capsys)
+    assert code == 2 and "--out" in err
+    fifo = tmp_path / "f.nc"
+    os.mkfifo(fifo)
+    code, _, err = _call(["halfspace", "run", "--out", str(fifo)], capsys)
+    assert code == 2 and "--out" in err
+
+
+def test_a_sweep_runs_the_command_at_each_point_with_a_run_file_each(tmp_path, capsys):
+    (tmp_path / "sweep.toml").write_text(textwrap.dedent("""
+        command = "halfspace run"
+        outputs = ["peak_slip_rate", "slipped_fraction"]
+        [fixed]
+        elements = 64
+        duration = 3.0
+        [axes]
+        patch_traction = [1e6, 3e6]
+    """))
+    code, out, err = _call(["sweep", str(tmp_path / "sweep.toml"), "--out", str(tmp_path / "s.zarr"),
+                            "--scheduler", "synchronous", "--json"], capsys)
+    assert code == 0, err
+    with xr.open_zarr(tmp_path / "s.zarr") as ds:
+        # 28 + 1 MPa stays below the static strength 0.6 x 50 MPa: nothing slips; 28 + 3 MPa slides
+        assert ds.slipped_fraction.values[0] == 0 and ds.peak_slip_rate.values[0] == 0
+        assert ds.slipped_fraction.values[1] > 0.3
+    assert len(list((tmp_path / "s.runs").glob("*.nc"))) == 2
