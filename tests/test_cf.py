@@ -171,6 +171,7 @@ WRITERS = [
       "--xdmf", "{tmp}/f.xdmf"], ["f.nc"]),
     (["halfspace", "fields", "--b", "11.358", "--c", "-0.7", "--v-star", "0.001", "--points", "101", "--out",
       "{tmp}/h.nc"], ["h.nc"]),
+    (["halfspace", "run", "--elements", "32", "--duration", "2", "--out", "{tmp}/hr.nc"], ["hr.nc"]),
     (["fem", "steady", "{config}", "--out", "{tmp}/fs.nc"], ["fs.nc"]),
     (["fem", "cea", "{config}", "--out", "{tmp}/fc.nc"], ["fc.nc"]),
     (["fem", "run", "{config}", "--transits", "2", "--out", "{tmp}/fr.nc"], ["fr.nc"]),

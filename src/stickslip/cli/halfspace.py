@@ -127,6 +127,8 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
     uniform tractions with more shear on a patch; slip, opening, rates and tractions over x and t."""
     import hashlib
     import json as json_module
+    import shlex
+    import sys
 
     import numpy as np
 
@@ -134,6 +136,7 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
                         run_inplane)
     from ..sbim.inplane import partial_run, patch_load
     from ..sbim.runfile import Checkpoint
+    from ..cf import stamp
     from ..files import exclusive
     from .. import __version__
 
@@ -172,7 +175,8 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
     with exclusive(out, "--out"):
         if overwrite and out.exists():
             out.unlink()
-        checkpoint = Checkpoint(out, key, lambda state: partial_run(problem, state).to_xarray())
+        command = "stickslip " + " ".join(shlex.quote(a) for a in sys.argv[1:])
+        checkpoint = Checkpoint(out, key, lambda state: stamp(partial_run(problem, state).to_xarray(), command))
         with progress_bar("running the interface") as tick:
             result = run_inplane(problem, steps, every=every, checkpoint=checkpoint, progress=tick)
     ds = result.to_xarray()
@@ -180,7 +184,7 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
     summary = {**result.to_dict(), "t_end": float(result.t[-1]), "steps": steps,
                "peak_slip_rate": float(np.abs(result.slip_rate).max()), "final_max_slip": float(np.abs(result.slip[-1]).max()),
                "peak_opening": float(result.opening.max()), "slipped_fraction": float(slipped.mean()),
-               "open_fraction_at_end": float((result.opening[-1] > 0).mean()), "out": str(out)}
+               "open_fraction_at_end": float((result.opening[-1] > 0).mean())}
     emit(summary, json, "interface run", model="sbim")  # an ill-posed law is said on stderr by the run (its log)
     if plot:
         from .. import plotting

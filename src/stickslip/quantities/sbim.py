@@ -82,6 +82,7 @@ SBIM = Domain("sbim", units="SI", quantities=[
     Q("peak_opening", "m", "largest opening anywhere in the run"),
     Q("slipped_fraction", "1", "fraction of the interface that has slipped by the end"),
     Q("open_fraction_at_end", "1", "fraction of the interface open at the end"),
+    Q("law", "1", "the interface law of the run (its class in stickslip.sbim)"),
     Q("well_posed", "1", "the run's law is well posed (false: it flutters, its result depends on the grid)"),
     Q("ill_posedness", "1", "why the run's law is ill-posed (empty when it is not)"),
 ])

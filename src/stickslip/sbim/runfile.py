@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..cf import for_file
 from ..errors import ParameterError
 from ..files import to_netcdf
 
@@ -78,7 +79,7 @@ class Checkpoint:
             flat[name + "_re"], flat[name + "_im"] = state[name].real, state[name].imag
         group = xr.Dataset({k: (tuple(f"{k}_{i}" for i in range(np.ndim(v))), np.asarray(v))
                             for k, v in flat.items()})
-        root = self.fields(state)
+        root = for_file(self.fields(state))
         root.attrs.update({"run_format": RUN_FORMAT, "run_key": self.key, "steps_done": int(state["step"])})
         partial = self.path.with_name(f".{self.path.name}.{os.getpid()}.partial")
         try:
