@@ -46,7 +46,7 @@ ALLOWED = {
     "plotting": {"errors", "validation", "legibility"},  # its argument checks: leaves, imports stay one-way
     "legibility": {"validation"},  # reads laid-out figures, draws nothing
     "errata": set(),
-    "figures": BASE | MODELS | {"contact", "friction", "sweep", "files", "plotting"},
+    "figures": BASE | MODELS | {"contact", "friction", "sweep", "files", "plotting", "sbim"},
     "report": BASE | {"figures", "errata", "plotting", "files", "sweep", "__init__"},  # sweep: its process pool
     "cli": BASE | MODELS | {"friction", "contact", "sweep", "cluster", "files", "plotting", "figures", "report", "__init__",
                             "sbim"},

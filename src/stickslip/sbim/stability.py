@@ -23,6 +23,7 @@ surface's shortest modes grow in this first-order scheme at most ``beta``: such 
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -91,13 +92,20 @@ def check_stable(kind: str, beta: float, elements: int, history_periods: float, 
                  poisson: float | None = None) -> None:
     """Refuse a run in which a mode of the scheme (not of the physics) would grow by more than
     `GROWTH` over its ``steps``: the modes ``1, 2, 4, ...`` and the shortest (``a = pi beta``) are
-    checked, free and (in-plane) held normally."""
+    checked, free and (in-plane) held normally. A check passed is remembered for the process (the
+    same scheme run again, under another law or load, is not checked twice)."""
     if kind not in ("antiplane", "inplane"):
         raise ParameterError("kind", kind, "'antiplane' or 'inplane'")
     beta, elements = Q.check("beta", beta), Q.check("elements", elements)
     history_periods, steps = Q.check("history_periods", history_periods), Q.check("steps", steps)
     if kind == "inplane":
         poisson = Q.check("poisson", poisson)
+    _checked(kind, float(beta), int(elements), float(history_periods), int(steps),
+             None if kind == "antiplane" else float(poisson))
+
+
+@functools.lru_cache(maxsize=64)
+def _checked(kind: str, beta: float, elements: int, history_periods: float, steps: int, poisson) -> None:
     half = elements // 2
     radius = (1.0 + GROWTH) ** (1.0 / steps)
     modes = sorted({1 << j for j in range(int(math.log2(max(half, 1))) + 1)} | {half})

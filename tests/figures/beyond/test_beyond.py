@@ -4,7 +4,7 @@ contradict the closed forms (each planted into the dataset)."""
 import numpy as np
 import pytest
 
-from stickslip.figures.beyond import rsf_slider, squeal
+from stickslip.figures.beyond import flutter, rsf_slider, squeal
 
 
 @pytest.fixture(scope="module")
@@ -39,3 +39,15 @@ def test_the_squeal_checks_pass_and_catch_a_wrong_threshold_or_an_open_orbit(squ
     drift = squeal_data.copy(deep=True)
     drift["closing_error"] = drift["closing_error"] + 1e-6
     assert any("closes" in name for name in _failed(squeal.check(drift)))
+
+
+@pytest.mark.slow
+def test_the_flutter_checks_pass_and_catch_a_growth_off_the_relation_or_a_stalled_convergence():
+    data = flutter.compute(quick=True)
+    assert _failed(flutter.check(data)) == []
+    wrong = data.copy(deep=True)
+    wrong["growth"].loc[{"law": "Coulomb", "mode": 4}] *= 1.03  # one mode 3 % off the relation
+    assert any("Coulomb sliding grows" in name for name in _failed(flutter.check(wrong)))
+    stalled = data.copy(deep=True)
+    stalled["difference"].loc[{"law": "Prakash-Clifton"}] = 1e-3  # the differences stop falling
+    assert any("converges" in name for name in _failed(flutter.check(stalled)))
