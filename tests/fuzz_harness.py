@@ -440,9 +440,11 @@ def problems(t: Trial, option: str, folder) -> list[str]:
     if t.code == 0:
         # on success stderr stays empty, but for what a long job owes its user: where its cluster's
         # dashboard is, and (without a terminal, every minute) how far it is (issue 25); and that its law
-        # is ill-posed, which an interface run with such a law must say (issue 46)
+        # is ill-posed, or its grid too coarse or its period too short for its law, which an interface run
+        # must say (issue 46)
+        owed = ("warning: ill-posed: ", "warning: unresolved: ", "warning: too short: ")
         if [line for line in t.err.splitlines() if not line.startswith("Dask dashboard: http")
-                and not line.startswith("warning: ill-posed: ") and not _PROGRESS.match(line)]:
+                and not line.startswith(owed) and not _PROGRESS.match(line)]:
             found.append("stderr on success")
         try:
             finite = json_finite(t.out)

@@ -212,3 +212,25 @@ def test_bad_input_is_named(call, name):
     with pytest.raises(ParameterError) as err:
         call()
     assert err.value.name == name
+
+
+def test_a_slip_weakening_runs_lengths_are_the_published_ones_and_a_coarse_or_short_run_says_so(caplog):
+    from stickslip.sbim.interface import slip_weakening_lengths
+    law = SlipWeakeningFriction(0.6, 0.5, 0.4)
+    half, zone = slip_weakening_lengths(law, 3e10, 0.25, 5e7)
+    scale = 3e10 / 0.75 * 0.4 / (0.1 * 5e7)  # mu* D_c / (tau_s - tau_d), mode II
+    assert half == pytest.approx(1.158 * scale, rel=1e-12)  # Uenishi and Rice (2003)
+    assert zone == pytest.approx(9 * math.pi / 32 * scale, rel=1e-12)  # Palmer and Rice (1973)
+
+    def load(x, t):
+        return np.full(x.shape, 2.8e7), np.full(x.shape, -5e7)
+
+    # (both at once would need fewer than 2.6 cells over the period)
+    for length, elements, says in ((40e3, 512, []), (40e3, 8, ["unresolved"]), (4e3, 512, ["too short"])):
+        caplog.clear()
+        with caplog.at_level(logging.WARNING, logger="stickslip.sbim"):
+            run_inplane(InplaneProblem(MU, C, 0.25, length, elements, load, law), 2)
+        said = [r.getMessage() for r in caplog.records]
+        assert sorted(m.split(":")[0] for m in said) == sorted(says)
+        assert all(f"{zone:.3g} m" in m for m in said if m.startswith("unresolved"))
+        assert all(f"{2 * half:.3g} m" in m for m in said if m.startswith("too short"))

@@ -33,7 +33,7 @@ from .antiplane import (AntiplaneProblem, AntiplaneRun, Coulomb, FreeSurface, Sl
                         run_antiplane, uniform_traction)
 from .flutter import FLUTTER_ONSET, flutter_growth, flutter_roots, ill_posedness
 from .inplane import InplaneProblem, InplaneRun, mode_load, run_inplane, uniform_load
-from .interface import CoulombFriction, PrakashClifton, SlipWeakeningFriction
+from .interface import CoulombFriction, PrakashClifton, SlipWeakeningFriction, slip_weakening_lengths
 from .inplane_kernels import inplane_kernel_integrals, inplane_stiffness, static_stiffness
 from .quasidynamic import QuasiDynamicProblem, QuasiDynamicRun, run_quasidynamic
 from .stability import check_stable, growing_roots
@@ -45,4 +45,4 @@ __all__ = ["AntiplaneProblem", "AntiplaneRun", "Coulomb", "FreeSurface", "SlipWe
            "CoulombFriction", "InplaneProblem", "InplaneRun", "SlipWeakeningFriction", "mode_load", "run_inplane",
            "uniform_load", "inplane_kernel_integrals", "inplane_stiffness", "static_stiffness",
            "check_stable", "growing_roots", "PrakashClifton", "FLUTTER_ONSET", "flutter_growth", "flutter_roots",
-           "ill_posedness"]
+           "ill_posedness", "slip_weakening_lengths"]

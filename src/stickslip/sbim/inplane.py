@@ -44,7 +44,8 @@ from .antiplane import MAX_HISTORY, FreeSurface
 from .fields import PeriodicGrid, space_time
 from .flutter import ill_posedness
 from .history import History
-from .interface import LAWS, CoulombFriction, PrakashClifton, SlipWeakeningFriction, interface_step
+from .interface import (LAWS, CoulombFriction, PrakashClifton, SlipWeakeningFriction, interface_step,
+                        slip_weakening_lengths)
 from .stability import check_stable
 from .inplane_kernels import inplane_step_weights, inplane_truncation, static_stiffness, wave_speed_ratio
 
@@ -212,6 +213,8 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
     ill = "" if isinstance(p.law, (FreeSurface, PrakashClifton)) else ill_posedness(p.law, p.poisson)
     if ill:
         log.warning("%s", ill)
+    for note in _resolution(p):
+        log.warning("%s", note)
     w11, w22, w12 = inplane_step_weights(p.poisson, T1, dt, count, window)
     hx, hy = History(w11, count, steps), History(w22, count, steps)
     s11, s22, s12 = static_stiffness(p.poisson)
@@ -257,6 +260,25 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
     if checkpoint is not None and start <= steps:
         checkpoint.save(_state(steps + 1, Ux, Uy, sliding, pressure, hx, hy, out))
     return InplaneRun(p, *(np.array(out[name]) for name in out), inplane_truncation(p.poisson, p.history_periods), ill)
+
+
+def _resolution(p: InplaneProblem) -> list[str]:
+    """What a slip-weakening run's grid and period cannot show (its pressure the load's at ``t = 0``)."""
+    law = p.law.friction if isinstance(p.law, PrakashClifton) else p.law
+    pressure = -float(np.mean(_loaded(p.load, p.x, 0.0)[1]))
+    if not isinstance(law, SlipWeakeningFriction) or not 1e-3 <= pressure <= 1e10:
+        return []
+    half, zone = slip_weakening_lengths(law, p.shear_modulus, p.poisson, pressure)
+    notes = []
+    if zone < p.dx:
+        notes.append(f"unresolved: the cohesive zone ({zone:.3g} m, 9 pi/32 mu D_c / ((1 - nu)(tau_s - tau_d))) is "
+                     f"shorter than a cell ({p.dx:.3g} m): a rupture front is not resolved (more elements, or a "
+                     "longer weakening_slip)")
+    if p.length < 2.0 * half:
+        notes.append(f"too short: the interface ({p.length:.3g} m) is shorter than the nucleation length "
+                     f"({2.0 * half:.3g} m, 2 x 1.158 mu D_c / ((1 - nu)(tau_s - tau_d))): a slip-weakening "
+                     "rupture cannot nucleate on its own in it")
+    return notes
 
 
 def _state(step, Ux, Uy, sliding, pressure, hx, hy, out) -> dict:
