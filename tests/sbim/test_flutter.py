@@ -234,3 +234,17 @@ def test_a_slip_weakening_runs_lengths_are_the_published_ones_and_a_coarse_or_sh
         assert sorted(m.split(":")[0] for m in said) == sorted(says)
         assert all(f"{zone:.3g} m" in m for m in said if m.startswith("unresolved"))
         assert all(f"{2 * half:.3g} m" in m for m in said if m.startswith("too short"))
+
+
+def test_an_antiplane_slip_weakening_run_says_so_with_mode_iii_lengths(caplog):
+    from stickslip.sbim import AntiplaneProblem, SlipWeakening, run_antiplane, uniform_traction
+    law = SlipWeakening(3e7, 2.5e7, 0.4)
+    scale = 3e10 * 0.4 / 5e6  # mu D_c / (tau_s - tau_d), mode III
+    for length, elements, says in ((40e3, 512, []), (40e3, 8, ["unresolved"]), (4e3, 512, ["too short"])):
+        caplog.clear()
+        with caplog.at_level(logging.WARNING, logger="stickslip.sbim"):
+            run_antiplane(AntiplaneProblem(MU, C, length, elements, uniform_traction(2.8e7), law), 2)
+        said = [r.getMessage() for r in caplog.records]
+        assert sorted(m.split(":")[0] for m in said) == sorted(says)
+        assert all(f"{9 * math.pi / 32 * scale:.3g} m" in m for m in said if m.startswith("unresolved"))
+        assert all(f"{2 * 1.158 * scale:.3g} m" in m for m in said if m.startswith("too short"))

@@ -29,6 +29,7 @@ complex numbers, the cost of a step in complex products (1.3 million at ``N = 2^
 
 from __future__ import annotations
 
+import logging
 import math
 from dataclasses import dataclass, field
 from typing import Callable
@@ -41,7 +42,10 @@ from ..results import Result
 from .fields import PeriodicGrid, space_time
 from .history import History
 from .kernels import ragged_step_weights, truncated_part
+from .scales import resolution_notes, weakening_lengths
 from .stability import check_stable
+
+log = logging.getLogger("stickslip.sbim")
 
 __all__ = ["FreeSurface", "Coulomb", "SlipWeakening", "AntiplaneProblem", "AntiplaneRun", "run_antiplane",
            "mode_traction", "uniform_traction"]
@@ -180,6 +184,11 @@ def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1) -> Anti
         raise ParameterError("steps", steps, f"a history of at most {MAX_HISTORY} numbers ({int(count.sum())} asked: "
                              "fewer history_periods, elements or steps)", also=("history_periods",))
     check_stable("antiplane", p.beta, n, p.history_periods, steps)
+    if isinstance(p.law, SlipWeakening):
+        half, zone = weakening_lengths(p.shear_modulus, p.law.weakening_slip,
+                                       p.law.static_strength - p.law.kinetic_strength)
+        for note in resolution_notes(half, zone, p.dx, p.length, "mu"):
+            log.warning("%s", note)
     history = History(ragged_step_weights(omega, dt, count), count, steps)
     x = p.x
     slip = np.zeros(n)

@@ -46,6 +46,7 @@ from .flutter import ill_posedness
 from .history import History
 from .interface import (LAWS, CoulombFriction, PrakashClifton, SlipWeakeningFriction, interface_step,
                         slip_weakening_lengths)
+from .scales import resolution_notes
 from .stability import check_stable
 from .inplane_kernels import inplane_step_weights, inplane_truncation, static_stiffness, wave_speed_ratio
 
@@ -269,16 +270,7 @@ def _resolution(p: InplaneProblem) -> list[str]:
     if not isinstance(law, SlipWeakeningFriction) or not 1e-3 <= pressure <= 1e10:
         return []
     half, zone = slip_weakening_lengths(law, p.shear_modulus, p.poisson, pressure)
-    notes = []
-    if zone < p.dx:
-        notes.append(f"unresolved: the cohesive zone ({zone:.3g} m, 9 pi/32 mu D_c / ((1 - nu)(tau_s - tau_d))) is "
-                     f"shorter than a cell ({p.dx:.3g} m): a rupture front is not resolved (more elements, or a "
-                     "longer weakening_slip)")
-    if p.length < 2.0 * half:
-        notes.append(f"too short: the interface ({p.length:.3g} m) is shorter than the nucleation length "
-                     f"({2.0 * half:.3g} m, 2 x 1.158 mu D_c / ((1 - nu)(tau_s - tau_d))): a slip-weakening "
-                     "rupture cannot nucleate on its own in it")
-    return notes
+    return resolution_notes(half, zone, p.dx, p.length, "mu / (1 - nu)")
 
 
 def _state(step, Ux, Uy, sliding, pressure, hx, hy, out) -> dict:

@@ -21,7 +21,6 @@ sliding well posed at any coefficient (`stickslip.sbim.flutter`).
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -29,14 +28,10 @@ import numpy as np
 from ..errors import ParameterError
 from ..quantities.sbim import SBIM as Q
 from .antiplane import FreeSurface
+from .scales import weakening_lengths
 
-__all__ = ["CoulombFriction", "SlipWeakeningFriction", "PrakashClifton", "interface_step", "LAWS", "slip_weakening_lengths",
-           "NUCLEATION", "COHESIVE"]
-
-#: Uenishi and Rice's (2003) nucleation half-length of linear slip-weakening, in ``mu* D_c / (tau_s - tau_d)``.
-NUCLEATION = 1.158
-#: Palmer and Rice's (1973) static cohesive zone, in ``mu* D_c / (tau_s - tau_d)``: 9 pi / 32.
-COHESIVE = 9.0 * math.pi / 32.0
+__all__ = ["CoulombFriction", "SlipWeakeningFriction", "PrakashClifton", "interface_step", "LAWS",
+           "slip_weakening_lengths"]
 
 
 def _coefficients(law) -> None:
@@ -138,15 +133,11 @@ def interface_step(law, Gx, Gy, slip, gap, sliding, pressure, dt, rad):
 def slip_weakening_lengths(law, shear_modulus: float, poisson: float, normal_stress: float) -> tuple[float, float]:
     """The nucleation half-length and the static cohesive zone [m] of a slip-weakening interface in mode II
     under the compressive ``normal_stress`` [Pa] (``mu* = mu / (1 - nu)``, strength drop ``(f_s - f_d)
-    normal_stress``): `NUCLEATION`
-    and `COHESIVE` times ``mu* D_c / (tau_s - tau_d)``; infinite without a drop."""
+    normal_stress``; `stickslip.sbim.scales`)."""
     if isinstance(law, PrakashClifton):
         law = law.friction
     if not isinstance(law, SlipWeakeningFriction):
         raise ParameterError("law", law, "a SlipWeakeningFriction (or one regularised by PrakashClifton)")
     mu, nu = Q.check("shear_modulus", shear_modulus), Q.check("poisson", poisson)
     drop = (law.static_friction - law.kinetic_friction) * Q.check("normal_stress", normal_stress)
-    if drop <= 0.0:
-        return math.inf, math.inf
-    scale = mu / (1.0 - nu) * law.weakening_slip / drop
-    return NUCLEATION * scale, COHESIVE * scale
+    return weakening_lengths(mu / (1.0 - nu), law.weakening_slip, drop)
