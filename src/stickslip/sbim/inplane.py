@@ -59,8 +59,7 @@ MAX_POISSON = 0.49
 
 log = logging.getLogger("stickslip.sbim")
 
-__all__ = ["CoulombFriction", "SlipWeakeningFriction", "PrakashClifton", "InplaneProblem", "InplaneRun",
-           "run_inplane", "partial_run", "uniform_load", "mode_load", "patch_load"]
+__all__ = ["InplaneProblem", "InplaneRun", "run_inplane", "partial_run", "uniform_load", "mode_load", "patch_load"]
 
 
 def uniform_load(traction: float, normal_traction: float) -> Callable:
