@@ -16,7 +16,8 @@ A root with ``Re p > 0`` grows at ``Re(p) k c_s`` and travels in the sliding dir
 
 **Coulomb's law: ill-posed above f = 1.** The growth rate of a root is proportional to ``k``: the
 shortest wavelengths grow fastest, so a run does not converge as its grid is refined (Renardy, 1992;
-Martins, Guimaraes and Faria, 1995). A root leaves the branch cut at ``p = -i sqrt(2)`` when ``f = 1``
+Martins, Guimaraes and Faria, 1995, found such growing surface waves for large friction and Poisson's
+ratio). Here a root leaves the branch cut at ``p = -i sqrt(2)`` when ``f = 1``
 for every ``nu > 0`` (there ``b = -i``, ``a = sqrt(1 - 2 / eta^2)`` and ``F = 0`` exactly), travelling
 at about ``sqrt(2) c_s``. At ``nu = 0`` the roots stay on the imaginary axis (neutral); at large ``f``
 they return to it. `ill_posedness` asks the roots at the coefficients a law can slide with.

@@ -158,9 +158,10 @@ def check(ds: xr.Dataset) -> list[Check]:
 FIGURE = FigureSpec(
     key="beyond-flutter", title="Beyond the paper — steady sliding on a half-space flutters: ill-posed or regularised",
     model="elastic half-space on a rigid body in time, in-plane (beyond the paper)",
-    claim="(Not a claim of the paper.) Steady sliding of an elastic half-space on a rigid body with Coulomb friction "
-          "f > 1 is unstable to waves growing at a rate proportional to their wavenumber (Renardy 1992; Martins, "
-          "Guimarães and Faria 1995): ill-posed, no convergence under grid refinement. Prakash and Clifton's "
+    claim="(Not a claim of the paper.) Steady sliding of an elastic half-space on a rigid body with a large Coulomb "
+          "friction is unstable to waves growing at a rate proportional to their wavenumber (Renardy 1992; Martins, "
+          "Guimarães and Faria 1995, for large friction and Poisson's ratio; here from f = 1 at every ν > 0, where "
+          "the root leaves the branch cut): ill-posed, no convergence under grid refinement. Prakash and Clifton's "
           "relaxation of the pressure the strength sees bounds the growth and restores convergence (Cochard and Rice "
           "2000; Ranjith and Rice 2001).",
     method="stickslip.sbim: perturbed steady sliding (f = 2, ν = 0.25) by the spectral boundary integral method, one "
