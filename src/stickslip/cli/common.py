@@ -254,13 +254,18 @@ def checked_axis(option: str, text: str, check) -> tuple[str, list[float]]:
     return name, values
 
 
+def command_line() -> str:
+    """The command this process runs, as typed (for a file's ``history``)."""
+    return "stickslip " + " ".join(shlex.quote(a) for a in sys.argv[1:])
+
+
 def write_netcdf(ds, out: Path) -> None:
     """Write a result dataset to ``out`` (through a temporary file, so a kill leaves no half
     file), with the command line in its ``history``."""
     from ..cf import for_file, stamp
     from ..files import to_netcdf
 
-    ds = for_file(stamp(ds.copy(), "stickslip " + " ".join(shlex.quote(a) for a in sys.argv[1:])))
+    ds = for_file(stamp(ds.copy(), command_line()))
     tmp = Path(out).with_name(Path(out).name + ".partial")
     try:
         to_netcdf(ds, tmp)

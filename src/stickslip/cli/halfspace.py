@@ -14,8 +14,8 @@ from ..errors import MISSING, ParameterError
 from ..quantities import HALFSPACE as Q
 from ..quantities import SBIM
 from .helptext import Typer
-from .common import (FIGURE_HELP, FIGURE_SUFFIXES, Overwrite, Replace, declared, emit, output_path, overwrite_needs,
-                     progress_bar, write_netcdf)
+from .common import (FIGURE_HELP, FIGURE_SUFFIXES, Overwrite, Replace, command_line, declared, emit, output_path,
+                     overwrite_needs, progress_bar, write_netcdf)
 
 _emit = functools.partial(emit, model="halfspace")  # results are printed with the units of this model
 
@@ -127,8 +127,6 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
     uniform tractions with more shear on a patch; slip, opening, rates and tractions over x and t."""
     import hashlib
     import json as json_module
-    import shlex
-    import sys
 
     import numpy as np
 
@@ -175,11 +173,10 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
     with exclusive(out, "--out"):
         if overwrite and out.exists():
             out.unlink()
-        command = "stickslip " + " ".join(shlex.quote(a) for a in sys.argv[1:])
+        command = command_line()
         checkpoint = Checkpoint(out, key, lambda state: stamp(partial_run(problem, state).to_xarray(), command))
         with progress_bar("running the interface") as tick:
             result = run_inplane(problem, steps, every=every, checkpoint=checkpoint, progress=tick)
-    ds = result.to_xarray()
     slipped = np.abs(result.slip[-1]) > 1e-9 * max(1.0, float(np.abs(result.slip).max()))
     summary = {**result.to_dict(), "t_end": float(result.t[-1]), "steps": steps,
                "peak_slip_rate": float(np.abs(result.slip_rate).max()), "final_max_slip": float(np.abs(result.slip[-1]).max()),
@@ -189,4 +186,4 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
     if plot:
         from .. import plotting
 
-        plotting.save(plotting.plot_space_time(ds), plot)
+        plotting.save(plotting.plot_space_time(result.to_xarray()), plot)
