@@ -40,7 +40,7 @@ ALLOWED = {
     "halfspace": BASE,
     "fem": BASE | {"contact", "friction", "sweep", "files"},
     "system": BASE | {"friction", "lawkernel", "dop853", "kernelcopy", "rsf", "orbits"},
-    "rsf": BASE,
+    "rsf": BASE | {"jit"},  # the slider's equations as compiled kernels
     "sbim": BASE | {"rsf", "jit", "files"},  # the half-space in time: rsf's laws, compiled kernels, its run file
     # (halfspace's waves to come)
     "plotting": {"errors", "validation", "legibility"},  # its argument checks: leaves, imports stay one-way

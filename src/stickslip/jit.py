@@ -70,6 +70,12 @@ class KernelSet:
                 return self.interpreted
         return self.compiled
 
+    @property
+    def left(self) -> float:
+        """The interpreted work the process may still do before it loads the compiled kernels."""
+        with self._lock:
+            return 0.0 if self.loaded else max(self.budget - self._spent, 0.0)
+
     def charge(self, kernels, work: float) -> None:
         """Count ``work`` units done by ``kernels`` (nothing for the compiled ones)."""
         if kernels is not self.__dict__.get("compiled"):

@@ -75,13 +75,26 @@ def _sbim_history() -> None:
     h.push(1, np.zeros(3, complex))
 
 
+def _rsf_slider() -> None:
+    import numpy as np
+
+    from .rsf import RateState, SpringSlider
+    from .rsf.kernel import KERNELS, pack
+
+    slider = SpringSlider(RateState(0.01, 0.015, 1e-5), 1e7, 1e10)
+    y, p = slider.steady_state(1e-6), pack(slider, 1e-5)
+    KERNELS.compiled.rhs(y, p, np.empty(y.size))
+    KERNELS.compiled.jacobian(y, p, np.empty((y.size, y.size)))
+
+
 #: The compiled paths, the longest to compile first: name -> a small case of it.
 PATHS = {"oscillator under a law that is not affine (DOP853 with the law)": _stribeck_oscillator,
          "systems under laws that are not affine (DOP853 with the laws)": _smooth_system,
          "systems' limit cycles (the event search)": _system_cycle,
          "the FE annulus (the explicit contact step)": _fe_annulus,
          "oscillator under an affine law (closed-form pieces)": _affine_oscillator,
-         "the spectral boundary integral method's convolution": _sbim_history}
+         "the spectral boundary integral method's convolution": _sbim_history,
+         "the rate-and-state slider's equations and Jacobian": _rsf_slider}
 
 
 def _timed(name: str) -> float:

@@ -209,3 +209,28 @@ def test_a_bad_history_on_the_command_line_is_named_as_typed(history, part, caps
     out, err = capsys.readouterr()
     assert code == 2 and out == "" and err.count("\n") == 1
     assert f"--history = {history!r}" in err and part in err and "load-velocity" not in err and " times " not in err
+
+
+@pytest.mark.slow  # 20 s: the independent Radau solve in Python
+def test_a_light_slider_that_stops_lsoda_is_solved_by_radau_against_an_independent_solve(monkeypatch):
+    """Inertia of 1e3 kg/m^2 at half the critical stiffness: stick-slip with the slip rate falling to
+    1e-13 m/s, where LSODA's trial steps leave the range of the numbers and its error test (NaN)
+    does not refuse them; the piece is solved again by Radau IIA. Against LSODA on the primitive
+    equations written here."""
+    from stickslip.rsf import pieces
+
+    taken = []
+    radau = pieces.solve_ivp
+    monkeypatch.setattr(pieces, "solve_ivp", lambda *a, **k: taken.append(1) or radau(*a, **k))
+    slider = SpringSlider(law(), SIGMA, 0.5 * KC, mass=1e3)
+    run = slide(slider, 1e-6, 2000.0, v_init=1.1e-6)
+    assert taken, "LSODA ran through: this case no longer tests the fallback"
+    rhs = _primitive("aging", 0.5 * KC, 1e3, lambda t: 1e-6)
+    y0 = [1.1e-6, DC / 1.1e-6, SIGMA * law().steady_friction(1.1e-6), 0.0]
+    with np.errstate(all="ignore"):  # its trial steps too go out of range; Radau refuses them
+        sol = solve_ivp(rhs, (0.0, 2000.0), y0, method="Radau", rtol=1e-11, atol=[1e-24, 1e-12, 1e-6, 1e-16],
+                        t_eval=run.t)
+    assert sol.status == 0
+    assert run.slip_rate.min() < 1e-11  # the stick phase that stops LSODA
+    np.testing.assert_allclose(run.slip, sol.y[3], rtol=1e-5, atol=1e-12)
+    np.testing.assert_allclose(np.log(run.slip_rate), np.log(sol.y[0]), atol=1e-3)

@@ -13,8 +13,9 @@ so that in the variables ``(ln V, psi, tau)``
     (ln V)' = (tau - sigma mu) / (m V)                                      (inertia)
 
 with ``psi_i'`` the law's evolution. A velocity history is piecewise constant (a velocity step,
-slide-hold-slide with a hold at ``V_lp = 0``); each piece is solved with an implicit Runge-Kutta
-method (Radau IIA, scipy), restarted at every change of ``V_lp``.
+slide-hold-slide with a hold at ``V_lp = 0``); each piece is solved by LSODA (scipy's ``odeint``,
+switching between Adams and BDF as the equations stiffen) with the equations and their Jacobian
+compiled (`stickslip.rsf.kernel`), restarted at every change of ``V_lp``.
 """
 
 from __future__ import annotations
@@ -24,25 +25,18 @@ from dataclasses import dataclass
 
 import numpy as np
 import lazy_loader as lazy
-from scipy.integrate import solve_ivp
 
 from ..cf import finish
 from ..errors import NoSolutionError, ParameterError
 from ..quantities import RSF as Q
 from ..results import Result
+from .kernel import KERNELS, pack
+from .pieces import MAX_CALLS, solve_piece
 from .law import RateState
 
 xr = lazy.load("xarray")  # imported on first use: commands that make no dataset start without it
 
 __all__ = ["SpringSlider", "SliderRun", "slide", "load_history", "MAX_CALLS", "directional", "complex_jacobian"]
-
-#: The most evaluations of the equations per piece of a history (about 25 s; some 250 stick-slip cycles).
-MAX_CALLS = 1_000_000
-
-
-class _Budget(Exception):
-    """A piece of the history used up `MAX_CALLS`."""
-
 
 @dataclass(frozen=True)
 class SpringSlider:
@@ -157,37 +151,23 @@ def slide(slider: SpringSlider, load_velocity, t_end: float, *, times=None, v_in
     out = np.empty((samples, y.size))
     load = np.empty(samples)
     steps = 0
+    out[0], load[0] = y, x_load
     edges = [t for t in times if t < t_end] + [t_end]
     for (t0, t1), v_lp in zip(zip(edges, edges[1:]), velocities):
-        if not np.all(np.isfinite(jacobian(slider, y, v_lp))):
+        p = pack(slider, v_lp)
+        if not np.all(np.isfinite(_jacobian(y, p))):
             raise NoSolutionError(f"the slider's equations overflow at t = {t0:.6g} s (a slip rate's response to "
                                   "stress beyond the range of the numbers: a mass, a or D_c too small for the rest)")
-        calls = [0]
-
-        def rhs(t, z, v_lp=v_lp):
-            calls[0] += 1
-            if calls[0] > MAX_CALLS:
-                raise _Budget(t)
-            return slider.rhs(z, v_lp)
-
-        try:
-            sol = solve_ivp(rhs, (t0, t1), y, method="Radau", rtol=rtol, atol=rtol * np.maximum(1.0, np.abs(y)),
-                            dense_output=True, jac=lambda t, z, v_lp=v_lp: jacobian(slider, z, v_lp))
-        except ValueError as err:  # scipy refuses a Jacobian or a step that overflowed
-            raise NoSolutionError(f"the slider's integration overflowed after t = {t0:.6g} s ({err})") from None
-        except _Budget as err:
-            raise NoSolutionError(f"more than {MAX_CALLS:.0e} evaluations of the equations by t = {err.args[0]:.6g} s "
-                                  f"of a piece from {t0:.6g} to {t1:.6g} s: a shorter t_end, or a looser rtol") \
-                from None
-        if sol.status != 0 or not np.all(np.isfinite(sol.y[:, -1])):
-            raise NoSolutionError(f"the slider's integration failed at t = {sol.t[-1]:.6g} s ({sol.message}): the "
-                                  "slip rate left the range of the numbers (a dynamic instability without inertia?)")
-        steps += sol.t.size - 1
-        inside = (grid >= t0) & (grid <= t1)
-        out[inside] = sol.sol(grid[inside]).T
+        inside = (grid > t0) & (grid <= t1)
+        at = np.concatenate([[t0], grid[inside]])
+        if at[-1] < t1:
+            at = np.append(at, t1)
+        ys, taken = solve_piece(p, y, at, rtol)
+        steps += taken
+        out[inside] = ys[1:1 + int(inside.sum())]
         load[inside] = x_load + v_lp * (grid[inside] - t0)
         x_load += v_lp * (t1 - t0)
-        y = sol.y[:, -1]
+        y = ys[-1]
     n = slider.law.states
     log_v, psi = out[:, 0], out[:, 1:1 + n]
     mu = np.real(slider.law.friction(log_v, psi.T)[0]) * np.ones_like(log_v)  # every sample at once
@@ -196,6 +176,15 @@ def slide(slider: SpringSlider, load_velocity, t_end: float, *, times=None, v_in
     if not all(np.all(np.isfinite(a)) for a in (result.slip_rate, result.theta, result.shear_stress, result.slip)):
         raise NoSolutionError("the slider's history overflows: its slip rate or state left the range of the numbers")
     return result
+
+
+def _jacobian(y: np.ndarray, p: np.ndarray) -> np.ndarray:
+    out = np.empty((y.size, y.size))
+    try:
+        KERNELS.interpreted.jacobian(y, p, out)
+    except (ArithmeticError, ValueError):
+        out[:] = np.inf
+    return out
 
 
 #: The complex step of `directional` and `complex_jacobian`.
