@@ -821,6 +821,11 @@ MUTANTS: list[dict] = [
        "slider: a piece LSODA cannot finish is not solved again by Radau",
        [T + "rsf/test_slider.py::test_a_light_slider_that_stops_lsoda_is_solved_by_radau_against_an_independent_solve"])
     | {"slow_hints": True},
+    _m("qd-trial-step-fatal", "src/stickslip/sbim/quasidynamic.py",
+       "            return np.full(y.size, np.nan)  # RK45 refuses",
+       "            raise  # RK45 refuses",
+       "quasi-dynamic: a trial step with no slip rate stops the run instead of being shortened",
+       [T + "sbim/test_quasidynamic.py"]),
     _m("fit-errors-of-logs", "src/stickslip/rsf/fit.py", "errors = np.concatenate([sd[:1], values[1:] * sd[1:]])",
        "errors = np.concatenate([sd[:1], sd[1:]])",
        "rsf fit: the standard errors of the logarithms reported as the parameters'", [T + "rsf/test_fit.py"])

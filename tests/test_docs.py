@@ -145,6 +145,7 @@ def test_fem_tutorial_runs(tmp_path, monkeypatch):
     assert "checkpoint" in str(namespace["refused"]) and (tmp_path / "fem.nc").exists()
 
 
+@pytest.mark.slow  # 15 s; `make docs` executes the same page (the fast set's budget)
 def test_your_body_tutorial_runs(tmp_path, monkeypatch):
     import subprocess
     import sys

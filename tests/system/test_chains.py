@@ -41,6 +41,7 @@ def explicit_moreau(m, kp, kc, N, fs, fd, V, x0, v0, t_end, steps):
     return x, v
 
 
+@pytest.mark.slow  # 9 s (the fast set's budget)
 def test_a_chain_against_an_independent_time_stepping_scheme():
     """12 blocks, seeded random start (rng seed 3), 20 s: 82 events, every block slipping and
     sticking; the scheme's distance to the event-driven end state shrinks with its step as a first

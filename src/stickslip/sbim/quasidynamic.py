@@ -164,7 +164,10 @@ def run_quasidynamic(problem: QuasiDynamicProblem, t_end: float, psi_perturbatio
 
     def rhs(t, y):
         calls[0] += 1
-        log_v = rates(t, y)
+        try:
+            log_v = rates(t, y)
+        except NoSolutionError:  # a trial state with no slip rate (a drive below the strength's least):
+            return np.full(y.size, np.nan)  # RK45 refuses the step (its error is not below 1) and shortens it
         return np.concatenate([np.exp(log_v), p.law.state_rate(log_v, y[None, n:])[0]])
 
     grid = np.linspace(0.0, t_end, samples)

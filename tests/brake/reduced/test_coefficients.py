@@ -32,6 +32,7 @@ def _printed_eq13(x, n, g):
                 D=(a * C1 - b * C2) / A, A=A, B=B, C1=C1, C2=C2)
 
 
+@pytest.mark.slow  # 9 s (the fast set's budget)
 def test_galerkin_equations_have_the_structure_of_eq15():
     """U-equation: U'', V', U only; V-equation: V'', U', V only (not the printed [12])."""
     eqs, _ = galerkin()
