@@ -10,7 +10,9 @@ shape. The method's name is the one geophysics and tribology use for it (QDYN, c
 - `kernels`: the half-space surface's convolution kernels mode by mode (antiplane, mode III), their
   exact step weights and the truncation of their history;
 - `antiplane`: a half-space sliding antiplane on a rigid body (or its surface free under an applied
-  traction) in time, explicit, with Coulomb or slip-weakening friction (`run_antiplane`);
+  traction) in time, explicit, with Coulomb, slip-weakening or rate-and-state friction (`run_antiplane`);
+- `ratestate`: rate-and-state friction at the nodes (the slip rate that balances the drive, the state
+  over a step), shared by the quasi-dynamic and the fully dynamic antiplane runs;
 - `quasidynamic`: a rate-and-state interface, antiplane, in the quasi-dynamic approximation (the static
   response and the radiation damping; adaptive steps), on a rigid body or a fault (`run_quasidynamic`).
 
@@ -24,9 +26,8 @@ shape. The method's name is the one geophysics and tribology use for it (QDYN, c
 - `flutter`: the flutter instability of steady sliding (its dispersion relation and roots) and whether
   a run's law is well posed.
 
-Not yet: two half-spaces of different materials, rate-and-state in the fully dynamic mode, the flutter
-instability's dispersion relation and regularised laws, the paper's waves as initial states, the
-command line.
+Not yet: two half-spaces of different materials, rate-and-state in the fully dynamic in-plane mode,
+the paper's waves as initial states.
 """
 
 from .antiplane import (AntiplaneProblem, AntiplaneRun, Coulomb, FreeSurface, SlipWeakening, mode_traction,
@@ -36,6 +37,7 @@ from .inplane import InplaneProblem, InplaneRun, mode_load, run_inplane, uniform
 from .interface import CoulombFriction, PrakashClifton, SlipWeakeningFriction, slip_weakening_lengths
 from .inplane_kernels import inplane_kernel_integrals, inplane_stiffness, static_stiffness
 from .quasidynamic import QuasiDynamicProblem, QuasiDynamicRun, run_quasidynamic
+from .ratestate import RateStateFriction
 from .stability import check_stable, growing_roots
 from .kernels import antiplane_kernel, antiplane_kernel_integral, ragged_step_weights, step_weights, truncated_part
 
@@ -45,4 +47,4 @@ __all__ = ["AntiplaneProblem", "AntiplaneRun", "Coulomb", "FreeSurface", "SlipWe
            "CoulombFriction", "InplaneProblem", "InplaneRun", "SlipWeakeningFriction", "mode_load", "run_inplane",
            "uniform_load", "inplane_kernel_integrals", "inplane_stiffness", "static_stiffness",
            "check_stable", "growing_roots", "PrakashClifton", "FLUTTER_ONSET", "flutter_growth", "flutter_roots",
-           "ill_posedness", "slip_weakening_lengths"]
+           "ill_posedness", "slip_weakening_lengths", "RateStateFriction"]

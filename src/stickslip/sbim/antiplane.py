@@ -36,12 +36,13 @@ from typing import Callable
 
 import numpy as np
 
-from ..errors import ParameterError
+from ..errors import NoSolutionError, ParameterError
 from ..quantities.sbim import SBIM as Q
 from ..results import Result
 from .fields import PeriodicGrid, space_time
 from .history import History
 from .kernels import ragged_step_weights, truncated_part
+from .ratestate import RateStateFriction, advance_state, slip_rates
 from .scales import resolution_notes, weakening_lengths
 from .stability import check_stable
 
@@ -143,8 +144,9 @@ class AntiplaneProblem(PeriodicGrid):
         if not callable(self.traction):
             raise ParameterError("traction", self.traction, "a function of (x [m], t [s]) giving the shear traction "
                                  "[Pa] (uniform_traction, mode_traction)")
-        if not isinstance(self.law, (FreeSurface, Coulomb, SlipWeakening)):
-            raise ParameterError("law", self.law, "FreeSurface(), Coulomb(...) or SlipWeakening(...)")
+        if not isinstance(self.law, (FreeSurface, Coulomb, SlipWeakening, RateStateFriction)):
+            raise ParameterError("law", self.law, "FreeSurface(), Coulomb(...), SlipWeakening(...) or "
+                                 "RateStateFriction(...)")
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -194,6 +196,9 @@ def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1) -> Anti
     slip = np.zeros(n)
     sliding = np.zeros(n, bool)
     law = p.law
+    rsf = isinstance(law, RateStateFriction)
+    if rsf:
+        psi, log_v = law.initial_psi(n), np.full(n, math.log(law.slip_rate))
     out_t, out_slip, out_rate, out_stress = [], [], [], []
     for step in range(steps + 1):
         t = step * dt
@@ -206,10 +211,17 @@ def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1) -> Anti
                                  f"{n} nodes ({err})") from None
         if not np.all(np.isfinite(drive)):
             raise ParameterError("traction", "a loading", f"finite tractions (not finite at t = {t:g} s)")
-        held = np.abs(drive) <= law.strength(slip, sliding)  # a stuck node holds up to its static strength
-        excess = np.abs(drive) - law.strength(slip, np.ones(n, bool))  # a moving one meets its sliding strength
-        sliding = ~held & (excess > 0.0)
-        rate = np.where(sliding, (c / mu) * np.sign(drive) * excess, 0.0)
+        if rsf:  # every node slides: its rate balances the strength, drive - (mu / c) V = sigma mu(V, psi)
+            try:
+                log_v = slip_rates(law.law, law.normal_stress, mu / c, drive, psi, log_v)
+            except NoSolutionError as err:
+                raise NoSolutionError(f"at t = {t:.6g} s: {err}") from None
+            rate = np.exp(log_v)
+        else:
+            held = np.abs(drive) <= law.strength(slip, sliding)  # a stuck node holds up to its static strength
+            excess = np.abs(drive) - law.strength(slip, np.ones(n, bool))  # a moving one meets its sliding strength
+            sliding = ~held & (excess > 0.0)
+            rate = np.where(sliding, (c / mu) * np.sign(drive) * excess, 0.0)
         if step % every == 0 or step == steps:
             out_t.append(t)
             out_slip.append(slip.copy())
@@ -218,6 +230,8 @@ def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1) -> Anti
         if step == steps:
             break
         slip = slip + dt * rate
+        if rsf:
+            psi = advance_state(law.law, psi, log_v, dt)
         history.push(step, np.fft.rfft(rate))
     return AntiplaneRun(p, np.array(out_t), np.array(out_slip), np.array(out_rate), np.array(out_stress),
                         truncated_part(p.history_periods))

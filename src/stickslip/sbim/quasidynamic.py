@@ -30,11 +30,10 @@ from ..errors import NoSolutionError, ParameterError
 from ..quantities.sbim import SBIM as Q
 from ..results import Result
 from .fields import space_time
+from .ratestate import slip_rates
 
 __all__ = ["QuasiDynamicProblem", "QuasiDynamicRun", "run_quasidynamic"]
 
-#: Newton iterations on ln V at most, and the tolerance on its step.
-NEWTON, NEWTON_TOL = 60, 1e-12
 
 
 @dataclass(frozen=True)
@@ -113,22 +112,6 @@ class QuasiDynamicRun(Result):
                           f"({self.problem.geometry})")
 
 
-def _rates(problem: QuasiDynamicProblem, drive: np.ndarray, psi: np.ndarray, guess: np.ndarray) -> np.ndarray:
-    """``ln V`` at each node where ``drive - eta V = sigma mu(V, psi)`` (Newton, safeguarded)."""
-    law, sigma, eta = problem.law, problem.normal_stress, problem.damping
-    log_v = guess.copy()
-    for _ in range(NEWTON):
-        mu, mu_v, _ = law.friction(log_v, psi[None, :])
-        v = np.exp(log_v)
-        g = sigma * np.real(mu) + eta * v - drive
-        step = g / (sigma * np.real(mu_v) + eta * v)
-        step = np.clip(step, -5.0, 5.0)  # at most a factor e^5 a step: far from the root the slope misleads
-        log_v = log_v - step
-        if np.max(np.abs(step)) < NEWTON_TOL:
-            return log_v
-    raise NoSolutionError("the slip rate of the quasi-dynamic interface did not converge (Newton on ln V)")
-
-
 def run_quasidynamic(problem: QuasiDynamicProblem, t_end: float, psi_perturbation=None, samples: int = 201,
                      rtol: float = 1e-8) -> QuasiDynamicRun:
     """Run ``problem`` from steady sliding (each node's ``psi`` plus ``psi_perturbation``, an array of
@@ -158,7 +141,7 @@ def run_quasidynamic(problem: QuasiDynamicProblem, t_end: float, psi_perturbatio
     def rates(t, y):
         slip, psi = y[:n], y[n:]
         drive = tau_i + p.stressing_rate * t + np.fft.irfft(-K * np.fft.rfft(slip), n)
-        log_v = _rates(p, drive, psi, last[0])
+        log_v = slip_rates(p.law, p.normal_stress, p.damping, drive, psi, last[0])
         last[0] = log_v
         return log_v
 

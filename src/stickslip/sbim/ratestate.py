@@ -1,0 +1,101 @@
+"""Rate-and-state friction at an interface's nodes: each node's slip rate from the stress that drives
+it, and its state over a step; shared by the quasi-dynamic runs (`stickslip.sbim.run_quasidynamic`)
+and the fully dynamic antiplane ones (`RateStateFriction` in `stickslip.sbim.run_antiplane`).
+
+At a node driven by ``g`` (the load and the half-space's static and memory terms) with the radiation
+damping ``eta``, the slip rate balances the strength, ``g - eta V = sigma mu(V, psi)``: the left side
+falls and the right rises with ``V`` (one root), found by Newton's method on ``ln V``. A drive no
+positive slip rate balances (below the strength's least) has no root: `slip_rates` says so and the
+caller decides (the quasi-dynamic integrator shortens its step; a dynamic run stops).
+
+Over a step at a constant slip rate the aging and the slip laws' states have closed forms
+(`advance_state`): ``theta`` relaxes to ``D_c / V`` as ``exp(-V dt / D_c)`` (aging), and
+``ln(V theta / D_c)`` decays so (slip), whatever the step.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import NoSolutionError, ParameterError
+from ..quantities.sbim import SBIM as Q
+
+__all__ = ["RateStateFriction", "slip_rates", "advance_state", "NEWTON", "NEWTON_TOL"]
+
+#: Newton iterations on ln V at most, and the tolerance on its step.
+NEWTON, NEWTON_TOL = 60, 1e-12
+#: ln V below which a slip rate is taken for zero (1e-300 m/s).
+LOG_ZERO = math.log(1e-300)
+
+
+def slip_rates(law, normal_stress: float, damping: float, drive: np.ndarray, psi: np.ndarray,
+               guess: np.ndarray) -> np.ndarray:
+    """``ln V`` at each node where ``drive - damping V = normal_stress mu(V, psi)`` (``law`` a
+    `stickslip.rsf.RateState` with one state variable); Newton from ``guess``, each step at most 5
+    (far from the root the slope misleads). Raises `NoSolutionError` if it does not converge."""
+    log_v = np.array(guess, dtype=float)
+    for _ in range(NEWTON):
+        mu, mu_v, _ = law.friction(log_v, psi[None, :])
+        v = np.exp(log_v)
+        g = normal_stress * np.real(mu) + damping * v - drive
+        step = g / (normal_stress * np.real(mu_v) + damping * v)
+        step = np.clip(step, -5.0, 5.0)
+        log_v = log_v - step
+        if np.max(np.abs(step)) < NEWTON_TOL:
+            if np.min(log_v) < LOG_ZERO:
+                raise NoSolutionError("a slip rate fell to zero (the drive below the strength at any positive rate; "
+                                      "the plain law has no value at zero slip rate, the regularised one no root below it)")
+            return log_v
+    raise NoSolutionError("no slip rate balances the drive (Newton on ln V did not converge: the drive below the "
+                          "strength at every slip rate the numbers hold)")
+
+
+def advance_state(law, psi: np.ndarray, log_v: np.ndarray, dt: float) -> np.ndarray:
+    """``psi`` after ``dt`` at the constant slip rates ``exp(log_v)`` (the aging or the slip law: exact)."""
+    x = np.exp(log_v) * dt / law.dc
+    steady = math.log(law.v_ref) - log_v  # psi of steady sliding at V
+    if law.evolution == "aging":  # r = V theta / D_c relaxes to 1: r e^-x + (1 - e^-x), two terms >= 0
+        return steady + np.log(np.exp(psi - steady - x) - np.expm1(-x))
+    return steady + (psi - steady) * np.exp(-x)  # slip: ln(V theta / D_c) = psi - steady decays
+
+
+@dataclass(frozen=True)
+class RateStateFriction:
+    """A rate-and-state interface for `stickslip.sbim.run_antiplane`: the ``law`` (a
+    `stickslip.rsf.RateState`, one state variable, the aging or the slip law) under ``normal_stress``
+    [Pa], every node sliding steadily at ``slip_rate`` [m/s] at ``t = 0`` (its state steady there)
+    plus ``psi_perturbation`` (one number per element, or none)."""
+
+    law: object
+    normal_stress: float
+    slip_rate: float
+    psi_perturbation: object = None
+
+    def __post_init__(self):
+        from ..rsf import RateState
+
+        if not isinstance(self.law, RateState) or self.law.states != 1 or self.law.evolution == "prz":
+            raise ParameterError("law", self.law, "a stickslip.rsf.RateState with one state variable and the aging "
+                                 "or the slip law (their states advance exactly over a step)")
+        for name in ("normal_stress", "slip_rate"):
+            object.__setattr__(self, name, Q.check(name, getattr(self, name)))
+
+    def steady_drive(self, damping: float) -> float:
+        """The uniform traction [Pa] that holds steady sliding at ``slip_rate``."""
+        return self.normal_stress * self.law.steady_friction(self.slip_rate) + damping * self.slip_rate
+
+    def initial_psi(self, n: int) -> np.ndarray:
+        psi = np.full(n, float(self.law.steady_psi(self.slip_rate)[0]))
+        if self.psi_perturbation is None:
+            return psi
+        try:
+            d = np.asarray(self.psi_perturbation, dtype=float)
+        except (TypeError, ValueError):
+            d = np.zeros(0)
+        if d.shape != (n,) or not np.all(np.isfinite(d)):
+            raise ParameterError("psi_perturbation", f"<{type(self.psi_perturbation).__name__}>",
+                                 f"{n} finite numbers (one per element) or None")
+        return psi + d
