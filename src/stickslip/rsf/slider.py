@@ -181,7 +181,8 @@ def slide(slider: SpringSlider, load_velocity, t_end: float, *, times=None, v_in
 def _jacobian(y: np.ndarray, p: np.ndarray) -> np.ndarray:
     out = np.empty((y.size, y.size))
     try:
-        KERNELS.interpreted.jacobian(y, p, out)
+        with np.errstate(all="ignore"):  # numpy's scalars give inf where Python's math raises
+            KERNELS.interpreted.jacobian(y, p, out)
     except (ArithmeticError, ValueError):
         out[:] = np.inf
     return out

@@ -35,7 +35,6 @@ from .ratestate import slip_rates
 __all__ = ["QuasiDynamicProblem", "QuasiDynamicRun", "run_quasidynamic"]
 
 
-
 @dataclass(frozen=True)
 class QuasiDynamicProblem:
     """An interface of ``length`` [m] in ``elements``, of a half-space (``shear_modulus`` [Pa],
