@@ -78,7 +78,7 @@ RSF = Domain("rsf", units="SI, per unit area of the interface", quantities=[
     Q("period", "s", "period of the slider's limit cycle"),
     Q("friction_min", "1", "smallest friction coefficient (of the run or the cycle)"),
     Q("friction_max", "1", "largest friction coefficient (of the run or the cycle)"),
-    Q("slip_rate_max", "m/s", "largest slip rate (of the run or the cycle)"),
+    Q("slip_rate_max", "m/s", "largest slip rate among the samples (of the run or the cycle)"),
     Q("slip_rate_min", "m/s", "smallest slip rate (of the run or the cycle)"),
     Q("steps", "1", "steps the integrator took"),
     Q("slip_rate_end", "m/s", "slip rate at the end of the run"),

@@ -18,7 +18,7 @@ import numpy as np
 from scipy.integrate import ODEintWarning, odeint, solve_ivp
 
 from ..errors import NoSolutionError
-from .kernel import KERNELS
+from .kernel import KERNELS, MASS
 
 __all__ = ["solve_piece", "MAX_CALLS", "CALL_COST"]
 
@@ -59,8 +59,9 @@ def solve_piece(p: np.ndarray, y: np.ndarray, at: np.ndarray, rtol: float) -> tu
     if why == "calls":
         raise NoSolutionError(f"more than {MAX_CALLS:.0e} evaluations of the equations by t = {t:.6g} s of a piece "
                               f"from {at[0]:.6g} to {at[-1]:.6g} s: a shorter t_end, or a looser rtol")
-    raise NoSolutionError(f"the slider's integration failed at t = {t:.6g} s ({why}): the slip rate or the state "
-                          "left the range of the numbers (a dynamic instability without inertia?)")
+    hint = " (quasi-static: a slip rate running away, which inertia would bound?)" if p[MASS] == 0.0 else ""
+    raise NoSolutionError(f"the slider's integration failed at t = {t:.6g} s ({why}): the slip rate or the state left "
+                          f"the range of the numbers, or its time scale fell below the spacing of the times{hint}")
 
 
 def _evaluations(kernels, p, size, calls, limit):

@@ -5,8 +5,9 @@ and the fully dynamic antiplane ones (`RateStateFriction` in `stickslip.sbim.run
 At a node driven by ``g`` (the load and the half-space's static and memory terms) with the radiation
 damping ``eta``, the slip rate balances the strength, ``g - eta V = sigma mu(V, psi)``: the left side
 falls and the right rises with ``V`` (one root), found by Newton's method on ``ln V``. A drive no
-positive slip rate balances (below the strength's least) has no root: `slip_rates` says so and the
-caller decides (the quasi-dynamic integrator shortens its step; a dynamic run stops).
+positive slip rate balances (at or below zero, or below the regularised strength's least) has no root:
+`slip_rates` says so and the caller decides (the quasi-dynamic integrator shortens its step; a dynamic
+run stops).
 
 Over a step at a constant slip rate the aging and the slip laws' states have closed forms
 (`advance_state`): ``theta`` relaxes to ``D_c / V`` as ``exp(-V dt / D_c)`` (aging), and
@@ -36,6 +37,9 @@ def slip_rates(law, normal_stress: float, damping: float, drive: np.ndarray, psi
     """``ln V`` at each node where ``drive - damping V = normal_stress mu(V, psi)`` (``law`` a
     `stickslip.rsf.RateState` with one state variable); Newton from ``guess``, each step at most 5
     (far from the root the slope misleads). Raises `NoSolutionError` if it does not converge."""
+    if np.any(drive <= 0.0):
+        raise NoSolutionError(f"a drive at or below zero at {int(np.sum(drive <= 0.0))} nodes (the strength would "
+                              "have to push the slip on: the interface slides forwards only)")
     log_v = np.array(guess, dtype=float)
     for _ in range(NEWTON):
         mu, mu_v, _ = law.friction(log_v, psi[None, :])
@@ -96,6 +100,6 @@ class RateStateFriction:
         except (TypeError, ValueError):
             d = np.zeros(0)
         if d.shape != (n,) or not np.all(np.isfinite(d)):
-            raise ParameterError("psi_perturbation", f"<{type(self.psi_perturbation).__name__}>",
+            raise ParameterError("psi_perturbation", f"<{type(self.psi_perturbation).__name__} of shape {d.shape}>",
                                  f"{n} finite numbers (one per element) or None")
         return psi + d
