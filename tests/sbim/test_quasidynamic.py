@@ -25,8 +25,8 @@ MU, C, SIGMA, V = 3e10, 3000.0, 5e7, 1e-9
 LAW = RateState(0.01, 0.015, 1e-4, f0=0.6, v_ref=1e-6)  # K_c = sigma (b - a) / D_c = 2.5e9 Pa/m
 
 
-def linearised(K, sides, t, eps, V=V):
-    a, b, dc = LAW.a, LAW.b, LAW.dc
+def linearised(K, sides, t, eps, V=V, law=LAW):
+    a, b, dc = law.a, law.b, law.dc
     eta = MU / (sides * C)
     D = SIGMA * a + eta * V
     A = np.array([[-V * K / D, -V * SIGMA * b / D], [V * K / (dc * D), -V / dc + V * SIGMA * b / (dc * D)]])
@@ -150,3 +150,28 @@ def test_fully_dynamic_steady_sliding_stays_steady_a_weak_drive_creeps_and_a_bac
     with pytest.raises(ParameterError, match="psi_perturbation"):
         run_antiplane(AntiplaneProblem(MU, C, 300.0, 16, uniform_traction(drive),
                                        RateStateFriction(LAW, SIGMA, 1e-6, [0.1, 0.2])), 10)
+
+
+@pytest.mark.parametrize("ratio", [1.25, 0.8])
+def test_a_fully_dynamic_mode_grows_above_the_critical_wavelength_and_decays_below_as_its_linearisation(ratio):
+    """The first mode of a fully dynamic rate-and-state interface (16 elements, V = 1e-4 m/s, where the
+    quasi-dynamic damping is 2e-3 of sigma a) at 1.25 and 0.8 times the critical wavelength
+    2 pi mu D_c / (sigma (b - a)) (Ruina's critical stiffness as a mode's): it grows (a swinging
+    envelope) above it and decays below, and its ln V follows the spring-slider's linearisation with
+    stiffness mu k and damping mu / c_s (the closed form of this file, `linearised`) within 2 % of its
+    largest value over 60 s (6 D_c / V): 0.76 % and 0.42 %. Threshold set before the comparison was run."""
+    from stickslip.sbim import AntiplaneProblem, RateStateFriction, run_antiplane, uniform_traction
+
+    v, n, eps = 1e-4, 16, 1e-3
+    law = RateState(0.01, 0.015, 1e-3, f0=0.6, v_ref=1e-6)
+    L = ratio * 2 * math.pi * MU * law.dc / (SIGMA * (law.b - law.a))
+    x = np.arange(n) * L / n
+    friction = RateStateFriction(law, SIGMA, v, eps * np.cos(2 * math.pi * x / L))
+    problem = AntiplaneProblem(MU, C, L, n, uniform_traction(friction.steady_drive(MU / C)), friction, beta=0.5,
+                               history_periods=16)
+    run = run_antiplane(problem, int(60.0 / problem.dt), every=100)
+    mode = np.fft.rfft(np.log(run.slip_rate), axis=1)[:, 1].real * 2 / n
+    expected = linearised(MU * 2 * math.pi / L, 1, run.t, eps, V=v, law=law)
+    assert np.max(np.abs(mode - expected)) < 0.02 * np.max(np.abs(expected))
+    # the direction (set after seeing the end values: 1.15 and 0.065 times the start)
+    assert abs(mode[-1]) > abs(mode[0]) if ratio > 1 else abs(mode[-1]) < 0.1 * abs(mode[0])
