@@ -70,6 +70,7 @@ def _first_cycle_error(body, ratio):
     return np.max(np.abs(x - exact)) / np.hypot(x_a - x_e, V / omega)
 
 
+@pytest.mark.slow  # 12 s (the fast set's budget)
 def test_the_first_stick_slip_cycle_of_a_block_tends_to_the_oscillators_as_the_block_stiffens(body):
     soft, stiff = _first_cycle_error(body, 20.0), _first_cycle_error(body, 160.0)
     assert stiff < soft / 4 and stiff < 2e-2
