@@ -8,8 +8,8 @@ parameters packed by `pack` into one array,
     a, f0, ln V_0, stiffness, normal stress, mass, load velocity, evolution (0 aging, 1 slip,
     2 prz), regularised (0 or 1), states (1 or 2), b_1, b_2, D_c1, D_c2.
 
-`friction` and `state_rate` are one node's law: what the slider's equations and an interface's
-nodes share. The Jacobian is written out by hand (the derivation in the comments); the tests hold
+`friction` and `state_rate` are one node's law, written for the slider's equations (the interface
+runs of `stickslip.sbim` take the law vectorised over their nodes, `stickslip.sbim.ratestate`). The Jacobian is written out by hand (the derivation in the comments); the tests hold
 it to the complex-step one of `SpringSlider.rhs`.
 """
 
@@ -25,7 +25,8 @@ __all__ = ["pack", "friction", "state_rate", "rhs", "jacobian", "KERNELS", "EVOL
 
 #: The evolution laws' codes in the packed parameters.
 EVOLUTIONS = ("aging", "slip", "prz")
-#: Above it ``asinh(exp(z))`` is ``z + ln 2`` to round-off (as in `stickslip.rsf.RateState.friction`).
+#: Above it ``asinh(exp(z))`` is ``z + ln 2`` to round-off (and ``exp(z)`` could overflow); here and in
+#: `stickslip.rsf.RateState.friction`.
 LARGE_LOG = 30.0
 
 A, F0, LOG_VREF, K, SIGMA, MASS, VLOAD, EVOLUTION, REGULARIZED, STATES, B, DC = 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 12

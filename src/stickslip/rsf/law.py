@@ -28,11 +28,10 @@ import numpy as np
 
 from ..errors import ParameterError
 from ..quantities import RSF as Q
+from .kernel import LARGE_LOG
 
 __all__ = ["RateState"]
 
-#: Above it ``asinh(z)`` is ``ln(2 z)`` to round-off (and ``exp`` of ``ln z`` would overflow).
-_LARGE_LOG = 30.0
 
 
 @dataclass(frozen=True)
@@ -91,9 +90,9 @@ class RateState:
             return self.f0 + self.a * (log_v - math.log(self.v_ref)) + self.b_values @ psi, self.a, 1.0
         log_z = log_v - math.log(2.0 * self.v_ref) + big_psi / self.a
         if np.ndim(log_z):  # many states at once (a run's samples)
-            big = np.real(log_z) > _LARGE_LOG
+            big = np.real(log_z) > LARGE_LOG
             mu = self.a * np.where(big, log_z + math.log(2.0), np.arcsinh(np.exp(np.where(big, 0.0, log_z))))
-        elif np.real(log_z) > _LARGE_LOG:
+        elif np.real(log_z) > LARGE_LOG:
             mu = self.a * (log_z + math.log(2.0))
         else:
             mu = self.a * np.arcsinh(np.exp(log_z))

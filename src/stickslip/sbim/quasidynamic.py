@@ -30,7 +30,7 @@ from ..errors import NoSolutionError, ParameterError
 from ..quantities.sbim import SBIM as Q
 from ..results import Result
 from .fields import space_time
-from .ratestate import slip_rates
+from .ratestate import perturbed_psi, slip_rates
 
 __all__ = ["QuasiDynamicProblem", "QuasiDynamicRun", "run_quasidynamic"]
 
@@ -122,16 +122,7 @@ def run_quasidynamic(problem: QuasiDynamicProblem, t_end: float, psi_perturbatio
     t_end = Q.check("t_end", t_end)
     samples, rtol = Q.check("samples", samples), Q.check("rtol", rtol)
     n, p = problem.elements, problem
-    psi0 = np.full(n, float(p.law.steady_psi(p.slip_rate)[0]))
-    if psi_perturbation is not None:
-        try:
-            d = np.asarray(psi_perturbation, dtype=float)
-        except (TypeError, ValueError):
-            d = np.zeros(0)
-        if d.shape != (n,) or not np.all(np.isfinite(d)):
-            raise ParameterError("psi_perturbation", f"<{type(psi_perturbation).__name__}>",
-                                 f"{n} finite numbers (one per element) or None")
-        psi0 = psi0 + d
+    psi0 = perturbed_psi(p.law, p.slip_rate, n, psi_perturbation)
     tau_i = p.steady_traction()
     K = p.stiffness
     last = [np.full(n, math.log(p.slip_rate))]

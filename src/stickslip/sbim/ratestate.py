@@ -24,7 +24,7 @@ import numpy as np
 from ..errors import NoSolutionError, ParameterError
 from ..quantities.sbim import SBIM as Q
 
-__all__ = ["RateStateFriction", "slip_rates", "advance_state", "NEWTON", "NEWTON_TOL"]
+__all__ = ["RateStateFriction", "slip_rates", "advance_state", "perturbed_psi", "NEWTON", "NEWTON_TOL"]
 
 #: Newton iterations on ln V at most, and the tolerance on its step.
 NEWTON, NEWTON_TOL = 60, 1e-12
@@ -92,14 +92,20 @@ class RateStateFriction:
         return self.normal_stress * self.law.steady_friction(self.slip_rate) + damping * self.slip_rate
 
     def initial_psi(self, n: int) -> np.ndarray:
-        psi = np.full(n, float(self.law.steady_psi(self.slip_rate)[0]))
-        if self.psi_perturbation is None:
-            return psi
-        try:
-            d = np.asarray(self.psi_perturbation, dtype=float)
-        except (TypeError, ValueError):
-            d = np.zeros(0)
-        if d.shape != (n,) or not np.all(np.isfinite(d)):
-            raise ParameterError("psi_perturbation", f"<{type(self.psi_perturbation).__name__} of shape {d.shape}>",
-                                 f"{n} finite numbers (one per element) or None")
-        return psi + d
+        return perturbed_psi(self.law, self.slip_rate, n, self.psi_perturbation)
+
+
+def perturbed_psi(law, slip_rate: float, n: int, perturbation) -> np.ndarray:
+    """``psi`` of steady sliding at ``slip_rate`` at ``n`` nodes plus ``perturbation`` (``n`` finite
+    numbers, or None)."""
+    psi = np.full(n, float(law.steady_psi(slip_rate)[0]))
+    if perturbation is None:
+        return psi
+    try:
+        d = np.asarray(perturbation, dtype=float)
+    except (TypeError, ValueError):
+        d = np.zeros(0)
+    if d.shape != (n,) or not np.all(np.isfinite(d)):
+        raise ParameterError("psi_perturbation", f"<{type(perturbation).__name__} of shape {d.shape}>",
+                             f"{n} finite numbers (one per element) or None")
+    return psi + d
