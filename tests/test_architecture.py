@@ -41,7 +41,8 @@ ALLOWED = {
     "fem": BASE | {"contact", "friction", "sweep", "files"},
     "system": BASE | {"friction", "lawkernel", "dop853", "kernelcopy", "rsf", "orbits"},
     "rsf": BASE | {"jit"},  # the slider's equations as compiled kernels
-    "sbim": BASE | {"rsf", "jit", "files"},  # the half-space in time: rsf's laws, compiled kernels, its run file
+    "sbim": BASE | {"rsf", "jit", "files", "halfspace"},  # the half-space in time: rsf's laws, compiled kernels,
+    # its run file, the paper's waves (sbim.waves) as initial states
     # (halfspace's waves to come)
     "plotting": {"errors", "validation", "legibility"},  # its argument checks: leaves, imports stay one-way
     "legibility": {"validation"},  # reads laid-out figures, draws nothing

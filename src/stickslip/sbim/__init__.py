@@ -24,15 +24,18 @@ shape. The method's name is the one geophysics and tribology use for it (QDYN, c
 - `stability`: each mode's recurrence and its roots; a run in which the scheme would grow is refused;
 - `interface`: the in-plane interface laws (contact, friction, Prakash and Clifton's regularisation);
 - `flutter`: the flutter instability of steady sliding (its dispersion relation and roots) and whether
-  a run's law is well posed.
+  a run's law is well posed;
+- `initial`: an in-plane run's state at ``t = 0`` with a past (`InitialState`);
+- `waves`: the paper's stick-slip waves (section 4) on a grid, as such a state and as the exact fields
+  (`stickslip.sbim.waves.WaveOnGrid`, imported from its module: it loads the half-space's closed forms).
 
-Not yet: two half-spaces of different materials, rate-and-state in the fully dynamic in-plane mode,
-the paper's waves as initial states.
+Not yet: two half-spaces of different materials, rate-and-state in the fully dynamic in-plane mode.
 """
 
 from .antiplane import (AntiplaneProblem, AntiplaneRun, Coulomb, FreeSurface, SlipWeakening, mode_traction,
                         run_antiplane, uniform_traction)
 from .flutter import FLUTTER_ONSET, flutter_growth, flutter_roots, ill_posedness
+from .initial import InitialState
 from .inplane import InplaneProblem, InplaneRun, mode_load, run_inplane, uniform_load
 from .interface import CoulombFriction, PrakashClifton, SlipWeakeningFriction, slip_weakening_lengths
 from .inplane_kernels import inplane_kernel_integrals, inplane_stiffness, static_stiffness
@@ -47,4 +50,4 @@ __all__ = ["AntiplaneProblem", "AntiplaneRun", "Coulomb", "FreeSurface", "SlipWe
            "CoulombFriction", "InplaneProblem", "InplaneRun", "SlipWeakeningFriction", "mode_load", "run_inplane",
            "uniform_load", "inplane_kernel_integrals", "inplane_stiffness", "static_stiffness",
            "check_stable", "growing_roots", "PrakashClifton", "FLUTTER_ONSET", "flutter_growth", "flutter_roots",
-           "ill_posedness", "slip_weakening_lengths", "RateStateFriction"]
+           "ill_posedness", "slip_weakening_lengths", "RateStateFriction", "InitialState"]

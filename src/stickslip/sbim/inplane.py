@@ -44,6 +44,7 @@ from .antiplane import MAX_HISTORY, FreeSurface
 from .fields import PeriodicGrid, space_time
 from .flutter import ill_posedness
 from .history import History
+from .initial import InitialState
 from .interface import (LAWS, CoulombFriction, PrakashClifton, SlipWeakeningFriction, interface_step,
                         slip_weakening_lengths)
 from .scales import resolution_notes
@@ -97,7 +98,9 @@ class InplaneProblem(PeriodicGrid):
     """A half-space (``shear_modulus`` [Pa], ``shear_wave_speed`` [m/s], ``poisson``) whose surface,
     periodic over ``length`` [m] in ``elements``, slides in its plane on a rigid body under the ``law``
     and the ``load`` (a function of ``x`` [m] and ``t`` [s] giving the shear and normal tractions [Pa]:
-    `uniform_load`, `mode_load`); ``beta``, ``history_periods``: the scheme's (module docstring)."""
+    `uniform_load`, `mode_load`); ``beta``, ``history_periods``: the scheme's (module docstring);
+    ``initial``: the interface at ``t = 0`` and its past (`stickslip.sbim.initial.InitialState`; by
+    default at rest, nothing moved before)."""
 
     shear_modulus: float
     shear_wave_speed: float
@@ -108,6 +111,7 @@ class InplaneProblem(PeriodicGrid):
     law: object = field(default_factory=FreeSurface)
     beta: float = 0.3
     history_periods: float = 16.0
+    initial: InitialState | None = None
 
     def __post_init__(self):
         for name in ("shear_modulus", "shear_wave_speed", "poisson", "length", "elements", "history_periods"):
@@ -127,6 +131,15 @@ class InplaneProblem(PeriodicGrid):
         if not isinstance(self.law, LAWS):
             raise ParameterError("law", self.law, "FreeSurface(), CoulombFriction(...), SlipWeakeningFriction(...) "
                                  "or PrakashClifton(...)")
+        if self.initial is not None:
+            if not isinstance(self.initial, InitialState):
+                raise ParameterError("initial", self.initial, "None (at rest) or an InitialState")
+            if self.initial.slip.size != self.elements:
+                raise ParameterError("initial", f"{self.initial.slip.size} nodes", f"one per element "
+                                     f"({self.elements})", also=("elements",))
+            if not isinstance(self.law, FreeSurface) and np.any(self.initial.opening < 0.0):
+                raise ParameterError("opening", float(self.initial.opening.min()), ">= 0 on a rigid body (a gap, "
+                                     "or closed)")
 
     @property
     def eta(self) -> float:
@@ -179,7 +192,8 @@ def _loaded(load, x, t):
 
 
 def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=None, progress=None) -> InplaneRun:
-    """Run ``problem`` from rest for ``steps`` steps, storing every ``every``-th (and the last).
+    """Run ``problem`` from rest (or its ``initial`` state) for ``steps`` steps, storing every ``every``-th
+    (and the last).
 
     ``checkpoint``: an object with ``resume() -> state or None``, ``due(step) -> bool`` and
     ``save(state)`` (`stickslip.sbim.runfile.Checkpoint` keeps it in a file): the run starts from the
@@ -204,7 +218,8 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
                              also=("history_periods", "elements"))
     window = np.zeros(k.size, dtype=np.int64)
     window[1:] = np.ceil(p.history_periods * 2.0 * math.pi / (T1 * np.arange(1, k.size)))
-    count = np.minimum(steps, window)
+    pre = 0 if p.initial is None else int(window.max())  # steps of the past before t = 0
+    count = np.minimum(steps + pre, window)
     if int(count.sum()) > MAX_HISTORY // 2:
         raise ParameterError("steps", steps, f"a history of at most {MAX_HISTORY // 2} numbers per component "
                              f"({int(count.sum())} asked: fewer history_periods, elements or steps)",
@@ -233,11 +248,15 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
         pressure = state["pressure"].copy() if state["pressure"].size else None
         hx.buffer[:], hy.buffer[:] = state["hx"], state["hy"]
         out = {name: list(state["out_" + name]) for name in out}
+    elif p.initial is not None:
+        Ux, Uy = p.initial.slip.copy(), p.initial.opening.copy()
+        sliding = p.initial.fill(dt, pre, hx, hy)
     for step in range(start, steps + 1):
         t = step * dt
+        h = step + pre  # the histories' step
         ux, uy = np.fft.rfft(Ux), np.fft.rfft(Uy)
-        fx = muk * (hx.memory(step) - s11 * ux) + 1j * muk * (s12 * uy - hy.memory(step, w12))
-        fy = muk * (hy.memory(step) - s22 * uy) - 1j * muk * (s12 * ux - hx.memory(step, w12))
+        fx = muk * (hx.memory(h) - s11 * ux) + 1j * muk * (s12 * uy - hy.memory(h, w12))
+        fy = muk * (hy.memory(h) - s22 * uy) - 1j * muk * (s12 * ux - hx.memory(h, w12))
         Gx, Gy = _loaded(p.load, x, t)
         Gx, Gy = Gx + np.fft.irfft(fx, n), Gy + np.fft.irfft(fy, n)
         if not (np.all(np.isfinite(Gx)) and np.all(np.isfinite(Gy))):
@@ -251,8 +270,8 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
         Ux, Uy = Ux + dt * Vx, Uy + dt * Vy
         if not isinstance(p.law, FreeSurface):
             Uy = np.maximum(Uy, 0.0)  # closed to round-off
-        hx.push(step, np.fft.rfft(Vx))
-        hy.push(step, np.fft.rfft(Vy))
+        hx.push(h, np.fft.rfft(Vx))
+        hy.push(h, np.fft.rfft(Vy))
         if progress is not None and step % 64 == 0:
             progress(step, steps)
         if checkpoint is not None and checkpoint.due(step + 1):
