@@ -722,8 +722,8 @@ MUTANTS: list[dict] = [
        "    c = np.array([0.0, 0.0, 0.0])\n", "SBIM in-plane: the half residue at p = 0 left out of the folded "
        "Bromwich integral", [T + "sbim/test_inplane.py"]),
     _m("ip-coupling-sign", "src/stickslip/sbim/inplane.py",
-       "fx = muk * (hx.memory(step) - s11 * ux) + 1j * muk * (s12 * uy - hy.memory(step, w12))",
-       "fx = muk * (hx.memory(step) - s11 * ux) - 1j * muk * (s12 * uy - hy.memory(step, w12))",
+       "fx = muk * (hx.memory(h) - s11 * ux) + 1j * muk * (s12 * uy - hy.memory(h, w12))",
+       "fx = muk * (hx.memory(h) - s11 * ux) - 1j * muk * (s12 * uy - hy.memory(h, w12))",
        "SBIM in-plane run: the normal-to-shear coupling's sign turned", [T + "sbim/test_inplane.py"]),
     _m("ip-normal-radiation", "src/stickslip/sbim/inplane.py", "rad = (mu / cs, eta * mu / cs)",
        "rad = (mu / cs, mu / cs)", "SBIM in-plane: the normal radiation damping rho c_s instead of rho c_p",
