@@ -51,8 +51,9 @@ class InitialState:
         """The slip and opening rates at ``t < 0``, checked."""
         try:
             vx, vy = self.rates(t)
-        except (TypeError, ValueError) as err:
-            raise ParameterError("rates", "a past", f"a function of t giving two arrays of rates ({err})") from None
+        except Exception as err:  # a user's function: whatever it raises is said in one line
+            raise ParameterError("rates", "a past", f"a function of t giving two arrays of rates "
+                                 f"({type(err).__name__}: {err})") from None
         n = self.slip.size
         return _nodes("rates", vx, n), _nodes("rates", vy, n)
 

@@ -64,6 +64,11 @@ class WaveOnGrid:
         for name in ("shear_modulus", "shear_wave_speed", "elements", "periods"):
             object.__setattr__(self, name, Q.check(name, getattr(self, name)))
         object.__setattr__(self, "stick_length", Q.check("stick_length", self.stick_length))
+        most = Q["length"].range.hi
+        if self.length > most:
+            raise ParameterError("stick_length", self.stick_length, f"at most {most / (self.periods * self.wave.b):.4g} m "
+                                 f"here: the grid's period, periods x b x stick_length = {self.length:.4g} m, is at "
+                                 f"most {most:g} m", also=("periods",))
 
     @property
     def length(self) -> float:
