@@ -151,7 +151,10 @@ class AntiplaneProblem(PeriodicGrid):
 
 @dataclass(frozen=True, eq=False, repr=False)
 class AntiplaneRun(Result):
-    """Samples ``t`` [s] of the slip, slip rate and shear stress at each ``x`` [m] (``(samples, N)``)."""
+    """Samples ``t`` [s] of the slip, slip rate and shear stress at each ``x`` [m] (``(samples, N)``), and
+    at each sample, summed over the steps before it and the interface (per metre along z, J/m): the
+    loading's work on the slip rates ``load_work``, the interface's ``dissipation`` (its traction's) and
+    ``travel`` [m^2/m], the slip's path (`stickslip.sbim.energy.energy_book` keeps the books)."""
 
     problem: AntiplaneProblem
     t: np.ndarray
@@ -159,6 +162,9 @@ class AntiplaneRun(Result):
     slip_rate: np.ndarray
     shear_stress: np.ndarray
     kernel_truncation: float
+    load_work: np.ndarray | None = None
+    dissipation: np.ndarray | None = None
+    travel: np.ndarray | None = None
 
     def to_dict(self) -> dict:
         p = self.problem
@@ -199,16 +205,18 @@ def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1) -> Anti
     rsf = isinstance(law, RateStateFriction)
     if rsf:
         psi, log_v = law.initial_psi(n), np.full(n, math.log(law.slip_rate))
-    out_t, out_slip, out_rate, out_stress = [], [], [], []
+    out_t, out_slip, out_rate, out_stress, out_books = [], [], [], [], []
+    books = np.zeros(3)  # the loading's work, the interface's dissipation, the slip's path, over the steps so far
     for step in range(steps + 1):
         t = step * dt
         memory = history.memory(step)
         f = np.fft.irfft(mu * k * (memory - np.fft.rfft(slip)), n)
         try:
-            drive = np.broadcast_to(np.asarray(p.traction(x, t), dtype=float), x.shape) + f
+            load = np.broadcast_to(np.asarray(p.traction(x, t), dtype=float), x.shape)
         except (TypeError, ValueError) as err:
             raise ParameterError("traction", "a loading", f"a function of (x, t) giving the shear traction [Pa] at the "
                                  f"{n} nodes ({err})") from None
+        drive = load + f
         if not np.all(np.isfinite(drive)):
             raise ParameterError("traction", "a loading", f"finite tractions (not finite at t = {t:g} s)")
         if rsf:  # every node slides: its rate balances the strength, drive - (mu / c) V = sigma mu(V, psi)
@@ -227,11 +235,14 @@ def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1) -> Anti
             out_slip.append(slip.copy())
             out_rate.append(rate)
             out_stress.append(drive - (mu / c) * rate)
+            out_books.append(books.copy())
         if step == steps:
             break
+        books += dt * p.dx * np.array([load @ rate, (drive - (mu / c) * rate) @ rate, np.abs(rate).sum()])
         slip = slip + dt * rate
         if rsf:
             psi = advance_state(law.law, psi, log_v, dt)
         history.push(step, np.fft.rfft(rate))
+    books = np.array(out_books)
     return AntiplaneRun(p, np.array(out_t), np.array(out_slip), np.array(out_rate), np.array(out_stress),
-                        truncated_part(p.history_periods))
+                        truncated_part(p.history_periods), *books.T)

@@ -66,9 +66,10 @@ class WaveOnGrid:
         object.__setattr__(self, "stick_length", Q.check("stick_length", self.stick_length))
         most = Q["length"].range.hi
         if self.length > most:
-            raise ParameterError("stick_length", self.stick_length, f"at most {most / (self.periods * self.wave.b):.4g} m "
-                                 f"here: the grid's period, periods x b x stick_length = {self.length:.4g} m, is at "
-                                 f"most {most:g} m", also=("periods",))
+            top = most / (self.periods * self.wave.b)
+            raise ParameterError("stick_length", self.stick_length, f"at most {top:.4g} m here: the grid's period, "
+                                 f"periods x b x stick_length = {self.length:.4g} m, is at most {most:g} m",
+                                 also=("periods",))
 
     @property
     def length(self) -> float:
