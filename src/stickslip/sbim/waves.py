@@ -73,7 +73,7 @@ class WaveOnGrid:
 
     @property
     def length(self) -> float:
-        """The grid's period [m]: ``periods`` of the wave's."""
+        """The grid's period [m], ``periods`` of the wave's."""
         return self.periods * self.wave.b * self.stick_length
 
     @property
