@@ -25,6 +25,8 @@ shape. The method's name is the one geophysics and tribology use for it (QDYN, c
 - `interface`: the in-plane interface laws (contact, friction, Prakash and Clifton's regularisation);
 - `flutter`: the flutter instability of steady sliding (its dispersion relation and roots) and whether
   a run's law is well posed;
+- `fault`: earthquake cycles on a vertical strike-slip fault with a free surface, quasi-dynamic, rate
+  and state varying with depth (`stickslip.sbim.fault.StrikeSlipFault`, `run_fault`);
 - `energy`: an antiplane run's energy books (work, strain energy, dissipation, waves);
 - `initial`: an in-plane run's state at ``t = 0`` with a past (`InitialState`);
 - `waves`: the paper's stick-slip waves (section 4) on a grid, as such a state and as the exact fields
