@@ -10,6 +10,8 @@ conservation law.
   4.1e-4, 1.5e-4, 5.5e-5 on 200 to 1600).
 * The start: every node slides at the initial rate under the uniform traction (BP1's initial state,
   inverted from the regularised law here).
+* A run killed part-way (between two of its saves; during an event in the slow set) and resumed from
+  its file is the uninterrupted run to the last bit; a file of another run is refused.
 * Over whole cycles the fault keeps up with the plate: the slip between two events' starts, at every
   depth, is the plate rate times the interval (BP1's parameters, 200-m cells: slow set). Threshold 2 %,
   set before; asked first over the first two cycles (from 213 to 371 years) it failed (up to 11 % more
@@ -24,7 +26,8 @@ import pytest
 
 from stickslip.errors import ParameterError
 from stickslip.rsf import RateState
-from stickslip.sbim.fault import YEAR, StrikeSlipFault, run_fault
+from stickslip.sbim.fault import RUN_FORMAT, YEAR, StrikeSlipFault, fault_fields, run_fault
+from stickslip.sbim.runfile import Checkpoint
 
 MU, CS = 2670.0 * 3464.0**2, 3464.0
 LAW = RateState(0.010, 0.015, 0.008, f0=0.6, v_ref=1e-6, regularized=True)
@@ -73,6 +76,54 @@ def test_every_node_starts_at_the_initial_rate():
     Psi = LAW.f0 + LAW.b * psi
     strength = 50e6 * f.a * np.arcsinh(v / (2 * LAW.v_ref) * np.exp(Psi / f.a))
     assert np.allclose(strength + f.damping * v, tau0, rtol=1e-12)
+
+
+class _Killed(Exception):
+    pass
+
+
+class _SavesOnceThenDies(Checkpoint):
+    """A run file written once, at step ``at``; the run is killed at its next save."""
+
+    def __init__(self, *args, at, **kw):
+        super().__init__(*args, **kw)
+        self.at = at
+
+    def due(self, step):
+        return step == self.at
+
+    def save(self, state):
+        if self.writes:
+            raise _Killed
+        super().save(state)
+
+
+def _resumes_bit_for_bit(tmp_path, fault, t_end, at):
+    whole = run_fault(fault, t_end)
+    path = tmp_path / "fault.nc"
+    with pytest.raises(_Killed):
+        run_fault(fault, t_end, checkpoint=_SavesOnceThenDies(path, "key", fault_fields(fault), run_format=RUN_FORMAT,
+                                                               complex_names=(), at=at))
+    resumed = run_fault(fault, t_end, checkpoint=Checkpoint(path, "key", fault_fields(fault), run_format=RUN_FORMAT,
+                                                            complex_names=()))
+    for name in ("t", "max_slip_rate", "profile_t", "slip", "event_start", "event_end", "event_peak"):
+        np.testing.assert_array_equal(getattr(whole, name), getattr(resumed, name), err_msg=name)
+    with pytest.raises(ParameterError) as err:
+        run_fault(fault, t_end, checkpoint=Checkpoint(path, "another", fault_fields(fault), run_format=RUN_FORMAT))
+    assert err.value.name == "checkpoint" and "another run" in str(err.value)
+    return whole
+
+
+def test_a_killed_run_resumes_to_the_uninterrupted_one(tmp_path):
+    whole = _resumes_bit_for_bit(tmp_path, _bp1(1000.0), 40 * YEAR, at=20)
+    assert whole.t.size > 40
+
+
+@pytest.mark.slow
+def test_a_run_killed_during_an_event_resumes_to_the_uninterrupted_one(tmp_path):
+    whole = _resumes_bit_for_bit(tmp_path, _bp1(1000.0), 215 * YEAR, at=280)
+    saved = whole.t[280 - 1]  # the state after the step that made 280 records
+    assert whole.event_start.size and whole.event_start[0] < saved < whole.event_end[0]
 
 
 @pytest.mark.slow

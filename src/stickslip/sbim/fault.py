@@ -36,7 +36,7 @@ from ..results import Result
 from ..rsf import RateState
 from .ratestate import slip_rates
 
-__all__ = ["StrikeSlipFault", "FaultRun", "run_fault", "YEAR"]
+__all__ = ["StrikeSlipFault", "FaultRun", "run_fault", "partial_fault", "fault_fields", "YEAR", "RUN_FORMAT"]
 
 log = logging.getLogger("stickslip.sbim")
 
@@ -218,9 +218,15 @@ class FaultRun(Result):
 
 def run_fault(problem: StrikeSlipFault, t_end: float, interseismic_interval: float = 5 * YEAR,
               coseismic_interval: float = 1.0, event_rate: float = 1e-3, rtol: float = 1e-7,
-              max_steps: int = 1_000_000) -> FaultRun:
+              max_steps: int = 1_000_000, checkpoint=None) -> FaultRun:
     """Run ``problem`` for ``t_end`` [s] (module docstring); ``rtol``: RK45's relative tolerance; at most
-    ``max_steps`` steps (BP1 on 200-m cells takes about 20 a year, 4 ms each here)."""
+    ``max_steps`` steps (BP1 on 200-m cells takes about 20 a year, 4 ms each here).
+
+    ``checkpoint``: an object with ``resume() -> state or None``, ``due(step)`` and ``save(state)``
+    (`stickslip.sbim.runfile.Checkpoint` with ``run_format=RUN_FORMAT`` keeps it in a netCDF file,
+    `fault_fields` its root group): the run starts from the state it resumes (the integrator's step
+    and its last stage with it) and hands it the state whenever due and at the end. A resumed run is
+    the uninterrupted one, to the last bit."""
     from scipy.integrate import RK45
 
     if not isinstance(problem, StrikeSlipFault):
@@ -230,6 +236,9 @@ def run_fault(problem: StrikeSlipFault, t_end: float, interseismic_interval: flo
     co = Q.check("coseismic_interval", coseismic_interval)
     event_rate = Q.check("event_rate", event_rate)
     rtol, max_steps = Q.check("rtol", rtol), Q.check("max_steps", max_steps)
+    if checkpoint is not None and not all(callable(getattr(checkpoint, m, None)) for m in ("resume", "due", "save")):
+        raise ParameterError("checkpoint", checkpoint, "None or an object with resume(), due(step) and save(state) "
+                             "(stickslip.sbim.runfile.Checkpoint)")
     p, n = problem, problem.elements
     note = p.resolution()
     if note:
@@ -249,13 +258,21 @@ def run_fault(problem: StrikeSlipFault, t_end: float, interseismic_interval: flo
         last[0] = log_v
         return np.concatenate([np.exp(log_v) - vp, law.state_rate(log_v, y[None, n:])[0]])
 
-    y0 = np.concatenate([np.zeros(n), p.initial_psi()])
-    solver = RK45(rhs, 0.0, y0, t_end, rtol=rtol, atol=rtol * 1e-3)
-    ts, vmax, prof_t, prof = [0.0], [p.initial_rate], [0.0], [np.zeros(n)]
-    starts, ends, peaks = [], [], []
-    next_profile, in_event = inter, False
+    state = checkpoint.resume() if checkpoint is not None else None
+    if state is None:
+        solver = RK45(rhs, 0.0, np.concatenate([np.zeros(n), p.initial_psi()]), t_end, rtol=rtol, atol=rtol * 1e-3)
+        rec = {"ts": [0.0], "vmax": [p.initial_rate], "prof_t": [0.0], "prof": [np.zeros(n)], "starts": [],
+               "ends": [], "peaks": []}
+        next_profile, in_event = inter, False
+    else:  # the integrator as it was after the state's last step
+        solver = RK45(rhs, float(state["t"]), state["y"], t_end, rtol=rtol, atol=rtol * 1e-3)
+        solver.f, solver.h_abs, last[0] = state["f"], float(state["h_abs"]), state["last"]
+        rec = {name: list(state[name]) for name in RECORDS}
+        next_profile, in_event = float(state["next_profile"]), bool(state["in_event"])
+        if float(state["t"]) >= t_end:
+            solver.status = "finished"
     while solver.status == "running":
-        if len(ts) > max_steps:
+        if len(rec["ts"]) > max_steps:
             raise NoSolutionError(f"the fault's run took more than {max_steps} steps by t = {solver.t:.6g} s "
                                   "(max_steps)")
         solver.step()
@@ -263,24 +280,55 @@ def run_fault(problem: StrikeSlipFault, t_end: float, interseismic_interval: flo
             raise NoSolutionError(f"the fault's run stopped at t = {solver.t:.6g} s ({solver.status})")
         t, y = solver.t, solver.y
         v = float(np.exp(last[0].max()))  # RK45's last stage is at the step's end (first same as last)
-        ts.append(t)
-        vmax.append(v)
+        rec["ts"].append(t)
+        rec["vmax"].append(v)
         fast = v > event_rate
         if fast and not in_event:
-            starts.append(t)
-            peaks.append(v)
+            rec["starts"].append(t)
+            rec["peaks"].append(v)
         elif fast:
-            peaks[-1] = max(peaks[-1], v)
+            rec["peaks"][-1] = max(rec["peaks"][-1], v)
         elif in_event:
-            ends.append(t)
+            rec["ends"].append(t)
         in_event = fast
         if t >= next_profile or solver.status != "running":
-            prof_t.append(t)
-            prof.append(y[:n] + vp * t)
+            rec["prof_t"].append(t)
+            rec["prof"].append(y[:n] + vp * t)
             next_profile = t + (co if fast else inter)
         elif fast and next_profile - t > co:
             next_profile = t + co
-    if in_event:
-        ends.append(ts[-1])
-    return FaultRun(p, np.array(ts), np.array(vmax), np.array(prof_t), np.array(prof), np.array(starts),
-                    np.array(ends), np.array(peaks), event_rate)
+        if checkpoint is not None and (solver.status != "running" or checkpoint.due(len(rec["ts"]))):
+            checkpoint.save(_state(solver, last[0], rec, next_profile, in_event))
+    return partial_fault(p, _state(solver, last[0], rec, next_profile, in_event), event_rate)
+
+
+#: The records a fault's run keeps (and its checkpoint with them).
+RECORDS = ("ts", "vmax", "prof_t", "prof", "starts", "ends", "peaks")
+#: The format of a fault's run file (`stickslip.sbim.runfile.Checkpoint`'s ``run_format``).
+RUN_FORMAT = "stickslip-sbim-fault-1"
+
+
+def _state(solver, last, rec, next_profile, in_event) -> dict:
+    n = last.size
+    out = {name: np.array(rec[name], dtype=float) for name in RECORDS}
+    out["prof"] = out["prof"].reshape(-1, n)
+    return {"step": np.int64(len(rec["ts"]) - 1), "t": np.float64(solver.t), "y": solver.y, "f": solver.f,
+            "h_abs": np.float64(solver.h_abs), "last": last, "next_profile": np.float64(next_profile),
+            "in_event": np.int8(in_event), **out}
+
+
+def partial_fault(problem: StrikeSlipFault, state: dict, event_rate: float = 1e-3) -> FaultRun:
+    """The records of a fault's run ``state`` (its checkpoint's) as a run; an event still going ends at
+    the last step."""
+    ends = list(state["ends"])
+    if len(ends) < len(state["starts"]):
+        ends.append(float(state["ts"][-1]))
+    return FaultRun(problem, np.asarray(state["ts"]), np.asarray(state["vmax"]), np.asarray(state["prof_t"]),
+                    np.asarray(state["prof"]).reshape(-1, problem.elements), np.asarray(state["starts"]),
+                    np.array(ends, dtype=float), np.asarray(state["peaks"]), event_rate)
+
+
+def fault_fields(problem: StrikeSlipFault, event_rate: float = 1e-3):
+    """``fields(state)`` for a fault's `stickslip.sbim.runfile.Checkpoint`: the state's records as the
+    run's CF dataset."""
+    return lambda state: partial_fault(problem, state, event_rate).to_xarray()

@@ -1,5 +1,5 @@
-"""A long in-plane run kept in a netCDF file as it goes, and resumed from it (`run_inplane`'s
-``checkpoint``).
+"""A long run kept in a netCDF file as it goes, and resumed from it (`run_inplane`'s and
+`stickslip.sbim.fault.run_fault`'s ``checkpoint``).
 
 The file's root group holds the fields sampled so far as a CF dataset (readable at any time, in
 ParaView or xarray); its group ``checkpoint`` the run's whole state (displacements, which nodes
@@ -34,11 +34,15 @@ _COMPLEX = ("hx", "hy")
 class Checkpoint:
     """The run file at ``path`` for the run named ``key``; ``seconds`` between writes (0: every step;
     default `CHECKPOINT_SECONDS`);
-    ``fields(state)`` the CF dataset of the samples in a state (written to the root group)."""
+    ``fields(state)`` the CF dataset of the samples in a state (written to the root group);
+    ``run_format`` the kind of run the file holds (an in-plane run's by default, `RUN_FORMAT`) and
+    ``complex_names`` the state's complex arrays (stored as their real and imaginary parts)."""
 
-    def __init__(self, path, key: str, fields, seconds: float | None = None):
+    def __init__(self, path, key: str, fields, seconds: float | None = None, run_format: str = RUN_FORMAT,
+                 complex_names: tuple = _COMPLEX):
         self.path, self.key, self.fields = Path(path), str(key), fields
         self.seconds = float(CHECKPOINT_SECONDS if seconds is None else seconds)
+        self.run_format, self.complex_names = str(run_format), tuple(complex_names)
         self.last = time.monotonic()
         self.writes = 0
 
@@ -59,11 +63,11 @@ class Checkpoint:
                 state = {name: ds[name].values for name in ds.data_vars}
         except (OSError, ValueError, KeyError) as err:
             raise self._refused(f"this file is not a run's netCDF file: {type(err).__name__}") from None
-        if attrs.get("run_format") != RUN_FORMAT:
-            raise self._refused(f"its format is {attrs.get('run_format', 'none')!r}, not {RUN_FORMAT!r}")
+        if attrs.get("run_format") != self.run_format:
+            raise self._refused(f"its format is {attrs.get('run_format', 'none')!r}, not {self.run_format!r}")
         if attrs.get("run_key") != self.key:
             raise self._refused("it holds another run: other parameters, load, steps or sampling")
-        for name in _COMPLEX:
+        for name in self.complex_names:
             state[name] = state.pop(name + "_re") + 1j * state.pop(name + "_im")
         return state
 
@@ -74,13 +78,13 @@ class Checkpoint:
         """Write ``state`` (a new file moved over the old one)."""
         import xarray as xr
 
-        flat = {k: v for k, v in state.items() if k not in _COMPLEX}
-        for name in _COMPLEX:
+        flat = {k: v for k, v in state.items() if k not in self.complex_names}
+        for name in self.complex_names:
             flat[name + "_re"], flat[name + "_im"] = state[name].real, state[name].imag
         group = xr.Dataset({k: (tuple(f"{k}_{i}" for i in range(np.ndim(v))), np.asarray(v))
                             for k, v in flat.items()})
         root = for_file(self.fields(state))
-        root.attrs.update({"run_format": RUN_FORMAT, "run_key": self.key, "steps_done": int(state["step"])})
+        root.attrs.update({"run_format": self.run_format, "run_key": self.key, "steps_done": int(state["step"])})
         partial = self.path.with_name(f".{self.path.name}.{os.getpid()}.partial")
         try:
             to_netcdf(root, partial)
