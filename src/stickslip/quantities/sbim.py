@@ -100,7 +100,6 @@ SBIM = Domain("sbim", units="SI", quantities=[
     Q("event_end", "s", "end of an event"),
     Q("event_peak", "m/s", "largest slip rate of an event"),
     Q("recurrence_mean", "s", "mean interval between events' starts"),
-    Q("peak_slip_rate_events", "m/s", "largest slip rate of the events"),
     Q("load_work", "J/m", "the loading's work on the slip so far, per metre along z"),
     Q("static_energy", "J/m", "strain energy the slip would hold at rest, per metre along z"),
     Q("released_energy", "J/m", "energy released by the slip so far (load_work - static_energy), per metre along z"),

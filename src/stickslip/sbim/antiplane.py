@@ -230,15 +230,16 @@ def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1) -> Anti
             excess = np.abs(drive) - law.strength(slip, np.ones(n, bool))  # a moving one meets its sliding strength
             sliding = ~held & (excess > 0.0)
             rate = np.where(sliding, (c / mu) * np.sign(drive) * excess, 0.0)
+        stress = drive - (mu / c) * rate
         if step % every == 0 or step == steps:
             out_t.append(t)
             out_slip.append(slip.copy())
             out_rate.append(rate)
-            out_stress.append(drive - (mu / c) * rate)
+            out_stress.append(stress)
             out_books.append(books.copy())
         if step == steps:
             break
-        books += dt * p.dx * np.array([load @ rate, (drive - (mu / c) * rate) @ rate, np.abs(rate).sum()])
+        books += dt * p.dx * np.array([load @ rate, stress @ rate, np.abs(rate).sum()])
         slip = slip + dt * rate
         if rsf:
             psi = advance_state(law.law, psi, log_v, dt)

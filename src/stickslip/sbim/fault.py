@@ -23,6 +23,7 @@ faster than ``event_rate``, and each event's start, end and peak slip rate (`Fau
 
 from __future__ import annotations
 
+import functools
 import logging
 import math
 from dataclasses import dataclass
@@ -53,10 +54,6 @@ class _NodeLaw(RateState):
         object.__setattr__(self, "a", float(a.flat[0]))  # the scalar checks, then the profile
         super().__post_init__()
         object.__setattr__(self, "a", a)
-
-    def steady_tractions(self, v: float, normal_stress: float) -> np.ndarray:
-        mu, _, _ = self.friction(math.log(v), self.steady_psi(v))
-        return normal_stress * np.real(mu)
 
 
 @dataclass(frozen=True)
@@ -90,8 +87,8 @@ class StrikeSlipFault:
         object.__setattr__(self, "initial_rate", Q.check("initial_rate", rate))
         deep = 2.0 * self.depth if self.domain_depth is None else self.domain_depth
         deep = Q.check("domain_depth", deep)
-        if deep < self.depth * (1.0 + 1.0 / self.elements):
-            least = self.depth * (1 + 1 / self.elements)
+        least = self.depth * (1.0 + 1.0 / self.elements)
+        if deep < least:
             raise ParameterError("domain_depth", deep, f"at least depth + a cell ({least:g} m): below the "
                                  "rate-and-state part the fault creeps", also=("depth",))
         object.__setattr__(self, "domain_depth", deep)
@@ -147,23 +144,24 @@ class StrikeSlipFault:
     def damping(self) -> float:
         return self.shear_modulus / (2.0 * self.shear_wave_speed)
 
+    @functools.cached_property
+    def stiffness(self) -> np.ndarray:
+        """Each cosine mode's static stiffness ``mu k_m / 2`` [Pa/m] (``k_m = pi m / H``)."""
+        return 0.5 * self.shear_modulus * math.pi * np.arange(self.cells) / (self.cells * self.dz)
+
     def stress(self, deficit: np.ndarray) -> np.ndarray:
         """``-K[phi]`` [Pa] at the rate-and-state nodes from their slip deficit (zero below)."""
         from scipy.fft import dct, idct
 
         full = np.zeros(self.cells)
         full[:self.elements] = deficit
-        k = math.pi * np.arange(self.cells) / (self.cells * self.dz)
-        return idct(-0.5 * self.shear_modulus * k * dct(full, type=2, norm="ortho"), type=2,
-                    norm="ortho")[:self.elements]
+        return idct(-self.stiffness * dct(full, type=2, norm="ortho"), type=2, norm="ortho")[:self.elements]
 
     def initial_traction(self) -> float:
         """``tau_0`` [Pa]: steady sliding at ``initial_rate`` with ``a`` at its largest."""
-        a_max = float(np.max(self.a))
-        law = self.law
-        v = self.initial_rate
-        psi = (law.f0 + law.b * math.log(law.v_ref / v)) / a_max
-        return self.normal_stress * a_max * math.asinh(v / (2 * law.v_ref) * math.exp(psi)) + self.damping * v
+        law, v = self.law, self.initial_rate
+        widest = RateState(float(np.max(self.a)), law.b, law.dc, law.f0, law.v_ref, law.evolution, regularized=True)
+        return self.normal_stress * widest.steady_friction(v) + self.damping * v
 
     def initial_psi(self) -> np.ndarray:
         """Each node's ``psi = ln(V_0 theta / D_c)`` sliding at ``initial_rate`` under ``tau_0``."""
