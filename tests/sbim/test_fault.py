@@ -135,6 +135,8 @@ def test_over_whole_cycles_the_fault_keeps_up_with_the_plate():
     (lambda: StrikeSlipFault(MU, CS, 40e3, 200, LAW, 0.01, 50e6, 1e-9), "a_profile"),
     (lambda: StrikeSlipFault(MU, CS, 40e3, 200, LAW, lambda z: "a", 50e6, 1e-9), "a_profile"),
     (lambda: StrikeSlipFault(MU, CS, 40e3, 200, LAW, lambda z: np.full(z.size, 2.0), 50e6, 1e-9), "a"),
+    (lambda: StrikeSlipFault(MU, CS, 40e3, 200, LAW, lambda z: np.where(z < 20e3, 0.01, 2.0), 50e6, 1e-9), "a"),
+    (lambda: StrikeSlipFault(MU, CS, 40e3, 200, LAW, lambda z: np.where(z < 20e3, 0.01, -0.5), 50e6, 1e-9), "a"),
     (lambda: StrikeSlipFault(MU, CS, 40e3, 200, LAW, _a, 50e6, 1e-9, domain_depth=40e3), "domain_depth"),
     (lambda: StrikeSlipFault(MU, CS, 0.0, 200, LAW, _a, 50e6, 1e-9), "depth"),
     (lambda: StrikeSlipFault(MU, CS, 40e3, 200, RateState(0.01, 0.015, 0.008, evolution="prz"), _a, 50e6, 1e-9),

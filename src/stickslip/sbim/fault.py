@@ -32,6 +32,7 @@ from typing import Callable
 import numpy as np
 
 from ..errors import NoSolutionError, ParameterError
+from ..quantities import RSF
 from ..quantities.sbim import SBIM as Q
 from ..results import Result
 from ..rsf import RateState
@@ -50,7 +51,7 @@ class _NodeLaw(RateState):
     """A regularised `RateState` whose ``a`` is one number per node (the fault's profile)."""
 
     def __post_init__(self):
-        a = np.asarray(self.a, dtype=float)
+        a = RSF["a"].check_array(self.a)  # every node's a in the law's declared range
         object.__setattr__(self, "a", float(a.flat[0]))  # the scalar checks, then the profile
         super().__post_init__()
         object.__setattr__(self, "a", a)
