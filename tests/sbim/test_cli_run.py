@@ -55,6 +55,17 @@ def test_an_ill_posed_law_runs_and_says_so(tmp_path, capsys):
     assert code == 0 and json.loads(out)["well_posed"] is True and "ill-posed" not in err
 
 
+def test_two_materials_run_and_say_adams_instability(tmp_path, capsys):
+    lower = ["--lower-shear-modulus", "2e10", "--lower-shear-wave-speed", "2800", "--lower-poisson", "0.3"]
+    code, out, err = _call(["halfspace", "run", "--out", str(tmp_path / "r.nc"), "--json", *lower, *SMALL], capsys)
+    data = json.loads(out)
+    assert code == 0 and data["lower_shear_wave_speed"] == 2800.0 and "Adams" in data["ill_posedness"]
+    assert data["dt"] == pytest.approx(0.3 * 40e3 / 64 / 3464.0)  # the upper solid is the faster
+    assert all(math.isfinite(v) for v in data.values() if isinstance(v, float)) and "Adams" in err
+    with xr.open_dataset(tmp_path / "r.nc") as ds:
+        assert "another elastic half-space" in ds.attrs["title"] and ds.attrs["lower_poisson"] == 0.3
+
+
 KILLABLE = textwrap.dedent("""
     import sys
     import stickslip.sbim.runfile as runfile
@@ -99,7 +110,12 @@ def test_a_killed_run_resumes_to_the_uninterrupted_result_and_another_runs_file_
 
 @pytest.mark.parametrize("args, flag", [
     (["--elements", "3"], "--elements"),
-    (["--poisson", "0.495"], "poisson"),
+    (["--poisson", "0.495"], "--poisson"),
+    (["--lower-poisson", "0.3"], "--lower-shear-modulus"),
+    (["--lower-poisson", "0.495", "--lower-shear-modulus", "2e10", "--lower-shear-wave-speed", "3000"],
+     "--lower-poisson"),
+    (["--lower-poisson", "0.3", "--lower-shear-modulus", "2e10", "--lower-shear-wave-speed", "0"],
+     "--lower-shear-wave-speed"),
     (["--relaxation-slip", "1e-3"], "--relaxation-speed"),
     (["--patch-width", "1e6"], "--patch-width"),
     (["--kinetic-friction", "0.7"], "--kinetic-friction"),

@@ -120,11 +120,17 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
         history_periods: Annotated[float, _sb("history_periods", "--history-periods")] = 16.0,
         duration: Annotated[Optional[float], _sb("t_end", "--duration", "Default: 1.5 length / c_s.")] = None,
         every: Annotated[int, _sb("every", "--every")] = 10,
+        lower_shear_modulus: Annotated[Optional[float], _sb("lower_shear_modulus", "--lower-shear-modulus",
+                                                            "Of a second half-space below (with its two other "
+                                                            "--lower- options); default: a rigid body.")] = None,
+        lower_shear_wave_speed: Annotated[Optional[float], _sb("lower_shear_wave_speed", "--lower-shear-wave-speed")] = None,
+        lower_poisson: Annotated[Optional[float], _sb("lower_poisson", "--lower-poisson", "At most 0.49.")] = None,
         plot: Annotated[Optional[Path], typer.Option(help=FIGURE_HELP + " Slip rate and normal traction over x and "
                                                      "t.")] = None,
         overwrite: Overwrite = False, json: Json = False):
-    """A half-space sliding in its plane on a rigid body, in time (spectral boundary integral method):
-    uniform tractions with more shear on a patch; slip, opening, rates and tractions over x and t."""
+    """A half-space sliding in its plane on a rigid body (or on a second half-space: the --lower- options), in
+    time (spectral boundary integral method): uniform tractions with more shear on a patch; slip, opening,
+    rates and tractions over x and t."""
     import hashlib
     import json as json_module
 
@@ -134,6 +140,7 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
                         run_inplane)
     from ..sbim.inplane import partial_run, patch_load
     from ..sbim.runfile import Checkpoint
+    from ..sbim.surface import MAX_POISSON, Solid
     from ..cf import stamp
     from ..files import exclusive
     from .. import __version__
@@ -146,6 +153,17 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
         raise ParameterError(other, MISSING, f"given with {given} (Prakash-Clifton needs both)")
     if law is Law.free and relaxation_slip is not None:
         raise ParameterError("--relaxation-slip", relaxation_slip, "left out with --law free (no friction to regularise)")
+    lowers = {"--lower-shear-modulus": lower_shear_modulus, "--lower-shear-wave-speed": lower_shear_wave_speed,
+              "--lower-poisson": lower_poisson}
+    given = [flag for flag, value in lowers.items() if value is not None]
+    if given and len(given) < 3:
+        missing = next(flag for flag, value in lowers.items() if value is None)
+        raise ParameterError(missing, MISSING, f"given with {given[0]} (a lower half-space needs all three)")
+    for flag, value in (("--poisson", poisson), ("--lower-poisson", lower_poisson)):
+        if value is not None and value > MAX_POISSON:
+            raise ParameterError(flag, value, f"at most {MAX_POISSON} in-plane (the kernels' quadrature grows with "
+                                 "c_p / c_s)")
+    lower = Solid(lower_shear_modulus, lower_shear_wave_speed, lower_poisson) if given else None
     centre = length / 2 if patch_centre is None else patch_centre
     if centre > length or patch_width > length:
         bad = ("--patch-centre", centre) if centre > length else ("--patch-width", patch_width)
@@ -159,7 +177,7 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
         friction = PrakashClifton(friction, relaxation_slip, relaxation_speed)
     load = patch_load(traction, normal_traction, patch_traction, patch_width, centre)
     problem = InplaneProblem(shear_modulus, shear_wave_speed, poisson, length, elements, load, friction, beta=beta,
-                             history_periods=history_periods)
+                             history_periods=history_periods, lower=lower)
     t_end = 1.5 * length / shear_wave_speed if duration is None else duration
     if t_end / problem.dt > 1e9:
         raise ParameterError("--duration", t_end, f"at most {1e9 * problem.dt:.4g} s here (1e9 steps of {problem.dt:.3g} s)",
@@ -168,7 +186,8 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
     settings = {"version": __version__, "law": law.value, **{k: v for k, v in locals().items() if k in (
         "shear_modulus", "shear_wave_speed", "poisson", "length", "elements", "static_friction", "kinetic_friction",
         "weakening_slip", "relaxation_slip", "relaxation_speed", "traction", "normal_traction", "patch_traction",
-        "patch_width", "centre", "beta", "history_periods", "steps", "every")}}
+        "patch_width", "centre", "beta", "history_periods", "steps", "every", "lower_shear_modulus",
+        "lower_shear_wave_speed", "lower_poisson")}}
     key = hashlib.sha256(json_module.dumps(settings, sort_keys=True).encode()).hexdigest()
     with exclusive(out, "--out"):
         if overwrite and out.exists():

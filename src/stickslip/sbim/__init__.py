@@ -19,12 +19,15 @@ shape. The method's name is the one geophysics and tribology use for it (QDYN, c
 - `inplane_kernels`: the in-plane (modes I and II) stiffness of the surface and its kernels, by folding
   the Bromwich integral onto the branch cut (the module; its function of the same name is not
   re-exported here, where the name is the module's);
-- `inplane`: a half-space sliding in its plane on a rigid body with unilateral contact (separation and
-  closing) and Coulomb or slip-weakening friction, or its surface free (`run_inplane`);
+- `inplane`: a half-space sliding in its plane on a rigid body or on a second half-space of another
+  material, with unilateral contact (separation and closing) and Coulomb or slip-weakening friction,
+  or its surface free (`run_inplane`);
+- `surface`: one half-space's material (`Solid`) and its surface in a run (memory, tractions), the
+  upper one or the lower one reflected, and how two surfaces meet at the interface;
 - `stability`: each mode's recurrence and its roots; a run in which the scheme would grow is refused;
 - `interface`: the in-plane interface laws (contact, friction, Prakash and Clifton's regularisation);
-- `flutter`: the flutter instability of steady sliding (its dispersion relation and roots) and whether
-  a run's law is well posed;
+- `flutter`: the flutter instability of steady sliding on a rigid body and between two materials
+  (Adams'), their dispersion relations and roots, and whether a run's law is well posed;
 - `fault`: earthquake cycles on a vertical strike-slip fault with a free surface, quasi-dynamic, rate
   and state varying with depth (`stickslip.sbim.fault.StrikeSlipFault`, `run_fault`);
 - `energy`: an antiplane run's energy books (work, strain energy, dissipation, waves);
@@ -32,18 +35,20 @@ shape. The method's name is the one geophysics and tribology use for it (QDYN, c
 - `waves`: the paper's stick-slip waves (section 4) on a grid, as such a state and as the exact fields
   (`stickslip.sbim.waves.WaveOnGrid`, imported from its module: it loads the half-space's closed forms).
 
-Not yet: two half-spaces of different materials, rate-and-state in the fully dynamic in-plane mode.
+Not yet: rate-and-state in the fully dynamic in-plane mode.
 """
 
 from .antiplane import (AntiplaneProblem, AntiplaneRun, Coulomb, FreeSurface, SlipWeakening, mode_traction,
                         run_antiplane, uniform_traction)
-from .flutter import FLUTTER_ONSET, flutter_growth, flutter_roots, ill_posedness
+from .flutter import (FLUTTER_ONSET, bimaterial_ill_posedness, bimaterial_roots, flutter_growth, flutter_roots,
+                      ill_posedness)
 from .initial import InitialState
 from .inplane import InplaneProblem, InplaneRun, mode_load, run_inplane, uniform_load
 from .interface import CoulombFriction, PrakashClifton, SlipWeakeningFriction, slip_weakening_lengths
 from .inplane_kernels import inplane_kernel_integrals, inplane_stiffness, static_stiffness
 from .quasidynamic import QuasiDynamicProblem, QuasiDynamicRun, run_quasidynamic
 from .ratestate import RateStateFriction
+from .surface import Solid
 from .stability import check_stable, growing_roots
 from .kernels import antiplane_kernel, antiplane_kernel_integral, ragged_step_weights, step_weights, truncated_part
 
@@ -53,4 +58,5 @@ __all__ = ["AntiplaneProblem", "AntiplaneRun", "Coulomb", "FreeSurface", "SlipWe
            "CoulombFriction", "InplaneProblem", "InplaneRun", "SlipWeakeningFriction", "mode_load", "run_inplane",
            "uniform_load", "inplane_kernel_integrals", "inplane_stiffness", "static_stiffness",
            "check_stable", "growing_roots", "PrakashClifton", "FLUTTER_ONSET", "flutter_growth", "flutter_roots",
-           "ill_posedness", "slip_weakening_lengths", "RateStateFriction", "InitialState"]
+           "ill_posedness", "slip_weakening_lengths", "RateStateFriction", "InitialState", "Solid",
+           "bimaterial_roots", "bimaterial_ill_posedness"]

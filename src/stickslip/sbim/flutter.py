@@ -41,8 +41,10 @@ import numpy as np
 from ..errors import NoSolutionError, ParameterError
 from ..quantities.sbim import SBIM as Q
 from .inplane_kernels import inplane_stiffness, wave_speed_ratio
+from .surface import Solid
 
-__all__ = ["flutter_function", "flutter_roots", "flutter_growth", "ill_posedness", "FLUTTER_ONSET", "FLOOR"]
+__all__ = ["flutter_function", "flutter_roots", "flutter_growth", "ill_posedness", "bimaterial_flutter_function",
+           "bimaterial_roots", "bimaterial_ill_posedness", "FLUTTER_ONSET", "FLOOR"]
 
 log = logging.getLogger("stickslip.sbim")
 
@@ -116,6 +118,13 @@ def flutter_roots(friction: float, poisson: float, relaxation: float = 0.0) -> n
 
     eta = wave_speed_ratio(poisson)
     R = 4.0 + 2.0 * eta + 2.0 * friction * max(1.0, abs(2.0 - eta))
+    return _roots(F, R, f"the flutter equation at friction {friction:g}, poisson {poisson:g}, relaxation "
+                  f"{relaxation:g}")
+
+
+def _roots(F, R: float, what: str) -> np.ndarray:
+    """The roots of ``F`` with ``FLOOR < Re p < R``, ``|Im p| < R``: counted by the argument principle,
+    found from the minima of ``|F|`` on a grid by Newton's method; the two must agree."""
     count = _winding(F, R)
     if count == 0:
         return np.zeros(0, dtype=complex)
@@ -135,9 +144,8 @@ def flutter_roots(friction: float, poisson: float, relaxation: float = 0.0) -> n
         if len(found) == count:
             break
     if len(found) != count:
-        raise NoSolutionError(f"the flutter equation at friction {friction:g}, poisson {poisson:g}, relaxation "
-                              f"{relaxation:g} has {count} roots with a positive real part by the argument "
-                              f"principle but {len(found)} were found")
+        raise NoSolutionError(f"{what} has {count} roots with a positive real part by the argument principle but "
+                              f"{len(found)} were found")
     return np.array(sorted(found, key=lambda q: -q.real))
 
 
@@ -179,3 +187,59 @@ def ill_posedness(law, poisson: float) -> str:
             f"{float(poisson):g}): a perturbation of wavenumber k grows at {worst:.3g} k c_s, faster the finer "
             f"the grid, so the run does not converge as the grid is refined; regularise the pressure the "
             f"strength sees (PrakashClifton)")
+
+
+def bimaterial_flutter_function(p, friction: float, upper: Solid, lower: Solid, relaxation: float = 0.0):
+    """The determinant of steady sliding's perturbed conditions between two half-spaces, ``upper`` sliding
+    in ``+x`` on ``lower`` (module docstring, Two materials), at ``p = s / (k c_s+)`` with ``Re p > 0``,
+    divided by ``(1 + mu- / mu+)(1 + p)^2`` (no root added or lost)."""
+    p = np.asarray(p, dtype=complex)
+    S11u, S22u, S12u = inplane_stiffness(p, upper.poisson)
+    S11l, S22l, S12l = inplane_stiffness(p * (upper.shear_wave_speed / lower.shear_wave_speed), lower.poisson)
+    m = lower.shear_modulus / upper.shear_modulus
+    fe = friction / (1.0 + relaxation * p)
+    # rows: shear and normal tractions equal, shear following the pressure; columns: u+_x, u-_x, u_y
+    rows = ((-S11u, -m * S11l, 1j * (S12u - m * S12l)),
+            (-1j * S12u, 1j * m * S12l, -(S22u + m * S22l)),
+            (-S11u - 1j * fe * S12u, 0.0 * p, 1j * S12u - fe * S22u))
+    (a, b, c), (d, e, f), (g, h, i) = rows
+    det = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
+    return det / ((1.0 + m) * (1.0 + p) ** 2)
+
+
+def bimaterial_roots(friction: float, upper: Solid, lower: Solid, relaxation: float = 0.0) -> np.ndarray:
+    """The roots ``p = s / (k c_s+)`` with ``Re p > FLOOR`` of `bimaterial_flutter_function`, by the largest
+    real part first; empty when steady sliding of ``upper`` on ``lower`` is stable to every mode."""
+    friction, _, relaxation = _checked(friction, upper.poisson, relaxation)
+    for name, solid in (("upper", upper), ("lower", lower)):
+        if not isinstance(solid, Solid):
+            raise ParameterError(name, solid, "a Solid(shear_modulus, shear_wave_speed, poisson)")
+
+    def F(p):
+        return bimaterial_flutter_function(p, friction, upper, lower, relaxation)
+
+    ratio = upper.shear_wave_speed / lower.shear_wave_speed
+    R = 4.0 + 2.0 * max(upper.eta, lower.eta / ratio, 1.0 / ratio) + 2.0 * friction * max(
+        1.0, abs(2.0 - upper.eta), abs(2.0 - lower.eta))
+    return _roots(F, R, f"the flutter equation of two materials at friction {friction:g}, relaxation {relaxation:g}")
+
+
+def bimaterial_ill_posedness(law, upper: Solid, lower: Solid) -> str:
+    """As `ill_posedness`, for ``upper`` sliding on ``lower``: between two materials any coefficient may
+    flutter (Adams; Ranjith and Rice, 2001), so every coefficient the law can slide with is asked."""
+    if not hasattr(law, "sliding_coefficients"):
+        raise ParameterError("law", law, "a friction law of stickslip.sbim (CoulombFriction, ...)")
+    if getattr(law, "relaxation_slip", None) is not None:
+        return ""
+    worst, f = 0.0, 0.0
+    for c in law.sliding_coefficients():
+        if c > 0.0:
+            roots = bimaterial_roots(c, upper, lower)
+            if roots.size and roots[0].real > worst:
+                worst, f = roots[0].real, c
+    if not worst:
+        return ""
+    return (f"ill-posed: sliding with friction {f:g} between two materials flutters (Adams' instability): a "
+            f"perturbation of wavenumber k grows at {worst:.3g} k c_s of the upper solid, faster the finer the "
+            f"grid, so the run does not converge as the grid is refined; regularise the pressure the strength "
+            f"sees (PrakashClifton)")

@@ -42,21 +42,19 @@ from ..quantities.sbim import SBIM as Q
 from ..results import Result
 from .antiplane import MAX_HISTORY, FreeSurface
 from .fields import PeriodicGrid, space_time
-from .flutter import ill_posedness
-from .history import History
+from .flutter import bimaterial_ill_posedness, ill_posedness
 from .initial import InitialState
-from .interface import (LAWS, CoulombFriction, PrakashClifton, SlipWeakeningFriction, interface_step,
+from .interface import (LAWS, PrakashClifton, SlipWeakeningFriction, interface_step,
                         slip_weakening_lengths)
 from .scales import resolution_notes
 from .stability import check_stable
-from .inplane_kernels import inplane_step_weights, inplane_truncation, static_stiffness, wave_speed_ratio
+from .surface import MAX_POISSON, Solid, Surface, history_windows
+from .inplane_kernels import inplane_truncation, wave_speed_ratio
 
 #: Most dimensionless times in a run's kernel table (`stickslip.sbim.inplane_kernels.kernel_table`).
 MAX_TABLE = 1 << 24
 #: Most shear periods of history in-plane.
 MAX_PERIODS = 64.0
-#: Largest Poisson's ratio in-plane (c_p / c_s = 7.1).
-MAX_POISSON = 0.49
 
 log = logging.getLogger("stickslip.sbim")
 
@@ -100,7 +98,9 @@ class InplaneProblem(PeriodicGrid):
     and the ``load`` (a function of ``x`` [m] and ``t`` [s] giving the shear and normal tractions [Pa]:
     `uniform_load`, `mode_load`); ``beta``, ``history_periods``: the scheme's (module docstring);
     ``initial``: the interface at ``t = 0`` and its past (`stickslip.sbim.initial.InitialState`; by
-    default at rest, nothing moved before)."""
+    default at rest, nothing moved before); ``lower``: the half-space below the interface
+    (`stickslip.sbim.surface.Solid`; by default a rigid body). With two half-spaces the slip and opening
+    are the upper surface's displacement less the lower's and ``dt = beta dx / c_s`` of the faster."""
 
     shear_modulus: float
     shear_wave_speed: float
@@ -112,6 +112,7 @@ class InplaneProblem(PeriodicGrid):
     beta: float = 0.3
     history_periods: float = 16.0
     initial: InitialState | None = None
+    lower: Solid | None = None
 
     def __post_init__(self):
         for name in ("shear_modulus", "shear_wave_speed", "poisson", "length", "elements", "history_periods"):
@@ -131,7 +132,13 @@ class InplaneProblem(PeriodicGrid):
         if not isinstance(self.law, LAWS):
             raise ParameterError("law", self.law, "FreeSurface(), CoulombFriction(...), SlipWeakeningFriction(...) "
                                  "or PrakashClifton(...)")
+        if self.lower is not None and not isinstance(self.lower, Solid):
+            raise ParameterError("lower", self.lower, "None (a rigid body) or a Solid(shear_modulus, "
+                                 "shear_wave_speed, poisson)")
         if self.initial is not None:
+            if self.lower is not None:
+                raise ParameterError("initial", "an InitialState", "None with a lower half-space (a state with a "
+                                     "past is given for the upper surface on a rigid body)", also=("lower",))
             if not isinstance(self.initial, InitialState):
                 raise ParameterError("initial", self.initial, "None (at rest) or an InitialState")
             if self.initial.slip.size != self.elements:
@@ -145,6 +152,16 @@ class InplaneProblem(PeriodicGrid):
     def eta(self) -> float:
         """``c_p / c_s``."""
         return wave_speed_ratio(self.poisson)
+
+    @property
+    def upper(self) -> Solid:
+        """The half-space above the interface."""
+        return Solid(self.shear_modulus, self.shear_wave_speed, self.poisson)
+
+    @property
+    def dt(self) -> float:
+        fastest = max(self.shear_wave_speed, 0.0 if self.lower is None else self.lower.shear_wave_speed)
+        return self.beta * self.dx / fastest
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -170,11 +187,15 @@ class InplaneRun(Result):
                 "length": p.length, "elements": p.elements, "beta": p.beta, "dt": p.dt,
                 "history_periods": p.history_periods, "kernel_truncation": self.kernel_truncation,
                 "samples": len(self.t), "law": type(p.law).__name__, "well_posed": not self.ill_posed,
-                "ill_posedness": self.ill_posed}
+                "ill_posedness": self.ill_posed,
+                **({} if p.lower is None else {"lower_shear_modulus": p.lower.shear_modulus,
+                                               "lower_shear_wave_speed": p.lower.shear_wave_speed,
+                                               "lower_poisson": p.lower.poisson})}
 
     def to_xarray(self):
-        ds = space_time(self, self.FIELDS, "in-plane sliding of an elastic half-space on a rigid body (spectral "
-                        "boundary integral method)")
+        on = "a rigid body" if self.problem.lower is None else "another elastic half-space"
+        ds = space_time(self, self.FIELDS, f"in-plane sliding of an elastic half-space on {on} (spectral boundary "
+                        "integral method)")
         ds.attrs["well_posedness"] = self.ill_posed or "well posed"
         return ds
 
@@ -208,37 +229,37 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
     if progress is not None and not callable(progress):
         raise ParameterError("progress", progress, "a callable progress(done, total) or None")
     p = problem
-    n, mu, cs, dt, eta = p.elements, p.shear_modulus, p.shear_wave_speed, p.dt, p.eta
-    k = p.wavenumbers
-    T1 = 2.0 * math.pi * p.beta / n  # k_1 c_s dt
-    asked = p.history_periods * n / p.beta  # about the kernel table's length
-    if asked > MAX_TABLE:
-        raise ParameterError("beta", p.beta, f"a kernel table of at most {MAX_TABLE} times (history_periods x elements "
-                             f"/ beta = {asked:.3g}: a larger beta, fewer history_periods or elements)",
-                             also=("history_periods", "elements"))
-    window = np.zeros(k.size, dtype=np.int64)
-    window[1:] = np.ceil(p.history_periods * 2.0 * math.pi / (T1 * np.arange(1, k.size)))
-    pre = 0 if p.initial is None else int(window.max())  # steps of the past before t = 0
-    count = np.minimum(steps + pre, window)
-    if int(count.sum()) > MAX_HISTORY // 2:
+    n, dt, k = p.elements, p.dt, p.wavenumbers
+    solids = (p.upper,) if p.lower is None else (p.upper, p.lower)
+    windows = [history_windows(solid, k, dt, p.history_periods) for solid in solids]
+    for solid in solids:
+        beta = solid.shear_wave_speed * dt / p.dx  # the user's beta for the faster solid
+        asked = p.history_periods * n / beta  # about the kernel table's length
+        if asked > MAX_TABLE:
+            raise ParameterError("beta", p.beta, f"a kernel table of at most {MAX_TABLE} times (history_periods x "
+                                 f"elements / beta = {asked:.3g}: a larger beta, fewer history_periods or elements)",
+                                 also=("history_periods", "elements"))
+    pre = 0 if p.initial is None else int(windows[0].max())  # steps of the past before t = 0
+    kept = sum(int(np.minimum(steps + pre, w).sum()) for w in windows)
+    if kept > MAX_HISTORY // 2:
         raise ParameterError("steps", steps, f"a history of at most {MAX_HISTORY // 2} numbers per component "
-                             f"({int(count.sum())} asked: fewer history_periods, elements or steps)",
-                             also=("history_periods",))
-    check_stable("inplane", p.beta, n, p.history_periods, steps, p.poisson)
-    ill = "" if isinstance(p.law, (FreeSurface, PrakashClifton)) else ill_posedness(p.law, p.poisson)
+                             f"({kept} asked: fewer history_periods, elements or steps)", also=("history_periods",))
+    for solid in solids:
+        _stable(p, solid, steps)
+    ill = _ill_posedness(p)
     if ill:
         log.warning("%s", ill)
     for note in _resolution(p):
         log.warning("%s", note)
-    w11, w22, w12 = inplane_step_weights(p.poisson, T1, dt, count, window)
-    hx, hy = History(w11, count, steps), History(w22, count, steps)
-    s11, s22, s12 = static_stiffness(p.poisson)
-    muk = mu * k
+    top = Surface(solids[0], 1, k, dt, p.history_periods, steps, pre)
+    bottom = None if p.lower is None else Surface(p.lower, -1, k, dt, p.history_periods, steps, pre)
+    rad = top.impedance if bottom is None else tuple(a * b / (a + b) for a, b in zip(top.impedance,
+                                                                                      bottom.impedance))
     x = p.x
-    Ux, Uy = np.zeros(n), np.zeros(n)
+    Ux, Uy = np.zeros(n), np.zeros(n)  # the slip and the opening
+    Lx, Ly = np.zeros(n), np.zeros(n)  # the lower surface's displacement (none on a rigid body)
     sliding = np.zeros(n, bool)
     pressure = None
-    rad = (mu / cs, eta * mu / cs)
     out = {name: [] for name in ("t",) + InplaneRun.FIELDS}
     start = 0
     state = checkpoint.resume() if checkpoint is not None else None
@@ -246,19 +267,25 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
         start, Ux, Uy = int(state["step"]), state["Ux"].copy(), state["Uy"].copy()
         sliding = state["sliding"].astype(bool)
         pressure = state["pressure"].copy() if state["pressure"].size else None
-        hx.buffer[:], hy.buffer[:] = state["hx"], state["hy"]
+        top.hx.buffer[:], top.hy.buffer[:] = state["hx"], state["hy"]
+        if bottom is not None:
+            Lx, Ly = state["Lx"].copy(), state["Ly"].copy()
+            bottom.hx.buffer[:], bottom.hy.buffer[:] = state["lx"], state["ly"]
         out = {name: list(state["out_" + name]) for name in out}
     elif p.initial is not None:
         Ux, Uy = p.initial.slip.copy(), p.initial.opening.copy()
-        sliding = p.initial.fill(dt, pre, hx, hy)
+        sliding = p.initial.fill(dt, pre, top.hx, top.hy)
     for step in range(start, steps + 1):
         t = step * dt
         h = step + pre  # the histories' step
-        ux, uy = np.fft.rfft(Ux), np.fft.rfft(Uy)
-        fx = muk * (hx.memory(h) - s11 * ux) + 1j * muk * (s12 * uy - hy.memory(h, w12))
-        fy = muk * (hy.memory(h) - s22 * uy) - 1j * muk * (s12 * ux - hx.memory(h, w12))
-        Gx, Gy = _loaded(p.load, x, t)
-        Gx, Gy = Gx + np.fft.irfft(fx, n), Gy + np.fft.irfft(fy, n)
+        tau0, sigma0 = _loaded(p.load, x, t)
+        fx, fy = top.tractions(h, Ux + Lx, Uy + Ly)
+        Gx, Gy = tau0 + np.fft.irfft(fx, n), sigma0 + np.fft.irfft(fy, n)
+        if bottom is not None:
+            (zx, zy), (wx, wy) = top.impedance, bottom.impedance
+            bx, by = bottom.tractions(h, Lx, Ly)
+            Bx, By = tau0 + np.fft.irfft(bx, n), sigma0 + np.fft.irfft(by, n)
+            Gx, Gy = (wx * Gx + zx * Bx) / (zx + wx), (wy * Gy + zy * By) / (zy + wy)
         if not (np.all(np.isfinite(Gx)) and np.all(np.isfinite(Gy))):
             raise ParameterError("load", "a loading", f"finite tractions (not finite at t = {t:g} s)")
         Vx, Vy, sxy, syy, sliding, pressure = interface_step(p.law, Gx, Gy, Ux, Uy, sliding, pressure, dt, rad)
@@ -267,18 +294,49 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
                 out[name].append(value)
         if step == steps:
             break
+        if bottom is not None:  # each side's rate from the traction the law set
+            vx, vy = (sxy - Bx) / wx, (syy - By) / wy
+            Lx, Ly = Lx + dt * vx, Ly + dt * vy
+            bottom.push(h, vx, vy)
+            top.push(h, vx + Vx, vy + Vy)
+        else:
+            top.push(h, Vx, Vy)
         Ux, Uy = Ux + dt * Vx, Uy + dt * Vy
         if not isinstance(p.law, FreeSurface):
             Uy = np.maximum(Uy, 0.0)  # closed to round-off
-        hx.push(h, np.fft.rfft(Vx))
-        hy.push(h, np.fft.rfft(Vy))
         if progress is not None and step % 64 == 0:
             progress(step, steps)
         if checkpoint is not None and checkpoint.due(step + 1):
-            checkpoint.save(_state(step + 1, Ux, Uy, sliding, pressure, hx, hy, out))
+            checkpoint.save(_state(step + 1, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out))
     if checkpoint is not None and start <= steps:
-        checkpoint.save(_state(steps + 1, Ux, Uy, sliding, pressure, hx, hy, out))
-    return InplaneRun(p, *(np.array(out[name]) for name in out), inplane_truncation(p.poisson, p.history_periods), ill)
+        checkpoint.save(_state(steps + 1, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out))
+    return InplaneRun(p, *(np.array(out[name]) for name in out), _truncation(p), ill)
+
+
+def _truncation(p: InplaneProblem) -> float:
+    """The largest part of a kernel's integral the history leaves out, of either solid."""
+    return max(inplane_truncation(s.poisson, p.history_periods) for s in (p.upper, p.lower) if s is not None)
+
+
+def _stable(p: InplaneProblem, solid: Solid, steps: int) -> None:
+    """Refuse a run whose scheme would grow on ``solid``'s surface (`stickslip.sbim.stability`)."""
+    beta = solid.shear_wave_speed * p.dt / p.dx
+    try:
+        check_stable("inplane", beta, p.elements, p.history_periods, steps, solid.poisson)
+    except ParameterError as err:
+        if beta == p.beta:
+            raise
+        raise ParameterError("beta", p.beta, f"a stable explicit scheme on the lower half-space too (its own "
+                             f"c_s dt / dx = {beta:.3g}): {err}", also=("history_periods", "steps")) from None
+
+
+def _ill_posedness(p: InplaneProblem) -> str:
+    """Why the run's law is ill-posed on its pair of bodies, or ``""``."""
+    if isinstance(p.law, (FreeSurface, PrakashClifton)):
+        return ""
+    if p.lower is None:
+        return ill_posedness(p.law, p.poisson)
+    return bimaterial_ill_posedness(p.law, p.upper, p.lower)
 
 
 def _resolution(p: InplaneProblem) -> list[str]:
@@ -291,16 +349,19 @@ def _resolution(p: InplaneProblem) -> list[str]:
     return resolution_notes(half, zone, p.dx, p.length, "mu / (1 - nu)")
 
 
-def _state(step, Ux, Uy, sliding, pressure, hx, hy, out) -> dict:
-    """A run's whole state before ``step`` (``steps + 1``: done), for its checkpoint."""
+def _state(step, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out) -> dict:
+    """A run's whole state before ``step`` (``steps + 1``: done), for its checkpoint (a lower half-space's
+    displacement and histories only with one)."""
     n = Ux.size
     samples = {"out_" + name: np.array(v, dtype=float).reshape((len(v),) if name == "t" else (len(v), n))
                for name, v in out.items()}
+    lower = {} if bottom is None else {"Lx": Lx, "Ly": Ly, "lx": bottom.hx.buffer, "ly": bottom.hy.buffer}
     return {"step": np.int64(step), "Ux": Ux, "Uy": Uy, "sliding": sliding.astype(np.int8),
-            "pressure": np.zeros(0) if pressure is None else pressure, "hx": hx.buffer, "hy": hy.buffer, **samples}
+            "pressure": np.zeros(0) if pressure is None else pressure, "hx": top.hx.buffer, "hy": top.hy.buffer,
+            **lower, **samples}
 
 
 def partial_run(problem: InplaneProblem, state: dict, ill_posed: str = "") -> InplaneRun:
     """The samples of a checkpoint's ``state`` as a run (`stickslip.sbim.runfile`)."""
     return InplaneRun(problem, *(state["out_" + name] for name in ("t",) + InplaneRun.FIELDS),
-                      inplane_truncation(problem.poisson, problem.history_periods), ill_posed)
+                      _truncation(problem), ill_posed)

@@ -28,7 +28,7 @@ __all__ = ["Checkpoint", "RUN_FORMAT", "CHECKPOINT_SECONDS"]
 RUN_FORMAT = "stickslip-sbim-inplane-1"
 #: Wall time between two writes of a run's file [s].
 CHECKPOINT_SECONDS = 60.0
-_COMPLEX = ("hx", "hy")
+_COMPLEX = ("hx", "hy", "lx", "ly")  # the lower half-space's only with one
 
 
 class Checkpoint:
@@ -68,7 +68,8 @@ class Checkpoint:
         if attrs.get("run_key") != self.key:
             raise self._refused("it holds another run: other parameters, load, steps or sampling")
         for name in self.complex_names:
-            state[name] = state.pop(name + "_re") + 1j * state.pop(name + "_im")
+            if name + "_re" in state:
+                state[name] = state.pop(name + "_re") + 1j * state.pop(name + "_im")
         return state
 
     def due(self, step: int) -> bool:
@@ -80,7 +81,8 @@ class Checkpoint:
 
         flat = {k: v for k, v in state.items() if k not in self.complex_names}
         for name in self.complex_names:
-            flat[name + "_re"], flat[name + "_im"] = state[name].real, state[name].imag
+            if name in state:
+                flat[name + "_re"], flat[name + "_im"] = state[name].real, state[name].imag
         group = xr.Dataset({k: (tuple(f"{k}_{i}" for i in range(np.ndim(v))), np.asarray(v))
                             for k, v in flat.items()})
         root = for_file(self.fields(state))
