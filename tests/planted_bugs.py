@@ -721,12 +721,12 @@ MUTANTS: list[dict] = [
     _m("ip-cut-residue", "src/stickslip/sbim/inplane_kernels.py", "    c = np.array([s[0], s[1], 0.0])\n",
        "    c = np.array([0.0, 0.0, 0.0])\n", "SBIM in-plane: the half residue at p = 0 left out of the folded "
        "Bromwich integral", [T + "sbim/test_inplane.py"]),
-    _m("ip-coupling-sign", "src/stickslip/sbim/inplane.py",
-       "fx = muk * (hx.memory(h) - s11 * ux) + 1j * muk * (s12 * uy - hy.memory(h, w12))",
-       "fx = muk * (hx.memory(h) - s11 * ux) - 1j * muk * (s12 * uy - hy.memory(h, w12))",
+    _m("ip-coupling-sign", "src/stickslip/sbim/surface.py",
+       "fx = muk * (hx.memory(step) - self.s11 * ux) + 1j * muk * (self.s12 * uy - hy.memory(step, self.w12))",
+       "fx = muk * (hx.memory(step) - self.s11 * ux) - 1j * muk * (self.s12 * uy - hy.memory(step, self.w12))",
        "SBIM in-plane run: the normal-to-shear coupling's sign turned", [T + "sbim/test_inplane.py"]),
-    _m("ip-normal-radiation", "src/stickslip/sbim/inplane.py", "rad = (mu / cs, eta * mu / cs)",
-       "rad = (mu / cs, mu / cs)", "SBIM in-plane: the normal radiation damping rho c_s instead of rho c_p",
+    _m("ip-normal-radiation", "src/stickslip/sbim/surface.py", "return z, self.eta * z",
+       "return z, z", "SBIM in-plane: the normal radiation damping rho c_s instead of rho c_p",
        [T + "sbim/test_inplane.py"]),
     _m("ip-gap-overshoot", "src/stickslip/sbim/interface.py", "    Vy = np.maximum(Vy, -gap / dt)  # a gap closing within "
        "the step closes at its end\n", "", "SBIM in-plane: a closing gap not stopped at contact (the surface "
@@ -766,7 +766,7 @@ MUTANTS: list[dict] = [
        "    if ill:\n        log.warning(\"%s\", ill)\n", "",
        "an ill-posed in-plane run not saying so on the log", [T + "sbim/test_flutter.py"]),
     _m("runfile-history-lost", "src/stickslip/sbim/inplane.py",
-       "        hx.buffer[:], hy.buffer[:] = state[\"hx\"], state[\"hy\"]\n", "",
+       "        top.hx.buffer[:], top.hy.buffer[:] = state[\"hx\"], state[\"hy\"]\n", "",
        "a resumed in-plane run starting with its modes' history of rates empty",
        [T + "sbim/test_cli_run.py"]),
     _m("runfile-key-unchecked", "src/stickslip/sbim/runfile.py",
@@ -876,6 +876,10 @@ MUTANTS: list[dict] = [
        "fastest = max(self.shear_wave_speed, 0.0 if self.lower is None else self.lower.shear_wave_speed)",
        "fastest = self.shear_wave_speed", "two materials: the step from the upper solid's speed (a faster lower one "
        "unresolved)", [T + "sbim/test_bimaterial.py"]),
+    _m("bm-resume-lower-history-lost", "src/stickslip/sbim/inplane.py",
+       "            bottom.hx.buffer[:], bottom.hy.buffer[:] = state[\"lx\"], state[\"ly\"]\n", "",
+       "two materials: a resumed run's lower surface starting with its history empty",
+       [T + "sbim/test_bimaterial.py"]),
     _m("bm-flutter-coupling", "src/stickslip/sbim/flutter.py", "1j * (S12u - m * S12l)", "1j * (S12u + m * S12l)",
        "Adams' relation: the two surfaces' coupling added instead of set against each other",
        [T + "sbim/test_bimaterial.py"]),
