@@ -4,7 +4,7 @@ contradict the closed forms (each planted into the dataset)."""
 import numpy as np
 import pytest
 
-from stickslip.figures.beyond import flutter, rsf_slider, squeal
+from stickslip.figures.beyond import adams, flutter, rsf_slider, squeal
 
 
 @pytest.fixture(scope="module")
@@ -51,3 +51,15 @@ def test_the_flutter_checks_pass_and_catch_a_growth_off_the_relation_or_a_stalle
     stalled = data.copy(deep=True)
     stalled["difference"].loc[{"law": "Prakash-Clifton"}] = 1e-3  # the differences stop falling
     assert any("converges" in name for name in _failed(flutter.check(stalled)))
+
+
+@pytest.mark.slow
+def test_the_adams_checks_pass_and_catch_a_growth_off_the_relation_or_a_growing_identical_pair():
+    data = adams.compute(quick=True)
+    assert _failed(adams.check(data)) == []
+    wrong = data.copy(deep=True)
+    wrong["growth"] = wrong["growth"] * 1.02  # 2 % off the relation
+    assert any("relation's rate" in name for name in _failed(adams.check(wrong)))
+    grown = data.copy(deep=True)
+    grown["identical_growth"] = grown["identical_growth"] * 0 + 0.01
+    assert any("identical" in name for name in _failed(adams.check(grown)))
