@@ -70,6 +70,7 @@ BASE = {
     "halfspace direct": ["--T", "9.52e-4", "--v", "3.514e-3", "--v-star", "0.001"],
     "halfspace fields": ["--b", "11.358", "--c", "-0.7", "--v-star", "0.001", "--points", "101", "--out", "{tmp}/h.nc"],
     "halfspace run": ["--elements", "16", "--duration", "0.5", "--out", "{tmp}/hr.nc"],
+    "halfspace fault": ["--elements", "16", "--years", "1", "--out", "{tmp}/hf.nc"],
     "reproduce": ["--only", "fig2", "--out", "{tmp}/r"],
     "fem run": ["{config}", "--transits", "2", "--out", "{tmp}/g.nc"],
     "fem cea": ["{config}"],

@@ -880,6 +880,13 @@ MUTANTS: list[dict] = [
        "            bottom.hx.buffer[:], bottom.hy.buffer[:] = state[\"lx\"], state[\"ly\"]\n", "",
        "two materials: a resumed run's lower surface starting with its history empty",
        [T + "sbim/test_bimaterial.py"]),
+    _m("cli-fault-key-years", "src/stickslip/cli/fault.py", '''"years", "shear_modulus", "shear_wave_speed", "depth",''',
+       '''"shear_modulus", "shear_wave_speed", "depth",''', "halfspace fault: the run's key without its duration (a "
+       "run file of another duration resumed)", [T + "sbim/test_cli_fault.py"]),
+    _m("cli-fault-profile-flat", "src/stickslip/cli/fault.py",
+       "return np.clip(a + (deep_a - a) * (z - seismogenic_depth) / transition_width,",
+       "return np.clip(a + 0.0 * (z - seismogenic_depth) / transition_width,",
+       "halfspace fault: a uniform a (the deep value never reached)", [T + "sbim/test_cli_fault.py"]),
     _m("bm-flutter-coupling", "src/stickslip/sbim/flutter.py", "1j * (S12u - m * S12l)", "1j * (S12u + m * S12l)",
        "Adams' relation: the two surfaces' coupling added instead of set against each other",
        [T + "sbim/test_bimaterial.py"]),

@@ -495,6 +495,30 @@ def plot_interface_fields(ds, fig: Figure | None = None) -> Figure:
     return fig
 
 
+def plot_fault_cycles(ds, fig: Figure | None = None) -> Figure:
+    """A fault's run (`stickslip.sbim.fault.FaultRun.to_xarray()`): its largest slip rate over time, and
+    its slip profiles against depth, those during an event in orange."""
+    _dataset("ds", ds, "a fault's run (FaultRun.to_xarray())", ("max_slip_rate", "step_t", "slip", "profile_t",
+                                                                 "event_start", "event_end", "z"))
+    _figure("fig", fig)
+    fig = Figure(figsize=(9.0, 4.4)) if fig is None else fig
+    left, right = fig.subplots(1, 2)
+    year = 365.0 * 86400.0
+    left.semilogy(ds.step_t.values / year, ds.max_slip_rate.values, "k-", lw=0.8)
+    left.set_xlabel("t [years]")
+    left.set_ylabel("largest slip rate [m/s]")
+    starts, ends = ds.event_start.values, ds.event_end.values
+    for t, slip in zip(ds.profile_t.values, ds.slip.values):
+        during = bool(np.any((starts <= t) & (t <= ends)))
+        right.plot(slip, ds.z.values / 1e3, color="C1" if during else "C0", lw=0.5)
+    right.invert_yaxis()
+    right.set_xlabel("slip [m]")
+    right.set_ylabel("depth [km]")
+    right.set_title("profiles: locked (blue), during events (orange)", fontsize=9)
+    lay_out(fig)
+    return fig
+
+
 def plot_space_time(ds, names=("slip_rate", "normal_traction"), fig: Figure | None = None) -> Figure:
     """Fields of an interface run over ``x`` and ``t`` (an `stickslip.sbim` run's ``to_xarray()``), one
     image each, side by side."""

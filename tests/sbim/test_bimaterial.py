@@ -51,7 +51,8 @@ def _relation(p, f, m, c, nu1=NU, nu2=NU, kappa=0.0):
     fe = f / (1 + kappa * p)
     zero = 0 * p
     # upper: u_y = -a1 A - i B, sigma_xy = -2 i a1 A + (b1^2 + 1) B, sigma_yy = (l1 (a1^2 - 1) + 2 a1^2) A + 2 i b1 B
-    # lower: u_y = a2 C - i D, sigma_xy = m (2 i a2 C + (b2^2 + 1) D), sigma_yy = (l2 (a2^2 - 1) + 2 m a2^2) C - 2 i m b2 D
+    # lower: u_y = a2 C - i D, sigma_xy = m (2 i a2 C + (b2^2 + 1) D),
+    #        sigma_yy = (l2 (a2^2 - 1) + 2 m a2^2) C - 2 i m b2 D
     sxy_u, syy_u = (-2j * a1, b1**2 + 1), (l1 * (a1**2 - 1) + 2 * a1**2, 2j * b1)
     sxy_l, syy_l = (2j * m * a2, m * (b2**2 + 1)), (l2 * (a2**2 - 1) + 2 * m * a2**2, -2j * m * b2)
     rows = [(-a1, -1j + zero, -a2, 1j + zero),

@@ -13,6 +13,7 @@ import typer
 from ..errors import MISSING, ParameterError
 from ..quantities import HALFSPACE as Q
 from ..quantities import SBIM
+from .fault import fault
 from .helptext import Typer
 from .common import (FIGURE_HELP, FIGURE_SUFFIXES, Overwrite, Replace, command_line, declared, emit, output_path,
                      overwrite_needs, progress_bar, write_netcdf)
@@ -206,3 +207,6 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
         from .. import plotting
 
         plotting.save(plotting.plot_space_time(result.to_xarray()), plot)
+
+
+app.command(name="fault")(fault)

@@ -62,6 +62,7 @@ EXAMPLES = {
     "halfspace fields": "stickslip halfspace fields --b 11.358 --c -0.7 --v-star 0.001 --plot fig14.png "
                         "--out fields.nc",
     "halfspace run": "stickslip halfspace run --out run.nc --elements 256 --plot run.png --json",
+    "halfspace fault": "stickslip halfspace fault --out fault.nc --years 300 --plot fault.png --json",
     "fem steady": "stickslip fem steady examples/block_on_belt/block.toml --out steady.nc",
     "fem cea": "stickslip fem cea examples/pad_on_disc/pad.toml --sweep friction=0:0.8:41 --store sweep.zarr "
                "--plot map.png --json",

@@ -58,7 +58,7 @@ __all__ = ["Study", "read_study", "run_point", "command"]
 #: The model (vocabulary of units) of each command group.
 MODELS = {"oscillator": "oscillator", "brake": "brake", "halfspace": "halfspace", "fem": "fem"}
 #: Commands whose vocabulary is not their group's.
-COMMAND_MODELS = {("halfspace", "run"): "sbim"}
+COMMAND_MODELS = {("halfspace", "run"): "sbim", ("halfspace", "fault"): "sbim"}
 
 
 def model_of(words: tuple) -> str:
@@ -73,7 +73,7 @@ REPLICATE = "replicate"
 _CONFIG = "config:"  # the swept key is a number of the command's config
 _KEYS = {"command", "config", "outputs", "fixed", "axes", "title"}
 #: Commands that write their run as it goes (``--out``) and resume it: one checkpoint per point.
-RESUMABLE = {("brake", "integrate"), ("brake", "fem"), ("fem", "run"), ("halfspace", "run")}
+RESUMABLE = {("brake", "integrate"), ("brake", "fem"), ("fem", "run"), ("halfspace", "run"), ("halfspace", "fault")}
 
 
 class Study:

@@ -120,8 +120,8 @@ class StrikeSlipFault:
         zone = 9.0 * math.pi / 32.0 * self.shear_modulus * law.dc / (law.b * self.normal_stress)
         if self.dz <= zone / 2.0:
             return ""
-        return (f"a cell of {self.dz:.4g} m is longer than half the cohesive zone ({zone:.4g} m): the ruptures "
-                "are not resolved (their peak slip rates and recurrence depend on the grid)")
+        return (f"unresolved: a cell of {self.dz:.4g} m is longer than half the cohesive zone ({zone:.4g} m): the "
+                "ruptures are not resolved (their peak slip rates and recurrence depend on the grid)")
 
     @property
     def dz(self) -> float:
@@ -217,7 +217,7 @@ class FaultRun(Result):
 
 def run_fault(problem: StrikeSlipFault, t_end: float, interseismic_interval: float = 5 * YEAR,
               coseismic_interval: float = 1.0, event_rate: float = 1e-3, rtol: float = 1e-7,
-              max_steps: int = 1_000_000, checkpoint=None) -> FaultRun:
+              max_steps: int = 1_000_000, checkpoint=None, progress=None) -> FaultRun:
     """Run ``problem`` for ``t_end`` [s] (module docstring); ``rtol``: RK45's relative tolerance; at most
     ``max_steps`` steps (BP1 on 200-m cells takes about 20 a year, 4 ms each here).
 
@@ -225,7 +225,7 @@ def run_fault(problem: StrikeSlipFault, t_end: float, interseismic_interval: flo
     (`stickslip.sbim.runfile.Checkpoint` with ``run_format=RUN_FORMAT`` keeps it in a netCDF file,
     `fault_fields` its root group): the run starts from the state it resumes (the integrator's step
     and its last stage with it) and hands it the state whenever due and at the end. A resumed run is
-    the uninterrupted one, to the last bit."""
+    the uninterrupted one, to the last bit. ``progress(t, t_end)``: called every 100 steps."""
     from scipy.integrate import RK45
 
     if not isinstance(problem, StrikeSlipFault):
@@ -238,6 +238,9 @@ def run_fault(problem: StrikeSlipFault, t_end: float, interseismic_interval: flo
     if checkpoint is not None and not all(callable(getattr(checkpoint, m, None)) for m in ("resume", "due", "save")):
         raise ParameterError("checkpoint", checkpoint, "None or an object with resume(), due(step) and save(state) "
                              "(stickslip.sbim.runfile.Checkpoint)")
+    if progress is not None and not callable(progress):
+        raise ParameterError("progress", progress, "a callable progress(t, t_end) or None")
+    state = checkpoint.resume() if checkpoint is not None else None  # another run's file: refused before any note
     p, n = problem, problem.elements
     note = p.resolution()
     if note:
@@ -257,7 +260,6 @@ def run_fault(problem: StrikeSlipFault, t_end: float, interseismic_interval: flo
         last[0] = log_v
         return np.concatenate([np.exp(log_v) - vp, law.state_rate(log_v, y[None, n:])[0]])
 
-    state = checkpoint.resume() if checkpoint is not None else None
     if state is None:
         solver = RK45(rhs, 0.0, np.concatenate([np.zeros(n), p.initial_psi()]), t_end, rtol=rtol, atol=rtol * 1e-3)
         rec = {"ts": [0.0], "vmax": [p.initial_rate], "prof_t": [0.0], "prof": [np.zeros(n)], "starts": [],
@@ -298,6 +300,8 @@ def run_fault(problem: StrikeSlipFault, t_end: float, interseismic_interval: flo
             next_profile = t + co
         if checkpoint is not None and (solver.status != "running" or checkpoint.due(len(rec["ts"]))):
             checkpoint.save(_state(solver, last[0], rec, next_profile, in_event))
+        if progress is not None and len(rec["ts"]) % 100 == 0:
+            progress(t, t_end)
     return partial_fault(p, _state(solver, last[0], rec, next_profile, in_event), event_rate)
 
 
