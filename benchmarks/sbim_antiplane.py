@@ -11,6 +11,12 @@ The in-plane runs' cost a step is printed beside (two components, four convoluti
 history at beta = 0.3; the run's set-up, its kernel table and stability check, not timed).
 
     .venv/bin/python benchmarks/sbim_antiplane.py [--largest 14] [--steps 200]
+    .venv/bin/python benchmarks/sbim_antiplane.py --long   # N = 2^14 over 1e5 steps (issue 46), minutes
+
+``--long`` runs N = 2^14 elements over 10^5 steps, the history filling as it goes (mode 1 keeps 131,072
+steps: every mode's whole memory at the end), and prints its wall time against the direct convolution's
+projected from its own constant measured in the same run (N = 256, 100 steps: its cost a step grows with
+N^2 times the steps behind it, so N^2 steps^2 / 2 in all).
 """
 
 from __future__ import annotations
@@ -82,11 +88,32 @@ def inplane(N, steps):
     return (time.perf_counter() - t) / steps
 
 
+def long_run(N: int = 1 << 14, steps: int = 100_000) -> None:
+    """N elements over ``steps`` steps, timed whole, against the direct method's projection."""
+    n0, s0 = 256, 100
+    t_direct, _ = direct(n0, s0)
+    constant = 2.0 * t_direct * s0 / (n0**2 * s0**2)  # seconds per (element pair x lag)
+    problem = AntiplaneProblem(MU, C, L, N, pulse, FreeSurface(), beta=0.5, history_periods=4.0)
+    run_antiplane(problem, 2)  # compiled
+    t = time.perf_counter()
+    run = run_antiplane(problem, steps, every=steps // 10)
+    wall = time.perf_counter() - t
+    projected = constant * N**2 * steps**2 / 2.0
+    print(f"N = {N}, {steps} steps: {wall:.1f} s ({wall / steps:.3e} s/step), largest slip rate at the end "
+          f"{np.abs(run.slip_rate[-1]).max():.3g} m/s (finite: {bool(np.all(np.isfinite(run.slip_rate)))})")
+    print(f"direct convolution: {constant:.3e} s per element pair and lag (measured at N = {n0}, {s0} steps); "
+          f"projected for this run {projected:.3e} s; ratio direct / spectral {projected / wall:.3g}")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--largest", type=int, default=14, help="log2 of the largest N")
     parser.add_argument("--steps", type=int, default=200)
+    parser.add_argument("--long", action="store_true", help="N = 2^14 over 1e5 steps (minutes)")
     args = parser.parse_args()
+    if args.long:
+        long_run()
+        return
     print("N        s/step (spectral)   per N log2 N [ns]")
     costs = {}
     for p in range(8, args.largest + 1):

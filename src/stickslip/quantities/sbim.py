@@ -78,8 +78,8 @@ SBIM = Domain("sbim", units="SI", quantities=[
     Q("coseismic_interval", "s", "time between slip profiles kept during an event", "(0, 1e12]"),
     Q("max_steps", "1", "most steps of a fault's run", "[1, 1e9]", integer=True),
     Q("duration", "s", "duration of a fault's run", "(0, 3.2e13]", why="a million years of cycles"),
-    Q("years", "year", "duration of a fault's run in years (of 365 days)", "(0, 1e6]", why="a million years of "
-      "cycles"),
+    Q("years", "1", "number of years (of 365 days, 3.1536e7 s) a fault's run lasts", "(0, 1e6]",
+      why="a million years of cycles"),
     Q("seismogenic_depth", "m", "depth at which a starts rising from its velocity-weakening value", "[0, 1e7]",
       symbol="H"),
     Q("transition_width", "m", "depth over which a rises to its deep value", "[1e-3, 1e7]", symbol="h"),

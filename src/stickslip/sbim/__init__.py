@@ -35,7 +35,8 @@ shape. The method's name is the one geophysics and tribology use for it (QDYN, c
 - `waves`: the paper's stick-slip waves (section 4) on a grid, as such a state and as the exact fields
   (`stickslip.sbim.waves.WaveOnGrid`, imported from its module: it loads the half-space's closed forms).
 
-Not yet: rate-and-state in the fully dynamic in-plane mode.
+Rate-and-state friction runs fully dynamic antiplane and in-plane (on a rigid body, the contact held
+closed, the strength the contact pressure's); not yet between two materials.
 """
 
 from .antiplane import (AntiplaneProblem, AntiplaneRun, Coulomb, FreeSurface, SlipWeakening, mode_traction,

@@ -15,7 +15,9 @@ displacements and the rates before the step (explicit, as `stickslip.sbim.antipl
 
 **Laws** (`stickslip.sbim.interface`): `FreeSurface` (both tractions vanish); unilateral contact
 with the rigid body and `CoulombFriction` or `SlipWeakeningFriction`, their strength the coefficient
-times the contact pressure, or the pressure relaxed over a slip (`PrakashClifton`). Sliding at a
+times the contact pressure, or the pressure relaxed over a slip (`PrakashClifton`); rate-and-state
+friction (`stickslip.sbim.RateStateFriction`, on a rigid body: every node slides, the contact held
+closed, its strength the contact pressure times ``mu(V, psi)``; a node that would open stops the run). Sliding at a
 coefficient above 1 without that regularisation is ill-posed (`stickslip.sbim.flutter`): such a run
 goes on, says so on the ``stickslip.sbim`` log and keeps the statement in its result
 (``ill_posed``, the dataset's ``well_posedness``).
@@ -42,8 +44,9 @@ from ..quantities.sbim import SBIM as Q
 from ..results import Result
 from .antiplane import MAX_HISTORY, FreeSurface
 from .fields import PeriodicGrid, space_time
-from .flutter import bimaterial_ill_posedness, ill_posedness
+from .flutter import FLUTTER_ONSET, bimaterial_ill_posedness, ill_posedness
 from .initial import InitialState
+from .ratestate import RateStateFriction, advance_state, contact_step
 from .interface import (LAWS, PrakashClifton, SlipWeakeningFriction, interface_step,
                         slip_weakening_lengths)
 from .scales import resolution_notes
@@ -129,9 +132,11 @@ class InplaneProblem(PeriodicGrid):
         if not callable(self.load):
             raise ParameterError("load", self.load, "a function of (x [m], t [s]) giving the shear and normal "
                                  "tractions [Pa] (uniform_load, mode_load)")
-        if not isinstance(self.law, LAWS):
-            raise ParameterError("law", self.law, "FreeSurface(), CoulombFriction(...), SlipWeakeningFriction(...) "
-                                 "or PrakashClifton(...)")
+        if not isinstance(self.law, LAWS + (RateStateFriction,)):
+            raise ParameterError("law", self.law, "FreeSurface(), CoulombFriction(...), SlipWeakeningFriction(...), "
+                                 "PrakashClifton(...) or RateStateFriction(...)")
+        if isinstance(self.law, RateStateFriction):
+            self._check_rate_state()
         if self.lower is not None and not isinstance(self.lower, Solid):
             raise ParameterError("lower", self.lower, "None (a rigid body) or a Solid(shear_modulus, "
                                  "shear_wave_speed, poisson)")
@@ -147,6 +152,18 @@ class InplaneProblem(PeriodicGrid):
             if not isinstance(self.law, FreeSurface) and np.any(self.initial.opening < 0.0):
                 raise ParameterError("opening", float(self.initial.opening.min()), ">= 0 on a rigid body (a gap, "
                                      "or closed)")
+
+    def _check_rate_state(self):
+        """Rate-and-state in-plane: on a rigid body, from rest, its ``normal_stress`` the load's at ``t = 0``."""
+        if self.lower is not None or self.initial is not None:
+            raise ParameterError("law", "RateStateFriction(...)", "a law of a run on a rigid body from steady sliding "
+                                 "(between two materials its well-posedness needs the pressure's regularisation: "
+                                 "not built)", also=("lower", "initial"))
+        pressure = -_loaded(self.load, self.x, 0.0)[1]
+        if not np.allclose(pressure, self.law.normal_stress, rtol=1e-9, atol=0.0):
+            raise ParameterError("normal_stress", self.law.normal_stress, f"the load's compression at t = 0 "
+                                 f"({float(pressure.min()):.6g} to {float(pressure.max()):.6g} Pa, uniform): in-plane "
+                                 "the strength follows the contact pressure", also=("load",))
 
     @property
     def eta(self) -> float:
@@ -260,6 +277,9 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
     Lx, Ly = np.zeros(n), np.zeros(n)  # the lower surface's displacement (none on a rigid body)
     sliding = np.zeros(n, bool)
     pressure = None
+    rsf = isinstance(p.law, RateStateFriction)
+    psi = p.law.initial_psi(n) if rsf else np.zeros(0)
+    log_v = np.full(n, math.log(p.law.slip_rate)) if rsf else np.zeros(0)
     out = {name: [] for name in ("t",) + InplaneRun.FIELDS}
     start = 0
     state = checkpoint.resume() if checkpoint is not None else None
@@ -268,6 +288,8 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
         sliding = state["sliding"].astype(bool)
         pressure = state["pressure"].copy() if state["pressure"].size else None
         top.hx.buffer[:], top.hy.buffer[:] = state["hx"], state["hy"]
+        if rsf:
+            psi, log_v = state["psi"].copy(), state["log_v"].copy()
         if bottom is not None:
             Lx, Ly = state["Lx"].copy(), state["Ly"].copy()
             bottom.hx.buffer[:], bottom.hy.buffer[:] = state["lx"], state["ly"]
@@ -288,7 +310,10 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
             Gx, Gy = (wx * Gx + zx * Bx) / (zx + wx), (wy * Gy + zy * By) / (zy + wy)
         if not (np.all(np.isfinite(Gx)) and np.all(np.isfinite(Gy))):
             raise ParameterError("load", "a loading", f"finite tractions (not finite at t = {t:g} s)")
-        Vx, Vy, sxy, syy, sliding, pressure = interface_step(p.law, Gx, Gy, Ux, Uy, sliding, pressure, dt, rad)
+        if rsf:
+            Vx, Vy, sxy, syy, log_v = contact_step(p.law, Gx, Gy, psi, log_v, rad[0], t)
+        else:
+            Vx, Vy, sxy, syy, sliding, pressure = interface_step(p.law, Gx, Gy, Ux, Uy, sliding, pressure, dt, rad)
         if step % every == 0 or step == steps:
             for name, value in zip(out, (t, Ux.copy(), Uy.copy(), Vx, Vy, sxy, syy)):
                 out[name].append(value)
@@ -302,14 +327,16 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
         else:
             top.push(h, Vx, Vy)
         Ux, Uy = Ux + dt * Vx, Uy + dt * Vy
+        if rsf:
+            psi = advance_state(p.law.law, psi, log_v, dt)
         if not isinstance(p.law, FreeSurface):
             Uy = np.maximum(Uy, 0.0)  # closed to round-off
         if progress is not None and step % 64 == 0:
             progress(step, steps)
         if checkpoint is not None and checkpoint.due(step + 1):
-            checkpoint.save(_state(step + 1, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out))
+            checkpoint.save(_state(step + 1, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out, psi, log_v))
     if checkpoint is not None and start <= steps:
-        checkpoint.save(_state(steps + 1, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out))
+        checkpoint.save(_state(steps + 1, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out, psi, log_v))
     return InplaneRun(p, *(np.array(out[name]) for name in out), _truncation(p), ill)
 
 
@@ -331,7 +358,15 @@ def _stable(p: InplaneProblem, solid: Solid, steps: int) -> None:
 
 
 def _ill_posedness(p: InplaneProblem) -> str:
-    """Why the run's law is ill-posed on its pair of bodies, or ``""``."""
+    """Why the run's law is ill-posed on its pair of bodies, or ``""`` (rate-and-state on a rigid body: its
+    Coulomb part, the steady friction at the start, below the flutter onset, its direct effect damping only;
+    above it, said on the log as not assessed)."""
+    if isinstance(p.law, RateStateFriction):
+        f = float(p.law.law.steady_friction(p.law.slip_rate))
+        if f > FLUTTER_ONSET:
+            log.warning("well-posedness not assessed: rate-and-state sliding at a steady friction %.3g above %g",
+                        f, FLUTTER_ONSET)
+        return ""
     if isinstance(p.law, (FreeSurface, PrakashClifton)):
         return ""
     if p.lower is None:
@@ -349,13 +384,15 @@ def _resolution(p: InplaneProblem) -> list[str]:
     return resolution_notes(half, zone, p.dx, p.length, "mu / (1 - nu)")
 
 
-def _state(step, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out) -> dict:
+def _state(step, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out, psi, log_v) -> dict:
     """A run's whole state before ``step`` (``steps + 1``: done), for its checkpoint (a lower half-space's
     displacement and histories only with one)."""
     n = Ux.size
     samples = {"out_" + name: np.array(v, dtype=float).reshape((len(v),) if name == "t" else (len(v), n))
                for name, v in out.items()}
     lower = {} if bottom is None else {"Lx": Lx, "Ly": Ly, "lx": bottom.hx.buffer, "ly": bottom.hy.buffer}
+    if psi.size:  # rate-and-state: each node's state and slip rate
+        lower.update(psi=psi, log_v=log_v)
     return {"step": np.int64(step), "Ux": Ux, "Uy": Uy, "sliding": sliding.astype(np.int8),
             "pressure": np.zeros(0) if pressure is None else pressure, "hx": top.hx.buffer, "hy": top.hy.buffer,
             **lower, **samples}

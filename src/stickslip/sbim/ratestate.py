@@ -1,6 +1,8 @@
 """Rate-and-state friction at an interface's nodes: each node's slip rate from the stress that drives
 it, and its state over a step; shared by the quasi-dynamic runs (`stickslip.sbim.run_quasidynamic`)
-and the fully dynamic antiplane ones (`RateStateFriction` in `stickslip.sbim.run_antiplane`).
+and the fully dynamic antiplane and in-plane ones (`RateStateFriction` in `stickslip.sbim.run_antiplane`
+and `stickslip.sbim.run_inplane`; in-plane the strength is the contact pressure's, the contact held
+closed: `contact_step`).
 
 At a node driven by ``g`` (the load and the half-space's static and memory terms) with the radiation
 damping ``eta``, the slip rate balances the strength, ``g - eta V = sigma mu(V, psi)``: the left side
@@ -24,7 +26,8 @@ import numpy as np
 from ..errors import NoSolutionError, ParameterError
 from ..quantities.sbim import SBIM as Q
 
-__all__ = ["RateStateFriction", "slip_rates", "advance_state", "perturbed_psi", "NEWTON", "NEWTON_TOL"]
+__all__ = ["RateStateFriction", "slip_rates", "advance_state", "perturbed_psi", "contact_step", "NEWTON",
+           "NEWTON_TOL"]
 
 #: Newton iterations on ln V at most, and the tolerance on its step.
 NEWTON, NEWTON_TOL = 60, 1e-12
@@ -109,3 +112,20 @@ def perturbed_psi(law, slip_rate: float, n: int, perturbation) -> np.ndarray:
         raise ParameterError("psi_perturbation", f"<{type(perturbation).__name__} of shape {d.shape}>",
                              f"{n} finite numbers (one per element) or None")
     return psi + d
+
+
+def contact_step(law: RateStateFriction, Gx: np.ndarray, Gy: np.ndarray, psi: np.ndarray, log_v: np.ndarray,
+                 damping: float, t: float):
+    """One in-plane step of rate-and-state nodes in closed contact: ``(V_x, V_y, sigma_xy, sigma_yy, ln V)``
+    from the drives ``Gx``, ``Gy`` (the opening rate zero, so ``sigma_yy = Gy``), the strength the contact
+    pressure ``-Gy`` times ``mu(V, psi)``, ``damping`` the shear radiation damping. A node that would open
+    (``Gy >= 0``), or no slip rate balancing a drive, stops the run (`NoSolutionError`)."""
+    if np.any(Gy >= 0.0):
+        raise NoSolutionError(f"at t = {t:.6g} s a node would open (normal traction {float(Gy.max()):.3g} Pa): "
+                              "rate-and-state friction in-plane holds the contact closed")
+    try:
+        log_v = slip_rates(law.law, -Gy, damping, Gx, psi, log_v)
+    except NoSolutionError as err:
+        raise NoSolutionError(f"at t = {t:.6g} s: {err}") from None
+    V = np.exp(log_v)
+    return V, np.zeros_like(V), Gx - damping * V, Gy, log_v
