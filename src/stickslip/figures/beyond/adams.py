@@ -94,13 +94,15 @@ def plot(ds: xr.Dataset, fig: Figure | None = None) -> Figure:
     fig, (ax, bx) = plotting.new_figure(fig, ncols=2, size=(5.6, 4.4))
     for i, r in enumerate(ds.ratio.values):
         g = ds.relation_growth.sel(ratio=r).values
-        ax.loglog(ds.friction_fine, np.where(g > 0, g, np.nan), "k:" if r == 1.0 else "-", color=f"C{i}",
+        identical = r == 1.0
+        ax.loglog(ds.friction_fine, np.where(g > 0, g, np.nan), ":" if identical else "-",
+                  color="k" if identical else f"C{i}",
                   lw=1.6 if r == ds.attrs["measured_ratio"] else 0.8,
                   label=f"c_s-/c_s+ = {r:g}" + (" (none grows)" if r == 1.0 else ""))
     ax.loglog(ds.friction, ds.growth, "s", ms=7, mfc="none", color="k", label="measured (dt -> 0)")
     ax.set_xlabel("friction coefficient f [1]"), ax.set_ylabel("growth rate / (k c_s+) [1]")
     ax.set_title(f"two materials, same density, ν = {ds.attrs['poisson']:g}", fontsize=10)
-    ax.legend(fontsize=6.5, loc="upper left")
+    ax.legend(fontsize=7, loc="upper left")
     bx.plot(ds.beta, ds.growth_at_step.isel(friction=-1), "o-", label="measured at each step")
     bx.axhline(float(ds.relation_growth_at.isel(friction=-1)), color="k", lw=0.8, label="relation")
     bx.plot([0.0], [float(ds.growth.isel(friction=-1))], "s", mfc="none", label="extrapolated")
