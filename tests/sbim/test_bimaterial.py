@@ -238,3 +238,16 @@ def test_the_step_follows_the_faster_solid():
     fast = Solid(MU, 2 * C, NU)
     problem = InplaneProblem(MU, C, NU, L, 16, uniform_load(1.0, -1.0), lower=fast, beta=0.2)
     assert problem.dt == pytest.approx(0.2 * (L / 16) / (2 * C), rel=1e-15)
+
+
+@pytest.mark.parametrize("args, name", [((0.5, None, LOWER), "upper"), ((0.5, UPPER, "soft"), "lower"),
+                                        ((-1.0, UPPER, LOWER), "friction"), ((float("nan"), UPPER, LOWER), "friction"),
+                                        ((1e300, UPPER, LOWER), "friction")])
+def test_the_relation_refuses_bad_input_naming_it(args, name):
+    with pytest.raises(ParameterError) as err:
+        bimaterial_roots(*args)
+    assert err.value.name == name
+    if name != "friction":
+        with pytest.raises(ParameterError) as err:
+            bimaterial_ill_posedness(CoulombFriction(0.5, 0.5), *args[1:])
+        assert err.value.name == name

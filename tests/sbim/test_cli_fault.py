@@ -101,6 +101,7 @@ def test_a_killed_run_resumes_to_the_uninterrupted_result_and_another_runs_file_
     (["--domain-depth", "30e3"], "--domain-depth"),
     (["--plate-rate", "10"], "--plate-rate"),
     (["--transition-width", "0"], "--transition-width"),
+    (["--b", "0"], "--b"),
 ])
 def test_bad_options_are_one_line_naming_the_option(tmp_path, capsys, args, flag):
     code, out, err = _call(["halfspace", "fault", "--out", str(tmp_path / "f.nc"), *args], capsys)

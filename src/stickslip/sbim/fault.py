@@ -84,6 +84,9 @@ class StrikeSlipFault:
         if not isinstance(self.law, RateState) or self.law.states != 1 or self.law.evolution == "prz":
             raise ParameterError("law", self.law, "a stickslip.rsf.RateState with one state variable, the aging or "
                                  "the slip law")
+        if self.law.b <= 0.0:
+            raise ParameterError("b", self.law.b, "above 0 on a fault (its state must evolve: the initial state "
+                                 "divides by b)")
         rate = self.plate_rate if self.initial_rate is None else self.initial_rate
         object.__setattr__(self, "initial_rate", Q.check("initial_rate", rate))
         deep = 2.0 * self.depth if self.domain_depth is None else self.domain_depth

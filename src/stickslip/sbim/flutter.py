@@ -210,10 +210,10 @@ def bimaterial_flutter_function(p, friction: float, upper: Solid, lower: Solid, 
 def bimaterial_roots(friction: float, upper: Solid, lower: Solid, relaxation: float = 0.0) -> np.ndarray:
     """The roots ``p = s / (k c_s+)`` with ``Re p > FLOOR`` of `bimaterial_flutter_function`, by the largest
     real part first; empty when steady sliding of ``upper`` on ``lower`` is stable to every mode."""
-    friction, _, relaxation = _checked(friction, upper.poisson, relaxation)
     for name, solid in (("upper", upper), ("lower", lower)):
         if not isinstance(solid, Solid):
             raise ParameterError(name, solid, "a Solid(shear_modulus, shear_wave_speed, poisson)")
+    friction, _, relaxation = _checked(friction, upper.poisson, relaxation)
 
     def F(p):
         return bimaterial_flutter_function(p, friction, upper, lower, relaxation)
@@ -229,6 +229,9 @@ def bimaterial_ill_posedness(law, upper: Solid, lower: Solid) -> str:
     flutter (Adams; Ranjith and Rice, 2001), so every coefficient the law can slide with is asked."""
     if not hasattr(law, "sliding_coefficients"):
         raise ParameterError("law", law, "a friction law of stickslip.sbim (CoulombFriction, ...)")
+    for name, solid in (("upper", upper), ("lower", lower)):
+        if not isinstance(solid, Solid):
+            raise ParameterError(name, solid, "a Solid(shear_modulus, shear_wave_speed, poisson)")
     if getattr(law, "relaxation_slip", None) is not None:
         return ""
     worst, f = 0.0, 0.0
