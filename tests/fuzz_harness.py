@@ -501,7 +501,7 @@ def path_battery(log=None, timeout: float = 120.0):
 #: its progress shown; a map's workers only change how fast it goes): their options are tried
 #: with the values their declarations refuse only, which must be refused at once.
 LONG_BY_DESIGN = {"brake campaign", ("oscillator map", "--workers"), ("brake map", "--workers"),
-                  "halfspace fault"}  # earthquake cycles: minutes to hours at the ends of their ranges (1e6 years,
+                  ("fem map", "--workers"), "halfspace fault"}  # earthquake cycles: minutes to hours at the ends of their ranges (1e6 years,
 #                                     a = 1e-8, D_c = 1e-12 m, ...), resumable and with their progress shown
 #: Sizes whose upper end is a run the work budget allows (1e13 dof-steps, about 4 hours: 16 x 4096
 #: elements make a step a thousand times shorter; a branch of 1e5 waves, 190 s idle and past the
