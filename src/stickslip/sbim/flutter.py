@@ -175,12 +175,7 @@ def ill_posedness(law, poisson: float) -> str:
         raise ParameterError("law", law, "a friction law of stickslip.sbim (CoulombFriction, ...)")
     if getattr(law, "relaxation_slip", None) is not None:
         return ""
-    worst, f = 0.0, 0.0
-    for c in law.sliding_coefficients():
-        if c > FLUTTER_ONSET:
-            roots = flutter_roots(c, poisson)
-            if roots.size and roots[0].real > worst:
-                worst, f = roots[0].real, c
+    worst, f = _fastest(law, FLUTTER_ONSET, lambda c: flutter_roots(c, poisson))
     if not worst:
         return ""
     return (f"ill-posed: sliding with friction {f:g} > {FLUTTER_ONSET:g} on a rigid body flutters (nu = "
@@ -234,15 +229,22 @@ def bimaterial_ill_posedness(law, upper: Solid, lower: Solid) -> str:
             raise ParameterError(name, solid, "a Solid(shear_modulus, shear_wave_speed, poisson)")
     if getattr(law, "relaxation_slip", None) is not None:
         return ""
-    worst, f = 0.0, 0.0
-    for c in law.sliding_coefficients():
-        if c > 0.0:
-            roots = bimaterial_roots(c, upper, lower)
-            if roots.size and roots[0].real > worst:
-                worst, f = roots[0].real, c
+    worst, f = _fastest(law, 0.0, lambda c: bimaterial_roots(c, upper, lower))
     if not worst:
         return ""
     return (f"ill-posed: sliding with friction {f:g} between two materials flutters (Adams' instability): a "
             f"perturbation of wavenumber k grows at {worst:.3g} k c_s of the upper solid, faster the finer the "
             f"grid, so the run does not converge as the grid is refined; regularise the pressure the strength "
             f"sees (PrakashClifton)")
+
+
+def _fastest(law, onset: float, roots) -> tuple[float, float]:
+    """The largest growth ``Re p`` over the coefficients above ``onset`` the ``law`` can slide with, and
+    that coefficient (``(0, 0)``: none grows); ``roots(c)`` as `flutter_roots`."""
+    worst, f = 0.0, 0.0
+    for c in law.sliding_coefficients():
+        if c > onset:
+            found = roots(c)
+            if found.size and found[0].real > worst:
+                worst, f = found[0].real, c
+    return worst, f
