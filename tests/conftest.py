@@ -10,6 +10,9 @@
   ``deep`` (``make test-deep``, before an issue is resolved) ten times as many, drawn afresh
   each run (``--hypothesis-profile deep``). A test states its examples with
   `tests.budget.examples`, which scales them by the profile.
+* **Slow by measured time.** The tests listed in ``tests/slow_by_time.txt`` (each 2 s or more in an
+  idle fast run on the 2-core machine) are marked slow: ``make test`` stays under 4 minutes, CI runs
+  them with the slow set (`tests.slow_by_time` adds to the list from a run's junit file).
 """
 
 from __future__ import annotations
@@ -33,6 +36,15 @@ def pytest_configure(config):
         share = str(max(1, (os.cpu_count() or 1) // workers))
         for name in BLAS_THREADS:  # inherited by the workers, which start after this hook
             os.environ.setdefault(name, share)
+
+
+def pytest_collection_modifyitems(config, items):
+    from tests.slow_by_time import listed
+
+    slow = listed()
+    for item in items:
+        if item.nodeid in slow:
+            item.add_marker(pytest.mark.slow)
 
 
 @pytest.fixture(scope="session")
