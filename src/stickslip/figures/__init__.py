@@ -38,7 +38,8 @@ FIGURES = ("oscillator.fig2", "oscillator.fig3", "oscillator.bifurcation", "osci
            "brake.ring_regimes", "brake.initial_condition", "brake.regime_maps", "brake.fig7", "brake.fig8",
            "brake.fig9", "brake.fig10", "brake.fem_statistics", "brake.fem_geometry", "brake.fem_regimes",
            "halfspace.fig14", "halfspace.inverse_map",
-           "halfspace.direct_map", "beyond.rsf_slider", "beyond.squeal", "beyond.flutter", "beyond.adams")
+           "halfspace.direct_map", "beyond.rsf_slider", "beyond.squeal", "beyond.flutter", "beyond.adams",
+           "beyond.regimes")
 
 
 @dataclass(frozen=True)
