@@ -1,15 +1,18 @@
-"""The energy books of an antiplane run (`energy_book`): where the loading's work went.
+"""The energy books of an antiplane or in-plane run (`energy_book`): where the loading's work went.
 
 Per metre along z [J/m], summed over the interface and the steps before each sample (the rates held
 over each step, as the scheme holds them):
 
 - ``load_work``: the loading's work on the slip, ``int int tau_0 V dx dt`` (``tau_0`` the traction
-  with the surface held, `stickslip.sbim.antiplane`);
+  with the surface held, `stickslip.sbim.antiplane`); in-plane on the slip and the opening,
+  ``int int (tau_0 V_x + sigma_0 V_y) dx dt``;
 - ``static_energy``: the strain energy the slip would hold at rest, ``(1/2) int w K[w] dx`` with ``K`` the
-  static stiffness ``mu |k|`` mode by mode;
+  static stiffness ``mu |k|`` mode by mode; in-plane ``(1/2) int U . K[U] dx`` with the surface's static
+  stiffness matrix ``mu |k| [[S11, -i S12], [i S12, S22]]`` (`stickslip.sbim.inplane_kernels`);
 - ``released_energy = load_work - static_energy``: the energy the slip has released (for a constant loading
   ``int (tau_0 + tau_1) / 2 dw dx``, the seismologists' budget);
-- ``dissipation``: the interface's, ``int int tau V dx dt``; split into ``friction_energy``, the kinetic
+- ``dissipation``: the interface's, ``int int tau V dx dt`` (in-plane ``sigma_xy V_x + sigma_yy V_y``: the
+  normal traction does no work in contact, nor on an open node); split into ``friction_energy``, the kinetic
   strength times the slip's path, and ``fracture_energy``, the rest (slip-weakening: the strength above the
   kinetic one, ``(tau_s - tau_d) D_c / 2`` per unit area once weakened). Coulomb's dissipation is all
   friction; rate-and-state's split is not unique and is all counted as friction here;
@@ -19,7 +22,8 @@ over each step, as the scheme holds them):
 
 The books close by construction; what they say is checked against closed forms in the tests (a free
 surface's radiated energy from the frequency domain, a plane wave's flux, slip-weakening's fracture
-energy).
+energy; in-plane: the plane S and P waves' fluxes, a slowly loaded surface's work stored, half a suddenly
+loaded one's radiated). In-plane books are kept on a rigid body only (not between two materials).
 """
 
 from __future__ import annotations
@@ -31,6 +35,9 @@ import numpy as np
 from ..errors import ParameterError
 from ..results import Result
 from .antiplane import AntiplaneRun, Coulomb, SlipWeakening
+from .inplane import InplaneRun
+from .interface import CoulombFriction, PrakashClifton, SlipWeakeningFriction
+from .inplane_kernels import static_stiffness
 
 __all__ = ["EnergyBook", "energy_book"]
 
@@ -62,13 +69,17 @@ class EnergyBook(Result):
         from ..cf import finish
 
         ds = xr.Dataset({name: ("t", getattr(self, name)) for name in ENTRIES}, coords={"t": self.t})
-        return finish(ds, "energy books of an antiplane run (per metre along z)", "sbim")
+        return finish(ds, "energy books of a run of the spectral boundary integral method (per metre along z)",
+                      "sbim")
 
 
-def energy_book(run: AntiplaneRun) -> EnergyBook:
-    """The energy books of ``run`` at its samples (module docstring)."""
+def energy_book(run) -> EnergyBook:
+    """The energy books of ``run`` (an `AntiplaneRun`, or an `InplaneRun` on a rigid body) at its samples
+    (module docstring)."""
+    if isinstance(run, InplaneRun):
+        return _inplane_book(run)
     if not isinstance(run, AntiplaneRun) or run.load_work is None:
-        raise ParameterError("run", run, "an AntiplaneRun from run_antiplane")
+        raise ParameterError("run", run, "an AntiplaneRun from run_antiplane or an InplaneRun from run_inplane")
     p = run.problem
     k = p.wavenumbers
     n = p.elements
@@ -81,3 +92,22 @@ def energy_book(run: AntiplaneRun) -> EnergyBook:
     fracture = np.zeros_like(run.dissipation) if kinetic is None else run.dissipation - friction
     return EnergyBook(run.t, run.load_work, static, released, run.dissipation, friction, fracture,
                       released - run.dissipation)
+
+
+def _inplane_book(run: InplaneRun) -> EnergyBook:
+    p = run.problem
+    if p.lower is not None or run.load_work is None:
+        raise ParameterError("run", run, "an InplaneRun on a rigid body (the books between two materials are not "
+                             "kept)")
+    n, muk = p.elements, p.shear_modulus * p.wavenumbers
+    s11, s22, s12 = static_stiffness(p.poisson)
+    ux, uy = np.fft.rfft(run.slip, axis=1), np.fft.rfft(run.opening, axis=1)
+    kx = np.fft.irfft(muk * (s11 * ux - 1j * s12 * uy), n, axis=1)  # K[U], minus the static tractions
+    ky = np.fft.irfft(muk * (s22 * uy + 1j * s12 * ux), n, axis=1)
+    static = 0.5 * p.dx * np.sum(run.slip * kx + run.opening * ky, axis=1)
+    released = run.load_work - static
+    # rate-and-state's dissipation all friction, as antiplane; a free surface dissipates nothing
+    friction = run.friction_work if isinstance(p.law, (CoulombFriction, PrakashClifton, SlipWeakeningFriction)) \
+        else run.dissipation
+    return EnergyBook(run.t, run.load_work, static, released, run.dissipation, friction,
+                      run.dissipation - friction, released - run.dissipation)

@@ -47,7 +47,7 @@ from .fields import PeriodicGrid, space_time
 from .flutter import FLUTTER_ONSET, bimaterial_ill_posedness, ill_posedness
 from .initial import InitialState
 from .ratestate import RateStateFriction, advance_state, contact_step
-from .interface import (LAWS, PrakashClifton, SlipWeakeningFriction, interface_step,
+from .interface import (LAWS, CoulombFriction, PrakashClifton, SlipWeakeningFriction, interface_step,
                         slip_weakening_lengths)
 from .scales import resolution_notes
 from .stability import check_stable
@@ -183,7 +183,8 @@ class InplaneProblem(PeriodicGrid):
 
 @dataclass(frozen=True, eq=False, repr=False)
 class InplaneRun(Result):
-    """Samples ``t`` [s] of the slip, opening, their rates and the tractions at each ``x`` (``(samples, N)``)."""
+    """Samples ``t`` [s] of the slip, opening, their rates and the tractions at each ``x`` (``(samples, N)``),
+    and the books up to each (`BOOKS`, per metre along z; `stickslip.sbim.energy.energy_book`)."""
 
     problem: InplaneProblem
     t: np.ndarray
@@ -195,8 +196,14 @@ class InplaneRun(Result):
     normal_traction: np.ndarray
     kernel_truncation: float
     ill_posed: str = ""
+    load_work: np.ndarray | None = None
+    dissipation: np.ndarray | None = None
+    friction_work: np.ndarray | None = None
 
     FIELDS = ("slip", "opening", "slip_rate", "opening_rate", "shear_stress", "normal_traction")
+    #: The books a run keeps at each sample [J/m] (`stickslip.sbim.energy.energy_book`): the loading's work on
+    #: the slip and opening rates, the interface traction's, and the kinetic strength's on the slip rate.
+    BOOKS = ("load_work", "dissipation", "friction_work")
 
     def to_dict(self) -> dict:
         p = self.problem
@@ -281,6 +288,8 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
     psi = p.law.initial_psi(n) if rsf else np.zeros(0)
     log_v = np.full(n, math.log(p.law.slip_rate)) if rsf else np.zeros(0)
     out = {name: [] for name in ("t",) + InplaneRun.FIELDS}
+    books, out_books = np.zeros(3), []  # the loading's work, the interface's, the kinetic strength's so far
+    kinetic = _kinetic(p.law)
     start = 0
     state = checkpoint.resume() if checkpoint is not None else None
     if state is not None:
@@ -294,6 +303,7 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
             Lx, Ly = state["Lx"].copy(), state["Ly"].copy()
             bottom.hx.buffer[:], bottom.hy.buffer[:] = state["lx"], state["ly"]
         out = {name: list(state["out_" + name]) for name in out}
+        books, out_books = state["books"].copy(), list(state["out_books"])
     elif p.initial is not None:
         Ux, Uy = p.initial.slip.copy(), p.initial.opening.copy()
         sliding = p.initial.fill(dt, pre, top.hx, top.hy)
@@ -310,6 +320,7 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
             Gx, Gy = (wx * Gx + zx * Bx) / (zx + wx), (wy * Gy + zy * By) / (zy + wy)
         if not (np.all(np.isfinite(Gx)) and np.all(np.isfinite(Gy))):
             raise ParameterError("load", "a loading", f"finite tractions (not finite at t = {t:g} s)")
+        seen = pressure  # the pressure the strength sees this step (Prakash-Clifton's, before it relaxes)
         if rsf:
             Vx, Vy, sxy, syy, log_v = contact_step(p.law, Gx, Gy, psi, log_v, rad[0], t)
         else:
@@ -317,8 +328,13 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
         if step % every == 0 or step == steps:
             for name, value in zip(out, (t, Ux.copy(), Uy.copy(), Vx, Vy, sxy, syy)):
                 out[name].append(value)
+            out_books.append(books.copy())
         if step == steps:
             break
+        if seen is None or not isinstance(p.law, PrakashClifton):
+            seen = np.maximum(-syy, 0.0)
+        books += dt * p.dx * np.array([tau0 @ Vx + sigma0 @ Vy, sxy @ Vx + syy @ Vy,
+                                       0.0 if kinetic is None else kinetic * (seen @ np.abs(Vx))])
         if bottom is not None:  # each side's rate from the traction the law set
             vx, vy = (sxy - Bx) / wx, (syy - By) / wy
             Lx, Ly = Lx + dt * vx, Ly + dt * vy
@@ -334,10 +350,21 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
         if progress is not None and step % 64 == 0:
             progress(step, steps)
         if checkpoint is not None and checkpoint.due(step + 1):
-            checkpoint.save(_state(step + 1, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out, psi, log_v))
+            checkpoint.save(_state(step + 1, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out, psi, log_v,
+                                   books, out_books))
     if checkpoint is not None and start <= steps:
-        checkpoint.save(_state(steps + 1, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out, psi, log_v))
-    return InplaneRun(p, *(np.array(out[name]) for name in out), _truncation(p), ill)
+        checkpoint.save(_state(steps + 1, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out, psi, log_v, books,
+                               out_books))
+    return InplaneRun(p, *(np.array(out[name]) for name in out), _truncation(p), ill,
+                      *np.array(out_books).reshape(-1, 3).T)
+
+
+def _kinetic(law) -> float | None:
+    """The kinetic friction coefficient of a Coulomb or slip-weakening law (regularised or not), else None."""
+    law = law.friction if isinstance(law, PrakashClifton) else law
+    if isinstance(law, CoulombFriction):
+        return law.kinetic_friction
+    return law.kinetic_friction if isinstance(law, SlipWeakeningFriction) else None
 
 
 def _truncation(p: InplaneProblem) -> float:
@@ -384,7 +411,7 @@ def _resolution(p: InplaneProblem) -> list[str]:
     return resolution_notes(half, zone, p.dx, p.length, "mu / (1 - nu)")
 
 
-def _state(step, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out, psi, log_v) -> dict:
+def _state(step, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out, psi, log_v, books, out_books) -> dict:
     """A run's whole state before ``step`` (``steps + 1``: done), for its checkpoint (a lower half-space's
     displacement and histories only with one)."""
     n = Ux.size
@@ -395,10 +422,10 @@ def _state(step, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out, psi, log_v
         lower.update(psi=psi, log_v=log_v)
     return {"step": np.int64(step), "Ux": Ux, "Uy": Uy, "sliding": sliding.astype(np.int8),
             "pressure": np.zeros(0) if pressure is None else pressure, "hx": top.hx.buffer, "hy": top.hy.buffer,
-            **lower, **samples}
+            "books": books, "out_books": np.array(out_books, dtype=float).reshape(-1, 3), **lower, **samples}
 
 
 def partial_run(problem: InplaneProblem, state: dict, ill_posed: str = "") -> InplaneRun:
     """The samples of a checkpoint's ``state`` as a run (`stickslip.sbim.runfile`)."""
     return InplaneRun(problem, *(state["out_" + name] for name in ("t",) + InplaneRun.FIELDS),
-                      _truncation(problem), ill_posed)
+                      _truncation(problem), ill_posed, *np.asarray(state["out_books"]).reshape(-1, 3).T)

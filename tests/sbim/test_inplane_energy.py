@@ -1,0 +1,146 @@
+"""The energy books of in-plane runs on a rigid body (`stickslip.sbim.energy.energy_book`) against closed
+forms: the plane S and P waves' energy fluxes under uniform steps, steady Coulomb sliding's friction and
+radiation, slip-weakening's fracture energy, a slowly loaded surface storing the loading's work (and the
+static energy the equilibrium's half of load . U), a suddenly loaded frictionless contact radiating half
+of it as it settles; a killed run's books resume to the bit.
+
+Thresholds: the closed forms of uniform steps at round-off (the rates are the radiation limit's from the
+first step); the others set after a first look at the values, said at each."""
+
+import math
+
+import numpy as np
+import pytest
+
+from stickslip.errors import ParameterError
+from stickslip.sbim import (CoulombFriction, FreeSurface, InplaneProblem, SlipWeakeningFriction, Solid,
+                            run_inplane)
+from stickslip.sbim.energy import energy_book
+from stickslip.sbim.inplane import uniform_load
+from stickslip.sbim.runfile import Checkpoint
+
+MU, C, NU, L = 3e10, 3000.0, 0.25, 1.0
+ETA = math.sqrt(2 * (1 - NU) / (1 - 2 * NU))
+
+
+def _book(load, law, steps=200, every=50, elements=16, **kw):
+    run = run_inplane(InplaneProblem(MU, C, NU, L, elements, load, law, beta=0.25, **kw), steps, every=every)
+    return run, energy_book(run)
+
+
+def test_uniform_steps_radiate_the_plane_waves_flux():
+    # a free surface under a shear step moves at tau c_s / mu: the S wave carries (rho c_s) v^2 = tau^2 c_s / mu
+    run, b = _book(uniform_load(1e6, 0.0), FreeSurface())
+    assert b.wave_energy[-1] == pytest.approx(1e12 * C / MU * L * run.t[-1], rel=1e-12)
+    # under tension it opens at sigma c_s / (eta mu): the P wave carries sigma^2 c_s / (eta mu)
+    run, b = _book(uniform_load(0.0, 1e6), FreeSurface())
+    assert b.wave_energy[-1] == pytest.approx(1e12 * C / (ETA * MU) * L * run.t[-1], rel=1e-12)
+    assert np.all(b.static_energy == 0) and np.all(b.dissipation == 0)
+
+
+def test_steady_coulomb_sliding_dissipates_f_p_v_and_radiates_the_excess():
+    f, p, tau = 0.5, 1e6, 0.8e6
+    run, b = _book(uniform_load(tau, -p), CoulombFriction(0.6, f))
+    v, t = (tau - f * p) * C / MU, run.t[-1]
+    assert b.friction_energy[-1] == pytest.approx(f * p * v * L * t, rel=1e-12)
+    assert b.fracture_energy[-1] == pytest.approx(0.0, abs=1e-12 * b.friction_energy[-1])
+    assert b.wave_energy[-1] == pytest.approx((tau - f * p) ** 2 * C / MU * L * t, rel=1e-12)
+    assert b.load_work[-1] == pytest.approx(tau * v * L * t, rel=1e-12)
+
+
+def test_slip_weakening_leaves_its_fracture_energy_once_weakened():
+    """Uniform sliding weakens every node together: (f_s - f_d) p D_c / 2 per unit area, to the step's first
+    order (threshold 1 % and a fall to at most 0.6 when the step halves, set before; measured 0.42 % and
+    0.21 %; a first version of this test did not refine its step)."""
+    fs, fd, dc, p = 0.6, 0.4, 1e-4, 1e6
+    tau = 0.7e6  # above the static strength: sliding from the first step
+    errors = []
+    for beta in (0.25, 0.125):
+        problem = InplaneProblem(MU, C, NU, L, 4, uniform_load(tau, -p), SlipWeakeningFriction(fs, fd, dc),
+                                 beta=beta)
+        steps = int(0.02 / problem.dt)  # twice D_c over the first rate
+        run = run_inplane(problem, steps, every=steps)
+        assert run.slip[-1].min() > dc
+        errors.append(abs(energy_book(run).fracture_energy[-1] / ((fs - fd) * p * dc / 2 * L) - 1))
+    assert errors[0] < 0.01 and errors[1] < 0.6 * errors[0]
+
+
+def test_a_slowly_loaded_surface_stores_the_loadings_work():
+    """Shear and normal modes ramped smoothly over 20 periods: the static energy is half of load . U at the
+    end (5e-6; threshold 1e-4) and little is radiated (4e-4 of it; threshold 2e-3): the coupling S12 in the
+    static stiffness matters, both components moving."""
+    k = 2 * math.pi * 2 / L
+    period = 2 * math.pi / (k * C)
+
+    def ramp(t):
+        r = min(max(t / (20 * period), 0.0), 1.0)
+        return r * r * (3 - 2 * r)
+
+    def load(x, t):
+        return 1e5 * np.cos(k * x) * ramp(t), 2e5 * np.sin(k * x + 0.3) * ramp(t)
+
+    problem = InplaneProblem(MU, C, NU, L, 16, load, FreeSurface(), beta=0.25)
+    run = run_inplane(problem, int(30 * period / problem.dt), every=20)
+    b = energy_book(run)
+    tx, ty = load(problem.x, run.t[-1])
+    half = 0.5 * problem.dx * np.sum(tx * run.slip[-1] + ty * run.opening[-1])
+    assert np.abs(run.opening[-1]).max() > 0.5 * np.abs(run.slip[-1]).max()  # both components move
+    assert b.static_energy[-1] == pytest.approx(half, rel=1e-4)
+    assert abs(b.wave_energy[-1]) < 2e-3 * b.static_energy[-1]
+
+
+def test_a_suddenly_loaded_frictionless_contact_radiates_half_the_work_as_it_settles():
+    """A shear mode applied at once on a frictionless contact (no surface wave there): at rest the loading
+    has done twice the static energy, the rest radiated (0.1 to 0.2 % from 30 periods to 40; threshold 1 %,
+    set after that look; 5 % off at 5 periods, still ringing)."""
+    k = 2 * math.pi * 2 / L
+    period = 2 * math.pi / (k * C)
+
+    def load(x, t):
+        return 1e5 * np.cos(k * x), np.full(x.shape, -1e6)
+
+    problem = InplaneProblem(MU, C, NU, L, 16, load, CoulombFriction(0.0, 0.0), beta=0.25)
+    run = run_inplane(problem, int(40 * period / problem.dt), every=20)
+    b = energy_book(run)
+    late = run.t > 30 * period
+    assert np.all(run.opening == 0)
+    assert np.max(np.abs(b.wave_energy[late] / b.static_energy[late] - 1)) < 0.01
+    assert np.max(np.abs(b.load_work[late] / b.static_energy[late] - 2)) < 0.02
+
+
+def test_a_killed_runs_books_resume_to_the_bit(tmp_path):
+    from stickslip.sbim.inplane import partial_run
+
+    def problem():
+        return InplaneProblem(MU, C, NU, L, 16, uniform_load(0.7e6, -1e6), SlipWeakeningFriction(0.6, 0.4, 1e-6),
+                              beta=0.25)
+
+    whole = run_inplane(problem(), 120, every=10)
+
+    class Killed(Exception):
+        pass
+
+    path = tmp_path / "run.nc"
+    first = Checkpoint(path, "k", lambda state: partial_run(problem(), state).to_xarray(), seconds=0.0)
+    save = first.save
+
+    def dying(state):
+        save(state)
+        if int(state["step"]) == 57:
+            raise Killed
+
+    first.save = dying
+    with pytest.raises(Killed):
+        run_inplane(problem(), 120, every=10, checkpoint=first)
+    resumed = run_inplane(problem(), 120, every=10,
+                          checkpoint=Checkpoint(path, "k", lambda s: partial_run(problem(), s).to_xarray()))
+    for name in whole.BOOKS:
+        assert np.array_equal(getattr(resumed, name), getattr(whole, name)), name
+    assert whole.dissipation[-1] > 0
+
+
+def test_the_books_between_two_materials_are_refused_naming_run():
+    run = run_inplane(InplaneProblem(MU, C, NU, L, 16, uniform_load(1e5, -1e6), CoulombFriction(0.3, 0.2),
+                                     lower=Solid(MU, 0.9 * C, NU)), 10)
+    with pytest.raises(ParameterError, match="run"):
+        energy_book(run)
