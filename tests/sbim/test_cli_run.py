@@ -33,6 +33,9 @@ def test_a_run_writes_its_fields_and_prints_finite_numbers(tmp_path, capsys):
     assert data["well_posed"] is True and data["ill_posedness"] == ""
     assert all(math.isfinite(v) for v in data.values() if isinstance(v, float))
     assert data["t_end"] == pytest.approx(3.0, rel=0.01) and png.stat().st_size > 10_000
+    # the energy books at the end (stickslip.sbim.energy): the patch's slip released energy, some of it radiated
+    assert data["released_energy"] == pytest.approx(data["load_work"] - data["static_energy"], rel=1e-12)
+    assert 0 < data["wave_energy"] < data["released_energy"] and data["fracture_energy"] > 0  # slip-weakening
     with xr.open_dataset(nc) as ds:
         assert ds.slip_rate.shape == (data["samples"], 64) and ds.attrs["Conventions"].startswith("CF")
         assert ds.slip_rate.attrs["units"] == "m/s" and ds.attrs["well_posedness"] == "well posed"
