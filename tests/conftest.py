@@ -42,6 +42,13 @@ def pytest_collection_modifyitems(config, items):
     from tests.slow_by_time import listed
 
     slow = listed()
+    if not any("::" in str(arg) for arg in config.args):  # whole files collected: every listed id of them is there
+        files = {item.nodeid.split("::")[0] for item in items}
+        stale = sorted(node for node in slow if node.split("::")[0] in files) if files else []
+        stale = [node for node in stale if node not in {item.nodeid for item in items}]
+        if stale:
+            raise pytest.UsageError(f"tests/slow_by_time.txt lists tests not collected (renamed, or a parameter "
+                                    f"changed): {stale[:5]}; correct the list")
     for item in items:
         if item.nodeid in slow:
             item.add_marker(pytest.mark.slow)

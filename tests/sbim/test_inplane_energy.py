@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 from stickslip.errors import ParameterError
+from stickslip.halfspace import decaying_wave
 from stickslip.sbim import (CoulombFriction, FreeSurface, InplaneProblem, SlipWeakeningFriction, Solid,
                             run_inplane)
 from stickslip.sbim.energy import energy_book
@@ -143,4 +144,28 @@ def test_the_books_between_two_materials_are_refused_naming_run():
     run = run_inplane(InplaneProblem(MU, C, NU, L, 16, uniform_load(1e5, -1e6), CoulombFriction(0.3, 0.2),
                                      lower=Solid(MU, 0.9 * C, NU)), 10)
     with pytest.raises(ParameterError, match="run"):
+        energy_book(run)
+
+
+def test_gaps_closed_within_a_step_are_booked_as_contact_energy_and_coulomb_leaves_no_fracture_energy():
+    """Steady sliding perturbed until it opens and lands again (f = 2, Coulomb, an overstress of 10): the
+    normal traction works only on the gaps the scheme closes within a step (impacts), which dissipate;
+    a Coulomb law with one coefficient has no fracture energy (found by a review: the impacts were booked
+    as fracture energy)."""
+    from stickslip.figures.beyond import regimes
+
+    problem = regimes.problem(2.0, 10.0, 64, regularised=False)
+    run = run_inplane(problem, int(1.0 * L / C / problem.dt), every=8)
+    b = energy_book(run)
+    assert run.opening.max() > 0
+    assert b.contact_energy[-1] > 1e-3 * b.dissipation[-1]
+    assert abs(b.fracture_energy[-1]) < 1e-9 * b.dissipation[-1]
+
+
+def test_a_run_from_an_initial_state_is_refused_naming_run():
+    from stickslip.sbim.waves import WaveOnGrid
+
+    grid = WaveOnGrid(decaying_wave(3.0, -0.5, 1e-4, 1e-3, nu=NU, mu=0.5, tau_yy=-0.01), MU, C, 1.0, 32)
+    run = run_inplane(grid.problem(), 4)
+    with pytest.raises(ParameterError, match="initial state"):
         energy_book(run)

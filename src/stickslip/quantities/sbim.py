@@ -115,12 +115,14 @@ SBIM = Domain("sbim", units="SI", quantities=[
     Q("event_end", "s", "end of an event"),
     Q("event_peak", "m/s", "largest slip rate of an event"),
     Q("recurrence_mean", "s", "mean interval between events' starts"),
-    Q("load_work", "J/m", "the loading's work on the slip so far, per metre along z"),
+    Q("load_work", "J/m", "the loading's work on the slip (in-plane: and the opening) so far, per metre along z"),
     Q("static_energy", "J/m", "strain energy the slip would hold at rest, per metre along z"),
     Q("released_energy", "J/m", "energy released by the slip so far (load_work - static_energy), per metre along z"),
     Q("dissipation", "J/m", "energy dissipated by the interface's traction so far, per metre along z"),
     Q("friction_energy", "J/m", "part of the dissipation at the kinetic strength, per metre along z"),
     Q("fracture_energy", "J/m", "part of the dissipation above the kinetic strength (weakening), per metre along z"),
+    Q("contact_energy", "J/m", "part of the dissipation by the normal traction: gaps closed within a step "
+      "(impacts), per metre along z"),
     Q("wave_energy", "J/m", "energy of the waves in the body, radiated once the surface is at rest "
       "(released_energy - dissipation), per metre along z"),
     Q("travel", "m^2/m", "the slip's path summed over the interface so far, per metre along z"),

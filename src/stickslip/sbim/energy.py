@@ -12,7 +12,8 @@ over each step, as the scheme holds them):
 - ``released_energy = load_work - static_energy``: the energy the slip has released (for a constant loading
   ``int (tau_0 + tau_1) / 2 dw dx``, the seismologists' budget);
 - ``dissipation``: the interface's, ``int int tau V dx dt`` (in-plane ``sigma_xy V_x + sigma_yy V_y``: the
-  normal traction does no work in contact, nor on an open node); split into ``friction_energy``, the kinetic
+  normal traction does no work in contact, nor on an open node, but does on a gap the scheme closes within
+  a step, an impact: ``contact_energy``, zero antiplane); the rest split into ``friction_energy``, the kinetic
   strength times the slip's path, and ``fracture_energy``, the rest (slip-weakening: the strength above the
   kinetic one, ``(tau_s - tau_d) D_c / 2`` per unit area once weakened). Coulomb's dissipation is all
   friction; rate-and-state's split is not unique and is all counted as friction here;
@@ -23,7 +24,8 @@ over each step, as the scheme holds them):
 The books close by construction; what they say is checked against closed forms in the tests (a free
 surface's radiated energy from the frequency domain, a plane wave's flux, slip-weakening's fracture
 energy; in-plane: the plane S and P waves' fluxes, a slowly loaded surface's work stored, half a suddenly
-loaded one's radiated). In-plane books are kept on a rigid body only (not between two materials).
+loaded one's radiated). In-plane books are kept on a rigid body from rest only (not between two
+materials, nor from an initial state).
 """
 
 from __future__ import annotations
@@ -43,7 +45,7 @@ __all__ = ["EnergyBook", "energy_book"]
 
 #: The books' entries, in the order of `EnergyBook`'s fields after ``t``.
 ENTRIES = ("load_work", "static_energy", "released_energy", "dissipation", "friction_energy", "fracture_energy",
-           "wave_energy")
+           "wave_energy", "contact_energy")
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -58,6 +60,11 @@ class EnergyBook(Result):
     friction_energy: np.ndarray
     fracture_energy: np.ndarray
     wave_energy: np.ndarray
+    contact_energy: np.ndarray | None = None
+
+    def __post_init__(self):
+        if self.contact_energy is None:  # antiplane: no normal traction
+            object.__setattr__(self, "contact_energy", np.zeros_like(self.dissipation))
 
     def to_dict(self) -> dict:
         """The entries at the last sample."""
@@ -74,12 +81,13 @@ class EnergyBook(Result):
 
 
 def energy_book(run) -> EnergyBook:
-    """The energy books of ``run`` (an `AntiplaneRun`, or an `InplaneRun` on a rigid body) at its samples
-    (module docstring)."""
+    """The energy books of ``run`` (an `AntiplaneRun`, or an `InplaneRun` on a rigid body from rest) at its
+    samples (module docstring)."""
     if isinstance(run, InplaneRun):
         return _inplane_book(run)
-    if not isinstance(run, AntiplaneRun) or run.load_work is None:
-        raise ParameterError("run", run, "an AntiplaneRun from run_antiplane or an InplaneRun from run_inplane")
+    if not isinstance(run, AntiplaneRun) or run.load_work is None or len(run.t) == 0:
+        raise ParameterError("run", type(run).__name__, "an AntiplaneRun from run_antiplane or an InplaneRun from "
+                             "run_inplane, with its samples")
     p = run.problem
     k = p.wavenumbers
     n = p.elements
@@ -96,9 +104,12 @@ def energy_book(run) -> EnergyBook:
 
 def _inplane_book(run: InplaneRun) -> EnergyBook:
     p = run.problem
-    if p.lower is not None or run.load_work is None:
-        raise ParameterError("run", run, "an InplaneRun on a rigid body (the books between two materials are not "
-                             "kept)")
+    if p.lower is not None or p.initial is not None or run.load_work is None or len(run.t) == 0:
+        raise ParameterError("run", "an InplaneRun" + (" between two materials" if p.lower is not None else
+                             " from an initial state" if p.initial is not None else ""),
+                             "an InplaneRun from rest on a rigid body, with its samples (the books between two "
+                             "materials are not kept; a run from an initial state starts with energy in the body "
+                             "that they do not count)")
     n, muk = p.elements, p.shear_modulus * p.wavenumbers
     s11, s22, s12 = static_stiffness(p.poisson)
     ux, uy = np.fft.rfft(run.slip, axis=1), np.fft.rfft(run.opening, axis=1)
@@ -110,4 +121,4 @@ def _inplane_book(run: InplaneRun) -> EnergyBook:
     friction = run.friction_work if isinstance(p.law, (CoulombFriction, PrakashClifton, SlipWeakeningFriction)) \
         else run.dissipation
     return EnergyBook(run.t, run.load_work, static, released, run.dissipation, friction,
-                      run.dissipation - friction, released - run.dissipation)
+                      run.dissipation - friction - run.contact_work, released - run.dissipation, run.contact_work)

@@ -199,11 +199,13 @@ class InplaneRun(Result):
     load_work: np.ndarray | None = None
     dissipation: np.ndarray | None = None
     friction_work: np.ndarray | None = None
+    contact_work: np.ndarray | None = None
 
     FIELDS = ("slip", "opening", "slip_rate", "opening_rate", "shear_stress", "normal_traction")
     #: The books a run keeps at each sample [J/m] (`stickslip.sbim.energy.energy_book`): the loading's work on
-    #: the slip and opening rates, the interface traction's, and the kinetic strength's on the slip rate.
-    BOOKS = ("load_work", "dissipation", "friction_work")
+    #: the slip and opening rates, the interface traction's, the kinetic strength's on the slip rate and the
+    #: normal traction's on the opening rate (a gap closed within a step).
+    BOOKS = ("load_work", "dissipation", "friction_work", "contact_work")
 
     def to_dict(self) -> dict:
         p = self.problem
@@ -288,7 +290,7 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
     psi = p.law.initial_psi(n) if rsf else np.zeros(0)
     log_v = np.full(n, math.log(p.law.slip_rate)) if rsf else np.zeros(0)
     out = {name: [] for name in ("t",) + InplaneRun.FIELDS}
-    books, out_books = np.zeros(3), []  # the loading's work, the interface's, the kinetic strength's so far
+    books, out_books = np.zeros(4), []  # the loading's work, the interface's, the kinetic strength's, the normal's
     kinetic = _kinetic(p.law)
     start = 0
     state = checkpoint.resume() if checkpoint is not None else None
@@ -334,7 +336,7 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
         if seen is None or not isinstance(p.law, PrakashClifton):
             seen = np.maximum(-syy, 0.0)
         books += dt * p.dx * np.array([tau0 @ Vx + sigma0 @ Vy, sxy @ Vx + syy @ Vy,
-                                       0.0 if kinetic is None else kinetic * (seen @ np.abs(Vx))])
+                                       0.0 if kinetic is None else kinetic * (seen @ np.abs(Vx)), syy @ Vy])
         if bottom is not None:  # each side's rate from the traction the law set
             vx, vy = (sxy - Bx) / wx, (syy - By) / wy
             Lx, Ly = Lx + dt * vx, Ly + dt * vy
@@ -356,7 +358,7 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
         checkpoint.save(_state(steps + 1, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out, psi, log_v, books,
                                out_books))
     return InplaneRun(p, *(np.array(out[name]) for name in out), _truncation(p), ill,
-                      *np.array(out_books).reshape(-1, 3).T)
+                      *np.array(out_books).reshape(-1, 4).T)
 
 
 def _kinetic(law) -> float | None:
@@ -422,10 +424,10 @@ def _state(step, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out, psi, log_v
         lower.update(psi=psi, log_v=log_v)
     return {"step": np.int64(step), "Ux": Ux, "Uy": Uy, "sliding": sliding.astype(np.int8),
             "pressure": np.zeros(0) if pressure is None else pressure, "hx": top.hx.buffer, "hy": top.hy.buffer,
-            "books": books, "out_books": np.array(out_books, dtype=float).reshape(-1, 3), **lower, **samples}
+            "books": books, "out_books": np.array(out_books, dtype=float).reshape(-1, 4), **lower, **samples}
 
 
 def partial_run(problem: InplaneProblem, state: dict, ill_posed: str = "") -> InplaneRun:
     """The samples of a checkpoint's ``state`` as a run (`stickslip.sbim.runfile`)."""
     return InplaneRun(problem, *(state["out_" + name] for name in ("t",) + InplaneRun.FIELDS),
-                      _truncation(problem), ill_posed, *np.asarray(state["out_books"]).reshape(-1, 3).T)
+                      _truncation(problem), ill_posed, *np.asarray(state["out_books"]).reshape(-1, 4).T)

@@ -115,3 +115,9 @@ def test_the_regime_checks_pass_and_catch_a_wrong_first_event_or_a_grid_dependen
     converged = data.copy(deep=True)  # Coulomb's first events as converged as the regularised ones
     converged["coulomb"][-1] = converged["coulomb"][-2]
     assert any("Coulomb" in name for name in _failed(regimes.check(converged)))
+
+
+def test_a_run_that_sticks_and_never_opens_counts_as_stick_first():
+    """Found by a review: NaN (never) compared as a time made such a run 'opening first'."""
+    stick, opening = np.array([1.0, np.nan, 2.0, np.nan]), np.array([np.nan, 1.0, 1.0, np.nan])
+    assert regimes.stick_first(stick, opening).tolist() == [True, False, False, False]
