@@ -38,7 +38,6 @@ from ..errors import ParameterError
 from ..results import Result
 from .antiplane import AntiplaneRun, Coulomb, SlipWeakening
 from .inplane import InplaneRun
-from .interface import CoulombFriction, PrakashClifton, SlipWeakeningFriction
 from .inplane_kernels import static_stiffness
 
 __all__ = ["EnergyBook", "energy_book"]
@@ -117,8 +116,6 @@ def _inplane_book(run: InplaneRun) -> EnergyBook:
     ky = np.fft.irfft(muk * (s22 * uy + 1j * s12 * ux), n, axis=1)
     static = 0.5 * p.dx * np.sum(run.slip * kx + run.opening * ky, axis=1)
     released = run.load_work - static
-    # rate-and-state's dissipation all friction, as antiplane; a free surface dissipates nothing
-    friction = run.friction_work if isinstance(p.law, (CoulombFriction, PrakashClifton, SlipWeakeningFriction)) \
-        else run.dissipation
+    friction = run.friction_work  # rate-and-state's shear dissipation all friction, as antiplane
     return EnergyBook(run.t, run.load_work, static, released, run.dissipation, friction,
                       run.dissipation - friction - run.contact_work, released - run.dissipation, run.contact_work)

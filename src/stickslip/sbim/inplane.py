@@ -203,7 +203,8 @@ class InplaneRun(Result):
 
     FIELDS = ("slip", "opening", "slip_rate", "opening_rate", "shear_stress", "normal_traction")
     #: The books a run keeps at each sample [J/m] (`stickslip.sbim.energy.energy_book`): the loading's work on
-    #: the slip and opening rates, the interface traction's, the kinetic strength's on the slip rate and the
+    #: the slip and opening rates, the interface traction's, the friction's (the kinetic strength's on the slip
+    #: rate; without a kinetic coefficient, rate-and-state or a free surface, the shear traction's) and the
     #: normal traction's on the opening rate (a gap closed within a step).
     BOOKS = ("load_work", "dissipation", "friction_work", "contact_work")
 
@@ -336,7 +337,7 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
         if seen is None or not isinstance(p.law, PrakashClifton):
             seen = np.maximum(-syy, 0.0)
         books += dt * p.dx * np.array([tau0 @ Vx + sigma0 @ Vy, sxy @ Vx + syy @ Vy,
-                                       0.0 if kinetic is None else kinetic * (seen @ np.abs(Vx)), syy @ Vy])
+                                       sxy @ Vx if kinetic is None else kinetic * (seen @ np.abs(Vx)), syy @ Vy])
         if bottom is not None:  # each side's rate from the traction the law set
             vx, vy = (sxy - Bx) / wx, (syy - By) / wy
             Lx, Ly = Lx + dt * vx, Ly + dt * vy
@@ -364,9 +365,7 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
 def _kinetic(law) -> float | None:
     """The kinetic friction coefficient of a Coulomb or slip-weakening law (regularised or not), else None."""
     law = law.friction if isinstance(law, PrakashClifton) else law
-    if isinstance(law, CoulombFriction):
-        return law.kinetic_friction
-    return law.kinetic_friction if isinstance(law, SlipWeakeningFriction) else None
+    return law.kinetic_friction if isinstance(law, (CoulombFriction, SlipWeakeningFriction)) else None
 
 
 def _truncation(p: InplaneProblem) -> float:

@@ -185,8 +185,8 @@ def check(ds: xr.Dataset) -> list[Check]:
     times = r[..., :2]
     spread = float(np.max(np.abs(times[:, -1] / times[:, -2] - 1)))
     parts = float(np.max(np.abs(r[:, -1, 2:] - r[:, -2, 2:])))
-    first = np.nanmin(ds.coulomb.values, axis=1)
-    moved = abs(first[-1] / first[-2] - 1)
+    coulomb = np.nanmin(ds.coulomb.values, axis=1)  # each grid's first event
+    moved = abs(coulomb[-1] / coulomb[-2] - 1)
     return [
         Check("every run of the map leaves steady sliding: a node sticks or opens (the relation has a growing wave "
               "at every friction of the map)", bool(np.all(np.isfinite(stick) | np.isfinite(opening))
@@ -210,7 +210,7 @@ def check(ds: xr.Dataset) -> list[Check]:
               f"largest change {parts:.3f}", "< 0.05"),
         Check("with Coulomb's law the first event does not converge (ill-posed: the grid's shortest waves grow "
               "fastest)", bool(moved > 10 * max(spread, 0.01)),
-              f"first event / (L / c_s) {', '.join(f'{x:.3g}' for x in first)}: {moved:.0%} from {GRIDS[-2]} to "
+              f"first event / (L / c_s) {', '.join(f'{x:.3g}' for x in coulomb)}: {moved:.0%} from {GRIDS[-2]} to "
               f"{GRIDS[-1]} elements", "more than 10 times the regularised runs' change (see the method)"),
     ]
 
