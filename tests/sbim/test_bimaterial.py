@@ -35,8 +35,10 @@ from stickslip.errors import ParameterError
 from stickslip.sbim import (CoulombFriction, InitialState, InplaneProblem, PrakashClifton, mode_load, run_inplane,
                             uniform_load)
 from stickslip.sbim.flutter import bimaterial_ill_posedness, bimaterial_roots
-from stickslip.sbim.runfile import Checkpoint
+
 from stickslip.sbim.surface import Solid
+
+from .resume import killed_and_resumed
 
 MU, C, NU, L, N0 = 3e10, 3000.0, 0.25, 1.0, 1e6
 UPPER = Solid(MU, C, NU)
@@ -184,32 +186,9 @@ def test_a_run_between_two_materials_resumes_bit_for_bit(tmp_path):
         return InplaneProblem(MU, C, NU, L, 16, mode_load(0.0, 1e5, 1, L), CoulombFriction(0.3, 0.2),
                               lower=LOWER)
 
-    whole = run_inplane(problem(), 120, every=10)
-
-    class Killed(Exception):
-        pass
-
-    path = tmp_path / "run.nc"
-    first = Checkpoint(path, "k", lambda state: _fields(problem(), state), seconds=0.0)
-    save = first.save
-
-    def dying(state):
-        save(state)
-        if int(state["step"]) == 57:
-            raise Killed
-
-    first.save = dying
-    with pytest.raises(Killed):
-        run_inplane(problem(), 120, every=10, checkpoint=first)
-    resumed = run_inplane(problem(), 120, every=10, checkpoint=Checkpoint(path, "k", lambda s: _fields(problem(), s)))
+    whole, resumed = killed_and_resumed(problem, 120, 10, 57, tmp_path / "run.nc")
     for name in ("t",) + whole.FIELDS:
         assert np.array_equal(getattr(resumed, name), getattr(whole, name)), name
-
-
-def _fields(problem, state):
-    from stickslip.sbim.inplane import partial_run
-
-    return partial_run(problem, state).to_xarray()
 
 
 @pytest.mark.parametrize("change, name", [

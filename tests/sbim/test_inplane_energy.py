@@ -18,7 +18,6 @@ from stickslip.sbim import (CoulombFriction, FreeSurface, InplaneProblem, SlipWe
                             run_inplane)
 from stickslip.sbim.energy import energy_book
 from stickslip.sbim.inplane import uniform_load
-from stickslip.sbim.runfile import Checkpoint
 
 MU, C, NU, L = 3e10, 3000.0, 0.25, 1.0
 ETA = math.sqrt(2 * (1 - NU) / (1 - 2 * NU))
@@ -110,31 +109,13 @@ def test_a_suddenly_loaded_frictionless_contact_radiates_half_the_work_as_it_set
 
 
 def test_a_killed_runs_books_resume_to_the_bit(tmp_path):
-    from stickslip.sbim.inplane import partial_run
+    from .resume import killed_and_resumed
 
     def problem():
         return InplaneProblem(MU, C, NU, L, 16, uniform_load(0.7e6, -1e6), SlipWeakeningFriction(0.6, 0.4, 1e-6),
                               beta=0.25)
 
-    whole = run_inplane(problem(), 120, every=10)
-
-    class Killed(Exception):
-        pass
-
-    path = tmp_path / "run.nc"
-    first = Checkpoint(path, "k", lambda state: partial_run(problem(), state).to_xarray(), seconds=0.0)
-    save = first.save
-
-    def dying(state):
-        save(state)
-        if int(state["step"]) == 57:
-            raise Killed
-
-    first.save = dying
-    with pytest.raises(Killed):
-        run_inplane(problem(), 120, every=10, checkpoint=first)
-    resumed = run_inplane(problem(), 120, every=10,
-                          checkpoint=Checkpoint(path, "k", lambda s: partial_run(problem(), s).to_xarray()))
+    whole, resumed = killed_and_resumed(problem, 120, 10, 57, tmp_path / "run.nc")
     for name in whole.BOOKS:
         assert np.array_equal(getattr(resumed, name), getattr(whole, name)), name
     assert whole.dissipation[-1] > 0

@@ -144,33 +144,14 @@ def test_a_mode_follows_the_relation_closely_and_decays_well_below_the_critical_
 
 
 def test_a_run_resumes_bit_for_bit(tmp_path):
-    from stickslip.sbim.inplane import partial_run
-    from stickslip.sbim.runfile import Checkpoint
+    from .resume import killed_and_resumed
 
     x = np.arange(8) * L_C / 8
 
     def problem():
         return _problem(L_C, 8, 0.25, psi=1e-3 * np.cos(2 * math.pi * x / L_C))
 
-    whole = run_inplane(problem(), 60, every=10)
-
-    class Killed(Exception):
-        pass
-
-    path = tmp_path / "run.nc"
-    first = Checkpoint(path, "k", lambda state: partial_run(problem(), state).to_xarray(), seconds=0.0)
-    save = first.save
-
-    def dying(state):
-        save(state)
-        if int(state["step"]) == 23:
-            raise Killed
-
-    first.save = dying
-    with pytest.raises(Killed):
-        run_inplane(problem(), 60, every=10, checkpoint=first)
-    resumed = run_inplane(problem(), 60, every=10,
-                          checkpoint=Checkpoint(path, "k", lambda s: partial_run(problem(), s).to_xarray()))
+    whole, resumed = killed_and_resumed(problem, 60, 10, 23, tmp_path / "run.nc")
     for name in ("t",) + whole.FIELDS:
         assert np.array_equal(getattr(resumed, name), getattr(whole, name)), name
 
