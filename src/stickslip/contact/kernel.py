@@ -210,36 +210,46 @@ def _single_ring(C, u, out):
 def stencil_apply(C, u, out):
     """``out = -A u`` for the block-circulant ``A`` of stencil ``C[i, di + 1, dj + 1, c, c']``:
     the coupling of dof ``c`` of node ``(i, j)`` with dof ``c'`` of node ``(i + di, (j + dj) mod
-    n_theta)``; layers ``i + di`` outside ``[0, n_r)`` are fixed (zero)."""
+    n_theta)``; layers ``i + di`` outside ``[0, n_r)`` are fixed (zero).
+
+    The two dofs of each node are read apart first, one row per layer and dof with the periodic
+    neighbours copied to its ends, so that the inner loops run over consecutive numbers (about
+    three times faster than over the interleaved vector, benchmarks/brake_fem.py); the sums are
+    the same, in the same order, to the bit."""
     n_r = C.shape[0]
     if n_r == 1:
         _single_ring(C, u, out)
         return
     N = out.shape[0] // (2 * n_r)
-    for k in range(out.shape[0]):
-        out[k] = 0.0
+    ur = np.empty((n_r, N + 2))
+    ut = np.empty((n_r, N + 2))
     for i in range(n_r):
         base = 2 * i * N
+        for j in range(N):
+            ur[i, j + 1] = u[base + 2 * j]
+            ut[i, j + 1] = u[base + 2 * j + 1]
+        ur[i, 0], ut[i, 0] = ur[i, N], ut[i, N]  # periodic neighbours
+        ur[i, N + 1], ut[i, N + 1] = ur[i, 1], ut[i, 1]
+    s0 = np.empty(N)
+    s1 = np.empty(N)
+    for i in range(n_r):
+        s0[:] = 0.0
+        s1[:] = 0.0
         for di in range(-1, 2):
             i2 = i + di
             if i2 < 0 or i2 >= n_r:
                 continue
-            b2 = 2 * i2 * N
             for dj in range(-1, 2):
                 c00, c01 = C[i, di + 1, dj + 1, 0, 0], C[i, di + 1, dj + 1, 0, 1]
                 c10, c11 = C[i, di + 1, dj + 1, 1, 0], C[i, di + 1, dj + 1, 1, 1]
-                jlo = 1 if dj == -1 else 0
-                jhi = N - 1 if dj == 1 else N
-                off = b2 + 2 * dj
-                for j in range(jlo, jhi):
-                    ur, ut = u[off + 2 * j], u[off + 2 * j + 1]
-                    out[base + 2 * j] -= c00 * ur + c01 * ut
-                    out[base + 2 * j + 1] -= c10 * ur + c11 * ut
-                if dj != 0:  # periodic wrap
-                    j, j2 = (0, N - 1) if dj == -1 else (N - 1, 0)
-                    ur, ut = u[b2 + 2 * j2], u[b2 + 2 * j2 + 1]
-                    out[base + 2 * j] -= c00 * ur + c01 * ut
-                    out[base + 2 * j + 1] -= c10 * ur + c11 * ut
+                for j in range(N):
+                    x, y = ur[i2, j + 1 + dj], ut[i2, j + 1 + dj]
+                    s0[j] += c00 * x + c01 * y
+                    s1[j] += c10 * x + c11 * y
+        base = 2 * i * N
+        for j in range(N):
+            out[base + 2 * j] = -s0[j]
+            out[base + 2 * j + 1] = -s1[j]
 
 
 @njit(cache=True)
