@@ -187,8 +187,9 @@ def test_a_run_between_two_materials_resumes_bit_for_bit(tmp_path):
                               lower=LOWER)
 
     whole, resumed = killed_and_resumed(problem, 120, 10, 57, tmp_path / "run.nc")
-    for name in ("t",) + whole.FIELDS:
+    for name in ("t",) + whole.FIELDS + whole.BOOKS + whole.LOWER:
         assert np.array_equal(getattr(resumed, name), getattr(whole, name)), name
+    assert np.abs(whole.lower_displacement_y).max() > 0
 
 
 @pytest.mark.parametrize("change, name", [

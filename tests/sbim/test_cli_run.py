@@ -67,6 +67,8 @@ def test_two_materials_run_and_say_adams_instability(tmp_path, capsys):
     assert all(math.isfinite(v) for v in data.values() if isinstance(v, float)) and "Adams" in err
     with xr.open_dataset(tmp_path / "r.nc") as ds:
         assert "another elastic half-space" in ds.attrs["title"] and ds.attrs["lower_poisson"] == 0.3
+        assert ds["lower_displacement_x"].attrs["units"] == "m"
+    assert data["load_work"] > 0 and math.isfinite(data["wave_energy"])  # the books, between two materials too
 
 
 KILLABLE = textwrap.dedent("""

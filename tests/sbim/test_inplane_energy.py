@@ -17,7 +17,7 @@ from stickslip.halfspace import decaying_wave
 from stickslip.sbim import (CoulombFriction, FreeSurface, InplaneProblem, SlipWeakeningFriction, Solid,
                             run_inplane)
 from stickslip.sbim.energy import energy_book
-from stickslip.sbim.inplane import uniform_load
+from stickslip.sbim.inplane import mode_load, uniform_load
 
 MU, C, NU, L = 3e10, 3000.0, 0.25, 1.0
 ETA = math.sqrt(2 * (1 - NU) / (1 - 2 * NU))
@@ -121,11 +121,55 @@ def test_a_killed_runs_books_resume_to_the_bit(tmp_path):
     assert whole.dissipation[-1] > 0
 
 
-def test_the_books_between_two_materials_are_refused_naming_run():
-    run = run_inplane(InplaneProblem(MU, C, NU, L, 16, uniform_load(1e5, -1e6), CoulombFriction(0.3, 0.2),
-                                     lower=Solid(MU, 0.9 * C, NU)), 10)
-    with pytest.raises(ParameterError, match="run"):
-        energy_book(run)
+LOWER = Solid(0.5 * MU, 0.8 * C, 0.3)  # another density and Poisson's ratio
+
+
+def test_steady_sliding_between_two_materials_books_each_sides_radiation():
+    """Uniform Coulomb sliding between two materials: the slip rate is the radiation limit of both sides in
+    series, (tau - f p) (c+ / mu+ + c- / mu-); each side radiates its plane S wave; nothing is stored."""
+    f, p, tau = 0.5, 1e6, 0.8e6
+    run, b = _book(uniform_load(tau, -p), CoulombFriction(0.6, f), lower=LOWER)
+    v, t = (tau - f * p) * (C / MU + LOWER.shear_wave_speed / LOWER.shear_modulus), run.t[-1]
+    assert run.slip_rate[-1] == pytest.approx(np.full(16, v), rel=1e-12)
+    assert b.friction_energy[-1] == pytest.approx(f * p * v * L * t, rel=1e-12)
+    assert b.wave_energy[-1] == pytest.approx((tau - f * p) * v * L * t, rel=1e-12)
+    assert b.load_work[-1] == pytest.approx(tau * v * L * t, rel=1e-12)
+    assert np.all(b.static_energy == 0)
+
+
+def test_a_slowly_loaded_interface_between_two_materials_stores_the_loadings_work():
+    """The slowly loaded surface's test with a lower half-space of other stiffness, speed and Poisson's ratio,
+    the interface free (each surface loaded by the tractions, opposite): the two surfaces' static energies sum
+    to half of load . U, U the relative displacement (Clapeyron; both components and both surfaces move; the
+    lower surface's coupling has the other sign). Thresholds the rigid body's (1e-4 and 2e-3)."""
+    k = 2 * math.pi * 2 / L
+    period = 2 * math.pi / (k * LOWER.shear_wave_speed)
+
+    def ramp(t):
+        r = min(max(t / (20 * period), 0.0), 1.0)
+        return r * r * (3 - 2 * r)
+
+    def load(x, t):
+        return 1e5 * np.cos(k * x) * ramp(t), 2e5 * np.sin(k * x + 0.3) * ramp(t)
+
+    problem = InplaneProblem(MU, C, NU, L, 16, load, FreeSurface(), beta=0.25, lower=LOWER)
+    run = run_inplane(problem, int(30 * period / problem.dt), every=20)
+    b = energy_book(run)
+    tx, ty = load(problem.x, run.t[-1])
+    half = 0.5 * problem.dx * np.sum(tx * run.slip[-1] + ty * run.opening[-1])
+    assert np.abs(run.opening[-1]).max() > 0.5 * np.abs(run.slip[-1]).max()  # both components move
+    assert np.abs(run.lower_displacement_y[-1]).max() > 0.5 * np.abs(run.lower_displacement_x[-1]).max() > 0
+    assert b.static_energy[-1] == pytest.approx(half, rel=1e-4)
+    assert abs(b.wave_energy[-1]) < 2e-3 * b.static_energy[-1]
+
+
+def test_the_lower_surfaces_displacement_is_in_the_dataset_and_absent_on_a_rigid_body():
+    run = run_inplane(InplaneProblem(MU, C, NU, L, 16, mode_load(1e5, 1e5, 1, L), FreeSurface(), lower=LOWER), 10)
+    ds = run.to_xarray()
+    assert ds["lower_displacement_y"].attrs["units"] == "m"
+    assert np.array_equal(ds["lower_displacement_x"].values, run.lower_displacement_x)
+    rigid = run_inplane(InplaneProblem(MU, C, NU, L, 16, mode_load(1e5, 1e5, 1, L), FreeSurface()), 10)
+    assert rigid.lower_displacement_x is None and "lower_displacement_x" not in rigid.to_xarray()
 
 
 def test_gaps_closed_within_a_step_are_booked_as_contact_energy_and_coulomb_leaves_no_fracture_energy():

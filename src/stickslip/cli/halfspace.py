@@ -202,10 +202,9 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
                "peak_slip_rate": float(np.abs(result.slip_rate).max()), "final_max_slip": float(np.abs(result.slip[-1]).max()),
                "peak_opening": float(result.opening.max()), "slipped_fraction": float(slipped.mean()),
                "open_fraction_at_end": float((result.opening[-1] > 0).mean())}
-    if lower is None:  # the energy books at the end (kept on a rigid body)
-        from ..sbim.energy import energy_book
+    from ..sbim.energy import energy_book  # the energy books at the end
 
-        summary.update({k: v for k, v in energy_book(result).to_dict().items() if k != "t"})
+    summary.update({k: v for k, v in energy_book(result).to_dict().items() if k != "t"})
     emit(summary, json, "interface run", model="sbim")  # an ill-posed law is said on stderr by the run (its log)
     if plot:
         from .. import plotting

@@ -106,6 +106,10 @@ SBIM = Domain("sbim", units="SI", quantities=[
     Q("shear_stress", "Pa", "shear traction on the interface"),
     Q("opening", "m", "opening of the interface (the surface's displacement away from the rigid body, in-plane)"),
     Q("opening_rate", "m/s", "opening rate"),
+    Q("lower_displacement_x", "m", "the lower half-space's surface displacement along x (two materials; the "
+      "upper's is it plus the slip)"),
+    Q("lower_displacement_y", "m", "the lower half-space's surface displacement along y (two materials; the "
+      "upper's is it plus the opening)"),
     Q("dt", "s", "time step"),
     Q("z", "m", "depth along the fault"),
     Q("max_slip_rate", "m/s", "largest slip rate on the fault at a step"),

@@ -8,7 +8,9 @@ over each step, as the scheme holds them):
   ``int int (tau_0 V_x + sigma_0 V_y) dx dt``;
 - ``static_energy``: the strain energy the slip would hold at rest, ``(1/2) int w K[w] dx`` with ``K`` the
   static stiffness ``mu |k|`` mode by mode; in-plane ``(1/2) int U . K[U] dx`` with the surface's static
-  stiffness matrix ``mu |k| [[S11, -i S12], [i S12, S22]]`` (`stickslip.sbim.inplane_kernels`);
+  stiffness matrix ``mu |k| [[S11, -i S12], [i S12, S22]]`` (`stickslip.sbim.inplane_kernels`); between two
+  materials the sum of both surfaces', each with its own displacement and solid (the lower one's, the
+  upper's reflected, with the coupling's sign turned);
 - ``released_energy = load_work - static_energy``: the energy the slip has released (for a constant loading
   ``int (tau_0 + tau_1) / 2 dw dx``, the seismologists' budget);
 - ``dissipation``: the interface's, ``int int tau V dx dt`` (in-plane ``sigma_xy V_x + sigma_yy V_y``: the
@@ -24,8 +26,8 @@ over each step, as the scheme holds them):
 The books close by construction; what they say is checked against closed forms in the tests (a free
 surface's radiated energy from the frequency domain, a plane wave's flux, slip-weakening's fracture
 energy; in-plane: the plane S and P waves' fluxes, a slowly loaded surface's work stored, half a suddenly
-loaded one's radiated). In-plane books are kept on a rigid body from rest only (not between two
-materials, nor from an initial state).
+loaded one's radiated; between two materials the same, and a slowly loaded interface's static energy
+half of load . U). In-plane books are kept from rest only (not from an initial state).
 """
 
 from __future__ import annotations
@@ -80,8 +82,8 @@ class EnergyBook(Result):
 
 
 def energy_book(run) -> EnergyBook:
-    """The energy books of ``run`` (an `AntiplaneRun`, or an `InplaneRun` on a rigid body from rest) at its
-    samples (module docstring)."""
+    """The energy books of ``run`` (an `AntiplaneRun`, or an `InplaneRun` from rest) at its samples (module
+    docstring)."""
     if isinstance(run, InplaneRun):
         return _inplane_book(run)
     if not isinstance(run, AntiplaneRun) or run.load_work is None or len(run.t) == 0:
@@ -103,19 +105,30 @@ def energy_book(run) -> EnergyBook:
 
 def _inplane_book(run: InplaneRun) -> EnergyBook:
     p = run.problem
-    if p.lower is not None or p.initial is not None or run.load_work is None or len(run.t) == 0:
-        raise ParameterError("run", "an InplaneRun" + (" between two materials" if p.lower is not None else
-                             " from an initial state" if p.initial is not None else ""),
-                             "an InplaneRun from rest on a rigid body, with its samples (the books between two "
-                             "materials are not kept; a run from an initial state starts with energy in the body "
-                             "that they do not count)")
-    n, muk = p.elements, p.shear_modulus * p.wavenumbers
-    s11, s22, s12 = static_stiffness(p.poisson)
-    ux, uy = np.fft.rfft(run.slip, axis=1), np.fft.rfft(run.opening, axis=1)
-    kx = np.fft.irfft(muk * (s11 * ux - 1j * s12 * uy), n, axis=1)  # K[U], minus the static tractions
-    ky = np.fft.irfft(muk * (s22 * uy + 1j * s12 * ux), n, axis=1)
-    static = 0.5 * p.dx * np.sum(run.slip * kx + run.opening * ky, axis=1)
+    two = p.lower is not None
+    if p.initial is not None or run.load_work is None or len(run.t) == 0 or (two and run.lower_displacement_x
+                                                                            is None):
+        raise ParameterError("run", "an InplaneRun" + (" from an initial state" if p.initial is not None else ""),
+                             "an InplaneRun from rest, with its samples (a run from an initial state starts with "
+                             "energy in the body that the books do not count)")
+    if two:  # each surface's own: the upper's displacement is the lower's plus the slip and opening
+        lx, ly = run.lower_displacement_x, run.lower_displacement_y
+        static = _static(p, p.upper, run.slip + lx, run.opening + ly, 1) + _static(p, p.lower, lx, ly, -1)
+    else:
+        static = _static(p, p.upper, run.slip, run.opening, 1)
     released = run.load_work - static
     friction = run.friction_work  # rate-and-state's shear dissipation all friction, as antiplane
     return EnergyBook(run.t, run.load_work, static, released, run.dissipation, friction,
                       run.dissipation - friction - run.contact_work, released - run.dissipation, run.contact_work)
+
+
+def _static(p, solid, ux, uy, side: int) -> np.ndarray:
+    """``(1/2) int u . K[u] dx`` of a surface of ``solid`` displaced by ``(ux, uy)`` (samples x nodes), above
+    the interface (``side = 1``) or below it (``-1``: reflected, the coupling's sign turned)."""
+    n, muk = p.elements, solid.shear_modulus * p.wavenumbers
+    s11, s22, s12 = static_stiffness(solid.poisson)
+    s12 = side * s12
+    fx, fy = np.fft.rfft(ux, axis=1), np.fft.rfft(uy, axis=1)
+    kx = np.fft.irfft(muk * (s11 * fx - 1j * s12 * fy), n, axis=1)  # K[u], minus the static tractions
+    ky = np.fft.irfft(muk * (s22 * fy + 1j * s12 * fx), n, axis=1)
+    return 0.5 * p.dx * np.sum(ux * kx + uy * ky, axis=1)

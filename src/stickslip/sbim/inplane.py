@@ -184,7 +184,8 @@ class InplaneProblem(PeriodicGrid):
 @dataclass(frozen=True, eq=False, repr=False)
 class InplaneRun(Result):
     """Samples ``t`` [s] of the slip, opening, their rates and the tractions at each ``x`` (``(samples, N)``),
-    and the books up to each (`BOOKS`, per metre along z; `stickslip.sbim.energy.energy_book`)."""
+    and the books up to each (`BOOKS`, per metre along z; `stickslip.sbim.energy.energy_book`); between two
+    materials the lower surface's displacement too (`LOWER`; None on a rigid body)."""
 
     problem: InplaneProblem
     t: np.ndarray
@@ -200,6 +201,8 @@ class InplaneRun(Result):
     dissipation: np.ndarray | None = None
     friction_work: np.ndarray | None = None
     contact_work: np.ndarray | None = None
+    lower_displacement_x: np.ndarray | None = None
+    lower_displacement_y: np.ndarray | None = None
 
     FIELDS = ("slip", "opening", "slip_rate", "opening_rate", "shear_stress", "normal_traction")
     #: The books a run keeps at each sample [J/m] (`stickslip.sbim.energy.energy_book`): the loading's work on
@@ -207,6 +210,8 @@ class InplaneRun(Result):
     #: rate; without a kinetic coefficient, rate-and-state or a free surface, the shear traction's) and the
     #: normal traction's on the opening rate (a gap closed within a step).
     BOOKS = ("load_work", "dissipation", "friction_work", "contact_work")
+    #: The lower half-space's surface displacement at each sample (the upper's is it plus the slip and opening).
+    LOWER = ("lower_displacement_x", "lower_displacement_y")
 
     def to_dict(self) -> dict:
         p = self.problem
@@ -221,7 +226,8 @@ class InplaneRun(Result):
 
     def to_xarray(self):
         on = "a rigid body" if self.problem.lower is None else "another elastic half-space"
-        ds = space_time(self, self.FIELDS, f"in-plane sliding of an elastic half-space on {on} (spectral boundary "
+        names = self.FIELDS + (() if self.lower_displacement_x is None else self.LOWER)
+        ds = space_time(self, names, f"in-plane sliding of an elastic half-space on {on} (spectral boundary "
                         "integral method)")
         ds.attrs["well_posedness"] = self.ill_posed or "well posed"
         return ds
@@ -292,6 +298,7 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
     log_v = np.full(n, math.log(p.law.slip_rate)) if rsf else np.zeros(0)
     out = {name: [] for name in ("t",) + InplaneRun.FIELDS}
     books, out_books = np.zeros(4), []  # the loading's work, the interface's, the kinetic strength's, the normal's
+    out_lower = []  # the lower surface's displacement at the samples (two materials)
     kinetic = _kinetic(p.law)
     start = 0
     state = checkpoint.resume() if checkpoint is not None else None
@@ -307,6 +314,7 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
             bottom.hx.buffer[:], bottom.hy.buffer[:] = state["lx"], state["ly"]
         out = {name: list(state["out_" + name]) for name in out}
         books, out_books = state["books"].copy(), list(state["out_books"])
+        out_lower = list(state.get("out_lower", ()))
     elif p.initial is not None:
         Ux, Uy = p.initial.slip.copy(), p.initial.opening.copy()
         sliding = p.initial.fill(dt, pre, top.hx, top.hy)
@@ -332,6 +340,8 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
             for name, value in zip(out, (t, Ux.copy(), Uy.copy(), Vx, Vy, sxy, syy)):
                 out[name].append(value)
             out_books.append(books.copy())
+            if bottom is not None:
+                out_lower.append(np.stack([Lx, Ly]))
         if step == steps:
             break
         if seen is None or not isinstance(p.law, PrakashClifton):
@@ -354,12 +364,12 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
             progress(step, steps)
         if checkpoint is not None and checkpoint.due(step + 1):
             checkpoint.save(_state(step + 1, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out, psi, log_v,
-                                   books, out_books))
+                                   books, out_books, out_lower))
     if checkpoint is not None and start <= steps:
         checkpoint.save(_state(steps + 1, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out, psi, log_v, books,
-                               out_books))
+                               out_books, out_lower))
     return InplaneRun(p, *(np.array(out[name]) for name in out), _truncation(p), ill,
-                      *np.array(out_books).reshape(-1, 4).T)
+                      *np.array(out_books).reshape(-1, 4).T, *_lower_samples(out_lower, bottom is not None, n))
 
 
 def _kinetic(law) -> float | None:
@@ -412,13 +422,23 @@ def _resolution(p: InplaneProblem) -> list[str]:
     return resolution_notes(half, zone, p.dx, p.length, "mu / (1 - nu)")
 
 
-def _state(step, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out, psi, log_v, books, out_books) -> dict:
+def _lower_samples(out_lower, lower: bool, n: int) -> tuple:
+    """The lower surface's displacement along x and y at the samples (``(None, None)`` on a rigid body)."""
+    if not lower:
+        return None, None
+    both = np.asarray(out_lower, dtype=float).reshape(-1, 2, n)
+    return both[:, 0], both[:, 1]
+
+
+def _state(step, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out, psi, log_v, books, out_books,
+           out_lower) -> dict:
     """A run's whole state before ``step`` (``steps + 1``: done), for its checkpoint (a lower half-space's
     displacement and histories only with one)."""
     n = Ux.size
     samples = {"out_" + name: np.array(v, dtype=float).reshape((len(v),) if name == "t" else (len(v), n))
                for name, v in out.items()}
-    lower = {} if bottom is None else {"Lx": Lx, "Ly": Ly, "lx": bottom.hx.buffer, "ly": bottom.hy.buffer}
+    lower = {} if bottom is None else {"Lx": Lx, "Ly": Ly, "lx": bottom.hx.buffer, "ly": bottom.hy.buffer,
+                                       "out_lower": np.asarray(out_lower, dtype=float).reshape(-1, 2, n)}
     if psi.size:  # rate-and-state: each node's state and slip rate
         lower.update(psi=psi, log_v=log_v)
     return {"step": np.int64(step), "Ux": Ux, "Uy": Uy, "sliding": sliding.astype(np.int8),
@@ -428,5 +448,7 @@ def _state(step, Ux, Uy, Lx, Ly, sliding, pressure, top, bottom, out, psi, log_v
 
 def partial_run(problem: InplaneProblem, state: dict, ill_posed: str = "") -> InplaneRun:
     """The samples of a checkpoint's ``state`` as a run (`stickslip.sbim.runfile`)."""
+    n = problem.elements
     return InplaneRun(problem, *(state["out_" + name] for name in ("t",) + InplaneRun.FIELDS),
-                      _truncation(problem), ill_posed, *np.asarray(state["out_books"]).reshape(-1, 4).T)
+                      _truncation(problem), ill_posed, *np.asarray(state["out_books"]).reshape(-1, 4).T,
+                      *_lower_samples(state.get("out_lower", ()), problem.lower is not None, n))

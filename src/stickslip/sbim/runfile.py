@@ -25,7 +25,7 @@ from ..files import to_netcdf
 __all__ = ["Checkpoint", "RUN_FORMAT", "CHECKPOINT_SECONDS"]
 
 #: The format of an in-plane run's file (its ``run_format`` attribute).
-RUN_FORMAT = "stickslip-sbim-inplane-2"  # 2: the energy books in the state
+RUN_FORMAT = "stickslip-sbim-inplane-3"  # 2: the energy books in the state; 3: the lower surface's samples
 #: Wall time between two writes of a run's file [s].
 CHECKPOINT_SECONDS = 60.0
 _COMPLEX = ("hx", "hy", "lx", "ly")  # the lower half-space's only with one
