@@ -115,6 +115,24 @@ def test_the_regime_checks_pass_and_catch_a_wrong_first_event_or_a_grid_dependen
     converged = data.copy(deep=True)  # Coulomb's first events as converged as the regularised ones
     converged["coulomb"][-1] = converged["coulomb"][-2]
     assert any("Coulomb" in name for name in _failed(regimes.check(converged)))
+    stayed = data.copy(deep=True)  # the shortest relaxation's run at s = 0.1 never left steady sliding
+    stayed["reg_first_stick"][0, 0] = stayed["reg_first_opening"][0, 0] = np.nan
+    assert any("regularised longer or shorter" in name for name in _failed(regimes.check(stayed)))
+    late = data.copy(deep=True)  # it left twice as late
+    late["reg_first_stick"][0, 0] *= 2
+    late["reg_first_opening"][0, 0] *= 2
+    assert any("e-foldings" in name for name in _failed(regimes.check(late)))
+    other = data.copy(deep=True)  # its pattern a mode growing at half the fastest rate
+    other["reg_mode_growth"][0, 0] = 0.5 * other["reg_growth"][0]
+    assert any("pattern" in name for name in _failed(regimes.check(other)))
+
+
+def test_a_long_relaxation_time_keeps_steady_sliding_and_a_short_one_leaves_it():
+    """Prakash-Clifton's relaxation time sets the growth (1 / t_r at most): at k1 c_s t_r = 4 the relation
+    grows the perturbation by e^0.29 over 10 L / c_s and the run stays in steady sliding; at 0.5, by e^14, and
+    the run leaves it (a run regularised alike whatever t_r is asked fails one or the other)."""
+    assert all(np.isnan(regimes._events(2.0, 0.1, 64, 10.0, kappa1=4.0)[:2]))
+    assert np.isfinite(regimes._events(2.0, 0.1, 64, 10.0, kappa1=0.5)[0])
 
 
 def test_a_run_that_sticks_and_never_opens_counts_as_stick_first():
