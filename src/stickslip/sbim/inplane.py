@@ -16,8 +16,9 @@ displacements and the rates before the step (explicit, as `stickslip.sbim.antipl
 **Laws** (`stickslip.sbim.interface`): `FreeSurface` (both tractions vanish); unilateral contact
 with the rigid body and `CoulombFriction` or `SlipWeakeningFriction`, their strength the coefficient
 times the contact pressure, or the pressure relaxed over a slip (`PrakashClifton`); rate-and-state
-friction (`stickslip.sbim.RateStateFriction`, on a rigid body: every node slides, the contact held
-closed, its strength the contact pressure times ``mu(V, psi)``; a node that would open stops the run). Sliding at a
+friction (`stickslip.sbim.RateStateFriction`: every node slides, the contact held closed, its strength the
+contact pressure times ``mu(V, psi)``, or the pressure Prakash and Clifton's regularisation relaxes, which
+rate-and-state between two materials needs; a node that would open stops the run). Sliding at a
 coefficient above 1 without that regularisation is ill-posed (`stickslip.sbim.flutter`): such a run
 goes on, says so on the ``stickslip.sbim`` log and keeps the statement in its result
 (``ill_posed``, the dataset's ``well_posedness``).
@@ -48,7 +49,7 @@ from .flutter import FLUTTER_ONSET, bimaterial_ill_posedness, ill_posedness
 from .initial import InitialState
 from .ratestate import RateStateFriction, advance_state, contact_step
 from .interface import (LAWS, CoulombFriction, PrakashClifton, SlipWeakeningFriction, interface_step,
-                        slip_weakening_lengths)
+                        relaxed_pressure, slip_weakening_lengths)
 from .scales import resolution_notes
 from .stability import check_stable
 from .surface import MAX_POISSON, Solid, Surface, history_windows
@@ -135,7 +136,7 @@ class InplaneProblem(PeriodicGrid):
         if not isinstance(self.law, LAWS + (RateStateFriction,)):
             raise ParameterError("law", self.law, "FreeSurface(), CoulombFriction(...), SlipWeakeningFriction(...), "
                                  "PrakashClifton(...) or RateStateFriction(...)")
-        if isinstance(self.law, RateStateFriction):
+        if self.rate_state is not None:
             self._check_rate_state()
         if self.lower is not None and not isinstance(self.lower, Solid):
             raise ParameterError("lower", self.lower, "None (a rigid body) or a Solid(shear_modulus, "
@@ -153,15 +154,26 @@ class InplaneProblem(PeriodicGrid):
                 raise ParameterError("opening", float(self.initial.opening.min()), ">= 0 on a rigid body (a gap, "
                                      "or closed)")
 
+    @property
+    def rate_state(self) -> RateStateFriction | None:
+        """The run's rate-and-state friction (bare or regularised by `PrakashClifton`), or None."""
+        law = self.law.friction if isinstance(self.law, PrakashClifton) else self.law
+        return law if isinstance(law, RateStateFriction) else None
+
     def _check_rate_state(self):
-        """Rate-and-state in-plane: on a rigid body, from rest, its ``normal_stress`` the load's at ``t = 0``."""
-        if self.lower is not None or self.initial is not None:
-            raise ParameterError("law", "RateStateFriction(...)", "a law of a run on a rigid body from steady sliding "
-                                 "(between two materials its well-posedness needs the pressure's regularisation: "
-                                 "not built)", also=("lower", "initial"))
+        """Rate-and-state in-plane: from steady sliding, its ``normal_stress`` the load's at ``t = 0``; between
+        two materials regularised (Prakash-Clifton)."""
+        if self.initial is not None:
+            raise ParameterError("law", "RateStateFriction(...)", "a law of a run from steady sliding (not from an "
+                                 "initial state)", also=("initial",))
+        if self.lower is not None and not isinstance(self.law, PrakashClifton):
+            raise ParameterError("law", "RateStateFriction(...)", "PrakashClifton(RateStateFriction(...), "
+                                 "relaxation_slip, relaxation_speed) between two materials (a strength following "
+                                 "the pressure at once is ill-posed there: Rice, Lapusta and Ranjith 2001)",
+                                 also=("lower",))
         pressure = -_loaded(self.load, self.x, 0.0)[1]
-        if not np.allclose(pressure, self.law.normal_stress, rtol=1e-9, atol=0.0):
-            raise ParameterError("normal_stress", self.law.normal_stress, f"the load's compression at t = 0 "
+        if not np.allclose(pressure, self.rate_state.normal_stress, rtol=1e-9, atol=0.0):
+            raise ParameterError("normal_stress", self.rate_state.normal_stress, f"the load's compression at t = 0 "
                                  f"({float(pressure.min()):.6g} to {float(pressure.max()):.6g} Pa, uniform): in-plane "
                                  "the strength follows the contact pressure", also=("load",))
 
@@ -293,9 +305,10 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
     Lx, Ly = np.zeros(n), np.zeros(n)  # the lower surface's displacement (none on a rigid body)
     sliding = np.zeros(n, bool)
     pressure = None
-    rsf = isinstance(p.law, RateStateFriction)
-    psi = p.law.initial_psi(n) if rsf else np.zeros(0)
-    log_v = np.full(n, math.log(p.law.slip_rate)) if rsf else np.zeros(0)
+    rate = p.rate_state
+    rsf, regularised = rate is not None, isinstance(p.law, PrakashClifton)
+    psi = rate.initial_psi(n) if rsf else np.zeros(0)
+    log_v = np.full(n, math.log(rate.slip_rate)) if rsf else np.zeros(0)
     out = {name: [] for name in ("t",) + InplaneRun.FIELDS}
     books, out_books = np.zeros(4), []  # the loading's work, the interface's, the kinetic strength's, the normal's
     out_lower = []  # the lower surface's displacement at the samples (two materials)
@@ -333,7 +346,11 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
             raise ParameterError("load", "a loading", f"finite tractions (not finite at t = {t:g} s)")
         seen = pressure  # the pressure the strength sees this step (Prakash-Clifton's, before it relaxes)
         if rsf:
-            Vx, Vy, sxy, syy, log_v = contact_step(p.law, Gx, Gy, psi, log_v, rad[0], t)
+            if regularised and pressure is None:
+                pressure = -Gy  # the interface pressed before the run
+            Vx, Vy, sxy, syy, log_v = contact_step(rate, Gx, Gy, psi, log_v, rad[0], t, pressure)
+            if regularised:
+                pressure = relaxed_pressure(p.law, pressure, -Gy, Vx, dt)
         else:
             Vx, Vy, sxy, syy, sliding, pressure = interface_step(p.law, Gx, Gy, Ux, Uy, sliding, pressure, dt, rad)
         if step % every == 0 or step == steps:
@@ -357,7 +374,7 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
             top.push(h, Vx, Vy)
         Ux, Uy = Ux + dt * Vx, Uy + dt * Vy
         if rsf:
-            psi = advance_state(p.law.law, psi, log_v, dt)
+            psi = advance_state(rate.law, psi, log_v, dt)
         if not isinstance(p.law, FreeSurface):
             Uy = np.maximum(Uy, 0.0)  # closed to round-off
         if progress is not None and step % 64 == 0:

@@ -13,10 +13,12 @@ within the step closes exactly at its end (``V_y = -U_y / dt``, the impact's com
 open node slides free. With `CoulombFriction` and `SlipWeakeningFriction` ``P = N = max(-sigma_yy, 0)``
 at once: sliding at a coefficient above 1 is then ill-posed (`stickslip.sbim.flutter`).
 
-**Prakash-Clifton.** `PrakashClifton` wraps either law: ``P`` follows ``N`` over a slip,
-``P' = -(|V_x| + V*) / L (P - N)``, advanced exactly over each step with that step's ``N`` and
-``V_x``; ``P`` starts at the first step's ``N`` (the interface pressed before the run). It makes steady
-sliding well posed at any coefficient (`stickslip.sbim.flutter`).
+**Prakash-Clifton.** `PrakashClifton` wraps either law, or rate-and-state friction
+(`stickslip.sbim.RateStateFriction`, whose strength is then ``P mu(V, psi)``): ``P`` follows ``N`` over a
+slip, ``P' = -(|V_x| + V*) / L (P - N)``, advanced exactly over each step with that step's ``N`` and
+``V_x`` (`relaxed_pressure`); ``P`` starts at the first step's ``N`` (the interface pressed before the
+run). It makes steady sliding well posed at any coefficient (`stickslip.sbim.flutter`), and rate-and-state
+sliding between two materials (Rice, Lapusta and Ranjith 2001).
 """
 
 from __future__ import annotations
@@ -28,10 +30,11 @@ import numpy as np
 from ..errors import ParameterError
 from ..quantities.sbim import SBIM as Q
 from .antiplane import FreeSurface
+from .ratestate import RateStateFriction
 from .scales import weakening_lengths
 
-__all__ = ["CoulombFriction", "SlipWeakeningFriction", "PrakashClifton", "interface_step", "LAWS",
-           "slip_weakening_lengths"]
+__all__ = ["CoulombFriction", "SlipWeakeningFriction", "PrakashClifton", "interface_step", "relaxed_pressure",
+           "LAWS", "slip_weakening_lengths"]
 
 
 def _coefficients(law) -> None:
@@ -84,17 +87,18 @@ class SlipWeakeningFriction:
 
 @dataclass(frozen=True)
 class PrakashClifton:
-    """``friction`` (`CoulombFriction` or `SlipWeakeningFriction`) with the pressure its strength sees
-    following the contact pressure over ``relaxation_slip`` [m] of slip, ``relaxation_speed`` [m/s]
-    added to the slip rate (module docstring)."""
+    """``friction`` (`CoulombFriction`, `SlipWeakeningFriction` or `stickslip.sbim.RateStateFriction`) with the
+    pressure its strength sees following the contact pressure over ``relaxation_slip`` [m] of slip,
+    ``relaxation_speed`` [m/s] added to the slip rate (module docstring)."""
 
     friction: object
     relaxation_slip: float
     relaxation_speed: float
 
     def __post_init__(self):
-        if not isinstance(self.friction, (CoulombFriction, SlipWeakeningFriction)):
-            raise ParameterError("friction", self.friction, "CoulombFriction(...) or SlipWeakeningFriction(...)")
+        if not isinstance(self.friction, (CoulombFriction, SlipWeakeningFriction, RateStateFriction)):
+            raise ParameterError("friction", self.friction, "CoulombFriction(...), SlipWeakeningFriction(...) or "
+                                 "RateStateFriction(...)")
         for name in ("relaxation_slip", "relaxation_speed"):
             object.__setattr__(self, name, Q.check(name, getattr(self, name)))
 
@@ -126,8 +130,16 @@ def interface_step(law, Gx, Gy, slip, gap, sliding, pressure, dt, rad):
     sliding = ~held & (excess > 0.0)
     Vx = np.where(sliding, np.sign(Gx) * excess / rad_t, 0.0)
     if isinstance(law, PrakashClifton):
-        P = N + (P - N) * np.exp(-(np.abs(Vx) + law.relaxation_speed) * dt / law.relaxation_slip)
+        P = relaxed_pressure(law, P, N, Vx, dt)
     return Vx, Vy, Gx - rad_t * Vx, syy, sliding, P
+
+
+def relaxed_pressure(law: PrakashClifton, seen: np.ndarray, pressure: np.ndarray, slip_rate: np.ndarray,
+                     dt: float) -> np.ndarray:
+    """The pressure the strength sees after ``dt``, relaxed from ``seen`` towards ``pressure`` at the slip rate
+    (exactly, both held over the step)."""
+    rate = (np.abs(slip_rate) + law.relaxation_speed) / law.relaxation_slip
+    return pressure + (seen - pressure) * np.exp(-rate * dt)
 
 
 def slip_weakening_lengths(law, shear_modulus: float, poisson: float, normal_stress: float) -> tuple[float, float]:

@@ -115,16 +115,17 @@ def perturbed_psi(law, slip_rate: float, n: int, perturbation) -> np.ndarray:
 
 
 def contact_step(law: RateStateFriction, Gx: np.ndarray, Gy: np.ndarray, psi: np.ndarray, log_v: np.ndarray,
-                 damping: float, t: float):
+                 damping: float, t: float, pressure: np.ndarray | None = None):
     """One in-plane step of rate-and-state nodes in closed contact: ``(V_x, V_y, sigma_xy, sigma_yy, ln V)``
     from the drives ``Gx``, ``Gy`` (the opening rate zero, so ``sigma_yy = Gy``), the strength the contact
-    pressure ``-Gy`` times ``mu(V, psi)``, ``damping`` the shear radiation damping. A node that would open
-    (``Gy >= 0``), or no slip rate balancing a drive, stops the run (`NoSolutionError`)."""
+    pressure ``-Gy`` (or the ``pressure`` the strength sees, Prakash-Clifton's) times ``mu(V, psi)``,
+    ``damping`` the shear radiation damping. A node that would open (``Gy >= 0``), or no slip rate balancing
+    a drive, stops the run (`NoSolutionError`)."""
     if np.any(Gy >= 0.0):
         raise NoSolutionError(f"at t = {t:.6g} s a node would open (normal traction {float(Gy.max()):.3g} Pa): "
                               "rate-and-state friction in-plane holds the contact closed")
     try:
-        log_v = slip_rates(law.law, -Gy, damping, Gx, psi, log_v)
+        log_v = slip_rates(law.law, -Gy if pressure is None else pressure, damping, Gx, psi, log_v)
     except NoSolutionError as err:
         raise NoSolutionError(f"at t = {t:.6g} s: {err}") from None
     V = np.exp(log_v)
