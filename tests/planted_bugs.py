@@ -917,6 +917,8 @@ MUTANTS: list[dict] = [
        "contact_step(rate, Gx, Gy, psi, log_v, rad[0], t, pressure)", "contact_step(rate, Gx, Gy, psi, log_v, rad[0], t)",
        "rate-and-state under Prakash-Clifton: the strength sees the contact pressure at once",
        [T + "sbim/test_inplane_ratestate.py"]),
+    _m("cli-rsf-f0-dropped", "src/stickslip/cli/halfspace.py", 'f0=value["--f0"]', "f0=0.6",
+       "halfspace run --law rate-state: --f0 not reaching the law (its default taken)", [T + "sbim/test_cli_run.py"]),
     _m("ip-book-normal-work", "src/stickslip/sbim/inplane.py", "tau0 @ Vx + sigma0 @ Vy, sxy @ Vx + syy @ Vy",
        "tau0 @ Vx, sxy @ Vx + syy @ Vy", "in-plane energy books: the loading's work on the opening left out",
        [T + "sbim/test_inplane_energy.py"]),

@@ -71,6 +71,35 @@ def test_two_materials_run_and_say_adams_instability(tmp_path, capsys):
     assert data["load_work"] > 0 and math.isfinite(data["wave_energy"])  # the books, between two materials too
 
 
+def test_rate_and_state_holds_steady_sliding_under_its_steady_drive(tmp_path, capsys):
+    """--law rate-state from steady sliding at --slip-rate under the traction that holds it, sigma (f0 + (a - b)
+    ln(V / V_ref)) + (mu / c_s) V written here, and no patch: every node still slides at that rate (each of
+    the law's options reaches the law: a wrong one drifts the rate)."""
+    a, b, f0, v_ref, v, sigma = 0.012, 0.016, 0.55, 1e-6, 3e-5, 4e7
+    drive = sigma * (f0 + (a - b) * math.log(v / v_ref)) + 3e10 / 3464.0 * v
+    code, out, err = _call(["halfspace", "run", "--out", str(tmp_path / "r.nc"), "--law", "rate-state", "--a",
+                            str(a), "--b", str(b), "--f0", str(f0), "--v-ref", str(v_ref), "--slip-rate", str(v),
+                            "--dc", "0.01", "--normal-traction", str(-sigma), "--traction", repr(drive),
+                            "--patch-traction", "0", "--json", *SMALL], capsys)
+    assert code == 0, err
+    with xr.open_dataset(tmp_path / "r.nc") as ds:
+        assert np.abs(ds.slip_rate.values / v - 1).max() < 1e-9
+    assert json.loads(out)["law"] == "RateStateFriction"
+
+
+def test_rate_and_state_between_two_materials_runs_regularised_and_is_refused_without(tmp_path, capsys):
+    lower = ["--lower-shear-modulus", "2e10", "--lower-shear-wave-speed", "2800", "--lower-poisson", "0.3"]
+    code, out, err = _call(["halfspace", "run", "--out", str(tmp_path / "r.nc"), "--law", "rate-state",
+                            "--traction", "31e6", *lower, *SMALL], capsys)
+    assert code == 2 and err.count("\n") == 1 and "--relaxation-slip" in err
+    code, out, err = _call(["halfspace", "run", "--out", str(tmp_path / "r.nc"), "--law", "rate-state",
+                            "--traction", "31e6", "--relaxation-slip", "1e-3", "--relaxation-speed", "1e-6",
+                            "--json", *lower, *SMALL], capsys)
+    data = json.loads(out)
+    assert code == 0 and data["law"] == "PrakashClifton" and data["well_posed"] is True, err
+    assert all(math.isfinite(v) for v in data.values() if isinstance(v, float))
+
+
 KILLABLE = textwrap.dedent("""
     import sys
     import stickslip.sbim.runfile as runfile
@@ -128,6 +157,12 @@ def test_a_killed_run_resumes_to_the_uninterrupted_result_and_another_runs_file_
     (["--duration", "nan"], "--duration"),
     (["--beta", "0.9"], "--beta"),
     (["--law", "free", "--relaxation-slip", "1", "--relaxation-speed", "1"], "--relaxation-slip"),
+    (["--a", "0.01"], "--a"),
+    (["--law", "coulomb", "--slip-law"], "--slip-law"),
+    (["--law", "rate-state", "--normal-traction", "0"], "--normal-traction"),
+    (["--law", "rate-state", "--a", "2"], "--a"),
+    (["--law", "rate-state", "--slip-rate", "0"], "--slip-rate"),
+    (["--law", "rate-state", "--dc", "-1"], "--dc"),
 ])
 def test_bad_options_are_one_line_naming_the_option(tmp_path, capsys, args, flag):
     code, out, err = _call(["halfspace", "run", "--out", str(tmp_path / "r.nc"), *args], capsys)

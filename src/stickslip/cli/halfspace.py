@@ -12,7 +12,7 @@ import typer
 
 from ..errors import MISSING, ParameterError
 from ..quantities import HALFSPACE as Q
-from ..quantities import SBIM
+from ..quantities import RSF, SBIM
 from .fault import fault
 from .helptext import Typer
 from .common import (FIGURE_HELP, FIGURE_SUFFIXES, Overwrite, Replace, command_line, declared, emit, output_path,
@@ -90,10 +90,51 @@ class Law(str, Enum):
     coulomb = "coulomb"
     slip_weakening = "slip-weakening"
     free = "free"
+    rate_state = "rate-state"
 
 
 def _sb(name: str, flag: str, note: str = ""):
     return declared(SBIM[name], flag, note)
+
+
+def _rs(name: str, flag: str, default: str):
+    return declared(RSF[name], flag, f"--law rate-state only; default {default}.")
+
+
+#: The rate-and-state options and their defaults (given with another law: refused).
+RATE_STATE = {"--a": 0.010, "--b": 0.015, "--dc": 0.008, "--f0": 0.6, "--v-ref": 1e-6, "--slip-rate": 1e-6}
+
+
+def _rate_state(law, options: dict, slip_law: bool, normal_traction: float, shear_tractions: tuple,
+                relaxation: bool, lower):
+    """The rate-and-state friction of ``--law rate-state`` from its options (None with another law, where
+    they are refused)."""
+    given = [flag for flag, value in options.items() if value is not None] + (["--slip-law"] if slip_law else [])
+    if law is not Law.rate_state:
+        if given:
+            value = options.get(given[0], True)
+            raise ParameterError(given[0], value, f"left out with --law {law.value} (a rate-and-state option)",
+                                 also=("--law",))
+        return None
+    from ..rsf import RateState
+    from ..sbim import RateStateFriction
+
+    if normal_traction >= 0.0:
+        raise ParameterError("--normal-traction", normal_traction, "< 0 with --law rate-state (a compression: the "
+                             "contact is held closed)")
+    for flag, shear in (("--traction", shear_tractions[0]), ("--patch-traction", sum(shear_tractions))):
+        if shear <= 0.0:
+            raise ParameterError(flag, shear_tractions[0] if flag == "--traction" else shear_tractions[1], "a shear traction > 0 everywhere with "
+                                 f"--law rate-state (the interface slides forwards only: --traction "
+                                 f"{shear_tractions[0]:g} plus --patch-traction {shear_tractions[1]:g} on the patch)")
+    if lower is not None and not relaxation:
+        raise ParameterError("--relaxation-slip", MISSING, "given with --law rate-state and a lower half-space (the "
+                             "pressure's regularisation, with --relaxation-speed: unregularised it is ill-posed "
+                             "between two materials)", also=("--law", "--lower-shear-modulus"))
+    value = {flag: RATE_STATE[flag] if v is None else v for flag, v in options.items()}
+    law_ = RateState(value["--a"], value["--b"], value["--dc"], f0=value["--f0"], v_ref=value["--v-ref"],
+                     evolution="slip" if slip_law else "aging")
+    return RateStateFriction(law_, -normal_traction, value["--slip-rate"])
 
 
 @app.command()
@@ -105,13 +146,24 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
         length: Annotated[float, _sb("length", "--length")] = 40e3,
         elements: Annotated[int, _sb("elements", "--elements")] = 512,
         law: Annotated[Law, typer.Option("--law", help="Interface law: unilateral contact with Coulomb or "
-                                         "slip-weakening friction, or a free surface.")] = Law.slip_weakening,
+                                         "slip-weakening friction, a free surface, or rate-and-state friction "
+                                         "(every node sliding from steady sliding at --slip-rate, the contact "
+                                         "held closed).")] = Law.slip_weakening,
         static_friction: Annotated[float, _sb("static_friction", "--static-friction")] = 0.6,
         kinetic_friction: Annotated[float, _sb("kinetic_friction", "--kinetic-friction")] = 0.5,
         weakening_slip: Annotated[float, _sb("weakening_slip", "--weakening-slip", "Slip-weakening only.")] = 0.4,
         relaxation_slip: Annotated[Optional[float], _sb("relaxation_slip", "--relaxation-slip",
                                                         "With --relaxation-speed: Prakash-Clifton.")] = None,
         relaxation_speed: Annotated[Optional[float], _sb("relaxation_speed", "--relaxation-speed")] = None,
+        a: Annotated[Optional[float], _rs("a", "--a", "0.010")] = None,
+        b: Annotated[Optional[float], _rs("b", "--b", "0.015")] = None,
+        dc: Annotated[Optional[float], _rs("dc", "--dc", "0.008")] = None,
+        f0: Annotated[Optional[float], _rs("f0", "--f0", "0.6")] = None,
+        v_ref: Annotated[Optional[float], _rs("v_ref", "--v-ref", "1e-6")] = None,
+        slip_rate: Annotated[Optional[float], _sb("slip_rate", "--slip-rate", "Of steady sliding at the start; "
+                                                  "--law rate-state only; default 1e-6.")] = None,
+        slip_law: Annotated[bool, typer.Option("--slip-law", help="Ruina's slip law instead of the aging law "
+                                               "(--law rate-state).")] = False,
         traction: Annotated[float, _sb("traction", "--traction", "Uniform.")] = 28e6,
         normal_traction: Annotated[float, _sb("normal_traction", "--normal-traction", "Uniform.")] = -50e6,
         patch_traction: Annotated[float, _sb("patch_traction", "--patch-traction")] = 3e6,
@@ -169,11 +221,14 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
     if centre > length or patch_width > length:
         bad = ("--patch-centre", centre) if centre > length else ("--patch-width", patch_width)
         raise ParameterError(*bad, f"at most --length = {length:g} m", also=("--length",))
-    if kinetic_friction > static_friction and law is not Law.free:
+    if kinetic_friction > static_friction and law in (Law.coulomb, Law.slip_weakening):
         raise ParameterError("--kinetic-friction", kinetic_friction, f"at most --static-friction = {static_friction:g}")
+    rate_state = _rate_state(law, {"--a": a, "--b": b, "--dc": dc, "--f0": f0, "--v-ref": v_ref,
+                                   "--slip-rate": slip_rate}, slip_law, normal_traction,
+                             (traction, patch_traction), relaxation_slip is not None, lower)
     friction = {Law.coulomb: lambda: CoulombFriction(static_friction, kinetic_friction),
                 Law.slip_weakening: lambda: SlipWeakeningFriction(static_friction, kinetic_friction, weakening_slip),
-                Law.free: FreeSurface}[law]()
+                Law.free: FreeSurface, Law.rate_state: lambda: rate_state}[law]()
     if relaxation_slip is not None:
         friction = PrakashClifton(friction, relaxation_slip, relaxation_speed)
     load = patch_load(traction, normal_traction, patch_traction, patch_width, centre)
@@ -188,7 +243,7 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
         "shear_modulus", "shear_wave_speed", "poisson", "length", "elements", "static_friction", "kinetic_friction",
         "weakening_slip", "relaxation_slip", "relaxation_speed", "traction", "normal_traction", "patch_traction",
         "patch_width", "centre", "beta", "history_periods", "steps", "every", "lower_shear_modulus",
-        "lower_shear_wave_speed", "lower_poisson")}}
+        "lower_shear_wave_speed", "lower_poisson", "a", "b", "dc", "f0", "v_ref", "slip_rate", "slip_law")}}
     key = hashlib.sha256(json_module.dumps(settings, sort_keys=True).encode()).hexdigest()
     with exclusive(out, "--out"):
         if overwrite and out.exists():
