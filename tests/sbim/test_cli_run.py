@@ -157,6 +157,7 @@ def test_a_killed_run_resumes_to_the_uninterrupted_result_and_another_runs_file_
     (["--duration", "nan"], "--duration"),
     (["--beta", "0.9"], "--beta"),
     (["--law", "free", "--relaxation-slip", "1", "--relaxation-speed", "1"], "--relaxation-slip"),
+    (["--patch-speed", "1e7"], "--patch-speed"),
     (["--a", "0.01"], "--a"),
     (["--law", "coulomb", "--slip-law"], "--slip-law"),
     (["--law", "rate-state", "--normal-traction", "0"], "--normal-traction"),

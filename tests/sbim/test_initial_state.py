@@ -1,7 +1,8 @@
 """In-plane runs from a state with a past (`stickslip.sbim.initial.InitialState`), and the paper's
 stick-slip waves as such states (`stickslip.sbim.waves.WaveOnGrid`).
 
-* A free surface under a shear load travelling at ``c = -c_s / 2`` (one Fourier mode), started in its
+* A free surface under a shear load travelling at ``c = -c_s / 2`` (one Fourier mode, `mode_load` with its
+  ``load_speed``), started in its
   steady state (written here from Lamé's potentials, not from the code's stiffness), stays in it over
   the load's transit of the period: largest errors 5.1 % (slip rate) and 6.1 % (opening rate) in a first
   exploratory run (N = 64, mode 3, beta = 0.25; the scheme is first order and the start is the continuous
@@ -22,6 +23,7 @@ from stickslip.errors import ParameterError
 from stickslip.halfspace import decaying_wave
 from stickslip.sbim import CoulombFriction, FreeSurface, InplaneProblem, run_inplane
 from stickslip.sbim.initial import InitialState
+from stickslip.sbim.inplane import mode_load
 from stickslip.sbim.waves import WaveOnGrid
 
 MU, CS, NU, L = 3e10, 3000.0, 0.25, 1.0
@@ -49,7 +51,7 @@ def _moving_load_run(start_steady: bool, N=64, mode=3, tau=1e6):
         phase = np.exp(1j * k * (x - c * t))
         return (ux * phase).real, (uy * phase).real, (s * ux * phase).real, (s * uy * phase).real
 
-    load = lambda xx, t: (tau * np.cos(k * (xx - c * t)), np.zeros(np.shape(xx)))  # noqa: E731
+    load = mode_load(tau, 0.0, mode, L, load_speed=c)  # the package's moving load
     initial = InitialState(*steady(0.0)[:2], lambda t: steady(t)[2:]) if start_steady else None
     problem = InplaneProblem(MU, CS, NU, L, N, load, FreeSurface(), beta=0.25, initial=initial)
     steps = int(L / abs(c) / problem.dt)
@@ -65,6 +67,15 @@ def _moving_load_run(start_steady: bool, N=64, mode=3, tau=1e6):
 def test_a_free_surface_under_a_moving_load_stays_in_its_steady_state():
     errors = _moving_load_run(start_steady=True)
     assert errors.max() < 0.08, errors
+
+
+def test_a_moving_patch_is_the_standing_one_carried_at_its_speed():
+    from stickslip.sbim.inplane import patch_load
+
+    x = np.arange(64) / 64.0
+    moving, standing = patch_load(1.0, -2.0, 5.0, 0.1, 0.25, load_speed=-3.0), patch_load(1.0, -2.0, 5.0, 0.1, 0.875)
+    for a, b in zip(moving(x, 0.125), standing(x, 0.0)):  # 0.25 - 3 / 8 = -0.125, that is 0.875 on the period
+        assert np.array_equal(a, b)
 
 
 def test_from_rest_the_same_run_is_far_from_the_steady_state():

@@ -169,6 +169,8 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
         patch_traction: Annotated[float, _sb("patch_traction", "--patch-traction")] = 3e6,
         patch_width: Annotated[float, _sb("patch_width", "--patch-width")] = 8e3,
         patch_centre: Annotated[Optional[float], _sb("patch_centre", "--patch-centre", "Default: the middle.")] = None,
+        patch_speed: Annotated[float, _sb("load_speed", "--patch-speed", "The patch moving along x (a moving "
+                                          "load; 0: standing).")] = 0.0,
         beta: Annotated[float, _sb("beta", "--beta")] = 0.3,
         history_periods: Annotated[float, _sb("history_periods", "--history-periods")] = 16.0,
         duration: Annotated[Optional[float], _sb("t_end", "--duration", "Default: 1.5 length / c_s.")] = None,
@@ -231,7 +233,7 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
                 Law.free: FreeSurface, Law.rate_state: lambda: rate_state}[law]()
     if relaxation_slip is not None:
         friction = PrakashClifton(friction, relaxation_slip, relaxation_speed)
-    load = patch_load(traction, normal_traction, patch_traction, patch_width, centre)
+    load = patch_load(traction, normal_traction, patch_traction, patch_width, centre, patch_speed)
     problem = InplaneProblem(shear_modulus, shear_wave_speed, poisson, length, elements, load, friction, beta=beta,
                              history_periods=history_periods, lower=lower)
     t_end = 1.5 * length / shear_wave_speed if duration is None else duration
@@ -242,7 +244,7 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
     settings = {"version": __version__, "law": law.value, **{k: v for k, v in locals().items() if k in (
         "shear_modulus", "shear_wave_speed", "poisson", "length", "elements", "static_friction", "kinetic_friction",
         "weakening_slip", "relaxation_slip", "relaxation_speed", "traction", "normal_traction", "patch_traction",
-        "patch_width", "centre", "beta", "history_periods", "steps", "every", "lower_shear_modulus",
+        "patch_width", "centre", "patch_speed", "beta", "history_periods", "steps", "every", "lower_shear_modulus",
         "lower_shear_wave_speed", "lower_poisson", "a", "b", "dc", "f0", "v_ref", "slip_rate", "slip_law")}}
     key = hashlib.sha256(json_module.dumps(settings, sort_keys=True).encode()).hexdigest()
     with exclusive(out, "--out"):

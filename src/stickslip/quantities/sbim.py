@@ -66,6 +66,8 @@ SBIM = Domain("sbim", units="SI", quantities=[
       "[-1e11, 1e11]", symbol="dtau"),
     Q("patch_width", "m", "width of the patch along x (0: none)", "[0, 1e9]", symbol="w"),
     Q("patch_centre", "m", "centre of the patch along x", "[0, 1e9]", symbol="x_c"),
+    Q("load_speed", "m/s", "speed of a moving load along x (0: standing; negative: towards -x)", "[-1e6, 1e6]",
+      symbol="v_L"),
     Q("mode", "1", "Fourier mode number along the period (0: uniform)", "[0, 524288]", integer=True),
     Q("plate_rate", "m/s", "plate rate: the fault's slip rate below its rate-and-state part", "[1e-15, 1]",
       symbol="V_p"),

@@ -71,25 +71,33 @@ def uniform_load(traction: float, normal_traction: float) -> Callable:
     return lambda x, t: (np.full(np.shape(x), tau), np.full(np.shape(x), sigma))
 
 
-def mode_load(traction: float, normal_traction: float, mode: int, length: float) -> Callable:
-    """``(traction, normal_traction) cos(2 pi mode x / length)`` [Pa] from ``t = 0``."""
+def mode_load(traction: float, normal_traction: float, mode: int, length: float, load_speed: float = 0.0) -> Callable:
+    """``(traction, normal_traction) cos(2 pi mode (x - load_speed t) / length)`` [Pa] from ``t = 0`` (a
+    moving load with ``load_speed`` [m/s])."""
     tau, sigma = Q.check("traction", traction), Q.check("normal_traction", normal_traction)
     mode, length = Q.check("mode", mode), Q.check("length", length)
-    return lambda x, t: (tau * np.cos(2.0 * math.pi * mode * x / length),
-                         sigma * np.cos(2.0 * math.pi * mode * x / length))
+    speed = Q.check("load_speed", load_speed)
+
+    def load(x, t):
+        shape = np.cos(2.0 * math.pi * mode * (x - speed * t) / length)
+        return tau * shape, sigma * shape
+
+    return load
 
 
 def patch_load(traction: float, normal_traction: float, patch_traction: float, patch_width: float,
-               patch_centre: float) -> Callable:
+               patch_centre: float, load_speed: float = 0.0) -> Callable:
     """Uniform shear ``traction`` and ``normal_traction`` [Pa], with ``patch_traction`` more shear on
-    ``|x - patch_centre| < patch_width / 2`` [m] (periodic), from ``t = 0``."""
+    ``|x - patch_centre - load_speed t| < patch_width / 2`` [m] (periodic; ``load_speed`` [m/s]: the patch
+    moving), from ``t = 0``."""
     tau, sigma = Q.check("traction", traction), Q.check("normal_traction", normal_traction)
     extra = Q.check("patch_traction", patch_traction)
     width, centre = Q.check("patch_width", patch_width), Q.check("patch_centre", patch_centre)
+    speed = Q.check("load_speed", load_speed)
 
     def load(x, t):
         period = float(x[-1] + x[1] - x[0]) if np.size(x) > 1 else 1.0
-        d = np.abs((x - centre + period / 2) % period - period / 2)
+        d = np.abs((x - centre - speed * t + period / 2) % period - period / 2)
         return np.where(d < width / 2, tau + extra, tau), np.full(np.shape(x), sigma)
 
     return load
