@@ -87,6 +87,20 @@ def test_rate_and_state_holds_steady_sliding_under_its_steady_drive(tmp_path, ca
     assert json.loads(out)["law"] == "RateStateFriction"
 
 
+def test_rate_and_state_starts_in_steady_sliding_by_default(tmp_path, capsys):
+    """--traction's default with --law rate-state is the steady drive at --slip-rate: without a patch every
+    node keeps that rate; the JSON says the traction and the law's options used."""
+    code, out, err = _call(["halfspace", "run", "--out", str(tmp_path / "r.nc"), "--law", "rate-state",
+                            "--slip-rate", "2e-5", "--patch-width", "0", "--json", *SMALL], capsys)
+    assert code == 0, err
+    data = json.loads(out)
+    with xr.open_dataset(tmp_path / "r.nc") as ds:
+        assert np.abs(ds.slip_rate.values / 2e-5 - 1).max() < 1e-9
+    steady = 50e6 * (0.6 + (0.010 - 0.015) * math.log(2e-5 / 1e-6)) + 3e10 / 3464.0 * 2e-5  # written here
+    assert data["traction"] == pytest.approx(steady, rel=1e-12) and data["a"] == 0.010 and data["slip_law"] is False
+    assert "static_friction" not in data and data["units"]["dc"]["units"] == "m"
+
+
 def test_rate_and_state_between_two_materials_runs_regularised_and_is_refused_without(tmp_path, capsys):
     lower = ["--lower-shear-modulus", "2e10", "--lower-shear-wave-speed", "2800", "--lower-poisson", "0.3"]
     code, out, err = _call(["halfspace", "run", "--out", str(tmp_path / "r.nc"), "--law", "rate-state",
@@ -160,7 +174,16 @@ def test_a_killed_run_resumes_to_the_uninterrupted_result_and_another_runs_file_
     (["--patch-speed", "1e7"], "--patch-speed"),
     (["--a", "0.01"], "--a"),
     (["--law", "coulomb", "--slip-law"], "--slip-law"),
+    (["--law", "rate-state", "--static-friction", "0.9"], "--static-friction"),
+    (["--law", "coulomb", "--weakening-slip", "0.1"], "--weakening-slip"),
+    (["--law", "free", "--kinetic-friction", "0.1"], "--kinetic-friction"),
+    (["--patch-speed", "3000", "--patch-width", "0"], "--patch-speed"),
+    (["--duration", "1e-9"], "--duration"),
     (["--law", "rate-state", "--normal-traction", "0"], "--normal-traction"),
+    (["--law", "rate-state", "--normal-traction", "-1e11"], "--normal-traction"),
+    (["--law", "rate-state", "--a", "1e-8", "--traction", "28e6"], "--traction"),
+    (["--law", "rate-state", "--f0", "10", "--traction", "1e6"], "--traction"),
+    (["--law", "rate-state", "--patch-traction", "-40e6"], "--patch-traction"),
     (["--law", "rate-state", "--a", "2"], "--a"),
     (["--law", "rate-state", "--slip-rate", "0"], "--slip-rate"),
     (["--law", "rate-state", "--dc", "-1"], "--dc"),

@@ -86,6 +86,9 @@ def fields(b: B, c: C, v_star: VStar, nu: Nu = 0.3, mu: Mu = 0.5, system: System
             plotting.save(plotting.plot_interface_fields(ds), plot)
 
 
+RSF_NORMAL = SBIM["normal_stress"]
+
+
 class Law(str, Enum):
     coulomb = "coulomb"
     slip_weakening = "slip-weakening"
@@ -101,40 +104,67 @@ def _rs(name: str, flag: str, default: str):
     return declared(RSF[name], flag, f"--law rate-state only; default {default}.")
 
 
-#: The rate-and-state options and their defaults (given with another law: refused).
-RATE_STATE = {"--a": 0.010, "--b": 0.015, "--dc": 0.008, "--f0": 0.6, "--v-ref": 1e-6, "--slip-rate": 1e-6}
+#: The options of one law or another, their defaults and the laws that use them (given with another: refused).
+LAW_OPTIONS = {"--static-friction": (0.6, ("coulomb", "slip-weakening")),
+               "--kinetic-friction": (0.5, ("coulomb", "slip-weakening")),
+               "--weakening-slip": (0.4, ("slip-weakening",)),
+               "--a": (0.010, ("rate-state",)), "--b": (0.015, ("rate-state",)), "--dc": (0.008, ("rate-state",)),
+               "--f0": (0.6, ("rate-state",)), "--v-ref": (1e-6, ("rate-state",)),
+               "--slip-rate": (1e-6, ("rate-state",)), "--slip-law": (False, ("rate-state",))}
+#: The background shear traction of the laws other than rate-and-state's [Pa].
+TRACTION = 28e6
 
 
-def _rate_state(law, options: dict, slip_law: bool, normal_traction: float, shear_tractions: tuple,
-                relaxation: bool, lower):
-    """The rate-and-state friction of ``--law rate-state`` from its options (None with another law, where
-    they are refused)."""
-    given = [flag for flag, value in options.items() if value is not None] + (["--slip-law"] if slip_law else [])
-    if law is not Law.rate_state:
-        if given:
-            value = options.get(given[0], True)
-            raise ParameterError(given[0], value, f"left out with --law {law.value} (a rate-and-state option)",
-                                 also=("--law",))
-        return None
+def _law_options(law, given: dict) -> dict:
+    """Each law option's value (its default where not given), refusing one given with a law that does not use
+    it."""
+    for flag, value in given.items():
+        if value not in (None, False) and law.value not in LAW_OPTIONS[flag][1]:
+            raise ParameterError(flag, value, f"left out with --law {law.value} (an option of --law "
+                                 f"{' or '.join(LAW_OPTIONS[flag][1])} only)")
+    return {flag: LAW_OPTIONS[flag][0] if value is None else value for flag, value in given.items()}
+
+
+def _rate_state(value: dict, normal_traction: float, relaxation: bool, lower):
+    """The rate-and-state friction of ``--law rate-state`` (its options in ``value``)."""
     from ..rsf import RateState
     from ..sbim import RateStateFriction
 
-    if normal_traction >= 0.0:
-        raise ParameterError("--normal-traction", normal_traction, "< 0 with --law rate-state (a compression: the "
-                             "contact is held closed)")
-    for flag, shear in (("--traction", shear_tractions[0]), ("--patch-traction", sum(shear_tractions))):
-        if shear <= 0.0:
-            raise ParameterError(flag, shear_tractions[0] if flag == "--traction" else shear_tractions[1], "a shear traction > 0 everywhere with "
-                                 f"--law rate-state (the interface slides forwards only: --traction "
-                                 f"{shear_tractions[0]:g} plus --patch-traction {shear_tractions[1]:g} on the patch)")
+    pressure = RSF_NORMAL.range
+    if not pressure.lo <= -normal_traction <= pressure.hi:
+        raise ParameterError("--normal-traction", normal_traction, f"in [{-pressure.hi:g}, {-pressure.lo:g}] Pa with "
+                             "--law rate-state (a compression: the contact is held closed)")
     if lower is not None and not relaxation:
         raise ParameterError("--relaxation-slip", MISSING, "given with --law rate-state and a lower half-space (the "
                              "pressure's regularisation, with --relaxation-speed: unregularised it is ill-posed "
-                             "between two materials)", also=("--law", "--lower-shear-modulus"))
-    value = {flag: RATE_STATE[flag] if v is None else v for flag, v in options.items()}
-    law_ = RateState(value["--a"], value["--b"], value["--dc"], f0=value["--f0"], v_ref=value["--v-ref"],
-                     evolution="slip" if slip_law else "aging")
-    return RateStateFriction(law_, -normal_traction, value["--slip-rate"])
+                             "between two materials)")
+    law = RateState(value["--a"], value["--b"], value["--dc"], f0=value["--f0"], v_ref=value["--v-ref"],
+                    evolution="slip" if value["--slip-law"] else "aging")
+    return RateStateFriction(law, -normal_traction, value["--slip-rate"])
+
+
+def _balanced(rate_state, damping: float, shears: dict) -> None:
+    """Refuse a rate-and-state start whose shear no slip rate balances (``shears``: option -> (its value, the
+    traction it makes))."""
+    import math
+
+    import numpy as np
+
+    from ..errors import NoSolutionError
+    from ..sbim.ratestate import slip_rates
+
+    psi = rate_state.initial_psi(1)
+    for flag, (value, shear) in shears.items():
+        if shear <= 0.0:
+            raise ParameterError(flag, value, f"a shear traction > 0 with --law rate-state (the interface slides "
+                                 f"forwards only; here {shear:g} Pa)")
+        try:
+            slip_rates(rate_state.law, rate_state.normal_stress, damping, np.array([shear]), psi,
+                       np.array([math.log(rate_state.slip_rate)]))
+        except NoSolutionError:
+            raise ParameterError(flag, value, f"a shear traction the rate-and-state strength can balance at the start "
+                                 f"(at {shear:g} Pa no slip rate above 1e-300 m/s does; the steady drive at --slip-rate "
+                                 f"is {rate_state.steady_drive(damping):.6g} Pa)") from None
 
 
 @app.command()
@@ -149,9 +179,12 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
                                          "slip-weakening friction, a free surface, or rate-and-state friction "
                                          "(every node sliding from steady sliding at --slip-rate, the contact "
                                          "held closed).")] = Law.slip_weakening,
-        static_friction: Annotated[float, _sb("static_friction", "--static-friction")] = 0.6,
-        kinetic_friction: Annotated[float, _sb("kinetic_friction", "--kinetic-friction")] = 0.5,
-        weakening_slip: Annotated[float, _sb("weakening_slip", "--weakening-slip", "Slip-weakening only.")] = 0.4,
+        static_friction: Annotated[Optional[float], _sb("static_friction", "--static-friction", "Coulomb and "
+                                                        "slip-weakening; default 0.6.")] = None,
+        kinetic_friction: Annotated[Optional[float], _sb("kinetic_friction", "--kinetic-friction", "Coulomb and "
+                                                         "slip-weakening; default 0.5.")] = None,
+        weakening_slip: Annotated[Optional[float], _sb("weakening_slip", "--weakening-slip", "Slip-weakening only; "
+                                                       "default 0.4.")] = None,
         relaxation_slip: Annotated[Optional[float], _sb("relaxation_slip", "--relaxation-slip",
                                                         "With --relaxation-speed: Prakash-Clifton.")] = None,
         relaxation_speed: Annotated[Optional[float], _sb("relaxation_speed", "--relaxation-speed")] = None,
@@ -160,17 +193,20 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
         dc: Annotated[Optional[float], _rs("dc", "--dc", "0.008")] = None,
         f0: Annotated[Optional[float], _rs("f0", "--f0", "0.6")] = None,
         v_ref: Annotated[Optional[float], _rs("v_ref", "--v-ref", "1e-6")] = None,
-        slip_rate: Annotated[Optional[float], _sb("slip_rate", "--slip-rate", "Of steady sliding at the start; "
-                                                  "--law rate-state only; default 1e-6.")] = None,
+        slip_rate: Annotated[Optional[float], _sb("slip_rate", "--slip-rate", "--law rate-state only: every "
+                                                  "node's state that of steady sliding at this rate, and so its "
+                                                  "rate where the shear is the steady drive (--traction's "
+                                                  "default); default 1e-6.")] = None,
         slip_law: Annotated[bool, typer.Option("--slip-law", help="Ruina's slip law instead of the aging law "
                                                "(--law rate-state).")] = False,
-        traction: Annotated[float, _sb("traction", "--traction", "Uniform.")] = 28e6,
+        traction: Annotated[Optional[float], _sb("traction", "--traction", "Uniform. Default: 28e6; with --law "
+                                                 "rate-state the steady drive at --slip-rate.")] = None,
         normal_traction: Annotated[float, _sb("normal_traction", "--normal-traction", "Uniform.")] = -50e6,
         patch_traction: Annotated[float, _sb("patch_traction", "--patch-traction")] = 3e6,
         patch_width: Annotated[float, _sb("patch_width", "--patch-width")] = 8e3,
         patch_centre: Annotated[Optional[float], _sb("patch_centre", "--patch-centre", "Default: the middle.")] = None,
-        patch_speed: Annotated[float, _sb("load_speed", "--patch-speed", "The patch moving along x (a moving "
-                                          "load; 0: standing).")] = 0.0,
+        patch_speed: Annotated[float, _sb("load_speed", "--patch-speed", "Of the patch, at most c_s / --beta "
+                                          "(a cell per step).")] = 0.0,
         beta: Annotated[float, _sb("beta", "--beta")] = 0.3,
         history_periods: Annotated[float, _sb("history_periods", "--history-periods")] = 16.0,
         duration: Annotated[Optional[float], _sb("t_end", "--duration", "Default: 1.5 length / c_s.")] = None,
@@ -223,20 +259,39 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
     if centre > length or patch_width > length:
         bad = ("--patch-centre", centre) if centre > length else ("--patch-width", patch_width)
         raise ParameterError(*bad, f"at most --length = {length:g} m", also=("--length",))
+    value = _law_options(law, {"--static-friction": static_friction, "--kinetic-friction": kinetic_friction,
+                               "--weakening-slip": weakening_slip, "--a": a, "--b": b, "--dc": dc, "--f0": f0,
+                               "--v-ref": v_ref, "--slip-rate": slip_rate, "--slip-law": slip_law})
+    static_friction, kinetic_friction = value["--static-friction"], value["--kinetic-friction"]
     if kinetic_friction > static_friction and law in (Law.coulomb, Law.slip_weakening):
         raise ParameterError("--kinetic-friction", kinetic_friction, f"at most --static-friction = {static_friction:g}")
-    rate_state = _rate_state(law, {"--a": a, "--b": b, "--dc": dc, "--f0": f0, "--v-ref": v_ref,
-                                   "--slip-rate": slip_rate}, slip_law, normal_traction,
-                             (traction, patch_traction), relaxation_slip is not None, lower)
+    if patch_speed != 0.0 and patch_width == 0.0:
+        raise ParameterError("--patch-speed", patch_speed, "left out with --patch-width 0 (no patch to move)")
     friction = {Law.coulomb: lambda: CoulombFriction(static_friction, kinetic_friction),
-                Law.slip_weakening: lambda: SlipWeakeningFriction(static_friction, kinetic_friction, weakening_slip),
-                Law.free: FreeSurface, Law.rate_state: lambda: rate_state}[law]()
+                Law.slip_weakening: lambda: SlipWeakeningFriction(static_friction, kinetic_friction,
+                                                                  value["--weakening-slip"]),
+                Law.free: FreeSurface,
+                Law.rate_state: lambda: _rate_state(value, normal_traction, relaxation_slip is not None, lower)}[law]()
+    damping = shear_modulus / shear_wave_speed if lower is None else 1.0 / (
+        shear_wave_speed / shear_modulus + lower.shear_wave_speed / lower.shear_modulus)  # the shear's, in series
+    if traction is None:
+        traction = friction.steady_drive(damping) if law is Law.rate_state else TRACTION
+    if law is Law.rate_state:
+        shears = {"--traction": (traction, traction)}
+        if patch_width > 0.0:
+            shears["--patch-traction"] = (patch_traction, traction + patch_traction)
+        _balanced(friction, damping, shears)
     if relaxation_slip is not None:
         friction = PrakashClifton(friction, relaxation_slip, relaxation_speed)
     load = patch_load(traction, normal_traction, patch_traction, patch_width, centre, patch_speed)
     problem = InplaneProblem(shear_modulus, shear_wave_speed, poisson, length, elements, load, friction, beta=beta,
                              history_periods=history_periods, lower=lower)
+    if abs(patch_speed) * problem.dt > problem.dx:
+        raise ParameterError("--patch-speed", patch_speed, f"at most {problem.dx / problem.dt:.6g} m/s in size here (a "
+                             "cell per step: --length / --elements / dt)")
     t_end = 1.5 * length / shear_wave_speed if duration is None else duration
+    if t_end < problem.dt:
+        raise ParameterError("--duration", t_end, f"at least one step, {problem.dt:.4g} s here")
     if t_end / problem.dt > 1e9:
         raise ParameterError("--duration", t_end, f"at most {1e9 * problem.dt:.4g} s here (1e9 steps of {problem.dt:.3g} s)",
                              also=("--elements", "--beta"))
@@ -245,7 +300,8 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
         "shear_modulus", "shear_wave_speed", "poisson", "length", "elements", "static_friction", "kinetic_friction",
         "weakening_slip", "relaxation_slip", "relaxation_speed", "traction", "normal_traction", "patch_traction",
         "patch_width", "centre", "patch_speed", "beta", "history_periods", "steps", "every", "lower_shear_modulus",
-        "lower_shear_wave_speed", "lower_poisson", "a", "b", "dc", "f0", "v_ref", "slip_rate", "slip_law")}}
+        "lower_shear_wave_speed", "lower_poisson")}, **{flag: v for flag, v in value.items()
+                                                        if law.value in LAW_OPTIONS[flag][1]}}
     key = hashlib.sha256(json_module.dumps(settings, sort_keys=True).encode()).hexdigest()
     with exclusive(out, "--out"):
         if overwrite and out.exists():
@@ -262,7 +318,16 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
     from ..sbim.energy import energy_book  # the energy books at the end
 
     summary.update({k: v for k, v in energy_book(result).to_dict().items() if k != "t"})
-    emit(summary, json, "interface run", model="sbim")  # an ill-posed law is said on stderr by the run (its log)
+    # what the run was given beyond the problem's own numbers: the loading and the law's options
+    given = {"traction": traction, "normal_traction": normal_traction, "load_speed": patch_speed,
+             **({} if relaxation_slip is None else {"relaxation_slip": relaxation_slip,
+                                                    "relaxation_speed": relaxation_speed}),
+             **{flag[2:].replace("-", "_"): v for flag, v in value.items() if law.value in LAW_OPTIONS[flag][1]}}
+    meanings = {k: (RSF[k].units, RSF[k].meaning) for k in ("a", "b", "dc", "f0", "v_ref") if k in given}
+    if "slip_law" in given:
+        meanings["slip_law"] = ("1", "Ruina's slip law (false: the aging law)")
+    emit({**summary, **given}, json, "interface run", model="sbim", meanings=meanings)  # an ill-posed law is said
+    # on stderr by the run (its log)
     if plot:
         from .. import plotting
 

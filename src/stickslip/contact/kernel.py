@@ -247,9 +247,9 @@ def stencil_apply(C, u, out):
                     s0[j] += c00 * x + c01 * y
                     s1[j] += c10 * x + c11 * y
         base = 2 * i * N
-        for j in range(N):
-            out[base + 2 * j] = -s0[j]
-            out[base + 2 * j + 1] = -s1[j]
+        for j in range(N):  # 0 - s, as the interleaved loop's subtractions from 0 (-0.0 and NaN's sign too)
+            out[base + 2 * j] = 0.0 - s0[j]
+            out[base + 2 * j + 1] = 0.0 - s1[j]
 
 
 @njit(cache=True)

@@ -95,7 +95,7 @@ SBIM = Domain("sbim", units="SI", quantities=[
     Q("perturbation", "m", "amplitude of a slip perturbation cos(2 pi mode x / L) added at the start",
       "[-1e3, 1e3]"),
     Q("normal_stress", "Pa", "normal stress on the interface (rate-and-state)", "[1e-3, 1e10]", symbol="sigma"),
-    Q("slip_rate", "m/s", "slip rate (of steady sliding at the start: the quasi-dynamic interface's)",
+    Q("slip_rate", "m/s", "slip rate of steady sliding at the start (rate-and-state)",
       "[1e-20, 1e4]", symbol="V"),
     Q("stressing_rate", "Pa/s", "rate of the applied shear traction after the start", "[-1e11, 1e11]"),
     Q("t_end", "s", "end time", "(0, 1e300]"),

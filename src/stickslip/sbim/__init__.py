@@ -44,7 +44,7 @@ from .antiplane import (AntiplaneProblem, AntiplaneRun, Coulomb, FreeSurface, Sl
 from .flutter import (FLUTTER_ONSET, bimaterial_ill_posedness, bimaterial_roots, flutter_growth, flutter_roots,
                       ill_posedness)
 from .initial import InitialState
-from .inplane import InplaneProblem, InplaneRun, mode_load, run_inplane, uniform_load
+from .inplane import InplaneProblem, InplaneRun, mode_load, patch_load, run_inplane, uniform_load
 from .interface import CoulombFriction, PrakashClifton, SlipWeakeningFriction, slip_weakening_lengths
 from .inplane_kernels import inplane_kernel_integrals, inplane_stiffness, static_stiffness
 from .quasidynamic import QuasiDynamicProblem, QuasiDynamicRun, run_quasidynamic
@@ -56,8 +56,8 @@ from .kernels import antiplane_kernel, antiplane_kernel_integral, ragged_step_we
 __all__ = ["AntiplaneProblem", "AntiplaneRun", "Coulomb", "FreeSurface", "SlipWeakening", "mode_traction",
            "run_antiplane", "uniform_traction", "antiplane_kernel", "antiplane_kernel_integral", "step_weights",
            "ragged_step_weights", "truncated_part", "QuasiDynamicProblem", "QuasiDynamicRun", "run_quasidynamic",
-           "CoulombFriction", "InplaneProblem", "InplaneRun", "SlipWeakeningFriction", "mode_load", "run_inplane",
-           "uniform_load", "inplane_kernel_integrals", "inplane_stiffness", "static_stiffness",
+           "CoulombFriction", "InplaneProblem", "InplaneRun", "SlipWeakeningFriction", "mode_load", "patch_load",
+           "run_inplane", "uniform_load", "inplane_kernel_integrals", "inplane_stiffness", "static_stiffness",
            "check_stable", "growing_roots", "PrakashClifton", "FLUTTER_ONSET", "flutter_growth", "flutter_roots",
            "ill_posedness", "slip_weakening_lengths", "RateStateFriction", "InitialState", "Solid",
            "bimaterial_roots", "bimaterial_ill_posedness"]

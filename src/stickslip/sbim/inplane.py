@@ -416,8 +416,9 @@ def _stable(p: InplaneProblem, solid: Solid, steps: int) -> None:
     except ParameterError as err:
         if beta == p.beta:
             raise
+        why = err.allowed.removeprefix("a stable explicit scheme: ").replace("poisson", "lower poisson")
         raise ParameterError("beta", p.beta, f"a stable explicit scheme on the lower half-space too (its own "
-                             f"c_s dt / dx = {beta:.3g}): {err}", also=("history_periods", "steps")) from None
+                             f"c_s dt / dx = {beta:.3g}; {why})", also=("history_periods", "steps")) from None
 
 
 def _ill_posedness(p: InplaneProblem) -> str:
