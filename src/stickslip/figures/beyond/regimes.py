@@ -66,7 +66,7 @@ def problem(f: float, s: float, n: int, regularised: bool = True, kappa1: float 
     return InplaneProblem(MU, CS, NU, L, n, _load(f, s), law, beta=0.25)
 
 
-def _events(f: float, s: float, n: int, duration: float, regularised: bool = True, kappa1: float = KAPPA1):
+def events(f: float, s: float, n: int, duration: float, regularised: bool = True, kappa1: float = KAPPA1):
     """The first time [L / c_s] a node sticks and a node opens (nan: never), the parts of the interface
     stuck and open over the last L / c_s, the mode strongest in the slip rate at the first event (0: none),
     and the run."""
@@ -122,13 +122,13 @@ def compute(quick: bool) -> xr.Dataset:
     level = quiet.level
     quiet.setLevel(logging.ERROR)  # the Coulomb runs say they are ill-posed: that is what the refinement shows
     try:
-        grid = np.array([[_events(f, s, ELEMENTS, DURATION)[:4] for s in overstress] for f in frictions])
-        refined = np.array([[_events(f, s, n, REFINED_DURATION, kappa1=k)[:4] for n in GRIDS] for f, s, k in REFINED])
-        coulomb = np.array([_events(*REFINED[0][:2], n, COULOMB_DURATION, regularised=False)[:2] for n in GRIDS])
-        regular = np.array([[_events(REG_FRICTION, s, ELEMENTS, DURATION, kappa1=k)[:5] for k in kappas]
+        grid = np.array([[events(f, s, ELEMENTS, DURATION)[:4] for s in overstress] for f in frictions])
+        refined = np.array([[events(f, s, n, REFINED_DURATION, kappa1=k)[:4] for n in GRIDS] for f, s, k in REFINED])
+        coulomb = np.array([events(*REFINED[0][:2], n, COULOMB_DURATION, regularised=False)[:2] for n in GRIDS])
+        regular = np.array([[events(REG_FRICTION, s, ELEMENTS, DURATION, kappa1=k)[:5] for k in kappas]
                             for s in REG_OVERSTRESS])
         f, s, n, duration = PICTURED
-        pictured = _events(f, s, n, duration)[5]
+        pictured = events(f, s, n, duration)[5]
     finally:
         quiet.setLevel(level)
     fine = np.linspace(1.1, 3.2, 8 if quick else 15)
