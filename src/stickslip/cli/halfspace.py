@@ -288,10 +288,11 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
                              history_periods=history_periods, lower=lower)
     if abs(patch_speed) * problem.dt > problem.dx:
         raise ParameterError("--patch-speed", patch_speed, f"at most {problem.dx / problem.dt:.6g} m/s in size here (a "
-                             "cell per step: --length / --elements / dt)")
+                             "cell per step)", also=("--shear-wave-speed", "--beta"))
     t_end = 1.5 * length / shear_wave_speed if duration is None else duration
     if t_end < problem.dt:
-        raise ParameterError("--duration", t_end, f"at least one step, {problem.dt:.4g} s here")
+        raise ParameterError("--duration", t_end, f"at least one step, {problem.dt:.4g} s here",
+                             also=("--length", "--elements", "--beta", "--shear-wave-speed"))
     if t_end / problem.dt > 1e9:
         raise ParameterError("--duration", t_end, f"at most {1e9 * problem.dt:.4g} s here (1e9 steps of {problem.dt:.3g} s)",
                              also=("--elements", "--beta"))
