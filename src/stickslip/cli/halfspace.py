@@ -86,9 +86,6 @@ def fields(b: B, c: C, v_star: VStar, nu: Nu = 0.3, mu: Mu = 0.5, system: System
             plotting.save(plotting.plot_interface_fields(ds), plot)
 
 
-RSF_NORMAL = SBIM["normal_stress"]
-
-
 class Law(str, Enum):
     coulomb = "coulomb"
     slip_weakening = "slip-weakening"
@@ -130,7 +127,7 @@ def _rate_state(value: dict, normal_traction: float, relaxation: bool, lower):
     from ..rsf import RateState
     from ..sbim import RateStateFriction
 
-    pressure = RSF_NORMAL.range
+    pressure = SBIM["normal_stress"].range
     if not pressure.lo <= -normal_traction <= pressure.hi:
         raise ParameterError("--normal-traction", normal_traction, f"in [{-pressure.hi:g}, {-pressure.lo:g}] Pa with "
                              "--law rate-state (a compression: the contact is held closed)")
@@ -231,7 +228,7 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
                         run_inplane)
     from ..sbim.inplane import partial_run, patch_load
     from ..sbim.runfile import Checkpoint
-    from ..sbim.surface import MAX_POISSON, Solid
+    from ..sbim.surface import MAX_POISSON, Solid, interface_damping
     from ..cf import stamp
     from ..files import exclusive
     from .. import __version__
@@ -272,8 +269,7 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
                                                                   value["--weakening-slip"]),
                 Law.free: FreeSurface,
                 Law.rate_state: lambda: _rate_state(value, normal_traction, relaxation_slip is not None, lower)}[law]()
-    damping = shear_modulus / shear_wave_speed if lower is None else 1.0 / (
-        shear_wave_speed / shear_modulus + lower.shear_wave_speed / lower.shear_modulus)  # the shear's, in series
+    damping = interface_damping(Solid(shear_modulus, shear_wave_speed, poisson), lower)[0]
     if traction is None:
         traction = friction.steady_drive(damping) if law is Law.rate_state else TRACTION
     if law is Law.rate_state:
@@ -298,8 +294,8 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
                              also=("--elements", "--beta"))
     steps = max(1, int(round(t_end / problem.dt)))
     settings = {"version": __version__, "law": law.value, **{k: v for k, v in locals().items() if k in (
-        "shear_modulus", "shear_wave_speed", "poisson", "length", "elements", "static_friction", "kinetic_friction",
-        "weakening_slip", "relaxation_slip", "relaxation_speed", "traction", "normal_traction", "patch_traction",
+        "shear_modulus", "shear_wave_speed", "poisson", "length", "elements", "relaxation_slip", "relaxation_speed",
+        "traction", "normal_traction", "patch_traction",
         "patch_width", "centre", "patch_speed", "beta", "history_periods", "steps", "every", "lower_shear_modulus",
         "lower_shear_wave_speed", "lower_poisson")}, **{flag: v for flag, v in value.items()
                                                         if law.value in LAW_OPTIONS[flag][1]}}

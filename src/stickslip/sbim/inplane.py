@@ -52,7 +52,7 @@ from .interface import (LAWS, CoulombFriction, PrakashClifton, SlipWeakeningFric
                         relaxed_pressure, slip_weakening_lengths)
 from .scales import resolution_notes
 from .stability import check_stable
-from .surface import MAX_POISSON, Solid, Surface, history_windows
+from .surface import MAX_POISSON, Solid, Surface, history_windows, interface_damping
 from .inplane_kernels import inplane_truncation, wave_speed_ratio
 
 #: Most dimensionless times in a run's kernel table (`stickslip.sbim.inplane_kernels.kernel_table`).
@@ -306,8 +306,7 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
         log.warning("%s", note)
     top = Surface(solids[0], 1, k, dt, p.history_periods, steps, pre)
     bottom = None if p.lower is None else Surface(p.lower, -1, k, dt, p.history_periods, steps, pre)
-    rad = top.impedance if bottom is None else tuple(a * b / (a + b) for a, b in zip(top.impedance,
-                                                                                      bottom.impedance))
+    rad = interface_damping(p.upper, p.lower)
     x = p.x
     Ux, Uy = np.zeros(n), np.zeros(n)  # the slip and the opening
     Lx, Ly = np.zeros(n), np.zeros(n)  # the lower surface's displacement (none on a rigid body)

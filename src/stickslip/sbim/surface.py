@@ -30,7 +30,7 @@ from ..quantities.sbim import SBIM as Q
 from .history import History
 from .inplane_kernels import inplane_step_weights, static_stiffness, wave_speed_ratio
 
-__all__ = ["Solid", "Surface", "MAX_POISSON"]
+__all__ = ["Solid", "Surface", "MAX_POISSON", "interface_damping"]
 
 #: Largest Poisson's ratio in-plane (c_p / c_s = 7.1).
 MAX_POISSON = 0.49
@@ -62,6 +62,14 @@ class Solid:
         """The radiation damping ``(mu / c_s, eta mu / c_s)`` [Pa s/m], shear and normal."""
         z = self.shear_modulus / self.shear_wave_speed
         return z, self.eta * z
+
+
+def interface_damping(upper: Solid, lower: Solid | None) -> tuple[float, float]:
+    """The interface's radiation damping, shear and normal [Pa s/m]: the upper solid's on a rigid body
+    (``lower`` None), else the two solids' in series."""
+    if lower is None:
+        return upper.impedance
+    return tuple(a * b / (a + b) for a, b in zip(upper.impedance, lower.impedance))
 
 
 def history_windows(solid: Solid, k: np.ndarray, dt: float, history_periods: float) -> np.ndarray:

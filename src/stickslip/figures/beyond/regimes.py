@@ -114,6 +114,20 @@ def _growth(f: float, kappa1: float, mode: int) -> float:
     return float(roots[0].real) * 2.0 * math.pi * mode if roots.size else 0.0
 
 
+#: The four numbers `events` gives first for each run, as dataset variables: name, long name, comment.
+EVENT_VARIABLES = (("first_stick", "first time a node sticks / (L / c_s)", "NaN: no node stuck during the run"),
+                   ("first_opening", "first time a node opens / (L / c_s)", "NaN: no node opened during the run"),
+                   ("stuck_part", "part of the interface stuck over the last L / c_s", None),
+                   ("open_part", "part of the interface open over the last L / c_s", None))
+
+
+def _event_variables(prefix: str, dims: tuple, values: np.ndarray) -> dict:
+    """The variables of `EVENT_VARIABLES` from ``values[..., 0:4]`` (each run's `events`), named with ``prefix``."""
+    return {prefix + name: (dims, values[..., i], {"units": "1", "long_name": long_name,
+                                                   **({"comment": comment} if comment else {})})
+            for i, (name, long_name, comment) in enumerate(EVENT_VARIABLES)}
+
+
 def compute(quick: bool) -> xr.Dataset:
     frictions = (2.0, 3.0) if quick else (1.5, 2.0, 3.0)
     kappas = REG_KAPPAS_QUICK if quick else REG_KAPPAS
@@ -143,27 +157,13 @@ def compute(quick: bool) -> xr.Dataset:
     state = np.where(pictured.opening[::every] > 0.0, 2, np.where(pictured.slip_rate[::every] == 0.0, 0, 1))
     one = {"units": "1"}
     return xr.Dataset(
-        {"first_stick": (("friction", "overstress"), grid[..., 0], {**one, "long_name": "first time a node sticks "
-                         "/ (L / c_s)", "comment": "NaN: no node stuck during the run"}),
-         "first_opening": (("friction", "overstress"), grid[..., 1], {**one, "long_name": "first time a node opens "
-                           "/ (L / c_s)", "comment": "NaN: no node opened during the run"}),
-         "stuck_part": (("friction", "overstress"), grid[..., 2], {**one, "long_name": "part of the interface stuck "
-                        "over the last L / c_s"}),
-         "open_part": (("friction", "overstress"), grid[..., 3], {**one, "long_name": "part of the interface open "
-                      "over the last L / c_s"}),
+        {**_event_variables("", ("friction", "overstress"), grid),
          "boundary_at": ("friction", at, {**one, "long_name": "predicted overstress s* (stick first below)"}),
          "boundary": ("friction_fine", predicted, {**one, "long_name": "predicted overstress s* (stick first "
                       "below)"}),
          "refined": (("case", "elements", "quantity"), refined, {**one, "long_name": "first stick, first opening "
                      "(/ (L / c_s)), stuck and open parts, regularised"}),
-         "reg_first_stick": (("reg_overstress", "kappa1"), regular[..., 0], {**one, "long_name": "first time a "
-                             "node sticks / (L / c_s)", "comment": "NaN: no node stuck during the run"}),
-         "reg_first_opening": (("reg_overstress", "kappa1"), regular[..., 1], {**one, "long_name": "first time a "
-                               "node opens / (L / c_s)", "comment": "NaN: no node opened during the run"}),
-         "reg_stuck_part": (("reg_overstress", "kappa1"), regular[..., 2], {**one, "long_name": "part of the "
-                            "interface stuck over the last L / c_s"}),
-         "reg_open_part": (("reg_overstress", "kappa1"), regular[..., 3], {**one, "long_name": "part of the "
-                          "interface open over the last L / c_s"}),
+         **_event_variables("reg_", ("reg_overstress", "kappa1"), regular),
          "reg_mode": (("reg_overstress", "kappa1"), regular[..., 4].astype(np.int64), {**one, "long_name":
                       "mode strongest in the slip rate before the first event", "comment": "0: no event"}),
          "reg_mode_growth": (("reg_overstress", "kappa1"), mode_growth, {**one, "long_name": "the relation's "
