@@ -919,6 +919,8 @@ MUTANTS: list[dict] = [
        [T + "sbim/test_inplane_ratestate.py"]),
     _m("cli-rsf-f0-dropped", "src/stickslip/cli/halfspace.py", 'f0=value["--f0"]', "f0=0.6",
        "halfspace run --law rate-state: --f0 not reaching the law (its default taken)", [T + "sbim/test_cli_run.py"]),
+    _m("law-parameters-swapped", "src/stickslip/sbim/interface.py", '{"a": rs.a, "b": rs.b,', '{"a": rs.b, "b": rs.a,',
+       "a run's file and JSON: rate-and-state's a and b said swapped", [T + "sbim/test_cli_run.py"]),
     _m("moving-mode-load-sign", "src/stickslip/sbim/inplane.py", "np.cos(2.0 * math.pi * mode * (x - speed * t) / length)",
        "np.cos(2.0 * math.pi * mode * (x + speed * t) / length)", "mode_load: the load moving the other way",
        [T + "sbim/test_initial_state.py"]),

@@ -84,6 +84,8 @@ def test_rate_and_state_holds_steady_sliding_under_its_steady_drive(tmp_path, ca
     assert code == 0, err
     with xr.open_dataset(tmp_path / "r.nc") as ds:
         assert np.abs(ds.slip_rate.values / v - 1).max() < 1e-9
+        given = {"a": a, "b": b, "f0": f0, "v_ref": v_ref, "slip_rate": v, "dc": 0.01, "normal_stress": sigma}
+        assert {k: ds.attrs[k] for k in given} == given and ds.attrs["slip_law"] == 0  # the file says its law
     assert json.loads(out)["law"] == "RateStateFriction"
 
 

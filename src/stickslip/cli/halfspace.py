@@ -315,15 +315,12 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
     from ..sbim.energy import energy_book  # the energy books at the end
 
     summary.update({k: v for k, v in energy_book(result).to_dict().items() if k != "t"})
-    # what the run was given beyond the problem's own numbers: the loading and the law's options
-    given = {"traction": traction, "normal_traction": normal_traction, "load_speed": patch_speed,
-             **({} if relaxation_slip is None else {"relaxation_slip": relaxation_slip,
-                                                    "relaxation_speed": relaxation_speed}),
-             **{flag[2:].replace("-", "_"): v for flag, v in value.items() if law.value in LAW_OPTIONS[flag][1]}}
-    meanings = {k: (RSF[k].units, RSF[k].meaning) for k in ("a", "b", "dc", "f0", "v_ref") if k in given}
-    if "slip_law" in given:
+    # the loading the run was given (the law's options are the run's own numbers, in its summary)
+    summary.update({"traction": traction, "normal_traction": normal_traction, "load_speed": patch_speed})
+    meanings = {k: (RSF[k].units, RSF[k].meaning) for k in ("a", "b", "dc", "f0", "v_ref") if k in summary}
+    if "slip_law" in summary:
         meanings["slip_law"] = ("1", "Ruina's slip law (false: the aging law)")
-    emit({**summary, **given}, json, "interface run", model="sbim", meanings=meanings)  # an ill-posed law is said
+    emit(summary, json, "interface run", model="sbim", meanings=meanings)  # an ill-posed law is said
     # on stderr by the run (its log)
     if plot:
         from .. import plotting

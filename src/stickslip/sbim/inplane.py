@@ -48,7 +48,7 @@ from .fields import PeriodicGrid, space_time
 from .flutter import FLUTTER_ONSET, bimaterial_ill_posedness, ill_posedness
 from .initial import InitialState
 from .ratestate import RateStateFriction, advance_state, contact_step
-from .interface import (LAWS, CoulombFriction, PrakashClifton, SlipWeakeningFriction, interface_step,
+from .interface import (LAWS, CoulombFriction, PrakashClifton, SlipWeakeningFriction, interface_step, law_parameters,
                         relaxed_pressure, slip_weakening_lengths)
 from .scales import resolution_notes
 from .stability import check_stable
@@ -239,7 +239,7 @@ class InplaneRun(Result):
                 "length": p.length, "elements": p.elements, "beta": p.beta, "dt": p.dt,
                 "history_periods": p.history_periods, "kernel_truncation": self.kernel_truncation,
                 "samples": len(self.t), "law": type(p.law).__name__, "well_posed": not self.ill_posed,
-                "ill_posedness": self.ill_posed,
+                "ill_posedness": self.ill_posed, **law_parameters(p.law),
                 **({} if p.lower is None else {"lower_shear_modulus": p.lower.shear_modulus,
                                                "lower_shear_wave_speed": p.lower.shear_wave_speed,
                                                "lower_poisson": p.lower.poisson})}
