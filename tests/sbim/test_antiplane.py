@@ -155,3 +155,42 @@ def test_the_ragged_history_convolves_as_a_dense_sum_written_here_compiled_or_no
 def test_a_traction_giving_other_than_one_number_per_node_is_refused(traction):
     with pytest.raises(ParameterError, match="traction"):
         run_antiplane(AntiplaneProblem(MU, C, L, 16, traction), 5)
+
+
+@pytest.mark.parametrize("law", ["slip-weakening", "rate-state"])
+def test_a_killed_run_resumes_to_the_bit_and_another_runs_file_is_refused(tmp_path, law):
+    """Killed right after a checkpoint, a run resumed from its file is the uninterrupted one to the last bit
+    (samples, books, the stuck and sliding nodes, each mode's history, rate-and-state's state); a file kept
+    under another run's key is refused naming ``checkpoint``."""
+    from stickslip.rsf import RateState
+    from stickslip.sbim import RateStateFriction
+    from stickslip.sbim.antiplane import RUN_FORMAT, partial_antiplane
+    from stickslip.sbim.runfile import Checkpoint
+
+    from .resume import killed_and_resumed
+
+    def problem():
+        if law == "rate-state":
+            friction = RateStateFriction(RateState(0.01, 0.015, 1e-3), 5e7, 1e-6, np.linspace(0, 0.3, 32))
+            return AntiplaneProblem(MU, C, L, 32, uniform_traction(friction.steady_drive(MU / C)), friction)
+        return AntiplaneProblem(MU, C, L, 32, mode_traction(7e6, 1, L), SlipWeakening(6e6, 4e6, 1e-4))
+
+    whole, resumed = killed_and_resumed(problem, 90, 7, 41, tmp_path / "run.nc", antiplane=True)
+    assert np.abs(whole.slip_rate).max() > 0 and resumed.t.size == whole.t.size
+    for name in ("t", "slip", "slip_rate", "shear_stress", "load_work", "dissipation", "travel"):
+        assert np.array_equal(getattr(resumed, name), getattr(whole, name)), name
+    other = Checkpoint(tmp_path / "run.nc", "another", lambda s: partial_antiplane(problem(), s).to_xarray(),
+                       run_format=RUN_FORMAT, complex_names=("h",))
+    with pytest.raises(ParameterError, match="checkpoint"):
+        run_antiplane(problem(), 90, every=7, checkpoint=other)
+
+
+def test_the_checkpoint_and_progress_hooks_are_checked():
+    problem = AntiplaneProblem(MU, C, L, 16, uniform_traction(1e6))
+    with pytest.raises(ParameterError, match="checkpoint"):
+        run_antiplane(problem, 5, checkpoint="run.nc")
+    with pytest.raises(ParameterError, match="progress"):
+        run_antiplane(problem, 5, progress=3)
+    seen = []
+    run_antiplane(problem, 130, progress=lambda done, total: seen.append((done, total)))
+    assert seen == [(0, 130), (64, 130), (128, 130)]

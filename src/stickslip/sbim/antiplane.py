@@ -39,7 +39,7 @@ import numpy as np
 from ..errors import NoSolutionError, ParameterError
 from ..quantities.sbim import SBIM as Q
 from ..results import Result
-from .fields import PeriodicGrid, space_time
+from .fields import PeriodicGrid, check_hooks, space_time
 from .history import History
 from .kernels import ragged_step_weights, truncated_part
 from .ratestate import RateStateFriction, advance_state, slip_rates
@@ -49,7 +49,7 @@ from .stability import check_stable
 log = logging.getLogger("stickslip.sbim")
 
 __all__ = ["FreeSurface", "Coulomb", "SlipWeakening", "AntiplaneProblem", "AntiplaneRun", "run_antiplane",
-           "mode_traction", "uniform_traction"]
+           "mode_traction", "uniform_traction", "partial_antiplane", "RUN_FORMAT"]
 
 #: Largest history kept (modes x steps, complex numbers): 2 GB.
 MAX_HISTORY = 1 << 27
@@ -177,11 +177,19 @@ class AntiplaneRun(Result):
                           "on a rigid body (spectral boundary integral method)")
 
 
-def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1) -> AntiplaneRun:
-    """Run ``problem`` from rest for ``steps`` steps, storing every ``every``-th (and the last)."""
+def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1, checkpoint=None,
+                  progress=None) -> AntiplaneRun:
+    """Run ``problem`` from rest for ``steps`` steps, storing every ``every``-th (and the last).
+
+    ``checkpoint``: an object with ``resume() -> state or None``, ``due(step)`` and ``save(state)``
+    (`stickslip.sbim.runfile.Checkpoint` with ``run_format=RUN_FORMAT`` and ``complex_names=("h",)``
+    keeps it in a netCDF file, `partial_antiplane` its samples): the run starts from the state it
+    resumes and hands it the state whenever due and at the end; a resumed run is the uninterrupted one,
+    to the last bit. ``progress(done, total)``: called every 64 steps."""
     if not isinstance(problem, AntiplaneProblem):
         raise ParameterError("problem", problem, "an AntiplaneProblem")
     steps, every = Q.check("steps", steps), Q.check("every", every)
+    check_hooks(checkpoint, progress)
     p = problem
     n, mu, c, dt = p.elements, p.shear_modulus, p.shear_wave_speed, p.dt
     k = p.wavenumbers
@@ -192,6 +200,7 @@ def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1) -> Anti
         raise ParameterError("steps", steps, f"a history of at most {MAX_HISTORY} numbers ({int(count.sum())} asked: "
                              "fewer history_periods, elements or steps)", also=("history_periods",))
     check_stable("antiplane", p.beta, n, p.history_periods, steps)
+    state = checkpoint.resume() if checkpoint is not None else None  # another run's file: refused before any note
     if isinstance(p.law, SlipWeakening):
         half, zone = weakening_lengths(p.shear_modulus, p.law.weakening_slip,
                                        p.law.static_strength - p.law.kinetic_strength)
@@ -203,11 +212,16 @@ def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1) -> Anti
     sliding = np.zeros(n, bool)
     law = p.law
     rsf = isinstance(law, RateStateFriction)
-    if rsf:
-        psi, log_v = law.initial_psi(n), np.full(n, math.log(law.slip_rate))
-    out_t, out_slip, out_rate, out_stress, out_books = [], [], [], [], []
+    psi, log_v = (law.initial_psi(n), np.full(n, math.log(law.slip_rate))) if rsf else (np.zeros(0), np.zeros(0))
+    out = {name: [] for name in SAMPLES}
     books = np.zeros(3)  # the loading's work, the interface's dissipation, the slip's path, over the steps so far
-    for step in range(steps + 1):
+    start = 0
+    if state is not None:
+        start, slip, sliding = int(state["step"]), state["slip"].copy(), state["sliding"].astype(bool)
+        psi, log_v, books = state["psi"].copy(), state["log_v"].copy(), state["books"].copy()
+        history.buffer[:] = state["h"]
+        out = {name: list(state["out_" + name]) for name in SAMPLES}
+    for step in range(start, steps + 1):
         t = step * dt
         memory = history.memory(step)
         f = np.fft.irfft(mu * k * (memory - np.fft.rfft(slip)), n)
@@ -232,11 +246,8 @@ def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1) -> Anti
             rate = np.where(sliding, (c / mu) * np.sign(drive) * excess, 0.0)
         stress = drive - (mu / c) * rate
         if step % every == 0 or step == steps:
-            out_t.append(t)
-            out_slip.append(slip.copy())
-            out_rate.append(rate)
-            out_stress.append(stress)
-            out_books.append(books.copy())
+            for name, value in zip(SAMPLES, (t, slip.copy(), rate, stress, books.copy())):
+                out[name].append(value)
         if step == steps:
             break
         books += dt * p.dx * np.array([load @ rate, stress @ rate, np.abs(rate).sum()])
@@ -244,6 +255,32 @@ def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1) -> Anti
         if rsf:
             psi = advance_state(law.law, psi, log_v, dt)
         history.push(step, np.fft.rfft(rate))
-    books = np.array(out_books)
-    return AntiplaneRun(p, np.array(out_t), np.array(out_slip), np.array(out_rate), np.array(out_stress),
-                        truncated_part(p.history_periods), *books.T)
+        if progress is not None and step % 64 == 0:
+            progress(step, steps)
+        if checkpoint is not None and checkpoint.due(step + 1):
+            checkpoint.save(_state(step + 1, slip, sliding, psi, log_v, books, history, out))
+    if checkpoint is not None and start <= steps:
+        checkpoint.save(_state(steps + 1, slip, sliding, psi, log_v, books, history, out))
+    return partial_antiplane(p, _state(steps + 1, slip, sliding, psi, log_v, books, history, out))
+
+
+#: The samples a run keeps (and its checkpoint with them).
+SAMPLES = ("t", "slip", "slip_rate", "shear_stress", "books")
+#: The format of an antiplane run's file (`stickslip.sbim.runfile.Checkpoint`'s ``run_format``).
+RUN_FORMAT = "stickslip-sbim-antiplane-1"
+
+
+def _state(step, slip, sliding, psi, log_v, books, history, out) -> dict:
+    """A run's whole state before ``step`` (``steps + 1``: done), for its checkpoint."""
+    n = slip.size
+    shapes = {"t": (-1,), "books": (-1, 3)}
+    samples = {"out_" + name: np.array(v, dtype=float).reshape(shapes.get(name, (-1, n))) for name, v in out.items()}
+    return {"step": np.int64(step), "slip": slip, "sliding": sliding.astype(np.int8), "psi": psi, "log_v": log_v,
+            "books": books, "h": history.buffer.copy(), **samples}
+
+
+def partial_antiplane(problem: AntiplaneProblem, state: dict) -> AntiplaneRun:
+    """The samples of a checkpoint's ``state`` as a run (`stickslip.sbim.runfile.Checkpoint`'s
+    ``fields``: ``lambda state: partial_antiplane(problem, state).to_xarray()``)."""
+    return AntiplaneRun(problem, state["out_t"], state["out_slip"], state["out_slip_rate"], state["out_shear_stress"],
+                        truncated_part(problem.history_periods), *np.asarray(state["out_books"]).reshape(-1, 3).T)

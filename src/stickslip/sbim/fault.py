@@ -36,6 +36,7 @@ from ..quantities import RSF
 from ..quantities.sbim import SBIM as Q
 from ..results import Result
 from ..rsf import RateState
+from .fields import check_hooks
 from .ratestate import slip_rates
 
 __all__ = ["StrikeSlipFault", "FaultRun", "run_fault", "partial_fault", "fault_fields", "YEAR", "RUN_FORMAT"]
@@ -238,11 +239,7 @@ def run_fault(problem: StrikeSlipFault, t_end: float, interseismic_interval: flo
     co = Q.check("coseismic_interval", coseismic_interval)
     event_rate = Q.check("event_rate", event_rate)
     rtol, max_steps = Q.check("rtol", rtol), Q.check("max_steps", max_steps)
-    if checkpoint is not None and not all(callable(getattr(checkpoint, m, None)) for m in ("resume", "due", "save")):
-        raise ParameterError("checkpoint", checkpoint, "None or an object with resume(), due(step) and save(state) "
-                             "(stickslip.sbim.runfile.Checkpoint)")
-    if progress is not None and not callable(progress):
-        raise ParameterError("progress", progress, "a callable progress(t, t_end) or None")
+    check_hooks(checkpoint, progress, "progress(t, t_end)")
     state = checkpoint.resume() if checkpoint is not None else None  # another run's file: refused before any note
     p, n = problem, problem.elements
     note = p.resolution()

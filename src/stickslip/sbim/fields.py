@@ -1,5 +1,6 @@
-"""What every periodic interface of `stickslip.sbim` shares: its grid in space and time (`PeriodicGrid`)
-and its run's samples as a CF dataset (`space_time`)."""
+"""What every periodic interface of `stickslip.sbim` shares: its grid in space and time (`PeriodicGrid`),
+its run's samples as a CF dataset (`space_time`) and the check of a run's checkpoint and progress hooks
+(`check_hooks`)."""
 
 from __future__ import annotations
 
@@ -7,7 +8,7 @@ import math
 
 import numpy as np
 
-__all__ = ["PeriodicGrid", "space_time"]
+__all__ = ["PeriodicGrid", "space_time", "check_hooks"]
 
 
 class PeriodicGrid:
@@ -40,3 +41,15 @@ def space_time(run, names: tuple[str, ...], title: str):
     ds = xr.Dataset({name: (("t", "x"), getattr(run, name)) for name in names},
                     coords={"t": run.t, "x": run.problem.x})
     return finish(ds, title, "sbim", params={k: v for k, v in run.to_dict().items() if not isinstance(v, str)})
+
+
+def check_hooks(checkpoint, progress, call: str = "progress(done, total)") -> None:
+    """Refuse a ``checkpoint`` without ``resume()``, ``due(step)`` and ``save(state)`` (None: no checkpoint)
+    and a ``progress`` that is neither None nor callable (``call`` says how it is called)."""
+    from ..errors import ParameterError
+
+    if checkpoint is not None and not all(callable(getattr(checkpoint, m, None)) for m in ("resume", "due", "save")):
+        raise ParameterError("checkpoint", checkpoint, "None or an object with resume(), due(step) and save(state) "
+                             "(stickslip.sbim.runfile.Checkpoint)")
+    if progress is not None and not callable(progress):
+        raise ParameterError("progress", progress, f"a callable {call} or None")

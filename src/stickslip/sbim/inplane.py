@@ -44,7 +44,7 @@ from ..errors import ParameterError
 from ..quantities.sbim import SBIM as Q
 from ..results import Result
 from .antiplane import MAX_HISTORY, FreeSurface
-from .fields import PeriodicGrid, space_time
+from .fields import PeriodicGrid, check_hooks, space_time
 from .flutter import FLUTTER_ONSET, bimaterial_ill_posedness, ill_posedness
 from .initial import InitialState
 from .ratestate import RateStateFriction, advance_state, contact_step
@@ -276,11 +276,7 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
     if not isinstance(problem, InplaneProblem):
         raise ParameterError("problem", problem, "an InplaneProblem")
     steps, every = Q.check("steps", steps), Q.check("every", every)
-    if checkpoint is not None and not all(callable(getattr(checkpoint, m, None)) for m in ("resume", "due", "save")):
-        raise ParameterError("checkpoint", checkpoint, "None or an object with resume(), due(step) and save(state) "
-                             "(stickslip.sbim.runfile.Checkpoint)")
-    if progress is not None and not callable(progress):
-        raise ParameterError("progress", progress, "a callable progress(done, total) or None")
+    check_hooks(checkpoint, progress)
     p = problem
     n, dt, k = p.elements, p.dt, p.wavenumbers
     solids = (p.upper,) if p.lower is None else (p.upper, p.lower)
