@@ -189,6 +189,13 @@ def test_a_killed_run_resumes_to_the_uninterrupted_result_and_another_runs_file_
     (["--law", "rate-state", "--a", "2"], "--a"),
     (["--law", "rate-state", "--slip-rate", "0"], "--slip-rate"),
     (["--law", "rate-state", "--dc", "-1"], "--dc"),
+    (["--plane", "antiplane", "--poisson", "0.3"], "--poisson"),
+    (["--plane", "antiplane", "--relaxation-slip", "1e-3", "--relaxation-speed", "1"], "--relaxation-slip"),
+    (["--plane", "antiplane", "--lower-poisson", "0.3", "--lower-shear-modulus", "2e10", "--lower-shear-wave-speed",
+      "3000"], "--lower-"),
+    (["--plane", "antiplane", "--law", "coulomb", "--normal-traction", "0"], "--normal-traction"),
+    (["--plane", "antiplane", "--law", "rate-state", "--normal-traction", "0"], "--normal-traction"),
+    (["--plane", "sideways"], "--plane"),
 ])
 def test_bad_options_are_one_line_naming_the_option(tmp_path, capsys, args, flag):
     code, out, err = _call(["halfspace", "run", "--out", str(tmp_path / "r.nc"), *args], capsys)
@@ -223,3 +230,37 @@ def test_a_sweep_runs_the_command_at_each_point_with_a_run_file_each(tmp_path, c
         assert ds.slipped_fraction.values[0] == 0 and ds.peak_slip_rate.values[0] == 0
         assert ds.slipped_fraction.values[1] > 0.3
     assert len(list((tmp_path / "s.runs").glob("*.nc"))) == 2
+
+
+def test_antiplane_coulomb_slides_at_the_radiation_rate_above_its_static_strength_and_holds_below(tmp_path, capsys):
+    """--plane antiplane, no patch: above the static strength f_s sigma every node slides at (tau - f_k sigma)
+    c_s / mu (the radiation-damping limit, written here); below it nothing moves. The strengths are the
+    coefficients times the compression."""
+    common = ["halfspace", "run", "--plane", "antiplane", "--law", "coulomb", "--static-friction", "0.6",
+              "--kinetic-friction", "0.45", "--normal-traction", "-5e7", "--patch-width", "0", "--json", *SMALL]
+    code, out, err = _call([*common, "--traction", "4e7", "--out", str(tmp_path / "a.nc")], capsys)
+    assert code == 0, err
+    data = json.loads(out)
+    expected = (4e7 - 0.45 * 5e7) * 3464.0 / 3e10
+    with xr.open_dataset(tmp_path / "a.nc") as ds:
+        assert np.abs(ds.slip_rate.values[1:] / expected - 1).max() < 1e-12
+        assert "normal_traction" not in ds and ds.attrs["kinetic_strength"] == 0.45 * 5e7
+    assert data["plane"] == "antiplane" and data["static_strength"] == 0.6 * 5e7 and "peak_opening" not in data
+    code, out, err = _call([*common, "--traction", "2.9e7", "--out", str(tmp_path / "b.nc")], capsys)
+    assert code == 0, err
+    assert json.loads(out)["final_max_slip"] == 0.0
+
+
+def test_antiplane_runs_resume_from_their_file_and_an_in_plane_runs_file_is_refused(tmp_path, capsys):
+    """An antiplane run's file is its checkpoint: run again, it gives the same fields; an in-plane run's file
+    at the same path is refused in one line naming --out (another kind of run)."""
+    args = ["halfspace", "run", "--plane", "antiplane", "--elements", "64", "--duration", "3", "--every", "5"]
+    assert _call([*args, "--out", str(tmp_path / "a.nc")], capsys)[0] == 0
+    with xr.open_dataset(tmp_path / "a.nc") as ds:
+        first = ds.slip_rate.values.copy()
+    assert _call([*args, "--out", str(tmp_path / "a.nc")], capsys)[0] == 0
+    with xr.open_dataset(tmp_path / "a.nc") as ds:
+        np.testing.assert_array_equal(ds.slip_rate.values, first)
+    assert _call(["halfspace", "run", *SMALL, "--out", str(tmp_path / "i.nc")], capsys)[0] == 0
+    code, out, err = _call([*args, "--out", str(tmp_path / "i.nc")], capsys)
+    assert code == 2 and out == "" and err.count("\n") == 1 and "--out" in err

@@ -86,6 +86,11 @@ def fields(b: B, c: C, v_star: VStar, nu: Nu = 0.3, mu: Mu = 0.5, system: System
             plotting.save(plotting.plot_interface_fields(ds), plot)
 
 
+class Plane(str, Enum):
+    inplane = "in-plane"
+    antiplane = "antiplane"
+
+
 class Law(str, Enum):
     coulomb = "coulomb"
     slip_weakening = "slip-weakening"
@@ -164,12 +169,30 @@ def _balanced(rate_state, damping: float, shears: dict) -> None:
                                  f"is {rate_state.steady_drive(damping):.6g} Pa)") from None
 
 
+def _antiplane(friction, pressure: float):
+    """The antiplane law of an in-plane one under a normal traction held at ``pressure`` [Pa] (the strengths
+    the coefficients times it)."""
+    from ..sbim import Coulomb, CoulombFriction, SlipWeakening, SlipWeakeningFriction
+
+    if isinstance(friction, CoulombFriction):
+        return Coulomb(friction.static_friction * pressure, friction.kinetic_friction * pressure)
+    if isinstance(friction, SlipWeakeningFriction):
+        return SlipWeakening(friction.static_friction * pressure, friction.kinetic_friction * pressure,
+                             friction.weakening_slip)
+    return friction  # a free surface, rate-and-state friction: the same in both planes
+
+
 @app.command()
 def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a CF dataset, written as it goes and at "
                                                 "the end; a killed run resumes from it (--overwrite starts afresh).")],
         shear_modulus: Annotated[float, _sb("shear_modulus", "--shear-modulus")] = 3e10,
         shear_wave_speed: Annotated[float, _sb("shear_wave_speed", "--shear-wave-speed")] = 3464.0,
-        poisson: Annotated[float, _sb("poisson", "--poisson", "At most 0.49 in-plane.")] = 0.25,
+        plane: Annotated[Plane, typer.Option("--plane", help="The motion: in the plane (slip and opening, the "
+                                             "normal traction varying) or antiplane (slip along z under a normal "
+                                             "traction held: no --poisson, --relaxation- or --lower- "
+                                             "options).")] = Plane.inplane,
+        poisson: Annotated[Optional[float], _sb("poisson", "--poisson", "At most 0.49; in-plane only; default "
+                                                "0.25.")] = None,
         length: Annotated[float, _sb("length", "--length")] = 40e3,
         elements: Annotated[int, _sb("elements", "--elements")] = 512,
         law: Annotated[Law, typer.Option("--law", help="Interface law: unilateral contact with Coulomb or "
@@ -216,9 +239,9 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
         plot: Annotated[Optional[Path], typer.Option(help=FIGURE_HELP + " Slip rate and normal traction over x and "
                                                      "t.")] = None,
         overwrite: Overwrite = False, json: Json = False):
-    """A half-space sliding in its plane on a rigid body (or on a second half-space: the --lower- options), in
-    time (spectral boundary integral method): uniform tractions with more shear on a patch; slip, opening,
-    rates and tractions over x and t."""
+    """A half-space sliding in its plane on a rigid body (or on a second half-space: the --lower- options), or
+    antiplane on a rigid body (--plane antiplane), in time (spectral boundary integral method): uniform
+    tractions with more shear on a patch; slip, opening, rates and tractions over x and t."""
     import hashlib
     import json as json_module
 
@@ -226,6 +249,8 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
 
     from ..sbim import (CoulombFriction, FreeSurface, InplaneProblem, PrakashClifton, SlipWeakeningFriction,
                         run_inplane)
+    from ..sbim import AntiplaneProblem, run_antiplane
+    from ..sbim.antiplane import RUN_FORMAT as ANTIPLANE, partial_antiplane
     from ..sbim.inplane import partial_run, patch_load
     from ..sbim.runfile import Checkpoint
     from ..sbim.surface import MAX_POISSON, Solid, interface_damping
@@ -239,6 +264,18 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
         given = "--relaxation-slip" if relaxation_slip is not None else "--relaxation-speed"
         other = "--relaxation-speed" if relaxation_slip is not None else "--relaxation-slip"
         raise ParameterError(other, MISSING, f"given with {given} (Prakash-Clifton needs both)")
+    if plane is Plane.antiplane:
+        for flag, given_value in (("--poisson", poisson), ("--relaxation-slip", relaxation_slip),
+                                  ("--lower-shear-modulus", lower_shear_modulus),
+                                  ("--lower-shear-wave-speed", lower_shear_wave_speed),
+                                  ("--lower-poisson", lower_poisson)):
+            if given_value is not None:
+                raise ParameterError(flag, given_value, "left out with --plane antiplane (in-plane only: antiplane "
+                                     "runs are on a rigid body, their normal traction held)")
+        if law in (Law.coulomb, Law.slip_weakening) and normal_traction >= 0.0:
+            raise ParameterError("--normal-traction", normal_traction, f"a compression (< 0) with --plane antiplane "
+                                 f"--law {law.value} (the strengths are the coefficients times it)")
+    poisson = 0.25 if poisson is None else poisson
     if law is Law.free and relaxation_slip is not None:
         raise ParameterError("--relaxation-slip", relaxation_slip, "left out with --law free (no friction to regularise)")
     lowers = {"--lower-shear-modulus": lower_shear_modulus, "--lower-shear-wave-speed": lower_shear_wave_speed,
@@ -280,8 +317,14 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
     if relaxation_slip is not None:
         friction = PrakashClifton(friction, relaxation_slip, relaxation_speed)
     load = patch_load(traction, normal_traction, patch_traction, patch_width, centre, patch_speed)
-    problem = InplaneProblem(shear_modulus, shear_wave_speed, poisson, length, elements, load, friction, beta=beta,
-                             history_periods=history_periods, lower=lower)
+    if plane is Plane.antiplane:
+        problem = AntiplaneProblem(shear_modulus, shear_wave_speed, length, elements, lambda x, t: load(x, t)[0],
+                                   _antiplane(friction, -normal_traction), beta=beta, history_periods=history_periods)
+        runner, partial, kind = run_antiplane, partial_antiplane, {"run_format": ANTIPLANE, "complex_names": ("h",)}
+    else:
+        problem = InplaneProblem(shear_modulus, shear_wave_speed, poisson, length, elements, load, friction, beta=beta,
+                                 history_periods=history_periods, lower=lower)
+        runner, partial, kind = run_inplane, partial_run, {}
     if abs(patch_speed) * problem.dt > problem.dx:
         raise ParameterError("--patch-speed", patch_speed, f"at most {problem.dx / problem.dt:.6g} m/s in size here (a "
                              "cell per step)", also=("--shear-wave-speed", "--beta"))
@@ -293,7 +336,7 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
         raise ParameterError("--duration", t_end, f"at most {1e9 * problem.dt:.4g} s here (1e9 steps of {problem.dt:.3g} s)",
                              also=("--elements", "--beta"))
     steps = max(1, int(round(t_end / problem.dt)))
-    settings = {"version": __version__, "law": law.value, **{k: v for k, v in locals().items() if k in (
+    settings = {"version": __version__, "law": law.value, "plane": plane.value, **{k: v for k, v in locals().items() if k in (
         "shear_modulus", "shear_wave_speed", "poisson", "length", "elements", "relaxation_slip", "relaxation_speed",
         "traction", "normal_traction", "patch_traction",
         "patch_width", "centre", "patch_speed", "beta", "history_periods", "steps", "every", "lower_shear_modulus",
@@ -304,14 +347,16 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
         if overwrite and out.exists():
             out.unlink()
         command = command_line()
-        checkpoint = Checkpoint(out, key, lambda state: stamp(partial_run(problem, state).to_xarray(), command))
+        checkpoint = Checkpoint(out, key, lambda state: stamp(partial(problem, state).to_xarray(), command), **kind)
         with progress_bar("running the interface") as tick:
-            result = run_inplane(problem, steps, every=every, checkpoint=checkpoint, progress=tick)
+            result = runner(problem, steps, every=every, checkpoint=checkpoint, progress=tick)
     slipped = np.abs(result.slip[-1]) > 1e-9 * max(1.0, float(np.abs(result.slip).max()))
-    summary = {**result.to_dict(), "t_end": float(result.t[-1]), "steps": steps,
+    summary = {**result.to_dict(), "plane": plane.value, "t_end": float(result.t[-1]), "steps": steps,
                "peak_slip_rate": float(np.abs(result.slip_rate).max()), "final_max_slip": float(np.abs(result.slip[-1]).max()),
-               "peak_opening": float(result.opening.max()), "slipped_fraction": float(slipped.mean()),
-               "open_fraction_at_end": float((result.opening[-1] > 0).mean())}
+               "slipped_fraction": float(slipped.mean())}
+    if plane is Plane.inplane:
+        summary.update({"peak_opening": float(result.opening.max()),
+                        "open_fraction_at_end": float((result.opening[-1] > 0).mean())})
     from ..sbim.energy import energy_book  # the energy books at the end
 
     summary.update({k: v for k, v in energy_book(result).to_dict().items() if k != "t"})
@@ -325,7 +370,8 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
     if plot:
         from .. import plotting
 
-        plotting.save(plotting.plot_space_time(result.to_xarray()), plot)
+        names = ("slip_rate", "normal_traction" if plane is Plane.inplane else "shear_stress")
+        plotting.save(plotting.plot_space_time(result.to_xarray(), names), plot)
 
 
 app.command(name="fault")(fault)

@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import logging
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields, is_dataclass
 from typing import Callable
 
 import numpy as np
@@ -49,7 +49,7 @@ from .stability import check_stable
 log = logging.getLogger("stickslip.sbim")
 
 __all__ = ["FreeSurface", "Coulomb", "SlipWeakening", "AntiplaneProblem", "AntiplaneRun", "run_antiplane",
-           "mode_traction", "uniform_traction", "partial_antiplane", "RUN_FORMAT"]
+           "mode_traction", "uniform_traction", "partial_antiplane", "RUN_FORMAT", "law_parameters"]
 
 #: Largest history kept (modes x steps, complex numbers): 2 GB.
 MAX_HISTORY = 1 << 27
@@ -103,6 +103,15 @@ class SlipWeakening:
     def strength(self, slip: np.ndarray, sliding: np.ndarray) -> np.ndarray:
         fall = np.minimum(np.abs(slip) / self.weakening_slip, 1.0)
         return self.static_strength - (self.static_strength - self.kinetic_strength) * fall
+
+
+def law_parameters(law) -> dict:
+    """The numbers ``law`` was built with, by their declared names (a law's own ``parameters()`` where it
+    has one: rate-and-state's, a regularisation's with its law's), the run's record of its law."""
+    own = getattr(law, "parameters", None)
+    if callable(own):
+        return own()
+    return {f.name: getattr(law, f.name) for f in fields(law)} if is_dataclass(law) else {}
 
 
 def uniform_traction(traction: float) -> Callable:
@@ -170,7 +179,8 @@ class AntiplaneRun(Result):
         p = self.problem
         return {"shear_modulus": p.shear_modulus, "shear_wave_speed": p.shear_wave_speed, "length": p.length,
                 "elements": p.elements, "beta": p.beta, "dt": p.dt, "history_periods": p.history_periods,
-                "kernel_truncation": self.kernel_truncation, "samples": len(self.t), "law": type(p.law).__name__}
+                "kernel_truncation": self.kernel_truncation, "samples": len(self.t), "law": type(p.law).__name__,
+                **law_parameters(p.law)}
 
     def to_xarray(self):
         return space_time(self, ("slip", "slip_rate", "shear_stress"), "antiplane sliding of an elastic half-space "

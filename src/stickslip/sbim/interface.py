@@ -23,13 +23,13 @@ sliding between two materials (Rice, Lapusta and Ranjith 2001).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields, is_dataclass
+from dataclasses import dataclass
 
 import numpy as np
 
 from ..errors import ParameterError
 from ..quantities.sbim import SBIM as Q
-from .antiplane import FreeSurface
+from .antiplane import FreeSurface, law_parameters
 from .ratestate import RateStateFriction
 from .scales import weakening_lengths
 
@@ -108,22 +108,14 @@ class PrakashClifton:
     def sliding_coefficients(self) -> np.ndarray:
         return self.friction.sliding_coefficients()
 
+    def parameters(self) -> dict:
+        """Its law's numbers (`law_parameters`) and its own."""
+        return {**law_parameters(self.friction), "relaxation_slip": self.relaxation_slip,
+                "relaxation_speed": self.relaxation_speed}
+
 
 #: The laws an in-plane run takes.
 LAWS = (FreeSurface, CoulombFriction, SlipWeakeningFriction, PrakashClifton)
-
-
-def law_parameters(law) -> dict:
-    """The numbers ``law`` was built with, by their declared names (a regularisation's with its law's;
-    rate-and-state's ``slip_law`` true for Ruina's slip law): what a run's file and JSON say of its law."""
-    if isinstance(law, PrakashClifton):
-        return {**law_parameters(law.friction), "relaxation_slip": law.relaxation_slip,
-                "relaxation_speed": law.relaxation_speed}
-    if isinstance(law, RateStateFriction):
-        rs = law.law
-        return {"a": rs.a, "b": rs.b, "dc": rs.dc, "f0": rs.f0, "v_ref": rs.v_ref, "slip_law": rs.evolution == "slip",
-                "normal_stress": law.normal_stress, "slip_rate": law.slip_rate}
-    return {f.name: getattr(law, f.name) for f in fields(law)} if is_dataclass(law) else {}
 
 
 def interface_step(law, Gx, Gy, slip, gap, sliding, pressure, dt, rad):

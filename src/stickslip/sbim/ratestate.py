@@ -97,6 +97,12 @@ class RateStateFriction:
     def initial_psi(self, n: int) -> np.ndarray:
         return perturbed_psi(self.law, self.slip_rate, n, self.psi_perturbation)
 
+    def parameters(self) -> dict:
+        """Its numbers by their declared names (``slip_law`` true for Ruina's slip law; the perturbation not)."""
+        rs = self.law
+        return {"a": rs.a, "b": rs.b, "dc": rs.dc, "f0": rs.f0, "v_ref": rs.v_ref, "slip_law": rs.evolution == "slip",
+                "normal_stress": self.normal_stress, "slip_rate": self.slip_rate}
+
 
 def perturbed_psi(law, slip_rate: float, n: int, perturbation) -> np.ndarray:
     """``psi`` of steady sliding at ``slip_rate`` at ``n`` nodes plus ``perturbation`` (``n`` finite
