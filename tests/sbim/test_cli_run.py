@@ -248,7 +248,7 @@ def test_antiplane_coulomb_slides_at_the_radiation_rate_above_its_static_strengt
     assert data["plane"] == "antiplane" and data["static_strength"] == 0.6 * 5e7 and "peak_opening" not in data
     code, out, err = _call([*common, "--traction", "2.9e7", "--out", str(tmp_path / "b.nc")], capsys)
     assert code == 0, err
-    assert json.loads(out)["final_max_slip"] == 0.0
+    assert json.loads(out)["final_max_slip"] == 0.0 and json.loads(out)["slipped_fraction"] == 0.0
 
 
 def test_antiplane_runs_resume_from_their_file_and_an_in_plane_runs_file_is_refused(tmp_path, capsys):
@@ -264,3 +264,13 @@ def test_antiplane_runs_resume_from_their_file_and_an_in_plane_runs_file_is_refu
     assert _call(["halfspace", "run", *SMALL, "--out", str(tmp_path / "i.nc")], capsys)[0] == 0
     code, out, err = _call([*args, "--out", str(tmp_path / "i.nc")], capsys)
     assert code == 2 and out == "" and err.count("\n") == 1 and "--out" in err
+
+
+def test_a_slowly_creeping_interface_has_slipped_everywhere(tmp_path, capsys):
+    """slipped_fraction counts the nodes that moved at all: rate-and-state creeping at 1e-12 m/s (slips of
+    a few 1e-12 m) has slipped over the whole interface."""
+    code, out, err = _call(["halfspace", "run", "--out", str(tmp_path / "r.nc"), "--law", "rate-state",
+                            "--slip-rate", "1e-12", "--patch-width", "0", "--json", *SMALL], capsys)
+    assert code == 0, err
+    data = json.loads(out)
+    assert data["final_max_slip"] < 1e-10 and data["slipped_fraction"] == 1.0

@@ -136,7 +136,7 @@ SBIM = Domain("sbim", units="SI", quantities=[
     Q("peak_slip_rate", "m/s", "largest slip rate anywhere in the run"),
     Q("final_max_slip", "m", "largest slip at the end of the run"),
     Q("peak_opening", "m", "largest opening anywhere in the run"),
-    Q("slipped_fraction", "1", "fraction of the interface that has slipped by the end"),
+    Q("slipped_fraction", "1", "fraction of the interface's nodes whose slip changed at any sample of the run"),
     Q("open_fraction_at_end", "1", "fraction of the interface open at the end"),
     Q("law", "1", "the interface law of the run (its class in stickslip.sbim)"),
     Q("well_posed", "1", "the run's law is well posed (false: it flutters, its result depends on the grid)"),
