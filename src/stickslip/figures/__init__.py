@@ -39,7 +39,7 @@ FIGURES = ("oscillator.fig2", "oscillator.fig3", "oscillator.bifurcation", "osci
            "brake.fig9", "brake.fig10", "brake.fem_statistics", "brake.fem_geometry", "brake.fem_regimes",
            "halfspace.fig14", "halfspace.inverse_map",
            "halfspace.direct_map", "beyond.rsf_slider", "beyond.squeal", "beyond.flutter", "beyond.adams",
-           "beyond.regimes")
+           "beyond.regimes", "beyond.wave_in_time")
 
 
 @dataclass(frozen=True)

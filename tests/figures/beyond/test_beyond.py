@@ -142,3 +142,25 @@ def test_a_run_that_sticks_and_never_opens_counts_as_stick_first():
     """Found by a review: NaN (never) compared as a time made such a run 'opening first'."""
     stick, opening = np.array([1.0, np.nan, 2.0, np.nan]), np.array([np.nan, 1.0, 1.0, np.nan])
     assert regimes.stick_first(stick, opening).tolist() == [True, False, False, False]
+
+
+def test_the_wave_in_time_checks_pass_and_catch_a_converging_departure_or_an_interface_still_sliding():
+    from stickslip.figures.beyond import wave_in_time
+
+    data = wave_in_time.compute(quick=True)
+    assert _failed(wave_in_time.check(data)) == []
+    shrinking = data.copy(deep=True)  # the departure falling with the grid: the scheme's, not the continuum's
+    shrinking["departure"][-1, -1] = 0.5 * float(shrinking.departure[0, -1])
+    assert any("same amount" in name for name in _failed(wave_in_time.check(shrinking)))
+    onset = data.copy(deep=True)  # the farthest node at the onset edge, a stick length from the healing edge
+    onset["farthest"][0, 2] = 1.0
+    assert any("healing edge:" in name for name in _failed(wave_in_time.check(onset)))
+    sliding = data.copy(deep=True)
+    sliding["long_stuck"][-1] = 0.9
+    assert any("sticks for good" in name for name in _failed(wave_in_time.check(sliding)))
+    over = data.copy(deep=True)  # a stuck node beyond Coulomb's strength
+    over["end_closeness"][3] = 1.2
+    assert any("sticks for good" in name for name in _failed(wave_in_time.check(over)))
+    flat = data.copy(deep=True)  # the first step not approaching the wave
+    flat["departure"][-1, 0] = float(flat.departure[0, 0])
+    assert any("starts on the wave" in name for name in _failed(wave_in_time.check(flat)))
