@@ -152,3 +152,28 @@ def test_bad_input_is_named(make, name):
     with pytest.raises(ParameterError) as err:
         make()
     assert err.value.name == name
+
+
+@pytest.mark.slow
+def test_a_weakening_patch_below_the_nucleation_length_creeps_and_one_above_it_has_earthquakes():
+    """A velocity-weakening patch 0 < z < W at the free surface (so a patch 2 W wide with its image) in a
+    strongly strengthening fault (a = 0.025 below), loaded by the plate below: the nucleation lengths of
+    rate-and-state faults, written here, are Rice and Ruina's h* = (2 / pi) mu D_c / (sigma (b - a)) (652 m)
+    and Rubin and Ampuero's L_inf = (mu D_c / (sigma b pi)) (b / (b - a))^2 (978 m, the aging law). A patch
+    2 W = h* / 2 must creep at the plate rate (its largest slip rate below 10 times it over 150 years) and one
+    2 W = 4 L_inf must have earthquakes (at least two, each faster than 1 cm/s). A first probe at 2 W = 2 L_inf
+    had one event, then slow slip whose peak depended on the cells (W / 8: events, W / 16: none), as expected
+    between the two lengths; the sizes tested are a factor 2 and 4 outside them, thresholds set before their
+    runs."""
+    mu, sigma, dc = 3.2e10, 5e7, 0.008
+    law = RateState(0.010, 0.015, dc, f0=0.6, v_ref=1e-6, regularized=True)
+    h_star = 2 / math.pi * mu * dc / (sigma * (law.b - law.a))
+    l_inf = mu * dc / (sigma * law.b * math.pi) * (law.b / (law.b - law.a)) ** 2
+    runs = {}
+    for name, W, dz in (("creeps", h_star / 4, 20.0), ("quakes", 2 * l_inf, 60.0)):
+        depth = W + 2e3
+        fault = StrikeSlipFault(mu, CS, depth, int(round(depth / dz)), law,
+                                lambda z, W=W: np.where(z < W, 0.010, 0.025), sigma, 1e-9, domain_depth=2 * depth)
+        runs[name] = run_fault(fault, 150 * YEAR)
+    assert runs["creeps"].event_start.size == 0 and runs["creeps"].max_slip_rate.max() < 1e-8
+    assert runs["quakes"].event_start.size >= 2 and runs["quakes"].event_peak.min() > 1e-2
