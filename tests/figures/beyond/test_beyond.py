@@ -152,9 +152,12 @@ def test_the_wave_in_time_checks_pass_and_catch_a_converging_departure_or_an_int
     shrinking = data.copy(deep=True)  # the departure falling with the grid: the scheme's, not the continuum's
     shrinking["departure"][-1, -1] = 0.5 * float(shrinking.departure[0, -1])
     assert any("same amount" in name for name in _failed(wave_in_time.check(shrinking)))
-    onset = data.copy(deep=True)  # the farthest node at the onset edge, a stick length from the healing edge
-    onset["farthest"][0, 2] = 1.0
+    onset = data.copy(deep=True)  # half the departure's growth away from the healing edge
+    onset["growth_near_healing"][0] = 0.5
     assert any("healing edge:" in name for name in _failed(wave_in_time.check(onset)))
+    loose = data.copy(deep=True)  # no patch growing: as stuck at the end as at the start
+    loose["stuck_in_rear"][:, -1] = loose.stuck_in_rear[:, 0]
+    assert any("stuck patch" in name for name in _failed(wave_in_time.check(loose)))
     sliding = data.copy(deep=True)
     sliding["long_stuck"][-1] = 0.9
     assert any("sticks for good" in name for name in _failed(wave_in_time.check(sliding)))
