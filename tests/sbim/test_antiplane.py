@@ -194,3 +194,24 @@ def test_the_checkpoint_and_progress_hooks_are_checked():
     seen = []
     run_antiplane(problem, 130, progress=lambda done, total: seen.append((done, total)))
     assert seen == [(0, 130), (64, 130), (128, 130)]
+
+
+def test_a_checkpoint_of_another_kind_or_of_other_steps_is_refused_naming_it(tmp_path):
+    """A Checkpoint left at the in-plane default run_format, or one resumed for other steps under the same key,
+    is refused in one ParameterError naming ``checkpoint`` (not a numpy or netCDF error)."""
+    from stickslip.sbim.antiplane import RUN_FORMAT, partial_antiplane
+    from stickslip.sbim.runfile import Checkpoint
+
+    problem = AntiplaneProblem(MU, C, L, 16, mode_traction(7e6, 1, L), Coulomb(6e6, 4e6))
+    fields = lambda state: partial_antiplane(problem, state).to_xarray()  # noqa: E731
+    with pytest.raises(ParameterError, match="checkpoint") as info:
+        run_antiplane(problem, 20, checkpoint=Checkpoint(tmp_path / "a.nc", "k", fields))
+    assert "stickslip.sbim.antiplane.RUN_FORMAT" in str(info.value)
+    run_antiplane(problem, 20, every=5, checkpoint=Checkpoint(tmp_path / "b.nc", "k", fields, run_format=RUN_FORMAT))
+    for steps, every in ((10, 5), (20, 4)):
+        with pytest.raises(ParameterError, match="checkpoint"):
+            run_antiplane(problem, steps, every=every,
+                          checkpoint=Checkpoint(tmp_path / "b.nc", "k", fields, run_format=RUN_FORMAT))
+    again = run_antiplane(problem, 20, every=5, checkpoint=Checkpoint(tmp_path / "b.nc", "k", fields,
+                                                                       run_format=RUN_FORMAT))
+    assert again.t.size == 5

@@ -196,6 +196,9 @@ def test_a_killed_run_resumes_to_the_uninterrupted_result_and_another_runs_file_
     (["--plane", "antiplane", "--law", "coulomb", "--normal-traction", "0"], "--normal-traction"),
     (["--plane", "antiplane", "--law", "rate-state", "--normal-traction", "0"], "--normal-traction"),
     (["--plane", "sideways"], "--plane"),
+    (["--plane", "antiplane", "--law", "free", "--normal-traction", "1e6"], "--normal-traction"),
+    (["--plane", "antiplane", "--relaxation-speed", "1"], "--relaxation-speed"),
+    (["--plane", "antiplane", "--elements", "1048576"], "--duration"),
 ])
 def test_bad_options_are_one_line_naming_the_option(tmp_path, capsys, args, flag):
     code, out, err = _call(["halfspace", "run", "--out", str(tmp_path / "r.nc"), *args], capsys)
@@ -245,6 +248,8 @@ def test_antiplane_coulomb_slides_at_the_radiation_rate_above_its_static_strengt
     with xr.open_dataset(tmp_path / "a.nc") as ds:
         assert np.abs(ds.slip_rate.values[1:] / expected - 1).max() < 1e-12
         assert "normal_traction" not in ds and ds.attrs["kinetic_strength"] == 0.45 * 5e7
+        given = {"static_friction": 0.6, "kinetic_friction": 0.45, "normal_traction": -5e7, "traction": 4e7}
+        assert {k: ds.attrs[k] for k in given} == given and ds.attrs["law"] == "Coulomb"  # the file says it all
     assert data["plane"] == "antiplane" and data["static_strength"] == 0.6 * 5e7 and "peak_opening" not in data
     code, out, err = _call([*common, "--traction", "2.9e7", "--out", str(tmp_path / "b.nc")], capsys)
     assert code == 0, err

@@ -169,6 +169,12 @@ def _balanced(rate_state, damping: float, shears: dict) -> None:
                                  f"is {rate_state.steady_drive(damping):.6g} Pa)") from None
 
 
+def _given(ds, loading: dict):
+    """``ds`` with the run's ``loading`` among its attributes."""
+    ds.attrs.update(loading)
+    return ds
+
+
 def _antiplane(friction, pressure: float):
     """The antiplane law of an in-plane one under a normal traction held at ``pressure`` [Pa] (the strengths
     the coefficients times it)."""
@@ -221,7 +227,8 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
                                                "(--law rate-state).")] = False,
         traction: Annotated[Optional[float], _sb("traction", "--traction", "Uniform. Default: 28e6; with --law "
                                                  "rate-state the steady drive at --slip-rate.")] = None,
-        normal_traction: Annotated[float, _sb("normal_traction", "--normal-traction", "Uniform.")] = -50e6,
+        normal_traction: Annotated[Optional[float], _sb("normal_traction", "--normal-traction", "Uniform; default "
+                                                        "-50e6 (not with --plane antiplane --law free).")] = None,
         patch_traction: Annotated[float, _sb("patch_traction", "--patch-traction")] = 3e6,
         patch_width: Annotated[float, _sb("patch_width", "--patch-width")] = 8e3,
         patch_centre: Annotated[Optional[float], _sb("patch_centre", "--patch-centre", "Default: the middle.")] = None,
@@ -236,8 +243,8 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
                                                             "--lower- options); default: a rigid body.")] = None,
         lower_shear_wave_speed: Annotated[Optional[float], _sb("lower_shear_wave_speed", "--lower-shear-wave-speed")] = None,
         lower_poisson: Annotated[Optional[float], _sb("lower_poisson", "--lower-poisson", "At most 0.49.")] = None,
-        plot: Annotated[Optional[Path], typer.Option(help=FIGURE_HELP + " Slip rate and normal traction over x and "
-                                                     "t.")] = None,
+        plot: Annotated[Optional[Path], typer.Option(help=FIGURE_HELP + " Slip rate and normal traction (in-plane) "
+                                                     "or shear stress (antiplane) over x and t.")] = None,
         overwrite: Overwrite = False, json: Json = False):
     """A half-space sliding in its plane on a rigid body (or on a second half-space: the --lower- options), or
     antiplane on a rigid body (--plane antiplane), in time (spectral boundary integral method): uniform
@@ -260,21 +267,26 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
 
     out = output_path("--out", out, ".nc")
     plot = output_path("--plot", plot, FIGURE_SUFFIXES, overwrite)
-    if (relaxation_slip is None) != (relaxation_speed is None):
-        given = "--relaxation-slip" if relaxation_slip is not None else "--relaxation-speed"
-        other = "--relaxation-speed" if relaxation_slip is not None else "--relaxation-slip"
-        raise ParameterError(other, MISSING, f"given with {given} (Prakash-Clifton needs both)")
     if plane is Plane.antiplane:
         for flag, given_value in (("--poisson", poisson), ("--relaxation-slip", relaxation_slip),
+                                  ("--relaxation-speed", relaxation_speed),
                                   ("--lower-shear-modulus", lower_shear_modulus),
                                   ("--lower-shear-wave-speed", lower_shear_wave_speed),
                                   ("--lower-poisson", lower_poisson)):
             if given_value is not None:
                 raise ParameterError(flag, given_value, "left out with --plane antiplane (in-plane only: antiplane "
                                      "runs are on a rigid body, their normal traction held)")
-        if law in (Law.coulomb, Law.slip_weakening) and normal_traction >= 0.0:
+        if law is Law.free and normal_traction is not None:
+            raise ParameterError("--normal-traction", normal_traction, "left out with --plane antiplane --law free "
+                                 "(a free surface along z feels no normal traction)")
+        if law in (Law.coulomb, Law.slip_weakening) and normal_traction is not None and normal_traction >= 0.0:
             raise ParameterError("--normal-traction", normal_traction, f"a compression (< 0) with --plane antiplane "
                                  f"--law {law.value} (the strengths are the coefficients times it)")
+    if (relaxation_slip is None) != (relaxation_speed is None):
+        given = "--relaxation-slip" if relaxation_slip is not None else "--relaxation-speed"
+        other = "--relaxation-speed" if relaxation_slip is not None else "--relaxation-slip"
+        raise ParameterError(other, MISSING, f"given with {given} (Prakash-Clifton needs both)")
+    normal_traction = -50e6 if normal_traction is None else normal_traction
     poisson = 0.25 if poisson is None else poisson
     if law is Law.free and relaxation_slip is not None:
         raise ParameterError("--relaxation-slip", relaxation_slip, "left out with --law free (no friction to regularise)")
@@ -343,13 +355,27 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
         "lower_shear_wave_speed", "lower_poisson")}, **{flag: v for flag, v in value.items()
                                                         if law.value in LAW_OPTIONS[flag][1]}}
     key = hashlib.sha256(json_module.dumps(settings, sort_keys=True).encode()).hexdigest()
+    # what the run was given beyond its problem's numbers: its loading (and, antiplane, the coefficients its
+    # strengths are of), said in its JSON and its file
+    loading = {"traction": traction, "patch_traction": patch_traction, "patch_width": patch_width,
+               "patch_centre": centre, "load_speed": patch_speed,
+               **({} if plane is Plane.antiplane and law is Law.free else {"normal_traction": normal_traction}),
+               **({"static_friction": static_friction, "kinetic_friction": kinetic_friction}
+                  if plane is Plane.antiplane and law in (Law.coulomb, Law.slip_weakening) else {})}
     with exclusive(out, "--out"):
         if overwrite and out.exists():
             out.unlink()
         command = command_line()
-        checkpoint = Checkpoint(out, key, lambda state: stamp(partial(problem, state).to_xarray(), command), **kind)
+        checkpoint = Checkpoint(out, key, lambda state: stamp(_given(partial(problem, state).to_xarray(), loading),
+                                                              command), **kind)
         with progress_bar("running the interface") as tick:
-            result = runner(problem, steps, every=every, checkpoint=checkpoint, progress=tick)
+            try:
+                result = runner(problem, steps, every=every, checkpoint=checkpoint, progress=tick)
+            except ParameterError as err:  # the run's steps are this command's --duration over its step
+                if err.name != "steps":
+                    raise
+                raise ParameterError("--duration", t_end, f"{err.allowed} ({steps} steps of {problem.dt:.3g} s)",
+                                     also=("--elements", "--beta", "--history-periods")) from None
     slipped = np.any(result.slip != result.slip[0], axis=0)  # moved at all (a stuck node's slip stays exact)
     summary = {**result.to_dict(), "plane": plane.value, "t_end": float(result.t[-1]), "steps": steps,
                "peak_slip_rate": float(np.abs(result.slip_rate).max()), "final_max_slip": float(np.abs(result.slip[-1]).max()),
@@ -361,7 +387,7 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
 
     summary.update({k: v for k, v in energy_book(result).to_dict().items() if k != "t"})
     # the loading the run was given (the law's options are the run's own numbers, in its summary)
-    summary.update({"traction": traction, "normal_traction": normal_traction, "load_speed": patch_speed})
+    summary.update(loading)
     meanings = {k: (RSF[k].units, RSF[k].meaning) for k in ("a", "b", "dc", "f0", "v_ref") if k in summary}
     if "slip_law" in summary:
         meanings["slip_law"] = ("1", "Ruina's slip law (false: the aging law)")

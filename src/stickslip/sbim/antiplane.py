@@ -39,7 +39,7 @@ import numpy as np
 from ..errors import NoSolutionError, ParameterError
 from ..quantities.sbim import SBIM as Q
 from ..results import Result
-from .fields import PeriodicGrid, check_hooks, space_time
+from .fields import PeriodicGrid, check_hooks, check_resumed, space_time
 from .history import History
 from .kernels import ragged_step_weights, truncated_part
 from .ratestate import RateStateFriction, advance_state, slip_rates
@@ -183,8 +183,11 @@ class AntiplaneRun(Result):
                 **law_parameters(p.law)}
 
     def to_xarray(self):
-        return space_time(self, ("slip", "slip_rate", "shear_stress"), "antiplane sliding of an elastic half-space "
-                          "on a rigid body (spectral boundary integral method)")
+        what = ("an elastic half-space's surface free under an antiplane traction" if isinstance(self.problem.law,
+                FreeSurface) else "antiplane sliding of an elastic half-space on a rigid body")
+        ds = space_time(self, ("slip", "slip_rate", "shear_stress"), f"{what} (spectral boundary integral method)")
+        ds.attrs["law"] = type(self.problem.law).__name__
+        return ds
 
 
 def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1, checkpoint=None,
@@ -199,7 +202,7 @@ def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1, checkpo
     if not isinstance(problem, AntiplaneProblem):
         raise ParameterError("problem", problem, "an AntiplaneProblem")
     steps, every = Q.check("steps", steps), Q.check("every", every)
-    check_hooks(checkpoint, progress)
+    check_hooks(checkpoint, progress, run_format=(RUN_FORMAT, "stickslip.sbim.antiplane.RUN_FORMAT"))
     p = problem
     n, mu, c, dt = p.elements, p.shear_modulus, p.shear_wave_speed, p.dt
     k = p.wavenumbers
@@ -211,6 +214,8 @@ def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1, checkpo
                              "fewer history_periods, elements or steps)", also=("history_periods",))
     check_stable("antiplane", p.beta, n, p.history_periods, steps)
     state = checkpoint.resume() if checkpoint is not None else None  # another run's file: refused before any note
+    if state is not None:
+        check_resumed(state, steps, every, n, "slip")
     if isinstance(p.law, SlipWeakening):
         half, zone = weakening_lengths(p.shear_modulus, p.law.weakening_slip,
                                        p.law.static_strength - p.law.kinetic_strength)

@@ -239,7 +239,7 @@ def run_fault(problem: StrikeSlipFault, t_end: float, interseismic_interval: flo
     co = Q.check("coseismic_interval", coseismic_interval)
     event_rate = Q.check("event_rate", event_rate)
     rtol, max_steps = Q.check("rtol", rtol), Q.check("max_steps", max_steps)
-    check_hooks(checkpoint, progress, "progress(t, t_end)")
+    check_hooks(checkpoint, progress, "progress(t, t_end)", (RUN_FORMAT, "stickslip.sbim.fault.RUN_FORMAT"))
     state = checkpoint.resume() if checkpoint is not None else None  # another run's file: refused before any note
     p, n = problem, problem.elements
     note = p.resolution()

@@ -44,7 +44,7 @@ from ..errors import ParameterError
 from ..quantities.sbim import SBIM as Q
 from ..results import Result
 from .antiplane import MAX_HISTORY, FreeSurface
-from .fields import PeriodicGrid, check_hooks, space_time
+from .fields import PeriodicGrid, check_hooks, check_resumed, space_time
 from .flutter import FLUTTER_ONSET, bimaterial_ill_posedness, ill_posedness
 from .initial import InitialState
 from .ratestate import RateStateFriction, advance_state, contact_step
@@ -62,8 +62,12 @@ MAX_PERIODS = 64.0
 
 log = logging.getLogger("stickslip.sbim")
 
-__all__ = ["InplaneProblem", "InplaneRun", "run_inplane", "partial_run", "uniform_load", "mode_load", "patch_load"]
+__all__ = ["InplaneProblem", "InplaneRun", "run_inplane", "partial_run", "uniform_load", "mode_load", "patch_load",
+           "RUN_FORMAT"]
 
+
+#: The format of an in-plane run's file (`stickslip.sbim.runfile.Checkpoint`'s ``run_format``).
+RUN_FORMAT = "stickslip-sbim-inplane-3"  # 2: the energy books in the state; 3: the lower surface's samples
 
 def uniform_load(traction: float, normal_traction: float) -> Callable:
     """Shear ``traction`` and ``normal_traction`` [Pa] (negative: compression), uniform, from ``t = 0``."""
@@ -250,6 +254,7 @@ class InplaneRun(Result):
         ds = space_time(self, names, f"in-plane sliding of an elastic half-space on {on} (spectral boundary "
                         "integral method)")
         ds.attrs["well_posedness"] = self.ill_posed or "well posed"
+        ds.attrs["law"] = type(self.problem.law).__name__
         return ds
 
 
@@ -276,7 +281,7 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
     if not isinstance(problem, InplaneProblem):
         raise ParameterError("problem", problem, "an InplaneProblem")
     steps, every = Q.check("steps", steps), Q.check("every", every)
-    check_hooks(checkpoint, progress)
+    check_hooks(checkpoint, progress, run_format=(RUN_FORMAT, "stickslip.sbim.runfile.RUN_FORMAT"))
     p = problem
     n, dt, k = p.elements, p.dt, p.wavenumbers
     solids = (p.upper,) if p.lower is None else (p.upper, p.lower)
@@ -318,6 +323,8 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
     kinetic = _kinetic(p.law)
     start = 0
     state = checkpoint.resume() if checkpoint is not None else None
+    if state is not None:
+        check_resumed(state, steps, every, n, "Ux")
     if state is not None:
         start, Ux, Uy = int(state["step"]), state["Ux"].copy(), state["Uy"].copy()
         sliding = state["sliding"].astype(bool)

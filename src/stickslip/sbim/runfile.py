@@ -21,11 +21,10 @@ import numpy as np
 from ..cf import for_file
 from ..errors import ParameterError
 from ..files import to_netcdf
+from .inplane import RUN_FORMAT  # an in-plane run's, the default (public here too)
 
 __all__ = ["Checkpoint", "RUN_FORMAT", "CHECKPOINT_SECONDS"]
 
-#: The format of an in-plane run's file (its ``run_format`` attribute).
-RUN_FORMAT = "stickslip-sbim-inplane-3"  # 2: the energy books in the state; 3: the lower surface's samples
 #: Wall time between two writes of a run's file [s].
 CHECKPOINT_SECONDS = 60.0
 _COMPLEX = ("hx", "hy", "lx", "ly")  # the lower half-space's only with one
@@ -35,8 +34,9 @@ class Checkpoint:
     """The run file at ``path`` for the run named ``key``; ``seconds`` between writes (0: every step;
     default `CHECKPOINT_SECONDS`);
     ``fields(state)`` the CF dataset of the samples in a state (written to the root group);
-    ``run_format`` the kind of run the file holds (an in-plane run's by default, `RUN_FORMAT`) and
-    ``complex_names`` the state's complex arrays (stored as their real and imaginary parts)."""
+    ``run_format`` the kind of run the file holds (an in-plane run's by default, `RUN_FORMAT`; a run refuses
+    a checkpoint of another kind); ``complex_names`` the state's complex arrays, stored as their real and
+    imaginary parts (any other complex array of a state is stored so too)."""
 
     def __init__(self, path, key: str, fields, seconds: float | None = None, run_format: str = RUN_FORMAT,
                  complex_names: tuple = _COMPLEX):
@@ -67,9 +67,8 @@ class Checkpoint:
             raise self._refused(f"its format is {attrs.get('run_format', 'none')!r}, not {self.run_format!r}")
         if attrs.get("run_key") != self.key:
             raise self._refused("it holds another run: other parameters, load, steps or sampling")
-        for name in self.complex_names:
-            if name + "_re" in state:
-                state[name] = state.pop(name + "_re") + 1j * state.pop(name + "_im")
+        for name in [k[:-3] for k in state if k.endswith("_re") and k[:-3] + "_im" in state]:
+            state[name] = state.pop(name + "_re") + 1j * state.pop(name + "_im")
         return state
 
     def due(self, step: int) -> bool:
@@ -79,10 +78,10 @@ class Checkpoint:
         """Write ``state`` (a new file moved over the old one)."""
         import xarray as xr
 
-        flat = {k: v for k, v in state.items() if k not in self.complex_names}
-        for name in self.complex_names:
-            if name in state:
-                flat[name + "_re"], flat[name + "_im"] = state[name].real, state[name].imag
+        split = set(self.complex_names) | {k for k, v in state.items() if np.iscomplexobj(v)}
+        flat = {k: v for k, v in state.items() if k not in split}
+        for name in split & set(state):
+            flat[name + "_re"], flat[name + "_im"] = state[name].real, state[name].imag
         group = xr.Dataset({k: (tuple(f"{k}_{i}" for i in range(np.ndim(v))), np.asarray(v))
                             for k, v in flat.items()})
         root = for_file(self.fields(state))
