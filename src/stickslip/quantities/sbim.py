@@ -139,7 +139,7 @@ SBIM = Domain("sbim", units="SI", quantities=[
     Q("slipped_fraction", "1", "fraction of the interface's nodes whose slip changed at any sample of the run"),
     Q("open_fraction_at_end", "1", "fraction of the interface open at the end"),
     Q("law", "1", "the interface law of the run (its class in stickslip.sbim)"),
-    Q("plane", "1", "the motion of the run: in the plane (in-plane) or along z (antiplane)",
+    Q("plane", "", "the motion of the run: in the plane (in-plane) or along z (antiplane)",
       choices=("in-plane", "antiplane")),
     Q("well_posed", "1", "the run's law is well posed (false: it flutters, its result depends on the grid)"),
     Q("ill_posedness", "1", "why the run's law is ill-posed (empty when it is not)"),
