@@ -19,7 +19,7 @@ def killed_and_resumed(problem, steps: int, every: int, kill_at: int, path, anti
     """``(whole, resumed)``: ``problem()`` run uninterrupted, and run again writing ``path`` at every step,
     killed once its state before step ``kill_at`` is saved, then resumed from the file by a new run."""
     run, partial = (run_antiplane, partial_antiplane) if antiplane else (run_inplane, partial_run)
-    kind = {"run_format": RUN_FORMAT, "complex_names": ("h",)} if antiplane else {}
+    kind = {"run_format": RUN_FORMAT} if antiplane else {}
     whole = run(problem(), steps, every=every)
     first = Checkpoint(path, "k", lambda state: partial(problem(), state).to_xarray(), seconds=0.0, **kind)
     save = first.save

@@ -180,7 +180,7 @@ def test_a_killed_run_resumes_to_the_bit_and_another_runs_file_is_refused(tmp_pa
     for name in ("t", "slip", "slip_rate", "shear_stress", "load_work", "dissipation", "travel"):
         assert np.array_equal(getattr(resumed, name), getattr(whole, name)), name
     other = Checkpoint(tmp_path / "run.nc", "another", lambda s: partial_antiplane(problem(), s).to_xarray(),
-                       run_format=RUN_FORMAT, complex_names=("h",))
+                       run_format=RUN_FORMAT)
     with pytest.raises(ParameterError, match="checkpoint"):
         run_antiplane(problem(), 90, every=7, checkpoint=other)
 

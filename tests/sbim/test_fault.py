@@ -95,7 +95,7 @@ def _resumes_bit_for_bit(tmp_path, fault, t_end, at):
     path = tmp_path / "fault.nc"
     with pytest.raises(_Killed):
         run_fault(fault, t_end, checkpoint=_SavesOnceThenDies(path, "key", fault_fields(fault), run_format=RUN_FORMAT,
-                                                               complex_names=(), at=at))
+                                                               at=at))
     resumed = run_fault(fault, t_end, checkpoint=Checkpoint(path, "key", fault_fields(fault), run_format=RUN_FORMAT,
                                                             complex_names=()))
     for name in ("t", "max_slip_rate", "profile_t", "slip", "event_start", "event_end", "event_peak"):

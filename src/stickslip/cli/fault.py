@@ -102,7 +102,7 @@ def fault(out: Annotated[Path, typer.Option(help="The run (.nc): its records as 
             out.unlink()
         command = command_line()
         checkpoint = Checkpoint(out, key, lambda state: stamp(partial_fault(problem, state, event_rate).to_xarray(),
-                                                              command), run_format=RUN_FORMAT, complex_names=())
+                                                              command), run_format=RUN_FORMAT)
         with progress_bar("cycles on the fault") as tick:
             result = run_fault(problem, t_end, event_rate=event_rate, rtol=rtol, checkpoint=checkpoint,
                                progress=lambda t, total: tick(int(t / total * 1000), 1000))

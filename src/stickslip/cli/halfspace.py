@@ -332,7 +332,7 @@ def run(out: Annotated[Path, typer.Option(help="The run (.nc): its fields as a C
     if plane is Plane.antiplane:
         problem = AntiplaneProblem(shear_modulus, shear_wave_speed, length, elements, lambda x, t: load(x, t)[0],
                                    _antiplane(friction, -normal_traction), beta=beta, history_periods=history_periods)
-        runner, partial, kind = run_antiplane, partial_antiplane, {"run_format": ANTIPLANE, "complex_names": ("h",)}
+        runner, partial, kind = run_antiplane, partial_antiplane, {"run_format": ANTIPLANE}
     else:
         problem = InplaneProblem(shear_modulus, shear_wave_speed, poisson, length, elements, load, friction, beta=beta,
                                  history_periods=history_periods, lower=lower)

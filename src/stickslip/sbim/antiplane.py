@@ -195,8 +195,7 @@ def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1, checkpo
     """Run ``problem`` from rest for ``steps`` steps, storing every ``every``-th (and the last).
 
     ``checkpoint``: an object with ``resume() -> state or None``, ``due(step)`` and ``save(state)``
-    (`stickslip.sbim.runfile.Checkpoint` with ``run_format=RUN_FORMAT`` and ``complex_names=("h",)``
-    keeps it in a netCDF file, `partial_antiplane` its samples): the run starts from the state it
+    (`stickslip.sbim.runfile.Checkpoint` with ``run_format=RUN_FORMAT`` keeps it in a netCDF file, `partial_antiplane` its samples): the run starts from the state it
     resumes and hands it the state whenever due and at the end; a resumed run is the uninterrupted one,
     to the last bit. ``progress(done, total)``: called every 64 steps."""
     if not isinstance(problem, AntiplaneProblem):
@@ -276,7 +275,7 @@ def run_antiplane(problem: AntiplaneProblem, steps: int, every: int = 1, checkpo
             checkpoint.save(_state(step + 1, slip, sliding, psi, log_v, books, history, out))
     if checkpoint is not None and start <= steps:
         checkpoint.save(_state(steps + 1, slip, sliding, psi, log_v, books, history, out))
-    return partial_antiplane(p, _state(steps + 1, slip, sliding, psi, log_v, books, history, out))
+    return partial_antiplane(p, _samples(out, n))
 
 
 #: The samples a run keeps (and its checkpoint with them).
@@ -285,13 +284,17 @@ SAMPLES = ("t", "slip", "slip_rate", "shear_stress", "books")
 RUN_FORMAT = "stickslip-sbim-antiplane-1"
 
 
-def _state(step, slip, sliding, psi, log_v, books, history, out) -> dict:
-    """A run's whole state before ``step`` (``steps + 1``: done), for its checkpoint."""
-    n = slip.size
+def _samples(out: dict, n: int) -> dict:
+    """The samples kept so far (`SAMPLES`, each a list) as the arrays ``out_<name>`` of a state."""
     shapes = {"t": (-1,), "books": (-1, 3)}
-    samples = {"out_" + name: np.array(v, dtype=float).reshape(shapes.get(name, (-1, n))) for name, v in out.items()}
+    return {"out_" + name: np.array(v, dtype=float).reshape(shapes.get(name, (-1, n))) for name, v in out.items()}
+
+
+def _state(step, slip, sliding, psi, log_v, books, history, out) -> dict:
+    """A run's whole state before ``step`` (``steps + 1``: done), for its checkpoint (written at once: the
+    history's buffer itself, not a copy)."""
     return {"step": np.int64(step), "slip": slip, "sliding": sliding.astype(np.int8), "psi": psi, "log_v": log_v,
-            "books": books, "h": history.buffer.copy(), **samples}
+            "books": books, "h": history.buffer, **_samples(out, slip.size)}
 
 
 def partial_antiplane(problem: AntiplaneProblem, state: dict) -> AntiplaneRun:

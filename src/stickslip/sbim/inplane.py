@@ -69,6 +69,7 @@ __all__ = ["InplaneProblem", "InplaneRun", "run_inplane", "partial_run", "unifor
 #: The format of an in-plane run's file (`stickslip.sbim.runfile.Checkpoint`'s ``run_format``).
 RUN_FORMAT = "stickslip-sbim-inplane-3"  # 2: the energy books in the state; 3: the lower surface's samples
 
+
 def uniform_load(traction: float, normal_traction: float) -> Callable:
     """Shear ``traction`` and ``normal_traction`` [Pa] (negative: compression), uniform, from ``t = 0``."""
     tau, sigma = Q.check("traction", traction), Q.check("normal_traction", normal_traction)
@@ -325,7 +326,6 @@ def run_inplane(problem: InplaneProblem, steps: int, every: int = 1, checkpoint=
     state = checkpoint.resume() if checkpoint is not None else None
     if state is not None:
         check_resumed(state, steps, every, n, "Ux")
-    if state is not None:
         start, Ux, Uy = int(state["step"]), state["Ux"].copy(), state["Uy"].copy()
         sliding = state["sliding"].astype(bool)
         pressure = state["pressure"].copy() if state["pressure"].size else None

@@ -27,7 +27,6 @@ __all__ = ["Checkpoint", "RUN_FORMAT", "CHECKPOINT_SECONDS"]
 
 #: Wall time between two writes of a run's file [s].
 CHECKPOINT_SECONDS = 60.0
-_COMPLEX = ("hx", "hy", "lx", "ly")  # the lower half-space's only with one
 
 
 class Checkpoint:
@@ -35,11 +34,11 @@ class Checkpoint:
     default `CHECKPOINT_SECONDS`);
     ``fields(state)`` the CF dataset of the samples in a state (written to the root group);
     ``run_format`` the kind of run the file holds (an in-plane run's by default, `RUN_FORMAT`; a run refuses
-    a checkpoint of another kind); ``complex_names`` the state's complex arrays, stored as their real and
-    imaginary parts (any other complex array of a state is stored so too)."""
+    a checkpoint of another kind). A state's complex arrays are stored as their real and imaginary parts;
+    ``complex_names``, which named them, is no longer needed (kept so that calls giving it still work)."""
 
     def __init__(self, path, key: str, fields, seconds: float | None = None, run_format: str = RUN_FORMAT,
-                 complex_names: tuple = _COMPLEX):
+                 complex_names: tuple = ()):
         self.path, self.key, self.fields = Path(path), str(key), fields
         self.seconds = float(CHECKPOINT_SECONDS if seconds is None else seconds)
         self.run_format, self.complex_names = str(run_format), tuple(complex_names)

@@ -89,10 +89,14 @@ class WaveOnGrid:
         """The wave's speed ``c`` [m/s] (negative: towards ``-x``)."""
         return self.wave.cbar * self.shear_wave_speed
 
+    def pattern(self, t: float) -> np.ndarray:
+        """Each node's place in the wave's pattern at ``t`` [s]: ``xi`` in stick lengths, from 0 to ``b`` (the
+        stick zone ``[0, 1)``, the slip zone ``[1, b)``, the slip-to-stick point at ``b = 0``)."""
+        return np.mod((self.x + 0.5 * self.dx - self.speed * t) / self.stick_length, self.wave.b)
+
     def exact(self, t: float) -> dict:
         """The wave's slip rate [m/s], shear and normal tractions [Pa] at the nodes at ``t`` [s]."""
-        xi = (self.x + 0.5 * self.dx - self.speed * t) / self.stick_length
-        f = self.wave.fields(np.mod(xi, self.wave.b))
+        f = self.wave.fields(self.pattern(t))
         return {"slip_rate": -self.shear_wave_speed * f.slip_velocity,
                 "shear_stress": -self.shear_modulus * f.Sigma_xy,
                 "normal_traction": self.shear_modulus * f.Sigma_yy}

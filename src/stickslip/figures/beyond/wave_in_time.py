@@ -37,15 +37,10 @@ def _wave():
     return decaying_wave(w["b"], w["cbar"], w["T"], w["v_star"], nu=w["nu"], mu=w["mu"], tau_yy=w["tau_yy"])
 
 
-def _pattern(grid: WaveOnGrid, t: float) -> np.ndarray:
-    """Each node's place in the wave's pattern at ``t`` [stick lengths, 0 to b; the healing edge at b = 0]."""
-    return np.mod((grid.x + 0.5 * grid.dx - grid.speed * t) / grid.stick_length, grid.wave.b)
-
-
 def _stuck_in_rear(grid: WaveOnGrid, t: float, rate: np.ndarray) -> float:
     """How much of the rear half of the wave's slip zone (next to the healing edge) is stuck at ``t``
     [stick lengths]."""
-    X = _pattern(grid, t)
+    X = grid.pattern(t)
     rear = X >= 1.0 + (grid.wave.b - 1.0) / 2
     return float(np.sum((rate == 0.0) & rear) * grid.dx / grid.stick_length)
 
@@ -58,7 +53,7 @@ def _growth_near_healing(grid: WaveOnGrid, t: float, off: np.ndarray, off0: np.n
     shift = int(round(cells))
     assert abs(cells - shift) < 1e-6, cells
     growth = np.maximum(off - np.roll(off0, -shift), 0.0)
-    X = _pattern(grid, t)
+    X = grid.pattern(t)
     near = np.minimum(X, grid.wave.b - X) < NEAR
     return float(growth[near].sum() / growth.sum())
 
@@ -80,8 +75,8 @@ def compute(quick: bool) -> xr.Dataset:
         stuck.append([_stuck_in_rear(grid, t, v) for t, v in zip(run.t, run.slip_rate)])
         if n == grids[-1]:
             picked = (0, SAMPLES // 2, SAMPLES)
-            orders = [np.argsort(_pattern(grid, run.t[i])) for i in picked]
-            profiles = (np.array([_pattern(grid, run.t[i])[o] for i, o in zip(picked, orders)]),
+            orders = [np.argsort(grid.pattern(run.t[i])) for i in picked]
+            profiles = (np.array([grid.pattern(run.t[i])[o] for i, o in zip(picked, orders)]),
                         np.array([run.slip_rate[i][o] for i, o in zip(picked, orders)]), run.t[list(picked)])
             period = grid.length / abs(grid.speed)
             tau = run.t / period
@@ -129,7 +124,7 @@ def compute(quick: bool) -> xr.Dataset:
                 "long_tau": ("long_tau", run.t / period, {"units": "1", "long_name": "time in periods"})},
         attrs={**{f"wave_{k}": v for k, v in WAVE.items()}, "shear_modulus": G, "shear_wave_speed": CS,
                "stick_length": STICK, "beta": BETA, "remote_shear": load, "remote_normal": normal,
-               "static_strength_ratio": abs(load) / (WAVE["mu"] * abs(G * WAVE["tau_yy"])),
+               "static_strength_ratio": abs(load) / (WAVE["mu"] * abs(normal)),
                "long_elements": LONG})
 
 
